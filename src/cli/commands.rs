@@ -1,0 +1,261 @@
+//! The subcommands.
+
+use super::output::{print_json, write_atomic};
+use super::{AnalysisArgs, Command};
+use crate::matrix::export::{to_matrix_market, MatrixJson};
+use crate::neighbourhood::{Configuration, NeighbourhoodKind};
+use crate::schemes::{self, Scheme};
+use crate::spectrum::stencils::stencils;
+use crate::spectrum::{analyse, Analysis, Method, Options, Spectrum};
+
+pub fn dispatch(cmd: Command) -> Result<(), String> {
+    match cmd {
+        Command::Schemes { json } => list_schemes(json),
+        Command::Spectrum(a) => {
+            let (_, analysis) = run_analysis(&a)?;
+            if a.json {
+                print_json(&analysis.spectrum)
+            } else {
+                print!("{}", spectrum_table(&analysis.spectrum));
+                Ok(())
+            }
+        }
+        Command::Stencils(a) => {
+            let (_, analysis) = run_analysis(&a)?;
+            let st = stencils(&analysis.spectrum)?;
+            if a.json {
+                print_json(&st)
+            } else {
+                print!("{}", stencil_table(&st));
+                Ok(())
+            }
+        }
+        Command::Matrix {
+            common,
+            format,
+            output,
+        } => {
+            let (scheme, analysis) = run_analysis(&common)?;
+            let text = match format.as_str() {
+                "mtx" => to_matrix_market(
+                    &analysis.matrix,
+                    &format!(
+                        "subdlab local subdivision matrix: scheme {} valence {} neighbourhood {:?}",
+                        scheme.name(),
+                        common.valence,
+                        analysis.spectrum.neighbourhood
+                    ),
+                ),
+                "json" => {
+                    let m = &analysis.matrix;
+                    let j = MatrixJson {
+                        scheme: scheme.name(),
+                        valence: common.valence,
+                        neighbourhood: m.kind,
+                        size: m.size(),
+                        labels: m.labels.iter().map(|l| l.name.as_str()).collect(),
+                        vertices: &m.labels,
+                        matrix: m.to_dense_f64(),
+                        exact: analysis.exact_matrix.as_ref().map(|q| {
+                            (0..q.size())
+                                .map(|i| (0..q.size()).map(|j| q.get(i, j).to_string()).collect())
+                                .collect()
+                        }),
+                    };
+                    serde_json::to_string_pretty(&j).map_err(|e| e.to_string())? + "\n"
+                }
+                other => return Err(format!("unknown matrix format '{other}'; use mtx or json")),
+            };
+            match output {
+                Some(p) => write_atomic(&p, text.as_bytes()),
+                None => {
+                    print!("{text}");
+                    Ok(())
+                }
+            }
+        }
+    }
+}
+
+fn parse_params(list: &[String]) -> Result<Vec<(String, String)>, String> {
+    list.iter()
+        .map(|p| {
+            p.split_once('=')
+                .map(|(k, v)| (k.trim().to_string(), v.trim().to_string()))
+                .ok_or_else(|| format!("parameter '{p}' is not of the form NAME=VALUE"))
+        })
+        .collect()
+}
+
+fn run_analysis(a: &AnalysisArgs) -> Result<(Box<dyn Scheme>, Analysis), String> {
+    let scheme = schemes::build(&a.scheme, &parse_params(&a.params)?)?;
+    let config = Configuration::regular(scheme.as_ref(), a.valence)?;
+    let neighbourhood: NeighbourhoodKind = a.neighbourhood.parse()?;
+    let method = match a.method.as_deref() {
+        None => None,
+        Some("dft") => Some(Method::Dft),
+        Some("full") => Some(Method::Full),
+        Some(m) => return Err(format!("unknown method '{m}'; use dft or full")),
+    };
+    if method == Some(Method::Dft) && config.symmetry_period() == config.valence() {
+        return Err("this configuration has no rotation symmetry; use --method full".into());
+    }
+    let opts = Options {
+        neighbourhood,
+        method,
+        exact: !a.no_exact,
+    };
+    let analysis = analyse(scheme.as_ref(), &config, &opts)?;
+    Ok((scheme, analysis))
+}
+
+fn list_schemes(json: bool) -> Result<(), String> {
+    #[derive(serde::Serialize)]
+    struct Entry {
+        name: &'static str,
+        description: &'static str,
+        params: Vec<crate::schemes::ParamSpec>,
+    }
+    let list: Vec<Entry> = schemes::registry()
+        .into_iter()
+        .map(|e| Entry {
+            name: e.name,
+            description: e.description,
+            params: (e.params)(),
+        })
+        .collect();
+    if json {
+        return print_json(&list);
+    }
+    for e in &list {
+        println!("{:<16} {}", e.name, e.description);
+        if e.params.is_empty() {
+            println!("{:<16} (no parameters)", "");
+        }
+        for p in &e.params {
+            println!(
+                "{:<16} --param {}=VALUE  default {}  range [{}, {}]  {}",
+                "", p.name, p.default, p.min, p.max, p.description
+            );
+        }
+    }
+    Ok(())
+}
+
+fn spectrum_table(s: &Spectrum) -> String {
+    let mut out = String::new();
+    out += &format!(
+        "scheme {}  valence {}  faces {}  neighbourhood {:?} ({} vertices; minimal {}, analysis {})\n",
+        s.scheme, s.valence, s.faces, s.neighbourhood, s.matrix_size, s.minimal_size, s.analysis_size
+    );
+    if !s.params.is_empty() {
+        out += &format!(
+            "parameters: {}\n",
+            s.params
+                .iter()
+                .map(|(k, v)| format!("{k}={v}"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+    }
+    out += &format!(
+        "method {:?}: blocks {}\n\n",
+        s.method,
+        s.blocks
+            .iter()
+            .map(|b| format!("{}:{}", b.index, b.size))
+            .collect::<Vec<_>>()
+            .join(" ")
+    );
+    out += &format!(
+        "{:>4}  {:<34} {:>14}  {:>4} {:>4}  {}\n",
+        "#", "eigenvalue", "modulus", "alg", "geo", "blocks"
+    );
+    for (k, e) in s.eigenvalues.iter().enumerate() {
+        out += &format!(
+            "{:>4}  {:<34} {:>14}  {:>4} {:>4}  {}{}\n",
+            k,
+            e.display(),
+            crate::spectrum::fmt_f(e.modulus),
+            e.algebraic_multiplicity,
+            e.geometric_multiplicity,
+            compact_blocks(&e.blocks),
+            if e.defective { "  DEFECTIVE" } else { "" }
+        );
+    }
+    if let Some(x) = &s.exact_analysis {
+        out += &format!(
+            "\nexact ({}): characteristic polynomial of degree {}; rational roots {}; remaining factor degree {}{}\n",
+            x.method,
+            x.polynomial_degree,
+            x.rational_roots
+                .iter()
+                .map(|r| format!("{}^{}", r.value, r.algebraic_multiplicity))
+                .collect::<Vec<_>>()
+                .join(" "),
+            x.remaining_degree,
+            if x.agrees_with_float { "" } else { "  (DISAGREES with floating point multiplicities)" }
+        );
+    }
+    out += &format!(
+        "\nReif spectral C1 criterion: {}\n",
+        if s.verdict.c1_spectral {
+            "PASSES"
+        } else {
+            "FAILS"
+        }
+    );
+    for r in &s.verdict.reasons {
+        out += &format!("  - {r}\n");
+    }
+    if let Some(r) = s.verdict.lambda3_over_lambda1_squared {
+        out += &format!("  |λ3|/λ1² = {}\n", crate::spectrum::fmt_f(r));
+    }
+    out
+}
+
+fn compact_blocks(b: &[usize]) -> String {
+    if b.len() > 6 {
+        format!(
+            "{},{},…,{} ({} blocks)",
+            b[0],
+            b[1],
+            b[b.len() - 1],
+            b.len()
+        )
+    } else {
+        b.iter()
+            .map(|x| x.to_string())
+            .collect::<Vec<_>>()
+            .join(",")
+    }
+}
+
+fn stencil_table(st: &crate::spectrum::stencils::Stencils) -> String {
+    let mut out = format!(
+        "scheme {}  valence {}  neighbourhood {:?}\n\n",
+        st.scheme, st.valence, st.neighbourhood
+    );
+    out += &format!("{:<22} {:>22}", "vertex", "limit");
+    for k in 0..st.tangent.len() {
+        out += &format!(" {:>22}", format!("tangent {}", k + 1));
+    }
+    out += "\n";
+    for (k, w) in st.limit.iter().enumerate() {
+        let all_zero = w.weight == 0.0 && st.tangent.iter().all(|t| t[k].weight == 0.0);
+        if all_zero {
+            continue;
+        }
+        let cell = |x: &crate::spectrum::stencils::StencilWeight| match &x.recognised {
+            Some(r) if r != "0" => format!("{} ({})", crate::spectrum::fmt_f(x.weight), r),
+            _ => crate::spectrum::fmt_f(x.weight),
+        };
+        out += &format!("{:<22} {:>22}", w.vertex, cell(w));
+        for t in &st.tangent {
+            out += &format!(" {:>22}", cell(&t[k]));
+        }
+        out += "\n";
+    }
+    out += "(vertices where every stencil is zero are omitted)\n";
+    out
+}

@@ -1,0 +1,90 @@
+//! The `subdlab` command line. Every analysis command takes `--valence N`,
+//! repeated `--param NAME=VALUE`, `--neighbourhood minimal|analysis` and
+//! `--json`. Errors are one line on stderr with a non-zero exit.
+
+mod commands;
+mod output;
+
+use clap::{Args, Parser, Subcommand};
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "subdlab",
+    version,
+    about = "Eigenanalysis and smoothness verification of subdivision surfaces"
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// List the built-in schemes with their parameters, defaults and ranges
+    Schemes {
+        #[arg(long)]
+        json: bool,
+    },
+    /// Spectrum of the local subdivision matrix with multiplicities and the Reif verdict
+    Spectrum(AnalysisArgs),
+    /// Limit and tangent stencils (left eigenvectors) on labelled vertices
+    Stencils(AnalysisArgs),
+    /// Export the local subdivision matrix
+    Matrix {
+        #[command(flatten)]
+        common: AnalysisArgs,
+        /// mtx (Matrix Market) or json
+        #[arg(long, default_value = "mtx")]
+        format: String,
+        /// write to this file (atomically) instead of standard output
+        #[arg(short, long)]
+        output: Option<std::path::PathBuf>,
+    },
+}
+
+#[derive(Args, Debug, Clone)]
+pub struct AnalysisArgs {
+    /// scheme name (see `subdlab schemes`)
+    pub scheme: String,
+    /// valence of the extraordinary vertex (or face)
+    #[arg(long, short = 'n')]
+    pub valence: usize,
+    /// scheme parameter NAME=VALUE (3/8, 0.375 and 1e-3 are accepted); repeatable
+    #[arg(long = "param", short = 'p')]
+    pub params: Vec<String>,
+    /// minimal (smallest invariant set) or analysis (also defines the first limit ring)
+    #[arg(long, default_value = "analysis")]
+    pub neighbourhood: String,
+    /// dft (Fourier blocks) or full (whole matrix); default: dft when rotation-symmetric
+    #[arg(long)]
+    pub method: Option<String>,
+    /// skip the exact rational confirmation
+    #[arg(long)]
+    pub no_exact: bool,
+    /// machine-readable JSON output (stable field names)
+    #[arg(long)]
+    pub json: bool,
+}
+
+pub fn run() -> Result<(), String> {
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            // help and version go to stdout with exit 0; usage errors are one line
+            if matches!(
+                e.kind(),
+                clap::error::ErrorKind::DisplayHelp | clap::error::ErrorKind::DisplayVersion
+            ) {
+                print!("{e}");
+                return Ok(());
+            }
+            let msg = e.to_string();
+            let first = msg
+                .lines()
+                .find(|l| !l.trim().is_empty())
+                .unwrap_or("invalid arguments");
+            return Err(first.trim_start_matches("error: ").to_string());
+        }
+    };
+    commands::dispatch(cli.command)
+}

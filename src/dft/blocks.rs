@@ -1,0 +1,152 @@
+//! With the rotation P of the neighbourhood by `period` sectors (P^g = I,
+//! PS = SP, g = n / period), vertices fall into orbits {(t, a) : t = 0..g-1}
+//! plus fixed points (the centre). In the basis u_a^m = Σ_t ω^{mt} e_(t,a),
+//! ω = exp(2πi/g), S is block diagonal: block m has entries
+//!
+//!   B_m[a][b] = Σ_τ S[(0,a), (τ,b)] ω^{mτ},
+//!
+//! and fixed points belong to block 0 only (their row sums over an orbit).
+//! This basis is not normalised on purpose: block 0 of a rational S stays
+//! rational, so the exact path can use it.
+
+use faer::c64;
+use faer::Mat;
+
+use crate::matrix::LocalMatrix;
+use crate::numeric::Weight;
+
+/// Orbit structure of a labelled neighbourhood under rotation by `period` sectors.
+#[derive(Clone, Debug)]
+pub struct Orbits {
+    pub group_order: usize,
+    /// for each matrix index: (orbit, position t in the orbit); fixed points have t = 0
+    pub member: Vec<(usize, usize)>,
+    /// for each orbit: the matrix index of its t = 0 representative
+    pub representative: Vec<usize>,
+    pub fixed: Vec<bool>,
+}
+
+impl Orbits {
+    pub fn new<W: Weight>(m: &LocalMatrix<W>, period: usize, sectors: usize) -> Orbits {
+        let g = sectors / period;
+        let mut key_to_orbit = std::collections::HashMap::new();
+        let mut member = Vec::with_capacity(m.size());
+        let mut representative = Vec::new();
+        let mut fixed = Vec::new();
+        let mut order: Vec<usize> = (0..m.size()).collect();
+        // make representatives the t = 0 copies: visit sector < period first
+        order.sort_by_key(|&k| m.labels[k].sector / period);
+        let mut tmp = vec![(0, 0); m.size()];
+        for &k in &order {
+            let l = &m.labels[k];
+            let is_fixed = l.i == 0 && l.j == 0;
+            let key = if is_fixed {
+                (usize::MAX, 0, 0)
+            } else {
+                (l.sector % period, l.i, l.j)
+            };
+            let orbit = *key_to_orbit.entry(key).or_insert_with(|| {
+                representative.push(k);
+                fixed.push(is_fixed);
+                representative.len() - 1
+            });
+            tmp[k] = (orbit, if is_fixed { 0 } else { l.sector / period });
+        }
+        member.extend(tmp);
+        Orbits {
+            group_order: g,
+            member,
+            representative,
+            fixed,
+        }
+    }
+    pub fn num_orbits(&self) -> usize {
+        self.representative.len()
+    }
+    /// Orbits present in block m (fixed points only in block 0).
+    pub fn block_orbits(&self, m: usize) -> Vec<usize> {
+        (0..self.num_orbits())
+            .filter(|&o| m == 0 || !self.fixed[o])
+            .collect()
+    }
+}
+
+#[derive(Clone, Debug)]
+pub struct FourierBlock {
+    pub index: usize,
+    /// orbit of each row/column
+    pub orbits: Vec<usize>,
+    pub matrix: Mat<c64>,
+}
+
+pub fn omega_pow(m: usize, t: usize, g: usize) -> c64 {
+    let k = (m * t) % g;
+    // exact values at quarter turns keep real blocks exactly real
+    if (4 * k) % g == 0 {
+        return [
+            c64::new(1.0, 0.0),
+            c64::new(0.0, 1.0),
+            c64::new(-1.0, 0.0),
+            c64::new(0.0, -1.0),
+        ][4 * k / g];
+    }
+    let theta = 2.0 * std::f64::consts::PI * k as f64 / g as f64;
+    c64::new(theta.cos(), theta.sin())
+}
+
+/// All g Fourier blocks of a rotation-symmetric local matrix.
+pub fn fourier_blocks(s: &LocalMatrix<f64>, orbits: &Orbits) -> Vec<FourierBlock> {
+    let g = orbits.group_order;
+    (0..g)
+        .map(|m| {
+            let list = orbits.block_orbits(m);
+            let mut pos = vec![usize::MAX; orbits.num_orbits()];
+            for (k, &o) in list.iter().enumerate() {
+                pos[o] = k;
+            }
+            let mut b = Mat::<c64>::zeros(list.len(), list.len());
+            for (ra, &a) in list.iter().enumerate() {
+                let row = orbits.representative[a];
+                for &(col, w) in &s.rows[row] {
+                    let (ob, tau) = orbits.member[col];
+                    let cb = pos[ob];
+                    if cb == usize::MAX {
+                        continue; // a fixed point's column outside block 0: its contribution sums to zero
+                    }
+                    let factor = if orbits.fixed[ob] {
+                        c64::new(1.0, 0.0)
+                    } else {
+                        omega_pow(m, tau, g)
+                    };
+                    b[(ra, cb)] += factor * w;
+                }
+            }
+            FourierBlock {
+                index: m,
+                orbits: list,
+                matrix: b,
+            }
+        })
+        .collect()
+}
+
+/// Block 0 in exact arithmetic (real and rational when S is).
+pub fn block_zero_exact(
+    s: &LocalMatrix<crate::numeric::Rational>,
+    orbits: &Orbits,
+) -> crate::numeric::exact::QMatrix {
+    let list = orbits.block_orbits(0);
+    let mut q = crate::numeric::exact::QMatrix::zeros(list.len());
+    for (ra, &a) in list.iter().enumerate() {
+        for (col, w) in &s.rows[orbits.representative[a]] {
+            let cb = orbits.member[*col].0;
+            let idx = list
+                .iter()
+                .position(|&o| o == cb)
+                .expect("block 0 holds every orbit");
+            let v = q.get(ra, idx) + w;
+            q.set(ra, idx, v);
+        }
+    }
+    q
+}

@@ -1,0 +1,6 @@
+//! Block diagonalisation of rotation-symmetric local matrices by the discrete
+//! Fourier transform over the sector rotation group.
+
+pub mod blocks;
+
+pub use blocks::{fourier_blocks, omega_pow, FourierBlock, Orbits};

@@ -1,0 +1,17 @@
+//! subdlab: eigenanalysis and smoothness verification of subdivision surfaces.
+//!
+//! Pipeline (one module per stage, see DESIGN.md):
+//! `schemes` (rules) + `neighbourhood` (configuration, discovery) → `topology` +
+//! `refine` (one step) → `matrix` (local S) → `dft` (Fourier blocks) →
+//! `spectrum` (eigenvalues, stencils, verdicts) → `cli`.
+
+pub mod cli;
+pub mod dft;
+pub mod matrix;
+pub mod mesh;
+pub mod neighbourhood;
+pub mod numeric;
+pub mod refine;
+pub mod schemes;
+pub mod spectrum;
+pub mod topology;

@@ -1,0 +1,7 @@
+//! The local subdivision matrix S, assembled from the scheme's own rules, and
+//! its exports (Matrix Market, JSON).
+
+pub mod export;
+pub mod local;
+
+pub use local::{assemble, LocalMatrix};

@@ -1,0 +1,8 @@
+//! Polygon meshes: connectivity only (positions live beside the mesh, so the same
+//! topology can carry 3-D points, 2-D points or sparse weight rows).
+
+pub mod lattice;
+pub mod polymesh;
+
+pub use lattice::{Chart, LatticeCoord, SectorKind};
+pub use polymesh::{FaceId, PolyMesh, VertexId};

@@ -1,0 +1,182 @@
+//! A face-list polygon mesh with half-edge lookup.
+//!
+//! Faces are counter-clockwise vertex cycles. The mesh may have boundary (the
+//! analysis neighbourhoods are truncated discs); queries that need a complete
+//! one-ring return `None` there, which the refinement marks as "rule not
+//! applicable" instead of guessing.
+
+use std::collections::HashMap;
+
+use super::lattice::Chart;
+
+pub type VertexId = usize;
+pub type FaceId = usize;
+
+#[derive(Clone, Debug)]
+pub struct PolyMesh {
+    faces: Vec<Vec<VertexId>>,
+    num_vertices: usize,
+    /// half-edge (a -> b) -> (face, index of a in that face)
+    half_edges: HashMap<(VertexId, VertexId), (FaceId, usize)>,
+    /// one face corner per vertex, to start walks around it
+    vertex_corner: Vec<Option<(FaceId, usize)>>,
+    /// Optional lattice chart (sector coordinates) used to label the vertices of
+    /// analysis neighbourhoods; absent for user meshes.
+    pub chart: Option<Chart>,
+}
+
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum MeshError {
+    BadIndex { face: usize, index: usize },
+    DegenerateFace { face: usize },
+    NonManifoldEdge { a: usize, b: usize },
+}
+
+impl std::fmt::Display for MeshError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            MeshError::BadIndex { face, index } => {
+                write!(f, "face {face} refers to vertex {index}, which does not exist")
+            }
+            MeshError::DegenerateFace { face } => {
+                write!(f, "face {face} has fewer than 3 distinct vertices")
+            }
+            MeshError::NonManifoldEdge { a, b } => write!(
+                f,
+                "edge {a}->{b} is used twice in the same direction (non-manifold or inconsistently oriented mesh)"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for MeshError {}
+
+impl PolyMesh {
+    pub fn new(num_vertices: usize, faces: Vec<Vec<VertexId>>) -> Result<Self, MeshError> {
+        let mut half_edges = HashMap::with_capacity(faces.iter().map(|f| f.len()).sum());
+        let mut vertex_corner = vec![None; num_vertices];
+        for (fi, face) in faces.iter().enumerate() {
+            if face.len() < 3 {
+                return Err(MeshError::DegenerateFace { face: fi });
+            }
+            for (k, &a) in face.iter().enumerate() {
+                if a >= num_vertices {
+                    return Err(MeshError::BadIndex { face: fi, index: a });
+                }
+                let b = face[(k + 1) % face.len()];
+                if a == b {
+                    return Err(MeshError::DegenerateFace { face: fi });
+                }
+                if half_edges.insert((a, b), (fi, k)).is_some() {
+                    return Err(MeshError::NonManifoldEdge { a, b });
+                }
+                if vertex_corner[a].is_none() {
+                    vertex_corner[a] = Some((fi, k));
+                }
+            }
+        }
+        Ok(PolyMesh {
+            faces,
+            num_vertices,
+            half_edges,
+            vertex_corner,
+            chart: None,
+        })
+    }
+
+    pub fn num_vertices(&self) -> usize {
+        self.num_vertices
+    }
+    pub fn num_faces(&self) -> usize {
+        self.faces.len()
+    }
+    pub fn faces(&self) -> &[Vec<VertexId>] {
+        &self.faces
+    }
+    pub fn face(&self, f: FaceId) -> &[VertexId] {
+        &self.faces[f]
+    }
+
+    /// The face that contains the half-edge a -> b, with the index of a in it.
+    pub fn half_edge(&self, a: VertexId, b: VertexId) -> Option<(FaceId, usize)> {
+        self.half_edges.get(&(a, b)).copied()
+    }
+
+    /// Face `f` rotated so that it starts at its corner `k`.
+    pub fn face_from(&self, f: FaceId, k: usize) -> Vec<VertexId> {
+        let face = &self.faces[f];
+        (0..face.len())
+            .map(|t| face[(k + t) % face.len()])
+            .collect()
+    }
+
+    /// Undirected edges, each once, as (a, b) with the half-edge a->b present.
+    pub fn edges(&self) -> Vec<(VertexId, VertexId)> {
+        let mut out = Vec::new();
+        for face in &self.faces {
+            for k in 0..face.len() {
+                let (a, b) = (face[k], face[(k + 1) % face.len()]);
+                if !self.half_edges.contains_key(&(b, a)) || a < b {
+                    out.push((a, b));
+                }
+            }
+        }
+        out
+    }
+
+    /// True when the edge {a, b} has a face on both sides.
+    pub fn is_interior_edge(&self, a: VertexId, b: VertexId) -> bool {
+        self.half_edges.contains_key(&(a, b)) && self.half_edges.contains_key(&(b, a))
+    }
+
+    /// The faces around vertex `v` in counter-clockwise order, each given as the
+    /// face's vertex cycle starting at `v`. `None` when `v` is on the boundary
+    /// (its fan is open) or isolated.
+    pub fn vertex_fan(&self, v: VertexId) -> Option<Vec<Vec<VertexId>>> {
+        let (f0, k0) = self.vertex_corner.get(v).copied().flatten()?;
+        let mut fan = Vec::new();
+        let (mut f, mut k) = (f0, k0);
+        loop {
+            let face = &self.faces[f];
+            fan.push(self.face_from(f, k));
+            // the previous vertex of this face around v; the next face CCW holds v -> prev
+            let prev = face[(k + face.len() - 1) % face.len()];
+            let (g, kg) = self.half_edge(v, prev)?;
+            if g == f0 {
+                break;
+            }
+            if fan.len() > self.faces.len() {
+                return None; // corrupt connectivity: never loop forever
+            }
+            f = g;
+            k = kg;
+        }
+        Some(fan)
+    }
+
+    /// Valence of an interior vertex (number of faces around it).
+    pub fn valence(&self, v: VertexId) -> Option<usize> {
+        self.vertex_fan(v).map(|f| f.len())
+    }
+
+    /// The faces that have `v` as a corner (works on the boundary too).
+    pub fn faces_around(&self, v: VertexId) -> Vec<FaceId> {
+        self.faces
+            .iter()
+            .enumerate()
+            .filter(|(_, f)| f.contains(&v))
+            .map(|(i, _)| i)
+            .collect()
+    }
+
+    /// For every vertex, the list of faces incident to it.
+    pub fn vertex_faces(&self) -> Vec<Vec<FaceId>> {
+        let mut out = vec![Vec::new(); self.num_vertices];
+        for (fi, face) in self.faces.iter().enumerate() {
+            for &v in face {
+                out[v].push(fi);
+            }
+        }
+        out
+    }
+}

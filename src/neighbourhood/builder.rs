@@ -1,0 +1,114 @@
+//! Generous patches: `rings` rings of regular lattice around the centre, with
+//! lattice charts. Vertex-centred patches glue n lattice wedges (quad or
+//! triangle, per sector); face-centred patches surround a central n-gon with
+//! quads (coordinates doubled so that vertices sit at odd lattice points).
+
+use std::collections::HashMap;
+
+use super::Configuration;
+use crate::mesh::{Chart, LatticeCoord, PolyMesh, SectorKind};
+use crate::schemes::CentreKind;
+
+struct PatchBuilder {
+    chart: Chart,
+    ids: HashMap<LatticeCoord, usize>,
+    faces: Vec<Vec<usize>>,
+}
+
+impl PatchBuilder {
+    fn vertex(&mut self, s: usize, i: i64, j: i64) -> usize {
+        let c = self
+            .chart
+            .canonical(s, i, j)
+            .expect("patch points lie in adjacent wedges");
+        if let Some(&id) = self.ids.get(&c) {
+            return id;
+        }
+        let id = self.chart.vertex_coords.len();
+        self.chart.vertex_coords.push(c);
+        self.ids.insert(c, id);
+        id
+    }
+    fn face(&mut self, sector: Option<usize>, corners: &[(usize, i64, i64)]) {
+        let f = corners
+            .iter()
+            .map(|&(s, i, j)| self.vertex(s, i, j))
+            .collect();
+        self.faces.push(f);
+        self.chart.face_sector.push(sector);
+    }
+}
+
+/// Returns the patch and its ring-0 vertices (the centre vertex, or the
+/// corners of the central face).
+pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize>) {
+    let n = config.valence();
+    let r = rings as i64;
+    let mut b = PatchBuilder {
+        chart: Chart {
+            sector_kinds: config.sectors.clone(),
+            vertex_coords: Vec::new(),
+            face_sector: Vec::new(),
+        },
+        ids: HashMap::new(),
+        faces: Vec::new(),
+    };
+    let centre_set = match config.centre {
+        CentreKind::Vertex => {
+            let c = b.vertex(0, 0, 0);
+            for s in 0..n {
+                match config.sectors[s] {
+                    SectorKind::Quad => {
+                        for a in 0..r {
+                            for c in 0..r {
+                                b.face(
+                                    Some(s),
+                                    &[(s, a, c), (s, a + 1, c), (s, a + 1, c + 1), (s, a, c + 1)],
+                                );
+                            }
+                        }
+                    }
+                    SectorKind::Tri => {
+                        for a in 0..r {
+                            for c in 0..r - a {
+                                b.face(Some(s), &[(s, a, c), (s, a + 1, c), (s, a, c + 1)]);
+                                if a + c + 2 <= r {
+                                    b.face(
+                                        Some(s),
+                                        &[(s, a + 1, c), (s, a + 1, c + 1), (s, a, c + 1)],
+                                    );
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+            vec![c]
+        }
+        CentreKind::Face => {
+            let corners: Vec<_> = (0..n).map(|s| (s, 1, 1)).collect();
+            b.face(None, &corners);
+            for s in 0..n {
+                for a in 1..=r {
+                    for c in 0..=r {
+                        let (x, y) = (2 * a, 2 * c);
+                        b.face(
+                            Some(s),
+                            &[
+                                (s, x - 1, y - 1),
+                                (s, x + 1, y - 1),
+                                (s, x + 1, y + 1),
+                                (s, x - 1, y + 1),
+                            ],
+                        );
+                    }
+                }
+            }
+            b.faces[0].clone()
+        }
+    };
+    let mut mesh =
+        PolyMesh::new(b.chart.vertex_coords.len(), b.faces).expect("patch is a manifold disc");
+    mesh.chart = Some(b.chart);
+    (mesh, centre_set)
+}

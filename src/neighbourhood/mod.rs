@@ -1,0 +1,13 @@
+//! Neighbourhoods of an extraordinary point: configurations, generous patches
+//! with lattice charts, stable vertex labels, and the automatic discovery of
+//! the minimal invariant and analysis neighbourhoods.
+
+pub mod builder;
+pub mod configuration;
+pub mod discovery;
+pub mod labels;
+
+pub use builder::build_patch;
+pub use configuration::Configuration;
+pub use discovery::{discover, Discovered, NeighbourhoodKind};
+pub use labels::{VertexKind, VertexLabel};

@@ -1,0 +1,334 @@
+//! Exact linear algebra over the rationals: characteristic polynomials,
+//! rational roots with multiplicity, and exact ranks. This turns "1/4 appears
+//! three times" from a floating-point observation into a fact.
+
+use super::weight::Rational;
+use num_bigint::BigInt;
+use num_traits::{One, Signed, Zero};
+
+/// Dense exact matrix, row-major.
+#[derive(Clone, Debug, PartialEq)]
+pub struct QMatrix {
+    pub n: usize,
+    pub data: Vec<Rational>,
+}
+
+impl QMatrix {
+    pub fn zeros(n: usize) -> Self {
+        QMatrix {
+            n,
+            data: vec![Rational::zero(); n * n],
+        }
+    }
+    pub fn get(&self, i: usize, j: usize) -> &Rational {
+        &self.data[i * self.n + j]
+    }
+    pub fn set(&mut self, i: usize, j: usize, v: Rational) {
+        self.data[i * self.n + j] = v;
+    }
+
+    /// Characteristic polynomial det(xI - A), coefficients from x^0 upwards.
+    /// Similarity reduction to upper Hessenberg form by exact elimination, then
+    /// the Hessenberg determinant recurrence.
+    pub fn charpoly(&self) -> Poly {
+        let n = self.n;
+        let mut h = self.data.clone();
+        let at = |i: usize, j: usize| i * n + j;
+        for col in 0..n.saturating_sub(2) {
+            // pick a non-zero pivot below the subdiagonal, preferring small ones
+            let mut pivot = None;
+            for r in col + 1..n {
+                if !h[at(r, col)].is_zero() {
+                    let better = match pivot {
+                        None => true,
+                        Some(p) => height(&h[at(r, col)]) < height(&h[at(p, col)]),
+                    };
+                    if better {
+                        pivot = Some(r);
+                    }
+                }
+            }
+            let Some(p) = pivot else { continue };
+            if p != col + 1 {
+                // swap rows and columns p and col+1 (a similarity)
+                for j in 0..n {
+                    h.swap(at(p, j), at(col + 1, j));
+                }
+                for i in 0..n {
+                    h.swap(at(i, p), at(i, col + 1));
+                }
+            }
+            let piv = h[at(col + 1, col)].clone();
+            for r in col + 2..n {
+                if h[at(r, col)].is_zero() {
+                    continue;
+                }
+                let m = &h[at(r, col)] / &piv;
+                // row_r -= m * row_{col+1}
+                for j in 0..n {
+                    let t = &m * &h[at(col + 1, j)];
+                    if !t.is_zero() {
+                        h[at(r, j)] = &h[at(r, j)] - t;
+                    }
+                }
+                // col_{col+1} += m * col_r  (keeps the similarity)
+                for i in 0..n {
+                    let t = &m * &h[at(i, r)];
+                    if !t.is_zero() {
+                        h[at(i, col + 1)] = &h[at(i, col + 1)] + t;
+                    }
+                }
+            }
+        }
+        // p_k = det(xI - H[0..k, 0..k]) by the Hessenberg recurrence
+        let mut ps: Vec<Poly> = vec![Poly::one()];
+        for k in 1..=n {
+            let hkk = h[at(k - 1, k - 1)].clone();
+            let mut pk = ps[k - 1].mul_linear(&hkk); // (x - h_kk) p_{k-1}
+            let mut prod = Rational::one();
+            for i in (1..k).rev() {
+                prod = &prod * &h[at(i, i - 1)];
+                if prod.is_zero() {
+                    break;
+                }
+                let c = &prod * &h[at(i - 1, k - 1)];
+                if !c.is_zero() {
+                    pk = pk.sub(&ps[i - 1].scale(&c));
+                }
+            }
+            ps.push(pk);
+        }
+        ps.pop().unwrap()
+    }
+
+    /// Exact rank by Gaussian elimination.
+    pub fn rank(&self) -> usize {
+        rank_of(self.n, self.n, self.data.clone())
+    }
+
+    /// A - λI
+    pub fn shifted(&self, lambda: &Rational) -> QMatrix {
+        let mut m = self.clone();
+        for i in 0..self.n {
+            let v = m.get(i, i) - lambda;
+            m.set(i, i, v);
+        }
+        m
+    }
+}
+
+fn height(r: &Rational) -> usize {
+    (r.numer().bits() + r.denom().bits()) as usize
+}
+
+pub fn rank_of(rows: usize, cols: usize, mut a: Vec<Rational>) -> usize {
+    let mut rank = 0;
+    for c in 0..cols {
+        let Some(p) = (rank..rows).find(|&r| !a[r * cols + c].is_zero()) else {
+            continue;
+        };
+        for j in 0..cols {
+            a.swap(rank * cols + j, p * cols + j);
+        }
+        let piv = a[rank * cols + c].clone();
+        for r in rank + 1..rows {
+            if a[r * cols + c].is_zero() {
+                continue;
+            }
+            let m = &a[r * cols + c] / &piv;
+            for j in c..cols {
+                let t = &m * &a[rank * cols + j];
+                a[r * cols + j] = &a[r * cols + j] - t;
+            }
+        }
+        rank += 1;
+    }
+    rank
+}
+
+/// Polynomial with rational coefficients, lowest degree first.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Poly {
+    pub coeffs: Vec<Rational>,
+}
+
+impl Poly {
+    pub fn one() -> Self {
+        Poly {
+            coeffs: vec![Rational::one()],
+        }
+    }
+    pub fn from_roots(roots: &[Rational]) -> Self {
+        roots.iter().fold(Poly::one(), |p, r| p.mul_linear(r))
+    }
+    pub fn degree(&self) -> usize {
+        self.coeffs.len().saturating_sub(1)
+    }
+    fn trim(mut self) -> Self {
+        while self.coeffs.len() > 1 && self.coeffs.last().is_some_and(|c| c.is_zero()) {
+            self.coeffs.pop();
+        }
+        self
+    }
+    /// (x - r) * self
+    pub fn mul_linear(&self, r: &Rational) -> Poly {
+        let mut out = vec![Rational::zero(); self.coeffs.len() + 1];
+        for (k, c) in self.coeffs.iter().enumerate() {
+            out[k + 1] = &out[k + 1] + c;
+            out[k] = &out[k] - r * c;
+        }
+        Poly { coeffs: out }.trim()
+    }
+    pub fn scale(&self, c: &Rational) -> Poly {
+        Poly {
+            coeffs: self.coeffs.iter().map(|x| x * c).collect(),
+        }
+        .trim()
+    }
+    pub fn sub(&self, o: &Poly) -> Poly {
+        let n = self.coeffs.len().max(o.coeffs.len());
+        let z = Rational::zero();
+        let coeffs = (0..n)
+            .map(|k| self.coeffs.get(k).unwrap_or(&z) - o.coeffs.get(k).unwrap_or(&z))
+            .collect();
+        Poly { coeffs }.trim()
+    }
+    pub fn eval(&self, x: &Rational) -> Rational {
+        self.coeffs
+            .iter()
+            .rev()
+            .fold(Rational::zero(), |acc, c| acc * x + c)
+    }
+    /// Divide by (x - r) when r is a root; returns the quotient.
+    pub fn deflate(&self, r: &Rational) -> Option<Poly> {
+        if !self.eval(r).is_zero() || self.degree() == 0 {
+            return None;
+        }
+        let d = self.degree();
+        let mut q = vec![Rational::zero(); d];
+        let mut carry = Rational::zero();
+        for k in (1..=d).rev() {
+            carry = &carry * r + &self.coeffs[k];
+            q[k - 1] = carry.clone();
+        }
+        Some(Poly { coeffs: q }.trim())
+    }
+    /// Multiplicity of r as a root, and the cofactor.
+    pub fn root_multiplicity(&self, r: &Rational) -> (usize, Poly) {
+        let mut p = self.clone();
+        let mut m = 0;
+        while let Some(q) = p.deflate(r) {
+            p = q;
+            m += 1;
+        }
+        (m, p)
+    }
+    /// Human-readable form, highest degree first, e.g. "x^3 - 5/4 x^2 + 1/4 x".
+    pub fn pretty(&self) -> String {
+        let mut parts = Vec::new();
+        for (k, c) in self.coeffs.iter().enumerate().rev() {
+            if c.is_zero() {
+                continue;
+            }
+            let sign = if c.is_negative() { "-" } else { "+" };
+            let a = c.abs();
+            let coef = if a.is_one() && k > 0 {
+                String::new()
+            } else {
+                format!("{a} ")
+            };
+            let mono = match k {
+                0 => String::new(),
+                1 => "x".to_string(),
+                _ => format!("x^{k}"),
+            };
+            parts.push((sign, format!("{coef}{mono}").trim().to_string()));
+        }
+        let mut s = String::new();
+        for (i, (sign, t)) in parts.iter().enumerate() {
+            if i == 0 {
+                if *sign == "-" {
+                    s.push('-');
+                }
+            } else {
+                s.push_str(&format!(" {sign} "));
+            }
+            s.push_str(t);
+        }
+        if s.is_empty() {
+            s.push('0');
+        }
+        s
+    }
+}
+
+/// Exact rational roots of `p` among `candidates`, with multiplicities, and the
+/// remaining factor (whose roots are irrational or complex, or were not among
+/// the candidates).
+pub fn rational_roots(p: &Poly, candidates: &[Rational]) -> (Vec<(Rational, usize)>, Poly) {
+    let mut rest = p.clone();
+    let mut found = Vec::new();
+    for r in candidates {
+        if found.iter().any(|(q, _)| q == r) {
+            continue;
+        }
+        let (m, q) = rest.root_multiplicity(r);
+        if m > 0 {
+            found.push((r.clone(), m));
+            rest = q;
+        }
+    }
+    (found, rest)
+}
+
+pub fn q(p: i64, qd: i64) -> Rational {
+    Rational::new(BigInt::from(p), BigInt::from(qd))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn charpoly_of_companion_like_matrix() {
+        // upper triangular with diagonal 1, 1/2, 1/2: det(xI-A) = (x-1)(x-1/2)^2
+        let mut a = QMatrix::zeros(3);
+        a.set(0, 0, q(1, 1));
+        a.set(1, 1, q(1, 2));
+        a.set(2, 2, q(1, 2));
+        a.set(0, 2, q(3, 1));
+        a.set(2, 0, q(0, 1));
+        let p = a.charpoly();
+        assert_eq!(p, Poly::from_roots(&[q(1, 1), q(1, 2), q(1, 2)]));
+        let (roots, rest) = rational_roots(&p, &[q(1, 2), q(1, 1)]);
+        assert_eq!(roots, vec![(q(1, 2), 2), (q(1, 1), 1)]);
+        assert_eq!(rest.degree(), 0);
+    }
+
+    #[test]
+    fn charpoly_matches_trace_and_determinant_of_dense_matrix() {
+        // [[2,1,0],[1,3,1],[0,1,4]] : trace 9, det 2*(12-1) - 1*(4) = 18
+        let vals = [[2, 1, 0], [1, 3, 1], [0, 1, 4]];
+        let mut a = QMatrix::zeros(3);
+        for i in 0..3 {
+            for j in 0..3 {
+                a.set(i, j, q(vals[i][j], 1));
+            }
+        }
+        let p = a.charpoly();
+        assert_eq!(p.coeffs[3], q(1, 1));
+        assert_eq!(p.coeffs[2], q(-9, 1));
+        assert_eq!(p.coeffs[0], q(-18, 1));
+        // sum of principal 2x2 minors: (6-1) + (8-0) + (12-1) = 24
+        assert_eq!(p.coeffs[1], q(24, 1));
+    }
+
+    #[test]
+    fn exact_rank_detects_jordan_block() {
+        let mut a = QMatrix::zeros(2);
+        a.set(0, 0, q(1, 4));
+        a.set(1, 1, q(1, 4));
+        a.set(0, 1, q(1, 1));
+        assert_eq!(a.shifted(&q(1, 4)).rank(), 1);
+    }
+}

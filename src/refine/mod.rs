@@ -1,0 +1,107 @@
+//! One refinement step, generic over what is averaged.
+//!
+//! A topology operator (`topology::`) says which new vertices exist and where
+//! each comes from (`Origin`); a scheme's mask (`schemes::`) turns an origin into
+//! a stencil `p_new = Σ w_i p_i`; `apply` evaluates stencils on any data that can
+//! be combined linearly: 3-D points, 2-D points, sparse weight rows. The same stencils therefore drive mesh refinement and matrix assembly.
+
+pub mod combine;
+
+pub use combine::{Combine, SparseRow};
+
+use crate::mesh::{FaceId, VertexId};
+use crate::numeric::{Inexact, Weight};
+
+/// Where a new vertex (or a new face) comes from in the old mesh.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Origin {
+    /// the new vertex that replaces an old vertex (primal schemes)
+    Vertex(VertexId),
+    /// the new vertex on an old edge; (a, b) is a half-edge of the old mesh
+    Edge(VertexId, VertexId),
+    /// the new vertex inside an old face
+    Face(FaceId),
+    /// the new vertex near corner `corner` of old face `face` (dual schemes)
+    Corner { face: FaceId, corner: usize },
+}
+
+/// Weights on old vertices. Rules may add the same vertex several times;
+/// [`Stencil::merged`] (applied to every rule result by
+/// `schemes::SchemeWeight::stencil`) sums duplicates and drops zeros.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Stencil<W> {
+    pub terms: Vec<(VertexId, W)>,
+}
+
+impl<W: Weight> Default for Stencil<W> {
+    fn default() -> Self {
+        Stencil { terms: Vec::new() }
+    }
+}
+
+impl<W: Weight> Stencil<W> {
+    pub fn new() -> Self {
+        Self::default()
+    }
+    /// Add `w` to the weight of vertex `v` (duplicates are summed by `merged`).
+    pub fn add(&mut self, v: VertexId, w: W) {
+        self.terms.push((v, w));
+    }
+    /// Sum duplicate vertices, drop zero weights, sort by vertex.
+    pub fn merged(mut self) -> Self {
+        self.terms.sort_by_key(|t| t.0);
+        let mut out: Vec<(VertexId, W)> = Vec::with_capacity(self.terms.len());
+        for (v, w) in self.terms {
+            match out.last_mut() {
+                Some(last) if last.0 == v => last.1 = last.1.clone() + w,
+                _ => out.push((v, w)),
+            }
+        }
+        out.retain(|t| !t.1.is_zero());
+        Stencil { terms: out }
+    }
+    pub fn with(mut self, v: VertexId, w: W) -> Self {
+        self.add(v, w);
+        self
+    }
+    /// Add `scale` times another stencil.
+    pub fn add_scaled(&mut self, other: &Stencil<W>, scale: &W) {
+        for (v, w) in &other.terms {
+            self.add(*v, w.clone() * scale.clone());
+        }
+    }
+    pub fn sum_of_weights(&self) -> W {
+        self.terms
+            .iter()
+            .fold(W::zero(), |acc, t| acc + t.1.clone())
+    }
+    /// Vertices with non-zero weight (call on a merged stencil).
+    pub fn support(&self) -> impl Iterator<Item = VertexId> + '_ {
+        self.terms.iter().filter(|t| !t.1.is_zero()).map(|t| t.0)
+    }
+}
+
+/// What a mask returns for one origin: `Ok(None)` when the old mesh does not
+/// hold the neighbourhood the rule needs (boundary of a truncated patch, or a
+/// face type the rule does not cover); `Err(Inexact)` when the weights are not
+/// representable in `W`.
+pub type RuleResult<W> = Result<Option<Stencil<W>>, Inexact>;
+
+/// Evaluate stencils on data; a new value is `None` when its stencil is missing
+/// or touches a missing old value.
+pub fn apply<W: Weight, T: Combine<W>>(
+    stencils: &[Option<Stencil<W>>],
+    data: &[Option<T>],
+) -> Vec<Option<T>> {
+    stencils
+        .iter()
+        .map(|st| {
+            let st = st.as_ref()?;
+            let mut terms = Vec::with_capacity(st.terms.len());
+            for (v, w) in &st.terms {
+                terms.push((w.clone(), data.get(*v)?.as_ref()?));
+            }
+            Some(T::combine(&terms))
+        })
+        .collect()
+}

@@ -1,0 +1,62 @@
+//! Doo–Sabin subdivision (Doo & Sabin 1978) with the Doo–Sabin weights:
+//! the new vertex at corner 0 of an m-gon is Σ_j α_j v_j with
+//! α_0 = 1/4 + 5/(4m), α_j = (3 + 2 cos(2πj/m)) / (4m).
+
+use super::{CentreKind, Params, Rules, Scheme, SchemeEntry};
+use crate::mesh::{PolyMesh, SectorKind};
+use crate::numeric::Weight;
+use crate::refine::{Origin, RuleResult, Stencil};
+use crate::topology::Topology;
+
+pub struct DooSabin {
+    params: Params,
+}
+
+pub fn entry() -> SchemeEntry {
+    SchemeEntry {
+        name: "doo-sabin",
+        description: "Doo–Sabin dual subdivision with the Doo–Sabin weights (biquadratic B-spline when regular)",
+        params: Vec::new,
+        build: |params| Box::new(DooSabin { params }),
+    }
+}
+
+impl<W: Weight> Rules<W> for DooSabin {
+    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+        let Origin::Corner { face, corner } = origin else {
+            return Ok(None);
+        };
+        let cyc = mesh.face_from(face, corner);
+        let m = cyc.len() as i64;
+        let mut s = Stencil::new();
+        for (j, &v) in cyc.iter().enumerate() {
+            let mut w = (W::int(3) + W::int(2) * W::cos_2pi(j as i64, m)?) / W::int(4 * m);
+            if j == 0 {
+                w = w + W::ratio(1, 4);
+            }
+            s.add(v, w);
+        }
+        Ok(Some(s))
+    }
+}
+
+impl Scheme for DooSabin {
+    fn name(&self) -> &'static str {
+        "doo-sabin"
+    }
+    fn description(&self) -> &'static str {
+        entry().description
+    }
+    fn topology(&self) -> Topology {
+        Topology::Dual
+    }
+    fn centre_kind(&self) -> CentreKind {
+        CentreKind::Face
+    }
+    fn sector_kind(&self) -> SectorKind {
+        SectorKind::Quad
+    }
+    fn params(&self) -> &Params {
+        &self.params
+    }
+}

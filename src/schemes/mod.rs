@@ -1,0 +1,101 @@
+//! Subdivision schemes: one file per scheme, each a mask (the weights) over a
+//! topology operator (the connectivity). Masks are generic over the weight
+//! scalar so that the same code gives float and exact stencils.
+
+pub mod catmull_clark;
+pub mod doo_sabin;
+pub mod loop_subdivision;
+pub mod params;
+
+use crate::mesh::{PolyMesh, SectorKind};
+use crate::numeric::{Rational, Weight};
+use crate::refine::{Origin, RuleResult};
+use crate::topology::Topology;
+pub use params::{ParamSpec, Params};
+
+/// The rules of a scheme for one weight type.
+pub trait Rules<W: Weight> {
+    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W>;
+}
+
+/// What kind of point the analysis is centred on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum CentreKind {
+    /// an extraordinary vertex (Catmull–Clark, Loop, 4-3, ...)
+    Vertex,
+    /// an extraordinary face (Doo–Sabin, ...)
+    Face,
+}
+
+pub trait Scheme: Rules<f64> + Rules<Rational> + Send + Sync {
+    fn name(&self) -> &'static str;
+    fn description(&self) -> &'static str;
+    fn topology(&self) -> Topology;
+    fn centre_kind(&self) -> CentreKind;
+    /// The face type of the regular lattice around the centre.
+    fn sector_kind(&self) -> SectorKind;
+    fn params(&self) -> &Params;
+}
+
+/// Weight types every scheme implements rules for; lets generic code ask a
+/// `&dyn Scheme` for stencils of any of them. This is the one entry point to
+/// the rules: results come back merged (duplicates summed, zeros dropped).
+pub trait SchemeWeight: Weight {
+    fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self>;
+    fn stencil(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
+        Ok(Self::rule(scheme, mesh, origin)?.map(|s| s.merged()))
+    }
+}
+
+impl SchemeWeight for f64 {
+    fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
+        Rules::<f64>::stencil(scheme, mesh, origin)
+    }
+}
+
+impl SchemeWeight for Rational {
+    fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
+        Rules::<Rational>::stencil(scheme, mesh, origin)
+    }
+}
+
+/// Every built-in scheme: name, description and parameter specification.
+pub struct SchemeEntry {
+    pub name: &'static str,
+    pub description: &'static str,
+    pub params: fn() -> Vec<ParamSpec>,
+    pub build: fn(Params) -> Box<dyn Scheme>,
+}
+
+pub fn registry() -> Vec<SchemeEntry> {
+    vec![
+        catmull_clark::entry(),
+        loop_subdivision::entry(),
+        doo_sabin::entry(),
+    ]
+}
+
+pub fn known_names() -> Vec<&'static str> {
+    registry().iter().map(|e| e.name).collect()
+}
+
+/// Build a scheme by name with `name=value` parameter overrides.
+pub fn build(name: &str, overrides: &[(String, String)]) -> Result<Box<dyn Scheme>, String> {
+    let reg = registry();
+    let entry = reg.iter().find(|e| e.name == name).ok_or_else(|| {
+        format!(
+            "unknown scheme '{name}'; known schemes: {}",
+            known_names().join(", ")
+        )
+    })?;
+    let params = Params::resolve(entry.name, &(entry.params)(), overrides)?;
+    Ok((entry.build)(params))
+}
+
+/// The one-ring fan of an interior vertex, restricted to faces of the given
+/// size; `None` when the vertex is on the boundary or a face has another size.
+pub(crate) fn uniform_fan(mesh: &PolyMesh, v: usize, size: usize) -> Option<Vec<Vec<usize>>> {
+    let fan = mesh.vertex_fan(v)?;
+    fan.iter().all(|f| f.len() == size).then_some(fan)
+}

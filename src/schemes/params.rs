@@ -1,0 +1,105 @@
+//! Scheme parameters: specification (name, default, admissible range) and the
+//! resolved values a scheme instance runs with.
+
+use crate::numeric::ParamValue;
+use serde::Serialize;
+
+#[derive(Clone, Debug, Serialize)]
+pub struct ParamSpec {
+    pub name: &'static str,
+    pub default: &'static str,
+    /// inclusive bounds of the admissible range
+    pub min: f64,
+    pub max: f64,
+    pub description: &'static str,
+}
+
+#[derive(Clone, Debug, Default)]
+pub struct Params {
+    pub values: Vec<(String, ParamValue)>,
+}
+
+impl Params {
+    pub fn get(&self, name: &str) -> Option<&ParamValue> {
+        self.values.iter().find(|(n, _)| n == name).map(|(_, v)| v)
+    }
+
+    pub fn resolve(
+        scheme: &str,
+        specs: &[ParamSpec],
+        overrides: &[(String, String)],
+    ) -> Result<Params, String> {
+        let mut values = Vec::new();
+        for spec in specs {
+            values.push((spec.name.to_string(), ParamValue::parse(spec.default)?));
+        }
+        for (name, text) in overrides {
+            let Some(spec) = specs.iter().find(|s| s.name == name) else {
+                let known: Vec<_> = specs.iter().map(|s| s.name).collect();
+                return Err(if known.is_empty() {
+                    format!("scheme '{scheme}' has no parameters (got '{name}')")
+                } else {
+                    format!(
+                        "scheme '{scheme}' has no parameter '{name}'; its parameters: {}",
+                        known.join(", ")
+                    )
+                });
+            };
+            let v = ParamValue::parse(text).map_err(|e| format!("parameter {name}: {e}"))?;
+            if v.value < spec.min || v.value > spec.max {
+                return Err(format!(
+                    "parameter {name}={text} is out of range [{}, {}] for scheme '{scheme}'",
+                    spec.min, spec.max
+                ));
+            }
+            values
+                .iter_mut()
+                .find(|(n, _)| n == name)
+                .expect("spec has a default")
+                .1 = v;
+        }
+        Ok(Params { values })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spec() -> Vec<ParamSpec> {
+        vec![ParamSpec {
+            name: "a",
+            default: "1/2",
+            min: 0.0,
+            max: 0.75,
+            description: "test",
+        }]
+    }
+    fn o(k: &str, v: &str) -> Vec<(String, String)> {
+        vec![(k.into(), v.into())]
+    }
+
+    #[test]
+    fn defaults_and_overrides() {
+        let p = Params::resolve("s", &spec(), &[]).unwrap();
+        assert_eq!(p.get("a").unwrap().value, 0.5);
+        let p = Params::resolve("s", &spec(), &o("a", "3/8")).unwrap();
+        assert_eq!(p.get("a").unwrap().value, 0.375);
+    }
+
+    #[test]
+    fn out_of_range_nan_and_unknown_are_errors() {
+        assert!(Params::resolve("s", &spec(), &o("a", "0.8"))
+            .unwrap_err()
+            .contains("out of range"));
+        assert!(Params::resolve("s", &spec(), &o("a", "-1e-9"))
+            .unwrap_err()
+            .contains("out of range"));
+        assert!(Params::resolve("s", &spec(), &o("a", "NaN"))
+            .unwrap_err()
+            .contains("not a finite number"));
+        assert!(Params::resolve("s", &spec(), &o("b", "1"))
+            .unwrap_err()
+            .contains("no parameter 'b'"));
+    }
+}

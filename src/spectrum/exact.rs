@@ -1,0 +1,108 @@
+//! Exact confirmation of the floating-point spectrum when S is rational.
+//!
+//! Candidate rationals come from the floats; each is tested exactly as a root
+//! of the characteristic polynomial (of the whole S when it is small enough,
+//! else of Fourier block 0, which is rational too). Multiplicities from the
+//! full polynomial and exact ranks are facts, not observations.
+
+use num_bigint::BigInt;
+use serde::Serialize;
+
+use super::Eigenvalue;
+use crate::dft::blocks::block_zero_exact;
+use crate::dft::Orbits;
+use crate::matrix::LocalMatrix;
+use crate::numeric::exact::{rational_roots, QMatrix};
+use crate::numeric::Rational;
+
+/// Largest matrix whose full characteristic polynomial is computed exactly.
+pub const EXACT_FULL_MAX: usize = 80;
+
+#[derive(Clone, Debug, Serialize)]
+pub struct ExactRoot {
+    pub value: String,
+    pub algebraic_multiplicity: usize,
+    /// exact nullity of S − λI (full method only)
+    pub geometric_multiplicity: Option<usize>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct ExactSummary {
+    /// "full": characteristic polynomial of S; "block0": of Fourier block 0
+    pub method: String,
+    pub polynomial_degree: usize,
+    /// the characteristic polynomial, when short enough to print
+    pub charpoly: Option<String>,
+    pub rational_roots: Vec<ExactRoot>,
+    /// degree of the factor left after removing the rational roots
+    pub remaining_degree: usize,
+    /// every exact multiplicity equals the floating-point one
+    pub agrees_with_float: bool,
+}
+
+fn parse_ratio(s: &str) -> Option<Rational> {
+    let (p, q) = s.split_once('/').unwrap_or((s, "1"));
+    Some(Rational::new(
+        p.parse::<BigInt>().ok()?,
+        q.parse::<BigInt>().ok()?,
+    ))
+}
+
+pub fn to_qmatrix(m: &LocalMatrix<Rational>) -> QMatrix {
+    let mut q = QMatrix::zeros(m.size());
+    for (i, row) in m.rows.iter().enumerate() {
+        for (j, w) in row {
+            q.set(i, *j, w.clone());
+        }
+    }
+    q
+}
+
+pub fn confirm(
+    m: &LocalMatrix<Rational>,
+    eigs: &mut [Eigenvalue],
+    period: usize,
+    n: usize,
+) -> ExactSummary {
+    let candidates: Vec<(usize, Rational)> = eigs
+        .iter()
+        .enumerate()
+        .filter_map(|(k, e)| Some((k, parse_ratio(e.recognised.as_deref()?)?)))
+        .collect();
+    let full = m.size() <= EXACT_FULL_MAX || period == n;
+    let (method, mat) = if full {
+        ("full", to_qmatrix(m))
+    } else {
+        let orbits = Orbits::new(m, period, n);
+        ("block0", block_zero_exact(m, &orbits))
+    };
+    let poly = mat.charpoly();
+    let cand_values: Vec<Rational> = candidates.iter().map(|c| c.1.clone()).collect();
+    let (roots, rest) = rational_roots(&poly, &cand_values);
+    let mut agrees = true;
+    let mut out = Vec::new();
+    for (r, alg) in &roots {
+        let geo = full.then(|| m.size() - mat.shifted(r).rank());
+        let text = r.to_string();
+        if let Some((k, _)) = candidates.iter().find(|c| &c.1 == r) {
+            let e = &mut eigs[*k];
+            e.exact = Some(text.clone());
+            if full && (e.algebraic_multiplicity != *alg || Some(e.geometric_multiplicity) != geo) {
+                agrees = false;
+            }
+        }
+        out.push(ExactRoot {
+            value: text,
+            algebraic_multiplicity: *alg,
+            geometric_multiplicity: geo,
+        });
+    }
+    ExactSummary {
+        method: method.to_string(),
+        polynomial_degree: poly.degree(),
+        charpoly: (poly.degree() <= 12).then(|| poly.pretty()),
+        rational_roots: out,
+        remaining_degree: rest.degree(),
+        agrees_with_float: agrees,
+    }
+}

@@ -1,0 +1,411 @@
+//! Spectrum of the local subdivision matrix: via Fourier blocks when the
+//! configuration is rotation-symmetric, via the full matrix otherwise; merged
+//! into distinct eigenvalues with multiplicities, eigenvectors mapped back to
+//! labelled vertices, exact confirmation where S is rational.
+
+pub mod eigen;
+pub mod exact;
+pub mod stencils;
+pub mod verdict;
+
+use faer::c64;
+use faer::Mat;
+use serde::Serialize;
+
+use crate::dft::{fourier_blocks, omega_pow, Orbits};
+use crate::matrix::{assemble, LocalMatrix};
+use crate::neighbourhood::{discover, Configuration, Discovered, NeighbourhoodKind, VertexLabel};
+use crate::numeric::recognise::recognise;
+use crate::numeric::Rational;
+use crate::schemes::Scheme;
+pub use exact::ExactSummary;
+pub use verdict::Verdict;
+
+/// Two eigenvalues from different blocks are the same when this close (relative).
+const MERGE_TOL: f64 = 1e-8;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Method {
+    /// Fourier blocks of the rotation-symmetric matrix
+    Dft,
+    /// the full matrix (no rotation symmetry, or forced)
+    Full,
+}
+
+#[derive(Clone, Debug)]
+pub struct Options {
+    pub neighbourhood: NeighbourhoodKind,
+    pub method: Option<Method>,
+    /// confirm eigenvalues in exact arithmetic where S is rational
+    pub exact: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            neighbourhood: NeighbourhoodKind::Analysis,
+            method: None,
+            exact: true,
+        }
+    }
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct BlockInfo {
+    pub index: usize,
+    pub size: usize,
+}
+
+/// Eigenvectors of one eigenvalue from one block, in block coordinates: right
+/// x with B x = λ x, left y with y^H B = λ y^H. Mapping them to the whole
+/// neighbourhood costs O(matrix size) each, so it is done on demand
+/// ([`Spectrum::right_vectors`], [`Spectrum::left_vectors`]): at high valence
+/// most of the n blocks' vectors are never looked at.
+#[derive(Clone, Debug)]
+pub struct EigenVectors {
+    pub block: usize,
+    pub right: Vec<Vec<c64>>,
+    pub left: Vec<Vec<c64>>,
+}
+
+/// How block coordinates map to neighbourhood vertices.
+#[derive(Clone, Debug)]
+pub enum Synthesis {
+    /// block m's coordinate k is orbit `block_orbits[m][k]`
+    Dft {
+        orbits: Orbits,
+        block_orbits: Vec<Vec<usize>>,
+    },
+    /// the single block is the whole matrix
+    Full,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct Eigenvalue {
+    pub re: f64,
+    pub im: f64,
+    pub modulus: f64,
+    pub algebraic_multiplicity: usize,
+    pub geometric_multiplicity: usize,
+    pub defective: bool,
+    /// first block containing it
+    pub block: usize,
+    pub blocks: Vec<usize>,
+    /// exact rational value, proven by the exact path (root of an exact
+    /// characteristic polynomial), else null
+    pub exact: Option<String>,
+    /// a small rational close to the value (a reading aid, not a proof)
+    pub recognised: Option<String>,
+    #[serde(skip)]
+    pub vectors: Vec<EigenVectors>,
+}
+
+impl Eigenvalue {
+    pub fn value(&self) -> c64 {
+        c64::new(self.re, self.im)
+    }
+    pub fn is_real(&self) -> bool {
+        self.im.abs() <= 1e-9 * self.modulus.max(1.0)
+    }
+    /// "0.25 (1/4)" style display.
+    pub fn display(&self) -> String {
+        let num = if self.is_real() {
+            fmt_f(self.re)
+        } else {
+            format!("{}{:+}i", fmt_f(self.re), fmt_f(self.im))
+        };
+        match (&self.exact, &self.recognised) {
+            (Some(e), _) => format!("{num} (= {e})"),
+            (None, Some(r)) => format!("{num} (≈ {r})"),
+            _ => num,
+        }
+    }
+}
+
+pub fn fmt_f(x: f64) -> String {
+    let s = format!("{x:.12}");
+    let s = s.trim_end_matches('0').trim_end_matches('.').to_string();
+    if s == "-0" {
+        "0".into()
+    } else {
+        s
+    }
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct Spectrum {
+    pub scheme: String,
+    pub valence: usize,
+    pub params: std::collections::BTreeMap<String, String>,
+    pub faces: String,
+    pub centre: crate::schemes::CentreKind,
+    pub neighbourhood: NeighbourhoodKind,
+    pub matrix_size: usize,
+    pub minimal_size: usize,
+    pub analysis_size: usize,
+    pub method: Method,
+    pub blocks: Vec<BlockInfo>,
+    pub eigenvalues: Vec<Eigenvalue>,
+    pub verdict: Verdict,
+    pub exact_analysis: Option<ExactSummary>,
+    #[serde(skip)]
+    pub labels: Vec<VertexLabel>,
+    #[serde(skip)]
+    pub synthesis: Synthesis,
+}
+
+impl Spectrum {
+    /// Right eigenvectors of `e` over the neighbourhood (S x = λ x).
+    pub fn right_vectors(&self, e: &Eigenvalue) -> Vec<Vec<c64>> {
+        self.map_vectors(e, false)
+    }
+    /// Left eigenvectors of `e` over the neighbourhood, as rows l with l S = λ l.
+    pub fn left_vectors(&self, e: &Eigenvalue) -> Vec<Vec<c64>> {
+        self.map_vectors(e, true)
+    }
+    fn map_vectors(&self, e: &Eigenvalue, left: bool) -> Vec<Vec<c64>> {
+        let mut out = Vec::new();
+        for vs in &e.vectors {
+            let list = if left { &vs.left } else { &vs.right };
+            for x in list {
+                out.push(match &self.synthesis {
+                    Synthesis::Full => {
+                        if left {
+                            x.iter().map(|z| z.conj()).collect()
+                        } else {
+                            x.clone()
+                        }
+                    }
+                    Synthesis::Dft {
+                        orbits,
+                        block_orbits,
+                    } => synthesise(
+                        x,
+                        vs.block,
+                        &block_orbits[vs.block],
+                        orbits,
+                        self.matrix_size,
+                        left,
+                    ),
+                });
+            }
+        }
+        out
+    }
+}
+
+/// Everything computed for one scheme and configuration.
+pub struct Analysis {
+    pub discovered: Discovered,
+    pub matrix: LocalMatrix<f64>,
+    pub exact_matrix: Option<LocalMatrix<Rational>>,
+    pub spectrum: Spectrum,
+}
+
+pub fn analyse(
+    scheme: &dyn Scheme,
+    config: &Configuration,
+    opts: &Options,
+) -> Result<Analysis, String> {
+    let discovered = discover(scheme, config)?;
+    let matrix =
+        assemble::<f64>(scheme, &discovered, opts.neighbourhood).map_err(|e| e.to_string())?;
+    let exact_matrix = if opts.exact {
+        assemble::<Rational>(scheme, &discovered, opts.neighbourhood).ok()
+    } else {
+        None
+    };
+    let n = config.valence();
+    let period = config.symmetry_period();
+    let symmetric = period < n;
+    let method = opts
+        .method
+        .unwrap_or(if symmetric { Method::Dft } else { Method::Full });
+    let (blocks_info, mut eigenvalues, synthesis) = match method {
+        Method::Dft => {
+            let orbits = Orbits::new(&matrix, period, n);
+            let blocks = fourier_blocks(&matrix, &orbits);
+            let mut all = Vec::new();
+            for b in &blocks {
+                for e in eigen::block_eigen(&b.matrix)? {
+                    all.push(Eigenvalue::from_block(e, b.index));
+                }
+            }
+            let info = blocks
+                .iter()
+                .map(|b| BlockInfo {
+                    index: b.index,
+                    size: b.matrix.nrows(),
+                })
+                .collect();
+            let block_orbits = blocks.into_iter().map(|b| b.orbits).collect();
+            (
+                info,
+                all,
+                Synthesis::Dft {
+                    orbits,
+                    block_orbits,
+                },
+            )
+        }
+        Method::Full => {
+            let dense = Mat::<c64>::from_fn(matrix.size(), matrix.size(), |i, j| {
+                c64::new(matrix.get(i, j), 0.0)
+            });
+            let all = eigen::block_eigen(&dense)?
+                .into_iter()
+                .map(|e| Eigenvalue::from_block(e, 0))
+                .collect();
+            (
+                vec![BlockInfo {
+                    index: 0,
+                    size: matrix.size(),
+                }],
+                all,
+                Synthesis::Full,
+            )
+        }
+    };
+    eigenvalues = merge(eigenvalues);
+    for e in &mut eigenvalues {
+        // snap tiny imaginary parts of real eigenvalues (conjugate blocks) to zero
+        if e.im.abs() < 1e-12 * e.modulus.max(1.0) {
+            e.im = 0.0;
+        }
+        e.recognised = if e.is_real() { recognise(e.re) } else { None };
+    }
+    sort_eigenvalues(&mut eigenvalues);
+    let exact_analysis = exact_matrix
+        .as_ref()
+        .map(|m| exact::confirm(m, &mut eigenvalues, period, n));
+    let verdict = verdict::reif(&eigenvalues);
+    let spectrum = Spectrum {
+        scheme: scheme.name().to_string(),
+        valence: n,
+        params: scheme
+            .params()
+            .values
+            .iter()
+            .map(|(k, v)| (k.clone(), v.text.clone()))
+            .collect(),
+        faces: config.face_sequence(),
+        centre: config.centre,
+        neighbourhood: opts.neighbourhood,
+        matrix_size: matrix.size(),
+        minimal_size: discovered.minimal.len(),
+        analysis_size: discovered.analysis.len(),
+        method,
+        blocks: blocks_info,
+        eigenvalues,
+        verdict,
+        exact_analysis,
+        labels: matrix.labels.clone(),
+        synthesis,
+    };
+    Ok(Analysis {
+        discovered,
+        matrix,
+        exact_matrix,
+        spectrum,
+    })
+}
+
+impl Eigenvalue {
+    fn from_block(e: eigen::BlockEigen, m: usize) -> Eigenvalue {
+        Eigenvalue {
+            re: e.value.re,
+            im: e.value.im,
+            modulus: e.value.norm(),
+            algebraic_multiplicity: e.algebraic,
+            geometric_multiplicity: e.geometric,
+            defective: e.geometric < e.algebraic,
+            block: m,
+            blocks: vec![m],
+            exact: None,
+            recognised: None,
+            vectors: vec![EigenVectors {
+                block: m,
+                right: e.right,
+                left: e.left,
+            }],
+        }
+    }
+}
+
+/// Map one block vector to the whole neighbourhood: right vectors by
+/// X[(t,a)] = ω^{mt} x_a, left rows by l[(t,a)] = conj(y_a) ω^{-mt} / g (the
+/// dual basis of u_a^m); fixed points (the centre) carry their value as is.
+fn synthesise(
+    x: &[c64],
+    m: usize,
+    block_orbits: &[usize],
+    orbits: &Orbits,
+    size: usize,
+    left: bool,
+) -> Vec<c64> {
+    let g = orbits.group_order;
+    let mut pos = vec![usize::MAX; orbits.num_orbits()];
+    for (k, &o) in block_orbits.iter().enumerate() {
+        pos[o] = k;
+    }
+    (0..size)
+        .map(|k| {
+            let (o, t) = orbits.member[k];
+            if pos[o] == usize::MAX {
+                return c64::new(0.0, 0.0);
+            }
+            let v = if left { x[pos[o]].conj() } else { x[pos[o]] };
+            if orbits.fixed[o] {
+                v
+            } else if left {
+                v * omega_pow(m, t, g).conj() / g as f64
+            } else {
+                v * omega_pow(m, t, g)
+            }
+        })
+        .collect()
+}
+
+/// Merge equal eigenvalues found in different blocks.
+fn merge(list: Vec<Eigenvalue>) -> Vec<Eigenvalue> {
+    let mut out: Vec<Eigenvalue> = Vec::new();
+    for e in list {
+        let z = e.value();
+        if let Some(t) = out
+            .iter_mut()
+            .find(|t| (t.value() - z).norm() < MERGE_TOL * z.norm().max(1.0))
+        {
+            t.algebraic_multiplicity += e.algebraic_multiplicity;
+            t.geometric_multiplicity += e.geometric_multiplicity;
+            t.defective |= e.defective;
+            t.blocks.extend(e.blocks);
+            t.blocks.sort_unstable();
+            t.block = t.blocks[0];
+            t.vectors.extend(e.vectors);
+        } else {
+            out.push(e);
+        }
+    }
+    out
+}
+
+/// Modulus descending; ties by real part, then imaginary part, descending.
+pub fn sort_eigenvalues(list: &mut [Eigenvalue]) {
+    list.sort_by(|a, b| {
+        let tie = |x: f64, y: f64| (x - y).abs() <= 1e-10 * x.abs().max(y.abs()).max(1.0);
+        if !tie(a.modulus, b.modulus) {
+            return b.modulus.total_cmp(&a.modulus);
+        }
+        if !tie(a.re, b.re) {
+            return b.re.total_cmp(&a.re);
+        }
+        b.im.total_cmp(&a.im)
+    });
+}
+
+/// The regular configuration's spectrum with default options: the common call.
+pub fn spectrum_of(scheme: &dyn Scheme, valence: usize) -> Result<Spectrum, String> {
+    let config = Configuration::regular(scheme, valence)?;
+    Ok(analyse(scheme, &config, &Options::default())?.spectrum)
+}

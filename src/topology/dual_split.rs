@@ -1,0 +1,108 @@
+//! Dual split (Doo–Sabin and other dual schemes): a new vertex near every face
+//! corner; F-faces shrink the old faces, E-faces sit on interior edges,
+//! V-faces on interior vertices.
+
+use std::collections::HashMap;
+
+use super::{ChartBuilder, Refined};
+use crate::mesh::PolyMesh;
+use crate::refine::Origin;
+
+pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
+    let mut origins = Vec::new();
+    let mut corner_id: HashMap<(usize, usize), usize> = HashMap::new(); // (face, old vertex) -> new
+    for (f, face) in mesh.faces().iter().enumerate() {
+        for (k, &v) in face.iter().enumerate() {
+            corner_id.insert((f, v), origins.len());
+            origins.push(Origin::Corner { face: f, corner: k });
+        }
+    }
+    let mut faces = Vec::new();
+    let mut parents = Vec::new();
+    for (f, face) in mesh.faces().iter().enumerate() {
+        faces.push(face.iter().map(|&v| corner_id[&(f, v)]).collect());
+        parents.push(Origin::Face(f));
+    }
+    for (a, b) in mesh.edges() {
+        let (Some((f, _)), Some((g, _))) = (mesh.half_edge(a, b), mesh.half_edge(b, a)) else {
+            continue;
+        };
+        faces.push(vec![
+            corner_id[&(f, b)],
+            corner_id[&(f, a)],
+            corner_id[&(g, a)],
+            corner_id[&(g, b)],
+        ]);
+        parents.push(Origin::Edge(a, b));
+    }
+    for v in 0..mesh.num_vertices() {
+        let Some(fan) = mesh.vertex_fan(v) else {
+            continue;
+        };
+        let ids: Vec<usize> = fan
+            .iter()
+            .map(|cyc| {
+                // the fan gives vertex cycles; find the face that has this cycle at v
+                let (f, _) = mesh.half_edge(v, cyc[1]).expect("fan edge exists");
+                corner_id[&(f, v)]
+            })
+            .collect();
+        faces.push(ids);
+        parents.push(Origin::Vertex(v));
+    }
+    let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| e.to_string())?;
+    if let Some(chart) = &mesh.chart {
+        let mut cb = ChartBuilder::new(chart);
+        for o in &origins {
+            let Origin::Corner { face: f, corner: k } = *o else {
+                unreachable!()
+            };
+            let face = mesh.face(f);
+            let v = face[k];
+            // new corner = face centre + corner, in the face's chart (lattice doubles)
+            match chart.face_sector[f] {
+                None => {
+                    let c = chart.vertex_coords[v];
+                    cb.push(c.sector, c.i, c.j);
+                }
+                Some(s) => {
+                    let pts: Vec<(i64, i64)> = face
+                        .iter()
+                        .map(|&u| chart.in_chart(chart.vertex_coords[u], s))
+                        .collect();
+                    let m = pts.len() as i64;
+                    let (si, sj) = pts.iter().fold((0, 0), |a, p| (a.0 + p.0, a.1 + p.1));
+                    if si % m != 0 || sj % m != 0 {
+                        cb.ok = false;
+                    }
+                    cb.push(s, si / m + pts[k].0, sj / m + pts[k].1);
+                }
+            }
+        }
+        for p in &parents {
+            let sector = match *p {
+                Origin::Face(f) => chart.face_sector[f],
+                Origin::Edge(a, b) => {
+                    let (f, _) = mesh.half_edge(a, b).expect("edge");
+                    Some(chart.face_sector[f].unwrap_or(chart.vertex_coords[a].sector))
+                }
+                Origin::Vertex(v) => {
+                    let c = chart.vertex_coords[v];
+                    if c.is_centre() {
+                        None
+                    } else {
+                        Some(c.sector)
+                    }
+                }
+                Origin::Corner { .. } => unreachable!(),
+            };
+            cb.face_sector.push(sector);
+        }
+        new_mesh.chart = cb.finish();
+    }
+    Ok(Refined {
+        mesh: new_mesh,
+        vertex_origins: origins,
+        face_parents: parents,
+    })
+}

@@ -1,0 +1,91 @@
+//! Refinement hosts: the connectivity of one subdivision step, knowing nothing
+//! of weights (cf. CGAL's refinement hosts / OpenSubdiv's topology refiner).
+//! Each operator returns the refined mesh, the origin of every new vertex and
+//! the parent entity of every new face, and carries lattice charts along so
+//! that the refined neighbourhood can be matched with the old one.
+
+pub mod dual_split;
+pub mod primal_split;
+
+use crate::mesh::{Chart, LatticeCoord, PolyMesh};
+use crate::refine::Origin;
+
+/// How triangles are split by a primal operator.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TriangleSplit {
+    /// 1 -> 4 triangles, no face point (Loop, the triangle part of 4-3)
+    FourTriangles,
+    /// a face point and 3 quads (Catmull–Clark on triangles)
+    FacePointQuads,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Topology {
+    /// vertex, edge and (for quads and larger) face points; each face split
+    /// into quads around its face point, triangles as `TriangleSplit` says
+    PrimalSplit(TriangleSplit),
+    /// one new vertex per face corner; F-, E- and V-faces (Doo–Sabin)
+    Dual,
+}
+
+impl Topology {
+    pub fn refine(&self, mesh: &PolyMesh) -> Result<Refined, String> {
+        match self {
+            Topology::PrimalSplit(t) => primal_split::refine(mesh, *t),
+            Topology::Dual => dual_split::refine(mesh),
+        }
+    }
+    /// The factor by which lattice coordinates grow in one step.
+    pub fn lattice_scale(&self) -> i64 {
+        2
+    }
+}
+
+#[derive(Clone, Debug)]
+pub struct Refined {
+    pub mesh: PolyMesh,
+    pub vertex_origins: Vec<Origin>,
+    pub face_parents: Vec<Origin>,
+}
+
+/// Builds the chart of a refined mesh: new vertex coordinates from the old
+/// chart, new face sectors as given.
+pub(crate) struct ChartBuilder<'a> {
+    pub old: &'a Chart,
+    pub coords: Vec<LatticeCoord>,
+    pub face_sector: Vec<Option<usize>>,
+    pub ok: bool,
+}
+
+impl<'a> ChartBuilder<'a> {
+    pub fn new(old: &'a Chart) -> Self {
+        ChartBuilder {
+            old,
+            coords: Vec::new(),
+            face_sector: Vec::new(),
+            ok: true,
+        }
+    }
+    /// Record a new vertex at chart coordinates (sector, i, j) of the refined lattice.
+    pub fn push(&mut self, s: usize, i: i64, j: i64) {
+        match self.old.canonical(s, i, j) {
+            Some(c) => self.coords.push(c),
+            None => {
+                self.ok = false;
+                self.coords.push(LatticeCoord::CENTRE);
+            }
+        }
+    }
+    pub fn finish(self) -> Option<Chart> {
+        self.ok.then(|| Chart {
+            sector_kinds: self.old.sector_kinds.clone(),
+            vertex_coords: self.coords,
+            face_sector: self.face_sector,
+        })
+    }
+    /// Sector in which to express an old face: its own, or for a central face
+    /// the sector of the given corner.
+    pub fn face_chart(&self, old_face_sector: Option<usize>, corner_vertex: usize) -> usize {
+        old_face_sector.unwrap_or(self.old.vertex_coords[corner_vertex].sector)
+    }
+}

@@ -1,0 +1,106 @@
+//! Primal split: Catmull–Clark-like (quads around face points) and Loop-like
+//! (1 -> 4 triangles) refinement, and any mixture (4-3 subdivision).
+
+use std::collections::HashMap;
+
+use super::{ChartBuilder, Refined, TriangleSplit};
+use crate::mesh::PolyMesh;
+use crate::refine::Origin;
+
+pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, String> {
+    let nv = mesh.num_vertices();
+    let mut origins: Vec<Origin> = (0..nv).map(Origin::Vertex).collect();
+    let mut edge_id: HashMap<(usize, usize), usize> = HashMap::new();
+    for (a, b) in mesh.edges() {
+        let id = origins.len();
+        origins.push(Origin::Edge(a, b));
+        edge_id.insert((a, b), id);
+        edge_id.insert((b, a), id);
+    }
+    let wants_face_point = |len: usize| len >= 4 || tri == TriangleSplit::FacePointQuads;
+    let mut face_point = vec![None; mesh.num_faces()];
+    for (f, face) in mesh.faces().iter().enumerate() {
+        if wants_face_point(face.len()) {
+            face_point[f] = Some(origins.len());
+            origins.push(Origin::Face(f));
+        }
+    }
+    let mut faces = Vec::new();
+    let mut parents = Vec::new();
+    for (f, face) in mesh.faces().iter().enumerate() {
+        let m = face.len();
+        let e = |k: usize| edge_id[&(face[k % m], face[(k + 1) % m])];
+        match face_point[f] {
+            Some(c) => {
+                for k in 0..m {
+                    faces.push(vec![face[k], e(k), c, e(k + m - 1)]);
+                    parents.push(Origin::Face(f));
+                }
+            }
+            None => {
+                for k in 0..3 {
+                    faces.push(vec![face[k], e(k), e(k + 2)]);
+                    parents.push(Origin::Face(f));
+                }
+                faces.push(vec![e(0), e(1), e(2)]);
+                parents.push(Origin::Face(f));
+            }
+        }
+    }
+    let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| e.to_string())?;
+    if let Some(chart) = &mesh.chart {
+        let mut cb = ChartBuilder::new(chart);
+        for o in &origins {
+            match *o {
+                Origin::Vertex(v) => {
+                    let c = chart.vertex_coords[v];
+                    cb.push(c.sector, 2 * c.i, 2 * c.j);
+                }
+                Origin::Edge(a, b) => {
+                    let (f, _) = mesh
+                        .half_edge(a, b)
+                        .or_else(|| mesh.half_edge(b, a))
+                        .ok_or("dangling edge")?;
+                    let s = cb.face_chart(chart.face_sector[f], a);
+                    let (pa, pb) = (
+                        chart.in_chart(chart.vertex_coords[a], s),
+                        chart.in_chart(chart.vertex_coords[b], s),
+                    );
+                    cb.push(s, pa.0 + pb.0, pa.1 + pb.1);
+                }
+                Origin::Face(f) => match chart.face_sector[f] {
+                    None => cb.push(0, 0, 0), // a central face is centred on the origin
+                    Some(s) => {
+                        let face = mesh.face(f);
+                        let (si, sj) = face.iter().fold((0, 0), |acc, &v| {
+                            let p = chart.in_chart(chart.vertex_coords[v], s);
+                            (acc.0 + p.0, acc.1 + p.1)
+                        });
+                        let m = face.len() as i64;
+                        if (2 * si) % m != 0 || (2 * sj) % m != 0 {
+                            cb.ok = false;
+                        }
+                        cb.push(s, 2 * si / m, 2 * sj / m);
+                    }
+                },
+                Origin::Corner { .. } => unreachable!("primal split creates no corner vertices"),
+            }
+        }
+        for (k, p) in parents.iter().enumerate() {
+            let Origin::Face(f) = *p else { unreachable!() };
+            let first_corner = new_mesh.face(k)[0];
+            let sector = match chart.face_sector[f] {
+                Some(s) => Some(s),
+                // children of a central face lie in the sector of their old corner
+                None => Some(chart.vertex_coords[first_corner].sector),
+            };
+            cb.face_sector.push(sector);
+        }
+        new_mesh.chart = cb.finish();
+    }
+    Ok(Refined {
+        mesh: new_mesh,
+        vertex_origins: origins,
+        face_parents: parents,
+    })
+}

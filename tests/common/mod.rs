@@ -1,0 +1,104 @@
+//! Shared helpers for the integration tests (closed forms live in each test).
+#![allow(dead_code)]
+
+use subdlab::neighbourhood::{Configuration, NeighbourhoodKind};
+use subdlab::schemes::{self, Scheme};
+use subdlab::spectrum::{analyse, Analysis, Method, Options};
+
+pub fn scheme(name: &str) -> Box<dyn Scheme> {
+    schemes::build(name, &[]).unwrap()
+}
+
+pub fn run(
+    name: &str,
+    n: usize,
+    kind: NeighbourhoodKind,
+    method: Option<Method>,
+    exact: bool,
+) -> Analysis {
+    let s = scheme(name);
+    let config = Configuration::regular(s.as_ref(), n).unwrap();
+    analyse(
+        s.as_ref(),
+        &config,
+        &Options {
+            neighbourhood: kind,
+            method,
+            exact,
+        },
+    )
+    .unwrap()
+}
+
+/// Every eigenvalue repeated by its algebraic multiplicity, as (re, im).
+pub fn expanded(a: &Analysis) -> Vec<(f64, f64)> {
+    let mut v: Vec<(f64, f64)> = a
+        .spectrum
+        .eigenvalues
+        .iter()
+        .flat_map(|e| std::iter::repeat((e.re, e.im)).take(e.algebraic_multiplicity))
+        .collect();
+    v.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    v
+}
+
+/// Assert that two multisets of real numbers agree to `tol` (sorted comparison).
+pub fn assert_same_multiset(mut got: Vec<f64>, mut want: Vec<f64>, tol: f64, what: &str) {
+    got.sort_by(f64::total_cmp);
+    want.sort_by(f64::total_cmp);
+    assert_eq!(
+        got.len(),
+        want.len(),
+        "{what}: sizes differ: got {got:?}, want {want:?}"
+    );
+    for (g, w) in got.iter().zip(&want) {
+        assert!((g - w).abs() < tol, "{what}: got {got:?}, want {want:?}");
+    }
+}
+
+pub fn real_spectrum(a: &Analysis) -> Vec<f64> {
+    expanded(a)
+        .into_iter()
+        .map(|(re, im)| {
+            assert!(im.abs() < 1e-9, "unexpected complex eigenvalue {re}+{im}i");
+            re
+        })
+        .collect()
+}
+
+pub fn cos2pi(k: usize, n: usize) -> f64 {
+    (2.0 * std::f64::consts::PI * k as f64 / n as f64).cos()
+}
+pub fn sin2pi(k: usize, n: usize) -> f64 {
+    (2.0 * std::f64::consts::PI * k as f64 / n as f64).sin()
+}
+
+/// Is `v` (numerically) in the span of `basis`? Least squares by Gram–Schmidt.
+pub fn in_span(basis: &[Vec<f64>], v: &[f64]) -> bool {
+    let mut ortho: Vec<Vec<f64>> = Vec::new();
+    for b in basis {
+        let mut r = b.clone();
+        for q in &ortho {
+            let d: f64 = q.iter().zip(&r).map(|(x, y)| x * y).sum();
+            r.iter_mut().zip(q).for_each(|(x, y)| *x -= d * y);
+        }
+        let n = r.iter().map(|x| x * x).sum::<f64>().sqrt();
+        if n > 1e-12 {
+            ortho.push(r.iter().map(|x| x / n).collect());
+        }
+    }
+    let mut r = v.to_vec();
+    for q in &ortho {
+        let d: f64 = q.iter().zip(&r).map(|(x, y)| x * y).sum();
+        r.iter_mut().zip(q).for_each(|(x, y)| *x -= d * y);
+    }
+    let vn = v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    r.iter().map(|x| x * x).sum::<f64>().sqrt() < 1e-8 * vn.max(1.0)
+}
+
+/// All products a·b of two lists (tensor-product spectra).
+pub fn products(a: &[f64], b: &[f64]) -> Vec<f64> {
+    a.iter()
+        .flat_map(|x| b.iter().map(move |y| x * y))
+        .collect()
+}
