@@ -15,14 +15,10 @@ use subdlab::spectrum::stencils::{limit_stencil, tangent_stencils};
 
 fn block0_closed_form(n: f64) -> Vec<f64> {
     // v' = (1 - 7/(4n)) v + 3/(2n) ê + 1/(4n) f̂ ; ê' = (6v + 8ê + 2f̂)/16 ; f̂' = (v + 2ê + f̂)/4
-    let m = [
-        [1.0 - 7.0 / (4.0 * n), 3.0 / (2.0 * n), 1.0 / (4.0 * n)],
-        [6.0 / 16.0, 0.5, 2.0 / 16.0],
-        [0.25, 0.5, 0.25],
-    ];
+    let m =
+        [[1.0 - 7.0 / (4.0 * n), 3.0 / (2.0 * n), 1.0 / (4.0 * n)], [6.0 / 16.0, 0.5, 2.0 / 16.0], [0.25, 0.5, 0.25]];
     let trace = m[0][0] + m[1][1] + m[2][2];
-    let det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
-        - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+    let det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
         + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
     // 1 is an eigenvalue (rows sum to 1): the others solve x^2 - (trace-1) x + det = 0
     let (s, p) = (trace - 1.0, det);
@@ -34,11 +30,7 @@ fn block0_closed_form(n: f64) -> Vec<f64> {
 fn minimal_spectrum_matches_closed_forms_for_valences_3_to_50() {
     for n in 3..=50 {
         let a = run("catmull-clark", n, NeighbourhoodKind::Minimal, None, false);
-        assert_eq!(
-            a.spectrum.matrix_size,
-            2 * n + 1,
-            "minimal invariant size at n = {n}"
-        );
+        assert_eq!(a.spectrum.matrix_size, 2 * n + 1, "minimal invariant size at n = {n}");
         let mut want = block0_closed_form(n as f64);
         for m in 1..n {
             let c = cos2pi(m, n);
@@ -49,24 +41,13 @@ fn minimal_spectrum_matches_closed_forms_for_valences_3_to_50() {
         assert_same_multiset(real_spectrum(&a), want, 1e-10, &format!("CC n={n}"));
         let c = cos2pi(1, n);
         let l1 = (5.0 + c + ((c + 1.0) * (c + 9.0)).sqrt()) / 16.0;
-        let stam =
-            (5.0 + c + (std::f64::consts::PI / n as f64).cos() * (2.0 * (9.0 + c)).sqrt()) / 16.0;
+        let stam = (5.0 + c + (std::f64::consts::PI / n as f64).cos() * (2.0 * (9.0 + c)).sqrt()) / 16.0;
         assert!((l1 - stam).abs() < 1e-14);
-        assert!(
-            (a.spectrum.verdict.subdominant.unwrap() - stam).abs() < 1e-10,
-            "λ1 at n = {n}"
-        );
-        assert!(
-            a.spectrum.verdict.c1_spectral,
-            "CC passes the spectral test at n = {n}"
-        );
+        assert!((a.spectrum.verdict.subdominant.unwrap() - stam).abs() < 1e-10, "λ1 at n = {n}");
+        assert!(a.spectrum.verdict.c1_spectral, "CC passes the spectral test at n = {n}");
         let mut blocks = a.spectrum.verdict.subdominant_blocks.clone();
         blocks.dedup();
-        assert_eq!(
-            blocks,
-            vec![1, n - 1],
-            "subdominant pair from Fourier blocks 1 and n-1"
-        );
+        assert_eq!(blocks, vec![1, n - 1], "subdominant pair from Fourier blocks 1 and n-1");
     }
 }
 
@@ -74,11 +55,7 @@ fn minimal_spectrum_matches_closed_forms_for_valences_3_to_50() {
 fn analysis_neighbourhood_is_the_two_ring_and_keeps_the_leading_spectrum() {
     for n in 3..=50 {
         let a = run("catmull-clark", n, NeighbourhoodKind::Analysis, None, false);
-        assert_eq!(
-            a.spectrum.matrix_size,
-            6 * n + 1,
-            "analysis size at n = {n}"
-        );
+        assert_eq!(a.spectrum.matrix_size, 6 * n + 1, "analysis size at n = {n}");
         assert_eq!(a.spectrum.minimal_size, 2 * n + 1);
         let c = cos2pi(1, n);
         let l1 = (5.0 + c + ((c + 1.0) * (c + 9.0)).sqrt()) / 16.0;
@@ -88,17 +65,12 @@ fn analysis_neighbourhood_is_the_two_ring_and_keeps_the_leading_spectrum() {
         let minimal = run("catmull-clark", n, NeighbourhoodKind::Minimal, None, false);
         let mut extra = real_spectrum(&a);
         for x in real_spectrum(&minimal) {
-            let k = extra
-                .iter()
-                .position(|y| (y - x).abs() < 1e-9)
-                .expect("minimal spectrum is contained");
+            let k = extra.iter().position(|y| (y - x).abs() < 1e-9).expect("minimal spectrum is contained");
             extra.remove(k);
         }
         for x in extra {
             assert!(
-                [0.125, 0.0625, 0.03125, 0.015625]
-                    .iter()
-                    .any(|p| (x - p).abs() < 1e-9),
+                [0.125, 0.0625, 0.03125, 0.015625].iter().any(|p| (x - p).abs() < 1e-9),
                 "extra eigenvalue {x} at n = {n}"
             );
         }
@@ -114,23 +86,9 @@ fn regular_valence_is_the_bicubic_tensor_product() {
     let x = a.spectrum.exact_analysis.as_ref().unwrap();
     assert_eq!(x.remaining_degree, 0);
     assert!(x.agrees_with_float);
-    let mult = |v: &str| {
-        x.rational_roots
-            .iter()
-            .find(|r| r.value == v)
-            .unwrap()
-            .algebraic_multiplicity
-    };
+    let mult = |v: &str| x.rational_roots.iter().find(|r| r.value == v).unwrap().algebraic_multiplicity;
     assert_eq!(
-        (
-            mult("1"),
-            mult("1/2"),
-            mult("1/4"),
-            mult("1/8"),
-            mult("1/16"),
-            mult("1/32"),
-            mult("1/64")
-        ),
+        (mult("1"), mult("1/2"), mult("1/4"), mult("1/8"), mult("1/16"), mult("1/32"), mult("1/64")),
         (1, 2, 3, 6, 5, 4, 4)
     );
 }
@@ -143,9 +101,7 @@ fn limit_and_tangent_stencils_match_halstead_kass_derose() {
         let nf = n as f64;
         let mut cos_form = vec![0.0; l.len()];
         let mut sin_form = vec![0.0; l.len()];
-        let an = 1.0
-            + cos2pi(1, n)
-            + (std::f64::consts::PI / nf).cos() * (2.0 * (9.0 + cos2pi(1, n))).sqrt();
+        let an = 1.0 + cos2pi(1, n) + (std::f64::consts::PI / nf).cos() * (2.0 * (9.0 + cos2pi(1, n))).sqrt();
         for (k, lab) in a.spectrum.labels.iter().enumerate() {
             let want = match (lab.kind, lab.ring) {
                 (VertexKind::Centre, _) => nf / (nf + 5.0),
@@ -153,12 +109,7 @@ fn limit_and_tangent_stencils_match_halstead_kass_derose() {
                 (VertexKind::Face, 1) => 1.0 / (nf * (nf + 5.0)),
                 _ => 0.0,
             };
-            assert!(
-                (l[k] - want).abs() < 1e-12,
-                "limit weight of {} at n = {n}: {} vs {want}",
-                lab.name,
-                l[k]
-            );
+            assert!((l[k] - want).abs() < 1e-12, "limit weight of {} at n = {n}: {} vs {want}", lab.name, l[k]);
             let i = lab.sector;
             match (lab.kind, lab.ring) {
                 (VertexKind::Edge, 1) => {
@@ -180,9 +131,6 @@ fn limit_and_tangent_stencils_match_halstead_kass_derose() {
                 "tangent stencil off the closed form at n = {n}"
             );
         }
-        assert!(
-            in_span(&t, &cos_form) && in_span(&t, &sin_form),
-            "tangent stencils span the closed form at n = {n}"
-        );
+        assert!(in_span(&t, &cos_form) && in_span(&t, &sin_form), "tangent stencils span the closed form at n = {n}");
     }
 }

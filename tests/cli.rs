@@ -3,10 +3,7 @@
 use std::process::{Command, Output};
 
 fn subdlab(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_subdlab"))
-        .args(args)
-        .output()
-        .expect("binary runs")
+    Command::new(env!("CARGO_BIN_EXE_subdlab")).args(args).output().expect("binary runs")
 }
 
 /// A failing invocation: non-zero exit, exactly one line on stderr, no panic.
@@ -15,21 +12,13 @@ fn fails(args: &[&str]) -> String {
     let err = String::from_utf8_lossy(&out.stderr).to_string();
     assert!(!out.status.success(), "{args:?} should fail");
     assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
-    assert_eq!(
-        err.trim_end().lines().count(),
-        1,
-        "{args:?}: one-line error expected, got {err:?}"
-    );
+    assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: one-line error expected, got {err:?}");
     err
 }
 
 fn json(args: &[&str]) -> serde_json::Value {
     let out = subdlab(args);
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
     serde_json::from_slice(&out.stdout).expect("valid JSON")
 }
 
@@ -42,19 +31,10 @@ fn spectrum_json_carries_the_stable_fields() {
     assert_eq!(v["matrix_size"], 31);
     let blocks = v["blocks"].as_array().unwrap();
     assert_eq!(blocks.len(), 5);
-    assert!(blocks
-        .iter()
-        .all(|b| b["index"].is_u64() && b["size"].is_u64()));
+    assert!(blocks.iter().all(|b| b["index"].is_u64() && b["size"].is_u64()));
     let eig = v["eigenvalues"].as_array().unwrap();
     for e in eig {
-        for f in [
-            "re",
-            "im",
-            "modulus",
-            "algebraic_multiplicity",
-            "geometric_multiplicity",
-            "block",
-        ] {
+        for f in ["re", "im", "modulus", "algebraic_multiplicity", "geometric_multiplicity", "block"] {
             assert!(!e[f].is_null(), "field {f}");
         }
         assert!(e.get("exact").is_some());
@@ -81,15 +61,7 @@ fn readable_table_names_the_subdominant_eigenvalue() {
 
 #[test]
 fn minimal_neighbourhood_option() {
-    let v = json(&[
-        "spectrum",
-        "loop",
-        "-n",
-        "7",
-        "--neighbourhood",
-        "minimal",
-        "--json",
-    ]);
+    let v = json(&["spectrum", "loop", "-n", "7", "--neighbourhood", "minimal", "--json"]);
     assert_eq!(v["matrix_size"], 8);
     assert_eq!(v["neighbourhood"], "minimal");
 }
@@ -97,36 +69,19 @@ fn minimal_neighbourhood_option() {
 #[test]
 fn stencils_json_limit_sums_to_one() {
     let v = json(&["stencils", "doo-sabin", "-n", "6", "--json"]);
-    let sum: f64 = v["limit"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|w| w["weight"].as_f64().unwrap())
-        .sum();
+    let sum: f64 = v["limit"].as_array().unwrap().iter().map(|w| w["weight"].as_f64().unwrap()).sum();
     assert!((sum - 1.0).abs() < 1e-12);
     assert_eq!(v["tangent"].as_array().unwrap().len(), 2);
 }
 
 #[test]
 fn matrix_market_export_is_well_formed() {
-    let out = subdlab(&[
-        "matrix",
-        "catmull-clark",
-        "--valence",
-        "3",
-        "--format",
-        "mtx",
-    ]);
+    let out = subdlab(&["matrix", "catmull-clark", "--valence", "3", "--format", "mtx"]);
     assert!(out.status.success());
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(text.starts_with("%%MatrixMarket matrix coordinate real general"));
     let mut lines = text.lines().filter(|l| !l.starts_with('%'));
-    let header: Vec<usize> = lines
-        .next()
-        .unwrap()
-        .split_whitespace()
-        .map(|x| x.parse().unwrap())
-        .collect();
+    let header: Vec<usize> = lines.next().unwrap().split_whitespace().map(|x| x.parse().unwrap()).collect();
     assert_eq!(&header[..2], &[19, 19]);
     let mut row_sum = vec![0.0; 19];
     let mut count = 0;
@@ -137,10 +92,7 @@ fn matrix_market_export_is_well_formed() {
         count += 1;
     }
     assert_eq!(count, header[2]);
-    assert!(
-        row_sum.iter().all(|s| (s - 1.0).abs() < 1e-14),
-        "affine invariance: rows sum to 1"
-    );
+    assert!(row_sum.iter().all(|s| (s - 1.0).abs() < 1e-14), "affine invariance: rows sum to 1");
 }
 
 #[test]
@@ -179,10 +131,7 @@ fn schemes_lists_the_baseline_schemes() {
 #[test]
 fn unknown_scheme_lists_the_known_ones() {
     let err = fails(&["spectrum", "butterfly", "--valence", "5"]);
-    assert!(
-        err.contains("unknown scheme 'butterfly'") && err.contains("catmull-clark"),
-        "{err}"
-    );
+    assert!(err.contains("unknown scheme 'butterfly'") && err.contains("catmull-clark"), "{err}");
 }
 
 #[test]
@@ -213,14 +162,7 @@ fn unknown_and_malformed_parameters_are_rejected() {
 
 #[test]
 fn bad_options_are_rejected() {
-    let err = fails(&[
-        "spectrum",
-        "catmull-clark",
-        "-n",
-        "5",
-        "--neighbourhood",
-        "huge",
-    ]);
+    let err = fails(&["spectrum", "catmull-clark", "-n", "5", "--neighbourhood", "huge"]);
     assert!(err.contains("minimal or analysis"), "{err}");
     let err = fails(&["matrix", "catmull-clark", "-n", "5", "--format", "csv"]);
     assert!(err.contains("mtx or json"), "{err}");

@@ -14,9 +14,7 @@ fn assert_same_complex_multiset(a: Vec<(f64, f64)>, b: Vec<(f64, f64)>, what: &s
         let k = unused
             .iter()
             .position(|y| ((x.0 - y.0).powi(2) + (x.1 - y.1).powi(2)).sqrt() < 1e-7)
-            .unwrap_or_else(|| {
-                panic!("{what}: {x:?} from the blocks is not in the full spectrum {b:?}")
-            });
+            .unwrap_or_else(|| panic!("{what}: {x:?} from the blocks is not in the full spectrum {b:?}"));
         unused.remove(k);
     }
 }
@@ -31,11 +29,7 @@ fn union_of_block_spectra_equals_full_spectrum_for_valences_3_to_12() {
                 assert_eq!(dft.spectrum.blocks.len(), n);
                 let total: usize = dft.spectrum.blocks.iter().map(|b| b.size).sum();
                 assert_eq!(total, full.spectrum.matrix_size, "block sizes add up");
-                assert_same_complex_multiset(
-                    expanded(&dft),
-                    expanded(&full),
-                    &format!("{scheme} n={n} {kind:?}"),
-                );
+                assert_same_complex_multiset(expanded(&dft), expanded(&full), &format!("{scheme} n={n} {kind:?}"));
             }
         }
     }
@@ -52,10 +46,7 @@ fn rotation_commutes_with_s_and_has_order_n() {
             // (PS)[p(i)][p(j)] = S[i][j]
             for i in 0..size {
                 for j in 0..size {
-                    assert!(
-                        (s[p[i]][p[j]] - s[i][j]).abs() < 1e-15,
-                        "{scheme} n={n}: S not rotation invariant"
-                    );
+                    assert!((s[p[i]][p[j]] - s[i][j]).abs() < 1e-15, "{scheme} n={n}: S not rotation invariant");
                 }
             }
             let mut q: Vec<usize> = (0..size).collect();

@@ -49,10 +49,7 @@ fn limit_point_is_the_centroid_and_tangents_are_fourier_modes() {
             }
         }
         for v in tangent_stencils(&a.spectrum).unwrap() {
-            assert!(
-                in_span(&[cos_form.clone(), sin_form.clone()], &v),
-                "n = {n}"
-            );
+            assert!(in_span(&[cos_form.clone(), sin_form.clone()], &v), "n = {n}");
         }
     }
 }
@@ -61,14 +58,6 @@ fn limit_point_is_the_centroid_and_tangents_are_fourier_modes() {
 fn regular_valence_is_the_biquadratic_tensor_product() {
     let a = run("doo-sabin", 4, NeighbourhoodKind::Analysis, None, true);
     let chaikin = [1.0, 0.5, 0.25, 0.25];
-    assert_same_multiset(
-        real_spectrum(&a),
-        products(&chaikin, &chaikin),
-        1e-12,
-        "DS n=4",
-    );
-    assert_eq!(
-        a.spectrum.exact_analysis.as_ref().unwrap().remaining_degree,
-        0
-    );
+    assert_same_multiset(real_spectrum(&a), products(&chaikin, &chaikin), 1e-12, "DS n=4");
+    assert_eq!(a.spectrum.exact_analysis.as_ref().unwrap().remaining_degree, 0);
 }

@@ -53,11 +53,7 @@ fn limit_and_tangent_stencils() {
                 1 => chi,
                 _ => 0.0,
             };
-            assert!(
-                (l[k] - want).abs() < 1e-12,
-                "limit weight {} at n = {n}",
-                lab.name
-            );
+            assert!((l[k] - want).abs() < 1e-12, "limit weight {} at n = {n}", lab.name);
             if lab.ring == 1 {
                 cos_form[k] = cos2pi(lab.sector, n);
                 sin_form[k] = sin2pi(lab.sector, n);
@@ -75,18 +71,9 @@ fn limit_and_tangent_stencils() {
 fn exact_path_at_valence_6_proves_the_regular_spectrum() {
     // n = 6: cos(π/3) = 1/2 is rational, so every weight is (β = 1/16)
     let a = run("loop", 6, NeighbourhoodKind::Minimal, None, true);
-    let x = a
-        .spectrum
-        .exact_analysis
-        .as_ref()
-        .expect("rational at n = 6");
+    let x = a.spectrum.exact_analysis.as_ref().expect("rational at n = 6");
     // 3/8 + cos(2πm/6)/4 for m = 1..5: 1/2, 1/4, 1/8, 1/4, 1/2 ; block 0: 1 and (1/2)^2
-    let mult = |v: &str| {
-        x.rational_roots
-            .iter()
-            .find(|r| r.value == v)
-            .map(|r| r.algebraic_multiplicity)
-    };
+    let mult = |v: &str| x.rational_roots.iter().find(|r| r.value == v).map(|r| r.algebraic_multiplicity);
     assert_eq!(mult("1"), Some(1));
     assert_eq!(mult("1/2"), Some(2));
     assert_eq!(mult("1/4"), Some(3));

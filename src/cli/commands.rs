@@ -30,11 +30,7 @@ pub fn dispatch(cmd: Command) -> Result<(), String> {
                 Ok(())
             }
         }
-        Command::Matrix {
-            common,
-            format,
-            output,
-        } => {
+        Command::Matrix { common, format, output } => {
             let (scheme, analysis) = run_analysis(&common)?;
             let text = match format.as_str() {
                 "mtx" => to_matrix_market(
@@ -57,9 +53,7 @@ pub fn dispatch(cmd: Command) -> Result<(), String> {
                         vertices: &m.labels,
                         matrix: m.to_dense_f64(),
                         exact: analysis.exact_matrix.as_ref().map(|q| {
-                            (0..q.size())
-                                .map(|i| (0..q.size()).map(|j| q.get(i, j).to_string()).collect())
-                                .collect()
+                            (0..q.size()).map(|i| (0..q.size()).map(|j| q.get(i, j).to_string()).collect()).collect()
                         }),
                     };
                     serde_json::to_string_pretty(&j).map_err(|e| e.to_string())? + "\n"
@@ -100,11 +94,7 @@ fn run_analysis(a: &AnalysisArgs) -> Result<(Box<dyn Scheme>, Analysis), String>
     if method == Some(Method::Dft) && config.symmetry_period() == config.valence() {
         return Err("this configuration has no rotation symmetry; use --method full".into());
     }
-    let opts = Options {
-        neighbourhood,
-        method,
-        exact: !a.no_exact,
-    };
+    let opts = Options { neighbourhood, method, exact: !a.no_exact };
     let analysis = analyse(scheme.as_ref(), &config, &opts)?;
     Ok((scheme, analysis))
 }
@@ -118,11 +108,7 @@ fn list_schemes(json: bool) -> Result<(), String> {
     }
     let list: Vec<Entry> = schemes::registry()
         .into_iter()
-        .map(|e| Entry {
-            name: e.name,
-            description: e.description,
-            params: (e.params)(),
-        })
+        .map(|e| Entry { name: e.name, description: e.description, params: (e.params)() })
         .collect();
     if json {
         return print_json(&list);
@@ -151,26 +137,15 @@ fn spectrum_table(s: &Spectrum) -> String {
     if !s.params.is_empty() {
         out += &format!(
             "parameters: {}\n",
-            s.params
-                .iter()
-                .map(|(k, v)| format!("{k}={v}"))
-                .collect::<Vec<_>>()
-                .join(", ")
+            s.params.iter().map(|(k, v)| format!("{k}={v}")).collect::<Vec<_>>().join(", ")
         );
     }
     out += &format!(
         "method {:?}: blocks {}\n\n",
         s.method,
-        s.blocks
-            .iter()
-            .map(|b| format!("{}:{}", b.index, b.size))
-            .collect::<Vec<_>>()
-            .join(" ")
+        s.blocks.iter().map(|b| format!("{}:{}", b.index, b.size)).collect::<Vec<_>>().join(" ")
     );
-    out += &format!(
-        "{:>4}  {:<34} {:>14}  {:>4} {:>4}  {}\n",
-        "#", "eigenvalue", "modulus", "alg", "geo", "blocks"
-    );
+    out += &format!("{:>4}  {:<34} {:>14}  {:>4} {:>4}  {}\n", "#", "eigenvalue", "modulus", "alg", "geo", "blocks");
     for (k, e) in s.eigenvalues.iter().enumerate() {
         out += &format!(
             "{:>4}  {:<34} {:>14}  {:>4} {:>4}  {}{}\n",
@@ -197,14 +172,7 @@ fn spectrum_table(s: &Spectrum) -> String {
             if x.agrees_with_float { "" } else { "  (DISAGREES with floating point multiplicities)" }
         );
     }
-    out += &format!(
-        "\nReif spectral C1 criterion: {}\n",
-        if s.verdict.c1_spectral {
-            "PASSES"
-        } else {
-            "FAILS"
-        }
-    );
+    out += &format!("\nReif spectral C1 criterion: {}\n", if s.verdict.c1_spectral { "PASSES" } else { "FAILS" });
     for r in &s.verdict.reasons {
         out += &format!("  - {r}\n");
     }
@@ -216,26 +184,14 @@ fn spectrum_table(s: &Spectrum) -> String {
 
 fn compact_blocks(b: &[usize]) -> String {
     if b.len() > 6 {
-        format!(
-            "{},{},…,{} ({} blocks)",
-            b[0],
-            b[1],
-            b[b.len() - 1],
-            b.len()
-        )
+        format!("{},{},…,{} ({} blocks)", b[0], b[1], b[b.len() - 1], b.len())
     } else {
-        b.iter()
-            .map(|x| x.to_string())
-            .collect::<Vec<_>>()
-            .join(",")
+        b.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(",")
     }
 }
 
 fn stencil_table(st: &crate::spectrum::stencils::Stencils) -> String {
-    let mut out = format!(
-        "scheme {}  valence {}  neighbourhood {:?}\n\n",
-        st.scheme, st.valence, st.neighbourhood
-    );
+    let mut out = format!("scheme {}  valence {}  neighbourhood {:?}\n\n", st.scheme, st.valence, st.neighbourhood);
     out += &format!("{:<22} {:>22}", "vertex", "limit");
     for k in 0..st.tangent.len() {
         out += &format!(" {:>22}", format!("tangent {}", k + 1));

@@ -8,11 +8,7 @@ mod output;
 use clap::{Args, Parser, Subcommand};
 
 #[derive(Parser, Debug)]
-#[command(
-    name = "subdlab",
-    version,
-    about = "Eigenanalysis and smoothness verification of subdivision surfaces"
-)]
+#[command(name = "subdlab", version, about = "Eigenanalysis and smoothness verification of subdivision surfaces")]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
@@ -71,18 +67,12 @@ pub fn run() -> Result<(), String> {
         Ok(c) => c,
         Err(e) => {
             // help and version go to stdout with exit 0; usage errors are one line
-            if matches!(
-                e.kind(),
-                clap::error::ErrorKind::DisplayHelp | clap::error::ErrorKind::DisplayVersion
-            ) {
+            if matches!(e.kind(), clap::error::ErrorKind::DisplayHelp | clap::error::ErrorKind::DisplayVersion) {
                 print!("{e}");
                 return Ok(());
             }
             let msg = e.to_string();
-            let first = msg
-                .lines()
-                .find(|l| !l.trim().is_empty())
-                .unwrap_or("invalid arguments");
+            let first = msg.lines().find(|l| !l.trim().is_empty()).unwrap_or("invalid arguments");
             return Err(first.trim_start_matches("error: ").to_string());
         }
     };

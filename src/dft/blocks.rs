@@ -40,11 +40,7 @@ impl Orbits {
         for &k in &order {
             let l = &m.labels[k];
             let is_fixed = l.i == 0 && l.j == 0;
-            let key = if is_fixed {
-                (usize::MAX, 0, 0)
-            } else {
-                (l.sector % period, l.i, l.j)
-            };
+            let key = if is_fixed { (usize::MAX, 0, 0) } else { (l.sector % period, l.i, l.j) };
             let orbit = *key_to_orbit.entry(key).or_insert_with(|| {
                 representative.push(k);
                 fixed.push(is_fixed);
@@ -53,21 +49,14 @@ impl Orbits {
             tmp[k] = (orbit, if is_fixed { 0 } else { l.sector / period });
         }
         member.extend(tmp);
-        Orbits {
-            group_order: g,
-            member,
-            representative,
-            fixed,
-        }
+        Orbits { group_order: g, member, representative, fixed }
     }
     pub fn num_orbits(&self) -> usize {
         self.representative.len()
     }
     /// Orbits present in block m (fixed points only in block 0).
     pub fn block_orbits(&self, m: usize) -> Vec<usize> {
-        (0..self.num_orbits())
-            .filter(|&o| m == 0 || !self.fixed[o])
-            .collect()
+        (0..self.num_orbits()).filter(|&o| m == 0 || !self.fixed[o]).collect()
     }
 }
 
@@ -83,12 +72,7 @@ pub fn omega_pow(m: usize, t: usize, g: usize) -> c64 {
     let k = (m * t) % g;
     // exact values at quarter turns keep real blocks exactly real
     if (4 * k) % g == 0 {
-        return [
-            c64::new(1.0, 0.0),
-            c64::new(0.0, 1.0),
-            c64::new(-1.0, 0.0),
-            c64::new(0.0, -1.0),
-        ][4 * k / g];
+        return [c64::new(1.0, 0.0), c64::new(0.0, 1.0), c64::new(-1.0, 0.0), c64::new(0.0, -1.0)][4 * k / g];
     }
     let theta = 2.0 * std::f64::consts::PI * k as f64 / g as f64;
     c64::new(theta.cos(), theta.sin())
@@ -113,37 +97,23 @@ pub fn fourier_blocks(s: &LocalMatrix<f64>, orbits: &Orbits) -> Vec<FourierBlock
                     if cb == usize::MAX {
                         continue; // a fixed point's column outside block 0: its contribution sums to zero
                     }
-                    let factor = if orbits.fixed[ob] {
-                        c64::new(1.0, 0.0)
-                    } else {
-                        omega_pow(m, tau, g)
-                    };
+                    let factor = if orbits.fixed[ob] { c64::new(1.0, 0.0) } else { omega_pow(m, tau, g) };
                     b[(ra, cb)] += factor * w;
                 }
             }
-            FourierBlock {
-                index: m,
-                orbits: list,
-                matrix: b,
-            }
+            FourierBlock { index: m, orbits: list, matrix: b }
         })
         .collect()
 }
 
 /// Block 0 in exact arithmetic (real and rational when S is).
-pub fn block_zero_exact(
-    s: &LocalMatrix<crate::numeric::Rational>,
-    orbits: &Orbits,
-) -> crate::numeric::exact::QMatrix {
+pub fn block_zero_exact(s: &LocalMatrix<crate::numeric::Rational>, orbits: &Orbits) -> crate::numeric::exact::QMatrix {
     let list = orbits.block_orbits(0);
     let mut q = crate::numeric::exact::QMatrix::zeros(list.len());
     for (ra, &a) in list.iter().enumerate() {
         for (col, w) in &s.rows[orbits.representative[a]] {
             let cb = orbits.member[*col].0;
-            let idx = list
-                .iter()
-                .position(|&o| o == cb)
-                .expect("block 0 holds every orbit");
+            let idx = list.iter().position(|&o| o == cb).expect("block 0 holds every orbit");
             let v = q.get(ra, idx) + w;
             q.set(ra, idx, v);
         }

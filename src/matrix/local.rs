@@ -18,11 +18,7 @@ impl<W: Weight> LocalMatrix<W> {
         self.rows.len()
     }
     pub fn get(&self, i: usize, j: usize) -> W {
-        self.rows[i]
-            .iter()
-            .find(|e| e.0 == j)
-            .map(|e| e.1.clone())
-            .unwrap_or_else(W::zero)
+        self.rows[i].iter().find(|e| e.0 == j).map(|e| e.1.clone()).unwrap_or_else(W::zero)
     }
     pub fn to_dense_f64(&self) -> Vec<Vec<f64>> {
         let n = self.size();
@@ -37,12 +33,7 @@ impl<W: Weight> LocalMatrix<W> {
     /// Position of the vertex obtained by rotating vertex k by `period` sectors.
     pub fn rotation(&self, period: usize, sectors: usize) -> Vec<usize> {
         let key = |l: &VertexLabel| (l.sector, l.i, l.j);
-        let pos: std::collections::HashMap<_, _> = self
-            .labels
-            .iter()
-            .enumerate()
-            .map(|(k, l)| (key(l), k))
-            .collect();
+        let pos: std::collections::HashMap<_, _> = self.labels.iter().enumerate().map(|(k, l)| (key(l), k)).collect();
         self.labels
             .iter()
             .map(|l| {
@@ -63,8 +54,7 @@ pub fn assemble<W: SchemeWeight>(
     kind: NeighbourhoodKind,
 ) -> Result<LocalMatrix<W>, AssembleError> {
     let set = d.set(kind);
-    let position: std::collections::HashMap<usize, usize> =
-        set.iter().enumerate().map(|(k, &v)| (v, k)).collect();
+    let position: std::collections::HashMap<usize, usize> = set.iter().enumerate().map(|(k, &v)| (v, k)).collect();
     let mut rows = Vec::with_capacity(set.len());
     for &v in set {
         let w = d.successor(v).ok_or(AssembleError::Missing)?;
@@ -82,11 +72,7 @@ pub fn assemble<W: SchemeWeight>(
         row.sort_by_key(|e| e.0);
         rows.push(row);
     }
-    Ok(LocalMatrix {
-        kind,
-        labels: set.iter().map(|&v| d.labels[v].clone()).collect(),
-        rows,
-    })
+    Ok(LocalMatrix { kind, labels: set.iter().map(|&v| d.labels[v].clone()).collect(), rows })
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

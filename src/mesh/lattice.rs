@@ -40,11 +40,7 @@ pub struct LatticeCoord {
 }
 
 impl LatticeCoord {
-    pub const CENTRE: LatticeCoord = LatticeCoord {
-        sector: 0,
-        i: 0,
-        j: 0,
-    };
+    pub const CENTRE: LatticeCoord = LatticeCoord { sector: 0, i: 0, j: 0 };
     pub fn is_centre(&self) -> bool {
         self.i == 0 && self.j == 0
     }
@@ -145,11 +141,7 @@ impl Chart {
 
     /// The coordinates of the corners of face `f` in its own chart (the corner's
     /// own chart for a central face).
-    pub fn face_corner_coords(
-        &self,
-        face: &[usize],
-        sector: Option<usize>,
-    ) -> Vec<(usize, i64, i64)> {
+    pub fn face_corner_coords(&self, face: &[usize], sector: Option<usize>) -> Vec<(usize, i64, i64)> {
         face.iter()
             .map(|&v| {
                 let c = self.vertex_coords[v];
@@ -170,40 +162,15 @@ mod tests {
     use super::*;
 
     fn chart(kinds: Vec<SectorKind>) -> Chart {
-        Chart {
-            sector_kinds: kinds,
-            vertex_coords: vec![],
-            face_sector: vec![],
-        }
+        Chart { sector_kinds: kinds, vertex_coords: vec![], face_sector: vec![] }
     }
 
     #[test]
     fn spoke_points_belong_to_the_next_sector() {
         let c = chart(vec![SectorKind::Quad; 5]);
-        assert_eq!(
-            c.canonical(0, 0, 3),
-            Some(LatticeCoord {
-                sector: 1,
-                i: 3,
-                j: 0
-            })
-        );
-        assert_eq!(
-            c.canonical(4, 0, 2),
-            Some(LatticeCoord {
-                sector: 0,
-                i: 2,
-                j: 0
-            })
-        );
-        assert_eq!(
-            c.canonical(1, 2, -1),
-            Some(LatticeCoord {
-                sector: 0,
-                i: 1,
-                j: 2
-            })
-        );
+        assert_eq!(c.canonical(0, 0, 3), Some(LatticeCoord { sector: 1, i: 3, j: 0 }));
+        assert_eq!(c.canonical(4, 0, 2), Some(LatticeCoord { sector: 0, i: 2, j: 0 }));
+        assert_eq!(c.canonical(1, 2, -1), Some(LatticeCoord { sector: 0, i: 1, j: 2 }));
     }
 
     #[test]
@@ -213,11 +180,7 @@ mod tests {
             for s in 0..c.sectors() {
                 for (i, j) in [(1, 0), (2, 1), (1, 3), (3, 3)] {
                     let p = LatticeCoord { sector: s, i, j };
-                    for t in [
-                        s,
-                        (s + 1) % c.sectors(),
-                        (s + c.sectors() - 1) % c.sectors(),
-                    ] {
+                    for t in [s, (s + 1) % c.sectors(), (s + c.sectors() - 1) % c.sectors()] {
                         let (a, b) = c.in_chart(p, t);
                         assert_eq!(c.canonical(t, a, b), Some(p), "{p:?} via chart {t}");
                     }

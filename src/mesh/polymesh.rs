@@ -75,13 +75,7 @@ impl PolyMesh {
                 }
             }
         }
-        Ok(PolyMesh {
-            faces,
-            num_vertices,
-            half_edges,
-            vertex_corner,
-            chart: None,
-        })
+        Ok(PolyMesh { faces, num_vertices, half_edges, vertex_corner, chart: None })
     }
 
     pub fn num_vertices(&self) -> usize {
@@ -105,9 +99,7 @@ impl PolyMesh {
     /// Face `f` rotated so that it starts at its corner `k`.
     pub fn face_from(&self, f: FaceId, k: usize) -> Vec<VertexId> {
         let face = &self.faces[f];
-        (0..face.len())
-            .map(|t| face[(k + t) % face.len()])
-            .collect()
+        (0..face.len()).map(|t| face[(k + t) % face.len()]).collect()
     }
 
     /// Undirected edges, each once, as (a, b) with the half-edge a->b present.
@@ -161,12 +153,7 @@ impl PolyMesh {
 
     /// The faces that have `v` as a corner (works on the boundary too).
     pub fn faces_around(&self, v: VertexId) -> Vec<FaceId> {
-        self.faces
-            .iter()
-            .enumerate()
-            .filter(|(_, f)| f.contains(&v))
-            .map(|(i, _)| i)
-            .collect()
+        self.faces.iter().enumerate().filter(|(_, f)| f.contains(&v)).map(|(i, _)| i).collect()
     }
 
     /// For every vertex, the list of faces incident to it.

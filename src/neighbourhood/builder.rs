@@ -17,10 +17,7 @@ struct PatchBuilder {
 
 impl PatchBuilder {
     fn vertex(&mut self, s: usize, i: i64, j: i64) -> usize {
-        let c = self
-            .chart
-            .canonical(s, i, j)
-            .expect("patch points lie in adjacent wedges");
+        let c = self.chart.canonical(s, i, j).expect("patch points lie in adjacent wedges");
         if let Some(&id) = self.ids.get(&c) {
             return id;
         }
@@ -30,10 +27,7 @@ impl PatchBuilder {
         id
     }
     fn face(&mut self, sector: Option<usize>, corners: &[(usize, i64, i64)]) {
-        let f = corners
-            .iter()
-            .map(|&(s, i, j)| self.vertex(s, i, j))
-            .collect();
+        let f = corners.iter().map(|&(s, i, j)| self.vertex(s, i, j)).collect();
         self.faces.push(f);
         self.chart.face_sector.push(sector);
     }
@@ -45,11 +39,7 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
     let n = config.valence();
     let r = rings as i64;
     let mut b = PatchBuilder {
-        chart: Chart {
-            sector_kinds: config.sectors.clone(),
-            vertex_coords: Vec::new(),
-            face_sector: Vec::new(),
-        },
+        chart: Chart { sector_kinds: config.sectors.clone(), vertex_coords: Vec::new(), face_sector: Vec::new() },
         ids: HashMap::new(),
         faces: Vec::new(),
     };
@@ -61,10 +51,7 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
                     SectorKind::Quad => {
                         for a in 0..r {
                             for c in 0..r {
-                                b.face(
-                                    Some(s),
-                                    &[(s, a, c), (s, a + 1, c), (s, a + 1, c + 1), (s, a, c + 1)],
-                                );
+                                b.face(Some(s), &[(s, a, c), (s, a + 1, c), (s, a + 1, c + 1), (s, a, c + 1)]);
                             }
                         }
                     }
@@ -73,10 +60,7 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
                             for c in 0..r - a {
                                 b.face(Some(s), &[(s, a, c), (s, a + 1, c), (s, a, c + 1)]);
                                 if a + c + 2 <= r {
-                                    b.face(
-                                        Some(s),
-                                        &[(s, a + 1, c), (s, a + 1, c + 1), (s, a, c + 1)],
-                                    );
+                                    b.face(Some(s), &[(s, a + 1, c), (s, a + 1, c + 1), (s, a, c + 1)]);
                                 }
                             }
                         }
@@ -92,23 +76,14 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
                 for a in 1..=r {
                     for c in 0..=r {
                         let (x, y) = (2 * a, 2 * c);
-                        b.face(
-                            Some(s),
-                            &[
-                                (s, x - 1, y - 1),
-                                (s, x + 1, y - 1),
-                                (s, x + 1, y + 1),
-                                (s, x - 1, y + 1),
-                            ],
-                        );
+                        b.face(Some(s), &[(s, x - 1, y - 1), (s, x + 1, y - 1), (s, x + 1, y + 1), (s, x - 1, y + 1)]);
                     }
                 }
             }
             b.faces[0].clone()
         }
     };
-    let mut mesh =
-        PolyMesh::new(b.chart.vertex_coords.len(), b.faces).expect("patch is a manifold disc");
+    let mut mesh = PolyMesh::new(b.chart.vertex_coords.len(), b.faces).expect("patch is a manifold disc");
     mesh.chart = Some(b.chart);
     (mesh, centre_set)
 }

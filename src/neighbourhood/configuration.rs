@@ -19,10 +19,7 @@ impl Configuration {
     /// The scheme's regular configuration of valence n.
     pub fn regular(scheme: &dyn Scheme, n: usize) -> Result<Self, String> {
         check_valence(n)?;
-        Ok(Configuration {
-            centre: scheme.centre_kind(),
-            sectors: vec![scheme.sector_kind(); n],
-        })
+        Ok(Configuration { centre: scheme.centre_kind(), sectors: vec![scheme.sector_kind(); n] })
     }
 
     pub fn valence(&self) -> usize {
@@ -33,9 +30,7 @@ impl Configuration {
     /// itself; the rotation group then has order n / p.
     pub fn symmetry_period(&self) -> usize {
         let n = self.sectors.len();
-        (1..=n)
-            .find(|&p| n % p == 0 && (0..n).all(|s| self.sectors[s] == self.sectors[(s + p) % n]))
-            .unwrap_or(n)
+        (1..=n).find(|&p| n % p == 0 && (0..n).all(|s| self.sectors[s] == self.sectors[(s + p) % n])).unwrap_or(n)
     }
 
     pub fn face_sequence(&self) -> String {
@@ -45,14 +40,10 @@ impl Configuration {
 
 pub fn check_valence(n: usize) -> Result<(), String> {
     if n < 3 {
-        return Err(format!(
-            "valence {n} is below 3; extraordinary points have valence 3 or more"
-        ));
+        return Err(format!("valence {n} is below 3; extraordinary points have valence 3 or more"));
     }
     if n > MAX_VALENCE {
-        return Err(format!(
-            "valence {n} is above the supported maximum {MAX_VALENCE}"
-        ));
+        return Err(format!("valence {n} is above the supported maximum {MAX_VALENCE}"));
     }
     Ok(())
 }

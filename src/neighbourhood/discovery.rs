@@ -35,9 +35,7 @@ impl std::str::FromStr for NeighbourhoodKind {
         match s {
             "minimal" => Ok(NeighbourhoodKind::Minimal),
             "analysis" => Ok(NeighbourhoodKind::Analysis),
-            _ => Err(format!(
-                "unknown neighbourhood '{s}'; use minimal or analysis"
-            )),
+            _ => Err(format!("unknown neighbourhood '{s}'; use minimal or analysis")),
         }
     }
 }
@@ -92,42 +90,18 @@ pub fn discover(scheme: &dyn Scheme, config: &Configuration) -> Result<Discovere
     ))
 }
 
-fn stencils_f64(
-    scheme: &dyn Scheme,
-    mesh: &PolyMesh,
-    refined: &Refined,
-) -> Vec<Option<Stencil<f64>>> {
-    refined
-        .vertex_origins
-        .iter()
-        .map(|&o| {
-            <f64 as SchemeWeight>::stencil(scheme, mesh, o)
-                .ok()
-                .flatten()
-        })
-        .collect()
+fn stencils_f64(scheme: &dyn Scheme, mesh: &PolyMesh, refined: &Refined) -> Vec<Option<Stencil<f64>>> {
+    refined.vertex_origins.iter().map(|&o| <f64 as SchemeWeight>::stencil(scheme, mesh, o).ok().flatten()).collect()
 }
 
-fn try_discover(
-    scheme: &dyn Scheme,
-    config: &Configuration,
-    rings: usize,
-) -> Result<Discovered, String> {
+fn try_discover(scheme: &dyn Scheme, config: &Configuration, rings: usize) -> Result<Discovered, String> {
     let (patch, centre_set) = build_patch(config, rings);
     let labels = label_vertices(&patch, &centre_set, config.centre == CentreKind::Face);
     let topology = scheme.topology();
     let level1 = topology.refine(&patch)?;
-    let chart1 = level1
-        .mesh
-        .chart
-        .as_ref()
-        .ok_or("refined patch lost its lattice chart")?;
-    let level1_at: HashMap<LatticeCoord, usize> = chart1
-        .vertex_coords
-        .iter()
-        .enumerate()
-        .map(|(i, c)| (*c, i))
-        .collect();
+    let chart1 = level1.mesh.chart.as_ref().ok_or("refined patch lost its lattice chart")?;
+    let level1_at: HashMap<LatticeCoord, usize> =
+        chart1.vertex_coords.iter().enumerate().map(|(i, c)| (*c, i)).collect();
     let st1 = stencils_f64(scheme, &patch, &level1);
     let chart0 = patch.chart.as_ref().expect("patch has a chart");
 
@@ -143,12 +117,8 @@ fn try_discover(
             if !set.insert(v) {
                 continue;
             }
-            let d = dep(v).ok_or_else(|| {
-                format!(
-                    "rule for {} not evaluable in a {rings}-ring patch",
-                    labels[v].name
-                )
-            })?;
+            let d =
+                dep(v).ok_or_else(|| format!("rule for {} not evaluable in a {rings}-ring patch", labels[v].name))?;
             stack.extend(d.into_iter().filter(|u| !set.contains(u)));
         }
         Ok(set)
@@ -158,11 +128,8 @@ fn try_discover(
 
     // --- analysis neighbourhood: dependencies of the first ring's descendants
     let centre_lookup: HashSet<usize> = centre_set.iter().copied().collect();
-    let mut region_faces: Vec<bool> = patch
-        .faces()
-        .iter()
-        .map(|f| f.iter().any(|v| centre_lookup.contains(v)))
-        .collect();
+    let mut region_faces: Vec<bool> =
+        patch.faces().iter().map(|f| f.iter().any(|v| centre_lookup.contains(v))).collect();
     // Dependencies are tracked backwards: mark the first-ring vertices of level
     // L, then walk the stencils of levels L, L-1, ..., 1 down to level 0. This is
     // linear in the stencil sizes (forward dependency sets would cost O(n^3) at
@@ -182,11 +149,7 @@ fn try_discover(
             (r, s)
         };
         let in_region = region_entities(&mesh_k, &region_faces);
-        let descends: Vec<bool> = refined
-            .vertex_origins
-            .iter()
-            .map(|o| in_region.contains(o))
-            .collect();
+        let descends: Vec<bool> = refined.vertex_origins.iter().map(|o| in_region.contains(o)).collect();
         let next_region: Vec<bool> = refined
             .mesh
             .faces()
@@ -203,29 +166,17 @@ fn try_discover(
         }
         for k in (0..level).rev() {
             let st = &stencils_by_level[k];
-            let below = if k == 0 {
-                patch.num_vertices()
-            } else {
-                stencils_by_level[k - 1].len()
-            };
+            let below = if k == 0 { patch.num_vertices() } else { stencils_by_level[k - 1].len() };
             let mut marked_below = vec![false; below];
             for (v, _) in marked.iter().enumerate().filter(|(_, m)| **m) {
                 let stencil = st[v].as_ref().ok_or_else(|| {
-                    format!(
-                        "first-ring vertex at level {level} not evaluable in a {rings}-ring patch"
-                    )
+                    format!("first-ring vertex at level {level} not evaluable in a {rings}-ring patch")
                 })?;
                 stencil.support().for_each(|u| marked_below[u] = true);
             }
             marked = marked_below;
         }
-        collected.extend(
-            marked
-                .iter()
-                .enumerate()
-                .filter(|(_, m)| **m)
-                .map(|(u, _)| u),
-        );
+        collected.extend(marked.iter().enumerate().filter(|(_, m)| **m).map(|(u, _)| u));
         let closed = closure(&mut collected.iter().copied())?;
         levels_used = level;
         if level >= 2 && previous.as_ref() == Some(&closed) {

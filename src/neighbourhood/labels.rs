@@ -60,11 +60,7 @@ pub fn rings(mesh: &PolyMesh, centre_set: &[usize]) -> Vec<usize> {
 }
 
 /// Labels for all vertices of a charted mesh.
-pub fn label_vertices(
-    mesh: &PolyMesh,
-    centre_set: &[usize],
-    face_centred: bool,
-) -> Vec<VertexLabel> {
+pub fn label_vertices(mesh: &PolyMesh, centre_set: &[usize], face_centred: bool) -> Vec<VertexLabel> {
     let chart = mesh.chart.as_ref().expect("labels need a lattice chart");
     let ring = rings(mesh, centre_set);
     let coords: &[LatticeCoord] = &chart.vertex_coords;
@@ -84,27 +80,12 @@ pub fn label_vertices(
             } else {
                 VertexKind::Vertex
             };
-            VertexLabel {
-                name: String::new(),
-                ring: ring[v],
-                sector: c.sector,
-                index: 0,
-                kind,
-                i: c.i,
-                j: c.j,
-            }
+            VertexLabel { name: String::new(), ring: ring[v], sector: c.sector, index: 0, kind, i: c.i, j: c.j }
         })
         .collect();
     // index: rank within (ring, sector), walking from the spoke counter-clockwise
     let mut order: Vec<usize> = (0..labels.len()).collect();
-    order.sort_by_key(|&v| {
-        (
-            labels[v].ring,
-            labels[v].sector,
-            labels[v].j - labels[v].i,
-            labels[v].j,
-        )
-    });
+    order.sort_by_key(|&v| (labels[v].ring, labels[v].sector, labels[v].j - labels[v].i, labels[v].j));
     let mut prev = None;
     let mut idx = 0;
     for &v in &order {

@@ -15,10 +15,7 @@ pub struct QMatrix {
 
 impl QMatrix {
     pub fn zeros(n: usize) -> Self {
-        QMatrix {
-            n,
-            data: vec![Rational::zero(); n * n],
-        }
+        QMatrix { n, data: vec![Rational::zero(); n * n] }
     }
     pub fn get(&self, i: usize, j: usize) -> &Rational {
         &self.data[i * self.n + j]
@@ -154,9 +151,7 @@ pub struct Poly {
 
 impl Poly {
     pub fn one() -> Self {
-        Poly {
-            coeffs: vec![Rational::one()],
-        }
+        Poly { coeffs: vec![Rational::one()] }
     }
     pub fn from_roots(roots: &[Rational]) -> Self {
         roots.iter().fold(Poly::one(), |p, r| p.mul_linear(r))
@@ -180,24 +175,16 @@ impl Poly {
         Poly { coeffs: out }.trim()
     }
     pub fn scale(&self, c: &Rational) -> Poly {
-        Poly {
-            coeffs: self.coeffs.iter().map(|x| x * c).collect(),
-        }
-        .trim()
+        Poly { coeffs: self.coeffs.iter().map(|x| x * c).collect() }.trim()
     }
     pub fn sub(&self, o: &Poly) -> Poly {
         let n = self.coeffs.len().max(o.coeffs.len());
         let z = Rational::zero();
-        let coeffs = (0..n)
-            .map(|k| self.coeffs.get(k).unwrap_or(&z) - o.coeffs.get(k).unwrap_or(&z))
-            .collect();
+        let coeffs = (0..n).map(|k| self.coeffs.get(k).unwrap_or(&z) - o.coeffs.get(k).unwrap_or(&z)).collect();
         Poly { coeffs }.trim()
     }
     pub fn eval(&self, x: &Rational) -> Rational {
-        self.coeffs
-            .iter()
-            .rev()
-            .fold(Rational::zero(), |acc, c| acc * x + c)
+        self.coeffs.iter().rev().fold(Rational::zero(), |acc, c| acc * x + c)
     }
     /// Divide by (x - r) when r is a root; returns the quotient.
     pub fn deflate(&self, r: &Rational) -> Option<Poly> {
@@ -232,11 +219,7 @@ impl Poly {
             }
             let sign = if c.is_negative() { "-" } else { "+" };
             let a = c.abs();
-            let coef = if a.is_one() && k > 0 {
-                String::new()
-            } else {
-                format!("{a} ")
-            };
+            let coef = if a.is_one() && k > 0 { String::new() } else { format!("{a} ") };
             let mono = match k {
                 0 => String::new(),
                 1 => "x".to_string(),

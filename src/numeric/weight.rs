@@ -150,18 +150,10 @@ pub struct ParamValue {
 
 impl ParamValue {
     pub fn from_ratio(p: i64, q: i64) -> Self {
-        ParamValue {
-            value: p as f64 / q as f64,
-            exact: Some(Rational::ratio(p, q)),
-            text: format!("{p}/{q}"),
-        }
+        ParamValue { value: p as f64 / q as f64, exact: Some(Rational::ratio(p, q)), text: format!("{p}/{q}") }
     }
     pub fn from_f64(x: f64) -> Self {
-        ParamValue {
-            value: x,
-            exact: None,
-            text: format!("{x}"),
-        }
+        ParamValue { value: x, exact: None, text: format!("{x}") }
     }
 
     /// Parse "3/8", "-1", "0.375", "1e-3". Rejects NaN, infinities and anything
@@ -172,35 +164,19 @@ impl ParamValue {
             return Err("empty parameter value".into());
         }
         if let Some((p, q)) = t.split_once('/') {
-            let p: BigInt = p
-                .trim()
-                .parse()
-                .map_err(|_| format!("'{t}' is not a number (use 3/8, 0.375 or 1e-3)"))?;
-            let q: BigInt = q
-                .trim()
-                .parse()
-                .map_err(|_| format!("'{t}' is not a number (use 3/8, 0.375 or 1e-3)"))?;
+            let p: BigInt = p.trim().parse().map_err(|_| format!("'{t}' is not a number (use 3/8, 0.375 or 1e-3)"))?;
+            let q: BigInt = q.trim().parse().map_err(|_| format!("'{t}' is not a number (use 3/8, 0.375 or 1e-3)"))?;
             if q.is_zero() {
                 return Err(format!("'{t}' divides by zero"));
             }
             let r = Rational::new(p, q);
-            return Ok(ParamValue {
-                value: Weight::to_f64(&r),
-                exact: Some(r),
-                text: t.to_string(),
-            });
+            return Ok(ParamValue { value: Weight::to_f64(&r), exact: Some(r), text: t.to_string() });
         }
-        let value: f64 = t
-            .parse()
-            .map_err(|_| format!("'{t}' is not a number (use 3/8, 0.375 or 1e-3)"))?;
+        let value: f64 = t.parse().map_err(|_| format!("'{t}' is not a number (use 3/8, 0.375 or 1e-3)"))?;
         if !value.is_finite() {
             return Err(format!("'{t}' is not a finite number"));
         }
-        Ok(ParamValue {
-            value,
-            exact: decimal_to_rational(t),
-            text: t.to_string(),
-        })
+        Ok(ParamValue { value, exact: decimal_to_rational(t), text: t.to_string() })
     }
 }
 
@@ -213,9 +189,7 @@ fn decimal_to_rational(t: &str) -> Option<Rational> {
     let neg = mantissa.starts_with('-');
     let m = mantissa.trim_start_matches(['-', '+']);
     let (int, frac) = m.split_once('.').unwrap_or((m, ""));
-    if !int.chars().chain(frac.chars()).all(|c| c.is_ascii_digit())
-        || (int.is_empty() && frac.is_empty())
-    {
+    if !int.chars().chain(frac.chars()).all(|c| c.is_ascii_digit()) || (int.is_empty() && frac.is_empty()) {
         return None;
     }
     if exp.unsigned_abs() > 60 || frac.len() > 60 {
@@ -241,18 +215,9 @@ mod tests {
 
     #[test]
     fn parses_exact_forms() {
-        assert_eq!(
-            ParamValue::parse("3/8").unwrap().exact,
-            Some(Rational::ratio(3, 8))
-        );
-        assert_eq!(
-            ParamValue::parse("0.375").unwrap().exact,
-            Some(Rational::ratio(3, 8))
-        );
-        assert_eq!(
-            ParamValue::parse("-1.5e-1").unwrap().exact,
-            Some(Rational::ratio(-3, 20))
-        );
+        assert_eq!(ParamValue::parse("3/8").unwrap().exact, Some(Rational::ratio(3, 8)));
+        assert_eq!(ParamValue::parse("0.375").unwrap().exact, Some(Rational::ratio(3, 8)));
+        assert_eq!(ParamValue::parse("-1.5e-1").unwrap().exact, Some(Rational::ratio(-3, 20)));
         assert!(ParamValue::parse("nan").is_err());
         assert!(ParamValue::parse("inf").is_err());
         assert!(ParamValue::parse("1/0").is_err());

@@ -27,9 +27,7 @@ pub struct SparseRow<W> {
 
 impl<W: Weight> SparseRow<W> {
     pub fn unit(i: usize) -> Self {
-        SparseRow {
-            entries: vec![(i, W::one())],
-        }
+        SparseRow { entries: vec![(i, W::one())] }
     }
 }
 
@@ -43,8 +41,6 @@ impl<W: Weight> Combine<W> for SparseRow<W> {
                 *e = e.clone() + v;
             }
         }
-        SparseRow {
-            entries: acc.into_iter().filter(|(_, v)| !v.is_zero()).collect(),
-        }
+        SparseRow { entries: acc.into_iter().filter(|(_, v)| !v.is_zero()).collect() }
     }
 }

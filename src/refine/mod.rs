@@ -71,9 +71,7 @@ impl<W: Weight> Stencil<W> {
         }
     }
     pub fn sum_of_weights(&self) -> W {
-        self.terms
-            .iter()
-            .fold(W::zero(), |acc, t| acc + t.1.clone())
+        self.terms.iter().fold(W::zero(), |acc, t| acc + t.1.clone())
     }
     /// Vertices with non-zero weight (call on a merged stencil).
     pub fn support(&self) -> impl Iterator<Item = VertexId> + '_ {
@@ -89,10 +87,7 @@ pub type RuleResult<W> = Result<Option<Stencil<W>>, Inexact>;
 
 /// Evaluate stencils on data; a new value is `None` when its stencil is missing
 /// or touches a missing old value.
-pub fn apply<W: Weight, T: Combine<W>>(
-    stencils: &[Option<Stencil<W>>],
-    data: &[Option<T>],
-) -> Vec<Option<T>> {
+pub fn apply<W: Weight, T: Combine<W>>(stencils: &[Option<Stencil<W>>], data: &[Option<T>]) -> Vec<Option<T>> {
     stencils
         .iter()
         .map(|st| {

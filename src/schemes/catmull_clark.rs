@@ -38,14 +38,11 @@ impl<W: Weight> Rules<W> for CatmullClark {
         Ok(match origin {
             Origin::Face(f) => Some(face_point(mesh.face(f))),
             Origin::Edge(a, b) => {
-                let (Some((fl, _)), Some((fr, _))) = (mesh.half_edge(a, b), mesh.half_edge(b, a))
-                else {
+                let (Some((fl, _)), Some((fr, _))) = (mesh.half_edge(a, b), mesh.half_edge(b, a)) else {
                     return Ok(None);
                 };
                 let quarter = W::ratio(1, 4);
-                let mut s = Stencil::new()
-                    .with(a, quarter.clone())
-                    .with(b, quarter.clone());
+                let mut s = Stencil::new().with(a, quarter.clone()).with(b, quarter.clone());
                 s.add_scaled(&face_point(mesh.face(fl)), &quarter);
                 s.add_scaled(&face_point(mesh.face(fr)), &quarter);
                 Some(s)

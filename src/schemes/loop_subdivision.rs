@@ -32,8 +32,7 @@ impl<W: Weight> Rules<W> for Loop {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         Ok(match origin {
             Origin::Edge(a, b) => {
-                let (Some((fl, kl)), Some((fr, kr))) = (mesh.half_edge(a, b), mesh.half_edge(b, a))
-                else {
+                let (Some((fl, kl)), Some((fr, kr))) = (mesh.half_edge(a, b), mesh.half_edge(b, a)) else {
                     return Ok(None);
                 };
                 if mesh.face(fl).len() != 3 || mesh.face(fr).len() != 3 {

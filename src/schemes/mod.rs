@@ -69,11 +69,7 @@ pub struct SchemeEntry {
 }
 
 pub fn registry() -> Vec<SchemeEntry> {
-    vec![
-        catmull_clark::entry(),
-        loop_subdivision::entry(),
-        doo_sabin::entry(),
-    ]
+    vec![catmull_clark::entry(), loop_subdivision::entry(), doo_sabin::entry()]
 }
 
 pub fn known_names() -> Vec<&'static str> {
@@ -83,12 +79,10 @@ pub fn known_names() -> Vec<&'static str> {
 /// Build a scheme by name with `name=value` parameter overrides.
 pub fn build(name: &str, overrides: &[(String, String)]) -> Result<Box<dyn Scheme>, String> {
     let reg = registry();
-    let entry = reg.iter().find(|e| e.name == name).ok_or_else(|| {
-        format!(
-            "unknown scheme '{name}'; known schemes: {}",
-            known_names().join(", ")
-        )
-    })?;
+    let entry = reg
+        .iter()
+        .find(|e| e.name == name)
+        .ok_or_else(|| format!("unknown scheme '{name}'; known schemes: {}", known_names().join(", ")))?;
     let params = Params::resolve(entry.name, &(entry.params)(), overrides)?;
     Ok((entry.build)(params))
 }

@@ -24,11 +24,7 @@ impl Params {
         self.values.iter().find(|(n, _)| n == name).map(|(_, v)| v)
     }
 
-    pub fn resolve(
-        scheme: &str,
-        specs: &[ParamSpec],
-        overrides: &[(String, String)],
-    ) -> Result<Params, String> {
+    pub fn resolve(scheme: &str, specs: &[ParamSpec], overrides: &[(String, String)]) -> Result<Params, String> {
         let mut values = Vec::new();
         for spec in specs {
             values.push((spec.name.to_string(), ParamValue::parse(spec.default)?));
@@ -39,10 +35,7 @@ impl Params {
                 return Err(if known.is_empty() {
                     format!("scheme '{scheme}' has no parameters (got '{name}')")
                 } else {
-                    format!(
-                        "scheme '{scheme}' has no parameter '{name}'; its parameters: {}",
-                        known.join(", ")
-                    )
+                    format!("scheme '{scheme}' has no parameter '{name}'; its parameters: {}", known.join(", "))
                 });
             };
             let v = ParamValue::parse(text).map_err(|e| format!("parameter {name}: {e}"))?;
@@ -52,11 +45,7 @@ impl Params {
                     spec.min, spec.max
                 ));
             }
-            values
-                .iter_mut()
-                .find(|(n, _)| n == name)
-                .expect("spec has a default")
-                .1 = v;
+            values.iter_mut().find(|(n, _)| n == name).expect("spec has a default").1 = v;
         }
         Ok(Params { values })
     }
@@ -67,13 +56,7 @@ mod tests {
     use super::*;
 
     fn spec() -> Vec<ParamSpec> {
-        vec![ParamSpec {
-            name: "a",
-            default: "1/2",
-            min: 0.0,
-            max: 0.75,
-            description: "test",
-        }]
+        vec![ParamSpec { name: "a", default: "1/2", min: 0.0, max: 0.75, description: "test" }]
     }
     fn o(k: &str, v: &str) -> Vec<(String, String)> {
         vec![(k.into(), v.into())]
@@ -89,17 +72,9 @@ mod tests {
 
     #[test]
     fn out_of_range_nan_and_unknown_are_errors() {
-        assert!(Params::resolve("s", &spec(), &o("a", "0.8"))
-            .unwrap_err()
-            .contains("out of range"));
-        assert!(Params::resolve("s", &spec(), &o("a", "-1e-9"))
-            .unwrap_err()
-            .contains("out of range"));
-        assert!(Params::resolve("s", &spec(), &o("a", "NaN"))
-            .unwrap_err()
-            .contains("not a finite number"));
-        assert!(Params::resolve("s", &spec(), &o("b", "1"))
-            .unwrap_err()
-            .contains("no parameter 'b'"));
+        assert!(Params::resolve("s", &spec(), &o("a", "0.8")).unwrap_err().contains("out of range"));
+        assert!(Params::resolve("s", &spec(), &o("a", "-1e-9")).unwrap_err().contains("out of range"));
+        assert!(Params::resolve("s", &spec(), &o("a", "NaN")).unwrap_err().contains("not a finite number"));
+        assert!(Params::resolve("s", &spec(), &o("b", "1")).unwrap_err().contains("no parameter 'b'"));
     }
 }

@@ -42,10 +42,7 @@ pub struct ExactSummary {
 
 fn parse_ratio(s: &str) -> Option<Rational> {
     let (p, q) = s.split_once('/').unwrap_or((s, "1"));
-    Some(Rational::new(
-        p.parse::<BigInt>().ok()?,
-        q.parse::<BigInt>().ok()?,
-    ))
+    Some(Rational::new(p.parse::<BigInt>().ok()?, q.parse::<BigInt>().ok()?))
 }
 
 pub fn to_qmatrix(m: &LocalMatrix<Rational>) -> QMatrix {
@@ -58,17 +55,9 @@ pub fn to_qmatrix(m: &LocalMatrix<Rational>) -> QMatrix {
     q
 }
 
-pub fn confirm(
-    m: &LocalMatrix<Rational>,
-    eigs: &mut [Eigenvalue],
-    period: usize,
-    n: usize,
-) -> ExactSummary {
-    let candidates: Vec<(usize, Rational)> = eigs
-        .iter()
-        .enumerate()
-        .filter_map(|(k, e)| Some((k, parse_ratio(e.recognised.as_deref()?)?)))
-        .collect();
+pub fn confirm(m: &LocalMatrix<Rational>, eigs: &mut [Eigenvalue], period: usize, n: usize) -> ExactSummary {
+    let candidates: Vec<(usize, Rational)> =
+        eigs.iter().enumerate().filter_map(|(k, e)| Some((k, parse_ratio(e.recognised.as_deref()?)?))).collect();
     let full = m.size() <= EXACT_FULL_MAX || period == n;
     let (method, mat) = if full {
         ("full", to_qmatrix(m))
@@ -91,11 +80,7 @@ pub fn confirm(
                 agrees = false;
             }
         }
-        out.push(ExactRoot {
-            value: text,
-            algebraic_multiplicity: *alg,
-            geometric_multiplicity: geo,
-        });
+        out.push(ExactRoot { value: text, algebraic_multiplicity: *alg, geometric_multiplicity: geo });
     }
     ExactSummary {
         method: method.to_string(),

@@ -43,11 +43,7 @@ pub struct Options {
 
 impl Default for Options {
     fn default() -> Self {
-        Options {
-            neighbourhood: NeighbourhoodKind::Analysis,
-            method: None,
-            exact: true,
-        }
+        Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: true }
     }
 }
 
@@ -57,28 +53,34 @@ pub struct BlockInfo {
     pub size: usize,
 }
 
-/// Eigenvectors of one eigenvalue from one block, in block coordinates: right
-/// x with B x = λ x, left y with y^H B = λ y^H. Mapping them to the whole
-/// neighbourhood costs O(matrix size) each, so it is done on demand
+/// Right eigenvectors of one eigenvalue from one block, in block coordinates
+/// (B x = λ x). Left eigenvectors are computed on request from the block, and
+/// both are mapped to the whole neighbourhood on request
 /// ([`Spectrum::right_vectors`], [`Spectrum::left_vectors`]): at high valence
 /// most of the n blocks' vectors are never looked at.
 #[derive(Clone, Debug)]
 pub struct EigenVectors {
     pub block: usize,
     pub right: Vec<Vec<c64>>,
-    pub left: Vec<Vec<c64>>,
 }
 
-/// How block coordinates map to neighbourhood vertices.
+/// The blocks that were decomposed, and how block coordinates map to
+/// neighbourhood vertices.
 #[derive(Clone, Debug)]
 pub enum Synthesis {
     /// block m's coordinate k is orbit `block_orbits[m][k]`
-    Dft {
-        orbits: Orbits,
-        block_orbits: Vec<Vec<usize>>,
-    },
+    Dft { orbits: Orbits, block_orbits: Vec<Vec<usize>>, blocks: Vec<Mat<c64>> },
     /// the single block is the whole matrix
-    Full,
+    Full { matrix: Mat<c64> },
+}
+
+impl Synthesis {
+    fn block(&self, m: usize) -> &Mat<c64> {
+        match self {
+            Synthesis::Dft { blocks, .. } => &blocks[m],
+            Synthesis::Full { matrix } => matrix,
+        }
+    }
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -110,11 +112,7 @@ impl Eigenvalue {
     }
     /// "0.25 (1/4)" style display.
     pub fn display(&self) -> String {
-        let num = if self.is_real() {
-            fmt_f(self.re)
-        } else {
-            format!("{}{:+}i", fmt_f(self.re), fmt_f(self.im))
-        };
+        let num = if self.is_real() { fmt_f(self.re) } else { format!("{}{:+}i", fmt_f(self.re), fmt_f(self.im)) };
         match (&self.exact, &self.recognised) {
             (Some(e), _) => format!("{num} (= {e})"),
             (None, Some(r)) => format!("{num} (≈ {r})"),
@@ -167,27 +165,24 @@ impl Spectrum {
     fn map_vectors(&self, e: &Eigenvalue, left: bool) -> Vec<Vec<c64>> {
         let mut out = Vec::new();
         for vs in &e.vectors {
-            let list = if left { &vs.left } else { &vs.right };
-            for x in list {
+            let list = if left {
+                let lambda = c64::new(e.re, e.im);
+                eigen::left_eigenvectors(self.synthesis.block(vs.block), lambda, vs.right.len()).unwrap_or_default()
+            } else {
+                vs.right.clone()
+            };
+            for x in &list {
                 out.push(match &self.synthesis {
-                    Synthesis::Full => {
+                    Synthesis::Full { .. } => {
                         if left {
                             x.iter().map(|z| z.conj()).collect()
                         } else {
                             x.clone()
                         }
                     }
-                    Synthesis::Dft {
-                        orbits,
-                        block_orbits,
-                    } => synthesise(
-                        x,
-                        vs.block,
-                        &block_orbits[vs.block],
-                        orbits,
-                        self.matrix_size,
-                        left,
-                    ),
+                    Synthesis::Dft { orbits, block_orbits, .. } => {
+                        synthesise(x, vs.block, &block_orbits[vs.block], orbits, self.matrix_size, left)
+                    }
                 });
             }
         }
@@ -203,92 +198,23 @@ pub struct Analysis {
     pub spectrum: Spectrum,
 }
 
-pub fn analyse(
-    scheme: &dyn Scheme,
-    config: &Configuration,
-    opts: &Options,
-) -> Result<Analysis, String> {
+pub fn analyse(scheme: &dyn Scheme, config: &Configuration, opts: &Options) -> Result<Analysis, String> {
     let discovered = discover(scheme, config)?;
-    let matrix =
-        assemble::<f64>(scheme, &discovered, opts.neighbourhood).map_err(|e| e.to_string())?;
-    let exact_matrix = if opts.exact {
-        assemble::<Rational>(scheme, &discovered, opts.neighbourhood).ok()
-    } else {
-        None
-    };
+    let matrix = assemble::<f64>(scheme, &discovered, opts.neighbourhood).map_err(|e| e.to_string())?;
+    let exact_matrix =
+        if opts.exact { assemble::<Rational>(scheme, &discovered, opts.neighbourhood).ok() } else { None };
     let n = config.valence();
     let period = config.symmetry_period();
     let symmetric = period < n;
-    let method = opts
-        .method
-        .unwrap_or(if symmetric { Method::Dft } else { Method::Full });
-    let (blocks_info, mut eigenvalues, synthesis) = match method {
-        Method::Dft => {
-            let orbits = Orbits::new(&matrix, period, n);
-            let blocks = fourier_blocks(&matrix, &orbits);
-            let mut all = Vec::new();
-            for b in &blocks {
-                for e in eigen::block_eigen(&b.matrix)? {
-                    all.push(Eigenvalue::from_block(e, b.index));
-                }
-            }
-            let info = blocks
-                .iter()
-                .map(|b| BlockInfo {
-                    index: b.index,
-                    size: b.matrix.nrows(),
-                })
-                .collect();
-            let block_orbits = blocks.into_iter().map(|b| b.orbits).collect();
-            (
-                info,
-                all,
-                Synthesis::Dft {
-                    orbits,
-                    block_orbits,
-                },
-            )
-        }
-        Method::Full => {
-            let dense = Mat::<c64>::from_fn(matrix.size(), matrix.size(), |i, j| {
-                c64::new(matrix.get(i, j), 0.0)
-            });
-            let all = eigen::block_eigen(&dense)?
-                .into_iter()
-                .map(|e| Eigenvalue::from_block(e, 0))
-                .collect();
-            (
-                vec![BlockInfo {
-                    index: 0,
-                    size: matrix.size(),
-                }],
-                all,
-                Synthesis::Full,
-            )
-        }
-    };
-    eigenvalues = merge(eigenvalues);
-    for e in &mut eigenvalues {
-        // snap tiny imaginary parts of real eigenvalues (conjugate blocks) to zero
-        if e.im.abs() < 1e-12 * e.modulus.max(1.0) {
-            e.im = 0.0;
-        }
-        e.recognised = if e.is_real() { recognise(e.re) } else { None };
-    }
+    let method = opts.method.unwrap_or(if symmetric { Method::Dft } else { Method::Full });
+    let Decomposition { blocks: blocks_info, mut eigenvalues, synthesis } = decompose(&matrix, period, n, method)?;
     sort_eigenvalues(&mut eigenvalues);
-    let exact_analysis = exact_matrix
-        .as_ref()
-        .map(|m| exact::confirm(m, &mut eigenvalues, period, n));
+    let exact_analysis = exact_matrix.as_ref().map(|m| exact::confirm(m, &mut eigenvalues, period, n));
     let verdict = verdict::reif(&eigenvalues);
     let spectrum = Spectrum {
         scheme: scheme.name().to_string(),
         valence: n,
-        params: scheme
-            .params()
-            .values
-            .iter()
-            .map(|(k, v)| (k.clone(), v.text.clone()))
-            .collect(),
+        params: scheme.params().values.iter().map(|(k, v)| (k.clone(), v.text.clone())).collect(),
         faces: config.face_sequence(),
         centre: config.centre,
         neighbourhood: opts.neighbourhood,
@@ -303,12 +229,49 @@ pub fn analyse(
         labels: matrix.labels.clone(),
         synthesis,
     };
-    Ok(Analysis {
-        discovered,
-        matrix,
-        exact_matrix,
-        spectrum,
-    })
+    Ok(Analysis { discovered, matrix, exact_matrix, spectrum })
+}
+
+/// Eigenvalues of a local matrix (unsorted distinct values with multiplicities,
+/// vectors in block coordinates) and the blocks they came from.
+pub struct Decomposition {
+    pub blocks: Vec<BlockInfo>,
+    pub eigenvalues: Vec<Eigenvalue>,
+    pub synthesis: Synthesis,
+}
+
+/// The eigen-stage of the pipeline on its own (the benchmark times this):
+/// `period` is the configuration's rotation period, `n` its valence.
+pub fn decompose(matrix: &LocalMatrix<f64>, period: usize, n: usize, method: Method) -> Result<Decomposition, String> {
+    let (blocks, mut eigenvalues, synthesis) = match method {
+        Method::Dft => {
+            let orbits = Orbits::new(matrix, period, n);
+            let blocks = fourier_blocks(matrix, &orbits);
+            let mut all = Vec::new();
+            for b in &blocks {
+                for e in eigen::block_eigen(&b.matrix)? {
+                    all.push(Eigenvalue::from_block(e, b.index));
+                }
+            }
+            let info = blocks.iter().map(|b| BlockInfo { index: b.index, size: b.matrix.nrows() }).collect();
+            let (block_orbits, mats) = blocks.into_iter().map(|b| (b.orbits, b.matrix)).unzip();
+            (info, all, Synthesis::Dft { orbits, block_orbits, blocks: mats })
+        }
+        Method::Full => {
+            let dense = Mat::<c64>::from_fn(matrix.size(), matrix.size(), |i, j| c64::new(matrix.get(i, j), 0.0));
+            let all = eigen::block_eigen(&dense)?.into_iter().map(|e| Eigenvalue::from_block(e, 0)).collect();
+            (vec![BlockInfo { index: 0, size: matrix.size() }], all, Synthesis::Full { matrix: dense })
+        }
+    };
+    eigenvalues = merge(eigenvalues);
+    for e in &mut eigenvalues {
+        // snap tiny imaginary parts of real eigenvalues (conjugate blocks) to zero
+        if e.im.abs() < 1e-12 * e.modulus.max(1.0) {
+            e.im = 0.0;
+        }
+        e.recognised = if e.is_real() { recognise(e.re) } else { None };
+    }
+    Ok(Decomposition { blocks, eigenvalues, synthesis })
 }
 
 impl Eigenvalue {
@@ -324,11 +287,7 @@ impl Eigenvalue {
             blocks: vec![m],
             exact: None,
             recognised: None,
-            vectors: vec![EigenVectors {
-                block: m,
-                right: e.right,
-                left: e.left,
-            }],
+            vectors: vec![EigenVectors { block: m, right: e.right }],
         }
     }
 }
@@ -336,14 +295,7 @@ impl Eigenvalue {
 /// Map one block vector to the whole neighbourhood: right vectors by
 /// X[(t,a)] = ω^{mt} x_a, left rows by l[(t,a)] = conj(y_a) ω^{-mt} / g (the
 /// dual basis of u_a^m); fixed points (the centre) carry their value as is.
-fn synthesise(
-    x: &[c64],
-    m: usize,
-    block_orbits: &[usize],
-    orbits: &Orbits,
-    size: usize,
-    left: bool,
-) -> Vec<c64> {
+fn synthesise(x: &[c64], m: usize, block_orbits: &[usize], orbits: &Orbits, size: usize, left: bool) -> Vec<c64> {
     let g = orbits.group_order;
     let mut pos = vec![usize::MAX; orbits.num_orbits()];
     for (k, &o) in block_orbits.iter().enumerate() {
@@ -372,10 +324,7 @@ fn merge(list: Vec<Eigenvalue>) -> Vec<Eigenvalue> {
     let mut out: Vec<Eigenvalue> = Vec::new();
     for e in list {
         let z = e.value();
-        if let Some(t) = out
-            .iter_mut()
-            .find(|t| (t.value() - z).norm() < MERGE_TOL * z.norm().max(1.0))
-        {
+        if let Some(t) = out.iter_mut().find(|t| (t.value() - z).norm() < MERGE_TOL * z.norm().max(1.0)) {
             t.algebraic_multiplicity += e.algebraic_multiplicity;
             t.geometric_multiplicity += e.geometric_multiplicity;
             t.defective |= e.defective;

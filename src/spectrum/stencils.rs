@@ -37,11 +37,7 @@ fn weights(spec: &Spectrum, w: &[f64]) -> Vec<StencilWeight> {
         .zip(w)
         .map(|(l, &x)| {
             let x = if x.abs() < ZERO { 0.0 } else { x };
-            StencilWeight {
-                vertex: l.name.clone(),
-                weight: x,
-                recognised: crate::numeric::recognise::recognise(x),
-            }
+            StencilWeight { vertex: l.name.clone(), weight: x, recognised: crate::numeric::recognise::recognise(x) }
         })
         .collect()
 }
@@ -49,10 +45,7 @@ fn weights(spec: &Spectrum, w: &[f64]) -> Vec<StencilWeight> {
 pub fn limit_stencil(spec: &Spectrum) -> Result<Vec<f64>, String> {
     let e = spec.eigenvalues.first().ok_or("empty spectrum")?;
     if (e.re - 1.0).abs() > 1e-9 || e.algebraic_multiplicity != 1 {
-        return Err(format!(
-            "no simple eigenvalue 1 (dominant is {}): no limit stencil",
-            e.display()
-        ));
+        return Err(format!("no simple eigenvalue 1 (dominant is {}): no limit stencil", e.display()));
     }
     let l = &spec.left_vectors(e)[0];
     let sum: c64 = l.iter().sum();
@@ -68,18 +61,10 @@ pub fn tangent_stencils(spec: &Spectrum) -> Result<Vec<Vec<f64>>, String> {
     {
         for l in &spec.left_vectors(e) {
             // fix the phase on the largest weight of the lowest-index vertex group
-            let pivot = l
-                .iter()
-                .copied()
-                .find(|z| z.norm() > 1e-8 * l.iter().map(|z| z.norm()).fold(0.0, f64::max));
-            let phase = pivot
-                .map(|z| z.conj() / z.norm())
-                .unwrap_or(c64::new(1.0, 0.0));
+            let pivot = l.iter().copied().find(|z| z.norm() > 1e-8 * l.iter().map(|z| z.norm()).fold(0.0, f64::max));
+            let phase = pivot.map(|z| z.conj() / z.norm()).unwrap_or(c64::new(1.0, 0.0));
             let rotated: Vec<c64> = l.iter().map(|z| z * phase).collect();
-            for part in [
-                rotated.iter().map(|z| z.re).collect::<Vec<_>>(),
-                rotated.iter().map(|z| z.im).collect(),
-            ] {
+            for part in [rotated.iter().map(|z| z.re).collect::<Vec<_>>(), rotated.iter().map(|z| z.im).collect()] {
                 if out.len() < e.algebraic_multiplicity.min(2) && independent(&out, &part) {
                     out.push(part);
                 }

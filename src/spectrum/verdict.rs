@@ -39,17 +39,10 @@ pub fn reif(eigs: &[Eigenvalue]) -> Verdict {
     };
     if (l0.re - 1.0).abs() > TOL || l0.im.abs() > TOL {
         ok = false;
-        reasons.push(format!(
-            "dominant eigenvalue is {} (modulus {:.6}), not 1",
-            l0.display(),
-            l0.modulus
-        ));
+        reasons.push(format!("dominant eigenvalue is {} (modulus {:.6}), not 1", l0.display(), l0.modulus));
     } else if l0.algebraic_multiplicity != 1 {
         ok = false;
-        reasons.push(format!(
-            "eigenvalue 1 has multiplicity {}, not 1",
-            l0.algebraic_multiplicity
-        ));
+        reasons.push(format!("eigenvalue 1 has multiplicity {}, not 1", l0.algebraic_multiplicity));
     } else {
         reasons.push("λ0 = 1 is simple".into());
     }
@@ -62,16 +55,10 @@ pub fn reif(eigs: &[Eigenvalue]) -> Verdict {
     v.subdominant_blocks = l1.blocks.clone();
     if !l1.is_real() {
         ok = false;
-        reasons.push(format!(
-            "subdominant eigenvalue {} is not real",
-            l1.display()
-        ));
+        reasons.push(format!("subdominant eigenvalue {} is not real", l1.display()));
     } else if l1.re <= 0.0 {
         ok = false;
-        reasons.push(format!(
-            "subdominant eigenvalue {} is not positive",
-            l1.display()
-        ));
+        reasons.push(format!("subdominant eigenvalue {} is not positive", l1.display()));
     }
     if l1.algebraic_multiplicity != 2 {
         ok = false;
@@ -89,10 +76,7 @@ pub fn reif(eigs: &[Eigenvalue]) -> Verdict {
         ));
     }
     if ok {
-        reasons.push(format!(
-            "λ1 = λ2 = {} real, positive, double, non-defective",
-            l1.display()
-        ));
+        reasons.push(format!("λ1 = λ2 = {} real, positive, double, non-defective", l1.display()));
     }
     if let Some(l3) = eigs.get(2) {
         v.sub_subdominant = Some(l3.modulus);
@@ -101,10 +85,7 @@ pub fn reif(eigs: &[Eigenvalue]) -> Verdict {
         }
         if l3.modulus >= l1.modulus * (1.0 - TOL) {
             ok = false;
-            reasons.push(format!(
-                "|λ3| = {:.12} is not below λ1 = {:.12}",
-                l3.modulus, l1.modulus
-            ));
+            reasons.push(format!("|λ3| = {:.12} is not below λ1 = {:.12}", l3.modulus, l1.modulus));
         } else {
             reasons.push(format!("|λ3| = {} < λ1", super::fmt_f(l3.modulus)));
         }

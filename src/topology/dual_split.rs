@@ -27,12 +27,7 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
         let (Some((f, _)), Some((g, _))) = (mesh.half_edge(a, b), mesh.half_edge(b, a)) else {
             continue;
         };
-        faces.push(vec![
-            corner_id[&(f, b)],
-            corner_id[&(f, a)],
-            corner_id[&(g, a)],
-            corner_id[&(g, b)],
-        ]);
+        faces.push(vec![corner_id[&(f, b)], corner_id[&(f, a)], corner_id[&(g, a)], corner_id[&(g, b)]]);
         parents.push(Origin::Edge(a, b));
     }
     for v in 0..mesh.num_vertices() {
@@ -54,9 +49,7 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
     if let Some(chart) = &mesh.chart {
         let mut cb = ChartBuilder::new(chart);
         for o in &origins {
-            let Origin::Corner { face: f, corner: k } = *o else {
-                unreachable!()
-            };
+            let Origin::Corner { face: f, corner: k } = *o else { unreachable!() };
             let face = mesh.face(f);
             let v = face[k];
             // new corner = face centre + corner, in the face's chart (lattice doubles)
@@ -66,10 +59,8 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
                     cb.push(c.sector, c.i, c.j);
                 }
                 Some(s) => {
-                    let pts: Vec<(i64, i64)> = face
-                        .iter()
-                        .map(|&u| chart.in_chart(chart.vertex_coords[u], s))
-                        .collect();
+                    let pts: Vec<(i64, i64)> =
+                        face.iter().map(|&u| chart.in_chart(chart.vertex_coords[u], s)).collect();
                     let m = pts.len() as i64;
                     let (si, sj) = pts.iter().fold((0, 0), |a, p| (a.0 + p.0, a.1 + p.1));
                     if si % m != 0 || sj % m != 0 {
@@ -100,9 +91,5 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
         }
         new_mesh.chart = cb.finish();
     }
-    Ok(Refined {
-        mesh: new_mesh,
-        vertex_origins: origins,
-        face_parents: parents,
-    })
+    Ok(Refined { mesh: new_mesh, vertex_origins: origins, face_parents: parents })
 }

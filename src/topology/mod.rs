@@ -59,12 +59,7 @@ pub(crate) struct ChartBuilder<'a> {
 
 impl<'a> ChartBuilder<'a> {
     pub fn new(old: &'a Chart) -> Self {
-        ChartBuilder {
-            old,
-            coords: Vec::new(),
-            face_sector: Vec::new(),
-            ok: true,
-        }
+        ChartBuilder { old, coords: Vec::new(), face_sector: Vec::new(), ok: true }
     }
     /// Record a new vertex at chart coordinates (sector, i, j) of the refined lattice.
     pub fn push(&mut self, s: usize, i: i64, j: i64) {

@@ -57,15 +57,10 @@ pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, String> {
                     cb.push(c.sector, 2 * c.i, 2 * c.j);
                 }
                 Origin::Edge(a, b) => {
-                    let (f, _) = mesh
-                        .half_edge(a, b)
-                        .or_else(|| mesh.half_edge(b, a))
-                        .ok_or("dangling edge")?;
+                    let (f, _) = mesh.half_edge(a, b).or_else(|| mesh.half_edge(b, a)).ok_or("dangling edge")?;
                     let s = cb.face_chart(chart.face_sector[f], a);
-                    let (pa, pb) = (
-                        chart.in_chart(chart.vertex_coords[a], s),
-                        chart.in_chart(chart.vertex_coords[b], s),
-                    );
+                    let (pa, pb) =
+                        (chart.in_chart(chart.vertex_coords[a], s), chart.in_chart(chart.vertex_coords[b], s));
                     cb.push(s, pa.0 + pb.0, pa.1 + pb.1);
                 }
                 Origin::Face(f) => match chart.face_sector[f] {
@@ -98,9 +93,5 @@ pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, String> {
         }
         new_mesh.chart = cb.finish();
     }
-    Ok(Refined {
-        mesh: new_mesh,
-        vertex_origins: origins,
-        face_parents: parents,
-    })
+    Ok(Refined { mesh: new_mesh, vertex_origins: origins, face_parents: parents })
 }

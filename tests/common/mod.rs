@@ -9,25 +9,10 @@ pub fn scheme(name: &str) -> Box<dyn Scheme> {
     schemes::build(name, &[]).unwrap()
 }
 
-pub fn run(
-    name: &str,
-    n: usize,
-    kind: NeighbourhoodKind,
-    method: Option<Method>,
-    exact: bool,
-) -> Analysis {
+pub fn run(name: &str, n: usize, kind: NeighbourhoodKind, method: Option<Method>, exact: bool) -> Analysis {
     let s = scheme(name);
     let config = Configuration::regular(s.as_ref(), n).unwrap();
-    analyse(
-        s.as_ref(),
-        &config,
-        &Options {
-            neighbourhood: kind,
-            method,
-            exact,
-        },
-    )
-    .unwrap()
+    analyse(s.as_ref(), &config, &Options { neighbourhood: kind, method, exact }).unwrap()
 }
 
 /// Every eigenvalue repeated by its algebraic multiplicity, as (re, im).
@@ -46,11 +31,7 @@ pub fn expanded(a: &Analysis) -> Vec<(f64, f64)> {
 pub fn assert_same_multiset(mut got: Vec<f64>, mut want: Vec<f64>, tol: f64, what: &str) {
     got.sort_by(f64::total_cmp);
     want.sort_by(f64::total_cmp);
-    assert_eq!(
-        got.len(),
-        want.len(),
-        "{what}: sizes differ: got {got:?}, want {want:?}"
-    );
+    assert_eq!(got.len(), want.len(), "{what}: sizes differ: got {got:?}, want {want:?}");
     for (g, w) in got.iter().zip(&want) {
         assert!((g - w).abs() < tol, "{what}: got {got:?}, want {want:?}");
     }
@@ -98,7 +79,5 @@ pub fn in_span(basis: &[Vec<f64>], v: &[f64]) -> bool {
 
 /// All products a·b of two lists (tensor-product spectra).
 pub fn products(a: &[f64], b: &[f64]) -> Vec<f64> {
-    a.iter()
-        .flat_map(|x| b.iter().map(move |y| x * y))
-        .collect()
+    a.iter().flat_map(|x| b.iter().map(move |y| x * y)).collect()
 }
