@@ -52,6 +52,9 @@ impl LatticeCoord {
 #[derive(Clone, Debug)]
 pub struct Chart {
     pub sector_kinds: Vec<SectorKind>,
+    /// coordinates are the mesh's own lattice units times `scale`; 1 except
+    /// half-way through a sqrt(3) analysis step (see `topology::sqrt3_split`)
+    pub scale: i64,
     pub vertex_coords: Vec<LatticeCoord>,
     pub face_sector: Vec<Option<usize>>,
 }
@@ -162,7 +165,7 @@ mod tests {
     use super::*;
 
     fn chart(kinds: Vec<SectorKind>) -> Chart {
-        Chart { sector_kinds: kinds, vertex_coords: vec![], face_sector: vec![] }
+        Chart { sector_kinds: kinds, scale: 1, vertex_coords: vec![], face_sector: vec![] }
     }
 
     #[test]

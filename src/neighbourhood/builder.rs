@@ -39,7 +39,12 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
     let n = config.valence();
     let r = rings as i64;
     let mut b = PatchBuilder {
-        chart: Chart { sector_kinds: config.sectors.clone(), vertex_coords: Vec::new(), face_sector: Vec::new() },
+        chart: Chart {
+            sector_kinds: config.sectors.clone(),
+            scale: 1,
+            vertex_coords: Vec::new(),
+            face_sector: Vec::new(),
+        },
         ids: HashMap::new(),
         faces: Vec::new(),
     };

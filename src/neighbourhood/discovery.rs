@@ -18,7 +18,7 @@ use super::builder::build_patch;
 use super::configuration::Configuration;
 use super::labels::{canonical_order, label_vertices, VertexLabel};
 use crate::mesh::{LatticeCoord, PolyMesh};
-use crate::refine::{Origin, Stencil};
+use crate::refine::{apply, Origin, SparseRow, Stencil};
 use crate::schemes::{CentreKind, Scheme, SchemeWeight};
 use crate::topology::Refined;
 
@@ -45,16 +45,19 @@ pub struct Discovered {
     /// the generous level-0 patch
     pub patch: PolyMesh,
     pub labels: Vec<VertexLabel>,
-    /// one refinement step of the patch
-    pub level1: Refined,
-    /// level-1 vertex with given lattice coordinates
-    pub level1_at: HashMap<LatticeCoord, usize>,
+    /// the refinements of one analysis step (one for binary schemes, two for
+    /// sqrt(3) schemes, whose lattice only realigns after two steps)
+    pub refinements: Vec<Refined>,
+    /// float stencils of each refinement (index k: level k+1 from level k)
+    pub stencils: Vec<Vec<Option<Stencil<f64>>>>,
+    /// vertex of the last refinement with given lattice coordinates
+    pub step_at: HashMap<LatticeCoord, usize>,
     /// level-0 vertex ids in canonical order
     pub minimal: Vec<usize>,
     pub analysis: Vec<usize>,
     /// rings of the generous patch that were needed
     pub patch_rings: usize,
-    /// refinement levels after which the analysis set stopped growing
+    /// analysis steps after which the analysis set stopped growing
     pub analysis_levels: usize,
 }
 
@@ -65,10 +68,21 @@ impl Discovered {
             NeighbourhoodKind::Analysis => &self.analysis,
         }
     }
-    /// The level-1 vertex that plays the role of level-0 vertex `v`.
+    /// The vertex after one analysis step that plays the role of level-0 vertex
+    /// `v`: the one at the same lattice coordinates of the refined lattice.
+    /// (For sqrt(3) schemes this is the permutation R of R·S·S: labels are
+    /// positional, so the 60-degree turn of two steps is undone by the lookup.)
     pub fn successor(&self, v: usize) -> Option<usize> {
         let c = self.patch.chart.as_ref()?.vertex_coords[v];
-        self.level1_at.get(&c).copied()
+        self.step_at.get(&c).copied()
+    }
+    /// The mesh before refinement k (0 = the patch).
+    pub fn mesh_before(&self, k: usize) -> &PolyMesh {
+        if k == 0 {
+            &self.patch
+        } else {
+            &self.refinements[k - 1].mesh
+        }
     }
 }
 
@@ -94,21 +108,39 @@ fn stencils_f64(scheme: &dyn Scheme, mesh: &PolyMesh, refined: &Refined) -> Vec<
     refined.vertex_origins.iter().map(|&o| <f64 as SchemeWeight>::stencil(scheme, mesh, o).ok().flatten()).collect()
 }
 
+/// Stencils of the last level in terms of level-0 vertices, composed through
+/// the intermediate levels (sparse rows refined like points).
+fn compose(levels: &[Vec<Option<Stencil<f64>>>], level0: usize) -> Vec<Option<SparseRow<f64>>> {
+    let mut rows: Vec<Option<SparseRow<f64>>> = (0..level0).map(|v| Some(SparseRow::unit(v))).collect();
+    for st in levels {
+        rows = apply(st, &rows);
+    }
+    rows
+}
+
 fn try_discover(scheme: &dyn Scheme, config: &Configuration, rings: usize) -> Result<Discovered, String> {
     let (patch, centre_set) = build_patch(config, rings);
     let labels = label_vertices(&patch, &centre_set, config.centre == CentreKind::Face);
     let topology = scheme.topology();
-    let level1 = topology.refine(&patch)?;
-    let chart1 = level1.mesh.chart.as_ref().ok_or("refined patch lost its lattice chart")?;
-    let level1_at: HashMap<LatticeCoord, usize> =
-        chart1.vertex_coords.iter().enumerate().map(|(i, c)| (*c, i)).collect();
-    let st1 = stencils_f64(scheme, &patch, &level1);
+    let steps = topology.steps_per_analysis();
+    let mut refinements: Vec<Refined> = Vec::new();
+    let mut stencils_by_level: Vec<Vec<Option<Stencil<f64>>>> = Vec::new();
+    for k in 0..steps {
+        let before = if k == 0 { &patch } else { &refinements[k - 1].mesh };
+        let r = topology.refine(before)?;
+        stencils_by_level.push(stencils_f64(scheme, before, &r));
+        refinements.push(r);
+    }
+    let last = &refinements[steps - 1];
+    let chart = last.mesh.chart.as_ref().ok_or("refined patch lost its lattice chart")?;
+    let step_at: HashMap<LatticeCoord, usize> = chart.vertex_coords.iter().enumerate().map(|(i, c)| (*c, i)).collect();
+    let composite = compose(&stencils_by_level, patch.num_vertices());
     let chart0 = patch.chart.as_ref().expect("patch has a chart");
 
     // D(v): old vertices on which the successor of v depends
     let dep = |v: usize| -> Option<Vec<usize>> {
-        let w = *level1_at.get(&chart0.vertex_coords[v])?;
-        Some(st1[w].as_ref()?.support().collect())
+        let w = *step_at.get(&chart0.vertex_coords[v])?;
+        Some(composite[w].as_ref()?.entries.iter().map(|e| e.0).collect())
     };
     let closure = |start: &mut dyn Iterator<Item = usize>| -> Result<BTreeSet<usize>, String> {
         let mut set: BTreeSet<usize> = BTreeSet::new();
@@ -126,27 +158,27 @@ fn try_discover(scheme: &dyn Scheme, config: &Configuration, rings: usize) -> Re
 
     let minimal = closure(&mut centre_set.iter().copied())?;
 
-    // --- analysis neighbourhood: dependencies of the first ring's descendants
+    // --- analysis neighbourhood: dependencies of the first ring's descendants.
+    // Dependencies are tracked backwards: mark the first-ring vertices after r
+    // refinements, then walk the stencils of refinements r, r-1, ..., 1 down to
+    // level 0. This is linear in the stencil sizes (forward dependency sets
+    // would cost O(n^3) at the dense central face of a dual scheme).
     let centre_lookup: HashSet<usize> = centre_set.iter().copied().collect();
     let mut region_faces: Vec<bool> =
         patch.faces().iter().map(|f| f.iter().any(|v| centre_lookup.contains(v))).collect();
-    // Dependencies are tracked backwards: mark the first-ring vertices of level
-    // L, then walk the stencils of levels L, L-1, ..., 1 down to level 0. This is
-    // linear in the stencil sizes (forward dependency sets would cost O(n^3) at
-    // the dense central face of a dual scheme).
-    let mut mesh_k = patch.clone();
-    let mut stencils_by_level: Vec<Vec<Option<Stencil<f64>>>> = Vec::new();
+    let mut all_stencils = stencils_by_level.clone();
     let mut collected: BTreeSet<usize> = BTreeSet::new();
     let mut previous: Option<BTreeSet<usize>> = None;
     let mut analysis = None;
     let mut levels_used = 0;
-    for level in 1..=MAX_LEVELS {
-        let (refined, stencils) = if level == 1 {
-            (level1.clone(), st1.clone())
+    let mut mesh_k = patch.clone();
+    for r in 1..=MAX_LEVELS * steps {
+        let refined = if r <= steps {
+            refinements[r - 1].clone()
         } else {
-            let r = topology.refine(&mesh_k)?;
-            let s = stencils_f64(scheme, &mesh_k, &r);
-            (r, s)
+            let refined = topology.refine(&mesh_k)?;
+            all_stencils.push(stencils_f64(scheme, &mesh_k, &refined));
+            refined
         };
         let in_region = region_entities(&mesh_k, &region_faces);
         let descends: Vec<bool> = refined.vertex_origins.iter().map(|o| in_region.contains(o)).collect();
@@ -157,20 +189,24 @@ fn try_discover(scheme: &dyn Scheme, config: &Configuration, rings: usize) -> Re
             .zip(&refined.face_parents)
             .map(|(f, p)| in_region.contains(p) && f.iter().all(|&v| descends[v]))
             .collect();
-        stencils_by_level.push(stencils);
-        let mut marked = vec![false; refined.mesh.num_vertices()];
-        for (f, face) in refined.mesh.faces().iter().enumerate() {
-            if next_region[f] {
+        mesh_k = refined.mesh;
+        region_faces = next_region;
+        if r % steps != 0 {
+            continue; // only whole analysis steps are compared
+        }
+        let mut marked = vec![false; mesh_k.num_vertices()];
+        for (f, face) in mesh_k.faces().iter().enumerate() {
+            if region_faces[f] {
                 face.iter().for_each(|&v| marked[v] = true);
             }
         }
-        for k in (0..level).rev() {
-            let st = &stencils_by_level[k];
-            let below = if k == 0 { patch.num_vertices() } else { stencils_by_level[k - 1].len() };
+        for k in (0..r).rev() {
+            let st = &all_stencils[k];
+            let below = if k == 0 { patch.num_vertices() } else { all_stencils[k - 1].len() };
             let mut marked_below = vec![false; below];
             for (v, _) in marked.iter().enumerate().filter(|(_, m)| **m) {
                 let stencil = st[v].as_ref().ok_or_else(|| {
-                    format!("first-ring vertex at level {level} not evaluable in a {rings}-ring patch")
+                    format!("first-ring vertex after {r} steps not evaluable in a {rings}-ring patch")
                 })?;
                 stencil.support().for_each(|u| marked_below[u] = true);
             }
@@ -178,14 +214,12 @@ fn try_discover(scheme: &dyn Scheme, config: &Configuration, rings: usize) -> Re
         }
         collected.extend(marked.iter().enumerate().filter(|(_, m)| **m).map(|(u, _)| u));
         let closed = closure(&mut collected.iter().copied())?;
-        levels_used = level;
-        if level >= 2 && previous.as_ref() == Some(&closed) {
+        levels_used = r / steps;
+        if levels_used >= 2 && previous.as_ref() == Some(&closed) {
             analysis = Some(closed);
             break;
         }
         previous = Some(closed);
-        mesh_k = refined.mesh;
-        region_faces = next_region;
     }
     let analysis = analysis.or(previous).expect("at least one level");
     let mut minimal: Vec<usize> = minimal.into_iter().collect();
@@ -196,8 +230,9 @@ fn try_discover(scheme: &dyn Scheme, config: &Configuration, rings: usize) -> Re
         config: config.clone(),
         patch,
         labels,
-        level1,
-        level1_at,
+        refinements,
+        stencils: stencils_by_level,
+        step_at,
         minimal,
         analysis,
         patch_rings: rings,

@@ -150,7 +150,8 @@ pub struct ParamValue {
 
 impl ParamValue {
     pub fn from_ratio(p: i64, q: i64) -> Self {
-        ParamValue { value: p as f64 / q as f64, exact: Some(Rational::ratio(p, q)), text: format!("{p}/{q}") }
+        let text = if q == 1 { format!("{p}") } else { format!("{p}/{q}") };
+        ParamValue { value: p as f64 / q as f64, exact: Some(Rational::ratio(p, q)), text }
     }
     pub fn from_f64(x: f64) -> Self {
         ParamValue { value: x, exact: None, text: format!("{x}") }

@@ -6,6 +6,7 @@ pub mod catmull_clark;
 pub mod doo_sabin;
 pub mod loop_subdivision;
 pub mod params;
+pub mod unified_sqrt3;
 
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Rational, Weight};
@@ -69,7 +70,13 @@ pub struct SchemeEntry {
 }
 
 pub fn registry() -> Vec<SchemeEntry> {
-    vec![catmull_clark::entry(), loop_subdivision::entry(), doo_sabin::entry()]
+    vec![
+        catmull_clark::entry(),
+        loop_subdivision::entry(),
+        doo_sabin::entry(),
+        unified_sqrt3::kobbelt_entry(),
+        unified_sqrt3::entry(),
+    ]
 }
 
 pub fn known_names() -> Vec<&'static str> {

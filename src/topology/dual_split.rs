@@ -46,7 +46,7 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
         parents.push(Origin::Vertex(v));
     }
     let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| e.to_string())?;
-    if let Some(chart) = &mesh.chart {
+    if let Some(chart) = mesh.chart.as_ref().filter(|c| c.scale == 1) {
         let mut cb = ChartBuilder::new(chart);
         for o in &origins {
             let Origin::Corner { face: f, corner: k } = *o else { unreachable!() };
@@ -89,7 +89,7 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
             };
             cb.face_sector.push(sector);
         }
-        new_mesh.chart = cb.finish();
+        new_mesh.chart = cb.finish(1);
     }
     Ok(Refined { mesh: new_mesh, vertex_origins: origins, face_parents: parents })
 }

@@ -6,6 +6,7 @@
 
 pub mod dual_split;
 pub mod primal_split;
+pub mod sqrt3_split;
 
 use crate::mesh::{Chart, LatticeCoord, PolyMesh};
 use crate::refine::Origin;
@@ -26,6 +27,8 @@ pub enum Topology {
     PrimalSplit(TriangleSplit),
     /// one new vertex per face corner; F-, E- and V-faces (Doo–Sabin)
     Dual,
+    /// a new vertex in every triangle, old edges flipped (Kobbelt's sqrt(3))
+    Sqrt3,
 }
 
 impl Topology {
@@ -33,11 +36,17 @@ impl Topology {
         match self {
             Topology::PrimalSplit(t) => primal_split::refine(mesh, *t),
             Topology::Dual => dual_split::refine(mesh),
+            Topology::Sqrt3 => sqrt3_split::refine(mesh),
         }
     }
-    /// The factor by which lattice coordinates grow in one step.
-    pub fn lattice_scale(&self) -> i64 {
-        2
+    /// Refinements in one analysis step: the number after which the refined
+    /// lattice is the old one scaled, without rotation, so that vertices can be
+    /// matched by lattice coordinates.
+    pub fn steps_per_analysis(&self) -> usize {
+        match self {
+            Topology::Sqrt3 => 2,
+            _ => 1,
+        }
     }
 }
 
@@ -71,9 +80,10 @@ impl<'a> ChartBuilder<'a> {
             }
         }
     }
-    pub fn finish(self) -> Option<Chart> {
+    pub fn finish(self, scale: i64) -> Option<Chart> {
         self.ok.then(|| Chart {
             sector_kinds: self.old.sector_kinds.clone(),
+            scale,
             vertex_coords: self.coords,
             face_sector: self.face_sector,
         })
