@@ -119,9 +119,10 @@ fn list_schemes(json: bool) -> Result<(), String> {
             println!("{:<16} (no parameters)", "");
         }
         for p in &e.params {
+            let default = if p.default.is_empty() { "(scheme rule)" } else { p.default };
             println!(
                 "{:<16} --param {}=VALUE  default {}  range [{}, {}]  {}",
-                "", p.name, p.default, p.min, p.max, p.description
+                "", p.name, default, p.min, p.max, p.description
             );
         }
     }

@@ -23,6 +23,10 @@ pub struct PolyMesh {
     /// Optional lattice chart (sector coordinates) used to label the vertices of
     /// analysis neighbourhoods; absent for user meshes.
     pub chart: Option<Chart>,
+    /// One face control vertex (FCV) per face, for schemes that carry them
+    /// (non-box subdivision). FCVs are vertices of the mesh that belong to no
+    /// face cycle.
+    pub face_points: Option<Vec<VertexId>>,
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -75,7 +79,24 @@ impl PolyMesh {
                 }
             }
         }
-        Ok(PolyMesh { faces, num_vertices, half_edges, vertex_corner, chart: None })
+        Ok(PolyMesh { faces, num_vertices, half_edges, vertex_corner, chart: None, face_points: None })
+    }
+
+    /// Attach face control vertices (one per face, each a vertex id of no face).
+    pub fn with_face_points(mut self, fcv: Vec<VertexId>) -> Result<Self, String> {
+        if fcv.len() != self.faces.len() {
+            return Err(format!("{} face control vertices for {} faces", fcv.len(), self.faces.len()));
+        }
+        if let Some(&v) = fcv.iter().find(|&&v| v >= self.num_vertices || self.vertex_corner[v].is_some()) {
+            return Err(format!("face control vertex {v} is missing or is a corner of a face"));
+        }
+        self.face_points = Some(fcv);
+        Ok(self)
+    }
+
+    /// The face control vertex of face f, if the mesh carries them.
+    pub fn face_point(&self, f: FaceId) -> Option<VertexId> {
+        self.face_points.as_ref().map(|p| p[f])
     }
 
     pub fn num_vertices(&self) -> usize {

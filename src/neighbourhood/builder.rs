@@ -2,6 +2,9 @@
 //! lattice charts. Vertex-centred patches glue n lattice wedges (quad or
 //! triangle, per sector); face-centred patches surround a central n-gon with
 //! quads (coordinates doubled so that vertices sit at odd lattice points).
+//! With face control vertices (non-box subdivision) every quad also gets an FCV
+//! at its centre; coordinates are doubled there too (chart scale 2), vertices at
+//! even and FCVs at odd lattice points.
 
 use std::collections::HashMap;
 
@@ -38,10 +41,12 @@ impl PatchBuilder {
 pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize>) {
     let n = config.valence();
     let r = rings as i64;
+    // lattice points are doubled when FCVs sit at face centres
+    let k: i64 = if config.face_control { 2 } else { 1 };
     let mut b = PatchBuilder {
         chart: Chart {
             sector_kinds: config.sectors.clone(),
-            scale: 1,
+            scale: k,
             vertex_coords: Vec::new(),
             face_sector: Vec::new(),
         },
@@ -56,7 +61,8 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
                     SectorKind::Quad => {
                         for a in 0..r {
                             for c in 0..r {
-                                b.face(Some(s), &[(s, a, c), (s, a + 1, c), (s, a + 1, c + 1), (s, a, c + 1)]);
+                                let (x, y) = (k * a, k * c);
+                                b.face(Some(s), &[(s, x, y), (s, x + k, y), (s, x + k, y + k), (s, x, y + k)]);
                             }
                         }
                     }
@@ -88,7 +94,21 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
             b.faces[0].clone()
         }
     };
+    let mut fcv = Vec::new();
+    if config.face_control {
+        // one FCV per (quad) face, at its centre
+        for f in 0..b.faces.len() {
+            let s = b.chart.face_sector[f].expect("vertex-centred quad patches have no central face");
+            let corners: Vec<(i64, i64)> =
+                b.faces[f].iter().map(|&v| b.chart.in_chart(b.chart.vertex_coords[v], s)).collect();
+            let (si, sj) = corners.iter().fold((0, 0), |a, p| (a.0 + p.0, a.1 + p.1));
+            fcv.push(b.vertex(s, si / 4, sj / 4));
+        }
+    }
     let mut mesh = PolyMesh::new(b.chart.vertex_coords.len(), b.faces).expect("patch is a manifold disc");
+    if config.face_control {
+        mesh = mesh.with_face_points(fcv).expect("one FCV per face");
+    }
     mesh.chart = Some(b.chart);
     (mesh, centre_set)
 }

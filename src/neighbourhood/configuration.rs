@@ -13,13 +13,19 @@ pub struct Configuration {
     pub centre: CentreKind,
     /// face type of each sector around the centre, counter-clockwise
     pub sectors: Vec<SectorKind>,
+    /// every face carries a face control vertex (non-box subdivision)
+    pub face_control: bool,
 }
 
 impl Configuration {
     /// The scheme's regular configuration of valence n.
     pub fn regular(scheme: &dyn Scheme, n: usize) -> Result<Self, String> {
         check_valence(n)?;
-        Ok(Configuration { centre: scheme.centre_kind(), sectors: vec![scheme.sector_kind(); n] })
+        Ok(Configuration {
+            centre: scheme.centre_kind(),
+            sectors: vec![scheme.sector_kind(); n],
+            face_control: scheme.face_control(),
+        })
     }
 
     pub fn valence(&self) -> usize {

@@ -198,6 +198,9 @@ fn try_discover(scheme: &dyn Scheme, config: &Configuration, rings: usize) -> Re
         for (f, face) in mesh_k.faces().iter().enumerate() {
             if region_faces[f] {
                 face.iter().for_each(|&v| marked[v] = true);
+                if let Some(p) = mesh_k.face_point(f) {
+                    marked[p] = true;
+                }
             }
         }
         for k in (0..r).rev() {

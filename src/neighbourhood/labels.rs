@@ -17,6 +17,8 @@ pub enum VertexKind {
     /// on the diagonal of a quad sector: opposite the centre across a face
     Face,
     Vertex,
+    /// a face control vertex (non-box subdivision)
+    Fcv,
 }
 
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
@@ -32,7 +34,8 @@ pub struct VertexLabel {
 }
 
 /// Ring of every vertex: ring 0 is the given centre set; ring k+1 holds the
-/// unvisited corners of faces that touch ring k.
+/// unvisited corners of faces that touch ring k. A face control vertex takes
+/// the largest ring of its face's corners.
 pub fn rings(mesh: &PolyMesh, centre_set: &[usize]) -> Vec<usize> {
     let mut ring = vec![usize::MAX; mesh.num_vertices()];
     let vf = mesh.vertex_faces();
@@ -56,6 +59,11 @@ pub fn rings(mesh: &PolyMesh, centre_set: &[usize]) -> Vec<usize> {
         frontier = next;
         k += 1;
     }
+    if let Some(fcv) = &mesh.face_points {
+        for (f, &p) in fcv.iter().enumerate() {
+            ring[p] = mesh.face(f).iter().map(|&v| ring[v]).max().unwrap_or(usize::MAX);
+        }
+    }
     ring
 }
 
@@ -64,11 +72,14 @@ pub fn label_vertices(mesh: &PolyMesh, centre_set: &[usize], face_centred: bool)
     let chart = mesh.chart.as_ref().expect("labels need a lattice chart");
     let ring = rings(mesh, centre_set);
     let coords: &[LatticeCoord] = &chart.vertex_coords;
+    let is_fcv: std::collections::HashSet<usize> = mesh.face_points.iter().flatten().copied().collect();
     let mut labels: Vec<VertexLabel> = (0..mesh.num_vertices())
         .map(|v| {
             let c = coords[v];
             let kind = if c.is_centre() {
                 VertexKind::Centre
+            } else if is_fcv.contains(&v) {
+                VertexKind::Fcv
             } else if face_centred && ring[v] == 0 {
                 VertexKind::Corner
             } else if face_centred {
@@ -110,6 +121,7 @@ pub fn kind_name(k: VertexKind) -> &'static str {
         VertexKind::Edge => "edge",
         VertexKind::Face => "face",
         VertexKind::Vertex => "vertex",
+        VertexKind::Fcv => "fcv",
     }
 }
 

@@ -5,6 +5,7 @@
 pub mod catmull_clark;
 pub mod doo_sabin;
 pub mod loop_subdivision;
+pub mod non_box;
 pub mod params;
 pub mod unified_sqrt3;
 
@@ -37,6 +38,10 @@ pub trait Scheme: Rules<f64> + Rules<Rational> + Send + Sync {
     /// The face type of the regular lattice around the centre.
     fn sector_kind(&self) -> SectorKind;
     fn params(&self) -> &Params;
+    /// Whether meshes carry a face control vertex per face (non-box).
+    fn face_control(&self) -> bool {
+        false
+    }
 }
 
 /// Weight types every scheme implements rules for; lets generic code ask a
@@ -74,6 +79,7 @@ pub fn registry() -> Vec<SchemeEntry> {
         catmull_clark::entry(),
         loop_subdivision::entry(),
         doo_sabin::entry(),
+        non_box::entry(),
         unified_sqrt3::kobbelt_entry(),
         unified_sqrt3::entry(),
     ]

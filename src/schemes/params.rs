@@ -7,6 +7,7 @@ use serde::Serialize;
 #[derive(Clone, Debug, Serialize)]
 pub struct ParamSpec {
     pub name: &'static str,
+    /// default value; empty when the scheme's own rule applies (see description)
     pub default: &'static str,
     /// inclusive bounds of the admissible range
     pub min: f64,
@@ -24,9 +25,12 @@ impl Params {
         self.values.iter().find(|(n, _)| n == name).map(|(_, v)| v)
     }
 
+    /// Defaults first, then the overrides. A spec whose default is empty has no
+    /// single default value (the scheme applies its own rule, e.g. a formula in
+    /// the valence) and is present only when given.
     pub fn resolve(scheme: &str, specs: &[ParamSpec], overrides: &[(String, String)]) -> Result<Params, String> {
         let mut values = Vec::new();
-        for spec in specs {
+        for spec in specs.iter().filter(|s| !s.default.is_empty()) {
             values.push((spec.name.to_string(), ParamValue::parse(spec.default)?));
         }
         for (name, text) in overrides {
@@ -45,7 +49,8 @@ impl Params {
                     spec.min, spec.max
                 ));
             }
-            values.iter_mut().find(|(n, _)| n == name).expect("spec has a default").1 = v;
+            values.retain(|(n, _)| n != name);
+            values.push((name.clone(), v));
         }
         Ok(Params { values })
     }

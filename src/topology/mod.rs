@@ -5,6 +5,7 @@
 //! that the refined neighbourhood can be matched with the old one.
 
 pub mod dual_split;
+pub mod fcv_split;
 pub mod primal_split;
 pub mod sqrt3_split;
 
@@ -29,6 +30,8 @@ pub enum Topology {
     Dual,
     /// a new vertex in every triangle, old edges flipped (Kobbelt's sqrt(3))
     Sqrt3,
+    /// quads around each face's control vertex, a new FCV per new quad (non-box)
+    FcvSplit,
 }
 
 impl Topology {
@@ -37,6 +40,7 @@ impl Topology {
             Topology::PrimalSplit(t) => primal_split::refine(mesh, *t),
             Topology::Dual => dual_split::refine(mesh),
             Topology::Sqrt3 => sqrt3_split::refine(mesh),
+            Topology::FcvSplit => fcv_split::refine(mesh),
         }
     }
     /// Refinements in one analysis step: the number after which the refined

@@ -1,0 +1,139 @@
+//! Non-box subdivision (Z. Huang, "A surface subdivision scheme based on
+//! four-directional S_3^1 non-box splines"), in its quadrilateral form with
+//! face control vertices (FCVs), section 3.2.2:
+//!
+//! E-vertex:  (V_a + V_b + FCV_left + FCV_right) / 4
+//! V-vertex:  (1 − a_k) V + (a_k / k) Σ FCV_i      (k faces around V)
+//! FCV rule:  (1 − a_k) FCV + (a_k / k) Σ V_i      (k corners of the face)
+//! NFCV:      V_0/4 + FCV_0/2 + FCV_1/8 + FCV_{−1}/8
+//!            (F_0 the old face of the new quad, F_{±1} its neighbours at V_0)
+//!
+//! Weights (section 4): a_3 = 3/4, a_k = 3/4 − (1/2 + cos(2π/k)/4)^2 for
+//! k ≥ 4, so a_4 = 1/2 (the regular S_3^1 spline). The parameter `a`, when
+//! given, replaces a_k at every valence k ≠ 4 (vertices and k-gons); valence 4
+//! keeps 1/2 so that the regular part stays the spline.
+
+use super::{CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry};
+use crate::mesh::{PolyMesh, SectorKind};
+use crate::numeric::{Inexact, Weight};
+use crate::refine::{Origin, RuleResult, Stencil};
+use crate::topology::Topology;
+
+pub struct NonBox {
+    params: Params,
+}
+
+pub fn entry() -> SchemeEntry {
+    SchemeEntry {
+        name: "non-box",
+        description: "Huang's non-box S_3^1 subdivision: quads with face control vertices (FCVs)",
+        params: || {
+            vec![ParamSpec {
+                name: "a",
+                default: "",
+                min: 0.0,
+                max: 1.0,
+                description:
+                    "a_k at every valence k != 4 (default: the paper's a_3 = 3/4, a_k = 3/4 - (1/2 + cos(2pi/k)/4)^2)",
+            }]
+        },
+        build: |params| Box::new(NonBox { params }),
+    }
+}
+
+/// The paper's weight a_k (section 4).
+pub fn paper_a<W: Weight>(k: i64) -> Result<W, Inexact> {
+    if k == 3 {
+        return Ok(W::ratio(3, 4));
+    }
+    let t = W::ratio(1, 2) + W::cos_2pi(1, k)? * W::ratio(1, 4);
+    Ok(W::ratio(3, 4) - t.clone() * t)
+}
+
+impl NonBox {
+    fn a<W: Weight>(&self, k: i64) -> Result<W, Inexact> {
+        match self.params.get("a") {
+            Some(p) if k != 4 => W::param(p),
+            _ => paper_a(k),
+        }
+    }
+}
+
+/// The FCV of the face that holds the half-edge a -> b.
+fn fcv_of(mesh: &PolyMesh, a: usize, b: usize) -> Option<usize> {
+    mesh.face_point(mesh.half_edge(a, b)?.0)
+}
+
+impl<W: Weight> Rules<W> for NonBox {
+    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+        if mesh.face_points.is_none() {
+            return Ok(None);
+        }
+        Ok(match origin {
+            Origin::Edge(a, b) => {
+                let (Some(l), Some(r)) = (fcv_of(mesh, a, b), fcv_of(mesh, b, a)) else { return Ok(None) };
+                let q = W::ratio(1, 4);
+                Some(Stencil::new().with(a, q.clone()).with(b, q.clone()).with(l, q.clone()).with(r, q))
+            }
+            Origin::Vertex(v) => {
+                let Some(fan) = mesh.vertex_fan(v) else { return Ok(None) };
+                let k = fan.len() as i64;
+                let a: W = self.a(k)?;
+                let mut s = Stencil::new().with(v, W::one() - a.clone());
+                for cyc in &fan {
+                    let Some(p) = fcv_of(mesh, v, cyc[1]) else { return Ok(None) };
+                    s.add(p, a.clone() / W::int(k));
+                }
+                Some(s)
+            }
+            Origin::Face(f) => {
+                let face = mesh.face(f);
+                let k = face.len() as i64;
+                let a: W = self.a(k)?;
+                let mut s = Stencil::new().with(mesh.face_point(f).expect("checked above"), W::one() - a.clone());
+                for &v in face {
+                    s.add(v, a.clone() / W::int(k));
+                }
+                Some(s)
+            }
+            Origin::Corner { face: f, corner: k } => {
+                let cyc = mesh.face_from(f, k);
+                let (v0, next, prev) = (cyc[0], cyc[1], cyc[cyc.len() - 1]);
+                // the two old faces at V_0 adjacent to F_0: across (V_0, next) and (prev, V_0)
+                let (Some(f1), Some(fm1)) = (fcv_of(mesh, next, v0), fcv_of(mesh, v0, prev)) else { return Ok(None) };
+                let f0 = mesh.face_point(f).expect("checked above");
+                Some(
+                    Stencil::new()
+                        .with(v0, W::ratio(1, 4))
+                        .with(f0, W::ratio(1, 2))
+                        .with(f1, W::ratio(1, 8))
+                        .with(fm1, W::ratio(1, 8)),
+                )
+            }
+        })
+    }
+}
+
+impl Scheme for NonBox {
+    fn name(&self) -> &'static str {
+        "non-box"
+    }
+    fn description(&self) -> &'static str {
+        entry().description
+    }
+    fn topology(&self) -> Topology {
+        Topology::FcvSplit
+    }
+    fn centre_kind(&self) -> CentreKind {
+        CentreKind::Vertex
+    }
+    fn sector_kind(&self) -> SectorKind {
+        SectorKind::Quad
+    }
+    fn params(&self) -> &Params {
+        &self.params
+    }
+    fn face_control(&self) -> bool {
+        true
+    }
+}
