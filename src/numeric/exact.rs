@@ -245,6 +245,81 @@ impl Poly {
     }
 }
 
+impl Poly {
+    pub fn is_zero(&self) -> bool {
+        self.coeffs.iter().all(|c| c.is_zero())
+    }
+    pub fn derivative(&self) -> Poly {
+        if self.coeffs.len() <= 1 {
+            return Poly { coeffs: vec![Rational::zero()] };
+        }
+        let coeffs = self
+            .coeffs
+            .iter()
+            .enumerate()
+            .skip(1)
+            .map(|(k, c)| c * Rational::from_integer((k as i64).into()))
+            .collect();
+        Poly { coeffs }.trim()
+    }
+    /// Quotient and remainder of polynomial division.
+    pub fn div_rem(&self, d: &Poly) -> (Poly, Poly) {
+        assert!(!d.is_zero(), "division by the zero polynomial");
+        let mut r = self.clone().trim();
+        let dd = d.degree();
+        let lead = d.coeffs[dd].clone();
+        if r.degree() < dd || r.is_zero() {
+            return (Poly { coeffs: vec![Rational::zero()] }, r);
+        }
+        let mut q = vec![Rational::zero(); r.degree() - dd + 1];
+        while !r.is_zero() && r.degree() >= dd {
+            let k = r.degree() - dd;
+            let c = &r.coeffs[r.degree()] / &lead;
+            for (i, dc) in d.coeffs.iter().enumerate() {
+                r.coeffs[i + k] = &r.coeffs[i + k] - &c * dc;
+            }
+            q[k] = c;
+            r = r.trim();
+            if r.coeffs.len() == 1 && r.coeffs[0].is_zero() {
+                break;
+            }
+        }
+        (Poly { coeffs: q }.trim(), r)
+    }
+    /// Monic greatest common divisor.
+    pub fn gcd(&self, other: &Poly) -> Poly {
+        let (mut a, mut b) = (self.clone().trim(), other.clone().trim());
+        while !b.is_zero() {
+            let (_, r) = a.div_rem(&b);
+            a = b;
+            b = r;
+        }
+        let lead = a.coeffs.last().cloned().unwrap_or_else(Rational::one);
+        a.scale(&(Rational::one() / lead))
+    }
+    /// Square-free factorisation (Yun): factors f_1, f_2, ... with
+    /// self = c · Π f_k^k, each f_k square-free and the f_k pairwise coprime.
+    pub fn squarefree_factors(&self) -> Vec<Poly> {
+        let mut out = Vec::new();
+        let d = self.derivative();
+        let a = self.gcd(&d);
+        let mut b = self.div_rem(&a).0;
+        let mut c = d.div_rem(&a).0;
+        loop {
+            let bd = b.derivative();
+            let diff = c.sub(&bd);
+            if b.degree() == 0 {
+                break;
+            }
+            let f = b.gcd(&diff);
+            out.push(f.clone());
+            b = b.div_rem(&f).0;
+            c = diff.div_rem(&f).0;
+        }
+        out
+    }
+}
+
 /// Exact rational roots of `p` among `candidates`, with multiplicities, and the
 /// remaining factor (whose roots are irrational or complex, or were not among
 /// the candidates).
@@ -304,6 +379,28 @@ mod tests {
         assert_eq!(p.coeffs[0], q(-18, 1));
         // sum of principal 2x2 minors: (6-1) + (8-0) + (12-1) = 24
         assert_eq!(p.coeffs[1], q(24, 1));
+    }
+
+    #[test]
+    fn squarefree_factorisation_separates_multiplicities() {
+        // (x - 1)(x - 1/2)^2 (x^2 + 1)^3
+        let base = Poly::from_roots(&[q(1, 1), q(1, 2), q(1, 2)]);
+        let x2p1 = Poly { coeffs: vec![q(1, 1), q(0, 1), q(1, 1)] };
+        let mut p = base.clone();
+        for _ in 0..3 {
+            let mut coeffs = vec![q(0, 1); p.coeffs.len() + 2];
+            for (i, c) in p.coeffs.iter().enumerate() {
+                for (j, d) in x2p1.coeffs.iter().enumerate() {
+                    coeffs[i + j] = &coeffs[i + j] + c * d;
+                }
+            }
+            p = Poly { coeffs };
+        }
+        let f = p.squarefree_factors();
+        assert_eq!(f.len(), 3);
+        assert_eq!(f[0], Poly::from_roots(&[q(1, 1)]));
+        assert_eq!(f[1], Poly::from_roots(&[q(1, 2)]));
+        assert_eq!(f[2], x2p1);
     }
 
     #[test]
