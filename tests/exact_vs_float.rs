@@ -9,7 +9,9 @@ use subdlab::spectrum::Method;
 
 #[test]
 fn float_and_exact_multiplicities_agree() {
-    for (scheme, valences) in [("catmull-clark", vec![3, 4, 5, 6, 7, 8]), ("loop", vec![3, 4, 6]), ("doo-sabin", vec![3, 4, 6])] {
+    for (scheme, valences) in
+        [("catmull-clark", vec![3, 4, 5, 6, 7, 8]), ("loop", vec![3, 4, 6]), ("doo-sabin", vec![3, 4, 6])]
+    {
         for n in valences {
             for method in [Method::Dft, Method::Full] {
                 let a = run(scheme, n, NeighbourhoodKind::Analysis, Some(method), true);

@@ -4,6 +4,8 @@
 
 pub mod catmull_clark;
 pub mod doo_sabin;
+// a regular-lattice scheme: registered in `crate::lattice::registry`, not here
+pub mod khan_mustafa;
 pub mod loop_subdivision;
 pub mod params;
 
