@@ -600,3 +600,72 @@ fn scheme_names() {
     assert_eq!(LatticeScheme::name(&KhanMustafa), "khan-mustafa");
     assert_eq!(LatticeScheme::name(&KhanMustafaCubic), "khan-mustafa-cubic");
 }
+
+// ---------------------------------------------------------------- command line
+
+fn subdlab(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_subdlab")).args(args).output().expect("binary runs")
+}
+
+/// Non-zero exit, one line on stderr, no panic; returns the line.
+fn fails(args: &[&str]) -> String {
+    let out = subdlab(args);
+    let err = String::from_utf8_lossy(&out.stderr).to_string();
+    assert!(!out.status.success(), "{args:?} should fail");
+    assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: one-line error expected, got {err:?}");
+    err
+}
+
+#[test]
+fn cli_spectrum_json_has_the_stable_fields() {
+    let out = subdlab(&["spectrum", "khan-mustafa", "--valence", "4", "--neighbourhood", "minimal", "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["scheme"], "khan-mustafa");
+    assert_eq!(v["valence"], 4);
+    assert!(v["params"].is_object());
+    assert_eq!(v["matrix_size"], 16);
+    assert_eq!(v["blocks"][0]["index"], 0);
+    assert_eq!(v["blocks"][0]["size"], 16);
+    let eig = v["eigenvalues"].as_array().unwrap();
+    for e in eig {
+        for f in ["re", "im", "modulus", "algebraic_multiplicity", "geometric_multiplicity", "block"] {
+            assert!(!e[f].is_null(), "field {f}");
+        }
+        assert!(e.get("exact").is_some());
+    }
+    let total: u64 = eig.iter().map(|e| e["algebraic_multiplicity"].as_u64().unwrap()).sum();
+    assert_eq!(total, 16);
+    assert_eq!(eig[1]["exact"], "1/2");
+    assert_eq!(v["verdict"]["c1_spectral"], true);
+    assert!(v["verdict"]["reasons"].is_array());
+}
+
+#[test]
+fn cli_matrix_exports_and_lists_the_scheme() {
+    let out = subdlab(&["matrix", "khan-mustafa", "--valence", "4", "--neighbourhood", "minimal", "--format", "json"]);
+    assert!(out.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["size"], 16);
+    // row p[i-2,j-2] (the paper's first row): the vertex rule centred at p[i-1,j-1], 32/144 at p[i-1,j-2]
+    assert_eq!(v["labels"][0], "p[i-2,j-2]");
+    assert_eq!(v["exact"][0][1], "2/9");
+    let out = subdlab(&["matrix", "khan-mustafa-cubic", "--valence", "4", "--format", "mtx"]);
+    assert!(out.status.success());
+    assert!(String::from_utf8_lossy(&out.stdout).starts_with("%%MatrixMarket matrix coordinate real general"));
+    let out = subdlab(&["schemes"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("khan-mustafa ") && text.contains("khan-mustafa-cubic"));
+}
+
+#[test]
+fn cli_rejects_other_valences_and_options_with_one_line() {
+    let e = fails(&["spectrum", "khan-mustafa", "--valence", "5"]);
+    assert!(e.contains("khan-mustafa is defined on the regular quad lattice only (valence 4)"), "{e}");
+    fails(&["matrix", "khan-mustafa-cubic", "--valence", "3", "--format", "mtx"]);
+    fails(&["spectrum", "khan-mustafa", "--valence", "4", "--method", "dft"]);
+    fails(&["spectrum", "khan-mustafa", "--valence", "4", "--param", "a=1"]);
+    fails(&["spectrum", "khan-mustafa", "--valence", "4", "--neighbourhood", "huge"]);
+    fails(&["matrix", "khan-mustafa", "--valence", "4", "--format", "csv"]);
+}
