@@ -234,3 +234,26 @@ pub fn registry() -> Vec<LatticeEntry> {
 pub fn find(name: &str) -> Option<LatticeEntry> {
     registry().into_iter().find(|e| e.name == name)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn split_rounds_towards_minus_infinity() {
+        // a = 2i + α must hold for negative fine indices too
+        assert_eq!(split(-3), (-2, 1));
+        assert_eq!(split(-2), (-1, 0));
+        assert_eq!(split(5), (2, 1));
+    }
+
+    #[test]
+    fn windows_are_ordered_with_i_fastest() {
+        let w = Window::from_set([(1, 0), (0, 1), (0, 0), (1, 1)]);
+        assert_eq!(w.points, vec![(0, 0), (1, 0), (0, 1), (1, 1)]);
+        assert_eq!(w, Window::rect(0, 1, 0, 1));
+        assert!(w.is_rect());
+        assert!(!Window::from_set([(0, 0), (2, 0)]).is_rect());
+        assert_eq!(point_name((-2, 1)), "p[i-2,j+1]");
+    }
+}

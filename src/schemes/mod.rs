@@ -75,7 +75,8 @@ pub fn registry() -> Vec<SchemeEntry> {
 }
 
 pub fn known_names() -> Vec<&'static str> {
-    registry().iter().map(|e| e.name).collect()
+    // the regular-lattice schemes are built by `crate::lattice`, but are names all the same
+    registry().iter().map(|e| e.name).chain(crate::lattice::registry().iter().map(|e| e.name)).collect()
 }
 
 /// Build a scheme by name with `name=value` parameter overrides.

@@ -112,7 +112,12 @@ impl Eigenvalue {
     }
     /// "0.25 (1/4)" style display.
     pub fn display(&self) -> String {
-        let num = if self.is_real() { fmt_f(self.re) } else { format!("{}{:+}i", fmt_f(self.re), fmt_f(self.im)) };
+        // `{:+}` does not sign a String, so the sign of the imaginary part is written out
+        let num = if self.is_real() {
+            fmt_f(self.re)
+        } else {
+            format!("{}{}{}i", fmt_f(self.re), if self.im < 0.0 { "-" } else { "+" }, fmt_f(self.im.abs()))
+        };
         match (&self.exact, &self.recognised) {
             (Some(e), _) => format!("{num} (= {e})"),
             (None, Some(r)) => format!("{num} (≈ {r})"),
