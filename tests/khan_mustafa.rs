@@ -183,7 +183,7 @@ fn paper_window() -> Window {
 /// p_{i+l',j+m'} is (l'+2) + 4(m'+2). Numerators over 144.
 fn matrix_from_printed_stencils() -> [[i64; 16]; 16] {
     let mut m = [[0i64; 16]; 16];
-    for row in 0..16 {
+    for (row, out) in m.iter_mut().enumerate() {
         let (l, mm) = (row as i64 % 4 - 2, row as i64 / 4 - 2);
         let parity = (l.rem_euclid(2) as u8, mm.rem_euclid(2) as u8);
         let rule = PARITIES.iter().position(|&p| p == parity).unwrap();
@@ -191,7 +191,7 @@ fn matrix_from_printed_stencils() -> [[i64; 16]; 16] {
         for r in -1..=1i64 {
             for s in -1..=1i64 {
                 let col = ((ci + r + 2) + 4 * (cj + s + 2)) as usize;
-                m[row][col] += PRINTED_QUADRATIC[rule][(r + 1) as usize][(s + 1) as usize];
+                out[col] += PRINTED_QUADRATIC[rule][(r + 1) as usize][(s + 1) as usize];
             }
         }
     }

@@ -52,9 +52,9 @@ pub fn least_squares(monomials: &[Monomial], samples: &[(Rational, Rational)]) -
         for r in 0..k {
             if r != col && !a[r][col].is_zero() {
                 let f = a[r][col].clone();
-                for c in 0..k + s {
-                    let t = &f * &a[col][c];
-                    a[r][c] = &a[r][c] - t;
+                let pivot_row = a[col].clone();
+                for (x, p) in a[r].iter_mut().zip(&pivot_row) {
+                    *x = &*x - &f * p;
                 }
             }
         }
@@ -91,6 +91,9 @@ impl Fit {
     }
 }
 
+/// A derived mask: (offset, weight) pairs.
+pub type DerivedMask = Vec<((i64, i64), Rational)>;
+
 /// The four masks of a binary lattice scheme derived from a polynomial space:
 /// samples at the offsets (r, s) · spacing, new point of parity (α, β) at
 /// (α/2, β/2) · spacing. Result indexed [α][β], each a list of (offset, weight).
@@ -98,7 +101,7 @@ pub fn derive_masks(
     monomials: &[Monomial],
     offsets: &[(i64, i64)],
     spacing: &Rational,
-) -> Result<[[Vec<((i64, i64), Rational)>; 2]; 2], String> {
+) -> Result<[[DerivedMask; 2]; 2], String> {
     let samples: Vec<(Rational, Rational)> = offsets
         .iter()
         .map(|&(r, s)| (Rational::from_integer(r.into()) * spacing, Rational::from_integer(s.into()) * spacing))
