@@ -7,6 +7,8 @@
 
 pub mod cli;
 pub mod dft;
+// regular-lattice schemes with explicit (i, j) coordinates (Khan–Mustafa)
+pub mod lattice;
 pub mod matrix;
 pub mod mesh;
 pub mod neighbourhood;

@@ -9,6 +9,10 @@ use crate::spectrum::stencils::stencils;
 use crate::spectrum::{analyse, Analysis, Method, Options, Spectrum};
 
 pub fn dispatch(cmd: Command) -> Result<(), String> {
+    // Regular-lattice schemes (khan-mustafa) have no mesh configuration: routed first.
+    if let Some(result) = super::lattice::dispatch(&cmd) {
+        return result;
+    }
     match cmd {
         Command::Schemes { json } => list_schemes(json),
         Command::Spectrum(a) => {
@@ -109,6 +113,12 @@ fn list_schemes(json: bool) -> Result<(), String> {
     let list: Vec<Entry> = schemes::registry()
         .into_iter()
         .map(|e| Entry { name: e.name, description: e.description, params: (e.params)() })
+        // regular-lattice schemes (no parameters) after the mesh-based ones
+        .chain(super::lattice::scheme_list().into_iter().map(|(name, description)| Entry {
+            name,
+            description,
+            params: Vec::new(),
+        }))
         .collect();
     if json {
         return print_json(&list);
@@ -129,7 +139,7 @@ fn list_schemes(json: bool) -> Result<(), String> {
     Ok(())
 }
 
-fn spectrum_table(s: &Spectrum) -> String {
+pub(super) fn spectrum_table(s: &Spectrum) -> String {
     let mut out = String::new();
     out += &format!(
         "scheme {}  valence {}  faces {}  neighbourhood {:?} ({} vertices; minimal {}, analysis {})\n",
@@ -191,7 +201,7 @@ fn compact_blocks(b: &[usize]) -> String {
     }
 }
 
-fn stencil_table(st: &crate::spectrum::stencils::Stencils) -> String {
+pub(super) fn stencil_table(st: &crate::spectrum::stencils::Stencils) -> String {
     let mut out = format!("scheme {}  valence {}  neighbourhood {:?}\n\n", st.scheme, st.valence, st.neighbourhood);
     out += &format!("{:<22} {:>22}", "vertex", "limit");
     for k in 0..st.tangent.len() {

@@ -3,6 +3,7 @@
 //! `--json`. Errors are one line on stderr with a non-zero exit.
 
 mod commands;
+mod lattice;
 mod output;
 
 use clap::{Args, Parser, Subcommand};

@@ -4,6 +4,8 @@
 
 pub mod catmull_clark;
 pub mod doo_sabin;
+// a regular-lattice scheme: registered in `crate::lattice::registry`, not here
+pub mod khan_mustafa;
 pub mod loop_subdivision;
 pub mod non_box;
 pub mod params;
@@ -86,7 +88,8 @@ pub fn registry() -> Vec<SchemeEntry> {
 }
 
 pub fn known_names() -> Vec<&'static str> {
-    registry().iter().map(|e| e.name).collect()
+    // the regular-lattice schemes are built by `crate::lattice`, but are names all the same
+    registry().iter().map(|e| e.name).chain(crate::lattice::registry().iter().map(|e| e.name)).collect()
 }
 
 /// Build a scheme by name with `name=value` parameter overrides.
