@@ -6,6 +6,7 @@
 //! `spectrum` (eigenvalues, stencils, verdicts) → `cli`.
 
 pub mod cli;
+pub mod curves;
 pub mod dft;
 pub mod matrix;
 pub mod mesh;
