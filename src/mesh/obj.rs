@@ -98,10 +98,14 @@ pub fn parse_obj(text: &str) -> Result<ObjMesh, String> {
                             "more than {MAX_CORNERS} face corners in total (the supported maximum)"
                         )));
                     }
-                    let first = tok.split('/').next().unwrap_or("");
-                    let idx: i64 = first
-                        .parse()
-                        .map_err(|_| err(format!("'{tok}' is not a vertex reference such as 7 or 7/2/5")))?;
+                    let bad = || err(format!("'{tok}' is not a vertex reference such as 7, 7/2, 7/2/5 or 7//5"));
+                    let mut parts = tok.split('/');
+                    let idx: i64 = parts.next().unwrap_or("").parse().map_err(|_| bad())?;
+                    // texture and normal references are not used, but must be well formed
+                    let rest: Vec<&str> = parts.collect();
+                    if rest.len() > 2 || rest.iter().any(|p| !p.is_empty() && p.parse::<i64>().is_err()) {
+                        return Err(bad());
+                    }
                     let resolved = if idx > 0 {
                         // positive indices may refer forward; checked once all vertices are read
                         (idx - 1) as u64

@@ -33,6 +33,20 @@ pub fn refine_mesh(
     if points.len() != mesh.num_vertices() {
         return Err(format!("{} positions for {} vertices", points.len(), mesh.num_vertices()));
     }
+    // Doo–Sabin's corner rule would happily shrink an open mesh away from its
+    // boundary; without boundary rules that is not the scheme, so every scheme
+    // requires a closed mesh
+    if let Some((a, b)) = mesh.edges().into_iter().find(|&(a, b)| !mesh.is_interior_edge(a, b)) {
+        return Err(format!(
+            "{} needs {}: vertex {} is on the boundary (edge {}-{} has a face on one side only); \
+             boundary rules are not implemented",
+            scheme.name(),
+            requirement(scheme),
+            a + 1,
+            a + 1,
+            b + 1
+        ));
+    }
     let mut mesh = mesh.clone();
     let mut points: Vec<Option<[f64; 3]>> = points.iter().map(|p| Some(*p)).collect();
     for level in 1..=levels {
@@ -119,13 +133,18 @@ fn not_applicable(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin, level: u
             format!("its corner rule does not apply at corner {} of face {}", corner + 1, face + 1)
         }
     };
-    let needs = match scheme.topology() {
-        Topology::PrimalSplit(TriangleSplit::FourTriangles) => "a closed triangle mesh",
-        _ => "a closed mesh",
-    };
+    let needs = requirement(scheme);
     let boundary_note = match open {
         Some(_) => "; boundary rules are not implemented",
         None => "",
     };
     format!("{name} needs {needs}{at_level}: {reason}{boundary_note}")
+}
+
+/// What a scheme needs of its input mesh, for error messages.
+fn requirement(scheme: &dyn Scheme) -> &'static str {
+    match scheme.topology() {
+        Topology::PrimalSplit(TriangleSplit::FourTriangles) => "a closed triangle mesh",
+        _ => "a closed mesh",
+    }
 }
