@@ -32,7 +32,7 @@ fn exact_multiset(s: &CurveSpectrum) -> Vec<Rational> {
     let mut v: Vec<Rational> = s
         .eigenvalues
         .iter()
-        .flat_map(|e| std::iter::repeat(parse_q(e.exact.as_deref().unwrap())).take(e.algebraic_multiplicity))
+        .flat_map(|e| std::iter::repeat_n(parse_q(e.exact.as_deref().unwrap()), e.algebraic_multiplicity))
         .collect();
     v.sort();
     v

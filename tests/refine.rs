@@ -311,7 +311,7 @@ fn invalid_utf8_and_missing_files_are_reported() {
 
 fn open_cube() -> (PolyMesh, Vec<[f64; 3]>) {
     let text = std::fs::read_to_string(mesh_path("cube.obj")).unwrap();
-    let last_face = text.lines().filter(|l| l.starts_with("f ")).last().unwrap().to_string();
+    let last_face = text.lines().filter(|l| l.starts_with("f ")).next_back().unwrap().to_string();
     parse_obj(&text.replace(&last_face, "")).unwrap()
 }
 
@@ -404,4 +404,19 @@ fn cli_refine_errors_are_one_line_and_leave_no_output() {
     fails(&["refine", c, "--scheme", "catmull-clark", "--levels", "1"]);
     fails(&["refine", c, "--scheme", "catmull-clark", "--levels", "1", "-o", "/nonexistent-dir/out.obj"]);
     assert!(!out_path.exists(), "no output file on failure");
+}
+
+/// The documented caps stop hostile sizes before the mesh is built.
+#[test]
+fn size_caps_are_enforced_with_the_offending_line() {
+    use subdlab::mesh::obj::{MAX_CORNERS, MAX_FACES, MAX_VERTICES};
+    let text = "v 0 0 0\n".repeat(MAX_VERTICES + 1);
+    let err = parse_obj(&text).unwrap_err();
+    assert!(err.contains(&format!("line {}", MAX_VERTICES + 1)) && err.contains("maximum"), "{err}");
+    let text = format!("v 0 0 0\nv 1 0 0\nv 0 1 0\n{}", "f 1 2 3\n".repeat(MAX_FACES + 1));
+    let err = parse_obj(&text).unwrap_err();
+    assert!(err.contains(&format!("line {}", MAX_FACES + 4)) && err.contains("maximum"), "{err}");
+    let text = format!("v 0 0 0\nf{}\n", " 1".repeat(MAX_CORNERS + 1));
+    let err = parse_obj(&text).unwrap_err();
+    assert!(err.contains("line 2") && err.contains("corners"), "{err}");
 }

@@ -9,7 +9,9 @@
 //! The reader is meant to face files from anywhere, so every defect gives a
 //! one-line error that names the line, and every size is capped before it is
 //! allocated (see the `MAX_*` constants): a hostile file cannot make it panic,
-//! loop, or allocate without bound.
+//! loop, or allocate without bound. The caps match the size of mesh that
+//! `refine` produces (2,000,000 faces); the half-edge maps of a mesh at the cap
+//! take a few hundred megabytes.
 
 use std::collections::HashMap;
 use std::io::Read;
@@ -18,13 +20,13 @@ use std::path::Path;
 use super::PolyMesh;
 
 /// Largest OBJ file read, in bytes (the file is read whole, so this bounds memory).
-pub const MAX_FILE_BYTES: u64 = 512 * 1024 * 1024;
+pub const MAX_FILE_BYTES: u64 = 256 * 1024 * 1024;
 /// Largest number of vertices accepted.
-pub const MAX_VERTICES: usize = 5_000_000;
+pub const MAX_VERTICES: usize = 2_000_000;
 /// Largest number of faces accepted.
-pub const MAX_FACES: usize = 5_000_000;
+pub const MAX_FACES: usize = 2_000_000;
 /// Largest total number of face corners (sum of face sizes) accepted.
-pub const MAX_CORNERS: usize = 20_000_000;
+pub const MAX_CORNERS: usize = 8_000_000;
 
 /// A mesh read from OBJ: connectivity and one position per vertex.
 pub type ObjMesh = (PolyMesh, Vec<[f64; 3]>);
