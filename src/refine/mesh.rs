@@ -132,6 +132,9 @@ fn not_applicable(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin, level: u
         Origin::Corner { face, corner } => {
             format!("its corner rule does not apply at corner {} of face {}", corner + 1, face + 1)
         }
+        // origins added with new refinement hosts
+        #[allow(unreachable_patterns)]
+        other => format!("its rule does not apply at {other:?}"),
     };
     let needs = requirement(scheme);
     let boundary_note = match open {
