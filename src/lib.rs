@@ -6,6 +6,7 @@
 //! `spectrum` (eigenvalues, stencils, verdicts) → `cli`.
 
 pub mod cli;
+pub mod curves;
 pub mod dft;
 // regular-lattice schemes with explicit (i, j) coordinates (Khan–Mustafa)
 pub mod lattice;

@@ -15,6 +15,12 @@ pub fn dispatch(cmd: Command) -> Result<(), String> {
     }
     match cmd {
         Command::Schemes { json } => list_schemes(json),
+        Command::Refine { mesh, scheme, levels, params, output } => {
+            super::mesh_commands::refine(&mesh, &scheme, levels, &params, &output)
+        }
+        Command::Curve { scheme, params, neighbourhood, json } => {
+            super::mesh_commands::curve(&scheme, &params, &neighbourhood, json)
+        }
         Command::Spectrum(a) => {
             let (_, analysis) = run_analysis(&a)?;
             if a.json {
@@ -75,7 +81,7 @@ pub fn dispatch(cmd: Command) -> Result<(), String> {
     }
 }
 
-fn parse_params(list: &[String]) -> Result<Vec<(String, String)>, String> {
+pub(super) fn parse_params(list: &[String]) -> Result<Vec<(String, String)>, String> {
     list.iter()
         .map(|p| {
             p.split_once('=')

@@ -4,6 +4,7 @@
 
 mod commands;
 mod lattice;
+mod mesh_commands;
 mod output;
 
 use clap::{Args, Parser, Subcommand};
@@ -36,6 +37,37 @@ pub enum Command {
         /// write to this file (atomically) instead of standard output
         #[arg(short, long)]
         output: Option<std::path::PathBuf>,
+    },
+    /// Refine a closed OBJ mesh with a scheme (the same rules as the analysis); writes OBJ
+    Refine {
+        /// input mesh (Wavefront OBJ, closed)
+        mesh: std::path::PathBuf,
+        /// scheme name (see `subdlab schemes`)
+        #[arg(long)]
+        scheme: String,
+        /// number of refinement steps (1 to 12)
+        #[arg(long, short = 'l')]
+        levels: usize,
+        /// scheme parameter NAME=VALUE; repeatable
+        #[arg(long = "param", short = 'p')]
+        params: Vec<String>,
+        /// output OBJ file (written atomically)
+        #[arg(short, long)]
+        output: std::path::PathBuf,
+    },
+    /// Curve schemes of Lin–Luo section 3: local subdivision matrix at a vertex and its spectrum
+    Curve {
+        /// cubic-bspline, four-point or unified-curve
+        scheme: String,
+        /// scheme parameter NAME=VALUE (unified-curve: alpha in [0, 2]); repeatable
+        #[arg(long = "param", short = 'p')]
+        params: Vec<String>,
+        /// minimal (closure of the one-ring) or analysis (also the limit over both adjacent segments)
+        #[arg(long, default_value = "analysis")]
+        neighbourhood: String,
+        /// machine-readable JSON output
+        #[arg(long)]
+        json: bool,
     },
 }
 

@@ -2,6 +2,7 @@
 //! topology can carry 3-D points, 2-D points or sparse weight rows).
 
 pub mod lattice;
+pub mod obj;
 pub mod polymesh;
 
 pub use lattice::{Chart, LatticeCoord, SectorKind};

@@ -6,6 +6,7 @@
 //! be combined linearly: 3-D points, 2-D points, sparse weight rows. The same stencils therefore drive mesh refinement and matrix assembly.
 
 pub mod combine;
+pub mod mesh;
 
 pub use combine::{Combine, SparseRow};
 

@@ -1,0 +1,94 @@
+//! `subdlab refine` (OBJ in, OBJ out) and `subdlab curve` (curve schemes of
+//! Lin–Luo section 3). Kept apart from the analysis commands.
+
+use std::path::Path;
+
+use super::commands::parse_params;
+use super::output::{print_json, write_atomic};
+use crate::curves::local::{curve_spectrum, CurveSpectrum};
+use crate::mesh::obj::{read_obj_file, write_obj};
+use crate::neighbourhood::NeighbourhoodKind;
+use crate::refine::mesh::refine_mesh;
+use crate::schemes;
+
+pub fn refine(mesh: &Path, scheme: &str, levels: usize, params: &[String], output: &Path) -> Result<(), String> {
+    // check the cheap arguments before reading a possibly large file
+    let scheme = schemes::build(scheme, &parse_params(params)?)?;
+    if levels == 0 || levels > crate::refine::mesh::MAX_LEVELS {
+        return Err(format!("--levels must be between 1 and {}, got {levels}", crate::refine::mesh::MAX_LEVELS));
+    }
+    let (m, points) = read_obj_file(mesh)?;
+    let (refined, new_points) =
+        refine_mesh(scheme.as_ref(), &m, &points, levels).map_err(|e| format!("{}: {e}", mesh.display()))?;
+    let params_text: Vec<String> = scheme.params().values.iter().map(|(k, v)| format!("{k}={}", v.text)).collect();
+    let header = format!(
+        "subdlab refine: {} refined {levels} level(s) with {}{}\n{} vertices, {} faces",
+        mesh.file_name().map(|f| f.to_string_lossy().into_owned()).unwrap_or_default(),
+        scheme.name(),
+        if params_text.is_empty() { String::new() } else { format!(" ({})", params_text.join(", ")) },
+        refined.num_vertices(),
+        refined.num_faces()
+    );
+    write_atomic(output, write_obj(&refined, &new_points, &header).as_bytes())
+}
+
+pub fn curve(scheme: &str, params: &[String], neighbourhood: &str, json: bool) -> Result<(), String> {
+    let scheme = crate::curves::build(scheme, &parse_params(params)?)?;
+    let kind: NeighbourhoodKind = neighbourhood.parse()?;
+    let spec = curve_spectrum(scheme.as_ref(), kind)?;
+    if json {
+        return print_json(&spec);
+    }
+    print!("{}", curve_table(&spec));
+    Ok(())
+}
+
+fn curve_table(s: &CurveSpectrum) -> String {
+    let mut out = format!(
+        "curve scheme {}  neighbourhood {}: {} points (indices {}..{}; minimal {}, analysis {})\n",
+        s.scheme,
+        match s.neighbourhood {
+            NeighbourhoodKind::Minimal => "minimal",
+            NeighbourhoodKind::Analysis => "analysis",
+        },
+        s.matrix_size,
+        s.window.first().copied().unwrap_or(0),
+        s.window.last().copied().unwrap_or(0),
+        s.minimal_size,
+        s.analysis_size
+    );
+    if !s.params.is_empty() {
+        out += &format!(
+            "parameters: {}\n",
+            s.params.iter().map(|(k, v)| format!("{k}={v}")).collect::<Vec<_>>().join(", ")
+        );
+    }
+    out += "\n";
+    out += &format!("{:>4}  {:<34} {:>4} {:>4}\n", "#", "eigenvalue", "alg", "geo");
+    for (k, e) in s.eigenvalues.iter().enumerate() {
+        let num = if e.im == 0.0 {
+            crate::spectrum::fmt_f(e.re)
+        } else {
+            format!("{}{:+}i", crate::spectrum::fmt_f(e.re), crate::spectrum::fmt_f(e.im))
+        };
+        let shown = match (&e.exact, &e.recognised) {
+            (Some(x), _) => format!("{num} (= {x})"),
+            (None, Some(r)) => format!("{num} (≈ {r})"),
+            _ => num,
+        };
+        out += &format!(
+            "{:>4}  {:<34} {:>4} {:>4}{}\n",
+            k,
+            shown,
+            e.algebraic_multiplicity,
+            e.geometric_multiplicity,
+            if e.defective { "  DEFECTIVE" } else { "" }
+        );
+    }
+    match &s.charpoly {
+        Some(p) if s.exact => out += &format!("\nexact: det(xI - S) = {p}; every eigenvalue is rational and proven\n"),
+        Some(p) => out += &format!("\nexact: det(xI - S) = {p}; not every root is rational\n"),
+        None => out += "\n(no exact matrix: a weight is not rational)\n",
+    }
+    out
+}
