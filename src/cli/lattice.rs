@@ -16,7 +16,7 @@ pub(super) fn dispatch(cmd: &Command) -> Option<Result<(), String>> {
     let args = match cmd {
         Command::Spectrum(a) | Command::Stencils(a) => a,
         Command::Matrix { common, .. } => common,
-        Command::Schemes { .. } => return None,
+        Command::Schemes { .. } | Command::Refine { .. } | Command::Curve { .. } => return None,
     };
     let entry = lattice::find(&args.scheme)?;
     let scheme = (entry.build)();
@@ -82,7 +82,7 @@ fn run(cmd: &Command, a: &AnalysisArgs, scheme: &dyn LatticeScheme) -> Result<()
                 }
             }
         }
-        Command::Schemes { .. } => Ok(()),
+        Command::Schemes { .. } | Command::Refine { .. } | Command::Curve { .. } => Ok(()),
     }
 }
 
