@@ -8,18 +8,46 @@ use super::output::{print_json, write_atomic};
 use crate::curves::local::{curve_spectrum, CurveSpectrum};
 use crate::mesh::obj::{read_obj_file, write_obj};
 use crate::neighbourhood::NeighbourhoodKind;
-use crate::refine::mesh::refine_mesh;
+use crate::refine::mesh::{add_face_control_vertices, four_directional, refine_mesh};
 use crate::schemes;
 
-pub fn refine(mesh: &Path, scheme: &str, levels: usize, params: &[String], output: &Path) -> Result<(), String> {
+/// How meshes of schemes with face control vertices are prepared and written.
+pub struct FcvOptions {
+    pub scale: f64,
+    pub four_directional: bool,
+}
+
+pub fn refine(
+    mesh: &Path,
+    scheme: &str,
+    levels: usize,
+    params: &[String],
+    output: &Path,
+    fcv: &FcvOptions,
+) -> Result<(), String> {
     // check the cheap arguments before reading a possibly large file
     let scheme = schemes::build(scheme, &parse_params(params)?)?;
     if levels == 0 || levels > crate::refine::mesh::MAX_LEVELS {
         return Err(format!("--levels must be between 1 and {}, got {levels}", crate::refine::mesh::MAX_LEVELS));
     }
-    let (m, points) = read_obj_file(mesh)?;
-    let (refined, new_points) =
+    if !fcv.scale.is_finite() {
+        return Err(format!("--fcv-scale must be a finite number, got {}", fcv.scale));
+    }
+    if !scheme.face_control() && (fcv.four_directional || fcv.scale != 1.0) {
+        return Err(format!(
+            "{} has no face control vertices: --fcv-scale and --four-directional do not apply",
+            scheme.name()
+        ));
+    }
+    let (mut m, mut points) = read_obj_file(mesh)?;
+    if scheme.face_control() {
+        (m, points) = add_face_control_vertices(&m, &points, fcv.scale)?;
+    }
+    let (mut refined, mut new_points) =
         refine_mesh(scheme.as_ref(), &m, &points, levels).map_err(|e| format!("{}: {e}", mesh.display()))?;
+    if fcv.four_directional {
+        (refined, new_points) = four_directional(&refined, new_points)?;
+    }
     let params_text: Vec<String> = scheme.params().values.iter().map(|(k, v)| format!("{k}={}", v.text)).collect();
     let header = format!(
         "subdlab refine: {} refined {levels} level(s) with {}{}\n{} vertices, {} faces",

@@ -54,6 +54,14 @@ pub enum Command {
         /// output OBJ file (written atomically)
         #[arg(short, long)]
         output: std::path::PathBuf,
+        /// schemes with face control vertices (non-box): initial FCVs at this
+        /// multiple of each face's barycentre (the paper's section 5 uses 0.5, 1, 1.5)
+        #[arg(long, default_value = "1")]
+        fcv_scale: f64,
+        /// schemes with face control vertices: write the four-directional form
+        /// (every face split into triangles around its FCV) instead of quads + FCVs
+        #[arg(long)]
+        four_directional: bool,
     },
     /// Curve schemes of Lin–Luo section 3: local subdivision matrix at a vertex and its spectrum
     Curve {

@@ -151,3 +151,44 @@ fn requirement(scheme: &dyn Scheme) -> &'static str {
         _ => "a closed mesh",
     }
 }
+
+/// Give every face a face control vertex at `scale` times its barycentre (the
+/// non-box paper, section 5: "FCV as 0.5, 1, and 1.5 times the barycenter").
+/// The FCVs are appended after the existing vertices.
+pub fn add_face_control_vertices(
+    mesh: &PolyMesh,
+    points: &[[f64; 3]],
+    scale: f64,
+) -> Result<(PolyMesh, Vec<[f64; 3]>), String> {
+    if mesh.face_points.is_some() {
+        return Ok((mesh.clone(), points.to_vec()));
+    }
+    let mut pts = points.to_vec();
+    let mut fcv = Vec::with_capacity(mesh.num_faces());
+    for face in mesh.faces() {
+        let mut c = [0.0; 3];
+        for &v in face {
+            for k in 0..3 {
+                c[k] += points[v][k] / face.len() as f64;
+            }
+        }
+        fcv.push(pts.len());
+        pts.push([scale * c[0], scale * c[1], scale * c[2]]);
+    }
+    let m = PolyMesh::new(pts.len(), mesh.faces().to_vec()).map_err(|e| e.to_string())?.with_face_points(fcv)?;
+    Ok((m, pts))
+}
+
+/// The four-directional (quasi-four-directional, triangulated) form of a mesh
+/// with face control vertices: every face becomes a fan of triangles around
+/// its FCV (Huang, section 3.2.1: the two forms carry the same points).
+pub fn four_directional(mesh: &PolyMesh, points: Vec<[f64; 3]>) -> Result<(PolyMesh, Vec<[f64; 3]>), String> {
+    let fcv = mesh.face_points.as_ref().ok_or("the mesh has no face control vertices")?;
+    let mut faces = Vec::new();
+    for (f, face) in mesh.faces().iter().enumerate() {
+        for k in 0..face.len() {
+            faces.push(vec![face[k], face[(k + 1) % face.len()], fcv[f]]);
+        }
+    }
+    Ok((PolyMesh::new(points.len(), faces).map_err(|e| e.to_string())?, points))
+}
