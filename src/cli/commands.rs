@@ -15,9 +15,9 @@ pub fn dispatch(cmd: Command) -> Result<(), String> {
     }
     match cmd {
         Command::Schemes { json } => list_schemes(json),
-        Command::Refine { mesh, scheme, levels, params, output, fcv_scale, four_directional } => {
-            let fcv = super::mesh_commands::FcvOptions { scale: fcv_scale, four_directional };
-            super::mesh_commands::refine(&mesh, &scheme, levels, &params, &output, &fcv)
+        Command::Refine { mesh, scheme, levels, params, output, fcv_scale, four_directional, vertex_params } => {
+            let opts = super::mesh_commands::MeshOptions { fcv_scale, four_directional, vertex_params };
+            super::mesh_commands::refine(&mesh, &scheme, levels, &params, &output, &opts)
         }
         Command::Curve { scheme, params, neighbourhood, json } => {
             super::mesh_commands::curve(&scheme, &params, &neighbourhood, json)

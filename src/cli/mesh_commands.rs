@@ -11,10 +11,12 @@ use crate::neighbourhood::NeighbourhoodKind;
 use crate::refine::mesh::{add_face_control_vertices, four_directional, refine_mesh};
 use crate::schemes;
 
-/// How meshes of schemes with face control vertices are prepared and written.
-pub struct FcvOptions {
-    pub scale: f64,
+/// How meshes are prepared and written for schemes with face control vertices
+/// (non-box) or a per-vertex parameter (unified-sqrt3).
+pub struct MeshOptions {
+    pub fcv_scale: f64,
     pub four_directional: bool,
+    pub vertex_params: Option<std::path::PathBuf>,
 }
 
 pub fn refine(
@@ -23,29 +25,35 @@ pub fn refine(
     levels: usize,
     params: &[String],
     output: &Path,
-    fcv: &FcvOptions,
+    opts: &MeshOptions,
 ) -> Result<(), String> {
     // check the cheap arguments before reading a possibly large file
     let scheme = schemes::build(scheme, &parse_params(params)?)?;
     if levels == 0 || levels > crate::refine::mesh::MAX_LEVELS {
         return Err(format!("--levels must be between 1 and {}, got {levels}", crate::refine::mesh::MAX_LEVELS));
     }
-    if !fcv.scale.is_finite() {
-        return Err(format!("--fcv-scale must be a finite number, got {}", fcv.scale));
+    if !opts.fcv_scale.is_finite() {
+        return Err(format!("--fcv-scale must be a finite number, got {}", opts.fcv_scale));
     }
-    if !scheme.face_control() && (fcv.four_directional || fcv.scale != 1.0) {
+    if !scheme.face_control() && (opts.four_directional || opts.fcv_scale != 1.0) {
         return Err(format!(
             "{} has no face control vertices: --fcv-scale and --four-directional do not apply",
             scheme.name()
         ));
     }
+    if opts.vertex_params.is_some() && scheme.vertex_param().is_none() {
+        return Err(format!("{} has no per-vertex parameter: --vertex-params does not apply", scheme.name()));
+    }
     let (mut m, mut points) = read_obj_file(mesh)?;
+    if let Some(path) = &opts.vertex_params {
+        m.vertex_params = Some(read_vertex_params(path, scheme.as_ref(), m.num_vertices())?);
+    }
     if scheme.face_control() {
-        (m, points) = add_face_control_vertices(&m, &points, fcv.scale)?;
+        (m, points) = add_face_control_vertices(&m, &points, opts.fcv_scale)?;
     }
     let (mut refined, mut new_points) =
         refine_mesh(scheme.as_ref(), &m, &points, levels).map_err(|e| format!("{}: {e}", mesh.display()))?;
-    if fcv.four_directional {
+    if opts.four_directional {
         (refined, new_points) = four_directional(&refined, new_points)?;
     }
     let params_text: Vec<String> = scheme.params().values.iter().map(|(k, v)| format!("{k}={}", v.text)).collect();
@@ -58,6 +66,46 @@ pub fn refine(
         refined.num_faces()
     );
     write_atomic(output, write_obj(&refined, &new_points, &header).as_bytes())
+}
+
+/// One value per line for each vertex, within the parameter's admissible range.
+fn read_vertex_params(path: &Path, scheme: &dyn crate::schemes::Scheme, count: usize) -> Result<Vec<f64>, String> {
+    let name = scheme.vertex_param().expect("checked by the caller");
+    let spec = crate::schemes::registry()
+        .into_iter()
+        .find(|e| e.name == scheme.name())
+        .and_then(|e| (e.params)().into_iter().find(|p| p.name == name))
+        .ok_or_else(|| format!("{}: no specification for parameter {name}", scheme.name()))?;
+    let meta = std::fs::metadata(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    if meta.len() > 64 * 1024 * 1024 {
+        return Err(format!("{}: file too large for per-vertex parameters", path.display()));
+    }
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut values = Vec::new();
+    for (k, line) in text.lines().enumerate() {
+        let t = line.split('#').next().unwrap_or("").trim();
+        if t.is_empty() {
+            continue;
+        }
+        let v = crate::numeric::ParamValue::parse(t).map_err(|e| format!("{} line {}: {e}", path.display(), k + 1))?;
+        if v.value < spec.min || v.value > spec.max {
+            return Err(format!(
+                "{} line {}: {name} = {t} is out of range [{}, {}]",
+                path.display(),
+                k + 1,
+                spec.min,
+                spec.max
+            ));
+        }
+        values.push(v.value);
+        if values.len() > count {
+            break;
+        }
+    }
+    if values.len() != count {
+        return Err(format!("{}: {} values for {count} vertices", path.display(), values.len()));
+    }
+    Ok(values)
 }
 
 pub fn curve(scheme: &str, params: &[String], neighbourhood: &str, json: bool) -> Result<(), String> {

@@ -62,6 +62,10 @@ pub enum Command {
         /// (every face split into triangles around its FCV) instead of quads + FCVs
         #[arg(long)]
         four_directional: bool,
+        /// schemes with a per-vertex parameter (unified-sqrt3: alpha): a file with
+        /// one value per line for each input vertex, in order ('#' starts a comment)
+        #[arg(long)]
+        vertex_params: Option<std::path::PathBuf>,
     },
     /// Curve schemes of Lin–Luo section 3: local subdivision matrix at a vertex and its spectrum
     Curve {

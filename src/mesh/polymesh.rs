@@ -27,6 +27,10 @@ pub struct PolyMesh {
     /// (non-box subdivision). FCVs are vertices of the mesh that belong to no
     /// face cycle.
     pub face_points: Option<Vec<VertexId>>,
+    /// A per-vertex scheme parameter, for schemes whose weights vary per vertex
+    /// (Lin–Luo's α in unified sqrt(3) subdivision). Refined with the scheme's
+    /// `vertex_param_rule`.
+    pub vertex_params: Option<Vec<f64>>,
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -79,7 +83,15 @@ impl PolyMesh {
                 }
             }
         }
-        Ok(PolyMesh { faces, num_vertices, half_edges, vertex_corner, chart: None, face_points: None })
+        Ok(PolyMesh {
+            faces,
+            num_vertices,
+            half_edges,
+            vertex_corner,
+            chart: None,
+            face_points: None,
+            vertex_params: None,
+        })
     }
 
     /// Attach face control vertices (one per face, each a vertex id of no face).

@@ -71,7 +71,18 @@ pub fn refine_mesh(
             return Err(format!("level {level}: a refined position is not finite (coordinates too large?)"));
         }
         points = new_points;
-        mesh = refined.mesh;
+        let mut next = refined.mesh;
+        if let Some(params) = &mesh.vertex_params {
+            // a per-vertex parameter (Lin–Luo's α) is refined by the scheme's own rule for it
+            let name = scheme.vertex_param().unwrap_or("parameter");
+            let rules: Vec<Option<Stencil<f64>>> =
+                refined.vertex_origins.iter().map(|&o| scheme.vertex_param_rule(&mesh, o)).collect();
+            let old: Vec<Option<[f64; 1]>> = params.iter().map(|&a| Some([a])).collect();
+            let new: Option<Vec<f64>> = apply(&rules, &old).into_iter().map(|a| a.map(|a| a[0])).collect();
+            next.vertex_params =
+                Some(new.ok_or_else(|| format!("{}: no rule refines the per-vertex {name}", scheme.name()))?);
+        }
+        mesh = next;
     }
     Ok((mesh, points.into_iter().map(|p| p.expect("checked above")).collect()))
 }

@@ -44,6 +44,16 @@ pub trait Scheme: Rules<f64> + Rules<Rational> + Send + Sync {
     fn face_control(&self) -> bool {
         false
     }
+    /// The name of a parameter that may vary per vertex (`PolyMesh::vertex_params`),
+    /// if the scheme has one.
+    fn vertex_param(&self) -> Option<&'static str> {
+        None
+    }
+    /// How the per-vertex parameter of a new vertex derives from the old ones
+    /// (weights on old vertices); `None` where the scheme has no such parameter.
+    fn vertex_param_rule(&self, _mesh: &PolyMesh, _origin: Origin) -> Option<crate::refine::Stencil<f64>> {
+        None
+    }
 }
 
 /// Weight types every scheme implements rules for; lets generic code ask a

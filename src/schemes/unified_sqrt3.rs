@@ -58,8 +58,13 @@ pub fn kobbelt_entry() -> SchemeEntry {
 }
 
 impl UnifiedSqrt3 {
-    fn alpha<W: Weight>(&self) -> Result<W, crate::numeric::Inexact> {
-        W::param(self.params.get("alpha").expect("alpha has a default"))
+    /// α at vertex v: the mesh's per-vertex value when it carries one (eq. 7,
+    /// non-uniform scheme; floats only), else the uniform parameter.
+    fn alpha<W: Weight>(&self, mesh: &PolyMesh, v: usize) -> Result<W, crate::numeric::Inexact> {
+        match &mesh.vertex_params {
+            Some(a) => W::param(&crate::numeric::ParamValue::from_f64(a[v])),
+            None => W::param(self.params.get("alpha").expect("alpha has a default")),
+        }
     }
 }
 
@@ -71,7 +76,6 @@ fn ring(mesh: &PolyMesh, v: usize) -> Option<Vec<usize>> {
 
 impl<W: Weight> Rules<W> for UnifiedSqrt3 {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
-        let alpha: W = self.alpha()?;
         Ok(match origin {
             Origin::Face(f) => {
                 let face = mesh.face(f);
@@ -80,6 +84,7 @@ impl<W: Weight> Rules<W> for UnifiedSqrt3 {
                 }
                 let mut s = Stencil::new();
                 for &p in face {
+                    let alpha: W = self.alpha(mesh, p)?;
                     let Some(nb) = ring(mesh, p) else { return Ok(None) };
                     let n = nb.len() as i64;
                     let c = W::cos_2pi(1, n)?;
@@ -93,6 +98,7 @@ impl<W: Weight> Rules<W> for UnifiedSqrt3 {
                 Some(s)
             }
             Origin::Vertex(v) => {
+                let alpha: W = self.alpha(mesh, v)?;
                 let Some(nb) = ring(mesh, v) else { return Ok(None) };
                 let n = nb.len() as i64;
                 let c = W::cos_2pi(1, n)?;
@@ -133,5 +139,20 @@ impl Scheme for UnifiedSqrt3 {
     }
     fn params(&self) -> &Params {
         &self.params
+    }
+    fn vertex_param(&self) -> Option<&'static str> {
+        (self.name == "unified-sqrt3").then_some("alpha")
+    }
+    /// Eq. (7): a new face vertex takes the mean α of the triangle's corners; an
+    /// old vertex keeps its α.
+    fn vertex_param_rule(&self, mesh: &PolyMesh, origin: Origin) -> Option<Stencil<f64>> {
+        match origin {
+            Origin::Vertex(v) => Some(Stencil::new().with(v, 1.0)),
+            Origin::Face(f) => {
+                let face = mesh.face(f);
+                Some(face.iter().fold(Stencil::new(), |s, &v| s.with(v, 1.0 / face.len() as f64)))
+            }
+            _ => None,
+        }
     }
 }
