@@ -1,20 +1,8 @@
 //! The command line as a user runs it: output formats and one-line errors.
 
-use std::process::{Command, Output};
-
-fn subdlab(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_subdlab")).args(args).output().expect("binary runs")
-}
-
-/// A failing invocation: non-zero exit, exactly one line on stderr, no panic.
-fn fails(args: &[&str]) -> String {
-    let out = subdlab(args);
-    let err = String::from_utf8_lossy(&out.stderr).to_string();
-    assert!(!out.status.success(), "{args:?} should fail");
-    assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
-    assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: one-line error expected, got {err:?}");
-    err
-}
+mod common;
+#[allow(unused_imports)]
+use common::{fails, subdlab};
 
 fn json(args: &[&str]) -> serde_json::Value {
     let out = subdlab(args);

@@ -2,7 +2,9 @@
 //! derived by hand in the comments (symmetric/antisymmetric split of the
 //! local matrix), never copied from program output.
 
-use std::process::{Command, Output};
+mod common;
+#[allow(unused_imports)]
+use common::{fails, subdlab};
 
 use num_bigint::BigInt;
 use subdlab::curves::local::{curve_spectrum, CurveSpectrum};
@@ -199,19 +201,6 @@ fn relation_3_turns_a_bspline_step_into_a_four_point_step_exactly() {
     let b: CurveMask<Rational> = mask("cubic-bspline", None);
     let pts: Vec<Rational> = (0..6).map(|_| rng.rational()).collect();
     assert_ne!(refine_closed(&b, &pts), refine_closed(&four, &pts));
-}
-
-fn subdlab(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_subdlab")).args(args).output().expect("binary runs")
-}
-
-fn fails(args: &[&str]) -> String {
-    let out = subdlab(args);
-    let err = String::from_utf8_lossy(&out.stderr).to_string();
-    assert!(!out.status.success(), "{args:?} should fail");
-    assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
-    assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: one-line error expected, got {err:?}");
-    err
 }
 
 #[test]

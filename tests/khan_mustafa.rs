@@ -19,6 +19,10 @@
 //! - cubic variant: vertex and face rules HOLD; each edge rule has one sign
 //!   wrong (sums to 9/8); the label p_{2i+2,j+1} is p_{2i,2j+1}.
 
+mod common;
+#[allow(unused_imports)]
+use common::{fails, subdlab};
+
 use num_traits::{One, Signed, Zero};
 use subdlab::lattice::analysis::{analyse, charpoly, to_qmatrix};
 use subdlab::lattice::fit::{derive_masks, grid, least_squares, total_degree, Monomial};
@@ -602,20 +606,6 @@ fn scheme_names() {
 }
 
 // ---------------------------------------------------------------- command line
-
-fn subdlab(args: &[&str]) -> std::process::Output {
-    std::process::Command::new(env!("CARGO_BIN_EXE_subdlab")).args(args).output().expect("binary runs")
-}
-
-/// Non-zero exit, one line on stderr, no panic; returns the line.
-fn fails(args: &[&str]) -> String {
-    let out = subdlab(args);
-    let err = String::from_utf8_lossy(&out.stderr).to_string();
-    assert!(!out.status.success(), "{args:?} should fail");
-    assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
-    assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: one-line error expected, got {err:?}");
-    err
-}
 
 #[test]
 fn cli_spectrum_json_has_the_stable_fields() {

@@ -2,9 +2,12 @@
 //! positions from the schemes' published formulas (derived by hand below), and
 //! limit positions from the closed-form limit stencils.
 
+mod common;
+#[allow(unused_imports)]
+use common::{fails, subdlab};
+
 use std::collections::BTreeSet;
 use std::path::PathBuf;
-use std::process::{Command, Output};
 
 use subdlab::mesh::obj::{parse_obj, read_obj_file, write_obj};
 use subdlab::mesh::PolyMesh;
@@ -337,19 +340,6 @@ fn refining_an_open_or_wrongly_typed_mesh_is_a_clear_error() {
         parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 5 5 5\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n").unwrap();
     let err = refine_mesh(scheme("loop").as_ref(), &t, &tp, 1).unwrap_err();
     assert!(err.contains("vertex 5 is not used"), "{err}");
-}
-
-fn subdlab(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_subdlab")).args(args).output().expect("binary runs")
-}
-
-fn fails(args: &[&str]) -> String {
-    let out = subdlab(args);
-    let err = String::from_utf8_lossy(&out.stderr).to_string();
-    assert!(!out.status.success(), "{args:?} should fail");
-    assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
-    assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: one-line error expected, got {err:?}");
-    err
 }
 
 #[test]

@@ -14,7 +14,6 @@ mod common;
 use common::*;
 use subdlab::neighbourhood::{Configuration, NeighbourhoodKind};
 use subdlab::schemes;
-use subdlab::spectrum::{analyse, Options};
 
 #[test]
 fn kobbelt_one_ring_two_step_spectrum_for_valences_3_to_30() {

@@ -18,13 +18,12 @@
 use std::collections::{BTreeMap, BTreeSet};
 
 use faer::{c64, Mat};
-use num_traits::ToPrimitive;
 use serde::Serialize;
 
 use super::{CurveMask, CurveScheme, CurveWeight};
 use crate::neighbourhood::NeighbourhoodKind;
 use crate::numeric::exact::{rational_roots, QMatrix};
-use crate::numeric::recognise::recognise;
+use crate::numeric::recognise::{convergents, recognise};
 use crate::numeric::{Rational, Weight};
 
 /// Guard against masks whose dependency closure does not stay local.
@@ -154,50 +153,6 @@ pub struct CurveSpectrum {
     pub eigenvalues: Vec<CurveEigenvalue>,
 }
 
-/// All continued-fraction convergents of x with denominator up to `max_den`:
-/// candidates for the exact test (the best rational approximations of x).
-fn convergents(x: f64, max_den: i64) -> Vec<Rational> {
-    let mut out = Vec::new();
-    if !x.is_finite() || x.abs() > 1e12 {
-        return out;
-    }
-    let (mut h0, mut h1, mut k0, mut k1) = (0i64, 1i64, 1i64, 0i64);
-    let mut r = x;
-    for _ in 0..64 {
-        let a = r.floor();
-        let Some(a) = a.to_i64() else { break };
-        let (Some(h2), Some(k2)) =
-            (a.checked_mul(h1).and_then(|t| t.checked_add(h0)), a.checked_mul(k1).and_then(|t| t.checked_add(k0)))
-        else {
-            break;
-        };
-        if k2 > max_den || k2 <= 0 {
-            break;
-        }
-        out.push(Rational::ratio(h2, k2));
-        (h0, h1, k0, k1) = (h1, h2, k1, k2);
-        let frac = r - a as f64;
-        if frac.abs() < 1e-300 {
-            break;
-        }
-        r = 1.0 / frac;
-    }
-    out
-}
-
-fn sort(list: &mut [CurveEigenvalue]) {
-    list.sort_by(|a, b| {
-        let tie = |x: f64, y: f64| (x - y).abs() <= 1e-10 * x.abs().max(y.abs()).max(1.0);
-        if !tie(a.modulus, b.modulus) {
-            return b.modulus.total_cmp(&a.modulus);
-        }
-        if !tie(a.re, b.re) {
-            return b.re.total_cmp(&a.re);
-        }
-        b.im.total_cmp(&a.im)
-    });
-}
-
 /// Window, local matrix and spectrum of a curve scheme at a vertex.
 pub fn curve_spectrum(scheme: &dyn CurveScheme, kind: NeighbourhoodKind) -> Result<CurveSpectrum, String> {
     let mask = <f64 as CurveWeight>::mask(scheme).map_err(|_| "a weight is not representable".to_string())?;
@@ -245,8 +200,11 @@ pub fn curve_spectrum(scheme: &dyn CurveScheme, kind: NeighbourhoodKind) -> Resu
             }
         }
         let poly = q.charpoly();
-        let candidates: Vec<Rational> =
-            eigenvalues.iter().filter(|e| e.im == 0.0).flat_map(|e| convergents(e.re, 1_000_000_000)).collect();
+        let candidates: Vec<Rational> = eigenvalues
+            .iter()
+            .filter(|e| e.im == 0.0)
+            .flat_map(|e| convergents(e.re, 1_000_000_000).into_iter().map(|(p, q)| Rational::ratio(p, q)))
+            .collect();
         let (roots, rest) = rational_roots(&poly, &candidates);
         charpoly = Some(poly.pretty());
         exact_matrix = Some(qm.dense().iter().map(|r| r.iter().map(|x| x.to_string()).collect()).collect());
@@ -283,7 +241,7 @@ pub fn curve_spectrum(scheme: &dyn CurveScheme, kind: NeighbourhoodKind) -> Resu
             }
         }
     }
-    sort(&mut eigenvalues);
+    eigenvalues.sort_by(|a, b| crate::spectrum::eigenvalue_order(c64::new(a.re, a.im), c64::new(b.re, b.im)));
     Ok(CurveSpectrum {
         scheme: scheme.name().to_string(),
         params: scheme.params().values.iter().map(|(k, v)| (k.clone(), v.text.clone())).collect(),

@@ -2,12 +2,13 @@
 //! as 1/4 the way papers print it. A recognised value is a reading aid, not a
 //! proof: exact claims come from the exact path (`numeric::exact`).
 
-/// The fraction p/q with the smallest q ≤ `max_den` within `tol` of x.
-pub fn small_rational(x: f64, max_den: i64, tol: f64) -> Option<(i64, i64)> {
+/// The continued-fraction convergents p/q of x with q ≤ `max_den`: its best
+/// rational approximations, in order of growing denominator.
+pub fn convergents(x: f64, max_den: i64) -> Vec<(i64, i64)> {
+    let mut out = Vec::new();
     if !x.is_finite() || x.abs() > 1e9 {
-        return None;
+        return out;
     }
-    // continued-fraction convergents give the best approximations per denominator
     let (mut h0, mut h1) = (0i64, 1i64);
     let (mut k0, mut k1) = (1i64, 0i64);
     let mut r = x;
@@ -17,25 +18,28 @@ pub fn small_rational(x: f64, max_den: i64, tol: f64) -> Option<(i64, i64)> {
             break;
         }
         let a = a as i64;
-        let h2 = a.checked_mul(h1)?.checked_add(h0)?;
-        let k2 = a.checked_mul(k1)?.checked_add(k0)?;
-        if k2 > max_den {
+        let (Some(h2), Some(k2)) =
+            (a.checked_mul(h1).and_then(|t| t.checked_add(h0)), a.checked_mul(k1).and_then(|t| t.checked_add(k0)))
+        else {
+            break;
+        };
+        if k2 > max_den || k2 <= 0 {
             break;
         }
-        if (x - h2 as f64 / k2 as f64).abs() <= tol {
-            return Some((h2, k2));
-        }
-        h0 = h1;
-        h1 = h2;
-        k0 = k1;
-        k1 = k2;
+        out.push((h2, k2));
+        (h0, h1, k0, k1) = (h1, h2, k1, k2);
         let frac = r - a as f64;
         if frac.abs() < 1e-300 {
             break;
         }
         r = 1.0 / frac;
     }
-    None
+    out
+}
+
+/// The fraction p/q with the smallest q ≤ `max_den` within `tol` of x.
+pub fn small_rational(x: f64, max_den: i64, tol: f64) -> Option<(i64, i64)> {
+    convergents(x, max_den).into_iter().find(|&(p, q)| (x - p as f64 / q as f64).abs() <= tol)
 }
 
 pub fn format_ratio(p: i64, q: i64) -> String {

@@ -346,16 +346,20 @@ fn merge(list: Vec<Eigenvalue>) -> Vec<Eigenvalue> {
 
 /// Modulus descending; ties by real part, then imaginary part, descending.
 pub fn sort_eigenvalues(list: &mut [Eigenvalue]) {
-    list.sort_by(|a, b| {
-        let tie = |x: f64, y: f64| (x - y).abs() <= 1e-10 * x.abs().max(y.abs()).max(1.0);
-        if !tie(a.modulus, b.modulus) {
-            return b.modulus.total_cmp(&a.modulus);
-        }
-        if !tie(a.re, b.re) {
-            return b.re.total_cmp(&a.re);
-        }
-        b.im.total_cmp(&a.im)
-    });
+    list.sort_by(|a, b| eigenvalue_order(c64::new(a.re, a.im), c64::new(b.re, b.im)));
+}
+
+/// The display order of eigenvalues (DESIGN.md): modulus descending, ties by
+/// real part, then imaginary part, descending.
+pub fn eigenvalue_order(a: c64, b: c64) -> std::cmp::Ordering {
+    let tie = |x: f64, y: f64| (x - y).abs() <= 1e-10 * x.abs().max(y.abs()).max(1.0);
+    if !tie(a.norm(), b.norm()) {
+        return b.norm().total_cmp(&a.norm());
+    }
+    if !tie(a.re, b.re) {
+        return b.re.total_cmp(&a.re);
+    }
+    b.im.total_cmp(&a.im)
 }
 
 /// The regular configuration's spectrum with default options: the common call.

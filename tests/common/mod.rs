@@ -81,3 +81,19 @@ pub fn in_span(basis: &[Vec<f64>], v: &[f64]) -> bool {
 pub fn products(a: &[f64], b: &[f64]) -> Vec<f64> {
     a.iter().flat_map(|x| b.iter().map(move |y| x * y)).collect()
 }
+
+/// Run the subdlab binary.
+pub fn subdlab(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_subdlab")).args(args).output().expect("binary runs")
+}
+
+/// A failing invocation: non-zero exit, exactly one line on stderr, no panic;
+/// returns the line.
+pub fn fails(args: &[&str]) -> String {
+    let out = subdlab(args);
+    let err = String::from_utf8_lossy(&out.stderr).to_string();
+    assert!(!out.status.success(), "{args:?} should fail");
+    assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: one-line error expected, got {err:?}");
+    err
+}
