@@ -46,7 +46,8 @@ fn statement_holds(mut l: Vec<c64>, n: usize) -> bool {
     let lead = eq(l[0], c64::new(1.0, 0.0)) && l[1].norm() < 1.0 - 1e-9;
     let pair = real(l[1]) && eq(l[1], l[2]) && l[1].re > 0.0;
     let gap = l[2].norm() > l[3].norm() + 1e-7;
-    let third = if n > 3 { eq(l[3], l[4]) } else { true };
+    // λ3 = λ4 read in modulus: a conjugate pair counts as equal
+    let third = if n > 3 { (l[3].norm() - l[4].norm()).abs() < 1e-7 } else { true };
     lead && pair && gap && third
 }
 

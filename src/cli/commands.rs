@@ -14,6 +14,7 @@ pub fn dispatch(cmd: Command) -> Result<(), String> {
         return result;
     }
     match cmd {
+        Command::Verify { paper, claims, json, junit } => super::verify::run(paper, &claims, json, junit.as_deref()),
         Command::Schemes { json } => list_schemes(json),
         Command::Refine { mesh, scheme, levels, params, output, fcv_scale, four_directional, vertex_params } => {
             let opts = super::mesh_commands::MeshOptions { fcv_scale, four_directional, vertex_params };

@@ -6,6 +6,7 @@ mod commands;
 mod lattice;
 mod mesh_commands;
 mod output;
+mod verify;
 
 use clap::{Args, Parser, Subcommand};
 
@@ -18,6 +19,21 @@ pub struct Cli {
 
 #[derive(Subcommand, Debug)]
 pub enum Command {
+    /// Check the papers' statements (built-in registry, or your own claim files)
+    Verify {
+        /// only this paper of the built-in registry (see the list printed without it)
+        #[arg(long)]
+        paper: Option<String>,
+        /// a claim file of your own (TOML, same format as claims/); repeatable.
+        /// Exits non-zero when any of its claims is not HOLDS
+        #[arg(long)]
+        claims: Vec<std::path::PathBuf>,
+        #[arg(long)]
+        json: bool,
+        /// also write a JUnit XML report (atomically)
+        #[arg(long)]
+        junit: Option<std::path::PathBuf>,
+    },
     /// List the built-in schemes with their parameters, defaults and ranges
     Schemes {
         #[arg(long)]

@@ -2,6 +2,7 @@
 //! rationals), rational recognition, and exact polynomial/matrix algebra.
 
 pub mod exact;
+pub mod expr;
 pub mod recognise;
 pub mod weight;
 

@@ -1,0 +1,500 @@
+//! Evaluation of the claim checks. Analyses are cached per scheme, parameters,
+//! valence and neighbourhood, since many claims look at the same spectrum.
+
+use std::collections::HashMap;
+
+use num_complex::Complex64;
+
+use super::{Check, Claim, Outcome, Subject, Verdict};
+use crate::lattice;
+use crate::neighbourhood::{Configuration, NeighbourhoodKind, VertexKind};
+use crate::numeric::expr::{Env, Expr};
+use crate::numeric::ParamValue;
+use crate::schemes;
+use crate::spectrum::stencils::{limit_stencil, tangent_stencils};
+use crate::spectrum::{analyse, eigen, eigenvalue_order, fmt_f, Options, Spectrum, Synthesis};
+
+/// Relative tolerance for comparing computed with stated values.
+const TOL: f64 = 1e-9;
+
+#[derive(Default)]
+pub struct Cache {
+    spectra: HashMap<String, Result<std::rc::Rc<Spectrum>, String>>,
+}
+
+impl Cache {
+    fn spectrum(&mut self, s: &Subject, n: usize) -> Result<std::rc::Rc<Spectrum>, String> {
+        let key = format!("{}|{:?}|{n}|{:?}", s.scheme, s.params, s.neighbourhood);
+        self.spectra.entry(key).or_insert_with(|| compute(s, n).map(std::rc::Rc::new)).clone()
+    }
+}
+
+fn kind_of(s: &Subject) -> Result<NeighbourhoodKind, String> {
+    s.neighbourhood.as_deref().unwrap_or("analysis").parse()
+}
+
+fn compute(s: &Subject, n: usize) -> Result<Spectrum, String> {
+    let kind = kind_of(s)?;
+    // parameters may be expressions in n (e.g. a value just inside a bound)
+    let base = crate::numeric::expr::env_int(&[("n", n as i64), ("k", n as i64)]);
+    let mut params: Vec<(String, String)> = Vec::new();
+    for (k, v) in &s.params {
+        let e = Expr::parse(v).map_err(|e| format!("parameter {k} = '{v}': {e}"))?;
+        let text = match e.exact(&base) {
+            Some(q) => q.to_string(),
+            None => format!("{:e}", e.eval(&base)?.re),
+        };
+        params.push((k.clone(), text));
+    }
+    if let Some(entry) = lattice::find(&s.scheme) {
+        if n != 4 || !params.is_empty() {
+            return Err(format!("{} is defined on the regular lattice only (valence 4, no parameters)", s.scheme));
+        }
+        return Ok(lattice::analysis::analyse((entry.build)().as_ref(), kind, false)?.spectrum);
+    }
+    let scheme = schemes::build(&s.scheme, &params)?;
+    let config = Configuration::regular(scheme.as_ref(), n)?;
+    Ok(analyse(scheme.as_ref(), &config, &Options { neighbourhood: kind, method: None, exact: false })?.spectrum)
+}
+
+fn env_for(s: &Subject, n: usize) -> Result<Env, String> {
+    let mut env = crate::numeric::expr::env_int(&[("n", n as i64), ("k", n as i64)]);
+    let defs: Vec<(&String, &String)> = s.params.iter().chain(s.vars.iter()).collect();
+    // definitions may refer to each other: evaluate in dependency order
+    let mut pending = defs;
+    while !pending.is_empty() {
+        let before = pending.len();
+        let mut later = Vec::new();
+        for (k, v) in pending {
+            let e = Expr::parse(v).map_err(|e| format!("'{v}': {e}"))?;
+            if e.variables().iter().any(|x| !env.contains_key(x)) {
+                later.push((k, v));
+                continue;
+            }
+            let value = match e.exact(&env) {
+                Some(q) => {
+                    ParamValue { value: crate::numeric::Weight::to_f64(&q), text: q.to_string(), exact: Some(q) }
+                }
+                None => ParamValue::from_f64(e.eval(&env)?.re),
+            };
+            env.insert(k.clone(), value);
+        }
+        if later.len() == before {
+            let names: Vec<&str> = later.iter().map(|(k, _)| k.as_str()).collect();
+            return Err(format!("variables {} refer to unknown or circular names", names.join(", ")));
+        }
+        pending = later;
+    }
+    Ok(env)
+}
+
+fn eval(text: &str, env: &Env) -> Result<Complex64, String> {
+    Expr::parse(text).map_err(|e| format!("'{text}': {e}"))?.eval(env).map_err(|e| format!("'{text}': {e}"))
+}
+
+pub fn show(z: Complex64) -> String {
+    if z.im.abs() <= 1e-12 * z.norm().max(1.0) {
+        let r = crate::numeric::recognise::recognise(z.re);
+        match r {
+            Some(r) if r.len() < 8 && r != fmt_f(z.re) => format!("{} ({r})", fmt_f(z.re)),
+            _ => fmt_f(z.re),
+        }
+    } else {
+        format!("{}{}{}i", fmt_f(z.re), if z.im < 0.0 { "-" } else { "+" }, fmt_f(z.im.abs()))
+    }
+}
+
+fn show_list(v: &[Complex64]) -> String {
+    const SHOWN: usize = 12;
+    let mut s: Vec<String> = v.iter().take(SHOWN).map(|z| show(*z)).collect();
+    if v.len() > SHOWN {
+        s.push(format!("… ({} in all)", v.len()));
+    }
+    format!("[{}]", s.join(", "))
+}
+
+fn close(a: Complex64, b: Complex64) -> bool {
+    (a - b).norm() <= TOL * a.norm().max(b.norm()).max(1.0)
+}
+
+/// Multiset difference: stated values not matched, computed values not matched.
+fn unmatched(stated: &[Complex64], computed: &[Complex64]) -> (Vec<Complex64>, Vec<Complex64>) {
+    let mut left: Vec<Complex64> = computed.to_vec();
+    let mut missing = Vec::new();
+    for &z in stated {
+        match left.iter().position(|&w| close(z, w)) {
+            Some(k) => {
+                left.remove(k);
+            }
+            None => missing.push(z),
+        }
+    }
+    (missing, left)
+}
+
+fn expanded(spec: &Spectrum) -> Vec<Complex64> {
+    spec.eigenvalues
+        .iter()
+        .flat_map(|e| std::iter::repeat(Complex64::new(e.re, e.im)).take(e.algebraic_multiplicity))
+        .collect()
+}
+
+/// Eigenvalues of Fourier block m (repeated by multiplicity).
+fn block_values(spec: &Spectrum, m: usize) -> Result<Vec<Complex64>, String> {
+    let Synthesis::Dft { blocks, .. } = &spec.synthesis else {
+        return Err("the configuration was not decomposed into Fourier blocks".into());
+    };
+    let b = blocks.get(m).ok_or_else(|| format!("there is no Fourier block {m}"))?;
+    let mut v: Vec<Complex64> =
+        eigen::block_eigen(b)?.into_iter().flat_map(|e| std::iter::repeat(e.value).take(e.algebraic)).collect();
+    v.sort_by(|a, b| eigenvalue_order(*a, *b));
+    Ok(v)
+}
+
+struct Partial {
+    verdict: Verdict,
+    stated: String,
+    computed: String,
+    detail: String,
+}
+
+fn inconclusive(detail: String) -> Partial {
+    Partial { verdict: Verdict::Inconclusive, stated: String::new(), computed: String::new(), detail }
+}
+
+pub fn evaluate(paper: &str, claim: &Claim, cache: &mut Cache) -> Outcome {
+    let p = match run(&claim.check, cache) {
+        Ok(p) => p,
+        Err(e) => inconclusive(e),
+    };
+    Outcome {
+        id: claim.id.clone(),
+        paper: paper.to_string(),
+        location: claim.location.clone(),
+        statement: claim.statement.clone(),
+        convention: claim.convention.clone(),
+        verdict: p.verdict,
+        expected: claim.expected,
+        stated: p.stated,
+        computed: p.computed,
+        detail: p.detail,
+    }
+}
+
+/// Runs a per-valence comparison and reports the first valence where it fails.
+fn over_valences(
+    subject: &Subject,
+    mut one: impl FnMut(usize) -> Result<(bool, String, String), String>,
+) -> Result<Partial, String> {
+    let valences = subject.valences.expand()?;
+    let mut first = None;
+    let (mut stated0, mut computed0) = (String::new(), String::new());
+    for &n in &valences {
+        let (ok, stated, computed) = one(n)?;
+        if stated0.is_empty() {
+            stated0 = format!("n={n}: {stated}");
+            computed0 = format!("n={n}: {computed}");
+        }
+        if !ok && first.is_none() {
+            first = Some((n, stated, computed));
+        }
+    }
+    let span = match (valences.first(), valences.last()) {
+        (Some(a), Some(b)) if a != b => format!("valences {a}..{b} ({} checked)", valences.len()),
+        (Some(a), _) => format!("valence {a}"),
+        _ => return Err("no valences given".into()),
+    };
+    Ok(match first {
+        None => Partial {
+            verdict: Verdict::Holds,
+            stated: stated0,
+            computed: computed0,
+            detail: format!("agrees at {span}"),
+        },
+        Some((n, s, c)) => Partial {
+            verdict: Verdict::Refuted,
+            stated: format!("n={n}: {s}"),
+            computed: format!("n={n}: {c}"),
+            detail: format!("first disagreement at n = {n} ({span})"),
+        },
+    })
+}
+
+fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
+    match check {
+        Check::Eigenvalues { subject, values, compare, block } => over_valences(subject, |n| {
+            let spec = cache.spectrum(subject, n)?;
+            let blocks: Vec<Option<usize>> = match block.as_deref() {
+                None => vec![None],
+                // every non-trivial Fourier block, with m in the environment
+                Some("m") => (1..n).map(Some).collect(),
+                Some(b) => {
+                    let m = eval(b, &env_for(subject, n)?)?.re.round();
+                    if !(0.0..n as f64).contains(&m) {
+                        return Err(format!("block '{b}' is {m} at n = {n}"));
+                    }
+                    vec![Some(m as usize)]
+                }
+            };
+            let mut first = None;
+            for b in blocks {
+                let mut env = env_for(subject, n)?;
+                if let Some(m) = b {
+                    env.insert("m".into(), ParamValue::from_ratio(m as i64, 1));
+                }
+                let mut stated: Vec<Complex64> = values.iter().map(|v| eval(v, &env)).collect::<Result<_, _>>()?;
+                stated.sort_by(|a, b| eigenvalue_order(*a, *b));
+                let mut computed = match b {
+                    Some(m) => block_values(&spec, m)?,
+                    None => expanded(&spec),
+                };
+                computed.sort_by(|a, b| eigenvalue_order(*a, *b));
+                let shown: Vec<Complex64> = match compare.as_str() {
+                    "leading" => computed.iter().take(stated.len()).copied().collect(),
+                    "all" | "contains" => computed.clone(),
+                    other => return Err(format!("unknown comparison '{other}' (all, leading, contains)")),
+                };
+                let (missing, extra) = unmatched(&stated, &shown);
+                let ok = missing.is_empty() && (compare == "contains" || extra.is_empty());
+                let tag = b.map(|m| format!("block {m}: ")).unwrap_or_default();
+                let text = (format!("{tag}{}", show_list(&stated)), format!("{tag}{}", show_list(&shown)));
+                if !ok {
+                    let why = format!(
+                        " (stated but not found: {}; found but not stated: {})",
+                        show_list(&missing),
+                        show_list(&extra)
+                    );
+                    return Ok((false, text.0, text.1 + &why));
+                }
+                first.get_or_insert(text);
+            }
+            let (s, c) = first.unwrap_or_default();
+            Ok((true, s, c))
+        }),
+        Check::Subdominant { subject, value } => over_valences(subject, |n| {
+            let spec = cache.spectrum(subject, n)?;
+            let stated = eval(value, &env_for(subject, n)?)?;
+            let l1 = spec.eigenvalues.get(1).map(|e| Complex64::new(e.re, e.im)).ok_or("no subdominant eigenvalue")?;
+            let double = spec.eigenvalues[1].algebraic_multiplicity;
+            Ok((close(stated, l1), show(stated), format!("{} (multiplicity {double})", show(l1))))
+        }),
+        Check::Size { subject, value } => over_valences(subject, |n| {
+            let spec = cache.spectrum(subject, n)?;
+            let stated = eval(value, &env_for(subject, n)?)?.re;
+            let size = spec.matrix_size as f64;
+            Ok((
+                (stated - size).abs() < 0.5,
+                format!("{stated}"),
+                format!("{} (minimal {}, analysis {})", spec.matrix_size, spec.minimal_size, spec.analysis_size),
+            ))
+        }),
+        Check::SpectralC1 { subject, expect } => over_valences(subject, |n| {
+            let spec = cache.spectrum(subject, n)?;
+            let got = spec.verdict.c1_spectral;
+            let why = spec.verdict.reasons.iter().find(|r| r.contains("not") || r.contains("defective")).cloned();
+            Ok((
+                got == *expect,
+                if *expect { "passes".into() } else { "fails".into() },
+                format!(
+                    "{}{}",
+                    if got { "passes" } else { "fails" },
+                    why.map(|w| format!(": {w}")).unwrap_or_default()
+                ),
+            ))
+        }),
+        Check::LimitStencil { subject, weights } => over_valences(subject, |n| {
+            let spec = cache.spectrum(subject, n)?;
+            let env = env_for(subject, n)?;
+            let l = limit_stencil(&spec)?;
+            let mut worst = (0.0f64, String::new());
+            for (k, lab) in spec.labels.iter().enumerate() {
+                let want = match weights.get(&selector(lab.kind, lab.ring)) {
+                    Some(e) => eval(e, &env)?.re,
+                    None => 0.0,
+                };
+                let d = (l[k] - want).abs();
+                if d > worst.0 {
+                    worst = (d, format!("{}: computed {}, stated {}", lab.name, fmt_f(l[k]), fmt_f(want)));
+                }
+            }
+            let stated = weights.iter().map(|(k, v)| format!("{k} = {v}")).collect::<Vec<_>>().join(", ");
+            let ok = worst.0 < 1e-9;
+            Ok((ok, stated, if ok { "every weight as stated".into() } else { worst.1 }))
+        }),
+        Check::TangentStencils { subject, cos, sin } => over_valences(subject, |n| {
+            let spec = cache.spectrum(subject, n)?;
+            let t = tangent_stencils(&spec)?;
+            let mut basis = vec![vec![0.0; spec.labels.len()]; 2];
+            for (k, lab) in spec.labels.iter().enumerate() {
+                let mut env = env_for(subject, n)?;
+                env.insert("s".into(), ParamValue::from_ratio(lab.sector as i64, 1));
+                for (b, map) in [cos, sin].iter().enumerate() {
+                    if let Some(e) = map.get(&selector(lab.kind, lab.ring)) {
+                        basis[b][k] = eval(e, &env)?.re;
+                    }
+                }
+            }
+            let ok = t.len() == 2 && t.iter().all(|v| in_span(&basis, v)) && basis.iter().all(|v| in_span(&t, v));
+            Ok((
+                ok,
+                "span of the stated cos/sin stencils".into(),
+                format!("{} tangent stencils, {}", t.len(), if ok { "same span" } else { "different span" }),
+            ))
+        }),
+        Check::Identity { lhs, rhs, vars } => {
+            let mut env = Env::new();
+            for (k, v) in vars {
+                env.insert(k.clone(), ParamValue::parse(v)?);
+            }
+            let (l, r) = (Expr::parse(lhs)?, Expr::parse(rhs)?);
+            if let (Some(a), Some(b)) = (l.exact(&env), r.exact(&env)) {
+                let ok = a == b;
+                return Ok(Partial {
+                    verdict: if ok { Verdict::Holds } else { Verdict::Refuted },
+                    stated: format!("{lhs} = {rhs}"),
+                    computed: format!("{a} vs {b}"),
+                    detail: "exact rational arithmetic".into(),
+                });
+            }
+            let (a, b) = (l.eval(&env)?, r.eval(&env)?);
+            let ok = (a - b).norm() <= 1e-12 * a.norm().max(b.norm()).max(1.0);
+            Ok(Partial {
+                verdict: if ok { Verdict::Holds } else { Verdict::Refuted },
+                stated: format!("{lhs} = {rhs}"),
+                computed: format!("{} vs {}", show(a), show(b)),
+                detail: "floating point (relative 1e-12)".into(),
+            })
+        }
+        Check::MatrixEigenvalues { valences, vars, rows, values } => {
+            let subject = Subject {
+                scheme: String::new(),
+                valences: valences.clone(),
+                params: Default::default(),
+                neighbourhood: None,
+                vars: vars.clone(),
+            };
+            over_valences(&subject, |n| {
+                let env = env_for(&subject, n)?;
+                let cols = rows.first().map(|r| r.len()).unwrap_or(0);
+                if rows.iter().any(|r| r.len() != cols) || rows.len() != cols {
+                    return Ok((
+                        false,
+                        format!("{} stated eigenvalues", values.len()),
+                        format!(
+                            "the printed matrix is not square ({} rows, column counts {:?})",
+                            rows.len(),
+                            rows.iter().map(|r| r.len()).collect::<Vec<_>>()
+                        ),
+                    ));
+                }
+                let mut m = faer::Mat::<Complex64>::zeros(cols, cols);
+                for (i, r) in rows.iter().enumerate() {
+                    for (j, e) in r.iter().enumerate() {
+                        m[(i, j)] = eval(e, &env)?;
+                    }
+                }
+                let mut computed: Vec<Complex64> = eigen::block_eigen(&m)?
+                    .into_iter()
+                    .flat_map(|e| std::iter::repeat(e.value).take(e.algebraic))
+                    .collect();
+                computed.sort_by(|a, b| eigenvalue_order(*a, *b));
+                let mut stated: Vec<Complex64> = values.iter().map(|v| eval(v, &env)).collect::<Result<_, _>>()?;
+                stated.sort_by(|a, b| eigenvalue_order(*a, *b));
+                let (missing, extra) = unmatched(&stated, &computed);
+                let ok = missing.is_empty() && extra.is_empty();
+                let why = if ok {
+                    String::new()
+                } else {
+                    format!(
+                        " (stated but not found: {}; found but not stated: {})",
+                        show_list(&missing),
+                        show_list(&extra)
+                    )
+                };
+                Ok((ok, show_list(&stated), format!("{}{why}", show_list(&computed))))
+            })
+        }
+        Check::LatticeMatrix { scheme, window, scale, rows } => {
+            let entry = lattice::find(scheme).ok_or_else(|| format!("'{scheme}' is not a regular-lattice scheme"))?;
+            let s = (entry.build)();
+            let [i0, i1, j0, j1] = *window;
+            let w = lattice::Window::rect(i0, i1, j0, j1);
+            let assembled = lattice::local_matrix::<crate::numeric::Rational>(s.as_ref(), &w)?;
+            let scale = Expr::parse(scale)?.exact(&Env::new()).ok_or("the scale must be an exact rational")?;
+            let printed: Vec<Vec<crate::numeric::Rational>> = rows
+                .iter()
+                .map(|r| {
+                    r.split_whitespace()
+                        .map(|x| Expr::parse(x).ok().and_then(|e| e.exact(&Env::new())).map(|q| q * scale.clone()))
+                        .collect::<Option<Vec<_>>>()
+                        .ok_or_else(|| format!("row '{r}' is not a list of numbers"))
+                })
+                .collect::<Result<_, _>>()?;
+            if printed.len() != assembled.len() || printed.iter().any(|r| r.len() != assembled.len()) {
+                return Ok(Partial {
+                    verdict: Verdict::Refuted,
+                    stated: format!("{} printed rows", printed.len()),
+                    computed: format!("{}×{} assembled", assembled.len(), assembled.len()),
+                    detail: "the printed matrix has the wrong shape".into(),
+                });
+            }
+            let mut diffs = Vec::new();
+            for (i, (p, a)) in printed.iter().zip(&assembled).enumerate() {
+                for (j, (x, y)) in p.iter().zip(a).enumerate() {
+                    if x != y {
+                        diffs.push(format!("({},{}): printed {x}, rules give {y}", i + 1, j + 1));
+                    }
+                }
+            }
+            let n = assembled.len();
+            Ok(Partial {
+                verdict: if diffs.is_empty() { Verdict::Holds } else { Verdict::Refuted },
+                stated: format!("{n}×{n} printed matrix"),
+                computed: if diffs.is_empty() {
+                    "every entry as printed".into()
+                } else {
+                    format!("{} entries differ", diffs.len())
+                },
+                detail: if diffs.is_empty() {
+                    "entry by entry, exact".into()
+                } else {
+                    diffs.iter().take(12).cloned().collect::<Vec<_>>().join("; ")
+                },
+            })
+        }
+        Check::Builtin { name, data } => {
+            let (verdict, stated, computed, detail) = super::builtin::run(name, data.as_ref())?;
+            Ok(Partial { verdict, stated, computed, detail })
+        }
+    }
+}
+
+/// "centre", or "kind.ring" such as "fcv.1".
+fn selector(kind: VertexKind, ring: usize) -> String {
+    match kind {
+        VertexKind::Centre => "centre".into(),
+        k => format!("{}.{ring}", crate::neighbourhood::labels::kind_name(k)),
+    }
+}
+
+fn in_span(basis: &[Vec<f64>], v: &[f64]) -> bool {
+    let mut ortho: Vec<Vec<f64>> = Vec::new();
+    for b in basis {
+        let mut r = b.clone();
+        for q in &ortho {
+            let d: f64 = q.iter().zip(&r).map(|(x, y)| x * y).sum();
+            r.iter_mut().zip(q).for_each(|(x, y)| *x -= d * y);
+        }
+        let n = r.iter().map(|x| x * x).sum::<f64>().sqrt();
+        if n > 1e-12 {
+            ortho.push(r.iter().map(|x| x / n).collect());
+        }
+    }
+    let mut r = v.to_vec();
+    for q in &ortho {
+        let d: f64 = q.iter().zip(&r).map(|(x, y)| x * y).sum();
+        r.iter_mut().zip(q).for_each(|(x, y)| *x -= d * y);
+    }
+    let vn = v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    vn > 0.0 && r.iter().map(|x| x * x).sum::<f64>().sqrt() < 1e-8 * vn
+}
