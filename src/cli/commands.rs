@@ -46,9 +46,10 @@ pub fn dispatch(cmd: Command) -> Result<(), String> {
                 "mtx" => to_matrix_market(
                     &analysis.matrix,
                     &format!(
-                        "subdlab local subdivision matrix: scheme {} valence {} neighbourhood {:?}",
+                        "subdlab local subdivision matrix: scheme {} valence {} faces {} neighbourhood {:?}",
                         scheme.name(),
                         common.valence,
+                        analysis.spectrum.faces,
                         analysis.spectrum.neighbourhood
                     ),
                 ),
@@ -93,7 +94,10 @@ pub(super) fn parse_params(list: &[String]) -> Result<Vec<(String, String)>, Str
 
 fn run_analysis(a: &AnalysisArgs) -> Result<(Box<dyn Scheme>, Analysis), String> {
     let scheme = schemes::build(&a.scheme, &parse_params(&a.params)?)?;
-    let config = Configuration::regular(scheme.as_ref(), a.valence)?;
+    let config = match &a.faces {
+        None => Configuration::regular(scheme.as_ref(), a.valence)?,
+        Some(faces) => Configuration::with_faces(scheme.as_ref(), a.valence, faces)?,
+    };
     let neighbourhood: NeighbourhoodKind = a.neighbourhood.parse()?;
     let method = match a.method.as_deref() {
         None => None,

@@ -1,0 +1,358 @@
+//! 4-3 subdivision (Peters & Shiue) against values derived independently of the
+//! code under test: box-spline masks from the direction matrices A_4 and A_3,
+//! the closed-form eon matrix M of section 3.3 built here from E, C and I,
+//! Newton power sums for its spectrum, and exact characteristic polynomials.
+//!
+//! α conventions: the paper's figure 4 uses α as the eon's centre weight, its
+//! matrix M uses α as 1 − centre weight. The scheme stores `centre_weight` (c);
+//! below, `alpha_m = 1 − c` wherever a statement is about M.
+
+mod common;
+use common::*;
+
+use std::collections::HashMap;
+
+use subdlab::mesh::PolyMesh;
+use subdlab::neighbourhood::{Configuration, NeighbourhoodKind};
+use subdlab::numeric::exact::{q, QMatrix};
+use subdlab::numeric::Rational;
+use subdlab::refine::mesh::refine_mesh;
+use subdlab::refine::Origin;
+use subdlab::schemes::{self, Scheme};
+use subdlab::spectrum::exact::to_qmatrix;
+use subdlab::spectrum::stencils::{limit_stencil, tangent_stencils};
+use subdlab::spectrum::{analyse, Analysis, Method, Options};
+use subdlab::topology::{Topology, TriangleSplit};
+
+fn four_three(cw: Option<&str>) -> Box<dyn Scheme> {
+    let o: Vec<(String, String)> = cw.map(|c| vec![("centre_weight".to_string(), c.to_string())]).unwrap_or_default();
+    schemes::build("four-three", &o).unwrap()
+}
+
+fn analyse_faces(faces: &str, cw: Option<&str>, kind: NeighbourhoodKind, exact: bool) -> Analysis {
+    let s = four_three(cw);
+    let config = Configuration::with_faces(s.as_ref(), faces.len(), faces).unwrap();
+    analyse(s.as_ref(), &config, &Options { neighbourhood: kind, method: None, exact }).unwrap()
+}
+
+/// Every face sequence of length n up to rotation (the lexicographically least rotation).
+fn sequences(n: usize) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    for bits in 0u32..(1 << n) {
+        let s: String = (0..n).map(|k| if bits >> k & 1 == 1 { 'T' } else { 'Q' }).collect();
+        let least = (0..n).map(|r| format!("{}{}", &s[r..], &s[..r])).min().unwrap();
+        if !out.contains(&least) {
+            out.push(least);
+        }
+    }
+    out
+}
+
+/// Regular quad (QQQQ), regular triangle (6 T) and transition (QQTTT up to rotation) centres are not eons.
+fn is_eon(faces: &str) -> bool {
+    let n = faces.len();
+    let quads = faces.chars().filter(|&c| c == 'Q').count();
+    let doubled = format!("{faces}{faces}");
+    !((n == 4 && quads == 4) || (n == 6 && quads == 0) || (n == 5 && quads == 2 && doubled.contains("QQ")))
+}
+
+fn ratio(text: &str) -> Rational {
+    let (p, d) = text.split_once('/').unwrap_or((text, "1"));
+    q(p.parse().unwrap(), d.parse().unwrap())
+}
+
+fn f(x: &Rational) -> f64 {
+    use num_traits::ToPrimitive;
+    x.to_f64().unwrap()
+}
+
+/// Exact cos(2πk/n) for n ∈ {1, 2, 3, 4, 6}.
+fn exact_cos(k: i64, n: i64) -> Rational {
+    match (4 * k * 6).rem_euclid(4 * 6 * n) * 12 / (24 * n) {
+        // angle in twelfths of a full turn
+        0 => q(1, 1),
+        2 | 10 => q(1, 2),
+        3 | 9 => q(0, 1),
+        4 | 8 => q(-1, 2),
+        6 => q(-1, 1),
+        t => panic!("cos(2π·{k}/{n}) ({t}/12 turn) is not rational"),
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Regular regions: the rules are box-spline subdivision.
+// ---------------------------------------------------------------------------
+
+/// Subdivision mask of the box spline with the given directions: the symbol is
+/// 4 Π_ξ (1 + z^ξ)/2, centred on the origin. Returned as integer numerators over
+/// the denominator 2^m / 4.
+fn box_mask(dirs: &[(i64, i64)]) -> (HashMap<(i64, i64), i64>, i64) {
+    let mut poly: HashMap<(i64, i64), i64> = HashMap::from([((0, 0), 1)]);
+    for &(dx, dy) in dirs {
+        let mut next = poly.clone();
+        for (&(x, y), &c) in &poly {
+            *next.entry((x + dx, y + dy)).or_insert(0) += c;
+        }
+        poly = next;
+    }
+    let (sx, sy) = dirs.iter().fold((0, 0), |a, d| (a.0 + d.0, a.1 + d.1));
+    assert!(sx % 2 == 0 && sy % 2 == 0, "primal box spline");
+    let centred = poly.into_iter().map(|((x, y), c)| ((x - sx / 2, y - sy / 2), c)).collect();
+    (centred, (1 << dirs.len()) / 4)
+}
+
+/// Sector chart (s, i, j) to the chart of sector 0 by s rotations `rot`.
+fn global(s: usize, i: i64, j: i64, rot: fn(i64, i64) -> (i64, i64)) -> (i64, i64) {
+    (0..s).fold((i, j), |p, _| rot(p.0, p.1))
+}
+
+/// Row k of S is the new vertex at fine lattice position p_k; its weight on the
+/// old vertex at coarse position q is a(p_k − 2q) for a box-spline scheme.
+fn assert_s_is_box_spline(faces: &str, dirs: &[(i64, i64)], rot: fn(i64, i64) -> (i64, i64)) {
+    let (mask, den) = box_mask(dirs);
+    let a = analyse_faces(faces, None, NeighbourhoodKind::Analysis, true);
+    let s = a.exact_matrix.as_ref().expect("regular rules are rational");
+    let pos: Vec<(i64, i64)> = s.labels.iter().map(|l| global(l.sector, l.i, l.j, rot)).collect();
+    for (k, &p) in pos.iter().enumerate() {
+        let mut sum = q(0, 1);
+        for (col, &qq) in pos.iter().enumerate() {
+            let want = q(*mask.get(&(p.0 - 2 * qq.0, p.1 - 2 * qq.1)).unwrap_or(&0), den);
+            assert_eq!(s.get(k, col), want, "{faces}: S[{}][{}]", s.labels[k].name, s.labels[col].name);
+            sum = sum + want;
+        }
+        // the mask's coset sums are 1, so no weight can lie outside the neighbourhood
+        assert_eq!(sum, q(1, 1), "{faces}: row {} is complete", s.labels[k].name);
+    }
+}
+
+/// Quad rules (1a), (1b) and the face point are the four-direction box spline
+/// A_4 = {e1, −e1, e2, −e2, e1+e2, −e1+e2} (degree 4, C^2), not Catmull–Clark's
+/// bicubic B-spline: its mask puts 8/16 on the vertex and 2/16 on each edge
+/// neighbour, (4v + Σ4)/8, where Catmull–Clark puts 36/64 and 6/64 (and 1/64 on
+/// the diagonal neighbours, which the A_4 vertex rule does not touch).
+#[test]
+fn quad_rules_are_the_four_direction_box_spline_not_catmull_clark() {
+    let a4 = [(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, 1)];
+    let (mask, den) = box_mask(&a4);
+    assert_eq!((mask[&(0, 0)], mask[&(2, 0)], mask.get(&(2, 2)).copied().unwrap_or(0), den), (8, 2, 0, 16));
+    // quarter turn (i, j) -> (-j, i) between quad sector charts
+    assert_s_is_box_spline("QQQQ", &a4, |i, j| (-j, i));
+}
+
+/// Triangle rules (3a), (3b) are the three-direction quartic box spline A_3 =
+/// Loop's regular rules: (10 v + Σ6)/16 and (3, 3, 1, 1)/8. Our triangle charts
+/// have edges e1, e2, e1 − e2 (the paper's A_3 uses e1, e2, e1 + e2: the same
+/// lattice sheared) and the sixty-degree turn (i, j) -> (−j, i + j).
+#[test]
+fn triangle_rules_are_the_three_direction_box_spline() {
+    let a3 = [(1, 0), (-1, 0), (0, 1), (0, -1), (1, -1), (-1, 1)];
+    let (mask, den) = box_mask(&a3);
+    assert_eq!((mask[&(0, 0)], mask[&(2, 0)], den), (10, 1, 16));
+    assert_s_is_box_spline("TTTTTT", &a3, |i, j| (-j, i + j));
+}
+
+/// One 4-3 step on a triangle mesh equals one Loop step at every new vertex
+/// except the eons (valence ≠ 6), where 4-3 uses its own centre weight; edges at
+/// eons use the regular rule (3b) in step 1 (σ = 1: (4b) has weight 0).
+#[test]
+fn triangle_meshes_refine_like_loop_away_from_eons() {
+    let (m, p) = subdlab::mesh::obj::read_obj_file(&mesh_path("mixed-triangles.obj")).unwrap();
+    let (_, ours) = refine_mesh(four_three(None).as_ref(), &m, &p, 1).unwrap();
+    let (_, loops) = refine_mesh(scheme("loop").as_ref(), &m, &p, 1).unwrap();
+    assert_eq!(ours.len(), loops.len());
+    let mut differing = 0;
+    for v in 0..ours.len() {
+        let eon = v < m.num_vertices() && m.valence(v) != Some(6);
+        let same = (0..3).all(|c| (ours[v][c] - loops[v][c]).abs() < 1e-13);
+        assert!(same || eon, "vertex {v} differs from Loop but is no eon");
+        differing += usize::from(!same);
+    }
+    assert!(differing > 0, "eon rules must differ from Loop's somewhere");
+}
+
+// ---------------------------------------------------------------------------
+// The eon: matrix M (section 3.3), Lemmas 3.4 – 3.6, Theorem 3.7.
+// ---------------------------------------------------------------------------
+
+/// M of section 3.3 built from its definition (alpha_m = 1 − centre weight):
+/// [[1 − α, α/n eᵗ], [e/2, (I + E + C)/4]].
+fn closed_form_m(n: usize, cw: f64) -> Vec<Vec<f64>> {
+    let alpha_m = 1.0 - cw;
+    let mut m = vec![vec![0.0; n + 1]; n + 1];
+    m[0][0] = 1.0 - alpha_m;
+    for i in 0..n {
+        m[0][1 + i] = alpha_m / n as f64;
+        m[1 + i][0] = 0.5;
+        for j in 0..n {
+            let e = 1.0 / n as f64;
+            let c = 2.0 / n as f64 * cos2pi((i + n - j) % n, n);
+            m[1 + i][1 + j] = 0.25 * (f64::from(u8::from(i == j)) + e + c);
+        }
+    }
+    m
+}
+
+/// Positions in S of the centre and the edge neighbours v_0..v_{n−1}.
+fn m_indices(a: &Analysis) -> Vec<usize> {
+    let labels = &a.spectrum.labels;
+    let mut idx = vec![labels.iter().position(|l| l.ring == 0).unwrap()];
+    let n = a.spectrum.valence;
+    for s in 0..n {
+        idx.push(labels.iter().position(|l| l.sector == s && l.i == 1 && l.j == 0).unwrap());
+    }
+    idx
+}
+
+fn mat_mul(a: &[Vec<f64>], b: &[Vec<f64>]) -> Vec<Vec<f64>> {
+    let n = a.len();
+    (0..n).map(|i| (0..n).map(|j| (0..n).map(|k| a[i][k] * b[k][j]).sum()).collect()).collect()
+}
+
+const WEIGHTS: [&str; 5] = ["1/4", "3/8", "1/2", "3/5", "3/4"];
+
+/// The rows of the eon and its neighbours in S are M (the closed form above)
+/// followed by zeros ("the entries of S to the right of M are zero"), for every
+/// eon configuration up to n = 8 and centre weights across [1/4, 3/4].
+#[test]
+fn eon_rows_of_s_are_the_matrix_m_followed_by_zeros() {
+    for n in 3..=8 {
+        for faces in sequences(n).iter().filter(|s| is_eon(s)) {
+            for cw in WEIGHTS {
+                let a = analyse_faces(faces, Some(cw), NeighbourhoodKind::Analysis, false);
+                let idx = m_indices(&a);
+                let want = closed_form_m(n, f(&ratio(cw)));
+                let s = a.matrix.to_dense_f64();
+                for (r, &i) in idx.iter().enumerate() {
+                    for col in 0..s.len() {
+                        let w = idx.iter().position(|&c| c == col).map(|c| want[r][c]).unwrap_or(0.0);
+                        assert!((s[i][col] - w).abs() < 1e-14, "{faces} c={cw}: S[{i}][{col}] = {} vs {w}", s[i][col]);
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Lemma 3.4: (E + C)² = E + C, C² = C, Ce = 0, EE = E (E e = e, eᵗe = n are immediate).
+#[test]
+fn lemma_3_4_projection_identities() {
+    for n in 3..=12 {
+        let e = vec![vec![1.0 / n as f64; n]; n];
+        let c: Vec<Vec<f64>> =
+            (0..n).map(|i| (0..n).map(|j| 2.0 / n as f64 * cos2pi((i + n - j) % n, n)).collect()).collect();
+        let ec: Vec<Vec<f64>> = (0..n).map(|i| (0..n).map(|j| e[i][j] + c[i][j]).collect()).collect();
+        let close = |a: &[Vec<f64>], b: &[Vec<f64>]| {
+            a.iter().flatten().zip(b.iter().flatten()).all(|(x, y)| (x - y).abs() < 1e-13)
+        };
+        assert!(close(&mat_mul(&ec, &ec), &ec) && close(&mat_mul(&c, &c), &c) && close(&mat_mul(&e, &e), &e));
+        assert!(c.iter().all(|row| row.iter().sum::<f64>().abs() < 1e-13), "Ce = 0");
+    }
+}
+
+/// Lemma 3.5: det(M − λ) = (λ − 1)(λ − ½)²(λ − ¼)^{n−3}(λ − (½ − α)) with α
+/// the matrix convention alpha_m = 1 − c, so the fifth root is c − ½. Checked
+/// by Newton: the power sums tr(M^k), k = 1..n+1, fix the n+1 roots. The
+/// figure convention (α = c, root ½ − c) fails the first power sum unless c = ½.
+#[test]
+fn lemma_3_5_eigenvalues_of_m() {
+    for n in 3..=12 {
+        for cw in WEIGHTS {
+            let c = f(&ratio(cw));
+            let m = closed_form_m(n, c);
+            let mut power = m.clone();
+            for k in 1..=n + 1 {
+                let tr: f64 = (0..=n).map(|i| power[i][i]).sum();
+                let roots = [1.0, 0.5, 0.5, c - 0.5].into_iter().chain(std::iter::repeat(0.25).take(n - 3));
+                let want: f64 = roots.map(|r: f64| r.powi(k as i32)).sum();
+                assert!((tr - want).abs() < 1e-12, "n={n} c={cw}: tr M^{k} = {tr} vs {want}");
+                if k == 1 && cw != "1/2" {
+                    let figure = 2.0 + (n - 3) as f64 / 4.0 + (0.5 - c);
+                    assert!((tr - figure).abs() > 1e-3, "the figure convention would fit too");
+                }
+                power = mat_mul(&power, &m);
+            }
+        }
+    }
+}
+
+/// Lemma 3.5 in exact arithmetic on the M the program assembled (n = 3, 4, 6,
+/// where the cosines are rational): its characteristic polynomial is exactly
+/// (λ − 1)(λ − ½)²(λ − ¼)^{n−3}(λ − (c − ½)).
+#[test]
+fn lemma_3_5_exactly_on_the_assembled_matrix() {
+    for n in [3usize, 4, 6] {
+        for faces in sequences(n).iter().filter(|s| is_eon(s)) {
+            for cw in WEIGHTS {
+                let a = analyse_faces(faces, Some(cw), NeighbourhoodKind::Analysis, true);
+                let s = a.exact_matrix.as_ref().expect("rational at n = 3, 4, 6");
+                let idx = m_indices(&a);
+                let mut m = QMatrix::zeros(n + 1);
+                for (r, &i) in idx.iter().enumerate() {
+                    for (c, &j) in idx.iter().enumerate() {
+                        m.set(r, c, s.get(i, j));
+                    }
+                }
+                let c = ratio(cw);
+                let mut roots = vec![q(1, 1), q(1, 2), q(1, 2), c - q(1, 2)];
+                roots.extend(std::iter::repeat(q(1, 4)).take(n - 3));
+                let want = subdlab::numeric::exact::Poly::from_roots(&roots);
+                assert_eq!(m.charpoly(), want, "{faces} c={cw}");
+            }
+        }
+    }
+}
+
+/// Lemma 3.6 and the stencils after it: the limit stencil is l⁰ = [n, 2α eᵗ]
+/// (alpha_m = 1 − c) normalised, on the eon and its edge neighbours only:
+/// centre 1/(3 − 2c), each neighbour 2(1 − c)/(n (3 − 2c)); the tangent
+/// stencils span {cos(2πi/n), sin(2πi/n)} on the neighbours, zero elsewhere.
+#[test]
+fn lemma_3_6_limit_and_tangent_stencils() {
+    for n in 3..=8 {
+        for faces in sequences(n).iter().filter(|s| is_eon(s)) {
+            for cw in ["1/4", "1/2", "3/4"] {
+                let c = f(&ratio(cw));
+                let a = analyse_faces(faces, Some(cw), NeighbourhoodKind::Analysis, false);
+                let l = limit_stencil(&a.spectrum).unwrap();
+                let idx = m_indices(&a);
+                for (k, w) in l.iter().enumerate() {
+                    let want = if k == idx[0] {
+                        1.0 / (3.0 - 2.0 * c)
+                    } else if idx.contains(&k) {
+                        2.0 * (1.0 - c) / (n as f64 * (3.0 - 2.0 * c))
+                    } else {
+                        0.0
+                    };
+                    assert!(
+                        (w - want).abs() < 1e-10,
+                        "{faces} c={cw}: limit weight {} = {w} vs {want}",
+                        a.spectrum.labels[k].name
+                    );
+                }
+                let t = tangent_stencils(&a.spectrum).unwrap();
+                assert_eq!(t.len(), 2);
+                let size = l.len();
+                let mut cs = vec![0.0; size];
+                let mut sn = vec![0.0; size];
+                for i in 0..n {
+                    cs[idx[1 + i]] = cos2pi(i, n);
+                    sn[idx[1 + i]] = sin2pi(i, n);
+                }
+                for v in &t {
+                    assert!(in_span(&[cs.clone(), sn.clone()], v), "{faces} c={cw}: tangent stencil off span(c, s)");
+                }
+            }
+        }
+    }
+}
+
+// (the spectrum of S, Theorem 3.7, the sizes and the transition matrix follow)
+
+fn mesh_path(name: &str) -> std::path::PathBuf {
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("meshes").join(name)
+}
+
+#[allow(dead_code)]
+fn unused(_: Method, _: Topology, _: TriangleSplit, _: Origin, _: &PolyMesh, _: fn(&QMatrix)) {
+    let _ = to_qmatrix;
+}
