@@ -12,17 +12,14 @@ use common::*;
 
 use std::collections::HashMap;
 
-use subdlab::mesh::PolyMesh;
 use subdlab::neighbourhood::{Configuration, NeighbourhoodKind};
 use subdlab::numeric::exact::{q, QMatrix};
 use subdlab::numeric::Rational;
 use subdlab::refine::mesh::refine_mesh;
-use subdlab::refine::Origin;
 use subdlab::schemes::{self, Scheme};
 use subdlab::spectrum::exact::to_qmatrix;
 use subdlab::spectrum::stencils::{limit_stencil, tangent_stencils};
 use subdlab::spectrum::{analyse, Analysis, Method, Options};
-use subdlab::topology::{Topology, TriangleSplit};
 
 fn four_three(cw: Option<&str>) -> Box<dyn Scheme> {
     let o: Vec<(String, String)> = cw.map(|c| vec![("centre_weight".to_string(), c.to_string())]).unwrap_or_default();
@@ -64,19 +61,6 @@ fn ratio(text: &str) -> Rational {
 fn f(x: &Rational) -> f64 {
     use num_traits::ToPrimitive;
     x.to_f64().unwrap()
-}
-
-/// Exact cos(2πk/n) for n ∈ {1, 2, 3, 4, 6}.
-fn exact_cos(k: i64, n: i64) -> Rational {
-    match (4 * k * 6).rem_euclid(4 * 6 * n) * 12 / (24 * n) {
-        // angle in twelfths of a full turn
-        0 => q(1, 1),
-        2 | 10 => q(1, 2),
-        3 | 9 => q(0, 1),
-        4 | 8 => q(-1, 2),
-        6 => q(-1, 1),
-        t => panic!("cos(2π·{k}/{n}) ({t}/12 turn) is not rational"),
-    }
 }
 
 // ---------------------------------------------------------------------------
@@ -346,13 +330,261 @@ fn lemma_3_6_limit_and_tangent_stencils() {
     }
 }
 
-// (the spectrum of S, Theorem 3.7, the sizes and the transition matrix follow)
+/// The whole spectrum of S, derived from the rules. Order the neighbourhood as
+/// (eon, v_0..v_{n−1}) first, then the rest: the eon row and the (4b) rows touch
+/// only the first group (M), and every other new vertex depends on old vertices
+/// of the first group and on itself only through the diagonal, so S is block
+/// lower triangular and spec S = spec M ∪ {diagonal entries}. The diagonal
+/// entry of the vertex at chart position (i, j) is the weight of the old vertex
+/// at (i, j) in the rule of the new vertex at 2·(i, j)/2:
+///   quad sector:  (1,1) face point: 1/4; (2,1), (1,2) quad edge points: 1/16
+///                 (a far corner); (2,2) vertex point of (1,1): 0 (diagonal neighbour);
+///   tri sector:   (1,1) edge point of v_i v_{i+1}: 1/8 (the far apex);
+///   spoke (2,0), vertex point of v_i, weight on its outer neighbour:
+///                 between two quads (1a) 1/8, two triangles (3a) 1/16,
+///                 a quad and a triangle (2a, a quad/tri boundary neighbour) 3/32.
+/// With Lemma 3.5 for M this gives 1, 1/2, 1/2, c − 1/2, 1/4^(n−3+n_□), ...
+fn derived_spectrum(faces: &str, c: Rational) -> Vec<Rational> {
+    let n = faces.len();
+    let kinds: Vec<char> = faces.chars().collect();
+    let mut out = vec![q(1, 1), q(1, 2), q(1, 2), c - q(1, 2)];
+    out.extend(std::iter::repeat(q(1, 4)).take(n - 3));
+    for s in 0..n {
+        match kinds[s] {
+            'Q' => out.extend([q(1, 4), q(1, 16), q(1, 16), q(0, 1)]),
+            _ => out.push(q(1, 8)),
+        }
+        // the spoke of sector s lies between sectors s − 1 and s
+        out.push(match (kinds[(s + n - 1) % n], kinds[s]) {
+            ('Q', 'Q') => q(1, 8),
+            ('T', 'T') => q(1, 16),
+            _ => q(3, 32),
+        });
+    }
+    out
+}
+
+/// Theorem 3.7 ("for |1/2 − α| ≤ 1/4 the eigenvalues of S are always positive
+/// and, in descending order, 1, 1/2, 1/2, 1/4, ..., 1/8, ... where the
+/// multiplicity of 1/4 is n + n_□ − 3") and section 3.3 ("the number of 1/4
+/// eigenvalues [outside M] equals n_□"): exactly, at n = 3, 4, 6 for every eon
+/// configuration and centre weight, the characteristic polynomial of S is the
+/// product over `derived_spectrum`. Consequences checked on it:
+/// * multiplicity of 1/4 is n + n_□ − 3, except at c = 3/4 (α_M = 1/4), where
+///   c − 1/2 = 1/4 adds one: n + n_□ − 2 (Lemma 3.5 says so for M, the theorem
+///   does not);
+/// * "always positive" is false for c < 1/2: c − 1/2 < 0 (−1/8 at the paper's
+///   recommended c = 3/8 for n = 3), and 0 at c = 1/2.
+#[test]
+fn theorem_3_7_spectrum_of_s_exactly() {
+    for n in [3usize, 4, 6] {
+        for faces in sequences(n).iter().filter(|s| is_eon(s)) {
+            let n_quads = faces.chars().filter(|&c| c == 'Q').count();
+            for cw in WEIGHTS {
+                let c = ratio(cw);
+                let a = analyse_faces(faces, Some(cw), NeighbourhoodKind::Analysis, true);
+                let s = to_qmatrix(a.exact_matrix.as_ref().unwrap());
+                let want = derived_spectrum(faces, c.clone());
+                assert_eq!(s.charpoly(), subdlab::numeric::exact::Poly::from_roots(&want), "{faces} c={cw}");
+                let quarter = want.iter().filter(|r| **r == q(1, 4)).count();
+                let extra = usize::from(cw == "3/4");
+                assert_eq!(quarter, n + n_quads - 3 + extra, "{faces} c={cw}");
+                let negative = want.iter().any(|r| *r < q(0, 1));
+                assert_eq!(negative, c < q(1, 2), "{faces} c={cw}: sign of c − 1/2");
+            }
+        }
+    }
+}
+
+/// The same derived spectrum for every eon configuration up to n = 8 at the
+/// paper's default weights (floating point; cosines are irrational at n = 5, 7, 8).
+#[test]
+fn spectrum_of_s_for_every_face_sequence_up_to_valence_8() {
+    for n in 3..=8 {
+        for faces in sequences(n).iter().filter(|s| is_eon(s)) {
+            let c = match n {
+                3 => q(3, 8),
+                4 => q(1, 2),
+                _ => q(3, 5),
+            };
+            let a = analyse_faces(faces, None, NeighbourhoodKind::Analysis, false);
+            let want: Vec<f64> = derived_spectrum(faces, c).iter().map(f).collect();
+            // defective eigenvalues split by about sqrt(eps) in floating point
+            assert_same_multiset(real_spectrum(&a), want, 1e-6, faces);
+            assert!(a.spectrum.verdict.c1_spectral, "{faces}: Reif's spectral C1 criterion");
+        }
+    }
+}
+
+/// Theorem 3.7 also claims bounded curvature. With λ1 = 1/2 the second-order
+/// eigenvalue is λ1² = 1/4; a Jordan block there makes the second-order part of
+/// the k-th ring grow like k·4^−k, i.e. curvature unbounded (logarithmically).
+/// Why one should expect one: in the rotation-symmetric all-quad case, Fourier
+/// block m ∉ {0, ±1} holds a 1/4 of M (the eigenvector of (I + E + C)/4 in
+/// mode m) and the 1/4 of the face points w_i in mode m, coupled through the
+/// face-point rule (w_i sees v_i and v_{i+1}); the coupling cancels only where
+/// the mode alternates (m = n/2). Checked exactly: rank(S − I/4) is larger than
+/// size − (algebraic multiplicity of 1/4). Already at n = 4 (QQQT) the coupling
+/// is absent; the theorem's curvature claim fails at n = 6 (all quads).
+#[test]
+fn theorem_3_7_bounded_curvature_fails_on_a_defective_quarter() {
+    let a = analyse_faces("QQQQQQ", None, NeighbourhoodKind::Analysis, true);
+    let s = to_qmatrix(a.exact_matrix.as_ref().unwrap());
+    let (alg, _) = s.charpoly().root_multiplicity(&q(1, 4));
+    let geo = s.n - s.shifted(&q(1, 4)).rank();
+    assert!(geo < alg, "1/4 should be defective: algebraic {alg}, geometric {geo}");
+    // the modes m = 2 and m = 4 carry a Jordan block each, m = 3 does not
+    assert_eq!(alg - geo, 2);
+    // and the float path reports the same
+    let e = a.spectrum.eigenvalues.iter().find(|e| (e.re - 0.25).abs() < 1e-9).unwrap();
+    assert!(e.defective);
+}
+
+/// Sizes. Minimal invariant set: the eon rule and (4b) use only the eon and its
+/// n edge neighbours, so 1 + n. Analysis neighbourhood: every control point
+/// whose basis function overlaps the first ring of faces; by the supports of the
+/// box splines (A_4: |x|, |y| ≤ 2, |x ± y| ≤ 3 around its point; A_3: the
+/// hexagon of radius 2) a quad sector contributes (1,0), (1,1), (2,0), (2,1),
+/// (1,2), (2,2) and a triangle sector (1,0), (2,0), (1,1): 1 + 6 n_□ + 3 n_△.
+/// The paper's s = 1 + 6n + 3n_□ is "sufficient", not needed: it exceeds the
+/// analysis neighbourhood by 3n (it adds a third ring for the Bézier form).
+#[test]
+fn neighbourhood_sizes_against_the_papers_formula() {
+    for n in 3..=8 {
+        for faces in sequences(n).iter().filter(|s| is_eon(s)) {
+            let nq = faces.chars().filter(|&c| c == 'Q').count();
+            let a = analyse_faces(faces, None, NeighbourhoodKind::Analysis, false);
+            assert_eq!(a.spectrum.minimal_size, 1 + n, "{faces}");
+            assert_eq!(a.spectrum.analysis_size, 1 + 6 * nq + 3 * (n - nq), "{faces}");
+            let paper = 1 + 6 * n + 3 * nq;
+            assert_eq!(paper - a.spectrum.analysis_size, 3 * n, "{faces}");
+        }
+    }
+}
+
+/// Rotation-symmetric mixed configurations are analysed by DFT over their
+/// rotation group; the union of block spectra is the spectrum of the full matrix.
+#[test]
+fn symmetric_mixed_configurations_use_the_dft_and_agree_with_the_full_matrix() {
+    for (faces, period) in [("QTQT", 2), ("QQTQQT", 3), ("QTTQTT", 3), ("QTQTQT", 2), ("QQQTQQQT", 4)] {
+        let s = four_three(None);
+        let config = Configuration::with_faces(s.as_ref(), faces.len(), faces).unwrap();
+        assert_eq!(config.symmetry_period(), period);
+        let dft = analyse_faces(faces, None, NeighbourhoodKind::Analysis, false);
+        assert_eq!(dft.spectrum.method, Method::Dft);
+        assert_eq!(dft.spectrum.blocks.len(), faces.len() / period);
+        let opts = Options { neighbourhood: NeighbourhoodKind::Analysis, method: Some(Method::Full), exact: false };
+        let full = analyse(s.as_ref(), &config, &opts).unwrap();
+        assert_same_multiset(real_spectrum(&dft), real_spectrum(&full), 1e-6, faces);
+    }
+    // an asymmetric sequence has no rotation symmetry and goes to the full matrix
+    assert_eq!(analyse_faces("QQTQT", None, NeighbourhoodKind::Analysis, false).spectrum.method, Method::Full);
+}
+
+// ---------------------------------------------------------------------------
+// The 4-3 transition node (section 3.2, Lemma 3.3): configuration QQTTT.
+// ---------------------------------------------------------------------------
+
+/// Section 3.2: "The eigenvalues of this subdivision matrix [S_43], ordered by
+/// modulus, are 1, 1/2, 1/2, 1/4, 1/4, 1/4, ...", consistent with d = I/4 (3×3)
+/// in Lemma 3.3's proof. The same proof also prints "1, 1/2, 1/2, 1/4, 1/4,
+/// 1/8, ...", i.e. only two 1/4: that list is wrong. Exact on the analysis
+/// neighbourhood (all transition weights are rational). Also: the six leading
+/// eigenvalues are non-defective (the curvature argument needs that), and the
+/// paper's 7×7 subnet [−3,3]² (49 nodes) is larger than the 1 + 6·2 + 3·3 = 22
+/// nodes that define the first ring.
+#[test]
+fn transition_node_matrix_s43() {
+    let a = analyse_faces("QQTTT", None, NeighbourhoodKind::Analysis, true);
+    assert_eq!(a.spectrum.analysis_size, 22);
+    let s = to_qmatrix(a.exact_matrix.as_ref().unwrap());
+    let p = s.charpoly();
+    let mult = |r: Rational| p.root_multiplicity(&r).0;
+    assert_eq!((mult(q(1, 1)), mult(q(1, 2)), mult(q(1, 4))), (1, 2, 3));
+    for r in [q(1, 1), q(1, 2), q(1, 4)] {
+        assert_eq!(s.n - s.shifted(&r).rank(), mult(r.clone()), "eigenvalue {r} non-defective");
+    }
+    // the sixth eigenvalue by modulus is 1/4, not 1/8
+    let lead: Vec<f64> = a
+        .spectrum
+        .eigenvalues
+        .iter()
+        .flat_map(|e| std::iter::repeat(e.modulus).take(e.algebraic_multiplicity))
+        .take(6)
+        .collect();
+    assert!((lead[5] - 0.25).abs() < 1e-12);
+    // every other eigenvalue is smaller than 1/4 in modulus
+    let rest = a
+        .spectrum
+        .eigenvalues
+        .iter()
+        .filter(|e| e.modulus < 0.25 - 1e-9)
+        .map(|e| e.algebraic_multiplicity)
+        .sum::<usize>();
+    assert_eq!(rest, 22 - 6);
+}
+
+/// Planar positions of a neighbourhood from its spoke vectors: sector s point
+/// (i, j) is i·d_s + j·d_{s+1} (quad and triangle charts alike).
+fn planar_positions(a: &Analysis, spokes: &[[f64; 2]]) -> Vec<[f64; 2]> {
+    let n = spokes.len();
+    a.spectrum
+        .labels
+        .iter()
+        .map(|l| {
+            let (u, v) = (spokes[l.sector % n], spokes[(l.sector + 1) % n]);
+            [l.i as f64 * u[0] + l.j as f64 * v[0], l.i as f64 * u[1] + l.j as f64 * v[1]]
+        })
+        .collect()
+}
+
+/// At a transition node (and the regular nodes) the rules reproduce linear
+/// functions ("both A_3 and A_4 splines and their average, the 4-3 transition
+/// rule, reproduce linear functions"), but only in the right parametrisation:
+/// the quads are the unit squares of the half plane x ≤ 0 and the triangles the
+/// affine image of the regular lattice with spokes (0, ±1), (1, ±1/2) on x ≥ 0
+/// (height 1 over a base of 1 on the transition line; the paper's A_3 on Z²
+/// with diagonals, sheared). Derivation for the vertex rule (2a): 4 d_between
+/// + 3 (d_up + d_down) + 2 (d_3 + d_4) = 4 (−1, 0) + 0 + 2 (2, 0) = 0; with
+/// equilateral triangles (spokes (0, ±1), (√3/2, ±1/2)) it is (2√3 − 4, 0) ≠ 0.
+/// With these positions P, S P = P / 2, so the limit stencil (the paper's
+/// figure 8, missing from the text) maps P to the centre and the two tangent
+/// stencils map P onto independent directions.
+#[test]
+fn transition_rules_reproduce_linear_functions_and_figure_8_stencils() {
+    let h = 3f64.sqrt() / 2.0;
+    let cases: [(&str, Vec<[f64; 2]>); 3] = [
+        // sectors 0, 1 quads (spokes (0,1), (−1,0), (0,−1)), then three triangles
+        ("QQTTT", vec![[0.0, 1.0], [-1.0, 0.0], [0.0, -1.0], [1.0, -0.5], [1.0, 0.5]]),
+        ("QQQQ", vec![[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]]),
+        ("TTTTTT", vec![[1.0, 0.0], [0.5, h], [-0.5, h], [-1.0, 0.0], [-0.5, -h], [0.5, -h]]),
+    ];
+    for (faces, spokes) in cases {
+        let a = analyse_faces(faces, None, NeighbourhoodKind::Analysis, false);
+        let p = planar_positions(&a, &spokes);
+        let s = a.matrix.to_dense_f64();
+        for (k, row) in s.iter().enumerate() {
+            for c in 0..2 {
+                let sp: f64 = row.iter().zip(&p).map(|(w, x)| w * x[c]).sum();
+                assert!((sp - p[k][c] / 2.0).abs() < 1e-12, "{faces}: (S P)[{}] ≠ P/2", a.spectrum.labels[k].name);
+            }
+        }
+        let l = limit_stencil(&a.spectrum).unwrap();
+        assert!(l.iter().all(|w| *w > -1e-12), "{faces}: limit stencil of convex rules is non-negative");
+        for c in 0..2 {
+            assert!(
+                l.iter().zip(&p).map(|(w, x)| w * x[c]).sum::<f64>().abs() < 1e-12,
+                "{faces}: limit of P is the centre"
+            );
+        }
+        let t = tangent_stencils(&a.spectrum).unwrap();
+        let tp: Vec<[f64; 2]> =
+            t.iter().map(|w| [0, 1].map(|c| w.iter().zip(&p).map(|(x, y)| x * y[c]).sum::<f64>())).collect();
+        let det = tp[0][0] * tp[1][1] - tp[0][1] * tp[1][0];
+        assert!(det.abs() > 1e-3, "{faces}: tangent stencils independent on P");
+    }
+}
 
 fn mesh_path(name: &str) -> std::path::PathBuf {
     std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("meshes").join(name)
-}
-
-#[allow(dead_code)]
-fn unused(_: Method, _: Topology, _: TriangleSplit, _: Origin, _: &PolyMesh, _: fn(&QMatrix)) {
-    let _ = to_qmatrix;
 }
