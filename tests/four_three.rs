@@ -16,10 +16,12 @@ use subdlab::neighbourhood::{Configuration, NeighbourhoodKind};
 use subdlab::numeric::exact::{q, QMatrix};
 use subdlab::numeric::Rational;
 use subdlab::refine::mesh::refine_mesh;
+use subdlab::refine::Origin;
 use subdlab::schemes::{self, Scheme};
 use subdlab::spectrum::exact::to_qmatrix;
 use subdlab::spectrum::stencils::{limit_stencil, tangent_stencils};
 use subdlab::spectrum::{analyse, Analysis, Method, Options};
+use subdlab::topology::{Topology, TriangleSplit};
 
 fn four_three(cw: Option<&str>) -> Box<dyn Scheme> {
     let o: Vec<(String, String)> = cw.map(|c| vec![("centre_weight".to_string(), c.to_string())]).unwrap_or_default();
@@ -587,4 +589,219 @@ fn transition_rules_reproduce_linear_functions_and_figure_8_stencils() {
 
 fn mesh_path(name: &str) -> std::path::PathBuf {
     std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("meshes").join(name)
+}
+
+// ---------------------------------------------------------------------------
+// Mesh refinement (section 2): face counts, node types, the σ-blending of (4b),
+// the convex-hull Lemma 3.8, and the command line.
+// ---------------------------------------------------------------------------
+
+fn load(name: &str) -> (subdlab::mesh::PolyMesh, Vec<[f64; 3]>) {
+    subdlab::mesh::obj::read_obj_file(&mesh_path(name)).unwrap()
+}
+
+fn quads_and_triangles(m: &subdlab::mesh::PolyMesh) -> (usize, usize) {
+    let quads = m.faces().iter().filter(|f| f.len() == 4).count();
+    (quads, m.num_faces() - quads)
+}
+
+/// Quads split into 4 quads and triangles into 4 triangles ("four times as many
+/// 3- and 4-sided facets"). Section 2: "the number of eons stays constant, the
+/// number of ... 4-3 transition nodes doubles and regular nodes quadruple".
+/// Derivation for house.obj (4 eaves joining quads and triangles, no transition
+/// node at level 0): every node keeps its face sequence, and every quad/tri
+/// edge gets a new transition node while splitting into two quad/tri edges, so
+/// T_{L+1} = T_L + 4·2^L, T_L = 4 (2^L − 1): "doubles" only asymptotically
+/// (T_{L+1} = 2 T_L + 4). Eons: 9 at every level.
+#[test]
+fn refinement_counts_and_node_types() {
+    use subdlab::schemes::four_three::{classify, NodeType};
+    for name in ["prism.obj", "house.obj"] {
+        let (m, p) = load(name);
+        let (q0, t0) = quads_and_triangles(&m);
+        for levels in 1..=4usize {
+            let (r, _) = refine_mesh(four_three(None).as_ref(), &m, &p, levels).unwrap();
+            assert_eq!(quads_and_triangles(&r), (q0 << (2 * levels), t0 << (2 * levels)), "{name} L={levels}");
+            let types: Vec<NodeType> = (0..r.num_vertices()).map(|v| classify(&r, v).unwrap().1).collect();
+            let eons = types.iter().filter(|t| **t == NodeType::Eon).count();
+            let transitions = types.iter().filter(|t| matches!(t, NodeType::Transition { .. })).count();
+            assert_eq!(eons, m.num_vertices(), "{name} L={levels}: every input vertex is an eon");
+            if name == "house.obj" {
+                assert_eq!(transitions, 4 * ((1 << levels) - 1), "house L={levels}");
+            }
+        }
+    }
+}
+
+/// β_k of (4b), evaluated here.
+fn beta(k: usize, n: usize) -> f64 {
+    (1.0 + 2.0 * cos2pi(k % n, n)) / n as f64
+}
+
+/// Section 2: the new node on an edge at an eon is (σ−1)/σ·(4b) + 1/σ·(regular)
+/// in steps σ ≤ 3, and (4b) alone afterwards. On the prism (eons QQT, n = 3),
+/// from the refined mesh of step σ − 1, compute both stencils by hand for every
+/// edge at input vertex 0 and compare with step σ of `refine`.
+#[test]
+fn sigma_blending_of_rule_4b() {
+    let (m, p) = load("prism.obj");
+    let s = four_three(None);
+    for sigma in 2..=5usize {
+        let (m1, p1) = refine_mesh(s.as_ref(), &m, &p, sigma - 1).unwrap();
+        let (_, p2) = refine_mesh(s.as_ref(), &m, &p, sigma).unwrap();
+        let r = Topology::PrimalSplit(TriangleSplit::FourTriangles).refine(&m1).unwrap();
+        let share = if sigma <= 3 { (sigma - 1) as f64 / sigma as f64 } else { 1.0 };
+        let fan = m1.vertex_fan(0).unwrap();
+        let n = fan.len();
+        let u: Vec<usize> = fan.iter().map(|f| f[1]).collect();
+        for i in 0..n {
+            let mut four_b = [0.0; 3];
+            let mut regular = [0.0; 3];
+            // regular rule for edge (0, u_i) between fan faces i − 1 and i
+            let (before, after) = (&fan[(i + n - 1) % n], &fan[i]);
+            let quad_sides = usize::from(before.len() == 4) + usize::from(after.len() == 4);
+            for c in 0..3 {
+                four_b[c] = 0.5 * p1[0][c] + 0.25 * p1[u[i]][c];
+                for j in 0..n {
+                    four_b[c] += 0.25 * beta((i + n - j) % n, n) * p1[u[j]][c];
+                }
+                let ends = if quad_sides > 0 { 6.0 / 16.0 } else { 3.0 / 8.0 };
+                regular[c] = ends * (p1[0][c] + p1[u[i]][c]);
+                for face in [before, after] {
+                    // the corners of the face that are not on the edge
+                    for &v in face.iter().filter(|&&v| v != 0 && v != u[i]) {
+                        regular[c] += if face.len() == 4 { 1.0 / 16.0 } else { 1.0 / 8.0 } * p1[v][c];
+                    }
+                }
+            }
+            let k = r
+                .vertex_origins
+                .iter()
+                .position(|o| *o == Origin::Edge(0, u[i]) || *o == Origin::Edge(u[i], 0))
+                .unwrap();
+            for c in 0..3 {
+                let want = share * four_b[c] + (1.0 - share) * regular[c];
+                assert!((p2[k][c] - want).abs() < 1e-13, "σ={sigma} edge {i}: {} vs {want}", p2[k][c]);
+            }
+        }
+    }
+}
+
+/// Lemma 3.8 (convex hull): "The 4-3 subdivision surface lies in the convex hull
+/// of its control points, if, for n > 3 and steps σ ≤ σ0, (σ−1)/σ times rule
+/// (4a') is added to 1/σ times rule (4a)." Read literally together with section
+/// 2's blending, step 1 uses the regular rules only and step 2 uses (4b) and
+/// (4a') with share 1/2. (4a') changes only the new eon, so it cannot help the
+/// new edge nodes v_0 of step 2, and a far quad corner w_i reaches v_0 through
+/// the two step-1 edge nodes of its quad (weight 1/16 each) and the (4b) weights
+/// β: contribution (1/2)(1/4)(1/16)(β_k + β_{k+1}). At an n = 5 eon, opposite
+/// the quad (k = 2): (β_2 + β_3)/128 < 0. mixed-quads.obj has quad eons of
+/// valence 5 whose w_i are input vertices; the most negative composite weight
+/// after two steps is exactly that value, with and without (4a'). The proof's
+/// step-2 term (β_i + β_{i−1})/64 + 1/(32n) counts (4b) at full weight and
+/// (4a') one step early; the paper's bound −1/(64n) for the omitted term holds.
+#[test]
+fn lemma_3_8_convex_hull_fails_at_step_two() {
+    let (m, _) = load("mixed-quads.obj");
+    let want = (beta(2, 5) + beta(3, 5)) / 128.0;
+    assert!(want < 0.0 && want > -1.0 / (64.0 * 5.0));
+    for t in ["0", "1"] {
+        let s = schemes::build("four-three", &[("eon_quad_term".into(), t.into())]).unwrap();
+        let mut min = f64::MAX;
+        for src in 0..m.num_vertices() {
+            let unit: Vec<[f64; 3]> =
+                (0..m.num_vertices()).map(|v| [f64::from(u8::from(v == src)), 0.0, 0.0]).collect();
+            let (_, out) = refine_mesh(s.as_ref(), &m, &unit, 2).unwrap();
+            min = out.iter().map(|x| x[0]).fold(min, f64::min);
+        }
+        assert!((min - want).abs() < 1e-15, "t={t}: most negative weight {min} vs (β2+β3)/128 = {want}");
+    }
+}
+
+fn subdlab_cli(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_subdlab")).args(args).output().unwrap()
+}
+
+/// `--faces` on every analysis command; malformed sequences are one-line errors.
+#[test]
+fn cli_faces_option() {
+    for cmd in ["spectrum", "stencils", "matrix"] {
+        let out = subdlab_cli(&[cmd, "four-three", "--valence", "5", "--faces", "QQTQT"]);
+        assert!(out.status.success(), "{cmd}: {}", String::from_utf8_lossy(&out.stderr));
+    }
+    let out = subdlab_cli(&["spectrum", "four-three", "-n", "4", "--faces", "QTQT", "--json"]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(
+        (v["faces"].as_str(), v["method"].as_str(), v["matrix_size"].as_u64()),
+        (Some("QTQT"), Some("dft"), Some(19))
+    );
+    for (args, needle) in [
+        (vec!["spectrum", "four-three", "-n", "4", "--faces", "QQXT"], "neither Q"),
+        (vec!["spectrum", "four-three", "-n", "5", "--faces", "QQTT"], "4 letters but the valence is 5"),
+        (vec!["stencils", "four-three", "-n", "3", "--faces", ""], "0 letters"),
+        (vec!["matrix", "loop", "-n", "4", "--faces", "TTTT"], "takes no --faces"),
+        (vec!["spectrum", "khan-mustafa", "-n", "4", "--faces", "QQQQ"], "takes no --faces"),
+        (vec!["spectrum", "four-three", "-n", "4", "--faces", "QQTT", "--method", "dft"], "no rotation symmetry"),
+        (vec!["spectrum", "four-three", "-n", "3", "-p", "centre_weight=0.8"], "out of range"),
+    ] {
+        let out = subdlab_cli(&args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success() && !err.contains("panicked"), "{args:?}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+}
+
+/// `subdlab refine` on the shipped mixed meshes; a pentagon is refused by name.
+#[test]
+fn cli_refine_mixed_meshes() {
+    let dir = tempfile::tempdir().unwrap();
+    for name in ["prism.obj", "house.obj"] {
+        let out_path = dir.path().join(name);
+        let out = subdlab_cli(&[
+            "refine",
+            mesh_path(name).to_str().unwrap(),
+            "--scheme",
+            "four-three",
+            "--levels",
+            "2",
+            "-o",
+            out_path.to_str().unwrap(),
+        ]);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let (m, _) = subdlab::mesh::obj::read_obj_file(&out_path).unwrap();
+        let (m0, _) = load(name);
+        assert_eq!(m.num_faces(), 16 * m0.num_faces());
+    }
+    let pent = dir.path().join("pentaprism.obj");
+    let mut text = String::new();
+    for k in 0..5 {
+        let a = std::f64::consts::TAU * k as f64 / 5.0;
+        text += &format!("v {} {} 0\n", a.cos(), a.sin());
+    }
+    for k in 0..5 {
+        let a = std::f64::consts::TAU * k as f64 / 5.0;
+        text += &format!("v {} {} 1\n", a.cos(), a.sin());
+    }
+    text += "f 5 4 3 2 1\nf 6 7 8 9 10\n";
+    for k in 0..5 {
+        let (a, b) = (k + 1, (k + 1) % 5 + 1);
+        text += &format!("f {a} {b} {} {}\n", b + 5, a + 5);
+    }
+    std::fs::write(&pent, text).unwrap();
+    let out = subdlab_cli(&[
+        "refine",
+        pent.to_str().unwrap(),
+        "--scheme",
+        "four-three",
+        "-l",
+        "1",
+        "-o",
+        dir.path().join("x.obj").to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        !out.status.success() && err.trim_end().lines().count() == 1 && err.contains("triangles and quads"),
+        "{err}"
+    );
 }
