@@ -805,3 +805,123 @@ fn cli_refine_mixed_meshes() {
         "{err}"
     );
 }
+
+/// Rule (4a') used stationarily (eon_quad_term = 1) changes the spectrum the
+/// paper analyses. For an all-quad eon, Fourier block 0 on (eon, mean of v_i,
+/// mean of w_i) is [[c, 15/16 − c, 1/16], [1/2, 1/2, 0], [1/4, 1/2, 1/4]]
+/// ((4a') adds (1/16)(w̄ − v̄); (4b) keeps the mean of v at (v* + v̄)/2; face
+/// points are (v* + v_i + w_i + v_{i+1})/4). Besides 1 its eigenvalues are the
+/// roots of λ² − (c − 1/4) λ + (c/4 − 7/64) (trace c + 3/4, determinant
+/// c/4 − 7/64), replacing the c − 1/2 and one 1/4 of rule (4a); at c = 3/8
+/// they are (1 ± √5)/16. So Theorem 3.7's 1/4-count holds for (4a) only, which is
+/// what the paper analyses ((4a') is meant for the first steps).
+#[test]
+fn rule_4a_prime_replaces_c_minus_half_and_one_quarter() {
+    use subdlab::numeric::exact::Poly;
+    for (faces, cw) in [("QQQ", "3/8"), ("QQQ", "3/4"), ("QQQQQQ", "3/5"), ("QQQQQQ", "1/2")] {
+        let s =
+            schemes::build("four-three", &[("centre_weight".into(), cw.into()), ("eon_quad_term".into(), "1".into())])
+                .unwrap();
+        let config = Configuration::with_faces(s.as_ref(), faces.len(), faces).unwrap();
+        let a = analyse(s.as_ref(), &config, &Options::default()).unwrap();
+        let p = to_qmatrix(a.exact_matrix.as_ref().unwrap()).charpoly();
+        let c = ratio(cw);
+        let quadratic = Poly { coeffs: vec![c.clone() / q(4, 1) - q(7, 64), q(1, 4) - c.clone(), q(1, 1)] };
+        let (_, rem) = p.div_rem(&quadratic);
+        assert!(rem.is_zero(), "{faces} c={cw}: the block-0 quadratic divides det(λ − S)");
+        let n = faces.len();
+        let quarters = p.root_multiplicity(&q(1, 4)).0;
+        // n + n_□ − 3 with n_□ = n, one fewer; the quadratic has 1/4 as a root only if c/4 − 7/64 = (c − 1/2)/4, never
+        assert_eq!(quarters, 2 * n - 4, "{faces} c={cw}");
+    }
+}
+
+/// The A_4 rules factor as bilinear refinement followed by averaging the four
+/// direct neighbours (section 3, "to compute the A_4 box-spline node after
+/// bilinear interpolation, the node is replaced by the average of its four
+/// neighbors"), and Catmull–Clark's as bilinear refinement followed by
+/// [1 2 1; 2 4 2; 1 2 1]/16: products of masks, computed here.
+#[test]
+fn factored_stencils_of_section_3() {
+    fn mul(a: &HashMap<(i64, i64), i64>, b: &HashMap<(i64, i64), i64>) -> HashMap<(i64, i64), i64> {
+        let mut out = HashMap::new();
+        for (&(x, y), &c) in a {
+            for (&(u, v), &d) in b {
+                *out.entry((x + u, y + v)).or_insert(0) += c * d;
+            }
+        }
+        out.retain(|_, c| *c != 0);
+        out
+    }
+    // bilinear refinement (1 + x)²(1 + y)²/4 centred: mask with denominator 4
+    let (bilinear, den_b) = box_mask(&[(1, 0), (-1, 0), (0, 1), (0, -1)]);
+    assert_eq!(den_b, 4);
+    let four_neighbours: HashMap<(i64, i64), i64> =
+        HashMap::from([((1, 0), 1), ((-1, 0), 1), ((0, 1), 1), ((0, -1), 1)]);
+    let (a4, den4) = box_mask(&[(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, 1)]);
+    // (numerators over 4) * (numerators over 4) = numerators over 16 = den4
+    assert_eq!(den4, 16);
+    assert_eq!(mul(&bilinear, &four_neighbours), a4);
+    let cc_smooth: HashMap<(i64, i64), i64> =
+        (-1..=1).flat_map(|x: i64| (-1..=1).map(move |y: i64| ((x, y), (2 - x.abs()) * (2 - y.abs())))).collect();
+    let (bicubic, den_cc) = box_mask(&[(1, 0), (-1, 0), (1, 0), (-1, 0), (0, 1), (0, -1), (0, 1), (0, -1)]);
+    assert_eq!(den_cc, 64);
+    assert_eq!(mul(&bilinear, &cc_smooth), bicubic);
+}
+
+/// Lemma 3.2 (ripple-free), the direction the proof calls trivial: A_4
+/// subdivision maps a ridge (data depending only on one of the directions
+/// (1,0), (0,1), (1,1), (1,−1)) to a ridge in the same direction, so constant
+/// differences along it stay constant; Catmull–Clark's bicubic mask does not for
+/// the diagonals. Ridge profile g: 4 on the line, a on its neighbours, 0 beyond.
+/// Also the proof's algebra: with b = 2 + a/2, v = 1 + a/2, the first line
+/// e − e' = (bα + 4βb + 2(4 + a)γ) − (4α + 4βb + 2(b + v)γ) equals
+/// α(a/2 − 2) + 2γ; the paper prints α(2 − a/2) − 2γ, its negative (a sign
+/// slip; the conclusion α = γ = 0 is unaffected).
+#[test]
+fn lemma_3_2_ridges() {
+    let ridge = |profile: fn(i64, i64) -> i64, mask: &HashMap<(i64, i64), i64>| -> bool {
+        // fine values at p = Σ_q a(p − 2q) g(q) on a window; a ridge stays a ridge
+        // iff the fine value depends on the same linear form of p only
+        let g = |k: i64| match k.abs() {
+            0 => 40,
+            1 => 17, // a = 1.7, scaled by 10
+            _ => 0,
+        };
+        let fine = |p: (i64, i64)| -> i64 {
+            let mut s = 0;
+            for qx in -8..=8 {
+                for qy in -8..=8 {
+                    if let Some(w) = mask.get(&(p.0 - 2 * qx, p.1 - 2 * qy)) {
+                        s += w * g(profile(qx, qy));
+                    }
+                }
+            }
+            s
+        };
+        let mut by_level: HashMap<i64, i64> = HashMap::new();
+        for x in -4..=4 {
+            for y in -4..=4 {
+                let v = fine((x, y));
+                if *by_level.entry(profile(x, y)).or_insert(v) != v {
+                    return false;
+                }
+            }
+        }
+        true
+    };
+    let profiles: [fn(i64, i64) -> i64; 4] = [|x, _| x, |_, y| y, |x, y| x - y, |x, y| x + y];
+    let (a4, _) = box_mask(&[(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, 1)]);
+    let (bicubic, _) = box_mask(&[(1, 0), (-1, 0), (1, 0), (-1, 0), (0, 1), (0, -1), (0, 1), (0, -1)]);
+    for (k, p) in profiles.iter().enumerate() {
+        assert!(ridge(*p, &a4), "A_4 keeps ridge {k}");
+        assert_eq!(ridge(*p, &bicubic), k < 2, "Catmull–Clark keeps only the axis ridges ({k})");
+    }
+    for (al, be, ga, a) in [(0.3f64, 0.1f64, 0.05f64, 1.0f64), (0.2, 0.15, 0.07, 3.0)] {
+        let (b, v) = (2.0 + a / 2.0, 1.0 + a / 2.0);
+        let first = (b * al + 4.0 * be * b + 2.0 * (4.0 + a) * ga) - (4.0 * al + 4.0 * be * b + 2.0 * (b + v) * ga);
+        assert!((first - (al * (a / 2.0 - 2.0) + 2.0 * ga)).abs() < 1e-12);
+        let printed = al * (2.0 - a / 2.0) - 2.0 * ga;
+        assert!((first + printed).abs() < 1e-12 && first.abs() > 1e-3);
+    }
+}
