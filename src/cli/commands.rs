@@ -212,7 +212,10 @@ fn compact_blocks(b: &[usize]) -> String {
 }
 
 pub(super) fn stencil_table(st: &crate::spectrum::stencils::Stencils) -> String {
-    let mut out = format!("scheme {}  valence {}  neighbourhood {:?}\n\n", st.scheme, st.valence, st.neighbourhood);
+    let mut out = format!(
+        "scheme {}  valence {}  faces {}  neighbourhood {:?}\n\n",
+        st.scheme, st.valence, st.faces, st.neighbourhood
+    );
     out += &format!("{:<22} {:>22}", "vertex", "limit");
     for k in 0..st.tangent.len() {
         out += &format!(" {:>22}", format!("tangent {}", k + 1));
