@@ -420,26 +420,66 @@ fn spectrum_of_s_for_every_face_sequence_up_to_valence_8() {
 
 /// Theorem 3.7 also claims bounded curvature. With λ1 = 1/2 the second-order
 /// eigenvalue is λ1² = 1/4; a Jordan block there makes the second-order part of
-/// the k-th ring grow like k·4^−k, i.e. curvature unbounded (logarithmically).
-/// Why one should expect one: in the rotation-symmetric all-quad case, Fourier
-/// block m ∉ {0, ±1} holds a 1/4 of M (the eigenvector of (I + E + C)/4 in
-/// mode m) and the 1/4 of the face points w_i in mode m, coupled through the
-/// face-point rule (w_i sees v_i and v_{i+1}); the coupling cancels only where
-/// the mode alternates (m = n/2). Checked exactly: rank(S − I/4) is larger than
-/// size − (algebraic multiplicity of 1/4). Already at n = 4 (QQQT) the coupling
-/// is absent; the theorem's curvature claim fails at n = 6 (all quads).
+/// the k-th ring grow like k·4^−k, i.e. curvature unbounded (logarithmically),
+/// so the spectral argument for bounded curvature fails. Derivation for an
+/// all-quad eon of valence n ≥ 5: in Fourier mode m ∉ {0, ±1}, M has the 1/4
+/// eigenvector (eon 0, v_j = ω^{mj}); the face points w_i' = (v* + v_i + w_i +
+/// v_{i+1})/4 have 1/4 on the diagonal and depend on nothing else outside M, so
+/// e_w is the left 1/4-vector of the outer block and the coupling is
+/// (1 + ω^m)/4 · ω^{mj} ≠ 0 unless ω^m = −1 (m = n/2). Hence one 2×2 Jordan
+/// block per m ∈ {2, ..., n−2}, m ≠ n/2: n − 3 − [n even] of them. Exact at
+/// n = 6 (ranks over Q), floating-point geometric multiplicities at 5, 7, 8.
 #[test]
 fn theorem_3_7_bounded_curvature_fails_on_a_defective_quarter() {
-    let a = analyse_faces("QQQQQQ", None, NeighbourhoodKind::Analysis, true);
-    let s = to_qmatrix(a.exact_matrix.as_ref().unwrap());
-    let (alg, _) = s.charpoly().root_multiplicity(&q(1, 4));
-    let geo = s.n - s.shifted(&q(1, 4)).rank();
-    assert!(geo < alg, "1/4 should be defective: algebraic {alg}, geometric {geo}");
-    // the modes m = 2 and m = 4 carry a Jordan block each, m = 3 does not
-    assert_eq!(alg - geo, 2);
-    // and the float path reports the same
-    let e = a.spectrum.eigenvalues.iter().find(|e| (e.re - 0.25).abs() < 1e-9).unwrap();
-    assert!(e.defective);
+    for n in 5..=8usize {
+        let faces = "Q".repeat(n);
+        let a = analyse_faces(&faces, None, NeighbourhoodKind::Analysis, n == 6);
+        let jordan = n - 3 - usize::from(n % 2 == 0);
+        let e = a.spectrum.eigenvalues.iter().find(|e| (e.re - 0.25).abs() < 1e-9).unwrap();
+        assert_eq!(e.algebraic_multiplicity, 2 * n - 3, "{faces}: n + n_□ − 3");
+        assert_eq!(e.algebraic_multiplicity - e.geometric_multiplicity, jordan, "{faces}");
+        if n == 6 {
+            let s = to_qmatrix(a.exact_matrix.as_ref().unwrap());
+            let (alg, _) = s.charpoly().root_multiplicity(&q(1, 4));
+            let geo = s.n - s.shifted(&q(1, 4)).rank();
+            assert_eq!((alg, alg - geo), (2 * n - 3, jordan), "exact");
+        }
+    }
+}
+
+/// The remark after Lemma 3.5: weighting E + C by 1 − ε and I by 1 + ε gives
+/// eigenvalues in {1, 1/2, (1 − ε)/4, 1/2 − α}. On the modes m ∉ {0, ±1}, where
+/// E + C vanishes, the block is (1 + ε)/4 · I, so the eigenvalue is (1 + ε)/4,
+/// not (1 − ε)/4 (the conclusion, ≠ 1/4 for ε ≠ 0, is unaffected). Newton power
+/// sums of the perturbed M, built here.
+#[test]
+fn remark_after_lemma_3_5_perturbed_m() {
+    for n in 4..=9usize {
+        for eps in [0.2f64, -0.3] {
+            let cw = 0.6;
+            let mut m = closed_form_m(n, cw);
+            for i in 0..n {
+                for j in 0..n {
+                    let e = 1.0 / n as f64;
+                    let c = 2.0 / n as f64 * cos2pi((i + n - j) % n, n);
+                    let id = f64::from(u8::from(i == j));
+                    m[1 + i][1 + j] = 0.25 * ((1.0 + eps) * id + (1.0 - eps) * (e + c));
+                }
+            }
+            let power_sums = |quarter: f64| -> bool {
+                let mut p = m.clone();
+                (1..=n + 1).all(|k| {
+                    let tr: f64 = (0..=n).map(|i| p[i][i]).sum();
+                    let roots = [1.0, 0.5, 0.5, cw - 0.5].into_iter().chain(std::iter::repeat(quarter).take(n - 3));
+                    let want: f64 = roots.map(|r: f64| r.powi(k as i32)).sum();
+                    p = mat_mul(&p, &m);
+                    (tr - want).abs() < 1e-12
+                })
+            };
+            assert!(power_sums((1.0 + eps) / 4.0), "n={n} ε={eps}");
+            assert!(!power_sums((1.0 - eps) / 4.0), "n={n} ε={eps}: the printed (1 − ε)/4");
+        }
+    }
 }
 
 /// Sizes. Minimal invariant set: the eon rule and (4b) use only the eon and its
