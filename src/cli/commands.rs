@@ -48,9 +48,10 @@ pub fn dispatch(cmd: Command) -> Result<(), String> {
                 "mtx" => to_matrix_market(
                     &analysis.matrix,
                     &format!(
-                        "subdlab local subdivision matrix: scheme {} valence {} neighbourhood {:?}",
+                        "subdlab local subdivision matrix: scheme {} valence {} faces {} neighbourhood {:?}",
                         scheme.name(),
                         common.valence,
+                        analysis.spectrum.faces,
                         analysis.spectrum.neighbourhood
                     ),
                 ),
@@ -95,7 +96,10 @@ pub(super) fn parse_params(list: &[String]) -> Result<Vec<(String, String)>, Str
 
 fn run_analysis(a: &AnalysisArgs) -> Result<(Box<dyn Scheme>, Analysis), String> {
     let scheme = schemes::build(&a.scheme, &parse_params(&a.params)?)?;
-    let config = Configuration::regular(scheme.as_ref(), a.valence)?;
+    let config = match &a.faces {
+        None => Configuration::regular(scheme.as_ref(), a.valence)?,
+        Some(faces) => Configuration::with_faces(scheme.as_ref(), a.valence, faces)?,
+    };
     let neighbourhood: NeighbourhoodKind = a.neighbourhood.parse()?;
     let method = match a.method.as_deref() {
         None => None,
@@ -210,7 +214,10 @@ fn compact_blocks(b: &[usize]) -> String {
 }
 
 pub(super) fn stencil_table(st: &crate::spectrum::stencils::Stencils) -> String {
-    let mut out = format!("scheme {}  valence {}  neighbourhood {:?}\n\n", st.scheme, st.valence, st.neighbourhood);
+    let mut out = format!(
+        "scheme {}  valence {}  faces {}  neighbourhood {:?}\n\n",
+        st.scheme, st.valence, st.faces, st.neighbourhood
+    );
     out += &format!("{:<22} {:>22}", "vertex", "limit");
     for k in 0..st.tangent.len() {
         out += &format!(" {:>22}", format!("tangent {}", k + 1));

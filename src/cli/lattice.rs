@@ -93,6 +93,9 @@ fn prepare(a: &AnalysisArgs, scheme: &dyn LatticeScheme) -> Result<LatticeAnalys
     if a.valence != 4 {
         return Err(format!("{name} is defined on the regular quad lattice only (valence 4)"));
     }
+    if a.faces.is_some() {
+        return Err(format!("scheme '{name}' takes no --faces: it lives on the regular quad lattice"));
+    }
     if let Some(p) = a.params.first() {
         let key = p.split_once('=').map(|(k, _)| k.trim()).unwrap_or(p.as_str());
         return Err(format!("scheme '{name}' has no parameters (got '{key}')"));

@@ -109,6 +109,11 @@ pub struct AnalysisArgs {
     /// scheme parameter NAME=VALUE (3/8, 0.375 and 1e-3 are accepted); repeatable
     #[arg(long = "param", short = 'p')]
     pub params: Vec<String>,
+    /// face sequence around the centre, counter-clockwise, one letter per face:
+    /// Q (quad) or T (triangle), e.g. QQTTT; as many letters as the valence
+    /// (schemes of mixed meshes only: four-three; default all quads)
+    #[arg(long)]
+    pub faces: Option<String>,
     /// minimal (smallest invariant set) or analysis (also defines the first limit ring)
     #[arg(long, default_value = "analysis")]
     pub neighbourhood: String,

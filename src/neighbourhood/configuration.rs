@@ -28,6 +28,38 @@ impl Configuration {
         })
     }
 
+    /// The configuration with the given face sequence around the centre (one
+    /// letter per sector, counter-clockwise: Q a quad, T a triangle), for schemes
+    /// that accept face sequences (4-3 subdivision).
+    pub fn with_faces(scheme: &dyn Scheme, n: usize, faces: &str) -> Result<Self, String> {
+        check_valence(n)?;
+        if !scheme.face_sequences() {
+            return Err(format!(
+                "scheme '{}' takes no --faces: its configurations are all {}",
+                scheme.name(),
+                match scheme.sector_kind() {
+                    SectorKind::Quad => "quads",
+                    SectorKind::Tri => "triangles",
+                }
+            ));
+        }
+        let sectors = faces
+            .chars()
+            .enumerate()
+            .map(|(k, c)| match c {
+                'Q' => Ok(SectorKind::Quad),
+                'T' => Ok(SectorKind::Tri),
+                _ => {
+                    Err(format!("--faces '{faces}': character {} ('{c}') is neither Q (quad) nor T (triangle)", k + 1))
+                }
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        if sectors.len() != n {
+            return Err(format!("--faces '{faces}' has {} letters but the valence is {n}", sectors.len()));
+        }
+        Ok(Configuration { centre: scheme.centre_kind(), sectors, face_control: scheme.face_control() })
+    }
+
     pub fn valence(&self) -> usize {
         self.sectors.len()
     }

@@ -57,9 +57,12 @@ pub fn refine_mesh(
             ));
         }
         let refined = scheme.topology().refine(&mesh)?;
+        // non-stationary schemes (4-3 blends in its eon rules over the first steps)
+        let step_rules = scheme.at_level(level);
+        let rules: &dyn Scheme = step_rules.as_deref().unwrap_or(scheme);
         let mut stencils: Vec<Option<Stencil<f64>>> = Vec::with_capacity(refined.vertex_origins.len());
         for &origin in &refined.vertex_origins {
-            let st = <f64 as SchemeWeight>::stencil(scheme, &mesh, origin)
+            let st = <f64 as SchemeWeight>::stencil(rules, &mesh, origin)
                 .map_err(|_| format!("{}: a weight is not representable", scheme.name()))?;
             match st {
                 Some(s) => stencils.push(Some(s)),
@@ -157,6 +160,9 @@ fn not_applicable(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin, level: u
 
 /// What a scheme needs of its input mesh, for error messages.
 fn requirement(scheme: &dyn Scheme) -> &'static str {
+    if let Some(r) = scheme.mesh_requirement() {
+        return r;
+    }
     match scheme.topology() {
         Topology::PrimalSplit(TriangleSplit::FourTriangles) => "a closed triangle mesh",
         _ => "a closed mesh",

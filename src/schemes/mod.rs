@@ -4,6 +4,7 @@
 
 pub mod catmull_clark;
 pub mod doo_sabin;
+pub mod four_three;
 // a regular-lattice scheme: registered in `crate::lattice::registry`, not here
 pub mod khan_mustafa;
 pub mod loop_subdivision;
@@ -54,6 +55,22 @@ pub trait Scheme: Rules<f64> + Rules<Rational> + Send + Sync {
     fn vertex_param_rule(&self, _mesh: &PolyMesh, _origin: Origin) -> Option<crate::refine::Stencil<f64>> {
         None
     }
+    /// Whether the analysis accepts any sequence of quad and triangle sectors
+    /// around the centre (`--faces`), not only the regular configuration.
+    fn face_sequences(&self) -> bool {
+        false
+    }
+    /// What the scheme needs of an input mesh, for error messages of `refine`;
+    /// `None`: derived from the topology.
+    fn mesh_requirement(&self) -> Option<&'static str> {
+        None
+    }
+    /// The rules of refinement step `level` (1 = the first) of a real mesh, for
+    /// schemes whose first steps differ from the stationary rules that the
+    /// local subdivision matrix analyses; `None`: the same rules at every step.
+    fn at_level(&self, _level: usize) -> Option<Box<dyn Scheme>> {
+        None
+    }
 }
 
 /// Weight types every scheme implements rules for; lets generic code ask a
@@ -92,6 +109,7 @@ pub fn registry() -> Vec<SchemeEntry> {
         loop_subdivision::entry(),
         doo_sabin::entry(),
         non_box::entry(),
+        four_three::entry(),
         unified_sqrt3::kobbelt_entry(),
         unified_sqrt3::entry(),
     ]

@@ -23,6 +23,8 @@ pub struct StencilWeight {
 pub struct Stencils {
     pub scheme: String,
     pub valence: usize,
+    /// face sequence around the centre (Q quad, T triangle), as in the spectrum
+    pub faces: String,
     pub neighbourhood: crate::neighbourhood::NeighbourhoodKind,
     /// weights over all neighbourhood vertices (zeros included, in canonical order)
     pub limit: Vec<StencilWeight>,
@@ -101,6 +103,7 @@ pub fn stencils(spec: &Spectrum) -> Result<Stencils, String> {
     Ok(Stencils {
         scheme: spec.scheme.clone(),
         valence: spec.valence,
+        faces: spec.faces.clone(),
         neighbourhood: spec.neighbourhood,
         limit: weights(spec, &limit),
         tangent: tangent.iter().map(|t| weights(spec, t)).collect(),
