@@ -27,6 +27,10 @@ pub struct PolyMesh {
     /// (non-box subdivision). FCVs are vertices of the mesh that belong to no
     /// face cycle.
     pub face_points: Option<Vec<VertexId>>,
+    /// An extra central control point on some faces (point-augmented schemes:
+    /// the point p of PGS). Like FCVs these belong to no face cycle; unlike
+    /// FCVs only some faces carry one. Empty when no face has one.
+    pub face_centres: Vec<Option<VertexId>>,
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -79,7 +83,15 @@ impl PolyMesh {
                 }
             }
         }
-        Ok(PolyMesh { faces, num_vertices, half_edges, vertex_corner, chart: None, face_points: None })
+        Ok(PolyMesh {
+            faces,
+            num_vertices,
+            half_edges,
+            vertex_corner,
+            chart: None,
+            face_points: None,
+            face_centres: Vec::new(),
+        })
     }
 
     /// Attach face control vertices (one per face, each a vertex id of no face).
@@ -92,6 +104,25 @@ impl PolyMesh {
         }
         self.face_points = Some(fcv);
         Ok(self)
+    }
+
+    /// Attach central points to some faces (`centres[f]`: the point of face f,
+    /// if any; each a vertex of no face cycle).
+    pub fn with_face_centres(mut self, centres: Vec<Option<VertexId>>) -> Result<Self, String> {
+        if centres.len() != self.faces.len() {
+            return Err(format!("{} face centre entries for {} faces", centres.len(), self.faces.len()));
+        }
+        if let Some(&v) = centres.iter().flatten().find(|&&v| v >= self.num_vertices || self.vertex_corner[v].is_some())
+        {
+            return Err(format!("face centre {v} is missing or is a corner of a face"));
+        }
+        self.face_centres = centres;
+        Ok(self)
+    }
+
+    /// The central point of face f, if it carries one.
+    pub fn face_centre(&self, f: FaceId) -> Option<VertexId> {
+        self.face_centres.get(f).copied().flatten()
     }
 
     /// The face control vertex of face f, if the mesh carries them.

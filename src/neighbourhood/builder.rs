@@ -80,7 +80,7 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
             }
             vec![c]
         }
-        CentreKind::Face => {
+        CentreKind::Face | CentreKind::AugmentedFace => {
             let corners: Vec<_> = (0..n).map(|s| (s, 1, 1)).collect();
             b.face(None, &corners);
             for s in 0..n {
@@ -91,7 +91,12 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
                     }
                 }
             }
-            b.faces[0].clone()
+            let mut ring0 = b.faces[0].clone();
+            if config.centre == CentreKind::AugmentedFace {
+                // the central face's extra point sits at the origin
+                ring0.push(b.vertex(0, 0, 0));
+            }
+            ring0
         }
     };
     let mut fcv = Vec::new();
@@ -108,6 +113,11 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
     let mut mesh = PolyMesh::new(b.chart.vertex_coords.len(), b.faces).expect("patch is a manifold disc");
     if config.face_control {
         mesh = mesh.with_face_points(fcv).expect("one FCV per face");
+    }
+    if config.centre == CentreKind::AugmentedFace {
+        let mut centres = vec![None; mesh.num_faces()];
+        centres[0] = centre_set.last().copied();
+        mesh = mesh.with_face_centres(centres).expect("the centre is a vertex of no face");
     }
     mesh.chart = Some(b.chart);
     (mesh, centre_set)

@@ -19,7 +19,7 @@ use super::configuration::Configuration;
 use super::labels::{canonical_order, label_vertices, VertexLabel};
 use crate::mesh::{LatticeCoord, PolyMesh};
 use crate::refine::{apply, Origin, SparseRow, Stencil};
-use crate::schemes::{CentreKind, Scheme, SchemeWeight};
+use crate::schemes::{Scheme, SchemeWeight};
 use crate::topology::Refined;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
@@ -120,7 +120,7 @@ fn compose(levels: &[Vec<Option<Stencil<f64>>>], level0: usize) -> Vec<Option<Sp
 
 fn try_discover(scheme: &dyn Scheme, config: &Configuration, rings: usize) -> Result<Discovered, String> {
     let (patch, centre_set) = build_patch(config, rings);
-    let labels = label_vertices(&patch, &centre_set, config.centre == CentreKind::Face);
+    let labels = label_vertices(&patch, &centre_set, config.centre.is_face_centred());
     let topology = scheme.topology();
     let steps = topology.steps_per_analysis();
     let mut refinements: Vec<Refined> = Vec::new();

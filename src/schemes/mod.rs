@@ -9,6 +9,8 @@ pub mod khan_mustafa;
 pub mod loop_subdivision;
 pub mod non_box;
 pub mod params;
+pub mod pgs;
+pub mod tps;
 pub mod unified_sqrt3;
 
 use crate::mesh::{PolyMesh, SectorKind};
@@ -30,6 +32,16 @@ pub enum CentreKind {
     Vertex,
     /// an extraordinary face (Doo–Sabin, ...)
     Face,
+    /// an extraordinary face with an extra control point at its centre
+    /// (point-augmented bi-2 subdivision, PGS)
+    AugmentedFace,
+}
+
+impl CentreKind {
+    /// Whether the analysis is centred on a face (its corners form ring 0).
+    pub fn is_face_centred(self) -> bool {
+        matches!(self, CentreKind::Face | CentreKind::AugmentedFace)
+    }
 }
 
 pub trait Scheme: Rules<f64> + Rules<Rational> + Send + Sync {
@@ -84,6 +96,8 @@ pub fn registry() -> Vec<SchemeEntry> {
         non_box::entry(),
         unified_sqrt3::kobbelt_entry(),
         unified_sqrt3::entry(),
+        tps::entry(),
+        pgs::entry(),
     ]
 }
 
