@@ -80,6 +80,18 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
             }
             vec![c]
         }
+        CentreKind::Polar => {
+            // the pole, a fan of n triangles and r rings of n quads, all
+            // vertices on the spokes (spoke, ring, 0)
+            let c = b.vertex(0, 0, 0);
+            for s in 0..n {
+                b.face(Some(s), &[(s, 0, 0), (s, 1, 0), (s + 1, 1, 0)]);
+                for a in 1..=r {
+                    b.face(Some(s), &[(s, a, 0), (s, a + 1, 0), (s + 1, a + 1, 0), (s + 1, a, 0)]);
+                }
+            }
+            vec![c]
+        }
         CentreKind::Face | CentreKind::AugmentedFace => {
             let corners: Vec<_> = (0..n).map(|s| (s, 1, 1)).collect();
             b.face(None, &corners);

@@ -163,9 +163,10 @@ fn try_discover(scheme: &dyn Scheme, config: &Configuration, rings: usize) -> Re
     // refinements, then walk the stencils of refinements r, r-1, ..., 1 down to
     // level 0. This is linear in the stencil sizes (forward dependency sets
     // would cost O(n^3) at the dense central face of a dual scheme).
-    let centre_lookup: HashSet<usize> = centre_set.iter().copied().collect();
+    // the first ring: faces touching ring 0 (or deeper rings, see `CentreKind::first_ring_depth`)
+    let depth = config.centre.first_ring_depth();
     let mut region_faces: Vec<bool> =
-        patch.faces().iter().map(|f| f.iter().any(|v| centre_lookup.contains(v))).collect();
+        patch.faces().iter().map(|f| f.iter().any(|&v| labels[v].ring <= depth)).collect();
     let mut all_stencils = stencils_by_level.clone();
     let mut collected: BTreeSet<usize> = BTreeSet::new();
     let mut previous: Option<BTreeSet<usize>> = None;

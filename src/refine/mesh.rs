@@ -153,6 +153,7 @@ fn requirement(scheme: &dyn Scheme) -> &'static str {
     match scheme.topology() {
         Topology::PrimalSplit(TriangleSplit::FourTriangles) => "a closed triangle mesh",
         Topology::TernarySplit => "a closed quad mesh",
+        Topology::PolarSplit => "a closed polar net (poles with triangle fans, rings of quads)",
         Topology::AugmentedDual => {
             "a closed mesh whose vertices all have valence 4 (a Doo–Sabin net: apply one doo-sabin step first)"
         }

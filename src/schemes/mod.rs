@@ -10,6 +10,7 @@ pub mod loop_subdivision;
 pub mod non_box;
 pub mod params;
 pub mod pgs;
+pub mod polar_bi2;
 pub mod tps;
 pub mod unified_sqrt3;
 
@@ -35,12 +36,26 @@ pub enum CentreKind {
     /// an extraordinary face with an extra control point at its centre
     /// (point-augmented bi-2 subdivision, PGS)
     AugmentedFace,
+    /// a pole: a vertex surrounded by triangles, rings of quads outside
+    /// (polar bi-2 subdivision)
+    Polar,
 }
 
 impl CentreKind {
     /// Whether the analysis is centred on a face (its corners form ring 0).
     pub fn is_face_centred(self) -> bool {
         matches!(self, CentreKind::Face | CentreKind::AugmentedFace)
+    }
+    /// Vertex rings (beyond ring 0) whose faces carry the first ring of the
+    /// limit surface. Normally the faces touching ring 0. In a polar layout a
+    /// bi-2 ring of patches spans three rows of control points, and the first
+    /// ring that is not degenerate at the pole spans rows 1 to 3, i.e. the
+    /// faces touching rings 0 to 2.
+    pub fn first_ring_depth(self) -> usize {
+        match self {
+            CentreKind::Polar => 2,
+            _ => 0,
+        }
     }
 }
 
@@ -98,6 +113,7 @@ pub fn registry() -> Vec<SchemeEntry> {
         unified_sqrt3::entry(),
         tps::entry(),
         pgs::entry(),
+        polar_bi2::entry(),
     ]
 }
 

@@ -7,6 +7,7 @@
 pub mod augmented_dual;
 pub mod dual_split;
 pub mod fcv_split;
+pub mod polar_split;
 pub mod primal_split;
 pub mod sqrt3_split;
 pub mod ternary_split;
@@ -39,6 +40,8 @@ pub enum Topology {
     /// the dual split plus a central point per non-quad (or already augmented)
     /// face (point-augmented bi-2, PGS)
     AugmentedDual,
+    /// radial-only binary split of polar nets (polar bi-2)
+    PolarSplit,
 }
 
 impl Topology {
@@ -50,6 +53,7 @@ impl Topology {
             Topology::FcvSplit => fcv_split::refine(mesh),
             Topology::TernarySplit => ternary_split::refine(mesh),
             Topology::AugmentedDual => augmented_dual::refine(mesh),
+            Topology::PolarSplit => polar_split::refine(mesh),
         }
     }
     /// Refinements in one analysis step: the number after which the refined
