@@ -185,3 +185,111 @@ fn refines_closed_quad_meshes_and_refuses_triangles() {
     let err = refine_mesh(scheme("tps").as_ref(), &m, &points, 1).unwrap_err();
     assert!(err.contains("quad mesh"), "{err}");
 }
+
+// ---------------------------------------------------------------------------
+// Adjustable TPS (section 4.1). The paper prints no rules, only eq. (22); the
+// scheme's rules are reconstructed from (22) (see src/schemes/tps.rs), so
+// agreement with (22) checks the reconstruction and its implementation, not
+// the paper. What is checked against the paper: (22) at e = 1/3 is the TPS
+// formula, and the limit point coincides with TPS's (its choice of α1, α2).
+
+fn adjustable(e: f64, n: usize) -> subdlab::spectrum::Analysis {
+    use subdlab::neighbourhood::Configuration;
+    use subdlab::spectrum::{analyse, Options};
+    let s = subdlab::schemes::build("tps", &[("e".into(), format!("{e}"))]).unwrap();
+    let config = Configuration::regular(s.as_ref(), n).unwrap();
+    analyse(s.as_ref(), &config, &Options { exact: false, ..Options::default() }).unwrap()
+}
+
+fn eq_22(e: f64, c: f64) -> f64 {
+    (1.0 - 2.0 * e)
+        * (e * e * (1.0 + 2.0 * c)
+            + (1.0 - e) * (1.0 - e)
+            + 2.0 * e * ((c + 1.0) * (e * e * c + (1.0 - e) * (1.0 - e))).sqrt())
+}
+
+#[test]
+fn eq_22_at_one_third_is_the_tps_subdominant_eigenvalue() {
+    for n in 3..=100 {
+        let c = cos2pi(1, n);
+        assert!((eq_22(1.0 / 3.0, c) - paper_subdominant(c)).abs() < 1e-14, "n = {n}");
+    }
+}
+
+#[test]
+fn adjustable_blocks_k_reproduce_eq_22() {
+    for e in [0.1, 0.2, 0.25, 0.4] {
+        for n in 5..=30 {
+            let a = adjustable(e, n);
+            let sub = a.spectrum.verdict.subdominant.unwrap();
+            assert!((sub - eq_22(e, cos2pi(1, n))).abs() < 1e-12, "e = {e}, n = {n}");
+            assert!(a.spectrum.verdict.c1_spectral, "e = {e}, n = {n}: {:?}", a.spectrum.verdict.reasons);
+        }
+    }
+}
+
+#[test]
+fn adjustable_regular_valence_is_a_tensor_product() {
+    // 1-D rules (module comment of src/schemes/tps.rs): c'_{±1} = 2e c_0 + (1−2e) c_{±1},
+    // c'_0 = e(1−2e)(c_{-1} + c_1) + (1 − 2e(1−2e)) c_0. Antisymmetric mode: 1 − 2e;
+    // symmetric: trace (1 − 2e) + 1 − 2e(1 − 2e), one root 1, the other (1 − 2e)²;
+    // the two outer points add 0, 0. At e = 1/5: {1, 3/5, 9/25, 0, 0}.
+    use subdlab::neighbourhood::Configuration;
+    use subdlab::spectrum::{analyse, Options};
+    let s = subdlab::schemes::build("tps", &[("e".into(), "1/5".into())]).unwrap();
+    let config = Configuration::regular(s.as_ref(), 4).unwrap();
+    let a = analyse(s.as_ref(), &config, &Options::default()).unwrap();
+    let one_d = [1.0, 0.6, 0.36, 0.0, 0.0];
+    assert_same_multiset(real_spectrum(&a), products(&one_d, &one_d), 1e-12, "adjustable n=4");
+    assert_eq!(a.spectrum.exact_analysis.as_ref().unwrap().remaining_degree, 0);
+}
+
+#[test]
+fn adjustable_limit_point_coincides_with_tps() {
+    for e in [0.15, 0.2, 0.3, 0.45] {
+        for n in [3, 5, 6, 9] {
+            let (a1, a2) = (alpha1(n), alpha1(n) / 7.0);
+            let den = 39.0 * a1 + 42.0 * a2 + 20.0;
+            let (t1, t2) = (18.0 * (2.0 * a1 + a2) / den, 3.0 * (a1 + 8.0 * a2) / den);
+            let a = adjustable(e, n);
+            let l = limit_stencil(&a.spectrum).unwrap();
+            for (k, lab) in a.spectrum.labels.iter().enumerate() {
+                let want = match (lab.kind, lab.ring) {
+                    (VertexKind::Centre, _) => 1.0 - t1 - t2,
+                    (VertexKind::Edge, 1) => t1 / n as f64,
+                    (VertexKind::Face, 1) => t2 / n as f64,
+                    _ => 0.0,
+                };
+                assert!((l[k] - want).abs() < 1e-12, "e = {e}, n = {n}, {}", lab.name);
+            }
+        }
+    }
+}
+
+#[test]
+fn adjustable_valence_3_fails_the_spectral_test_for_slow_splits() {
+    // With the limit point tied to TPS's, block 0 at n = 3 is computed here
+    // from its 3 × 3 matrix on (q, ā, b̄): its second eigenvalue is the larger
+    // root of λ² − (tr − 1)λ + det, and for e = 1/5 it exceeds eq. (22).
+    let (e, n) = (0.2, 3);
+    let (near, far) = (2.0 * e, 1.0 - 2.0 * e);
+    let v1 = e * far;
+    let v0 = 1.0 - 2.0 * v1;
+    let (a10, a20) = (alpha1(n), alpha1(n) / 7.0);
+    let (la, lb) = (0.9 * (2.0 * a10 + a20), 0.15 * (a10 + 8.0 * a20));
+    let (sq, aa, ab) = (near * v0, far * v0 + 2.0 * near * v1, 2.0 * far * v1);
+    let (tq, ba, bb) = (near * near, 2.0 * near * far, far * far);
+    // (1, la, lb) must be a left eigenvector for 1: solve the ā and b̄ columns
+    let a1 = la * (1.0 - aa) - lb * ba;
+    let a2 = lb * (1.0 - bb) - la * ab;
+    let m = [[1.0 - a1 - a2, a1, a2], [sq, aa, ab], [tq, ba, bb]];
+    let det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+        + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    let tr = m[0][0] + m[1][1] + m[2][2];
+    let r = roots(-(tr - 1.0), det)[0];
+    assert!(r > eq_22(e, cos2pi(1, n)));
+    let a = adjustable(e, n);
+    assert!(!a.spectrum.verdict.c1_spectral);
+    assert!((a.spectrum.eigenvalues[1].re - r).abs() < 1e-12);
+    assert_eq!(a.spectrum.eigenvalues[1].blocks, vec![0]);
+}
