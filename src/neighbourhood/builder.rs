@@ -1,7 +1,10 @@
 //! Generous patches: `rings` rings of regular lattice around the centre, with
 //! lattice charts. Vertex-centred patches glue n lattice wedges (quad or
 //! triangle, per sector); face-centred patches surround a central n-gon with
-//! quads (coordinates doubled so that vertices sit at odd lattice points).
+//! quads (coordinates doubled so that vertices sit at odd lattice points),
+//! with an extra point at the origin for point-augmented faces; polar patches
+//! put a pole in a fan of triangles and rings of quads, every vertex on a spoke
+//! at (spoke, ring, 0).
 //! With face control vertices (non-box subdivision) every quad also gets an FCV
 //! at its centre; coordinates are doubled there too (chart scale 2), vertices at
 //! even and FCVs at odd lattice points.
