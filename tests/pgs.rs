@@ -185,3 +185,57 @@ fn refines_doo_sabin_nets_and_adds_a_point_to_every_non_quad() {
     let err = refine_mesh(scheme("pgs").as_ref(), &cube, &points, 1).unwrap_err();
     assert!(err.contains("valence 4"), "{err}");
 }
+
+#[test]
+fn appendix_with_eq_8_the_rules_are_stationary() {
+    // Appendix: with α of (8), the point carried by (3) equals eq. (1) applied
+    // to the refined net at every level, so the map from a Doo–Sabin net to
+    // the next one does not depend on the level. Checked on the refinement
+    // itself: scalar data on a patch, p^0 from (1), three steps.
+    use subdlab::neighbourhood::{build_patch, Configuration};
+    use subdlab::refine::{apply, Stencil};
+    use subdlab::schemes::SchemeWeight;
+    for n in [3, 5, 7, 10] {
+        let s = scheme("pgs");
+        let config = Configuration::regular(s.as_ref(), n).unwrap();
+        let (mut mesh, _) = build_patch(&config, 7);
+        let (mu, ..) = weights(n);
+        // eq. (1) on the central face (face 0) of a mesh with values x
+        let eq1 = |mesh: &subdlab::mesh::PolyMesh, x: &[Option<[f64; 1]>]| -> f64 {
+            let face = mesh.face(0);
+            let (mut a, mut bd) = (0.0, 0.0);
+            for (k, &v) in face.iter().enumerate() {
+                a += x[v].unwrap()[0] / n as f64;
+                let (prev, next) = (face[(k + n - 1) % n], face[(k + 1) % n]);
+                for cyc in mesh.vertex_fan(v).unwrap() {
+                    if cyc[1] != prev && cyc[1] != next {
+                        bd += x[cyc[1]].unwrap()[0] / (2.0 * n as f64);
+                    }
+                }
+            }
+            mu * a + (1.0 - mu) * bd
+        };
+        // pseudo-random values (a fixed linear congruential sequence)
+        let mut seed: u64 = 12345 + n as u64;
+        let mut x: Vec<Option<[f64; 1]>> = (0..mesh.num_vertices())
+            .map(|_| {
+                seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+                Some([(seed >> 11) as f64 / (1u64 << 53) as f64])
+            })
+            .collect();
+        let p = mesh.face_centre(0).unwrap();
+        x[p] = Some([eq1(&mesh, &x)]);
+        for level in 1..=3 {
+            let r = s.topology().refine(&mesh).unwrap();
+            let st: Vec<Option<Stencil<f64>>> = r
+                .vertex_origins
+                .iter()
+                .map(|&o| <f64 as SchemeWeight>::stencil(s.as_ref(), &mesh, o).unwrap())
+                .collect();
+            x = apply(&st, &x);
+            mesh = r.mesh;
+            let carried = x[mesh.face_centre(0).unwrap()].unwrap()[0];
+            assert!((carried - eq1(&mesh, &x)).abs() < 1e-13, "n = {n}, level {level}");
+        }
+    }
+}

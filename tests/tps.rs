@@ -96,7 +96,7 @@ fn spectrum_is_the_union_of_the_roots_of_eqs_19_and_20() {
 fn subdominant_eigenvalue_formula_and_c1_spectral_test() {
     // "the scheme is C^1 with subdominant eigenvalue λ from Â_1, Â_{n−1},
     //  λ = (5 + 2c + 2 sqrt(c² + 5c + 4))/27"
-    for n in 3..=60 {
+    for n in 3..=100 {
         let a = run("tps", n, NeighbourhoodKind::Analysis, None, false);
         let v = &a.spectrum.verdict;
         assert!(v.c1_spectral, "n = {n}: {:?}", v.reasons);
