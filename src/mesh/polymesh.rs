@@ -31,6 +31,10 @@ pub struct PolyMesh {
     /// (Lin–Luo's α in unified sqrt(3) subdivision). Refined with the scheme's
     /// `vertex_param_rule`.
     pub vertex_params: Option<Vec<f64>>,
+    /// An extra central control point on some faces (point-augmented schemes:
+    /// the point p of PGS). Like FCVs these belong to no face cycle; unlike
+    /// FCVs only some faces carry one. Empty when no face has one.
+    pub face_centres: Vec<Option<VertexId>>,
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -91,6 +95,7 @@ impl PolyMesh {
             chart: None,
             face_points: None,
             vertex_params: None,
+            face_centres: Vec::new(),
         })
     }
 
@@ -104,6 +109,25 @@ impl PolyMesh {
         }
         self.face_points = Some(fcv);
         Ok(self)
+    }
+
+    /// Attach central points to some faces (`centres[f]`: the point of face f,
+    /// if any; each a vertex of no face cycle).
+    pub fn with_face_centres(mut self, centres: Vec<Option<VertexId>>) -> Result<Self, String> {
+        if centres.len() != self.faces.len() {
+            return Err(format!("{} face centre entries for {} faces", centres.len(), self.faces.len()));
+        }
+        if let Some(&v) = centres.iter().flatten().find(|&&v| v >= self.num_vertices || self.vertex_corner[v].is_some())
+        {
+            return Err(format!("face centre {v} is missing or is a corner of a face"));
+        }
+        self.face_centres = centres;
+        Ok(self)
+    }
+
+    /// The central point of face f, if it carries one.
+    pub fn face_centre(&self, f: FaceId) -> Option<VertexId> {
+        self.face_centres.get(f).copied().flatten()
     }
 
     /// The face control vertex of face f, if the mesh carries them.

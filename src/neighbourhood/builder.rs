@@ -1,7 +1,10 @@
 //! Generous patches: `rings` rings of regular lattice around the centre, with
 //! lattice charts. Vertex-centred patches glue n lattice wedges (quad or
 //! triangle, per sector); face-centred patches surround a central n-gon with
-//! quads (coordinates doubled so that vertices sit at odd lattice points).
+//! quads (coordinates doubled so that vertices sit at odd lattice points),
+//! with an extra point at the origin for point-augmented faces; polar patches
+//! put a pole in a fan of triangles and rings of quads, every vertex on a spoke
+//! at (spoke, ring, 0).
 //! With face control vertices (non-box subdivision) every quad also gets an FCV
 //! at its centre; coordinates are doubled there too (chart scale 2), vertices at
 //! even and FCVs at odd lattice points.
@@ -80,7 +83,19 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
             }
             vec![c]
         }
-        CentreKind::Face => {
+        CentreKind::Polar => {
+            // the pole, a fan of n triangles and r rings of n quads, all
+            // vertices on the spokes (spoke, ring, 0)
+            let c = b.vertex(0, 0, 0);
+            for s in 0..n {
+                b.face(Some(s), &[(s, 0, 0), (s, 1, 0), (s + 1, 1, 0)]);
+                for a in 1..=r {
+                    b.face(Some(s), &[(s, a, 0), (s, a + 1, 0), (s + 1, a + 1, 0), (s + 1, a, 0)]);
+                }
+            }
+            vec![c]
+        }
+        CentreKind::Face | CentreKind::AugmentedFace => {
             let corners: Vec<_> = (0..n).map(|s| (s, 1, 1)).collect();
             b.face(None, &corners);
             for s in 0..n {
@@ -91,7 +106,12 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
                     }
                 }
             }
-            b.faces[0].clone()
+            let mut ring0 = b.faces[0].clone();
+            if config.centre == CentreKind::AugmentedFace {
+                // the central face's extra point sits at the origin
+                ring0.push(b.vertex(0, 0, 0));
+            }
+            ring0
         }
     };
     let mut fcv = Vec::new();
@@ -108,6 +128,11 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
     let mut mesh = PolyMesh::new(b.chart.vertex_coords.len(), b.faces).expect("patch is a manifold disc");
     if config.face_control {
         mesh = mesh.with_face_points(fcv).expect("one FCV per face");
+    }
+    if config.centre == CentreKind::AugmentedFace {
+        let mut centres = vec![None; mesh.num_faces()];
+        centres[0] = centre_set.last().copied();
+        mesh = mesh.with_face_centres(centres).expect("the centre is a vertex of no face");
     }
     mesh.chart = Some(b.chart);
     (mesh, centre_set)

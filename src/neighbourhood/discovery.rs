@@ -19,7 +19,7 @@ use super::configuration::Configuration;
 use super::labels::{canonical_order, label_vertices, VertexLabel};
 use crate::mesh::{LatticeCoord, PolyMesh};
 use crate::refine::{apply, Origin, SparseRow, Stencil};
-use crate::schemes::{CentreKind, Scheme, SchemeWeight};
+use crate::schemes::{Scheme, SchemeWeight};
 use crate::topology::Refined;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
@@ -120,7 +120,7 @@ fn compose(levels: &[Vec<Option<Stencil<f64>>>], level0: usize) -> Vec<Option<Sp
 
 fn try_discover(scheme: &dyn Scheme, config: &Configuration, rings: usize) -> Result<Discovered, String> {
     let (patch, centre_set) = build_patch(config, rings);
-    let labels = label_vertices(&patch, &centre_set, config.centre == CentreKind::Face);
+    let labels = label_vertices(&patch, &centre_set, config.centre.is_face_centred());
     let topology = scheme.topology();
     let steps = topology.steps_per_analysis();
     let mut refinements: Vec<Refined> = Vec::new();
@@ -163,9 +163,10 @@ fn try_discover(scheme: &dyn Scheme, config: &Configuration, rings: usize) -> Re
     // refinements, then walk the stencils of refinements r, r-1, ..., 1 down to
     // level 0. This is linear in the stencil sizes (forward dependency sets
     // would cost O(n^3) at the dense central face of a dual scheme).
-    let centre_lookup: HashSet<usize> = centre_set.iter().copied().collect();
+    // the first ring: faces touching ring 0 (or deeper rings, see `CentreKind::first_ring_depth`)
+    let depth = config.centre.first_ring_depth();
     let mut region_faces: Vec<bool> =
-        patch.faces().iter().map(|f| f.iter().any(|v| centre_lookup.contains(v))).collect();
+        patch.faces().iter().map(|f| f.iter().any(|&v| labels[v].ring <= depth)).collect();
     let mut all_stencils = stencils_by_level.clone();
     let mut collected: BTreeSet<usize> = BTreeSet::new();
     let mut previous: Option<BTreeSet<usize>> = None;

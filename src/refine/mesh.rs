@@ -105,6 +105,10 @@ fn size_bound(topology: Topology, mesh: &PolyMesh) -> usize {
         }
         // one vertex per corner; F-, E- and V-faces
         Topology::Dual => corners.max(f + e + v),
+        // 9 quads per quad; old vertices, 2 per edge, 4 per quad
+        Topology::TernarySplit => (9 * f).max(v + 2 * e + 4 * f),
+        // the dual split plus at most one central point per face
+        Topology::AugmentedDual => corners.max(f + e + v) + f,
         // hosts added later (e.g. sqrt3): a generous bound until they get an exact count
         #[allow(unreachable_patterns)]
         _ => 4 * corners + v + e + f,
@@ -165,6 +169,11 @@ fn requirement(scheme: &dyn Scheme) -> &'static str {
     }
     match scheme.topology() {
         Topology::PrimalSplit(TriangleSplit::FourTriangles) => "a closed triangle mesh",
+        Topology::TernarySplit => "a closed quad mesh",
+        Topology::PolarSplit => "a closed polar net (poles with triangle fans, rings of quads)",
+        Topology::AugmentedDual => {
+            "a closed mesh whose vertices all have valence 4 (a Doo–Sabin net: apply one doo-sabin step first)"
+        }
         _ => "a closed mesh",
     }
 }

@@ -10,6 +10,9 @@ pub mod khan_mustafa;
 pub mod loop_subdivision;
 pub mod non_box;
 pub mod params;
+pub mod pgs;
+pub mod polar_bi2;
+pub mod tps;
 pub mod unified_sqrt3;
 
 use crate::mesh::{PolyMesh, SectorKind};
@@ -31,6 +34,30 @@ pub enum CentreKind {
     Vertex,
     /// an extraordinary face (Doo–Sabin, ...)
     Face,
+    /// an extraordinary face with an extra control point at its centre
+    /// (point-augmented bi-2 subdivision, PGS)
+    AugmentedFace,
+    /// a pole: a vertex surrounded by triangles, rings of quads outside
+    /// (polar bi-2 subdivision)
+    Polar,
+}
+
+impl CentreKind {
+    /// Whether the analysis is centred on a face (its corners form ring 0).
+    pub fn is_face_centred(self) -> bool {
+        matches!(self, CentreKind::Face | CentreKind::AugmentedFace)
+    }
+    /// Vertex rings (beyond ring 0) whose faces carry the first ring of the
+    /// limit surface. Normally the faces touching ring 0. In a polar layout a
+    /// bi-2 ring of patches spans three rows of control points, and the first
+    /// ring that is not degenerate at the pole spans rows 1 to 3, i.e. the
+    /// faces touching rings 0 to 2.
+    pub fn first_ring_depth(self) -> usize {
+        match self {
+            CentreKind::Polar => 2,
+            _ => 0,
+        }
+    }
 }
 
 pub trait Scheme: Rules<f64> + Rules<Rational> + Send + Sync {
@@ -112,6 +139,9 @@ pub fn registry() -> Vec<SchemeEntry> {
         four_three::entry(),
         unified_sqrt3::kobbelt_entry(),
         unified_sqrt3::entry(),
+        tps::entry(),
+        pgs::entry(),
+        polar_bi2::entry(),
     ]
 }
 

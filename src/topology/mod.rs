@@ -4,10 +4,13 @@
 //! the parent entity of every new face, and carries lattice charts along so
 //! that the refined neighbourhood can be matched with the old one.
 
+pub mod augmented_dual;
 pub mod dual_split;
 pub mod fcv_split;
+pub mod polar_split;
 pub mod primal_split;
 pub mod sqrt3_split;
+pub mod ternary_split;
 
 use crate::mesh::{Chart, LatticeCoord, PolyMesh};
 use crate::refine::Origin;
@@ -32,6 +35,13 @@ pub enum Topology {
     Sqrt3,
     /// quads around each face's control vertex, a new FCV per new quad (non-box)
     FcvSplit,
+    /// every quad split into 3 x 3 quads (ternary primal bi-2, TPS)
+    TernarySplit,
+    /// the dual split plus a central point per non-quad (or already augmented)
+    /// face (point-augmented bi-2, PGS)
+    AugmentedDual,
+    /// radial-only binary split of polar nets (polar bi-2)
+    PolarSplit,
 }
 
 impl Topology {
@@ -41,6 +51,9 @@ impl Topology {
             Topology::Dual => dual_split::refine(mesh),
             Topology::Sqrt3 => sqrt3_split::refine(mesh),
             Topology::FcvSplit => fcv_split::refine(mesh),
+            Topology::TernarySplit => ternary_split::refine(mesh),
+            Topology::AugmentedDual => augmented_dual::refine(mesh),
+            Topology::PolarSplit => polar_split::refine(mesh),
         }
     }
     /// Refinements in one analysis step: the number after which the refined

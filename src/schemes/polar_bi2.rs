@@ -1,0 +1,93 @@
+//! Polar bi-2 subdivision, PolBS (Karčiauskas & Peters, "Point-augmented
+//! biquadratic C^1 subdivision surfaces", section 3), on polar nets: a pole p
+//! with a fan of n triangles, rings of n quads outside (topology: the radial
+//! polar split). With a_i the spoke neighbours of p:
+//!
+//! * radial points: binary 1-D (Chaikin) subdivision along every spoke, e.g.
+//!   b_i' = 3/4 a_i + 1/4 b_i, c_i' = 1/4 a_i + 3/4 b_i;
+//! * a_i' = (1 − Σ_j γ_j) p + Σ_j γ_j a_{i+j}                        (11)
+//! * p'   = (1 − α) p + α ā                                         (12)
+//! * γ_j = (1/2 + cos(2πj/n))/n (15), so Σ γ_j = 1/2; α = 1/4 by default
+//!   (parameter `alpha`).
+
+use super::{uniform_fan, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry};
+use crate::mesh::{PolyMesh, SectorKind};
+use crate::numeric::Weight;
+use crate::refine::{Origin, RuleResult, Stencil};
+use crate::topology::Topology;
+
+pub struct PolarBi2 {
+    params: Params,
+}
+
+pub fn entry() -> SchemeEntry {
+    SchemeEntry {
+        name: "polar-bi2",
+        description: "Karčiauskas–Peters polar bi-2 subdivision (PolBS): a pole with a triangle fan, quad rings",
+        params: || {
+            vec![ParamSpec {
+                name: "alpha",
+                default: "1/4",
+                min: 0.0,
+                max: 1.0,
+                description: "weight of the ring average in the pole rule (12)",
+            }]
+        },
+        build: |params| Box::new(PolarBi2 { params }),
+    }
+}
+
+impl<W: Weight> Rules<W> for PolarBi2 {
+    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+        Ok(match origin {
+            Origin::Vertex(p) => {
+                let Some(fan) = uniform_fan(mesh, p, 3) else { return Ok(None) };
+                let alpha: W = W::param(self.params.get("alpha").expect("alpha has a default"))?;
+                let n = fan.len() as i64;
+                let mut s = Stencil::new().with(p, W::one() - alpha.clone());
+                for tri in &fan {
+                    s.add(tri[1], alpha.clone() / W::int(n));
+                }
+                Some(s)
+            }
+            Origin::Edge(x, y) => match uniform_fan(mesh, x, 3) {
+                // a spoke point next to the pole: eq. (11)
+                Some(fan) => {
+                    let ring: Vec<usize> = fan.iter().map(|tri| tri[1]).collect();
+                    let n = ring.len();
+                    let Some(i) = ring.iter().position(|&a| a == y) else { return Ok(None) };
+                    let mut s = Stencil::new().with(x, W::ratio(1, 2));
+                    for j in 0..n {
+                        let gamma = (W::ratio(1, 2) + W::cos_2pi(j as i64, n as i64)?) / W::int(n as i64);
+                        s.add(ring[(i + j) % n], gamma);
+                    }
+                    Some(s)
+                }
+                None => Some(Stencil::new().with(x, W::ratio(3, 4)).with(y, W::ratio(1, 4))),
+            },
+            _ => None,
+        })
+    }
+}
+
+impl Scheme for PolarBi2 {
+    fn name(&self) -> &'static str {
+        "polar-bi2"
+    }
+    fn description(&self) -> &'static str {
+        entry().description
+    }
+    fn topology(&self) -> Topology {
+        Topology::PolarSplit
+    }
+    fn centre_kind(&self) -> CentreKind {
+        CentreKind::Polar
+    }
+    fn sector_kind(&self) -> SectorKind {
+        // the faces around the pole
+        SectorKind::Tri
+    }
+    fn params(&self) -> &Params {
+        &self.params
+    }
+}
