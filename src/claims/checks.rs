@@ -24,7 +24,7 @@ pub struct Cache {
 
 impl Cache {
     fn spectrum(&mut self, s: &Subject, n: usize) -> Result<std::rc::Rc<Spectrum>, String> {
-        let key = format!("{}|{:?}|{n}|{:?}", s.scheme, s.params, s.neighbourhood);
+        let key = format!("{}|{:?}|{n}|{:?}|{:?}", s.scheme, s.params, s.neighbourhood, s.faces_for(n));
         self.spectra.entry(key).or_insert_with(|| compute(s, n).map(std::rc::Rc::new)).clone()
     }
 }
@@ -53,12 +53,29 @@ fn compute(s: &Subject, n: usize) -> Result<Spectrum, String> {
         return Ok(lattice::analysis::analyse((entry.build)().as_ref(), kind, false)?.spectrum);
     }
     let scheme = schemes::build(&s.scheme, &params)?;
-    let config = Configuration::regular(scheme.as_ref(), n)?;
+    let config = match s.faces_for(n) {
+        Some(f) => Configuration::with_faces(scheme.as_ref(), n, f)?,
+        None => Configuration::regular(scheme.as_ref(), n)?,
+    };
     Ok(analyse(scheme.as_ref(), &config, &Options { neighbourhood: kind, method: None, exact: false })?.spectrum)
 }
 
 fn env_for(s: &Subject, n: usize) -> Result<Env, String> {
+    env_with(s, n, None)
+}
+
+/// The environment of valence n, with the Fourier block index m when given.
+fn env_with(s: &Subject, n: usize, m: Option<usize>) -> Result<Env, String> {
     let mut env = crate::numeric::expr::env_int(&[("n", n as i64), ("k", n as i64)]);
+    if let Some(m) = m {
+        env.insert("m".into(), ParamValue::from_ratio(m as i64, 1));
+    }
+    if let Some(f) = s.faces_for(n) {
+        // numbers of quads and triangles around the centre
+        let quads = f.chars().filter(|&c| c == 'Q').count() as i64;
+        env.insert("quads".into(), ParamValue::from_ratio(quads, 1));
+        env.insert("tris".into(), ParamValue::from_ratio(n as i64 - quads, 1));
+    }
     let defs: Vec<(&String, &String)> = s.params.iter().chain(s.vars.iter()).collect();
     // definitions may refer to each other: evaluate in dependency order
     let mut pending = defs;
@@ -186,7 +203,7 @@ fn over_valences(
     subject: &Subject,
     mut one: impl FnMut(usize) -> Result<(bool, String, String), String>,
 ) -> Result<Partial, String> {
-    let valences = subject.valences.expand()?;
+    let valences = subject.valence_list()?;
     let mut first = None;
     let (mut stated0, mut computed0) = (String::new(), String::new());
     for &n in &valences {
@@ -238,11 +255,8 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
             };
             let mut first = None;
             for b in blocks {
-                let mut env = env_for(subject, n)?;
-                if let Some(m) = b {
-                    env.insert("m".into(), ParamValue::from_ratio(m as i64, 1));
-                }
-                let mut stated: Vec<Complex64> = values.iter().map(|v| eval(v, &env)).collect::<Result<_, _>>()?;
+                let env = env_with(subject, n, b)?;
+                let mut stated = stated_values(values, &env)?;
                 stated.sort_by(|a, b| eigenvalue_order(*a, *b));
                 let mut computed = match b {
                     Some(m) => block_values(&spec, m)?,
@@ -252,7 +266,9 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
                 let shown: Vec<Complex64> = match compare.as_str() {
                     "leading" => computed.iter().take(stated.len()).copied().collect(),
                     "all" | "contains" => computed.clone(),
-                    other => return Err(format!("unknown comparison '{other}' (all, leading, contains)")),
+                    // only the computed copies of the stated values count
+                    "count" => computed.iter().copied().filter(|w| stated.iter().any(|z| close(*z, *w))).collect(),
+                    other => return Err(format!("unknown comparison '{other}' (all, leading, contains, count)")),
                 };
                 let (missing, extra) = unmatched(&stated, &shown);
                 let ok = missing.is_empty() && (compare == "contains" || extra.is_empty());
@@ -286,6 +302,21 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
                 (stated - size).abs() < 0.5,
                 format!("{stated}"),
                 format!("{} (minimal {}, analysis {})", spec.matrix_size, spec.minimal_size, spec.analysis_size),
+            ))
+        }),
+        Check::NonnegativeSpectrum { subject, expect } => over_valences(subject, |n| {
+            let spec = cache.spectrum(subject, n)?;
+            let negative: Vec<Complex64> = spec
+                .eigenvalues
+                .iter()
+                .filter(|e| e.is_real() && e.re < -1e-12)
+                .map(|e| Complex64::new(e.re, 0.0))
+                .collect();
+            let got = negative.is_empty();
+            Ok((
+                got == *expect,
+                if *expect { "no negative eigenvalue".into() } else { "a negative eigenvalue".into() },
+                if got { "no negative eigenvalue".into() } else { format!("negative: {}", show_list(&negative)) },
             ))
         }),
         Check::SpectralC1 { subject, expect } => over_valences(subject, |n| {
@@ -369,6 +400,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
             let subject = Subject {
                 scheme: String::new(),
                 valences: valences.clone(),
+                faces: Vec::new(),
                 params: Default::default(),
                 neighbourhood: None,
                 vars: vars.clone(),
@@ -398,7 +430,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
                     .flat_map(|e| std::iter::repeat(e.value).take(e.algebraic))
                     .collect();
                 computed.sort_by(|a, b| eigenvalue_order(*a, *b));
-                let mut stated: Vec<Complex64> = values.iter().map(|v| eval(v, &env)).collect::<Result<_, _>>()?;
+                let mut stated = stated_values(values, &env)?;
                 stated.sort_by(|a, b| eigenvalue_order(*a, *b));
                 let (missing, extra) = unmatched(&stated, &computed);
                 let ok = missing.is_empty() && extra.is_empty();
@@ -467,6 +499,26 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
             Ok(Partial { verdict, stated, computed, detail })
         }
     }
+}
+
+/// Stated values; an entry "EXPR ; COUNT" stands for COUNT copies of EXPR.
+fn stated_values(values: &[String], env: &Env) -> Result<Vec<Complex64>, String> {
+    let mut out = Vec::new();
+    for v in values {
+        let (e, count) = match v.split_once(';') {
+            Some((e, c)) => {
+                let k = eval(c, env)?.re.round();
+                if !(0.0..=100_000.0).contains(&k) {
+                    return Err(format!("repeat count of '{v}' is {k}"));
+                }
+                (e, k as usize)
+            }
+            None => (v.as_str(), 1),
+        };
+        let z = eval(e, env)?;
+        out.extend(std::iter::repeat(z).take(count));
+    }
+    Ok(out)
 }
 
 /// "centre", or "kind.ring" such as "fcv.1".

@@ -52,6 +52,22 @@ pub enum Valences {
     Range(String),
 }
 
+impl Subject {
+    /// The valences to check: the listed ones and the lengths of `faces`.
+    pub fn valence_list(&self) -> Result<Vec<usize>, String> {
+        let mut v = self.valences.expand()?;
+        for f in &self.faces {
+            if !v.contains(&f.len()) {
+                v.push(f.len());
+            }
+        }
+        Ok(v)
+    }
+    pub fn faces_for(&self, n: usize) -> Option<&str> {
+        self.faces.iter().find(|f| f.len() == n).map(|s| s.as_str())
+    }
+}
+
 impl Valences {
     pub fn expand(&self) -> Result<Vec<usize>, String> {
         match self {
@@ -76,7 +92,13 @@ impl Valences {
 #[derive(Clone, Debug, Deserialize)]
 pub struct Subject {
     pub scheme: String,
+    /// the valences; may be left out when `faces` gives the configurations
+    #[serde(default = "no_valences")]
     pub valences: Valences,
+    /// face sequences around the centre (schemes of mixed meshes), one per
+    /// valence; each adds its length to the valences
+    #[serde(default)]
+    pub faces: Vec<String>,
     #[serde(default)]
     pub params: BTreeMap<String, String>,
     /// "minimal" or "analysis" (default analysis)
@@ -91,10 +113,11 @@ pub struct Subject {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(tag = "check", rename_all = "kebab-case")]
 pub enum Check {
-    /// Eigenvalues (with repetition = multiplicity) of S or of Fourier block
-    /// `block`, compared as `all` (the whole multiset), `leading` (the largest
-    /// ones in the display order) or `contains` (each stated value at least as
-    /// often as stated).
+    /// Eigenvalues (with repetition = multiplicity; `"EXPR ; COUNT"` repeats
+    /// EXPR COUNT times) of S or of Fourier block `block`, compared as `all`
+    /// (the whole multiset), `leading` (the largest ones in the display order),
+    /// `contains` (each stated value at least as often as stated) or `count`
+    /// (each stated value exactly as often as stated, others ignored).
     Eigenvalues {
         #[serde(flatten)]
         subject: Subject,
@@ -131,6 +154,12 @@ pub enum Check {
         cos: BTreeMap<String, String>,
         sin: BTreeMap<String, String>,
     },
+    /// Every real eigenvalue is non-negative (`expect = true`) or not.
+    NonnegativeSpectrum {
+        #[serde(flatten)]
+        subject: Subject,
+        expect: bool,
+    },
     /// The spectral C^1 test (Reif) passes (`expect = true`) or fails.
     SpectralC1 {
         #[serde(flatten)]
@@ -165,6 +194,10 @@ pub enum Check {
         #[serde(default)]
         data: Option<toml::Value>,
     },
+}
+
+fn no_valences() -> Valences {
+    Valences::List(Vec::new())
 }
 
 fn default_compare() -> String {

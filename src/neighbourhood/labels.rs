@@ -99,6 +99,7 @@ pub fn label_vertices(mesh: &PolyMesh, centre_set: &[usize], face_centred: bool)
     order.sort_by_key(|&v| (labels[v].ring, labels[v].sector, labels[v].j - labels[v].i, labels[v].j));
     let mut prev = None;
     let mut idx = 0;
+    order.retain(|&v| labels[v].kind != VertexKind::Centre); // the centre has no index
     for &v in &order {
         let key = (labels[v].ring, labels[v].sector);
         idx = if prev == Some(key) { idx + 1 } else { 0 };
