@@ -5,6 +5,7 @@
 //! `refine` (one step) → `matrix` (local S) → `dft` (Fourier blocks) →
 //! `spectrum` (eigenvalues, stencils, verdicts) → `cli`.
 
+pub mod charmap;
 pub mod cli;
 pub mod curves;
 pub mod dft;
