@@ -15,6 +15,8 @@ pub mod matrix;
 pub mod mesh;
 pub mod neighbourhood;
 pub mod numeric;
+// figures (SVG / PNG)
+pub mod plot;
 pub mod refine;
 pub mod schemes;
 pub mod spectrum;

@@ -21,8 +21,8 @@ pub struct Ring {
     pub outer_boundary: Vec<[[f64; 2]; 2]>,
     /// directed boundary edges of the inner region (the ring's inner boundary)
     pub inner_boundary: Vec<[[f64; 2]; 2]>,
-    /// faces of the ring before triangulation
-    pub ring_faces: usize,
+    /// the ring's faces as corner polygons (for drawing parameter lines)
+    pub ring_polys: Vec<Vec<[f64; 2]>>,
 }
 
 pub fn extract(net: &Net) -> Ring {
@@ -30,13 +30,13 @@ pub fn extract(net: &Net) -> Ring {
     let p = |v: usize| net.points[v].expect("first-ring vertices are defined (checked during refinement)");
     let mut ring = Vec::new();
     let mut inner = Vec::new();
-    let mut ring_faces = 0;
+    let mut ring_polys = Vec::new();
     for f in (0..mesh.num_faces()).filter(|&f| net.outer[f]) {
         let tris = facet_triangles(mesh, f).into_iter().map(|t| [p(t[0]), p(t[1]), p(t[2])]);
         if net.inner[f] {
             inner.extend(tris);
         } else {
-            ring_faces += 1;
+            ring_polys.push(mesh.face(f).iter().map(|&v| p(v)).collect());
             ring.extend(tris);
         }
     }
@@ -52,7 +52,7 @@ pub fn extract(net: &Net) -> Ring {
     };
     let outer_boundary = boundary(&|f| net.outer[f]);
     let inner_boundary = boundary(&|f| net.outer[f] && net.inner[f]);
-    Ring { ring, inner, outer_boundary, inner_boundary, ring_faces }
+    Ring { ring, inner, outer_boundary, inner_boundary, ring_polys }
 }
 
 /// Signed area of a triangle (positive when counter-clockwise).

@@ -17,6 +17,7 @@ pub(super) fn dispatch(cmd: &Command) -> Option<Result<(), String>> {
         Command::Spectrum(a) | Command::Stencils(a) => a,
         Command::Matrix { common, .. } => common,
         Command::Schemes { .. } | Command::Refine { .. } | Command::Curve { .. } => return None,
+        Command::Charmap(..) | Command::Plot { .. } => return None,
     };
     let entry = lattice::find(&args.scheme)?;
     let scheme = (entry.build)();
@@ -83,6 +84,7 @@ fn run(cmd: &Command, a: &AnalysisArgs, scheme: &dyn LatticeScheme) -> Result<()
             }
         }
         Command::Schemes { .. } | Command::Refine { .. } | Command::Curve { .. } => Ok(()),
+        Command::Charmap(..) | Command::Plot { .. } => Ok(()),
     }
 }
 
