@@ -23,6 +23,8 @@ pub struct Ring {
     pub inner_boundary: Vec<[[f64; 2]; 2]>,
     /// the ring's faces as corner polygons (for drawing parameter lines)
     pub ring_polys: Vec<Vec<[f64; 2]>>,
+    /// the faces inside the ring as corner polygons
+    pub inner_polys: Vec<Vec<[f64; 2]>>,
 }
 
 pub fn extract(net: &Net) -> Ring {
@@ -31,9 +33,11 @@ pub fn extract(net: &Net) -> Ring {
     let mut ring = Vec::new();
     let mut inner = Vec::new();
     let mut ring_polys = Vec::new();
+    let mut inner_polys = Vec::new();
     for f in (0..mesh.num_faces()).filter(|&f| net.outer[f]) {
         let tris = facet_triangles(mesh, f).into_iter().map(|t| [p(t[0]), p(t[1]), p(t[2])]);
         if net.inner[f] {
+            inner_polys.push(mesh.face(f).iter().map(|&v| p(v)).collect());
             inner.extend(tris);
         } else {
             ring_polys.push(mesh.face(f).iter().map(|&v| p(v)).collect());
@@ -52,7 +56,7 @@ pub fn extract(net: &Net) -> Ring {
     };
     let outer_boundary = boundary(&|f| net.outer[f]);
     let inner_boundary = boundary(&|f| net.outer[f] && net.inner[f]);
-    Ring { ring, inner, outer_boundary, inner_boundary, ring_polys }
+    Ring { ring, inner, outer_boundary, inner_boundary, ring_polys, inner_polys }
 }
 
 /// Signed area of a triangle (positive when counter-clockwise).

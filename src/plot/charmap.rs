@@ -47,17 +47,30 @@ impl Figure for RingFigure<'_> {
         top.draw(&Text::new(title, (20, 12), (FONT, 24).into_font())).map_err(err)?;
         top.draw(&Text::new(verdict, (20, 42), (FONT, 18).into_font())).map_err(err)?;
 
-        let polys: Vec<(Vec<(f64, f64)>, usize)> = if self.wedge {
-            wedge::normalised_wedge(&ring.ring, m.valence)
+        // (polygon, colour, outlined). Copies are painted from the largest
+        // down, each with the faces inside it: the next copy covers them, so
+        // what shows of copy k is λ1^k times (the refined first ring minus its
+        // copy scaled by λ1) at one level, without the sliver that separates
+        // the ring's inner boundary (one level coarser) from the copy's outer
+        // boundary in dual and sqrt(3) schemes.
+        let xy = |p: &[f64; 2], s: f64| (p[0] * s, p[1] * s);
+        let polys: Vec<(Vec<(f64, f64)>, usize, bool)> = if self.wedge {
+            wedge::normalised_wedge_polygons(&ring.ring_polys, m.valence)
                 .into_iter()
-                .map(|t| (t.iter().map(|p| (p[0], p[1])).collect(), 0))
+                .map(|t| (t.iter().map(|p| xy(p, 1.0)).collect(), 0, true))
                 .collect()
         } else {
             let mut out = Vec::new();
             let mut scale = 1.0;
-            for k in 0..self.copies.max(1) {
+            let copies = self.copies.max(1);
+            for k in 0..copies {
+                if k + 1 < copies {
+                    for poly in &ring.inner_polys {
+                        out.push((poly.iter().map(|p| xy(p, scale)).collect(), k % 2, false));
+                    }
+                }
                 for poly in &ring.ring_polys {
-                    out.push((poly.iter().map(|p| (p[0] * scale, p[1] * scale)).collect(), k % 2));
+                    out.push((poly.iter().map(|p| xy(p, scale)).collect(), k % 2, true));
                 }
                 scale *= m.lambda1;
             }
@@ -70,7 +83,7 @@ impl Figure for RingFigure<'_> {
         };
         // equal scales on both axes: a square window around everything drawn
         let (mut lo, mut hi) = ((f64::INFINITY, f64::INFINITY), (f64::NEG_INFINITY, f64::NEG_INFINITY));
-        for p in polys.iter().flat_map(|(p, _)| p.iter()).chain(net.iter().flatten()) {
+        for p in polys.iter().flat_map(|(p, _, _)| p.iter()).chain(net.iter().flatten()) {
             lo = (lo.0.min(p.0), lo.1.min(p.1));
             hi = (hi.0.max(p.0), hi.1.max(p.1));
         }
@@ -100,11 +113,13 @@ impl Figure for RingFigure<'_> {
             closed.push(f[0]);
             chart.draw_series(std::iter::once(PathElement::new(closed, grey.stroke_width(1)))).map_err(err)?;
         }
-        for (p, k) in &polys {
+        for (p, k, outline) in &polys {
             chart.draw_series(std::iter::once(Polygon::new(p.clone(), FILLS[*k].filled()))).map_err(err)?;
-            let mut closed = p.clone();
-            closed.push(p[0]);
-            chart.draw_series(std::iter::once(PathElement::new(closed, LINES[*k].stroke_width(1)))).map_err(err)?;
+            if *outline {
+                let mut closed = p.clone();
+                closed.push(p[0]);
+                chart.draw_series(std::iter::once(PathElement::new(closed, LINES[*k].stroke_width(1)))).map_err(err)?;
+            }
         }
         if !self.wedge {
             let dots: Vec<(f64, f64)> = net.iter().flatten().copied().collect();
