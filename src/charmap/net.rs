@@ -67,12 +67,37 @@ fn faces_touching(mesh: &PolyMesh, set: &HashSet<usize>) -> Vec<bool> {
     mesh.faces().iter().map(|f| f.iter().any(|v| set.contains(v))).collect()
 }
 
+/// Vertex rings kept around the first ring when pruning, tried in turn: two
+/// cover every one-ring rule; schemes with wider masks get a wider margin
+/// instead of an error.
+const MARGINS: [usize; 3] = [2, 4, 8];
+
 /// Refine the level-0 net `analysis_steps` whole analysis steps (at least one).
 pub fn refine_net(
     scheme: &dyn Scheme,
     d: &Discovered,
     level0: Vec<Option<[f64; 2]>>,
     analysis_steps: usize,
+) -> Result<Net, String> {
+    let mut last = Err(String::new());
+    for margin in MARGINS {
+        last = refine_with_margin(scheme, d, level0.clone(), analysis_steps, margin);
+        match &last {
+            Err(e) if e.contains(NOT_DETERMINED) => continue,
+            _ => return last,
+        }
+    }
+    last
+}
+
+const NOT_DETERMINED: &str = "is not determined by the analysis neighbourhood";
+
+fn refine_with_margin(
+    scheme: &dyn Scheme,
+    d: &Discovered,
+    level0: Vec<Option<[f64; 2]>>,
+    analysis_steps: usize,
+    margin: usize,
 ) -> Result<Net, String> {
     if analysis_steps == 0 {
         return Err("the characteristic ring needs at least one analysis step".into());
@@ -99,7 +124,7 @@ pub fn refine_net(
         .collect::<Result<_, _>>()?;
     net.inner = faces_touching(&net.mesh, &centre1);
     check_defined(&net)?;
-    net = prune(net)?;
+    net = prune(net, margin)?;
     for _ in steps..analysis_steps * steps {
         let bound = net.mesh.num_faces() * 4;
         if bound > MAX_NET_FACES {
@@ -117,7 +142,7 @@ pub fn refine_net(
         let points = apply(&stencils, &net.points);
         net = descend(&net, &r.mesh, &r.vertex_origins, &r.face_parents, points);
         check_defined(&net)?;
-        net = prune(net)?;
+        net = prune(net, margin)?;
     }
     Ok(net)
 }
@@ -162,10 +187,7 @@ fn face_vertices(mesh: &PolyMesh, f: usize) -> impl Iterator<Item = usize> + '_ 
 fn check_defined(net: &Net) -> Result<(), String> {
     for f in (0..net.mesh.num_faces()).filter(|&f| net.outer[f]) {
         if face_vertices(&net.mesh, f).any(|v| net.points[v].is_none()) {
-            return Err(format!(
-                "after {} refinements a vertex of the first ring is not determined by the analysis neighbourhood",
-                net.refinements
-            ));
+            return Err(format!("after {} refinements a vertex of the first ring {NOT_DETERMINED}", net.refinements));
         }
     }
     if !net.outer.iter().any(|&x| x) {
@@ -175,21 +197,21 @@ fn check_defined(net: &Net) -> Result<(), String> {
 }
 
 /// Keep the faces that the next refinement of the first ring can need: the
-/// faces within two vertex rings of the first ring. Faces with undefined
+/// faces within `margin` vertex rings of the first ring. Faces with undefined
 /// corners stay (a rule may use only part of a face, e.g. non-box's vertex
 /// rule reads the face control vertices around a vertex, not its neighbours). Without this the
 /// net would grow by the whole defined region (4x per level) instead of by the
-/// ring alone. Two rings cover every built-in rule (one-ring stencils) with a
-/// margin for schemes with wider masks; a too-small margin shows up as an
-/// undefined first-ring vertex (`check_defined`), never as a silent error.
-fn prune(net: Net) -> Result<Net, String> {
+/// ring alone. A too-small margin shows up as an undefined first-ring vertex
+/// (`check_defined`), never as a silent error, and `refine_net` then retries
+/// with a wider one.
+fn prune(net: Net, margin: usize) -> Result<Net, String> {
     let mesh = &net.mesh;
     let mut near: HashSet<usize> = HashSet::new();
     for f in (0..mesh.num_faces()).filter(|&f| net.outer[f]) {
         near.extend(mesh.face(f).iter().copied());
     }
     let vf = mesh.vertex_faces();
-    for _ in 0..2 {
+    for _ in 0..margin {
         let mut grown = near.clone();
         for &v in &near {
             for &f in &vf[v] {

@@ -33,7 +33,7 @@ pub fn normalised_wedge_polygons(polys: &[Vec<[f64; 2]>], n: usize) -> Vec<Vec<[
                 .map(|p| {
                     let r = (p[0] * p[0] + p[1] * p[1]).sqrt();
                     // vertices of a facet straddling the spoke keep their side
-                    let mut a = angle(&p);
+                    let mut a = angle(p);
                     if a < -width / 2.0 {
                         a += 2.0 * std::f64::consts::PI;
                     }

@@ -17,6 +17,9 @@ pub struct RingFigure<'a> {
     pub wedge: bool,
 }
 
+/// A polygon to paint: corners, colour index, whether to outline it.
+type Painted = (Vec<(f64, f64)>, usize, bool);
+
 const FILLS: [RGBColor; 2] = [RGBColor(158, 202, 225), RGBColor(253, 208, 162)];
 const LINES: [RGBColor; 2] = [RGBColor(33, 113, 181), RGBColor(217, 72, 1)];
 
@@ -54,7 +57,7 @@ impl Figure for RingFigure<'_> {
         // the ring's inner boundary (one level coarser) from the copy's outer
         // boundary in dual and sqrt(3) schemes.
         let xy = |p: &[f64; 2], s: f64| (p[0] * s, p[1] * s);
-        let polys: Vec<(Vec<(f64, f64)>, usize, bool)> = if self.wedge {
+        let polys: Vec<Painted> = if self.wedge {
             wedge::normalised_wedge_polygons(&ring.ring_polys, m.valence)
                 .into_iter()
                 .map(|t| (t.iter().map(|p| xy(p, 1.0)).collect(), 0, true))
