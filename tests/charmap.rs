@@ -321,3 +321,34 @@ fn bad_options_are_errors() {
         assert!(characteristic_map_of(s.as_ref(), 5, &opts(levels, resolution)).is_err());
     }
 }
+
+#[test]
+fn inner_boundary_is_the_outer_boundary_one_step_coarser_scaled_by_lambda() {
+    // S v = λ1 v: the net one analysis step later, restricted to the first
+    // ring, is λ1 times the level-0 net. So the inner boundary of the ring
+    // after L steps is λ1 times the outer boundary after L - 1 steps, as a
+    // polygon; compare perimeters and winding. This checks the net's
+    // refinement, the face tracking and the eigenvector together.
+    for (name, n) in [("catmull-clark", 5), ("loop", 7), ("doo-sabin", 5), ("non-box", 6), ("sqrt3", 5)] {
+        let s = schemes::build(name, &[]).unwrap();
+        let config = Configuration::regular(s.as_ref(), n).unwrap();
+        let a = analyse(
+            s.as_ref(),
+            &config,
+            &Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false },
+        )
+        .unwrap();
+        let pair = subdlab::charmap::spectral::subdominant_pair(&a.spectrum);
+        assert_eq!(pair.status, SpectralStatus::Ok, "{name}");
+        let d = &a.discovered;
+        let at = |levels: usize| {
+            let pts = net::initial_points(d, &pair.values).unwrap();
+            ring::extract(&net::refine_net(s.as_ref(), d, pts, levels).unwrap())
+        };
+        let len = |e: &[[[f64; 2]; 2]]| e.iter().map(|[a, b]| (b[0] - a[0]).hypot(b[1] - a[1])).sum::<f64>();
+        let (coarse, fine) = (at(2), at(3));
+        assert_eq!(fine.inner_boundary.len(), coarse.outer_boundary.len(), "{name}: edge counts");
+        let (inner, outer) = (len(&fine.inner_boundary), len(&coarse.outer_boundary));
+        assert!((inner - pair.lambda * outer).abs() < 1e-9 * outer, "{name}: {inner} vs λ1·{outer}");
+    }
+}

@@ -98,6 +98,7 @@ fn bad_input_gives_one_line_errors() {
     assert!(e.contains("extension"), "{e}");
     fails(&["charmap", "loop", "--valence", "5", "--out", "ring"]);
     fails(&["charmap", "khan-mustafa", "--valence", "4"]);
+    fails(&["charmap", "loop", "--valence", "5", "--wedge"]);
     fails(&["charmap", "loop", "--valence", "5", "--param", "a=1"]);
     fails(&["plot", "spectrum", "loop", "--valences", "9..3", "--out", good]);
     fails(&["plot", "spectrum", "loop", "--valences", "2..5", "--out", good]);

@@ -98,6 +98,8 @@ pub fn charmap(a: &CharmapArgs) -> Result<(), String> {
     }
     if let Some(out) = &a.out {
         check_out(out)?;
+    } else if a.wedge {
+        return Err("--wedge selects the figure; give the figure file with --out FILE.svg|png".into());
     }
     let scheme = build_scheme(&a.scheme, &a.params)?;
     let config = Configuration::regular(scheme.as_ref(), a.valence)?;
