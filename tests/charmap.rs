@@ -352,3 +352,107 @@ fn inner_boundary_is_the_outer_boundary_one_step_coarser_scaled_by_lambda() {
         assert!((inner - pair.lambda * outer).abs() < 1e-9 * outer, "{name}: {inner} vs λ1·{outer}");
     }
 }
+
+/// Catmull–Clark except for the edge points on edges at the extraordinary
+/// vertex v (valence n = 3): e' = a·v + b·p_i + c·(p_{i−1} + p_{i+1}) +
+/// d·(f_{i−1} + f_i), with p the edge neighbours of v and f the opposite
+/// corners of the quads at v. With CC's face points f' = (v + p_i + f_i +
+/// p_{i+1})/4, Fourier block m ≠ 0 of the first ring is the 2×2 matrix
+/// [[x_m, d(1 + ω̄)], [(1 + ω)/4, 1/4]] with x_m = b + 2c·cos θ_m, ω = e^{iθ_m},
+/// θ_m = 2πm/n. Its discriminant is (x_m − 1/4)² + d·|1 + ω|², so
+/// d = −(x_1 − 1/4)²/|1 + ω_1|² makes block 1 a double eigenvalue
+/// (x_1 + 1/4)/2 with a non-zero off-diagonal entry: a Jordan block.
+/// x_1 = 3/4 gives λ = 1/2 (in blocks 1 and 2, the only blocks besides 0 at
+/// n = 3). c = −1/5 gives b = 11/20, d = −1/4, a = 27/20; block 0 over
+/// (v, p, f) is then [[5/12, 1/2, 1/12], [27/20, 3/20, −1/2], [1/4, 1/2, 1/4]]
+/// (CC's vertex rule in the first row) with eigenvalues 1, 1/6 and −7/20
+/// (trace 49/60, determinant −7/120), below 1/2; the rest of the analysis
+/// neighbourhood follows the regular rules (eigenvalues 1/8 and smaller).
+struct JordanCc {
+    base: Box<dyn Scheme>,
+    params: Params,
+}
+
+impl<W: SchemeWeight> Rules<W> for JordanCc {
+    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+        if let Origin::Edge(a, b) = origin {
+            let (Some(va), Some(vb)) = (mesh.valence(a), mesh.valence(b)) else { return Ok(None) };
+            if va != 4 || vb != 4 {
+                let (v, p) = if va != 4 { (a, b) } else { (b, a) };
+                let n = mesh.valence(v).unwrap() as i64;
+                let (Some((fl, kl)), Some((fr, kr))) = (mesh.half_edge(v, p), mesh.half_edge(p, v)) else {
+                    return Ok(None);
+                };
+                // [v, p, f_i, p_{i+1}] and [p, v, p_{i-1}, f_{i-1}]
+                let left = mesh.face_from(fl, kl);
+                let right = mesh.face_from(fr, kr);
+                if left.len() != 4 || right.len() != 4 {
+                    return Ok(None);
+                }
+                let cos = W::cos_2pi(1, n)?;
+                let c = W::ratio(-1, 5);
+                let x1 = W::ratio(3, 4);
+                let b = x1.clone() - W::int(2) * c.clone() * cos.clone();
+                let k = W::int(2) + W::int(2) * cos;
+                let t = x1 - W::ratio(1, 4);
+                let d = W::zero() - t.clone() * t / k;
+                let a = W::one() - b.clone() - W::int(2) * c.clone() - W::int(2) * d.clone();
+                return Ok(Some(
+                    Stencil::new()
+                        .with(v, a)
+                        .with(p, b)
+                        .with(left[3], c.clone())
+                        .with(right[2], c)
+                        .with(left[2], d.clone())
+                        .with(right[3], d),
+                ));
+            }
+        }
+        W::rule(self.base.as_ref(), mesh, origin)
+    }
+}
+
+impl Scheme for JordanCc {
+    fn name(&self) -> &'static str {
+        "jordan-cc"
+    }
+    fn description(&self) -> &'static str {
+        "Catmull–Clark with edge weights that make lambda1 defective (test only)"
+    }
+    fn topology(&self) -> Topology {
+        self.base.topology()
+    }
+    fn centre_kind(&self) -> CentreKind {
+        CentreKind::Vertex
+    }
+    fn sector_kind(&self) -> SectorKind {
+        SectorKind::Quad
+    }
+    fn params(&self) -> &Params {
+        &self.params
+    }
+}
+
+#[test]
+fn defective_subdominant_eigenvalue_gets_a_verdict_and_no_map() {
+    let s = JordanCc { base: schemes::build("catmull-clark", &[]).unwrap(), params: Params::default() };
+    let m = characteristic_map_of(&s, 3, &opts(3, 256)).unwrap();
+    assert!((m.lambda1 - 0.5).abs() < 1e-6, "λ1 = {}: {:?}", m.lambda1, m.reasons);
+    assert_eq!(m.spectral_status, SpectralStatus::Defective, "{:?}", m.reasons);
+    assert!(m.ring.is_none() && !m.injective && m.winding_number.is_none());
+    assert!(m.explanation.contains("defective"));
+}
+
+#[test]
+fn defective_pair_is_double_in_each_conjugate_block() {
+    // the Jordan blocks of blocks 1 and 2: algebraic 4, geometric 2 in all
+    let s = JordanCc { base: schemes::build("catmull-clark", &[]).unwrap(), params: Params::default() };
+    let spec = subdlab::spectrum::spectrum_of(&s, 3).unwrap();
+    let l1 = &spec.eigenvalues[1];
+    assert!((l1.re - 0.5).abs() < 1e-6);
+    assert_eq!((l1.algebraic_multiplicity, l1.geometric_multiplicity), (4, 2));
+    assert_eq!(l1.blocks, vec![1, 2]);
+    // block 0's other eigenvalues, derived above
+    let has = |x: f64| spec.eigenvalues.iter().any(|e| (e.re - x).abs() < 1e-9 && e.im.abs() < 1e-9);
+    assert!(has(1.0 / 6.0) && has(-7.0 / 20.0));
+}

@@ -78,6 +78,17 @@ pub fn subdominant_pair(spec: &Spectrum) -> Pair {
                 l1.display()
             ),
         )
+    } else if l1.geometric_multiplicity < l1.algebraic_multiplicity {
+        (
+            SpectralStatus::Defective,
+            format!(
+                "λ1 = {} is defective (algebraic multiplicity {}, geometric {}): a generalised \
+                 eigenvector grows like k·λ1^k, so the refined nets do not converge to a scaled ring",
+                l1.display(),
+                l1.algebraic_multiplicity,
+                l1.geometric_multiplicity
+            ),
+        )
     } else if l1.algebraic_multiplicity > 2 {
         (
             SpectralStatus::TooMany,
@@ -85,15 +96,6 @@ pub fn subdominant_pair(spec: &Spectrum) -> Pair {
                 "λ1 = {} has multiplicity {}: the subdominant eigenspace is not a pair, the map is not unique",
                 l1.display(),
                 l1.algebraic_multiplicity
-            ),
-        )
-    } else if l1.geometric_multiplicity < 2 {
-        (
-            SpectralStatus::Defective,
-            format!(
-                "λ1 = {} is defective (one eigenvector for a double eigenvalue): the generalised vector \
-                 grows like k·λ1^k, so the refined nets do not converge to a scaled ring",
-                l1.display()
             ),
         )
     } else if spec.eigenvalues.get(2).is_some_and(|l3| l3.modulus >= l1.modulus * (1.0 - 1e-9)) {
