@@ -22,9 +22,10 @@ use crate::neighbourhood::Discovered;
 use crate::refine::{apply, Origin, Stencil};
 use crate::schemes::{Scheme, SchemeWeight};
 
-/// Largest number of faces of a refined net (bounds memory and time: a face
-/// costs a few hundred bytes with its half-edges).
-pub const MAX_NET_FACES: usize = 4_000_000;
+/// Largest number of faces of a refined net: peak memory is about 1 KB per
+/// face (connectivity hash maps and the tracked region entities), so this
+/// bounds a run to roughly a gigabyte.
+pub const MAX_NET_FACES: usize = 1_000_000;
 
 /// A refined planar net with the two tracked face sets.
 #[derive(Clone, Debug)]
