@@ -5,6 +5,7 @@
 //! `refine` (one step) → `matrix` (local S) → `dft` (Fourier blocks) →
 //! `spectrum` (eigenvalues, stencils, verdicts) → `cli`.
 
+pub mod charmap;
 pub mod claims;
 pub mod cli;
 pub mod curves;
@@ -15,6 +16,8 @@ pub mod matrix;
 pub mod mesh;
 pub mod neighbourhood;
 pub mod numeric;
+// figures (SVG / PNG)
+pub mod plot;
 pub mod refine;
 pub mod schemes;
 pub mod spectrum;

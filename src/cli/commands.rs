@@ -23,6 +23,8 @@ pub fn dispatch(cmd: Command) -> Result<(), String> {
         Command::Curve { scheme, params, neighbourhood, json } => {
             super::mesh_commands::curve(&scheme, &params, &neighbourhood, json)
         }
+        Command::Charmap(a) => super::charmap_commands::charmap(&a),
+        Command::Plot { what } => super::charmap_commands::plot(&what),
         Command::Spectrum(a) => {
             let (_, analysis) = run_analysis(&a)?;
             if a.json {

@@ -2,10 +2,12 @@
 //! repeated `--param NAME=VALUE`, `--neighbourhood minimal|analysis` and
 //! `--json`. Errors are one line on stderr with a non-zero exit.
 
+mod charmap_commands;
 mod commands;
 mod lattice;
 mod mesh_commands;
-mod output;
+// `pub(crate)`: figures (`crate::plot`) are written atomically too
+pub(crate) mod output;
 mod verify;
 
 use clap::{Args, Parser, Subcommand};
@@ -96,6 +98,13 @@ pub enum Command {
         /// machine-readable JSON output
         #[arg(long)]
         json: bool,
+    },
+    /// Characteristic map: regularity and injectivity of the characteristic ring; optional figure
+    Charmap(charmap_commands::CharmapArgs),
+    /// Figures (SVG or PNG by the file extension)
+    Plot {
+        #[command(subcommand)]
+        what: charmap_commands::PlotWhat,
     },
 }
 

@@ -1,0 +1,267 @@
+//! Characteristic maps (Reif): the planar map whose control net is the pair of
+//! subdominant eigenvectors, refined with the scheme's own rules; the scheme
+//! is C¹ at the extraordinary point (given the spectral conditions) when the
+//! map is regular and injective on its characteristic ring.
+//!
+//! Files, one per concern: `spectral` (choosing the pair, or why there is
+//! none), `net` (the control net and its refinement), `ring` (ring extraction,
+//! winding numbers), `regularity` (signs of the Jacobian), `raster` (coverage
+//! per pixel), `wedge` (normalised wedges for large valences).
+
+pub mod net;
+pub mod raster;
+pub mod regularity;
+pub mod ring;
+pub mod spectral;
+pub mod wedge;
+
+use serde::Serialize;
+
+use crate::neighbourhood::{Configuration, NeighbourhoodKind};
+use crate::schemes::Scheme;
+use crate::spectrum::{analyse, Analysis, Options};
+pub use raster::Coverage;
+pub use regularity::Regularity;
+pub use ring::{Ring, Tri};
+pub use spectral::SpectralStatus;
+
+/// Most analysis steps of refinement (a ring facet count grows 4^levels).
+pub const MAX_LEVELS: usize = 8;
+pub const DEFAULT_LEVELS: usize = 4;
+pub const DEFAULT_RESOLUTION: usize = 512;
+/// A winding number this far from an integer means the boundary is not closed
+/// around the centre (a bug or a degenerate net), not a count.
+const WINDING_TOL: f64 = 1e-6;
+
+#[derive(Clone, Debug)]
+pub struct CharMapOptions {
+    /// analysis steps of refinement (sqrt(3) schemes: two refinements each)
+    pub levels: usize,
+    /// pixels per side of the rasterisation
+    pub resolution: usize,
+    /// also build the ring at this (coarser) level for drawing
+    pub display_levels: Option<usize>,
+}
+
+impl Default for CharMapOptions {
+    fn default() -> Self {
+        CharMapOptions { levels: DEFAULT_LEVELS, resolution: DEFAULT_RESOLUTION, display_levels: None }
+    }
+}
+
+/// Everything the characteristic-map check found. Field names are stable API
+/// (`subdlab charmap --json`).
+#[derive(Clone, Debug, Serialize)]
+pub struct CharMap {
+    pub scheme: String,
+    pub valence: usize,
+    pub params: std::collections::BTreeMap<String, String>,
+    /// the subdominant eigenvalue λ1
+    pub lambda1: f64,
+    pub subdominant_blocks: Vec<usize>,
+    pub spectral_status: SpectralStatus,
+    pub explanation: String,
+    pub c1_spectral: bool,
+    pub levels: usize,
+    pub refinements: usize,
+    pub resolution: usize,
+    pub regular: bool,
+    pub injective: bool,
+    /// winding number of the ring's outer boundary around the centre
+    pub winding_number: Option<i64>,
+    /// winding number of the ring's inner boundary (λ1 times the outer one)
+    pub inner_winding_number: Option<i64>,
+    pub overlap_pixels: Option<usize>,
+    pub copy_overlap_pixels: Option<usize>,
+    pub ring_pixels: Option<usize>,
+    pub min_jacobian_ratio: Option<f64>,
+    pub min_jacobian_at: Option<[f64; 2]>,
+    pub folded_facets: Option<usize>,
+    pub ring_facets: usize,
+    /// the ring's area over the area inside it (λ1 scaling makes this
+    /// (1 − λ1²)/λ1² for an injective map)
+    pub ring_area: Option<f64>,
+    pub inner_area: Option<f64>,
+    pub reasons: Vec<String>,
+    /// the normalised ring (the map rotated so that a sector spoke is on the
+    /// positive x-axis, oriented counter-clockwise, outer radius 1)
+    #[serde(skip)]
+    pub ring: Option<Ring>,
+    #[serde(skip)]
+    pub display: Option<Ring>,
+    /// level-0 control net faces (normalised), for figures
+    #[serde(skip)]
+    pub control_net: Vec<Vec<[f64; 2]>>,
+}
+
+/// Analyse `scheme` at `config` and check its characteristic map.
+pub fn characteristic_map(
+    scheme: &dyn Scheme,
+    config: &Configuration,
+    opts: &CharMapOptions,
+) -> Result<CharMap, String> {
+    if opts.levels == 0 || opts.levels > MAX_LEVELS {
+        return Err(format!("levels must be between 1 and {MAX_LEVELS}, got {}", opts.levels));
+    }
+    if opts.resolution < 16 || opts.resolution > raster::MAX_RESOLUTION {
+        return Err(format!(
+            "resolution must be between 16 and {} pixels, got {}",
+            raster::MAX_RESOLUTION,
+            opts.resolution
+        ));
+    }
+    let analysis =
+        analyse(scheme, config, &Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false })?;
+    check_map(scheme, &analysis, opts)
+}
+
+/// The check on a finished analysis (analysis neighbourhood).
+pub fn check_map(scheme: &dyn Scheme, analysis: &Analysis, opts: &CharMapOptions) -> Result<CharMap, String> {
+    let spec = &analysis.spectrum;
+    if spec.neighbourhood != NeighbourhoodKind::Analysis {
+        return Err("the characteristic map needs the analysis neighbourhood".into());
+    }
+    let pair = spectral::subdominant_pair(spec);
+    let mut out = CharMap {
+        scheme: spec.scheme.clone(),
+        valence: spec.valence,
+        params: spec.params.clone(),
+        lambda1: pair.lambda,
+        subdominant_blocks: pair.blocks.clone(),
+        spectral_status: pair.status,
+        explanation: pair.explanation.clone(),
+        c1_spectral: spec.verdict.c1_spectral,
+        levels: opts.levels,
+        refinements: 0,
+        resolution: opts.resolution,
+        regular: false,
+        injective: false,
+        winding_number: None,
+        inner_winding_number: None,
+        overlap_pixels: None,
+        copy_overlap_pixels: None,
+        ring_pixels: None,
+        min_jacobian_ratio: None,
+        min_jacobian_at: None,
+        folded_facets: None,
+        ring_facets: 0,
+        ring_area: None,
+        inner_area: None,
+        reasons: Vec::new(),
+        ring: None,
+        display: None,
+        control_net: Vec::new(),
+    };
+    if !pair.status.has_map() {
+        out.reasons.push(format!("no characteristic map: {}", pair.explanation));
+        return Ok(out);
+    }
+    let d = &analysis.discovered;
+    let level0 = net::initial_points(d, &pair.values)?;
+    let mut fine = net::refine_net(scheme, d, level0.clone(), opts.levels)?;
+    let m = normalisation(d, &pair.values, &ring::extract(&fine));
+    net::transform(&mut fine.points, m);
+    out.refinements = fine.refinements;
+    let ring = ring::extract(&fine);
+
+    let reg = regularity::regularity(&ring.ring);
+    let (cov, _) = raster::rasterise_ring(&ring.ring, &ring.inner, opts.resolution)?;
+    let outer_w = ring::winding_number(&ring.outer_boundary);
+    let inner_w = ring::winding_number(&ring.inner_boundary);
+    let round = |w: Option<f64>| w.filter(|w| (w - w.round()).abs() < WINDING_TOL).map(|w| w.round() as i64);
+    out.winding_number = round(outer_w);
+    out.inner_winding_number = round(inner_w);
+    out.regular = reg.regular;
+    out.min_jacobian_ratio = Some(reg.min_jacobian_ratio);
+    out.min_jacobian_at = Some(reg.min_jacobian_at);
+    out.folded_facets = Some(reg.folded_facets);
+    out.ring_facets = reg.facets;
+    out.overlap_pixels = Some(cov.overlap_pixels);
+    out.copy_overlap_pixels = Some(cov.copy_overlap_pixels);
+    out.ring_pixels = Some(cov.ring_pixels);
+    out.ring_area = Some(regularity::total_signed_area(&ring.ring));
+    out.inner_area = Some(regularity::total_signed_area(&ring.inner));
+
+    let mut reasons = vec![pair.explanation.clone()];
+    if reg.regular {
+        reasons.push(format!(
+            "regular: all {} facets positively oriented; smallest/largest signed area {:.4}",
+            reg.facets, reg.min_jacobian_ratio
+        ));
+    } else {
+        reasons.push(format!(
+            "not regular: {} of {} facets folded or degenerate; smallest/largest signed area {:.4} at ({:.4}, {:.4})",
+            reg.folded_facets, reg.facets, reg.min_jacobian_ratio, reg.min_jacobian_at[0], reg.min_jacobian_at[1]
+        ));
+    }
+    match (outer_w, out.winding_number) {
+        (Some(_), Some(1)) => reasons.push("the ring's outer boundary winds once around the centre".into()),
+        (Some(_), Some(w)) => reasons.push(format!("the ring's outer boundary winds {w} times around the centre")),
+        (Some(w), None) => reasons.push(format!("the outer boundary's winding number {w:.4} is not an integer")),
+        (None, _) => reasons.push("the outer boundary passes through the centre".into()),
+    }
+    if out.inner_winding_number != Some(1) {
+        reasons.push(format!("the ring's inner boundary winds {:?} times around the centre", out.inner_winding_number));
+    }
+    reasons.push(format!(
+        "{} of {} ring pixels covered more than once; {} pixels shared with the scaled copy (resolution {})",
+        cov.overlap_pixels, cov.ring_pixels, cov.copy_overlap_pixels, opts.resolution
+    ));
+    out.injective = reg.regular
+        && out.winding_number == Some(1)
+        && out.inner_winding_number == Some(1)
+        && cov.overlap_pixels == 0
+        && cov.copy_overlap_pixels == 0;
+    reasons.push(if out.injective {
+        "injective: the characteristic map passes (regular and injective)".into()
+    } else {
+        "not injective".into()
+    });
+    out.reasons = reasons;
+
+    if let Some(levels) = opts.display_levels {
+        let mut coarse = net::refine_net(scheme, d, level0.clone(), levels.clamp(1, opts.levels))?;
+        net::transform(&mut coarse.points, m);
+        out.display = Some(ring::extract(&coarse));
+    }
+    let mut pts0 = level0;
+    net::transform(&mut pts0, m);
+    out.control_net = control_net(&d.patch, &pts0);
+    out.ring = Some(ring);
+    Ok(out)
+}
+
+/// The linear map that orients the ring counter-clockwise, puts the image of
+/// the first spoke vertex (ring 1, sector 0) on the positive x-axis and the
+/// outer boundary at radius at most 1. Orientation, rotation and scale of an
+/// eigenvector pair are arbitrary; fixing them makes figures comparable.
+fn normalisation(d: &crate::neighbourhood::Discovered, values: &[[f64; 2]], raw: &Ring) -> [[f64; 2]; 2] {
+    let area = regularity::total_signed_area(&raw.ring) + regularity::total_signed_area(&raw.inner);
+    let flip = if area < 0.0 { -1.0 } else { 1.0 };
+    let reference = d
+        .analysis
+        .iter()
+        .zip(values)
+        .filter(|(v, p)| d.labels[**v].ring == 1 && d.labels[**v].sector == 0 && p[0].hypot(p[1]) > 0.0)
+        .map(|(_, p)| [p[0], flip * p[1]])
+        .next()
+        .or_else(|| values.iter().find(|p| p[0].hypot(p[1]) > 0.0).map(|p| [p[0], flip * p[1]]))
+        .unwrap_or([1.0, 0.0]);
+    let theta = reference[1].atan2(reference[0]);
+    let (c, s) = (theta.cos(), theta.sin());
+    let radius = raw.outer_boundary.iter().flatten().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max);
+    let k = if radius > 0.0 { 1.0 / radius } else { 1.0 };
+    // rotate by −θ after flipping y
+    [[k * c, k * s * flip], [-k * s, k * c * flip]]
+}
+
+/// Faces of the level-0 patch whose corners all carry the eigenvector.
+fn control_net(patch: &crate::mesh::PolyMesh, pts: &[Option<[f64; 2]>]) -> Vec<Vec<[f64; 2]>> {
+    patch.faces().iter().filter_map(|f| f.iter().map(|&v| pts[v]).collect::<Option<Vec<_>>>()).collect()
+}
+
+/// `run` for a configuration: the common call for the regular configuration.
+pub fn characteristic_map_of(scheme: &dyn Scheme, valence: usize, opts: &CharMapOptions) -> Result<CharMap, String> {
+    let config = Configuration::regular(scheme, valence)?;
+    characteristic_map(scheme, &config, opts)
+}

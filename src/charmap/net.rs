@@ -1,0 +1,261 @@
+//! The planar control net of the characteristic map and its refinement.
+//!
+//! The net is the pair of subdominant eigenvectors put on the patch vertices
+//! of the analysis neighbourhood (nothing elsewhere). It is refined with the
+//! scheme's own topology operator and stencils (`refine::apply`), so a vertex
+//! whose stencil reaches outside the neighbourhood stays undefined; the first
+//! ring around the centre stays defined because that is how the analysis
+//! neighbourhood was found (`neighbourhood::discovery`).
+//!
+//! Two face sets are tracked through the levels, with the same descent rule as
+//! discovery (a new face descends from a region when its parent entity and all
+//! its vertices come from the region's vertices, edges, faces or corners):
+//! `outer`, the descendants of the level-0 first ring (faces touching the
+//! centre), and `inner`, the descendants of the first ring after one analysis
+//! step. The characteristic ring is `outer` minus `inner`; `inner` is the ring
+//! scaled by λ1 together with all smaller copies.
+
+use std::collections::HashSet;
+
+use crate::mesh::PolyMesh;
+use crate::neighbourhood::Discovered;
+use crate::refine::{apply, Origin, Stencil};
+use crate::schemes::{Scheme, SchemeWeight};
+
+/// Largest number of faces of a refined net: peak memory is about 1 KB per
+/// face (connectivity hash maps and the tracked region entities), so this
+/// bounds a run to roughly a gigabyte.
+pub const MAX_NET_FACES: usize = 1_000_000;
+
+/// A refined planar net with the two tracked face sets.
+#[derive(Clone, Debug)]
+pub struct Net {
+    pub mesh: PolyMesh,
+    pub points: Vec<Option<[f64; 2]>>,
+    /// descendants of the level-0 first ring
+    pub outer: Vec<bool>,
+    /// descendants of the first ring after one analysis step
+    pub inner: Vec<bool>,
+    /// refinements applied to the patch
+    pub refinements: usize,
+}
+
+/// Apply a linear map to every defined point.
+pub fn transform(points: &mut [Option<[f64; 2]>], m: [[f64; 2]; 2]) {
+    for p in points.iter_mut().flatten() {
+        *p = [m[0][0] * p[0] + m[0][1] * p[1], m[1][0] * p[0] + m[1][1] * p[1]];
+    }
+}
+
+/// The level-0 net: `values[k]` sits on patch vertex `d.analysis[k]`.
+pub fn initial_points(d: &Discovered, values: &[[f64; 2]]) -> Result<Vec<Option<[f64; 2]>>, String> {
+    if values.len() != d.analysis.len() {
+        return Err(format!("{} eigenvector entries for {} neighbourhood vertices", values.len(), d.analysis.len()));
+    }
+    let mut pts = vec![None; d.patch.num_vertices()];
+    for (k, &v) in d.analysis.iter().enumerate() {
+        pts[v] = Some(values[k]);
+    }
+    Ok(pts)
+}
+
+/// Ring-0 vertices of the patch (the centre vertex or the central face's corners).
+pub fn centre_set(d: &Discovered) -> Vec<usize> {
+    (0..d.patch.num_vertices()).filter(|&v| d.labels[v].ring == 0).collect()
+}
+
+fn faces_touching(mesh: &PolyMesh, set: &HashSet<usize>) -> Vec<bool> {
+    mesh.faces().iter().map(|f| f.iter().any(|v| set.contains(v))).collect()
+}
+
+/// Vertex rings kept around the first ring when pruning, tried in turn: two
+/// cover every one-ring rule; schemes with wider masks get a wider margin
+/// instead of an error.
+const MARGINS: [usize; 3] = [2, 4, 8];
+
+/// Refine the level-0 net `analysis_steps` whole analysis steps (at least one).
+pub fn refine_net(
+    scheme: &dyn Scheme,
+    d: &Discovered,
+    level0: Vec<Option<[f64; 2]>>,
+    analysis_steps: usize,
+) -> Result<Net, String> {
+    let mut last = Err(String::new());
+    for margin in MARGINS {
+        last = refine_with_margin(scheme, d, level0.clone(), analysis_steps, margin);
+        match &last {
+            Err(e) if e.contains(NOT_DETERMINED) => continue,
+            _ => return last,
+        }
+    }
+    last
+}
+
+const NOT_DETERMINED: &str = "is not determined by the analysis neighbourhood";
+
+fn refine_with_margin(
+    scheme: &dyn Scheme,
+    d: &Discovered,
+    level0: Vec<Option<[f64; 2]>>,
+    analysis_steps: usize,
+    margin: usize,
+) -> Result<Net, String> {
+    if analysis_steps == 0 {
+        return Err("the characteristic ring needs at least one analysis step".into());
+    }
+    let steps = scheme.topology().steps_per_analysis();
+    let centre0: HashSet<usize> = centre_set(d).into_iter().collect();
+    let mut net = Net {
+        outer: faces_touching(&d.patch, &centre0),
+        inner: vec![false; d.patch.num_faces()],
+        mesh: d.patch.clone(),
+        points: level0,
+        refinements: 0,
+    };
+    // the first analysis step reuses discovery's refinements, whose vertex ids
+    // the successor map (lattice charts) refers to
+    for k in 0..steps {
+        let r = &d.refinements[k];
+        let points = apply(&d.stencils[k], &net.points);
+        net = descend(&net, &r.mesh, &r.vertex_origins, &r.face_parents, points);
+    }
+    let centre1: HashSet<usize> = centre0
+        .iter()
+        .map(|&v| d.successor(v).ok_or("a centre vertex has no successor after one analysis step"))
+        .collect::<Result<_, _>>()?;
+    net.inner = faces_touching(&net.mesh, &centre1);
+    check_defined(&net)?;
+    net = prune(net, margin)?;
+    for _ in steps..analysis_steps * steps {
+        let bound = net.mesh.num_faces() * 4;
+        if bound > MAX_NET_FACES {
+            return Err(format!(
+                "refinement level {} would need about {bound} faces, above the supported {MAX_NET_FACES}; use fewer levels",
+                net.refinements + 1
+            ));
+        }
+        let r = scheme.topology().refine(&net.mesh)?;
+        let stencils: Vec<Option<Stencil<f64>>> = r
+            .vertex_origins
+            .iter()
+            .map(|&o| <f64 as SchemeWeight>::stencil(scheme, &net.mesh, o).ok().flatten())
+            .collect();
+        let points = apply(&stencils, &net.points);
+        net = descend(&net, &r.mesh, &r.vertex_origins, &r.face_parents, points);
+        check_defined(&net)?;
+        net = prune(net, margin)?;
+    }
+    Ok(net)
+}
+
+fn descend(old: &Net, mesh: &PolyMesh, origins: &[Origin], parents: &[Origin], points: Vec<Option<[f64; 2]>>) -> Net {
+    let carry = |flags: &[bool]| -> Vec<bool> {
+        let ents = region_entities(&old.mesh, flags);
+        let from: Vec<bool> = origins.iter().map(|o| ents.contains(o)).collect();
+        mesh.faces().iter().zip(parents).map(|(f, p)| ents.contains(p) && f.iter().all(|&v| from[v])).collect()
+    };
+    Net {
+        outer: carry(&old.outer),
+        inner: carry(&old.inner),
+        mesh: mesh.clone(),
+        points,
+        refinements: old.refinements + 1,
+    }
+}
+
+/// Vertices, edges (both orientations), faces and corners of the flagged faces, as origins.
+fn region_entities(mesh: &PolyMesh, flags: &[bool]) -> HashSet<Origin> {
+    let mut set = HashSet::new();
+    for (f, face) in mesh.faces().iter().enumerate().filter(|(f, _)| flags[*f]) {
+        set.insert(Origin::Face(f));
+        for (k, &v) in face.iter().enumerate() {
+            let w = face[(k + 1) % face.len()];
+            set.insert(Origin::Vertex(v));
+            set.insert(Origin::Edge(v, w));
+            set.insert(Origin::Edge(w, v));
+            set.insert(Origin::Corner { face: f, corner: k });
+        }
+    }
+    set
+}
+
+fn face_vertices(mesh: &PolyMesh, f: usize) -> impl Iterator<Item = usize> + '_ {
+    mesh.face(f).iter().copied().chain(mesh.face_point(f))
+}
+
+/// Every vertex of the first ring's descendants must be defined; otherwise the
+/// neighbourhood does not determine the ring and no verdict can be given.
+fn check_defined(net: &Net) -> Result<(), String> {
+    for f in (0..net.mesh.num_faces()).filter(|&f| net.outer[f]) {
+        if face_vertices(&net.mesh, f).any(|v| net.points[v].is_none()) {
+            return Err(format!("after {} refinements a vertex of the first ring {NOT_DETERMINED}", net.refinements));
+        }
+    }
+    if !net.outer.iter().any(|&x| x) {
+        return Err("the first ring around the centre is empty".into());
+    }
+    Ok(())
+}
+
+/// Keep the faces that the next refinement of the first ring can need: the
+/// faces within `margin` vertex rings of the first ring. Faces with undefined
+/// corners stay (a rule may use only part of a face, e.g. non-box's vertex
+/// rule reads the face control vertices around a vertex, not its neighbours). Without this the
+/// net would grow by the whole defined region (4x per level) instead of by the
+/// ring alone. A too-small margin shows up as an undefined first-ring vertex
+/// (`check_defined`), never as a silent error, and `refine_net` then retries
+/// with a wider one.
+fn prune(net: Net, margin: usize) -> Result<Net, String> {
+    let mesh = &net.mesh;
+    let mut near: HashSet<usize> = HashSet::new();
+    for f in (0..mesh.num_faces()).filter(|&f| net.outer[f]) {
+        near.extend(mesh.face(f).iter().copied());
+    }
+    let vf = mesh.vertex_faces();
+    for _ in 0..margin {
+        let mut grown = near.clone();
+        for &v in &near {
+            for &f in &vf[v] {
+                grown.extend(mesh.face(f).iter().copied());
+            }
+        }
+        near = grown;
+    }
+    let keep: Vec<usize> = (0..mesh.num_faces()).filter(|&f| mesh.face(f).iter().any(|v| near.contains(v))).collect();
+    let mut id = vec![usize::MAX; mesh.num_vertices()];
+    let mut points = Vec::new();
+    let mut take = |v: usize, id: &mut Vec<usize>| {
+        if id[v] == usize::MAX {
+            id[v] = points.len();
+            points.push(net.points[v]);
+        }
+        id[v]
+    };
+    let faces: Vec<Vec<usize>> =
+        keep.iter().map(|&f| mesh.face(f).iter().map(|&v| take(v, &mut id)).collect()).collect();
+    let fcv: Option<Vec<usize>> =
+        mesh.face_points.as_ref().map(|p| keep.iter().map(|&f| take(p[f], &mut id)).collect());
+    let mut new_mesh = PolyMesh::new(points.len(), faces).map_err(|e| e.to_string())?;
+    if let Some(fcv) = fcv {
+        new_mesh = new_mesh.with_face_points(fcv)?;
+    }
+    Ok(Net {
+        outer: keep.iter().map(|&f| net.outer[f]).collect(),
+        inner: keep.iter().map(|&f| net.inner[f]).collect(),
+        mesh: new_mesh,
+        points,
+        refinements: net.refinements,
+    })
+}
+
+/// The facets of face f as triangles of net vertex ids: around the face
+/// control vertex when there is one (the four-directional triangles of
+/// non-box), else a fan from the first corner.
+pub fn facet_triangles(mesh: &PolyMesh, f: usize) -> Vec<[usize; 3]> {
+    let face = mesh.face(f);
+    let m = face.len();
+    match mesh.face_point(f) {
+        Some(c) => (0..m).map(|k| [face[k], face[(k + 1) % m], c]).collect(),
+        None => (1..m - 1).map(|k| [face[0], face[k], face[k + 1]]).collect(),
+    }
+}

@@ -1,0 +1,193 @@
+//! `subdlab charmap` and `subdlab plot`.
+
+use std::path::{Path, PathBuf};
+
+use clap::{Args, Subcommand};
+
+use super::commands::parse_params;
+use super::output::print_json;
+use crate::charmap::{characteristic_map, CharMap, CharMapOptions, DEFAULT_LEVELS, DEFAULT_RESOLUTION, MAX_LEVELS};
+use crate::neighbourhood::configuration::check_valence;
+use crate::neighbourhood::{Configuration, NeighbourhoodKind};
+use crate::plot::{self, charmap::RingFigure, spectrum::SpectrumFigure};
+use crate::schemes::{self, Scheme};
+use crate::spectrum::{analyse, Options};
+
+/// Most valences in one spectrum plot (each is a full analysis).
+const MAX_PLOT_VALENCES: usize = 200;
+/// Largest analysis level drawn in a figure: finer facets only blacken the
+/// picture and inflate the SVG.
+const FIGURE_LEVELS: usize = 3;
+
+#[derive(Args, Debug, Clone)]
+pub struct CharmapArgs {
+    /// scheme name (see `subdlab schemes`)
+    pub scheme: String,
+    /// valence of the extraordinary vertex (or face)
+    #[arg(long, short = 'n')]
+    pub valence: usize,
+    /// analysis steps of refinement of the control net (1 to 8)
+    #[arg(long, default_value_t = DEFAULT_LEVELS)]
+    pub levels: usize,
+    /// pixels per side when rasterising the ring (16 to 8192)
+    #[arg(long, default_value_t = DEFAULT_RESOLUTION)]
+    pub resolution: usize,
+    /// scheme parameter NAME=VALUE; repeatable
+    #[arg(long = "param", short = 'p')]
+    pub params: Vec<String>,
+    /// write a figure (.svg or .png) of the nested rings and the control net
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// draw the normalised wedge of one sector (angle 2π/n stretched to π/2) instead of the rings
+    #[arg(long)]
+    pub wedge: bool,
+    /// rings drawn: the ring and its copies scaled by λ1, λ1², ... (1 to 12)
+    #[arg(long, default_value_t = 4)]
+    pub rings: usize,
+    /// machine-readable JSON output
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Subcommand, Debug, Clone)]
+pub enum PlotWhat {
+    /// Leading eigenvalue moduli against valence
+    Spectrum {
+        /// scheme name (see `subdlab schemes`)
+        scheme: String,
+        /// valence range, e.g. 3..40 (inclusive) or a single valence
+        #[arg(long, default_value = "3..40")]
+        valences: String,
+        /// scheme parameter NAME=VALUE; repeatable
+        #[arg(long = "param", short = 'p')]
+        params: Vec<String>,
+        /// how many distinct moduli after λ0 = 1 to draw (1 to 6)
+        #[arg(long, default_value_t = 3)]
+        count: usize,
+        /// output figure (.svg or .png)
+        #[arg(long)]
+        out: PathBuf,
+    },
+}
+
+fn build_scheme(name: &str, params: &[String]) -> Result<Box<dyn Scheme>, String> {
+    if crate::lattice::find(name).is_some() {
+        return Err(format!(
+            "{name} is a regular-lattice scheme (valence 4 only, no extraordinary point): it has no characteristic map"
+        ));
+    }
+    schemes::build(name, &parse_params(params)?)
+}
+
+/// Fails early, before any computation, when the output cannot be written.
+fn check_out(path: &Path) -> Result<(), String> {
+    plot::format_of(path)?;
+    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    if !dir.is_dir() {
+        return Err(format!("cannot write {}: directory {} does not exist", path.display(), dir.display()));
+    }
+    Ok(())
+}
+
+pub fn charmap(a: &CharmapArgs) -> Result<(), String> {
+    if a.levels == 0 || a.levels > MAX_LEVELS {
+        return Err(format!("--levels must be between 1 and {MAX_LEVELS}, got {}", a.levels));
+    }
+    if a.rings == 0 || a.rings > 12 {
+        return Err(format!("--rings must be between 1 and 12, got {}", a.rings));
+    }
+    if let Some(out) = &a.out {
+        check_out(out)?;
+    } else if a.wedge {
+        return Err("--wedge selects the figure; give the figure file with --out FILE.svg|png".into());
+    }
+    let scheme = build_scheme(&a.scheme, &a.params)?;
+    let config = Configuration::regular(scheme.as_ref(), a.valence)?;
+    let opts = CharMapOptions {
+        levels: a.levels,
+        resolution: a.resolution,
+        display_levels: a.out.as_ref().map(|_| a.levels.min(FIGURE_LEVELS)),
+    };
+    let map = characteristic_map(scheme.as_ref(), &config, &opts)?;
+    if let Some(out) = &a.out {
+        if map.ring.is_none() {
+            return Err(format!("no figure written: {}", map.explanation));
+        }
+        plot::save(&RingFigure { map: &map, copies: a.rings, wedge: a.wedge }, out)?;
+    }
+    if a.json {
+        print_json(&map)
+    } else {
+        print!("{}", table(&map));
+        Ok(())
+    }
+}
+
+fn table(m: &CharMap) -> String {
+    let mut out = format!(
+        "scheme {}  valence {}  λ1 = {}  blocks {:?}\nlevels {} ({} refinements)  resolution {}\n\n",
+        m.scheme,
+        m.valence,
+        crate::spectrum::fmt_f(m.lambda1),
+        m.subdominant_blocks,
+        m.levels,
+        m.refinements,
+        m.resolution
+    );
+    let yes = |b: bool| if b { "yes" } else { "NO" };
+    out += &format!("regular    {}\ninjective  {}\n", yes(m.regular), yes(m.injective));
+    if let Some(w) = m.winding_number {
+        out += &format!("winding number {w} (inner boundary {:?})\n", m.inner_winding_number);
+    }
+    if let (Some(o), Some(c), Some(p)) = (m.overlap_pixels, m.copy_overlap_pixels, m.ring_pixels) {
+        out += &format!("overlap pixels {o} (ring {p} pixels; shared with the scaled copy {c})\n");
+    }
+    if let (Some(r), Some(at)) = (m.min_jacobian_ratio, m.min_jacobian_at) {
+        out += &format!("min/max Jacobian {r:.6} at ({:.4}, {:.4})\n", at[0], at[1]);
+    }
+    out += "\n";
+    for r in &m.reasons {
+        out += &format!("  - {r}\n");
+    }
+    out
+}
+
+/// "3..40", "3-40" or "7" (inclusive).
+fn parse_range(s: &str) -> Result<(usize, usize), String> {
+    let bad = || format!("valence range '{s}' is not of the form A..B (e.g. 3..40)");
+    let (a, b) = match s.split_once("..").or_else(|| s.split_once('-')) {
+        Some((a, b)) => (a.trim(), b.trim().trim_start_matches('=')),
+        None => (s.trim(), s.trim()),
+    };
+    let (a, b): (usize, usize) = (a.parse().map_err(|_| bad())?, b.parse().map_err(|_| bad())?);
+    if a > b {
+        return Err(format!("valence range '{s}' is empty"));
+    }
+    check_valence(a)?;
+    check_valence(b)?;
+    if b - a + 1 > MAX_PLOT_VALENCES {
+        return Err(format!("at most {MAX_PLOT_VALENCES} valences per plot, got {}", b - a + 1));
+    }
+    Ok((a, b))
+}
+
+pub fn plot(what: &PlotWhat) -> Result<(), String> {
+    match what {
+        PlotWhat::Spectrum { scheme, valences, params, count, out } => {
+            if *count == 0 || *count > 6 {
+                return Err(format!("--count must be between 1 and 6, got {count}"));
+            }
+            check_out(out)?;
+            let (a, b) = parse_range(valences)?;
+            let s = build_scheme(scheme, params)?;
+            let mut rows = Vec::new();
+            for n in a..=b {
+                let config = Configuration::regular(s.as_ref(), n)?;
+                let opts = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
+                let spec = analyse(s.as_ref(), &config, &opts)?.spectrum;
+                rows.push((n, spec.eigenvalues.iter().skip(1).map(|e| e.modulus).collect()));
+            }
+            plot::save(&SpectrumFigure { scheme: s.name().to_string(), rows, count: *count }, out)
+        }
+    }
+}

@@ -1,0 +1,92 @@
+//! Figures: SVG for papers, PNG for quick looks.
+//!
+//! Text is laid out with an embedded font (DejaVu Sans, `assets/fonts/`,
+//! licence next to it) registered with plotters' ab_glyph backend, so no
+//! system font is needed: without a registered font the PNG backend panics at
+//! the first label. Files are written atomically (temporary file in the
+//! target's directory, then rename).
+
+pub mod charmap;
+pub mod spectrum;
+
+use std::path::Path;
+use std::sync::Once;
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+/// The family name figures use for text.
+pub const FONT: &str = "sans-serif";
+static FONT_BYTES: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+static REGISTER: Once = Once::new();
+
+fn register_font() -> Result<(), String> {
+    let mut result = Ok(());
+    REGISTER.call_once(|| {
+        if plotters::style::register_font(FONT, FontStyle::Normal, FONT_BYTES).is_err() {
+            result = Err("the embedded font could not be loaded".to_string());
+        }
+    });
+    result
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    Svg,
+    Png,
+}
+
+/// The figure format from the file extension (`.svg` or `.png`, any case).
+pub fn format_of(path: &Path) -> Result<Format, String> {
+    match path.extension().and_then(|e| e.to_str()).map(|e| e.to_ascii_lowercase()).as_deref() {
+        Some("svg") => Ok(Format::Svg),
+        Some("png") => Ok(Format::Png),
+        Some(other) => Err(format!("unknown figure extension '.{other}' in {}; use .svg or .png", path.display())),
+        None => Err(format!("{} has no extension; use .svg or .png", path.display())),
+    }
+}
+
+/// A figure that can draw itself on any plotters backend.
+pub trait Figure {
+    fn size(&self) -> (u32, u32);
+    fn draw<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> Result<(), String>
+    where
+        DB::ErrorType: 'static;
+}
+
+/// Draw `fig` into `path` (format from the extension), atomically.
+pub fn save<F: Figure>(fig: &F, path: &Path) -> Result<(), String> {
+    let format = format_of(path)?;
+    register_font()?;
+    let size = fig.size();
+    match format {
+        Format::Svg => {
+            let mut svg = String::new();
+            {
+                let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
+                fig.draw(&root)?;
+                root.present().map_err(|e| format!("cannot draw the figure: {e}"))?;
+            }
+            crate::cli::output::write_atomic(path, svg.as_bytes())
+        }
+        Format::Png => {
+            let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+            let tmp = tempfile::Builder::new()
+                .suffix(".png")
+                .tempfile_in(dir)
+                .map_err(|e| format!("cannot write in {}: {e}", dir.display()))?;
+            {
+                let root = BitMapBackend::new(tmp.path(), size).into_drawing_area();
+                fig.draw(&root)?;
+                root.present().map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+            }
+            tmp.persist(path).map_err(|e| format!("cannot replace {}: {}", path.display(), e.error))?;
+            Ok(())
+        }
+    }
+}
+
+/// A plotters error as one line.
+pub(crate) fn err<E: std::fmt::Display>(e: E) -> String {
+    format!("cannot draw the figure: {e}")
+}

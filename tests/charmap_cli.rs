@@ -1,0 +1,112 @@
+//! `subdlab charmap` and `subdlab plot` as a user runs them: JSON fields,
+//! figure files, one-line errors.
+
+use std::process::{Command, Output};
+
+fn subdlab(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_subdlab")).args(args).output().expect("binary runs")
+}
+
+fn fails(args: &[&str]) -> String {
+    let out = subdlab(args);
+    let err = String::from_utf8_lossy(&out.stderr).to_string();
+    assert!(!out.status.success(), "{args:?} should fail");
+    assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: one-line error expected, got {err:?}");
+    err
+}
+
+#[test]
+fn charmap_json_carries_the_stable_fields() {
+    let out =
+        subdlab(&["charmap", "catmull-clark", "--valence", "5", "--levels", "3", "--resolution", "128", "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["regular"], true);
+    assert_eq!(v["injective"], true);
+    assert_eq!(v["winding_number"], 1);
+    assert_eq!(v["overlap_pixels"], 0);
+    assert_eq!(v["levels"], 3);
+    assert_eq!(v["resolution"], 128);
+    let r = v["min_jacobian_ratio"].as_f64().unwrap();
+    assert!(r > 0.0 && r <= 1.0);
+    assert_eq!(v["spectral_status"], "ok");
+}
+
+#[test]
+fn charmap_json_has_the_fields_even_without_a_map() {
+    // non-box with a = 0 at valence 3 freezes the centre's vertex and face
+    // rules; whatever the spectrum then is, the stable fields are present and
+    // the verdict is explained
+    let out = subdlab(&["charmap", "non-box", "--valence", "3", "--param", "a=0", "--levels", "2", "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    for f in ["regular", "injective", "winding_number", "overlap_pixels", "min_jacobian_ratio", "levels", "resolution"]
+    {
+        assert!(v.get(f).is_some(), "field {f}");
+    }
+    assert!(!v["explanation"].as_str().unwrap().is_empty());
+}
+
+#[test]
+fn figures_are_written_as_svg_and_png() {
+    let dir = tempfile::tempdir().unwrap();
+    let svg = dir.path().join("ring.svg");
+    let png = dir.path().join("ring.PNG");
+    let spec = dir.path().join("spectrum.png");
+    let wedge = dir.path().join("wedge.svg");
+    for (args, path) in [
+        (vec!["charmap", "loop", "--valence", "7", "--levels", "2", "--out"], &svg),
+        (vec!["charmap", "doo-sabin", "--valence", "5", "--levels", "2", "--out"], &png),
+        (vec!["charmap", "catmull-clark", "--valence", "24", "--levels", "2", "--wedge", "--out"], &wedge),
+        (vec!["plot", "spectrum", "loop", "--valences", "3..8", "--out"], &spec),
+    ] {
+        let mut a = args.clone();
+        a.push(path.to_str().unwrap());
+        let out = subdlab(&a);
+        assert!(out.status.success(), "{a:?}: {}", String::from_utf8_lossy(&out.stderr));
+        let bytes = std::fs::read(path).unwrap();
+        if path.extension().unwrap().eq_ignore_ascii_case("png") {
+            assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n", "{path:?}");
+        } else {
+            let text = String::from_utf8(bytes).unwrap();
+            assert!(text.contains("<svg") && text.contains("λ1"), "{path:?}");
+        }
+    }
+    // no temporary files left behind
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 4);
+}
+
+#[test]
+fn bad_input_gives_one_line_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    let good = dir.path().join("x.svg");
+    let good = good.to_str().unwrap();
+    let e = fails(&["charmap", "no-such-scheme", "--valence", "5"]);
+    assert!(e.contains("unknown scheme"), "{e}");
+    fails(&["charmap", "loop", "--valence", "2"]);
+    fails(&["charmap", "loop", "--valence", "1001"]);
+    let e = fails(&["charmap", "loop", "--valence", "5", "--resolution", "0"]);
+    assert!(e.contains("resolution"), "{e}");
+    fails(&["charmap", "loop", "--valence", "5", "--resolution", "1000000"]);
+    fails(&["charmap", "loop", "--valence", "5", "--levels", "0"]);
+    fails(&["charmap", "loop", "--valence", "5", "--levels", "99"]);
+    fails(&["charmap", "loop", "--valence", "5", "--rings", "0"]);
+    let e = fails(&["charmap", "loop", "--valence", "5", "--out", "/nonexistent-dir/ring.svg"]);
+    assert!(e.contains("cannot write"), "{e}");
+    let e = fails(&["charmap", "loop", "--valence", "5", "--out", "ring.jpg"]);
+    assert!(e.contains("extension"), "{e}");
+    fails(&["charmap", "loop", "--valence", "5", "--out", "ring"]);
+    fails(&["charmap", "khan-mustafa", "--valence", "4"]);
+    fails(&["charmap", "loop", "--valence", "5", "--wedge"]);
+    fails(&["charmap", "loop", "--valence", "5", "--param", "a=1"]);
+    fails(&["plot", "spectrum", "loop", "--valences", "9..3", "--out", good]);
+    fails(&["plot", "spectrum", "loop", "--valences", "2..5", "--out", good]);
+    fails(&["plot", "spectrum", "loop", "--valences", "three", "--out", good]);
+    fails(&["plot", "spectrum", "loop", "--valences", "3..500", "--out", good]);
+    fails(&["plot", "spectrum", "loop", "--count", "0", "--out", good]);
+    fails(&["plot", "spectrum", "loop", "--out", "/nonexistent-dir/s.png"]);
+    fails(&["plot", "spectrum", "loop", "--out", "s.gif"]);
+    fails(&["plot", "nothing"]);
+    assert!(!std::path::Path::new(good).exists());
+}
