@@ -19,6 +19,7 @@ pub mod numeric;
 // figures (SVG / PNG)
 pub mod plot;
 pub mod refine;
+pub mod report;
 pub mod schemes;
 pub mod spectrum;
 pub mod topology;

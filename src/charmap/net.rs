@@ -59,9 +59,13 @@ pub fn initial_points(d: &Discovered, values: &[[f64; 2]]) -> Result<Vec<Option<
     Ok(pts)
 }
 
-/// Ring-0 vertices of the patch (the centre vertex or the central face's corners).
+/// The vertices whose faces carry the first ring: ring 0 of the patch (the
+/// centre vertex or the central face's corners), and for layouts whose first
+/// non-degenerate ring lies further out (polar) the rings up to
+/// `CentreKind::first_ring_depth`, as in neighbourhood discovery.
 pub fn centre_set(d: &Discovered) -> Vec<usize> {
-    (0..d.patch.num_vertices()).filter(|&v| d.labels[v].ring == 0).collect()
+    let depth = d.config.centre.first_ring_depth();
+    (0..d.patch.num_vertices()).filter(|&v| d.labels[v].ring <= depth).collect()
 }
 
 fn faces_touching(mesh: &PolyMesh, set: &HashSet<usize>) -> Vec<bool> {

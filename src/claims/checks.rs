@@ -33,9 +33,8 @@ fn kind_of(s: &Subject) -> Result<NeighbourhoodKind, String> {
     s.neighbourhood.as_deref().unwrap_or("analysis").parse()
 }
 
-fn compute(s: &Subject, n: usize) -> Result<Spectrum, String> {
-    let kind = kind_of(s)?;
-    // parameters may be expressions in n (e.g. a value just inside a bound)
+/// The scheme (with parameters evaluated at valence n) and configuration.
+fn subject_config(s: &Subject, n: usize) -> Result<(Box<dyn schemes::Scheme>, Configuration), String> {
     let base = crate::numeric::expr::env_int(&[("n", n as i64), ("k", n as i64)]);
     let mut params: Vec<(String, String)> = Vec::new();
     for (k, v) in &s.params {
@@ -46,17 +45,23 @@ fn compute(s: &Subject, n: usize) -> Result<Spectrum, String> {
         };
         params.push((k.clone(), text));
     }
-    if let Some(entry) = lattice::find(&s.scheme) {
-        if n != 4 || !params.is_empty() {
-            return Err(format!("{} is defined on the regular lattice only (valence 4, no parameters)", s.scheme));
-        }
-        return Ok(lattice::analysis::analyse((entry.build)().as_ref(), kind, false)?.spectrum);
-    }
     let scheme = schemes::build(&s.scheme, &params)?;
     let config = match s.faces_for(n) {
         Some(f) => Configuration::with_faces(scheme.as_ref(), n, f)?,
         None => Configuration::regular(scheme.as_ref(), n)?,
     };
+    Ok((scheme, config))
+}
+
+fn compute(s: &Subject, n: usize) -> Result<Spectrum, String> {
+    let kind = kind_of(s)?;
+    if let Some(entry) = lattice::find(&s.scheme) {
+        if n != 4 || !s.params.is_empty() {
+            return Err(format!("{} is defined on the regular lattice only (valence 4, no parameters)", s.scheme));
+        }
+        return Ok(lattice::analysis::analyse((entry.build)().as_ref(), kind, false)?.spectrum);
+    }
+    let (scheme, config) = subject_config(s, n)?;
     Ok(analyse(scheme.as_ref(), &config, &Options { neighbourhood: kind, method: None, exact: false })?.spectrum)
 }
 
@@ -317,6 +322,36 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
                 got == *expect,
                 if *expect { "no negative eigenvalue".into() } else { "a negative eigenvalue".into() },
                 if got { "no negative eigenvalue".into() } else { format!("negative: {}", show_list(&negative)) },
+            ))
+        }),
+        Check::CharacteristicMap { subject, expect, levels, resolution } => over_valences(subject, |n| {
+            if lattice::find(&subject.scheme).is_some() {
+                return Err(format!(
+                    "characteristic maps of the regular-lattice scheme {} are not implemented",
+                    subject.scheme
+                ));
+            }
+            let (scheme, config) = subject_config(subject, n)?;
+            let opts = crate::charmap::CharMapOptions {
+                levels: levels.unwrap_or(3),
+                resolution: resolution.unwrap_or(256),
+                display_levels: None,
+            };
+            let m = crate::charmap::characteristic_map(scheme.as_ref(), &config, &opts)?;
+            let good = m.regular && m.injective;
+            let what = format!(
+                "{}, {} (winding {}, overlap pixels {}, min Jacobian ratio {})",
+                if m.regular { "regular" } else { "not regular" },
+                if m.injective { "injective" } else { "not injective" },
+                m.winding_number.map(|w| w.to_string()).unwrap_or_else(|| "-".into()),
+                m.overlap_pixels.map(|w| w.to_string()).unwrap_or_else(|| "-".into()),
+                m.min_jacobian_ratio.map(fmt_f).unwrap_or_else(|| "-".into()),
+            );
+            let what = if m.reasons.is_empty() { what } else { format!("{what}: {}", m.explanation) };
+            Ok((
+                good == *expect,
+                if *expect { "regular and injective".into() } else { "not regular and injective".into() },
+                what,
             ))
         }),
         Check::SpectralC1 { subject, expect } => over_valences(subject, |n| {

@@ -21,8 +21,28 @@ pub struct ClaimFile {
     /// short paper key, e.g. "huang-nonbox"
     pub paper: String,
     pub title: String,
+    /// figures for the paper's report page (characteristic rings, spectra)
+    #[serde(default, rename = "figure")]
+    pub figures: Vec<FigureSpec>,
     #[serde(default, rename = "claim")]
     pub claims: Vec<Claim>,
+}
+
+/// A figure of the report: the characteristic rings of `scheme` at `valence`
+/// and its leading eigenvalue moduli against the valence (3..`up_to`).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FigureSpec {
+    pub scheme: String,
+    pub valence: usize,
+    #[serde(default)]
+    pub params: BTreeMap<String, String>,
+    #[serde(default = "default_up_to")]
+    pub up_to: usize,
+}
+
+fn default_up_to() -> usize {
+    20
 }
 
 // (no deny_unknown_fields below: serde cannot combine it with `flatten`)
@@ -160,6 +180,18 @@ pub enum Check {
         subject: Subject,
         expect: bool,
     },
+    /// The characteristic map is regular and injective (`expect = true`) or
+    /// not (Reif's test, `charmap`); `levels` and `resolution` as for
+    /// `subdlab charmap` (defaults 3 and 256).
+    CharacteristicMap {
+        #[serde(flatten)]
+        subject: Subject,
+        expect: bool,
+        #[serde(default)]
+        levels: Option<usize>,
+        #[serde(default)]
+        resolution: Option<usize>,
+    },
     /// The spectral C^1 test (Reif) passes (`expect = true`) or fails.
     SpectralC1 {
         #[serde(flatten)]
@@ -245,6 +277,8 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ("huang-nonbox", include_str!("../../claims/huang-nonbox.toml")),
     ("khan-mustafa", include_str!("../../claims/khan-mustafa.toml")),
     ("lin-luo", include_str!("../../claims/lin-luo.toml")),
+    ("peters-shiue", include_str!("../../claims/peters-shiue.toml")),
+    ("karciauskas-peters", include_str!("../../claims/karciauskas-peters.toml")),
 ];
 
 pub fn parse_file(name: &str, text: &str) -> Result<ClaimFile, String> {
@@ -266,6 +300,18 @@ pub fn parse_file(name: &str, text: &str) -> Result<ClaimFile, String> {
 
 pub fn builtin_files() -> Result<Vec<ClaimFile>, String> {
     BUILTIN.iter().map(|(name, text)| parse_file(name, text)).collect()
+}
+
+/// Evaluate several files side by side (papers are independent; each has its
+/// own cache of analyses).
+pub fn evaluate_all(files: &[ClaimFile]) -> Result<Vec<Vec<Outcome>>, String> {
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = files.iter().map(|f| scope.spawn(move || evaluate(f))).collect();
+        handles
+            .into_iter()
+            .map(|h| h.join().map_err(|_| "internal error while evaluating claims".to_string()))
+            .collect()
+    })
 }
 
 /// Evaluate every claim of a file.

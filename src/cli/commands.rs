@@ -15,6 +15,12 @@ pub fn dispatch(cmd: Command) -> Result<(), String> {
     }
     match cmd {
         Command::Verify { paper, claims, json, junit } => super::verify::run(paper, &claims, json, junit.as_deref()),
+        Command::Report { out } => {
+            let files = crate::report::build()?;
+            crate::report::write(&out, &files)?;
+            println!("wrote {} files to {}", files.len(), out.display());
+            Ok(())
+        }
         Command::Schemes { json } => list_schemes(json),
         Command::Refine { mesh, scheme, levels, params, output, fcv_scale, four_directional, vertex_params } => {
             let opts = super::mesh_commands::MeshOptions { fcv_scale, four_directional, vertex_params };

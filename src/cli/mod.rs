@@ -21,6 +21,12 @@ pub struct Cli {
 
 #[derive(Subcommand, Debug)]
 pub enum Command {
+    /// Write reports/: an index and one page per paper (claims, figures, refuted statements)
+    Report {
+        /// the report folder
+        #[arg(long, default_value = "reports")]
+        out: std::path::PathBuf,
+    },
     /// Check the papers' statements (built-in registry, or your own claim files)
     Verify {
         /// only this paper of the built-in registry (see the list printed without it)

@@ -35,11 +35,8 @@ pub fn run(paper: Option<String>, user: &[std::path::PathBuf], json: bool, junit
             })
             .collect::<Result<_, _>>()?
     };
-    let mut results: Vec<(ClaimFile, Vec<Outcome>)> = Vec::new();
-    for f in files {
-        let outcomes = claims::evaluate(&f);
-        results.push((f, outcomes));
-    }
+    let outcomes = claims::evaluate_all(&files)?;
+    let results: Vec<(ClaimFile, Vec<Outcome>)> = files.into_iter().zip(outcomes).collect();
     if let Some(path) = junit {
         write_atomic(path, junit_xml(&results).as_bytes())?;
     }

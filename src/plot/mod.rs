@@ -54,21 +54,25 @@ pub trait Figure {
         DB::ErrorType: 'static;
 }
 
+/// The SVG text of a figure.
+pub fn render_svg<F: Figure>(fig: &F) -> Result<String, String> {
+    register_font()?;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, fig.size()).into_drawing_area();
+        fig.draw(&root)?;
+        root.present().map_err(|e| format!("cannot draw the figure: {e}"))?;
+    }
+    Ok(svg)
+}
+
 /// Draw `fig` into `path` (format from the extension), atomically.
 pub fn save<F: Figure>(fig: &F, path: &Path) -> Result<(), String> {
     let format = format_of(path)?;
     register_font()?;
     let size = fig.size();
     match format {
-        Format::Svg => {
-            let mut svg = String::new();
-            {
-                let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
-                fig.draw(&root)?;
-                root.present().map_err(|e| format!("cannot draw the figure: {e}"))?;
-            }
-            crate::cli::output::write_atomic(path, svg.as_bytes())
-        }
+        Format::Svg => crate::cli::output::write_atomic(path, render_svg(fig)?.as_bytes()),
         Format::Png => {
             let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
             let tmp = tempfile::Builder::new()

@@ -1,0 +1,86 @@
+//! `subdlab verify`: the built-in registry's verdicts are regression-tested
+//! against the verdicts each claim file records (each of them derived and
+//! tested independently elsewhere: tests/non_box*.rs, khan_mustafa.rs,
+//! lin_luo_statements.rs, four_three.rs, pgs.rs, tps.rs, polar_bi2.rs), and
+//! users' own claim files drive the exit status.
+
+mod common;
+use common::{fails, subdlab};
+use subdlab::claims::{builtin_files, evaluate, Verdict};
+
+#[test]
+fn builtin_verdicts_are_the_recorded_ones() {
+    let files = builtin_files().unwrap();
+    assert_eq!(files.len(), 5, "one claim file per source paper");
+    for f in &files {
+        for o in evaluate(f) {
+            let expected = o.expected.unwrap_or_else(|| panic!("{} records no expected verdict", o.id));
+            assert_ne!(o.verdict, Verdict::Inconclusive, "{}: {}", o.id, o.detail);
+            assert_eq!(o.verdict, expected, "{}: stated {} / computed {} / {}", o.id, o.stated, o.computed, o.detail);
+        }
+    }
+}
+
+const USER_FILE: &str = r#"
+paper = "my-scheme"
+title = "Catmull–Clark facts my paper relies on"
+
+[[claim]]
+id = "cc.subdominant"
+location = "Lemma 1"
+statement = "λ1 = (5 + c + sqrt((c + 1)(c + 9)))/16, c = cos(2π/n)"
+check = "subdominant"
+scheme = "catmull-clark"
+valences = "3..12"
+vars = { c = "cos(2 pi / n)" }
+value = "(5 + c + sqrt((c + 1) (c + 9)))/16"
+"#;
+
+#[test]
+fn user_claims_pass_and_fail_with_the_exit_status() {
+    let dir = tempfile::tempdir().unwrap();
+    let good = dir.path().join("good.toml");
+    std::fs::write(&good, USER_FILE).unwrap();
+    let junit = dir.path().join("report.xml");
+    let out = subdlab(&["verify", "--claims", good.to_str().unwrap(), "--junit", junit.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("1 HOLDS"));
+    let xml = std::fs::read_to_string(&junit).unwrap();
+    assert!(xml.contains("<testcase") && !xml.contains("<failure"));
+    // the same claim with a wrong formula (the minus root) must fail the run
+    let bad = dir.path().join("bad.toml");
+    std::fs::write(&bad, USER_FILE.replace("+ sqrt", "- sqrt")).unwrap();
+    let err = fails(&["verify", "--claims", bad.to_str().unwrap(), "--junit", junit.to_str().unwrap()]);
+    assert!(err.contains("1 claim(s) did not hold"), "{err}");
+    let xml = std::fs::read_to_string(&junit).unwrap();
+    assert!(xml.contains("<failure message=\"REFUTED\""));
+}
+
+#[test]
+fn malformed_claim_files_are_one_line_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    for (name, text, needle) in [
+        ("syntax.toml", "paper = \"x\"\ntitle = \n", "TOML"),
+        ("dup.toml", &format!("{USER_FILE}\n{}", &USER_FILE[USER_FILE.find("[[claim]]").unwrap()..]), "appears twice"),
+    ] {
+        let p = dir.path().join(name);
+        std::fs::write(&p, text).unwrap();
+        let err = fails(&["verify", "--claims", p.to_str().unwrap()]);
+        assert!(err.contains(needle), "{err}");
+    }
+    let err = fails(&["verify", "--paper", "nobody-2020"]);
+    assert!(err.contains("built-in papers") && err.contains("huang-nonbox"), "{err}");
+    fails(&["verify", "--claims", "/nonexistent/claims.toml"]);
+}
+
+#[test]
+fn a_claim_that_cannot_be_evaluated_is_inconclusive_with_the_reason() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("x.toml");
+    std::fs::write(&p, USER_FILE.replace("\"catmull-clark\"", "\"no-such-scheme\"")).unwrap();
+    let out = subdlab(&["verify", "--claims", p.to_str().unwrap(), "--json"]);
+    assert!(!out.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v[0]["claims"][0]["verdict"], "INCONCLUSIVE");
+    assert!(v[0]["claims"][0]["detail"].as_str().unwrap().contains("unknown scheme"));
+}
