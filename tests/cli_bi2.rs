@@ -1,20 +1,8 @@
 //! The command line on the bi-2 schemes of Karčiauskas–Peters (pgs,
 //! polar-bi2, tps): listing, analysis commands, refinement, one-line errors.
 
-use std::process::{Command, Output};
-
-fn subdlab(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_subdlab")).args(args).output().expect("binary runs")
-}
-
-fn fails(args: &[&str]) -> String {
-    let out = subdlab(args);
-    let err = String::from_utf8_lossy(&out.stderr).to_string();
-    assert!(!out.status.success(), "{args:?} should fail");
-    assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
-    assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: one-line error expected, got {err:?}");
-    err
-}
+mod common;
+use common::{fails, subdlab};
 
 fn json(args: &[&str]) -> serde_json::Value {
     let out = subdlab(args);

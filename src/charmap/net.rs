@@ -154,7 +154,7 @@ fn refine_with_margin(
 
 fn descend(old: &Net, mesh: &PolyMesh, origins: &[Origin], parents: &[Origin], points: Vec<Option<[f64; 2]>>) -> Net {
     let carry = |flags: &[bool]| -> Vec<bool> {
-        let ents = region_entities(&old.mesh, flags);
+        let ents = crate::neighbourhood::discovery::region_entities(&old.mesh, flags);
         let from: Vec<bool> = origins.iter().map(|o| ents.contains(o)).collect();
         mesh.faces().iter().zip(parents).map(|(f, p)| ents.contains(p) && f.iter().all(|&v| from[v])).collect()
     };
@@ -165,22 +165,6 @@ fn descend(old: &Net, mesh: &PolyMesh, origins: &[Origin], parents: &[Origin], p
         points,
         refinements: old.refinements + 1,
     }
-}
-
-/// Vertices, edges (both orientations), faces and corners of the flagged faces, as origins.
-fn region_entities(mesh: &PolyMesh, flags: &[bool]) -> HashSet<Origin> {
-    let mut set = HashSet::new();
-    for (f, face) in mesh.faces().iter().enumerate().filter(|(f, _)| flags[*f]) {
-        set.insert(Origin::Face(f));
-        for (k, &v) in face.iter().enumerate() {
-            let w = face[(k + 1) % face.len()];
-            set.insert(Origin::Vertex(v));
-            set.insert(Origin::Edge(v, w));
-            set.insert(Origin::Edge(w, v));
-            set.insert(Origin::Corner { face: f, corner: k });
-        }
-    }
-    set
 }
 
 fn face_vertices(mesh: &PolyMesh, f: usize) -> impl Iterator<Item = usize> + '_ {

@@ -244,8 +244,10 @@ fn try_discover(scheme: &dyn Scheme, config: &Configuration, rings: usize) -> Re
     })
 }
 
-/// Vertices, edges (both orientations) and faces of the region faces, as origins.
-fn region_entities(mesh: &PolyMesh, region_faces: &[bool]) -> HashSet<Origin> {
+/// Vertices, edges (both orientations), faces and corners of the region
+/// faces, as origins: the old entities whose new vertices descend from the
+/// region (also used to follow the characteristic ring through refinement).
+pub fn region_entities(mesh: &PolyMesh, region_faces: &[bool]) -> HashSet<Origin> {
     let mut set = HashSet::new();
     for (f, face) in mesh.faces().iter().enumerate() {
         if !region_faces[f] {

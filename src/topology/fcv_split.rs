@@ -65,17 +65,8 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
         };
         for o in &origins {
             match *o {
-                Origin::Vertex(v) => {
-                    let c = chart.vertex_coords[v];
-                    cb.push(c.sector, 2 * c.i, 2 * c.j);
-                }
-                Origin::Edge(a, b) => {
-                    let (f, _) = mesh.half_edge(a, b).or_else(|| mesh.half_edge(b, a)).ok_or("dangling edge")?;
-                    let s = chart.face_sector[f].expect("FCV patches have no central face");
-                    let (pa, pb) =
-                        (chart.in_chart(chart.vertex_coords[a], s), chart.in_chart(chart.vertex_coords[b], s));
-                    cb.push(s, pa.0 + pb.0, pa.1 + pb.1);
-                }
+                Origin::Vertex(v) => cb.push_scaled(v, 2),
+                Origin::Edge(a, b) => cb.push_on_edge(mesh, a, b, 1, 1)?,
                 Origin::Face(f) => {
                     let (s, p) = in_face(f);
                     let sum = p.iter().fold((0, 0), |a, q| (a.0 + q.0, a.1 + q.1));

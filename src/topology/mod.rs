@@ -105,6 +105,22 @@ impl<'a> ChartBuilder<'a> {
             face_sector: self.face_sector,
         })
     }
+    /// A new vertex at `factor` times the old vertex v's coordinates (the
+    /// vertex point of a refinement that scales the lattice by `factor`).
+    pub fn push_scaled(&mut self, v: usize, factor: i64) {
+        let c = self.old.vertex_coords[v];
+        self.push(c.sector, factor * c.i, factor * c.j);
+    }
+    /// A new vertex at wa·A + wb·B on the old edge (a, b), in the chart of a
+    /// face holding the edge (a midpoint is 1·A + 1·B in the doubled lattice).
+    pub fn push_on_edge(&mut self, mesh: &PolyMesh, a: usize, b: usize, wa: i64, wb: i64) -> Result<(), String> {
+        let (f, _) = mesh.half_edge(a, b).or_else(|| mesh.half_edge(b, a)).ok_or("dangling edge")?;
+        let s = self.face_chart(self.old.face_sector[f], a);
+        let (pa, pb) =
+            (self.old.in_chart(self.old.vertex_coords[a], s), self.old.in_chart(self.old.vertex_coords[b], s));
+        self.push(s, wa * pa.0 + wb * pb.0, wa * pa.1 + wb * pb.1);
+        Ok(())
+    }
     /// Sector in which to express an old face: its own, or for a central face
     /// the sector of the given corner.
     pub fn face_chart(&self, old_face_sector: Option<usize>, corner_vertex: usize) -> usize {

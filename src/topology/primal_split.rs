@@ -52,17 +52,8 @@ pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, String> {
         let mut cb = ChartBuilder::new(chart);
         for o in &origins {
             match *o {
-                Origin::Vertex(v) => {
-                    let c = chart.vertex_coords[v];
-                    cb.push(c.sector, 2 * c.i, 2 * c.j);
-                }
-                Origin::Edge(a, b) => {
-                    let (f, _) = mesh.half_edge(a, b).or_else(|| mesh.half_edge(b, a)).ok_or("dangling edge")?;
-                    let s = cb.face_chart(chart.face_sector[f], a);
-                    let (pa, pb) =
-                        (chart.in_chart(chart.vertex_coords[a], s), chart.in_chart(chart.vertex_coords[b], s));
-                    cb.push(s, pa.0 + pb.0, pa.1 + pb.1);
-                }
+                Origin::Vertex(v) => cb.push_scaled(v, 2),
+                Origin::Edge(a, b) => cb.push_on_edge(mesh, a, b, 1, 1)?,
                 Origin::Face(f) => match chart.face_sector[f] {
                     None => cb.push(0, 0, 0), // a central face is centred on the origin
                     Some(s) => {

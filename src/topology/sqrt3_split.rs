@@ -56,10 +56,7 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
         let (vertex_factor, face_divisor, new_scale) = if chart.scale == 1 { (3, 1, 3) } else { (1, 3, 1) };
         for o in &origins {
             match *o {
-                Origin::Vertex(v) => {
-                    let c = chart.vertex_coords[v];
-                    cb.push(c.sector, vertex_factor * c.i, vertex_factor * c.j);
-                }
+                Origin::Vertex(v) => cb.push_scaled(v, vertex_factor),
                 Origin::Face(f) => {
                     let face = mesh.face(f);
                     let s = cb.face_chart(chart.face_sector[f], face[0]);

@@ -62,17 +62,8 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
         let mut cb = ChartBuilder::new(chart);
         for o in &origins {
             match *o {
-                Origin::Vertex(v) => {
-                    let c = chart.vertex_coords[v];
-                    cb.push(c.sector, 3 * c.i, 3 * c.j);
-                }
-                Origin::Edge(a, b) => {
-                    let (f, _) = mesh.half_edge(a, b).or_else(|| mesh.half_edge(b, a)).ok_or("dangling edge")?;
-                    let s = cb.face_chart(chart.face_sector[f], a);
-                    let (pa, pb) =
-                        (chart.in_chart(chart.vertex_coords[a], s), chart.in_chart(chart.vertex_coords[b], s));
-                    cb.push(s, 2 * pa.0 + pb.0, 2 * pa.1 + pb.1);
-                }
+                Origin::Vertex(v) => cb.push_scaled(v, 3),
+                Origin::Edge(a, b) => cb.push_on_edge(mesh, a, b, 2, 1)?,
                 Origin::Corner { face: f, corner: k } => {
                     let cyc = mesh.face_from(f, k);
                     let s = cb.face_chart(chart.face_sector[f], cyc[0]);
