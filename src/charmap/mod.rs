@@ -159,8 +159,17 @@ pub fn check_map(scheme: &dyn Scheme, analysis: &Analysis, opts: &CharMapOptions
     let d = &analysis.discovered;
     let level0 = net::initial_points(d, &pair.values)?;
     let mut fine = net::refine_net(scheme, d, level0.clone(), opts.levels)?;
-    let m = normalisation(d, &pair.values, &ring::extract(&fine));
+    // an eigenvector pair is fixed only up to a linear map; a nearly parallel
+    // pair (possible from the full matrix) would squash the ring to a few
+    // pixels, so first make its outer boundary isotropic (regularity and
+    // injectivity are invariant under linear maps)
+    let w = isotropic(&ring::extract(&fine));
+    net::transform(&mut fine.points, w);
+    let values: Vec<[f64; 2]> =
+        pair.values.iter().map(|p| [w[0][0] * p[0] + w[0][1] * p[1], w[1][0] * p[0] + w[1][1] * p[1]]).collect();
+    let m = normalisation(d, &values, &ring::extract(&fine));
     net::transform(&mut fine.points, m);
+    let m = mul(m, w);
     out.refinements = fine.refinements;
     let ring = ring::extract(&fine);
 
@@ -253,6 +262,33 @@ fn normalisation(d: &crate::neighbourhood::Discovered, values: &[[f64; 2]], raw:
     let k = if radius > 0.0 { 1.0 / radius } else { 1.0 };
     // rotate by −θ after flipping y
     [[k * c, k * s * flip], [-k * s, k * c * flip]]
+}
+
+/// M^(-1/2) for the second-moment matrix M of the ring's outer boundary
+/// vertices (about the centre, which the map sends to the origin).
+fn isotropic(raw: &Ring) -> [[f64; 2]; 2] {
+    let (mut a, mut b, mut c) = (0.0, 0.0, 0.0);
+    for p in raw.outer_boundary.iter().flatten() {
+        a += p[0] * p[0];
+        b += p[0] * p[1];
+        c += p[1] * p[1];
+    }
+    let half = 0.5 * (a - c);
+    let r = (half * half + b * b).sqrt();
+    let (l1, l2) = (0.5 * (a + c) + r, 0.5 * (a + c) - r);
+    if !(l2 > 1e-300 * l1.max(1.0)) || !l1.is_finite() {
+        return [[1.0, 0.0], [0.0, 1.0]]; // degenerate: leave it to the verdicts
+    }
+    let t = 0.5 * (2.0 * b).atan2(a - c);
+    let (co, si) = (t.cos(), t.sin());
+    let (d1, d2) = (1.0 / l1.sqrt(), 1.0 / l2.sqrt());
+    // R diag(d1, d2) R^T with R the rotation by t
+    [[co * co * d1 + si * si * d2, co * si * (d1 - d2)], [co * si * (d1 - d2), si * si * d1 + co * co * d2]]
+}
+
+fn mul(x: [[f64; 2]; 2], y: [[f64; 2]; 2]) -> [[f64; 2]; 2] {
+    let e = |i: usize, j: usize| x[i][0] * y[0][j] + x[i][1] * y[1][j];
+    [[e(0, 0), e(0, 1)], [e(1, 0), e(1, 1)]]
 }
 
 /// Faces of the level-0 patch whose corners all carry the eigenvector.

@@ -210,23 +210,9 @@ fn prune(net: Net, margin: usize) -> Result<Net, String> {
         near = grown;
     }
     let keep: Vec<usize> = (0..mesh.num_faces()).filter(|&f| mesh.face(f).iter().any(|v| near.contains(v))).collect();
-    let mut id = vec![usize::MAX; mesh.num_vertices()];
-    let mut points = Vec::new();
-    let mut take = |v: usize, id: &mut Vec<usize>| {
-        if id[v] == usize::MAX {
-            id[v] = points.len();
-            points.push(net.points[v]);
-        }
-        id[v]
-    };
-    let faces: Vec<Vec<usize>> =
-        keep.iter().map(|&f| mesh.face(f).iter().map(|&v| take(v, &mut id)).collect()).collect();
-    let fcv: Option<Vec<usize>> =
-        mesh.face_points.as_ref().map(|p| keep.iter().map(|&f| take(p[f], &mut id)).collect());
-    let mut new_mesh = PolyMesh::new(points.len(), faces).map_err(|e| e.to_string())?;
-    if let Some(fcv) = fcv {
-        new_mesh = new_mesh.with_face_points(fcv)?;
-    }
+    // carry every attribute (charts, FCVs, face centres, lattice directions)
+    let (new_mesh, old) = mesh.restrict(&keep)?;
+    let points: Vec<Option<[f64; 2]>> = old.iter().map(|&v| net.points[v]).collect();
     Ok(Net {
         outer: keep.iter().map(|&f| net.outer[f]).collect(),
         inner: keep.iter().map(|&f| net.inner[f]).collect(),

@@ -325,12 +325,6 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
             ))
         }),
         Check::CharacteristicMap { subject, expect, levels, resolution } => over_valences(subject, |n| {
-            if lattice::find(&subject.scheme).is_some() {
-                return Err(format!(
-                    "characteristic maps of the regular-lattice scheme {} are not implemented",
-                    subject.scheme
-                ));
-            }
             let (scheme, config) = subject_config(subject, n)?;
             let opts = crate::charmap::CharMapOptions {
                 levels: levels.unwrap_or(3),

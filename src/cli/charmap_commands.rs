@@ -71,11 +71,6 @@ pub enum PlotWhat {
 }
 
 fn build_scheme(name: &str, params: &[String]) -> Result<Box<dyn Scheme>, String> {
-    if crate::lattice::find(name).is_some() {
-        return Err(format!(
-            "{name} is a regular-lattice scheme (valence 4 only, no extraordinary point): it has no characteristic map"
-        ));
-    }
     schemes::build(name, &parse_params(params)?)
 }
 

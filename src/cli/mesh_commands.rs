@@ -51,6 +51,10 @@ pub fn refine(
     if scheme.face_control() {
         (m, points) = add_face_control_vertices(&m, &points, opts.fcv_scale)?;
     }
+    if scheme.lattice_oriented() {
+        // asymmetric masks need the lattice directions (i, j) on every quad
+        m.orient_lattice().map_err(|e| format!("{}: {} {e}", mesh.display(), scheme.name()))?;
+    }
     let (mut refined, mut new_points) =
         refine_mesh(scheme.as_ref(), &m, &points, levels).map_err(|e| format!("{}: {e}", mesh.display()))?;
     if opts.four_directional {

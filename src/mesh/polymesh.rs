@@ -31,6 +31,10 @@ pub struct PolyMesh {
     /// (Lin–Luo's α in unified sqrt(3) subdivision). Refined with the scheme's
     /// `vertex_param_rule`.
     pub vertex_params: Option<Vec<f64>>,
+    /// For schemes on the regular lattice with asymmetric masks (Khan–Mustafa):
+    /// per quad, the lattice direction of its first edge (corner 0 → 1) as
+    /// 0 = +i, 1 = +j, 2 = −i, 3 = −j; edge k then has direction (d + k) mod 4.
+    pub lattice_dirs: Option<Vec<u8>>,
     /// An extra central control point on some faces (point-augmented schemes:
     /// the point p of PGS). Like FCVs these belong to no face cycle; unlike
     /// FCVs only some faces carry one. Empty when no face has one.
@@ -95,6 +99,7 @@ impl PolyMesh {
             chart: None,
             face_points: None,
             vertex_params: None,
+            lattice_dirs: None,
             face_centres: Vec::new(),
         })
     }
@@ -128,6 +133,111 @@ impl PolyMesh {
     /// The central point of face f, if it carries one.
     pub fn face_centre(&self, f: FaceId) -> Option<VertexId> {
         self.face_centres.get(f).copied().flatten()
+    }
+
+    /// Orient a closed regular quad mesh as a lattice: the first edge of face 0
+    /// is +i, and directions carry across edges (a shared edge has opposite
+    /// directions in its two faces). Fails unless every face is a quad, every
+    /// vertex has valence 4 and the orientation is consistent (e.g. a torus grid).
+    pub fn orient_lattice(&mut self) -> Result<(), String> {
+        if let Some(f) = self.faces.iter().position(|f| f.len() != 4) {
+            return Err(format!(
+                "a regular-lattice scheme needs quads only; face {} has {} vertices",
+                f + 1,
+                self.faces[f].len()
+            ));
+        }
+        for v in 0..self.num_vertices {
+            match self.valence(v) {
+                Some(4) => {}
+                Some(k) => {
+                    return Err(format!(
+                        "a regular-lattice scheme needs valence 4 everywhere; vertex {} has {k}",
+                        v + 1
+                    ))
+                }
+                None => {
+                    if self.vertex_corner[v].is_some() {
+                        return Err(format!(
+                            "a regular-lattice scheme needs a closed mesh; vertex {} is on the boundary",
+                            v + 1
+                        ));
+                    }
+                }
+            }
+        }
+        let mut dirs: Vec<Option<u8>> = vec![None; self.faces.len()];
+        for start in 0..self.faces.len() {
+            if dirs[start].is_some() {
+                continue;
+            }
+            dirs[start] = Some(0);
+            let mut stack = vec![start];
+            while let Some(f) = stack.pop() {
+                let d = dirs[f].expect("set before pushing");
+                for k in 0..4 {
+                    let (a, b) = (self.faces[f][k], self.faces[f][(k + 1) % 4]);
+                    let Some((g, kg)) = self.half_edge(b, a) else { continue };
+                    let label = (d as usize + k) % 4;
+                    // the same edge, walked the other way, has the opposite direction
+                    let dg = ((label + 2 + 4 - kg % 4) % 4) as u8;
+                    match dirs[g] {
+                        None => {
+                            dirs[g] = Some(dg);
+                            stack.push(g);
+                        }
+                        Some(x) if x != dg => {
+                            return Err(format!(
+                                "the quad mesh has no consistent lattice orientation (faces {} and {} disagree)",
+                                f + 1,
+                                g + 1
+                            ))
+                        }
+                        Some(_) => {}
+                    }
+                }
+            }
+        }
+        self.lattice_dirs = Some(dirs.into_iter().map(|d| d.expect("every face reached")).collect());
+        Ok(())
+    }
+
+    /// The sub-mesh of the faces `keep`, with every per-vertex and per-face
+    /// attribute carried along (charts, FCVs, face centres, lattice directions,
+    /// per-vertex parameters). Returns it and, for each new vertex, its old id.
+    pub fn restrict(&self, keep: &[FaceId]) -> Result<(PolyMesh, Vec<VertexId>), String> {
+        let mut id = vec![usize::MAX; self.num_vertices];
+        let mut old = Vec::new();
+        let mut take = |v: usize| {
+            if id[v] == usize::MAX {
+                id[v] = old.len();
+                old.push(v);
+            }
+            id[v]
+        };
+        let faces: Vec<Vec<usize>> = keep.iter().map(|&f| self.faces[f].iter().map(|&v| take(v)).collect()).collect();
+        let fcv: Option<Vec<usize>> = self.face_points.as_ref().map(|p| keep.iter().map(|&f| take(p[f])).collect());
+        let centres: Vec<Option<usize>> = if self.face_centres.is_empty() {
+            Vec::new()
+        } else {
+            keep.iter().map(|&f| self.face_centres[f].map(&mut take)).collect()
+        };
+        let mut m = PolyMesh::new(old.len(), faces).map_err(|e| e.to_string())?;
+        if let Some(fcv) = fcv {
+            m = m.with_face_points(fcv)?;
+        }
+        if !centres.is_empty() {
+            m = m.with_face_centres(centres)?;
+        }
+        m.lattice_dirs = self.lattice_dirs.as_ref().map(|d| keep.iter().map(|&f| d[f]).collect());
+        m.vertex_params = self.vertex_params.as_ref().map(|p| old.iter().map(|&v| p[v]).collect());
+        m.chart = self.chart.as_ref().map(|c| Chart {
+            sector_kinds: c.sector_kinds.clone(),
+            scale: c.scale,
+            vertex_coords: old.iter().map(|&v| c.vertex_coords[v]).collect(),
+            face_sector: keep.iter().map(|&f| c.face_sector[f]).collect(),
+        });
+        Ok((m, old))
     }
 
     /// The face control vertex of face f, if the mesh carries them.

@@ -21,6 +21,12 @@ impl Configuration {
     /// The scheme's regular configuration of valence n.
     pub fn regular(scheme: &dyn Scheme, n: usize) -> Result<Self, String> {
         check_valence(n)?;
+        if let Some(k) = scheme.fixed_valence().filter(|&k| k != n) {
+            return Err(format!(
+                "{} is defined on the regular lattice only (valence {k}), not at valence {n}",
+                scheme.name()
+            ));
+        }
         Ok(Configuration {
             centre: scheme.centre_kind(),
             sectors: vec![scheme.sector_kind(); n],

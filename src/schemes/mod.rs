@@ -7,6 +7,7 @@ pub mod doo_sabin;
 pub mod four_three;
 // a regular-lattice scheme: registered in `crate::lattice::registry`, not here
 pub mod khan_mustafa;
+pub mod lattice_on_mesh;
 pub mod loop_subdivision;
 pub mod non_box;
 pub mod params;
@@ -82,6 +83,19 @@ pub trait Scheme: Rules<f64> + Rules<Rational> + Send + Sync {
     fn vertex_param_rule(&self, _mesh: &PolyMesh, _origin: Origin) -> Option<crate::refine::Stencil<f64>> {
         None
     }
+    /// The only valence the scheme is defined at (regular-lattice schemes: 4).
+    fn fixed_valence(&self) -> Option<usize> {
+        None
+    }
+    /// Whether the rules commute with the rotation of a symmetric configuration
+    /// (false for asymmetric masks: then no Fourier blocks).
+    fn rotation_symmetric(&self) -> bool {
+        true
+    }
+    /// Whether meshes must carry lattice directions (`PolyMesh::orient_lattice`).
+    fn lattice_oriented(&self) -> bool {
+        false
+    }
     /// Whether the analysis accepts any sequence of quad and triangle sectors
     /// around the centre (`--faces`), not only the regular configuration.
     fn face_sequences(&self) -> bool {
@@ -153,6 +167,14 @@ pub fn known_names() -> Vec<&'static str> {
 /// Build a scheme by name with `name=value` parameter overrides.
 pub fn build(name: &str, overrides: &[(String, String)]) -> Result<Box<dyn Scheme>, String> {
     let reg = registry();
+    if let Some(l) = crate::lattice::find(name) {
+        // regular-lattice schemes refine meshes and give characteristic maps
+        // through their masks on oriented quad meshes
+        if let Some((k, _)) = overrides.first() {
+            return Err(format!("scheme '{name}' has no parameters (got '{k}')"));
+        }
+        return Ok(Box::new(lattice_on_mesh::LatticeOnMesh::new((l.build)())));
+    }
     let entry = reg
         .iter()
         .find(|e| e.name == name)

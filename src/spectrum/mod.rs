@@ -209,7 +209,8 @@ pub fn analyse(scheme: &dyn Scheme, config: &Configuration, opts: &Options) -> R
     let exact_matrix =
         if opts.exact { assemble::<Rational>(scheme, &discovered, opts.neighbourhood).ok() } else { None };
     let n = config.valence();
-    let period = config.symmetry_period();
+    // asymmetric rules have no rotation symmetry, whatever the configuration
+    let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { n };
     let symmetric = period < n;
     let method = opts.method.unwrap_or(if symmetric { Method::Dft } else { Method::Full });
     let Decomposition { blocks: blocks_info, mut eigenvalues, synthesis } = decompose(&matrix, period, n, method)?;

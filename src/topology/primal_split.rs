@@ -48,6 +48,17 @@ pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, String> {
         }
     }
     let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| e.to_string())?;
+    if let Some(dirs) = &mesh.lattice_dirs {
+        // the child quad at corner k starts along the parent's edge k
+        let mut child = Vec::with_capacity(new_mesh.num_faces());
+        for (f, face) in mesh.faces().iter().enumerate() {
+            if face_point[f].is_none() {
+                return Err("lattice directions need quads".into());
+            }
+            child.extend((0..face.len()).map(|k| ((dirs[f] as usize + k) % 4) as u8));
+        }
+        new_mesh.lattice_dirs = Some(child);
+    }
     if let Some(chart) = mesh.chart.as_ref().filter(|c| c.scale == 1) {
         let mut cb = ChartBuilder::new(chart);
         for o in &origins {

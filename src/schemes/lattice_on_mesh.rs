@@ -1,0 +1,161 @@
+//! A regular-lattice scheme (four masks over (i, j) offsets, `crate::lattice`)
+//! applied to quad meshes that carry lattice directions: analysis patches of
+//! valence 4 (directions from the sector charts, which are the plane Z² turned
+//! by a quarter per sector) and closed regular quad meshes oriented with
+//! `PolyMesh::orient_lattice`. The masks stay the single source of the rules;
+//! this file only finds which old vertex sits at offset (r, s).
+//!
+//! The topology is Catmull–Clark's quad split: the new vertex of an old vertex
+//! is p_{2i,2j}, of a +i edge p_{2i+1,2j}, of a +j edge p_{2i,2j+1}, of a face
+//! p_{2i+1,2j+1} (with (i, j) the face's corner whose outgoing edge is +i).
+
+use super::{CentreKind, Params, Rules, Scheme};
+use crate::lattice::{LatticeScheme, LatticeWeight};
+use crate::mesh::{PolyMesh, SectorKind};
+use crate::numeric::Rational;
+use crate::refine::{Origin, RuleResult, Stencil};
+use crate::topology::{Topology, TriangleSplit};
+
+pub struct LatticeOnMesh {
+    inner: Box<dyn LatticeScheme>,
+    params: Params,
+}
+
+impl LatticeOnMesh {
+    pub fn new(inner: Box<dyn LatticeScheme>) -> Self {
+        LatticeOnMesh { inner, params: Params::default() }
+    }
+
+    fn rule<W: LatticeWeight>(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+        let Some(((alpha, beta), base)) = parity_and_base(mesh, origin) else { return Ok(None) };
+        let mut s = Stencil::new();
+        for ((r, t), w) in W::mask_of(self.inner.as_ref(), alpha, beta) {
+            let Some(v) = walk(mesh, base, r, t) else { return Ok(None) };
+            s.add(v, w);
+        }
+        Ok(Some(s))
+    }
+}
+
+/// Direction (0 = +i, 1 = +j, 2 = −i, 3 = −j) of edge k of face f.
+fn edge_dir(mesh: &PolyMesh, f: usize, k: usize) -> Option<u8> {
+    if mesh.face(f).len() != 4 {
+        return None;
+    }
+    if let Some(d) = &mesh.lattice_dirs {
+        return Some(((d[f] as usize + k) % 4) as u8);
+    }
+    // a valence-4 analysis patch: chart s is the plane turned by s quarter turns
+    let chart = mesh.chart.as_ref().filter(|c| c.sectors() == 4)?;
+    let s = chart.face_sector[f]?;
+    let face = mesh.face(f);
+    let (a, b) =
+        (chart.in_chart(chart.vertex_coords[face[k]], s), chart.in_chart(chart.vertex_coords[face[(k + 1) % 4]], s));
+    let local = match (b.0 - a.0, b.1 - a.1) {
+        (x, 0) if x > 0 => 0,
+        (0, y) if y > 0 => 1,
+        (x, 0) if x < 0 => 2,
+        (0, y) if y < 0 => 3,
+        _ => return None,
+    };
+    Some(((local + s) % 4) as u8)
+}
+
+/// The neighbour of v in direction `dir`, if v's fan is complete there.
+fn step(mesh: &PolyMesh, v: usize, dir: u8) -> Option<usize> {
+    for f in mesh.faces_around(v) {
+        let face = mesh.face(f);
+        let k = face.iter().position(|&u| u == v)?;
+        if edge_dir(mesh, f, k)? == dir {
+            return Some(face[(k + 1) % face.len()]);
+        }
+    }
+    None
+}
+
+/// The vertex at lattice offset (r, s) from v (i first, then j: on a regular
+/// grid any path gives the same vertex).
+fn walk(mesh: &PolyMesh, v: usize, r: i64, s: i64) -> Option<usize> {
+    let mut v = v;
+    for _ in 0..r.unsigned_abs() {
+        v = step(mesh, v, if r > 0 { 0 } else { 2 })?;
+    }
+    for _ in 0..s.unsigned_abs() {
+        v = step(mesh, v, if s > 0 { 1 } else { 3 })?;
+    }
+    Some(v)
+}
+
+/// The mask parity of the new vertex and the old vertex (i, j) it is based at.
+fn parity_and_base(mesh: &PolyMesh, origin: Origin) -> Option<((u8, u8), usize)> {
+    match origin {
+        Origin::Vertex(v) => Some(((0, 0), v)),
+        Origin::Edge(a, b) => {
+            let (f, k, reversed) = match mesh.half_edge(a, b) {
+                Some((f, k)) => (f, k, false),
+                None => {
+                    let (f, k) = mesh.half_edge(b, a)?;
+                    (f, k, true)
+                }
+            };
+            let mut d = edge_dir(mesh, f, k)?;
+            if reversed {
+                d = (d + 2) % 4;
+            }
+            // a -> b has direction d
+            Some(match d {
+                0 => ((1, 0), a),
+                2 => ((1, 0), b),
+                1 => ((0, 1), a),
+                _ => ((0, 1), b),
+            })
+        }
+        Origin::Face(f) => {
+            let k = (0..4).find(|&k| edge_dir(mesh, f, k) == Some(0))?;
+            Some(((1, 1), mesh.face(f)[k]))
+        }
+        Origin::Corner { .. } => None,
+    }
+}
+
+impl Rules<f64> for LatticeOnMesh {
+    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<f64> {
+        self.rule::<f64>(mesh, origin)
+    }
+}
+
+impl Rules<Rational> for LatticeOnMesh {
+    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<Rational> {
+        self.rule::<Rational>(mesh, origin)
+    }
+}
+
+impl Scheme for LatticeOnMesh {
+    fn name(&self) -> &'static str {
+        self.inner.name()
+    }
+    fn description(&self) -> &'static str {
+        self.inner.description()
+    }
+    fn topology(&self) -> Topology {
+        Topology::PrimalSplit(TriangleSplit::FacePointQuads)
+    }
+    fn centre_kind(&self) -> CentreKind {
+        CentreKind::Vertex
+    }
+    fn sector_kind(&self) -> SectorKind {
+        SectorKind::Quad
+    }
+    fn params(&self) -> &Params {
+        &self.params
+    }
+    fn fixed_valence(&self) -> Option<usize> {
+        Some(4)
+    }
+    fn lattice_oriented(&self) -> bool {
+        true
+    }
+    fn rotation_symmetric(&self) -> bool {
+        false // asymmetric masks: the local matrix does not commute with the quarter turn
+    }
+}
