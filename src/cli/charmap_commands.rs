@@ -76,7 +76,7 @@ fn build_scheme(name: &str, params: &[String]) -> Result<Box<dyn Scheme>, String
             "{name} is a regular-lattice scheme (valence 4 only, no extraordinary point): it has no characteristic map"
         ));
     }
-    schemes::build(name, &parse_params(params)?)
+    schemes::resolve(name, &parse_params(params)?)
 }
 
 /// Fails early, before any computation, when the output cannot be written.
