@@ -391,3 +391,28 @@ fn random_and_mutated_files_never_panic_or_hang() {
     assert!(accepted > 50 && rejected > 500, "accepted {accepted}, rejected {rejected}");
     assert!(start.elapsed().as_secs() < 300);
 }
+
+#[test]
+fn example_files_refine_meshes_as_the_built_in_schemes_do() {
+    use subdlab::mesh::obj::read_obj_file;
+    use subdlab::refine::mesh::{add_face_control_vertices, refine_mesh};
+    for (rel, name, mesh) in [
+        ("schemes/loop.toml", "loop", "octahedron"),
+        ("schemes/catmull-clark.toml", "catmull-clark", "cube"),
+        ("schemes/non-box.toml", "non-box", "cube"),
+    ] {
+        let (m, p) = read_obj_file(std::path::Path::new(&path(&format!("meshes/{mesh}.obj")))).unwrap();
+        let (m, p) = if name == "non-box" { add_face_control_vertices(&m, &p, 1.0).unwrap() } else { (m, p) };
+        let (file, builtin) = (file_scheme(rel, &[]), schemes::build(name, &[]).unwrap());
+        let (mf, pf) = refine_mesh(file.as_ref(), &m, &p, 3).unwrap();
+        let (mb, pb) = refine_mesh(builtin.as_ref(), &m, &p, 3).unwrap();
+        assert_eq!(mf.faces(), mb.faces(), "{rel}: connectivity");
+        for (x, y) in pf.iter().zip(&pb) {
+            assert!((0..3).all(|k| (x[k] - y[k]).abs() < 1e-13), "{rel}: {x:?} vs {y:?}");
+        }
+    }
+    // a primal-quad file has quad rules only, and says so
+    let (m, p) = read_obj_file(std::path::Path::new(&path("meshes/octahedron.obj"))).unwrap();
+    let e = refine_mesh(file_scheme("schemes/catmull-clark.toml", &[]).as_ref(), &m, &p, 1).unwrap_err();
+    assert!(e.contains("a closed quad mesh (primal-quad scheme files have quad rules only)"), "{e}");
+}

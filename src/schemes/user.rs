@@ -432,14 +432,16 @@ impl UserSchemeDef {
                             .map_err(|e| self.err(field.line, &field.key, format!("at n = {n}, j = {j}: {e}")))?;
                         match first {
                             None => first = Some(w),
-                            Some(w0) if (w - w0).abs() > 1e-12 * w0.abs().max(1.0) => return Err(self.err(
-                                field.line,
-                                &field.key,
-                                format!(
+                            Some(w0) if (w - w0).abs() > 1e-12 * w0.abs().max(1.0) => {
+                                return Err(self.err(
+                                    field.line,
+                                    &field.key,
+                                    format!(
                                     "the weight differs between j = 0 and j = {j} at n = {n}; the first neighbour is \
                                          arbitrary, so weights may not depend on j"
                                 ),
-                            )),
+                                ))
+                            }
                             _ => {}
                         }
                     }
@@ -723,5 +725,10 @@ impl Scheme for UserScheme {
     }
     fn face_control(&self) -> bool {
         self.spec().face_control
+    }
+    fn mesh_requirement(&self) -> Option<&'static str> {
+        // the vertex and edge rules of a primal-quad file are written for quads only
+        (self.spec().name == "primal-quad")
+            .then_some("a closed quad mesh (primal-quad scheme files have quad rules only)")
     }
 }
