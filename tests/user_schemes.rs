@@ -267,6 +267,12 @@ fn parse_errors_name_the_line_and_the_field() {
     assert!(error_of("\"3/8\"", &format!("\"{long}\"")).contains("field edge.ends: expression longer than"));
     let big = format!("{LOOP}{}", "# padding\n".repeat(MAX_FILE_BYTES / 10));
     assert!(parse(&big).err().unwrap().contains("larger than"));
+    // deep nesting within the size cap: TOML arrays and inline tables, parentheses
+    for deep in [format!("x = {}", "[".repeat(30_000)), format!("x = {}", "{a=".repeat(15_000))] {
+        assert!(parse(&deep).is_err());
+    }
+    assert!(error_of("\"3/8\"", &format!("\"{}1\"", "(".repeat(400)))
+        .contains("field edge.ends: expression nested too deeply"));
 }
 
 /// xorshift64*: a deterministic generator, so failures reproduce.
