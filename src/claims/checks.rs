@@ -45,7 +45,7 @@ fn subject_config(s: &Subject, n: usize) -> Result<(Box<dyn schemes::Scheme>, Co
         };
         params.push((k.clone(), text));
     }
-    let scheme = schemes::build(&s.scheme, &params)?;
+    let scheme = schemes::resolve(&s.scheme, &params)?;
     let config = match s.faces_for(n) {
         Some(f) => Configuration::with_faces(scheme.as_ref(), n, f)?,
         None => Configuration::regular(scheme.as_ref(), n)?,

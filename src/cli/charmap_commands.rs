@@ -71,7 +71,7 @@ pub enum PlotWhat {
 }
 
 fn build_scheme(name: &str, params: &[String]) -> Result<Box<dyn Scheme>, String> {
-    schemes::build(name, &parse_params(params)?)
+    schemes::resolve(name, &parse_params(params)?)
 }
 
 /// Fails early, before any computation, when the output cannot be written.

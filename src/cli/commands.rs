@@ -103,7 +103,7 @@ pub(super) fn parse_params(list: &[String]) -> Result<Vec<(String, String)>, Str
 }
 
 fn run_analysis(a: &AnalysisArgs) -> Result<(Box<dyn Scheme>, Analysis), String> {
-    let scheme = schemes::build(&a.scheme, &parse_params(&a.params)?)?;
+    let scheme = schemes::resolve(&a.scheme, &parse_params(&a.params)?)?;
     let config = match &a.faces {
         None => Configuration::regular(scheme.as_ref(), a.valence)?,
         Some(faces) => Configuration::with_faces(scheme.as_ref(), a.valence, faces)?,

@@ -28,7 +28,7 @@ pub fn refine(
     opts: &MeshOptions,
 ) -> Result<(), String> {
     // check the cheap arguments before reading a possibly large file
-    let scheme = schemes::build(scheme, &parse_params(params)?)?;
+    let scheme = schemes::resolve(scheme, &parse_params(params)?)?;
     if levels == 0 || levels > crate::refine::mesh::MAX_LEVELS {
         return Err(format!("--levels must be between 1 and {}, got {levels}", crate::refine::mesh::MAX_LEVELS));
     }

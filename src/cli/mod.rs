@@ -66,7 +66,7 @@ pub enum Command {
     Refine {
         /// input mesh (Wavefront OBJ, closed)
         mesh: std::path::PathBuf,
-        /// scheme name (see `subdlab schemes`)
+        /// scheme name (see `subdlab schemes`) or a scheme file (.toml, see schemes/)
         #[arg(long)]
         scheme: String,
         /// number of refinement steps (1 to 12)
@@ -116,7 +116,7 @@ pub enum Command {
 
 #[derive(Args, Debug, Clone)]
 pub struct AnalysisArgs {
-    /// scheme name (see `subdlab schemes`)
+    /// scheme name (see `subdlab schemes`) or a scheme file (.toml, see schemes/)
     pub scheme: String,
     /// valence of the extraordinary vertex (or face)
     #[arg(long, short = 'n')]

@@ -299,6 +299,12 @@ impl Expr {
                         if k < 0 && x.is_zero() {
                             return None;
                         }
+                        // nested powers ((9^256)^256)^256 would need gigabytes of
+                        // digits: past a million bits the value is not worth it
+                        let bits = x.numer().bits() + x.denom().bits();
+                        if bits.saturating_mul(k.unsigned_abs() as u64) > 1 << 20 {
+                            return None;
+                        }
                         num_traits::pow::Pow::pow(x, k)
                     }
                 }
@@ -396,6 +402,16 @@ mod tests {
         assert_eq!(ex("cos(2*pi/5)"), None);
         assert_eq!(ex("sqrt(9/16)"), Some(q(3, 4)));
         assert_eq!(ex("sqrt(2)"), None);
+    }
+
+    #[test]
+    fn exact_powers_stay_bounded() {
+        assert_eq!(ex("(1/2)^10"), Some(q(1, 1024)));
+        assert!(ex("9^256").is_some());
+        // about 2^28 bits: refused rather than computed
+        assert_eq!(ex("((9^256)^256)^256"), None);
+        // the float value is still there
+        assert!(ev("((9^2)^2)^2").re == 43046721.0);
     }
 
     #[test]

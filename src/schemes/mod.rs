@@ -15,6 +15,8 @@ pub mod pgs;
 pub mod polar_bi2;
 pub mod tps;
 pub mod unified_sqrt3;
+// scheme files (TOML) over the built-in topologies
+pub mod user;
 
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Rational, Weight};
@@ -181,6 +183,20 @@ pub fn build(name: &str, overrides: &[(String, String)]) -> Result<Box<dyn Schem
         .ok_or_else(|| format!("unknown scheme '{name}'; known schemes: {}", known_names().join(", ")))?;
     let params = Params::resolve(entry.name, &(entry.params)(), overrides)?;
     Ok((entry.build)(params))
+}
+
+/// Build a scheme from a name or a scheme file: an argument that ends in
+/// `.toml` or names an existing file is loaded as a file (`user`), anything
+/// else is a built-in name. The one entry point for command-line arguments.
+pub fn resolve(name_or_path: &str, overrides: &[(String, String)]) -> Result<Box<dyn Scheme>, String> {
+    let path = std::path::Path::new(name_or_path);
+    // a built-in name always means the built-in scheme, even if a file of that
+    // name happens to exist in the working directory
+    let builtin = known_names().contains(&name_or_path);
+    if !builtin && (name_or_path.ends_with(".toml") || path.is_file()) {
+        return user::load(path, overrides);
+    }
+    build(name_or_path, overrides)
 }
 
 /// The one-ring fan of an interior vertex, restricted to faces of the given
