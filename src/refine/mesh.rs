@@ -39,12 +39,13 @@ pub fn refine_mesh(
     if let Some((a, b)) = mesh.edges().into_iter().find(|&(a, b)| !mesh.is_interior_edge(a, b)) {
         return Err(format!(
             "{} needs {}: vertex {} is on the boundary (edge {}-{} has a face on one side only); \
-             boundary rules are not implemented",
+             boundary rules are not implemented{}",
             scheme.name(),
             requirement(scheme),
             a + 1,
             a + 1,
-            b + 1
+            b + 1,
+            scheme.boundary_note().map(|n| format!(" ({n})")).unwrap_or_default()
         ));
     }
     let mut mesh = mesh.clone();

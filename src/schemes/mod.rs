@@ -85,6 +85,10 @@ pub trait Scheme: Rules<f64> + Rules<Rational> + Send + Sync {
     fn vertex_param_rule(&self, _mesh: &PolyMesh, _origin: Origin) -> Option<crate::refine::Stencil<f64>> {
         None
     }
+    /// Why the scheme has no boundary rules here, for the open-mesh error.
+    fn boundary_note(&self) -> Option<&'static str> {
+        None
+    }
     /// The only valence the scheme is defined at (regular-lattice schemes: 4).
     fn fixed_valence(&self) -> Option<usize> {
         None

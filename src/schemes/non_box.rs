@@ -136,4 +136,10 @@ impl Scheme for NonBox {
     fn face_control(&self) -> bool {
         true
     }
+    fn boundary_note(&self) -> Option<&'static str> {
+        Some(
+            "the paper's boundary rules are cubic B-spline V- and E-vertex rules plus a boundary NFCV stencil given \
+             only in its figure 8(b), which the text lacks",
+        )
+    }
 }
