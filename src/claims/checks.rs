@@ -309,6 +309,36 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
                 format!("{} (minimal {}, analysis {})", spec.matrix_size, spec.minimal_size, spec.analysis_size),
             ))
         }),
+        Check::Inequality { subject, lhs, op, rhs } => over_valences(subject, |n| {
+            let mut env = env_for(subject, n)?;
+            let (l, r) = (Expr::parse(lhs)?, Expr::parse(rhs)?);
+            let uses_spectrum = l
+                .variables()
+                .iter()
+                .chain(r.variables().iter())
+                .any(|v| ["lambda1", "lambda3", "size"].contains(&v.as_str()));
+            if uses_spectrum && !subject.scheme.is_empty() {
+                let spec = cache.spectrum(subject, n)?;
+                let l1 = spec.eigenvalues.get(1).map(|e| e.re).ok_or("no subdominant eigenvalue")?;
+                let l3 = spec.eigenvalues.get(2).map(|e| e.modulus).unwrap_or(0.0);
+                env.insert("lambda1".into(), ParamValue::from_f64(l1));
+                env.insert("lambda3".into(), ParamValue::from_f64(l3));
+                env.insert("size".into(), ParamValue::from_ratio(spec.matrix_size as i64, 1));
+            }
+            let (a, b) = (l.eval(&env)?, r.eval(&env)?);
+            if a.im.abs() > 1e-12 || b.im.abs() > 1e-12 {
+                return Err(format!("'{lhs}' or '{rhs}' is not real at n = {n}"));
+            }
+            let (a, b) = (a.re, b.re);
+            let ok = match op.as_str() {
+                "<" => a < b,
+                "<=" => a <= b,
+                ">" => a > b,
+                ">=" => a >= b,
+                other => return Err(format!("unknown comparison '{other}' (<, <=, >, >=)")),
+            };
+            Ok((ok, format!("{lhs} {op} {rhs}"), format!("{} {op} {}: {ok}", fmt_f(a), fmt_f(b))))
+        }),
         Check::NonnegativeSpectrum { subject, expect } => over_valences(subject, |n| {
             let spec = cache.spectrum(subject, n)?;
             let negative: Vec<Complex64> = spec

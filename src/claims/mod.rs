@@ -174,6 +174,17 @@ pub enum Check {
         cos: BTreeMap<String, String>,
         sin: BTreeMap<String, String>,
     },
+    /// An inequality `lhs op rhs` (op one of <, <=, >, >=) at every valence;
+    /// besides `n`, parameters and `vars`, the expressions may use the computed
+    /// `lambda1` (subdominant eigenvalue), `lambda3` (modulus of the next one)
+    /// and `size` (the neighbourhood size).
+    Inequality {
+        #[serde(flatten)]
+        subject: Subject,
+        lhs: String,
+        op: String,
+        rhs: String,
+    },
     /// Every real eigenvalue is non-negative (`expect = true`) or not.
     NonnegativeSpectrum {
         #[serde(flatten)]
