@@ -163,7 +163,13 @@ pub(super) fn spectrum_table(s: &Spectrum) -> String {
     let mut out = String::new();
     out += &format!(
         "scheme {}  valence {}  faces {}  neighbourhood {:?} ({} vertices; minimal {}, analysis {})\n",
-        s.scheme, s.valence, s.faces, s.neighbourhood, s.matrix_size, s.minimal_size, s.analysis_size
+        s.scheme,
+        s.valence,
+        short_faces(&s.faces),
+        s.neighbourhood,
+        s.matrix_size,
+        s.minimal_size,
+        s.analysis_size
     );
     if !s.params.is_empty() {
         out += &format!(
@@ -211,6 +217,14 @@ pub(super) fn spectrum_table(s: &Spectrum) -> String {
         out += &format!("  |λ3|/λ1² = {}\n", crate::spectrum::fmt_f(r));
     }
     out
+}
+
+/// "Q×200" for a long uniform face sequence.
+fn short_faces(f: &str) -> String {
+    match f.chars().next() {
+        Some(c) if f.len() > 12 && f.chars().all(|x| x == c) => format!("{c}×{}", f.len()),
+        _ => f.to_string(),
+    }
 }
 
 fn compact_blocks(b: &[usize]) -> String {
