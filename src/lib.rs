@@ -22,4 +22,5 @@ pub mod refine;
 pub mod report;
 pub mod schemes;
 pub mod spectrum;
+pub mod sweep;
 pub mod topology;

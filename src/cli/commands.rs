@@ -15,6 +15,9 @@ pub fn dispatch(cmd: Command) -> Result<(), String> {
     }
     match cmd {
         Command::Verify { paper, claims, json, junit } => super::verify::run(paper, &claims, json, junit.as_deref()),
+        Command::Sweep { scheme, valences, params, charmap, json, csv } => {
+            sweep(&scheme, &valences, &params, charmap, json, csv)
+        }
         Command::Report { out } => {
             let files = crate::report::build()?;
             crate::report::write(&out, &files)?;
@@ -262,4 +265,102 @@ pub(super) fn stencil_table(st: &crate::spectrum::stencils::Stencils) -> String 
     }
     out += "(vertices where every stencil is zero are omitted)\n";
     out
+}
+
+fn sweep(scheme: &str, valences: &str, params: &[String], charmap: bool, json: bool, csv: bool) -> Result<(), String> {
+    use crate::sweep::{admissible, parse_range, parse_valences, run, Grid};
+    use std::io::IsTerminal;
+    if json && csv {
+        return Err("choose one of --json and --csv".into());
+    }
+    let mut param = None;
+    let mut fixed = Vec::new();
+    for (k, v) in parse_params(params)? {
+        if v.contains(':') {
+            if param.is_some() {
+                return Err("only one parameter can be swept (NAME=START:END:STEP)".into());
+            }
+            param = Some((k, parse_range(&v)?));
+        } else {
+            fixed.push((k, v));
+        }
+    }
+    let grid = Grid { scheme: scheme.to_string(), valences: parse_valences(valences)?, param, fixed, charmap };
+    // fail fast on a bad scheme, parameter name or value, before the long run
+    let mut first = grid.fixed.clone();
+    if let Some((name, values)) = &grid.param {
+        first.push((name.clone(), values[0].clone()));
+        let mut last = grid.fixed.clone();
+        last.push((name.clone(), values[values.len() - 1].clone()));
+        schemes::resolve(scheme, &last)?;
+    }
+    schemes::resolve(scheme, &first)?;
+    let tty = std::io::stderr().is_terminal();
+    let progress = |done: usize, total: usize| {
+        if tty && (done == total || done % 8 == 0) {
+            eprint!("\r{done}/{total} points");
+            if done == total {
+                eprintln!();
+            }
+        }
+    };
+    let points = run(&grid, &progress)?;
+    let intervals = admissible(&points);
+    if json {
+        #[derive(serde::Serialize)]
+        struct Out<'a> {
+            scheme: &'a str,
+            parameter: Option<&'a str>,
+            points: &'a [crate::sweep::Point],
+            admissible: &'a [crate::sweep::Interval],
+        }
+        let parameter = grid.param.as_ref().map(|p| p.0.as_str());
+        return print_json(&Out { scheme, parameter, points: &points, admissible: &intervals });
+    }
+    let name = grid.param.as_ref().map(|p| p.0.clone()).unwrap_or_default();
+    if csv {
+        println!("valence,{name},lambda0,lambda1,lambda2,lambda3,c1_spectral,charmap,error");
+    } else {
+        println!(
+            "{:>7} {:>10} {:>14} {:>14} {:>14} {:>14} {:>5} {:>8}",
+            "valence", name, "|λ0|", "|λ1|", "|λ2|", "|λ3|", "C1", "charmap"
+        );
+    }
+    for p in &points {
+        let l = |k: usize| p.lambda.get(k).map(|x| crate::spectrum::fmt_f(*x)).unwrap_or_default();
+        let cm = p.charmap.map(|b| b.to_string()).unwrap_or_default();
+        if csv {
+            let err = p.error.clone().unwrap_or_default().replace(',', ";");
+            println!(
+                "{},{},{},{},{},{},{},{cm},{err}",
+                p.valence,
+                p.param.clone().unwrap_or_default(),
+                l(0),
+                l(1),
+                l(2),
+                l(3),
+                p.c1_spectral
+            );
+        } else {
+            println!(
+                "{:>7} {:>10} {:>14} {:>14} {:>14} {:>14} {:>5} {:>8}{}",
+                p.valence,
+                p.param.clone().unwrap_or_default(),
+                l(0),
+                l(1),
+                l(2),
+                l(3),
+                p.c1_spectral,
+                cm,
+                p.error.as_ref().map(|e| format!("  ({e})")).unwrap_or_default()
+            );
+        }
+    }
+    if !csv && grid.param.is_some() {
+        println!("\nadmissible intervals of {name} (passing every computed test):");
+        for i in &intervals {
+            println!("  valence {:>4}: [{}, {}]", i.valence, i.from, i.to);
+        }
+    }
+    Ok(())
 }

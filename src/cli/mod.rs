@@ -21,6 +21,24 @@ pub struct Cli {
 
 #[derive(Subcommand, Debug)]
 pub enum Command {
+    /// Sweep valences (and one parameter): λ0..λ3, verdicts, admissible intervals
+    Sweep {
+        /// scheme name or scheme file
+        scheme: String,
+        /// valence range A..B
+        #[arg(long)]
+        valences: String,
+        /// NAME=VALUE fixes a parameter; NAME=START:END:STEP sweeps one (at most one)
+        #[arg(long = "param", short = 'p')]
+        params: Vec<String>,
+        /// also check the characteristic map at every point that passes the spectral test
+        #[arg(long)]
+        charmap: bool,
+        #[arg(long)]
+        json: bool,
+        #[arg(long)]
+        csv: bool,
+    },
     /// Write reports/: an index and one page per paper (claims, figures, refuted statements)
     Report {
         /// the report folder

@@ -1,0 +1,187 @@
+//! Parameter and valence sweeps: the leading spectrum, the spectral verdict
+//! and (optionally) the characteristic-map verdict at every point of a grid,
+//! computed in parallel, identical to single-point runs (each point is an
+//! ordinary `spectrum::analyse`), and the admissible intervals of the swept
+//! parameter per valence.
+
+use serde::Serialize;
+
+use crate::charmap::{characteristic_map, CharMapOptions};
+use crate::neighbourhood::{Configuration, NeighbourhoodKind};
+use crate::schemes;
+use crate::spectrum::{analyse, Options};
+
+/// Most grid points in one sweep (a bound on time, not a modelling limit).
+pub const MAX_POINTS: usize = 100_000;
+
+#[derive(Clone, Debug)]
+pub struct Grid {
+    pub scheme: String,
+    pub valences: Vec<usize>,
+    /// the swept parameter and its values (None: valences only)
+    pub param: Option<(String, Vec<String>)>,
+    /// other fixed parameters
+    pub fixed: Vec<(String, String)>,
+    pub charmap: bool,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct Point {
+    pub valence: usize,
+    /// the swept parameter's value (text as given)
+    pub param: Option<String>,
+    /// moduli of λ0..λ3 (with multiplicity), as far as they exist
+    pub lambda: Vec<f64>,
+    pub c1_spectral: bool,
+    /// regular and injective characteristic map (when asked for)
+    pub charmap: Option<bool>,
+    /// why the point could not be analysed, if it could not
+    pub error: Option<String>,
+}
+
+/// `"a:b:step"` → the values a, a + step, ..., up to b (exact decimal text).
+pub fn parse_range(s: &str) -> Result<Vec<String>, String> {
+    let parts: Vec<&str> = s.split(':').collect();
+    let [a, b, step] = parts[..] else { return Err(format!("'{s}' is not of the form START:END:STEP")) };
+    let p = |t: &str| crate::numeric::ParamValue::parse(t).map_err(|e| format!("'{s}': {e}"));
+    let (a, b, step) = (p(a)?, p(b)?, p(step)?);
+    let (Some(qa), Some(qb), Some(qs)) = (a.exact, b.exact, step.exact) else {
+        return Err(format!("'{s}': use exact decimals or fractions"));
+    };
+    if qs <= crate::numeric::exact::q(0, 1) || qb < qa {
+        return Err(format!("'{s}': need START <= END and STEP > 0"));
+    }
+    let count = ((&qb - &qa) / &qs).floor();
+    let count: usize = num_traits::ToPrimitive::to_usize(&count.to_integer()).ok_or("too many values")?;
+    if count >= MAX_POINTS {
+        return Err(format!("'{s}' has more than {MAX_POINTS} values"));
+    }
+    Ok((0..=count).map(|k| (qa.clone() + qs.clone() * crate::numeric::exact::q(k as i64, 1)).to_string()).collect())
+}
+
+/// `"3..100"` → 3, 4, ..., 100.
+pub fn parse_valences(s: &str) -> Result<Vec<usize>, String> {
+    let (a, b) = s.split_once("..").ok_or_else(|| format!("valence range '{s}' is not of the form A..B"))?;
+    let (a, b): (usize, usize) = (
+        a.trim().parse().map_err(|_| format!("bad valence range '{s}'"))?,
+        b.trim().parse().map_err(|_| format!("bad valence range '{s}'"))?,
+    );
+    if a > b {
+        return Err(format!("bad valence range '{s}'"));
+    }
+    crate::neighbourhood::configuration::check_valence(a)?;
+    crate::neighbourhood::configuration::check_valence(b)?;
+    Ok((a..=b).collect())
+}
+
+/// One point, exactly as `subdlab spectrum` (and `charmap`) would compute it.
+pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
+    let mut params = grid.fixed.clone();
+    if let (Some((name, _)), Some(v)) = (&grid.param, value) {
+        params.push((name.clone(), v.to_string()));
+    }
+    let run = || -> Result<Point, String> {
+        let scheme = schemes::resolve(&grid.scheme, &params)?;
+        let config = Configuration::regular(scheme.as_ref(), n)?;
+        let opts = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
+        let s = analyse(scheme.as_ref(), &config, &opts)?.spectrum;
+        let lambda = s
+            .eigenvalues
+            .iter()
+            .flat_map(|e| std::iter::repeat(e.modulus).take(e.algebraic_multiplicity))
+            .take(4)
+            .collect();
+        let charmap = if grid.charmap && s.verdict.c1_spectral {
+            let opts = CharMapOptions { levels: 3, resolution: 128, display_levels: None };
+            let m = characteristic_map(scheme.as_ref(), &config, &opts)?;
+            Some(m.regular && m.injective)
+        } else if grid.charmap {
+            Some(false)
+        } else {
+            None
+        };
+        Ok(Point {
+            valence: n,
+            param: value.map(str::to_string),
+            lambda,
+            c1_spectral: s.verdict.c1_spectral,
+            charmap,
+            error: None,
+        })
+    };
+    run().unwrap_or_else(|e| Point {
+        valence: n,
+        param: value.map(str::to_string),
+        lambda: Vec::new(),
+        c1_spectral: false,
+        charmap: None,
+        error: Some(e),
+    })
+}
+
+/// Every point of the grid, in order, on all available cores.
+pub fn run(grid: &Grid, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Vec<Point>, String> {
+    let values: Vec<Option<String>> = match &grid.param {
+        Some((_, v)) => v.iter().cloned().map(Some).collect(),
+        None => vec![None],
+    };
+    let tasks: Vec<(usize, Option<String>)> =
+        grid.valences.iter().flat_map(|&n| values.iter().map(move |v| (n, v.clone()))).collect();
+    if tasks.len() > MAX_POINTS {
+        return Err(format!("{} grid points, above the supported {MAX_POINTS}", tasks.len()));
+    }
+    let threads = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1).min(tasks.len().max(1));
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let mut out: Vec<Option<Point>> = vec![None; tasks.len()];
+    let results: Vec<Vec<(usize, Point)>> = std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..threads)
+            .map(|_| {
+                scope.spawn(|| {
+                    let mut mine = Vec::new();
+                    loop {
+                        let k = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                        let Some((n, v)) = tasks.get(k) else { break };
+                        mine.push((k, point(grid, *n, v.as_deref())));
+                        let d = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+                        progress(d, tasks.len());
+                    }
+                    mine
+                })
+            })
+            .collect();
+        handles.into_iter().map(|h| h.join().unwrap_or_default()).collect()
+    });
+    for (k, p) in results.into_iter().flatten() {
+        out[k] = Some(p);
+    }
+    out.into_iter().map(|p| p.ok_or_else(|| "a sweep worker stopped".to_string())).collect()
+}
+
+/// Maximal runs of consecutive swept values, per valence, where the point
+/// passes (spectral C^1, and the characteristic map when computed).
+#[derive(Clone, Debug, Serialize)]
+pub struct Interval {
+    pub valence: usize,
+    pub from: String,
+    pub to: String,
+}
+
+pub fn admissible(points: &[Point]) -> Vec<Interval> {
+    let mut out = Vec::new();
+    let mut current: Option<Interval> = None;
+    for p in points {
+        let ok = p.c1_spectral && p.charmap.unwrap_or(true) && p.error.is_none();
+        let v = p.param.clone().unwrap_or_default();
+        match (&mut current, ok) {
+            (Some(c), true) if c.valence == p.valence => c.to = v,
+            (_, true) => {
+                out.extend(current.take());
+                current = Some(Interval { valence: p.valence, from: v.clone(), to: v });
+            }
+            (_, false) => out.extend(current.take()),
+        }
+    }
+    out.extend(current);
+    out
+}
