@@ -130,48 +130,13 @@ fn sum_mask(mask: &[(Point, Rational)]) -> Rational {
     mask.iter().fold(Rational::zero(), |acc, (_, w)| acc + w)
 }
 
-/// p(x) / d(x) for monic-able d: (quotient, remainder), schoolbook.
-fn divide(p: &Poly, d: &Poly) -> (Poly, Poly) {
-    let mut rem = p.coeffs.clone();
-    let dd = d.degree();
-    let lead = d.coeffs[dd].clone();
-    if p.degree() < dd {
-        return (Poly { coeffs: vec![Rational::zero()] }, p.clone());
-    }
-    let mut quo = vec![Rational::zero(); p.degree() - dd + 1];
-    for k in (0..quo.len()).rev() {
-        let c = &rem[k + dd] / &lead;
-        for (t, dc) in d.coeffs.iter().enumerate() {
-            rem[k + t] = &rem[k + t] - &c * dc;
-        }
-        quo[k] = c;
-    }
-    rem.truncate(dd.max(1));
-    (Poly { coeffs: quo }, Poly { coeffs: rem })
-}
-
-fn derivative(p: &Poly) -> Poly {
-    if p.degree() == 0 {
-        return Poly { coeffs: vec![Rational::zero()] };
-    }
-    Poly {
-        coeffs: p
-            .coeffs
-            .iter()
-            .enumerate()
-            .skip(1)
-            .map(|(k, c)| c * Rational::from_integer((k as i64).into()))
-            .collect(),
-    }
-}
-
 /// Multiplicity of r as a root, by substitution into p, p', p'', ...
 fn multiplicity_by_derivatives(p: &Poly, r: &Rational) -> usize {
     let mut d = p.clone();
     let mut m = 0;
     while d.degree() > 0 && d.eval(r).is_zero() {
         m += 1;
-        d = derivative(&d);
+        d = d.derivative();
     }
     m
 }
@@ -493,13 +458,13 @@ fn irrational_eigenvalues_match_the_printed_closed_forms() {
     let p = charpoly(&KhanMustafa, &paper_window()).unwrap();
     let rational =
         [q(1, 1), q(1, 2), q(1, 2), q(3, 8), q(3, 8), q(1, 4), q(1, 4), q(1, 4), q(1, 8), q(1, 16), q(1, 24)];
-    let (rest, r0) = divide(&p, &Poly::from_roots(&rational));
+    let (rest, r0) = p.div_rem(&Poly::from_roots(&rational));
     assert!(r0.coeffs.iter().all(|c| c.is_zero()));
     assert_eq!(rest.degree(), 5);
     let quad = Poly { coeffs: vec![q(7, 1152), q(1, 8), q(1, 1)] };
     let disc = q(1, 64) - q(4 * 7, 1152);
     assert!(disc.is_negative());
-    let (cubic, r1) = divide(&rest, &quad);
+    let (cubic, r1) = rest.div_rem(&quad);
     assert!(r1.coeffs.iter().all(|c| c.is_zero()), "x² + x/8 + 7/1152 divides the characteristic polynomial");
     assert_eq!(cubic.degree(), 3);
     let lead = cubic.coeffs[3].clone();
@@ -574,7 +539,7 @@ fn reif_spectral_condition_and_window_dependence() {
     }
     let p16 = charpoly(&KhanMustafa, &paper_window()).unwrap();
     let p36 = charpoly(&KhanMustafa, &Window::rect(-3, 2, -3, 2)).unwrap();
-    let (_, r) = divide(&p36, &p16);
+    let (_, r) = p36.div_rem(&p16);
     assert!(r.coeffs.iter().all(|c| c.is_zero()));
 }
 

@@ -589,23 +589,5 @@ fn selector(kind: VertexKind, ring: usize) -> String {
 }
 
 fn in_span(basis: &[Vec<f64>], v: &[f64]) -> bool {
-    let mut ortho: Vec<Vec<f64>> = Vec::new();
-    for b in basis {
-        let mut r = b.clone();
-        for q in &ortho {
-            let d: f64 = q.iter().zip(&r).map(|(x, y)| x * y).sum();
-            r.iter_mut().zip(q).for_each(|(x, y)| *x -= d * y);
-        }
-        let n = r.iter().map(|x| x * x).sum::<f64>().sqrt();
-        if n > 1e-12 {
-            ortho.push(r.iter().map(|x| x / n).collect());
-        }
-    }
-    let mut r = v.to_vec();
-    for q in &ortho {
-        let d: f64 = q.iter().zip(&r).map(|(x, y)| x * y).sum();
-        r.iter_mut().zip(q).for_each(|(x, y)| *x -= d * y);
-    }
-    let vn = v.iter().map(|x| x * x).sum::<f64>().sqrt();
-    vn > 0.0 && r.iter().map(|x| x * x).sum::<f64>().sqrt() < 1e-8 * vn
+    v.iter().any(|x| *x != 0.0) && crate::spectrum::stencils::span_residual(basis, v) < 1e-8
 }

@@ -8,10 +8,9 @@ use super::commands::parse_params;
 use super::output::print_json;
 use crate::charmap::{characteristic_map, CharMap, CharMapOptions, DEFAULT_LEVELS, DEFAULT_RESOLUTION, MAX_LEVELS};
 use crate::neighbourhood::configuration::check_valence;
-use crate::neighbourhood::{Configuration, NeighbourhoodKind};
+use crate::neighbourhood::Configuration;
 use crate::plot::{self, charmap::RingFigure, spectrum::SpectrumFigure};
 use crate::schemes::{self, Scheme};
-use crate::spectrum::{analyse, Options};
 
 /// Most valences in one spectrum plot (each is a full analysis).
 const MAX_PLOT_VALENCES: usize = 200;
@@ -175,13 +174,7 @@ pub fn plot(what: &PlotWhat) -> Result<(), String> {
             check_out(out)?;
             let (a, b) = parse_range(valences)?;
             let s = build_scheme(scheme, params)?;
-            let mut rows = Vec::new();
-            for n in a..=b {
-                let config = Configuration::regular(s.as_ref(), n)?;
-                let opts = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
-                let spec = analyse(s.as_ref(), &config, &opts)?.spectrum;
-                rows.push((n, spec.eigenvalues.iter().skip(1).map(|e| e.modulus).collect()));
-            }
+            let rows = crate::plot::spectrum::leading_moduli(s.as_ref(), a..=b)?;
             plot::save(&SpectrumFigure { scheme: s.name().to_string(), rows, count: *count }, out)
         }
     }

@@ -141,23 +141,6 @@ impl Chart {
         }
         (i, j)
     }
-
-    /// The coordinates of the corners of face `f` in its own chart (the corner's
-    /// own chart for a central face).
-    pub fn face_corner_coords(&self, face: &[usize], sector: Option<usize>) -> Vec<(usize, i64, i64)> {
-        face.iter()
-            .map(|&v| {
-                let c = self.vertex_coords[v];
-                match sector {
-                    Some(s) => {
-                        let (i, j) = self.in_chart(c, s);
-                        (s, i, j)
-                    }
-                    None => (c.sector, c.i, c.j),
-                }
-            })
-            .collect()
-    }
 }
 
 #[cfg(test)]

@@ -6,6 +6,24 @@ use plotters::prelude::*;
 
 use super::{err, Figure, FONT};
 
+/// The rows of the figure: for each valence, the moduli of the distinct
+/// eigenvalues after λ0 (regular configuration, analysis neighbourhood).
+pub fn leading_moduli(
+    scheme: &dyn crate::schemes::Scheme,
+    valences: std::ops::RangeInclusive<usize>,
+) -> Result<Vec<(usize, Vec<f64>)>, String> {
+    use crate::neighbourhood::{Configuration, NeighbourhoodKind};
+    use crate::spectrum::{analyse, Options};
+    valences
+        .map(|n| {
+            let config = Configuration::regular(scheme, n)?;
+            let opts = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
+            let spec = analyse(scheme, &config, &opts)?.spectrum;
+            Ok((n, spec.eigenvalues.iter().skip(1).map(|e| e.modulus).collect()))
+        })
+        .collect()
+}
+
 pub struct SpectrumFigure {
     pub scheme: String,
     /// (valence, moduli of the distinct eigenvalues after λ0, largest first)

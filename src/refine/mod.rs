@@ -71,9 +71,6 @@ impl<W: Weight> Stencil<W> {
             self.add(*v, w.clone() * scale.clone());
         }
     }
-    pub fn sum_of_weights(&self) -> W {
-        self.terms.iter().fold(W::zero(), |acc, t| acc + t.1.clone())
-    }
     /// Vertices with non-zero weight (call on a merged stencil).
     pub fn support(&self) -> impl Iterator<Item = VertexId> + '_ {
         self.terms.iter().filter(|t| !t.1.is_zero()).map(|t| t.0)

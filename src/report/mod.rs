@@ -11,10 +11,9 @@ use std::path::Path;
 
 use crate::charmap::{characteristic_map, CharMapOptions};
 use crate::claims::{self, ClaimFile, FigureSpec, Outcome, Verdict};
-use crate::neighbourhood::{Configuration, NeighbourhoodKind};
+use crate::neighbourhood::Configuration;
 use crate::plot::{self, charmap::RingFigure, spectrum::SpectrumFigure};
 use crate::schemes;
-use crate::spectrum::{analyse, Options};
 
 /// Every file of the report, path relative to the report folder → contents.
 pub type Files = BTreeMap<String, Vec<u8>>;
@@ -131,13 +130,7 @@ fn figures(spec: &FigureSpec) -> Result<(String, Files), String> {
     } else {
         writeln!(md, "No characteristic ring for {title} at valence {}: {}.\n", spec.valence, map.explanation).ok();
     }
-    let mut rows = Vec::new();
-    for n in 3..=spec.up_to {
-        let config = Configuration::regular(scheme.as_ref(), n)?;
-        let opts = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
-        let s = analyse(scheme.as_ref(), &config, &opts)?.spectrum;
-        rows.push((n, s.eigenvalues.iter().skip(1).map(|e| e.modulus).collect()));
-    }
+    let rows = crate::plot::spectrum::leading_moduli(scheme.as_ref(), 3..=spec.up_to)?;
     let name = format!("figures/{tag}-spectrum.svg");
     files.insert(name.clone(), svg(&SpectrumFigure { scheme: title.clone(), rows, count: 3 })?);
     writeln!(md, "![leading eigenvalues of {title}]({name})\n\nLeading eigenvalue moduli of {title} against the valence (3..{}).\n", spec.up_to).ok();

@@ -82,19 +82,36 @@ pub fn tangent_stencils(spec: &Spectrum) -> Result<Vec<Vec<f64>>, String> {
     Ok(out)
 }
 
-/// Gram–Schmidt test: is v independent of the vectors in `basis`?
-fn independent(basis: &[Vec<f64>], v: &[f64]) -> bool {
-    let norm = v.iter().map(|x| x * x).sum::<f64>().sqrt();
-    if norm < 1e-10 {
-        return false;
-    }
-    let mut r: Vec<f64> = v.iter().map(|x| x / norm).collect();
+/// ‖v − projection of v onto span(basis)‖ / ‖v‖ (Gram–Schmidt); 0 for v = 0.
+pub fn span_residual(basis: &[Vec<f64>], v: &[f64]) -> f64 {
+    let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
+    let mut ortho: Vec<Vec<f64>> = Vec::new();
     for b in basis {
-        let bn = b.iter().map(|x| x * x).sum::<f64>().sqrt();
-        let d: f64 = b.iter().zip(&r).map(|(x, y)| x * y).sum::<f64>() / (bn * bn);
-        r.iter_mut().zip(b).for_each(|(x, y)| *x -= d * y);
+        let mut r = b.clone();
+        for q in &ortho {
+            let d = dot(q, &r);
+            r.iter_mut().zip(q).for_each(|(x, y)| *x -= d * y);
+        }
+        let n = dot(&r, &r).sqrt();
+        if n > 1e-12 {
+            ortho.push(r.iter().map(|x| x / n).collect());
+        }
     }
-    r.iter().map(|x| x * x).sum::<f64>().sqrt() > 1e-6
+    let vn = dot(v, v).sqrt();
+    if vn == 0.0 {
+        return 0.0;
+    }
+    let mut r = v.to_vec();
+    for q in &ortho {
+        let d = dot(q, &r);
+        r.iter_mut().zip(q).for_each(|(x, y)| *x -= d * y);
+    }
+    dot(&r, &r).sqrt() / vn
+}
+
+/// Is v (non-zero) independent of the vectors in `basis`?
+fn independent(basis: &[Vec<f64>], v: &[f64]) -> bool {
+    v.iter().map(|x| x * x).sum::<f64>().sqrt() >= 1e-10 && span_residual(basis, v) > 1e-6
 }
 
 pub fn stencils(spec: &Spectrum) -> Result<Stencils, String> {
