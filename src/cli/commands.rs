@@ -15,9 +15,7 @@ pub fn dispatch(cmd: Command) -> Result<(), String> {
     }
     match cmd {
         Command::Verify { paper, claims, json, junit } => super::verify::run(paper, &claims, json, junit.as_deref()),
-        Command::Sweep { scheme, valences, params, charmap, json, csv } => {
-            sweep(&scheme, &valences, &params, charmap, json, csv)
-        }
+        Command::Sweep(a) => sweep(&a),
         Command::Report { out } => {
             let files = crate::report::build()?;
             crate::report::write(&out, &files)?;
@@ -267,15 +265,16 @@ pub(super) fn stencil_table(st: &crate::spectrum::stencils::Stencils) -> String 
     out
 }
 
-fn sweep(scheme: &str, valences: &str, params: &[String], charmap: bool, json: bool, csv: bool) -> Result<(), String> {
+fn sweep(args: &super::SweepArgs) -> Result<(), String> {
     use crate::sweep::{admissible, parse_range, parse_valences, run, Grid};
-    use std::io::IsTerminal;
+    let super::SweepArgs { scheme, json, csv, .. } = args;
+    let (scheme, json, csv) = (scheme.as_str(), *json, *csv);
     if json && csv {
         return Err("choose one of --json and --csv".into());
     }
     let mut param = None;
     let mut fixed = Vec::new();
-    for (k, v) in parse_params(params)? {
+    for (k, v) in parse_params(&args.params)? {
         if v.contains(':') {
             if param.is_some() {
                 return Err("only one parameter can be swept (NAME=START:END:STEP)".into());
@@ -285,7 +284,25 @@ fn sweep(scheme: &str, valences: &str, params: &[String], charmap: bool, json: b
             fixed.push((k, v));
         }
     }
-    let grid = Grid { scheme: scheme.to_string(), valences: parse_valences(valences)?, param, fixed, charmap };
+    let grid = Grid {
+        scheme: scheme.to_string(),
+        valences: parse_valences(&args.valences)?,
+        param,
+        fixed,
+        charmap: args.charmap,
+    };
+    if args.plot.is_some() && grid.param.is_none() {
+        return Err(
+            "--plot needs a swept parameter NAME=START:END:STEP (for valences alone use `plot spectrum`)".into()
+        );
+    }
+    if !args.bounds.is_empty() && args.plot.is_none() {
+        return Err("--bound is drawn on the figure; give --plot FILE.svg too".into());
+    }
+    if let Some(path) = &args.plot {
+        crate::plot::format_of(path)?;
+    }
+    let bounds = args.bounds.iter().map(|text| sweep_bound(text, &grid)).collect::<Result<Vec<_>, String>>()?;
     // fail fast on a bad scheme, parameter name or value, before the long run
     let mut first = grid.fixed.clone();
     if let Some((name, values)) = &grid.param {
@@ -295,17 +312,22 @@ fn sweep(scheme: &str, valences: &str, params: &[String], charmap: bool, json: b
         schemes::resolve(scheme, &last)?;
     }
     schemes::resolve(scheme, &first)?;
-    let tty = std::io::stderr().is_terminal();
-    let progress = |done: usize, total: usize| {
-        if tty && (done == total || done % 8 == 0) {
-            eprint!("\r{done}/{total} points");
-            if done == total {
-                eprintln!();
-            }
-        }
-    };
+    let total = grid.valences.len() * grid.param.as_ref().map_or(1, |p| p.1.len());
+    // indicatif draws only when standard error is a terminal
+    let bar = indicatif::ProgressBar::new(total as u64);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} points, eta {eta}")
+            .map_err(|e| e.to_string())?
+            .progress_chars("=> "),
+    );
+    let progress = |done: usize, _total: usize| bar.set_position(done as u64);
     let points = run(&grid, &progress)?;
+    bar.finish_and_clear();
     let intervals = admissible(&points);
+    if let (Some(path), Some((name, _))) = (&args.plot, &grid.param) {
+        let fig = crate::plot::sweep::SweepFigure::new(scheme, name, &points, grid.charmap, bounds)?;
+        crate::plot::save(&fig, path)?;
+    }
     if json {
         #[derive(serde::Serialize)]
         struct Out<'a> {
@@ -363,4 +385,30 @@ fn sweep(scheme: &str, valences: &str, params: &[String], charmap: bool, json: b
         }
     }
     Ok(())
+}
+
+/// A reference bound for the sweep figure: `EXPR` in the valence `n` (alias
+/// `k`) and the fixed parameters, evaluated at every valence of the grid.
+fn sweep_bound(text: &str, grid: &crate::sweep::Grid) -> Result<crate::plot::sweep::Bound, String> {
+    let expr = crate::numeric::expr::Expr::parse(text).map_err(|e| format!("--bound '{text}': {e}"))?;
+    let mut env = crate::numeric::expr::Env::new();
+    for (k, v) in &grid.fixed {
+        env.insert(k.clone(), crate::numeric::ParamValue::parse(v)?);
+    }
+    let values = grid
+        .valences
+        .iter()
+        .map(|&n| {
+            let mut env = env.clone();
+            for var in ["n", "k"] {
+                env.insert(var.into(), crate::numeric::ParamValue::from_ratio(n as i64, 1));
+            }
+            let z = expr.eval(&env).map_err(|e| format!("--bound '{text}' at n = {n}: {e}"))?;
+            if !z.re.is_finite() || z.im.abs() > 1e-12 * (1.0 + z.re.abs()) {
+                return Err(format!("--bound '{text}' is not a finite real number at n = {n}"));
+            }
+            Ok((n, z.re))
+        })
+        .collect::<Result<Vec<_>, String>>()?;
+    Ok(crate::plot::sweep::Bound { label: text.to_string(), values })
 }

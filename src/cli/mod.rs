@@ -22,23 +22,7 @@ pub struct Cli {
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Sweep valences (and one parameter): λ0..λ3, verdicts, admissible intervals
-    Sweep {
-        /// scheme name or scheme file
-        scheme: String,
-        /// valence range A..B
-        #[arg(long)]
-        valences: String,
-        /// NAME=VALUE fixes a parameter; NAME=START:END:STEP sweeps one (at most one)
-        #[arg(long = "param", short = 'p')]
-        params: Vec<String>,
-        /// also check the characteristic map at every point that passes the spectral test
-        #[arg(long)]
-        charmap: bool,
-        #[arg(long)]
-        json: bool,
-        #[arg(long)]
-        csv: bool,
-    },
+    Sweep(SweepArgs),
     /// Write reports/: an index and one page per paper (claims, figures, refuted statements)
     Report {
         /// the report folder
@@ -176,4 +160,30 @@ pub fn run() -> Result<(), String> {
         }
     };
     commands::dispatch(cli.command)
+}
+
+#[derive(Args, Debug)]
+pub struct SweepArgs {
+    /// scheme name or scheme file
+    pub scheme: String,
+    /// valence range A..B
+    #[arg(long)]
+    pub valences: String,
+    /// NAME=VALUE fixes a parameter; NAME=START:END:STEP sweeps one (at most one)
+    #[arg(long = "param", short = 'p')]
+    pub params: Vec<String>,
+    /// also check the characteristic map at every point that passes the spectral test
+    #[arg(long)]
+    pub charmap: bool,
+    #[arg(long)]
+    pub json: bool,
+    #[arg(long)]
+    pub csv: bool,
+    /// draw the admissible intervals (valence x swept value) into FILE.svg or FILE.png
+    #[arg(long)]
+    pub plot: Option<std::path::PathBuf>,
+    /// a reference bound to draw on the plot, an expression in n (e.g. a paper's
+    /// stated bound "1/4 - cos(2 pi / n)/4"); repeatable
+    #[arg(long = "bound")]
+    pub bounds: Vec<String>,
 }

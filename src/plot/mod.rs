@@ -8,6 +8,7 @@
 
 pub mod charmap;
 pub mod spectrum;
+pub mod sweep;
 
 use std::path::Path;
 use std::sync::Once;

@@ -1,0 +1,189 @@
+//! Admissible parameter intervals of a sweep: one row per valence, one cell
+//! per swept value, coloured by the strongest test the point passes, with
+//! optional reference bounds (curves in the valence, e.g. a paper's stated
+//! bound) drawn across the rows so the computed intervals can be compared
+//! with the stated ones at a glance.
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+use super::{err, Figure, FONT};
+use crate::sweep::Point;
+
+/// What a grid point passed, in increasing order of strength.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CellStatus {
+    /// the analysis failed (e.g. the rules are undefined for this value)
+    Error,
+    /// fails Reif's spectral C¹ test
+    NotSpectral,
+    /// passes the spectral test, the characteristic map is not regular and injective
+    SpectralOnly,
+    /// passes every computed test
+    Admissible,
+}
+
+impl CellStatus {
+    pub fn of(p: &Point) -> Self {
+        match (p.error.is_some(), p.c1_spectral, p.charmap) {
+            (true, _, _) => CellStatus::Error,
+            (false, false, _) => CellStatus::NotSpectral,
+            (false, true, Some(false)) => CellStatus::SpectralOnly,
+            (false, true, _) => CellStatus::Admissible,
+        }
+    }
+    fn colour(self) -> RGBColor {
+        match self {
+            CellStatus::Error => RGBColor(190, 190, 190),
+            CellStatus::NotSpectral => RGBColor(244, 190, 186),
+            CellStatus::SpectralOnly => RGBColor(253, 208, 120),
+            CellStatus::Admissible => RGBColor(102, 178, 102),
+        }
+    }
+    fn label(self, charmap: bool) -> &'static str {
+        match self {
+            CellStatus::Error => "not analysable",
+            CellStatus::NotSpectral => "fails the spectral C¹ test",
+            CellStatus::SpectralOnly => "spectral C¹, characteristic map fails",
+            CellStatus::Admissible if charmap => "spectral C¹ and injective characteristic map",
+            CellStatus::Admissible => "spectral C¹",
+        }
+    }
+}
+
+/// A reference curve: its legend text and its value per valence.
+pub struct Bound {
+    pub label: String,
+    pub values: Vec<(usize, f64)>,
+}
+
+pub struct SweepFigure {
+    pub scheme: String,
+    pub param: String,
+    /// (valence, swept value, status), the swept values in increasing order
+    pub cells: Vec<(usize, f64, CellStatus)>,
+    /// whether the characteristic map was part of the test
+    pub charmap: bool,
+    pub bounds: Vec<Bound>,
+}
+
+impl SweepFigure {
+    /// The figure of a sweep's points; every point must carry a swept value.
+    pub fn new(scheme: &str, param: &str, points: &[Point], charmap: bool, bounds: Vec<Bound>) -> Result<Self, String> {
+        let cells = points
+            .iter()
+            .map(|p| {
+                let text = p.param.as_deref().ok_or("the figure needs a swept parameter")?;
+                let v = crate::numeric::ParamValue::parse(text)?.value;
+                Ok((p.valence, v, CellStatus::of(p)))
+            })
+            .collect::<Result<Vec<_>, String>>()?;
+        if cells.is_empty() {
+            return Err("no sweep points to plot".into());
+        }
+        Ok(SweepFigure { scheme: scheme.to_string(), param: param.to_string(), cells, charmap, bounds })
+    }
+
+    /// The statuses that occur, strongest first.
+    fn statuses(&self) -> Vec<CellStatus> {
+        let mut shown: Vec<CellStatus> = Vec::new();
+        for c in &self.cells {
+            if !shown.contains(&c.2) {
+                shown.push(c.2);
+            }
+        }
+        shown.sort_by_key(|s| std::cmp::Reverse(*s as u8));
+        shown
+    }
+
+    /// Half the distance between neighbouring swept values (cell half-width).
+    fn half_step(&self) -> f64 {
+        let mut xs: Vec<f64> = self.cells.iter().map(|c| c.1).collect();
+        xs.sort_by(f64::total_cmp);
+        xs.dedup();
+        let step = xs.windows(2).map(|w| w[1] - w[0]).fold(f64::INFINITY, f64::min);
+        if step.is_finite() && step > 0.0 {
+            step / 2.0
+        } else {
+            0.5
+        }
+    }
+}
+
+const BOUND_COLOURS: [RGBColor; 4] =
+    [RGBColor(0, 0, 0), RGBColor(31, 80, 200), RGBColor(160, 30, 160), RGBColor(120, 70, 20)];
+
+impl Figure for SweepFigure {
+    fn size(&self) -> (u32, u32) {
+        (1100, 760)
+    }
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), String>
+    where
+        DB::ErrorType: 'static,
+    {
+        root.fill(&WHITE).map_err(err)?;
+        // the legend gets its own strip under the chart so it never hides cells
+        let statuses = self.statuses();
+        let legend_rows = statuses.len().max(self.bounds.len()) as u32;
+        let (w, h_px) = self.size();
+        let (plot_area, legend_area) = root.split_vertically(h_px - 30 - 26 * legend_rows);
+        let h = self.half_step();
+        let (x0, x1) = self.cells.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| (a.min(c.1), b.max(c.1)));
+        let (n0, n1) = self.cells.iter().fold((usize::MAX, 0), |(a, b), c| (a.min(c.0), b.max(c.0)));
+        let mut chart = ChartBuilder::on(&plot_area)
+            .caption(format!("{}: admissible {} per valence", self.scheme, self.param), (FONT, 26))
+            .margin(20)
+            .x_label_area_size(55)
+            .y_label_area_size(70)
+            .build_cartesian_2d(x0 - h..x1 + h, n0 as f64 - 0.5..n1 as f64 + 0.5)
+            .map_err(err)?;
+        chart
+            .configure_mesh()
+            .disable_mesh()
+            .x_desc(format!("parameter {}", self.param))
+            .y_desc("valence n")
+            .label_style((FONT, 17))
+            .axis_desc_style((FONT, 20))
+            .y_label_formatter(&|y| format!("{y:.0}"))
+            .draw()
+            .map_err(err)?;
+        // rows get thinner with many valences; keep a hairline gap between them
+        let gap = if n1 - n0 < 40 { 0.06 } else { 0.0 };
+        chart
+            .draw_series(self.cells.iter().map(|&(n, x, status)| {
+                let n = n as f64;
+                Rectangle::new([(x - h, n - 0.5 + gap), (x + h, n + 0.5 - gap)], status.colour().filled())
+            }))
+            .map_err(err)?;
+        for (k, bound) in self.bounds.iter().enumerate() {
+            // a vertical tick through each valence row, joined row to row
+            let mut path = Vec::new();
+            for &(n, v) in &bound.values {
+                path.push((v, n as f64 - 0.5));
+                path.push((v, n as f64 + 0.5));
+            }
+            let colour = BOUND_COLOURS[k % BOUND_COLOURS.len()];
+            chart.draw_series(std::iter::once(PathElement::new(path, colour.stroke_width(2)))).map_err(err)?;
+        }
+        // legend: statuses in the left column, reference bounds in the right
+        let text = TextStyle::from((FONT, 17).into_font()).color(&BLACK);
+        let row_y = |k: usize| 10 + 26 * k as i32;
+        for (k, status) in statuses.iter().enumerate() {
+            let y = row_y(k);
+            legend_area.draw(&Rectangle::new([(90, y), (110, y + 16)], status.colour().filled())).map_err(err)?;
+            legend_area.draw(&Text::new(status.label(self.charmap), (120, y), text.clone())).map_err(err)?;
+        }
+        let x_col = w as i32 / 2 + 40;
+        for (k, bound) in self.bounds.iter().enumerate() {
+            let y = row_y(k) + 8;
+            let colour = BOUND_COLOURS[k % BOUND_COLOURS.len()];
+            legend_area
+                .draw(&PathElement::new(vec![(x_col, y), (x_col + 24, y)], colour.stroke_width(3)))
+                .map_err(err)?;
+            legend_area
+                .draw(&Text::new(format!("bound {}", bound.label), (x_col + 32, y - 8), text.clone()))
+                .map_err(err)?;
+        }
+        Ok(())
+    }
+}
