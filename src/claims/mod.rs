@@ -24,8 +24,29 @@ pub struct ClaimFile {
     /// figures for the paper's report page (characteristic rings, spectra)
     #[serde(default, rename = "figure")]
     pub figures: Vec<FigureSpec>,
+    /// admissible-interval figures (`subdlab sweep --plot`) for the report page
+    #[serde(default, rename = "sweep")]
+    pub sweeps: Vec<SweepFigureSpec>,
     #[serde(default, rename = "claim")]
     pub claims: Vec<Claim>,
+}
+
+/// A sweep figure of the report: `scheme` over `valences` ("A..B") and one
+/// swept parameter `param` ("NAME=START:END:STEP"), with reference `bounds`
+/// (expressions in n) drawn across the rows and a `caption` saying what they are.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SweepFigureSpec {
+    pub scheme: String,
+    pub valences: String,
+    pub param: String,
+    #[serde(default)]
+    pub params: BTreeMap<String, String>,
+    #[serde(default)]
+    pub charmap: bool,
+    #[serde(default)]
+    pub bounds: Vec<String>,
+    pub caption: String,
 }
 
 /// A figure of the report: the characteristic rings of `scheme` at `valence`

@@ -266,32 +266,12 @@ pub(super) fn stencil_table(st: &crate::spectrum::stencils::Stencils) -> String 
 }
 
 fn sweep(args: &super::SweepArgs) -> Result<(), String> {
-    use crate::sweep::{admissible, parse_range, parse_valences, run, Grid};
-    let super::SweepArgs { scheme, json, csv, .. } = args;
-    let (scheme, json, csv) = (scheme.as_str(), *json, *csv);
+    use crate::sweep::{admissible, run, Grid};
+    let (scheme, json, csv) = (args.scheme.as_str(), args.json, args.csv);
     if json && csv {
         return Err("choose one of --json and --csv".into());
     }
-    let mut param = None;
-    let mut fixed = Vec::new();
-    for (k, v) in parse_params(&args.params)? {
-        if v.contains(':') {
-            if param.is_some() {
-                return Err("only one parameter can be swept (NAME=START:END:STEP)".into());
-            }
-            param = Some((k, parse_range(&v)?));
-        } else {
-            fixed.push((k, v));
-        }
-    }
-    let grid = Grid {
-        scheme: scheme.to_string(),
-        valences: parse_valences(&args.valences)?,
-        param,
-        fixed,
-        charmap: args.charmap,
-    };
-    if args.plot.is_some() && grid.param.is_none() {
+    if args.plot.is_some() && !args.params.iter().any(|p| p.contains(':')) {
         return Err(
             "--plot needs a swept parameter NAME=START:END:STEP (for valences alone use `plot spectrum`)".into()
         );
@@ -302,17 +282,13 @@ fn sweep(args: &super::SweepArgs) -> Result<(), String> {
     if let Some(path) = &args.plot {
         crate::plot::format_of(path)?;
     }
-    let bounds = args.bounds.iter().map(|text| sweep_bound(text, &grid)).collect::<Result<Vec<_>, String>>()?;
-    // fail fast on a bad scheme, parameter name or value, before the long run
-    let mut first = grid.fixed.clone();
-    if let Some((name, values)) = &grid.param {
-        first.push((name.clone(), values[0].clone()));
-        let mut last = grid.fixed.clone();
-        last.push((name.clone(), values[values.len() - 1].clone()));
-        schemes::resolve(scheme, &last)?;
-    }
-    schemes::resolve(scheme, &first)?;
-    let total = grid.valences.len() * grid.param.as_ref().map_or(1, |p| p.1.len());
+    let grid = Grid::parse(scheme, &args.valences, &parse_params(&args.params)?, args.charmap)?;
+    let bounds = args
+        .bounds
+        .iter()
+        .map(|text| Ok(crate::plot::sweep::Bound { label: text.clone(), values: grid.bound(text)? }))
+        .collect::<Result<Vec<_>, String>>()?;
+    let total = grid.len();
     // indicatif draws only when standard error is a terminal
     let bar = indicatif::ProgressBar::new(total as u64);
     bar.set_style(
@@ -385,30 +361,4 @@ fn sweep(args: &super::SweepArgs) -> Result<(), String> {
         }
     }
     Ok(())
-}
-
-/// A reference bound for the sweep figure: `EXPR` in the valence `n` (alias
-/// `k`) and the fixed parameters, evaluated at every valence of the grid.
-fn sweep_bound(text: &str, grid: &crate::sweep::Grid) -> Result<crate::plot::sweep::Bound, String> {
-    let expr = crate::numeric::expr::Expr::parse(text).map_err(|e| format!("--bound '{text}': {e}"))?;
-    let mut env = crate::numeric::expr::Env::new();
-    for (k, v) in &grid.fixed {
-        env.insert(k.clone(), crate::numeric::ParamValue::parse(v)?);
-    }
-    let values = grid
-        .valences
-        .iter()
-        .map(|&n| {
-            let mut env = env.clone();
-            for var in ["n", "k"] {
-                env.insert(var.into(), crate::numeric::ParamValue::from_ratio(n as i64, 1));
-            }
-            let z = expr.eval(&env).map_err(|e| format!("--bound '{text}' at n = {n}: {e}"))?;
-            if !z.re.is_finite() || z.im.abs() > 1e-12 * (1.0 + z.re.abs()) {
-                return Err(format!("--bound '{text}' is not a finite real number at n = {n}"));
-            }
-            Ok((n, z.re))
-        })
-        .collect::<Result<Vec<_>, String>>()?;
-    Ok(crate::plot::sweep::Bound { label: text.to_string(), values })
 }

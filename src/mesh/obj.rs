@@ -34,6 +34,11 @@ pub type ObjMesh = (PolyMesh, Vec<[f64; 3]>);
 /// Read an OBJ file from disk; errors name the file and, where it applies, the line.
 pub fn read_obj_file(path: &Path) -> Result<ObjMesh, String> {
     let file = std::fs::File::open(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    let too_large = || format!("{}: file is larger than the supported {} bytes", path.display(), MAX_FILE_BYTES);
+    // a regular file says its size up front: refuse it before reading anything
+    if file.metadata().is_ok_and(|m| m.is_file() && m.len() > MAX_FILE_BYTES) {
+        return Err(too_large());
+    }
     let mut bytes = Vec::new();
     // read at most one byte more than the cap, so an oversized file is detected
     // without ever holding more than the cap in memory
@@ -41,7 +46,7 @@ pub fn read_obj_file(path: &Path) -> Result<ObjMesh, String> {
         .read_to_end(&mut bytes)
         .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
     if bytes.len() as u64 > MAX_FILE_BYTES {
-        return Err(format!("{}: file is larger than the supported {} bytes", path.display(), MAX_FILE_BYTES));
+        return Err(too_large());
     }
     let text = String::from_utf8(bytes).map_err(|e| {
         // report the line of the first invalid byte

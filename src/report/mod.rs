@@ -62,6 +62,11 @@ fn paper_page(f: &ClaimFile, outcomes: &[Outcome]) -> Result<(String, Files), St
             files.extend(figs);
         }
     }
+    for spec in &f.sweeps {
+        let (md, figs) = sweep_figure(spec)?;
+        page += &md;
+        files.extend(figs);
+    }
     page += "## Claims\n\n| verdict | id | location | statement |\n|---|---|---|---|\n";
     for o in outcomes {
         writeln!(page, "| {} | `{}` | {} | {} |", o.verdict, o.id, cell(&o.location), cell(&o.statement)).ok();
@@ -134,6 +139,42 @@ fn figures(spec: &FigureSpec) -> Result<(String, Files), String> {
     let name = format!("figures/{tag}-spectrum.svg");
     files.insert(name.clone(), svg(&SpectrumFigure { scheme: title.clone(), rows, count: 3 })?);
     writeln!(md, "![leading eigenvalues of {title}]({name})\n\nLeading eigenvalue moduli of {title} against the valence (3..{}).\n", spec.up_to).ok();
+    Ok((md, files))
+}
+
+/// The admissible intervals of a swept parameter per valence, as `subdlab
+/// sweep --plot` draws them, with the spec's reference bounds.
+fn sweep_figure(spec: &crate::claims::SweepFigureSpec) -> Result<(String, Files), String> {
+    use crate::sweep::{admissible, run, Grid};
+    let (name, range) =
+        spec.param.split_once('=').ok_or_else(|| format!("sweep param '{}' is not NAME=START:END:STEP", spec.param))?;
+    let mut params: Vec<(String, String)> = spec.params.iter().map(|(k, v)| (k.clone(), v.clone())).collect();
+    params.push((name.to_string(), range.to_string()));
+    let grid = Grid::parse(&spec.scheme, &spec.valences, &params, spec.charmap)?;
+    let bounds = spec
+        .bounds
+        .iter()
+        .map(|b| Ok(plot::sweep::Bound { label: b.clone(), values: grid.bound(b)? }))
+        .collect::<Result<Vec<_>, String>>()?;
+    let points = run(&grid, &|_, _| {})?;
+    let file = format!("figures/{}-sweep-{name}.svg", spec.scheme);
+    let fig = plot::sweep::SweepFigure::new(&spec.scheme, name, &points, spec.charmap, bounds)?;
+    let mut files = Files::new();
+    files.insert(file.clone(), svg(&fig)?);
+    let mut md = format!(
+        "![admissible {name} of {} per valence]({file})\n\n{} (`subdlab sweep {} --valences {} --param {}{}`). Admissible intervals:",
+        spec.scheme,
+        spec.caption,
+        spec.scheme,
+        spec.valences,
+        spec.param,
+        if spec.charmap { " --charmap" } else { "" }
+    );
+    for i in admissible(&points) {
+        write!(md, " n = {}: [{}, {}];", i.valence, i.from, i.to).ok();
+    }
+    md.pop();
+    md += ".\n\n";
     Ok((md, files))
 }
 

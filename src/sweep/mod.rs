@@ -39,6 +39,71 @@ pub struct Point {
     pub error: Option<String>,
 }
 
+impl Grid {
+    /// A grid from the command-line form: a valence range `A..B` and
+    /// `NAME=VALUE` (fixed) or `NAME=START:END:STEP` (swept, at most one)
+    /// parameters. The scheme and the first and last swept values are checked
+    /// here, so a bad grid fails before the long run.
+    pub fn parse(scheme: &str, valences: &str, params: &[(String, String)], charmap: bool) -> Result<Grid, String> {
+        let mut param = None;
+        let mut fixed = Vec::new();
+        for (k, v) in params {
+            if v.contains(':') {
+                if param.is_some() {
+                    return Err("only one parameter can be swept (NAME=START:END:STEP)".into());
+                }
+                param = Some((k.clone(), parse_range(v)?));
+            } else {
+                fixed.push((k.clone(), v.clone()));
+            }
+        }
+        let grid = Grid { scheme: scheme.to_string(), valences: parse_valences(valences)?, param, fixed, charmap };
+        let mut first = grid.fixed.clone();
+        if let Some((name, values)) = &grid.param {
+            first.push((name.clone(), values[0].clone()));
+            let mut last = grid.fixed.clone();
+            last.push((name.clone(), values[values.len() - 1].clone()));
+            schemes::resolve(scheme, &last)?;
+        }
+        schemes::resolve(scheme, &first)?;
+        Ok(grid)
+    }
+
+    /// Number of grid points.
+    pub fn len(&self) -> usize {
+        self.valences.len() * self.param.as_ref().map_or(1, |p| p.1.len())
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// A reference bound `EXPR` in the valence `n` (alias `k`) and the fixed
+    /// parameters, evaluated at every valence of the grid (for figures: e.g. a
+    /// bound a paper states, drawn against the computed intervals).
+    pub fn bound(&self, text: &str) -> Result<Vec<(usize, f64)>, String> {
+        use crate::numeric::{expr::Expr, ParamValue};
+        let expr = Expr::parse(text).map_err(|e| format!("bound '{text}': {e}"))?;
+        let mut env = crate::numeric::expr::Env::new();
+        for (k, v) in &self.fixed {
+            env.insert(k.clone(), ParamValue::parse(v)?);
+        }
+        self.valences
+            .iter()
+            .map(|&n| {
+                for var in ["n", "k"] {
+                    env.insert(var.into(), ParamValue::from_ratio(n as i64, 1));
+                }
+                let z = expr.eval(&env).map_err(|e| format!("bound '{text}' at n = {n}: {e}"))?;
+                if !z.re.is_finite() || z.im.abs() > 1e-12 * (1.0 + z.re.abs()) {
+                    return Err(format!("bound '{text}' is not a finite real number at n = {n}"));
+                }
+                Ok((n, z.re))
+            })
+            .collect()
+    }
+}
+
 /// `"a:b:step"` → the values a, a + step, ..., up to b (exact decimal text).
 pub fn parse_range(s: &str) -> Result<Vec<String>, String> {
     let parts: Vec<&str> = s.split(':').collect();
