@@ -71,7 +71,7 @@ fn matrix_market_export_is_well_formed() {
     let mut lines = text.lines().filter(|l| !l.starts_with('%'));
     let header: Vec<usize> = lines.next().unwrap().split_whitespace().map(|x| x.parse().unwrap()).collect();
     assert_eq!(&header[..2], &[19, 19]);
-    let mut row_sum = vec![0.0; 19];
+    let mut row_sum = [0.0; 19];
     let mut count = 0;
     for l in lines {
         let p: Vec<&str> = l.split_whitespace().collect();
@@ -164,4 +164,26 @@ fn bad_options_are_rejected() {
 fn unwritable_output_is_an_error_not_a_panic() {
     let err = fails(&["matrix", "loop", "-n", "5", "-o", "/nonexistent-dir/x.mtx"]);
     assert!(err.contains("cannot"), "{err}");
+}
+
+#[test]
+fn schemes_describes_scheme_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("w.toml");
+    std::fs::write(
+        &file,
+        "name = \"loop-w\"\ndescription = \"Loop with a free edge weight\"\ntopology = \"primal-triangle\"\n\
+         [params.w]\ndefault = \"3/8\"\nmin = 0\nmax = 0.5\ndescription = \"edge end weight\"\n\
+         [vertex]\ncentre = \"5/8\"\nedge = \"3/(8 n)\"\n[edge]\nends = \"w\"\nopposite = \"1/2 - w\"\n",
+    )
+    .unwrap();
+    let out = subdlab(&["schemes", file.to_str().unwrap(), "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v[0]["name"], "loop-w");
+    assert_eq!(v[0]["file"], file.to_str().unwrap());
+    assert_eq!(v[0]["params"][0]["name"], "w");
+    assert_eq!(v[0]["params"][0]["default"], "3/8");
+    assert_eq!(v[0]["params"][0]["max"], 0.5);
+    fails(&["schemes", "no-such-file.toml"]);
 }

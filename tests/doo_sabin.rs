@@ -17,7 +17,7 @@ fn central_face_spectrum_for_valences_3_to_50() {
         let a = run("doo-sabin", n, NeighbourhoodKind::Minimal, None, false);
         assert_eq!(a.spectrum.matrix_size, n);
         let mut want = vec![1.0, 0.5, 0.5];
-        want.extend(std::iter::repeat(0.25).take(n - 3));
+        want.extend(std::iter::repeat_n(0.25, n - 3));
         assert_same_multiset(real_spectrum(&a), want, 1e-11, &format!("DS n={n}"));
         assert!(a.spectrum.verdict.c1_spectral);
     }

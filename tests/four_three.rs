@@ -104,7 +104,7 @@ fn assert_s_is_box_spline(faces: &str, dirs: &[(i64, i64)], rot: fn(i64, i64) ->
         for (col, &qq) in pos.iter().enumerate() {
             let want = q(*mask.get(&(p.0 - 2 * qq.0, p.1 - 2 * qq.1)).unwrap_or(&0), den);
             assert_eq!(s.get(k, col), want, "{faces}: S[{}][{}]", s.labels[k].name, s.labels[col].name);
-            sum = sum + want;
+            sum += want;
         }
         // the mask's coset sums are 1, so no weight can lie outside the neighbourhood
         assert_eq!(sum, q(1, 1), "{faces}: row {} is complete", s.labels[k].name);
@@ -248,7 +248,7 @@ fn lemma_3_5_eigenvalues_of_m() {
             let mut power = m.clone();
             for k in 1..=n + 1 {
                 let tr: f64 = (0..=n).map(|i| power[i][i]).sum();
-                let roots = [1.0, 0.5, 0.5, c - 0.5].into_iter().chain(std::iter::repeat(0.25).take(n - 3));
+                let roots = [1.0, 0.5, 0.5, c - 0.5].into_iter().chain(std::iter::repeat_n(0.25, n - 3));
                 let want: f64 = roots.map(|r: f64| r.powi(k as i32)).sum();
                 assert!((tr - want).abs() < 1e-12, "n={n} c={cw}: tr M^{k} = {tr} vs {want}");
                 if k == 1 && cw != "1/2" {
@@ -280,7 +280,7 @@ fn lemma_3_5_exactly_on_the_assembled_matrix() {
                 }
                 let c = ratio(cw);
                 let mut roots = vec![q(1, 1), q(1, 2), q(1, 2), c - q(1, 2)];
-                roots.extend(std::iter::repeat(q(1, 4)).take(n - 3));
+                roots.extend(std::iter::repeat_n(q(1, 4), n - 3));
                 let want = subdlab::numeric::exact::Poly::from_roots(&roots);
                 assert_eq!(m.charpoly(), want, "{faces} c={cw}");
             }
@@ -350,7 +350,7 @@ fn derived_spectrum(faces: &str, c: Rational) -> Vec<Rational> {
     let n = faces.len();
     let kinds: Vec<char> = faces.chars().collect();
     let mut out = vec![q(1, 1), q(1, 2), q(1, 2), c - q(1, 2)];
-    out.extend(std::iter::repeat(q(1, 4)).take(n - 3));
+    out.extend(std::iter::repeat_n(q(1, 4), n - 3));
     for s in 0..n {
         match kinds[s] {
             'Q' => out.extend([q(1, 4), q(1, 16), q(1, 16), q(0, 1)]),
@@ -470,7 +470,7 @@ fn remark_after_lemma_3_5_perturbed_m() {
                 let mut p = m.clone();
                 (1..=n + 1).all(|k| {
                     let tr: f64 = (0..=n).map(|i| p[i][i]).sum();
-                    let roots = [1.0, 0.5, 0.5, cw - 0.5].into_iter().chain(std::iter::repeat(quarter).take(n - 3));
+                    let roots = [1.0, 0.5, 0.5, cw - 0.5].into_iter().chain(std::iter::repeat_n(quarter, n - 3));
                     let want: f64 = roots.map(|r: f64| r.powi(k as i32)).sum();
                     p = mat_mul(&p, &m);
                     (tr - want).abs() < 1e-12
@@ -551,7 +551,7 @@ fn transition_node_matrix_s43() {
         .spectrum
         .eigenvalues
         .iter()
-        .flat_map(|e| std::iter::repeat(e.modulus).take(e.algebraic_multiplicity))
+        .flat_map(|e| std::iter::repeat_n(e.modulus, e.algebraic_multiplicity))
         .take(6)
         .collect();
     assert!((lead[5] - 0.25).abs() < 1e-12);

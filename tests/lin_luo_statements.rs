@@ -71,7 +71,7 @@ fn section_6_eigenvalue_statement() {
             let mut roots = Vec::new();
             for (k, f) in q.charpoly().squarefree_factors().iter().enumerate() {
                 for r in simple_roots(f) {
-                    roots.extend(std::iter::repeat(r).take(k + 1));
+                    roots.extend(std::iter::repeat_n(r, k + 1));
                 }
             }
             assert_eq!(roots.len(), m.size());
@@ -82,7 +82,7 @@ fn section_6_eigenvalue_statement() {
                 .spectrum
                 .eigenvalues
                 .iter()
-                .flat_map(|e| std::iter::repeat(c64::new(e.re, e.im)).take(e.algebraic_multiplicity))
+                .flat_map(|e| std::iter::repeat_n(c64::new(e.re, e.im), e.algebraic_multiplicity))
                 .collect();
             assert_eq!(statement_holds(float, n), exact_verdict, "n = {n}, alpha = {alpha}");
             if !exact_verdict {

@@ -314,7 +314,7 @@ fn invalid_utf8_and_missing_files_are_reported() {
 
 fn open_cube() -> (PolyMesh, Vec<[f64; 3]>) {
     let text = std::fs::read_to_string(mesh_path("cube.obj")).unwrap();
-    let last_face = text.lines().filter(|l| l.starts_with("f ")).next_back().unwrap().to_string();
+    let last_face = text.lines().rfind(|l| l.starts_with("f ")).unwrap().to_string();
     parse_obj(&text.replace(&last_face, "")).unwrap()
 }
 

@@ -276,7 +276,8 @@ fn isotropic(raw: &Ring) -> [[f64; 2]; 2] {
     let half = 0.5 * (a - c);
     let r = (half * half + b * b).sqrt();
     let (l1, l2) = (0.5 * (a + c) + r, 0.5 * (a + c) - r);
-    if !(l2 > 1e-300 * l1.max(1.0)) || !l1.is_finite() {
+    // (NaN compares false, so a NaN l2 is degenerate too)
+    if l2.partial_cmp(&(1e-300 * l1.max(1.0))) != Some(std::cmp::Ordering::Greater) || !l1.is_finite() {
         return [[1.0, 0.0], [0.0, 1.0]]; // degenerate: leave it to the verdicts
     }
     let t = 0.5 * (2.0 * b).atan2(a - c);

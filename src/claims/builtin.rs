@@ -22,9 +22,9 @@ pub fn run(name: &str, data: Option<&toml::Value>) -> Result4 {
 
 fn has_eigenvalue(m: &[[Rational; 2]; 2], lambda: &Rational) -> bool {
     let mut a = QMatrix::zeros(2);
-    for i in 0..2 {
-        for j in 0..2 {
-            a.set(i, j, m[i][j].clone());
+    for (i, row) in m.iter().enumerate() {
+        for (j, x) in row.iter().enumerate() {
+            a.set(i, j, x.clone());
         }
     }
     a.charpoly().eval(lambda) == q(0, 1)
@@ -124,7 +124,7 @@ fn linluo_section6() -> Result4 {
             let l: Vec<faer::c64> = sp
                 .eigenvalues
                 .iter()
-                .flat_map(|e| std::iter::repeat(faer::c64::new(e.re, e.im)).take(e.algebraic_multiplicity))
+                .flat_map(|e| std::iter::repeat_n(faer::c64::new(e.re, e.im), e.algebraic_multiplicity))
                 .collect();
             let eq = |a: faer::c64, b: faer::c64| (a - b).norm() < 1e-7;
             let ok = eq(l[0], faer::c64::new(1.0, 0.0))

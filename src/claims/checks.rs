@@ -157,7 +157,7 @@ fn unmatched(stated: &[Complex64], computed: &[Complex64]) -> (Vec<Complex64>, V
 fn expanded(spec: &Spectrum) -> Vec<Complex64> {
     spec.eigenvalues
         .iter()
-        .flat_map(|e| std::iter::repeat(Complex64::new(e.re, e.im)).take(e.algebraic_multiplicity))
+        .flat_map(|e| std::iter::repeat_n(Complex64::new(e.re, e.im), e.algebraic_multiplicity))
         .collect()
 }
 
@@ -168,7 +168,7 @@ fn block_values(spec: &Spectrum, m: usize) -> Result<Vec<Complex64>, String> {
     };
     let b = blocks.get(m).ok_or_else(|| format!("there is no Fourier block {m}"))?;
     let mut v: Vec<Complex64> =
-        eigen::block_eigen(b)?.into_iter().flat_map(|e| std::iter::repeat(e.value).take(e.algebraic)).collect();
+        eigen::block_eigen(b)?.into_iter().flat_map(|e| std::iter::repeat_n(e.value, e.algebraic)).collect();
     v.sort_by(|a, b| eigenvalue_order(*a, *b));
     Ok(v)
 }
@@ -486,7 +486,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
                 }
                 let mut computed: Vec<Complex64> = eigen::block_eigen(&m)?
                     .into_iter()
-                    .flat_map(|e| std::iter::repeat(e.value).take(e.algebraic))
+                    .flat_map(|e| std::iter::repeat_n(e.value, e.algebraic))
                     .collect();
                 computed.sort_by(|a, b| eigenvalue_order(*a, *b));
                 let mut stated = stated_values(values, &env)?;
@@ -575,7 +575,7 @@ fn stated_values(values: &[String], env: &Env) -> Result<Vec<Complex64>, String>
             None => (v.as_str(), 1),
         };
         let z = eval(e, env)?;
-        out.extend(std::iter::repeat(z).take(count));
+        out.extend(std::iter::repeat_n(z, count));
     }
     Ok(out)
 }

@@ -22,7 +22,7 @@ pub fn dispatch(cmd: Command) -> Result<(), String> {
             println!("wrote {} files to {}", files.len(), out.display());
             Ok(())
         }
-        Command::Schemes { json } => list_schemes(json),
+        Command::Schemes { files, json } => list_schemes(&files, json),
         Command::Refine { mesh, scheme, levels, params, output, fcv_scale, four_directional, vertex_params } => {
             let opts = super::mesh_commands::MeshOptions { fcv_scale, four_directional, vertex_params };
             super::mesh_commands::refine(&mesh, &scheme, levels, &params, &output, &opts)
@@ -124,33 +124,85 @@ fn run_analysis(a: &AnalysisArgs) -> Result<(Box<dyn Scheme>, Analysis), String>
     Ok((scheme, analysis))
 }
 
-fn list_schemes(json: bool) -> Result<(), String> {
+fn list_schemes(files: &[std::path::PathBuf], json: bool) -> Result<(), String> {
+    #[derive(serde::Serialize)]
+    struct Param {
+        name: String,
+        /// empty when the scheme's own rule applies
+        default: String,
+        min: f64,
+        max: f64,
+        description: String,
+    }
     #[derive(serde::Serialize)]
     struct Entry {
-        name: &'static str,
-        description: &'static str,
-        params: Vec<crate::schemes::ParamSpec>,
+        name: String,
+        description: String,
+        /// the file a user scheme was read from
+        file: Option<String>,
+        params: Vec<Param>,
     }
-    let list: Vec<Entry> = schemes::registry()
-        .into_iter()
-        .map(|e| Entry { name: e.name, description: e.description, params: (e.params)() })
-        // regular-lattice schemes (no parameters) after the mesh-based ones
-        .chain(super::lattice::scheme_list().into_iter().map(|(name, description)| Entry {
-            name,
-            description,
-            params: Vec::new(),
-        }))
-        .collect();
+    let builtin = |p: crate::schemes::ParamSpec| Param {
+        name: p.name.into(),
+        default: p.default.into(),
+        min: p.min,
+        max: p.max,
+        description: p.description.into(),
+    };
+    let list: Vec<Entry> = if files.is_empty() {
+        schemes::registry()
+            .into_iter()
+            .map(|e| Entry {
+                name: e.name.into(),
+                description: e.description.into(),
+                file: None,
+                params: (e.params)().into_iter().map(builtin).collect(),
+            })
+            // regular-lattice schemes (no parameters) after the mesh-based ones
+            .chain(super::lattice::scheme_list().into_iter().map(|(name, description)| Entry {
+                name: name.into(),
+                description: description.into(),
+                file: None,
+                params: Vec::new(),
+            }))
+            .collect()
+    } else {
+        files
+            .iter()
+            .map(|f| {
+                let def = crate::schemes::user::load_def(f)?;
+                Ok(Entry {
+                    name: def.name.clone(),
+                    description: def.description.clone(),
+                    file: Some(f.display().to_string()),
+                    params: def
+                        .params
+                        .iter()
+                        .map(|p| Param {
+                            name: p.name.clone(),
+                            default: p.default.text.clone(),
+                            min: p.min,
+                            max: p.max,
+                            description: p.description.clone(),
+                        })
+                        .collect(),
+                })
+            })
+            .collect::<Result<_, String>>()?
+    };
     if json {
         return print_json(&list);
     }
     for e in &list {
         println!("{:<16} {}", e.name, e.description);
+        if let Some(f) = &e.file {
+            println!("{:<16} file {f}", "");
+        }
         if e.params.is_empty() {
             println!("{:<16} (no parameters)", "");
         }
         for p in &e.params {
-            let default = if p.default.is_empty() { "(scheme rule)" } else { p.default };
+            let default = if p.default.is_empty() { "(scheme rule)" } else { p.default.as_str() };
             println!(
                 "{:<16} --param {}=VALUE  default {}  range [{}, {}]  {}",
                 "", p.name, default, p.min, p.max, p.description

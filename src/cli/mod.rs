@@ -44,8 +44,10 @@ pub enum Command {
         #[arg(long)]
         junit: Option<std::path::PathBuf>,
     },
-    /// List the built-in schemes with their parameters, defaults and ranges
+    /// List the built-in schemes (or the given scheme files) with their parameters, defaults and ranges
     Schemes {
+        /// scheme files (TOML) to describe instead of the built-in schemes
+        files: Vec<std::path::PathBuf>,
         #[arg(long)]
         json: bool,
     },

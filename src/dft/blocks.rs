@@ -71,7 +71,7 @@ pub struct FourierBlock {
 pub fn omega_pow(m: usize, t: usize, g: usize) -> c64 {
     let k = (m * t) % g;
     // exact values at quarter turns keep real blocks exactly real
-    if (4 * k) % g == 0 {
+    if (4 * k).is_multiple_of(g) {
         return [c64::new(1.0, 0.0), c64::new(0.0, 1.0), c64::new(-1.0, 0.0), c64::new(0.0, -1.0)][4 * k / g];
     }
     let theta = 2.0 * std::f64::consts::PI * k as f64 / g as f64;

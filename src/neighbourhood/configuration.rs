@@ -76,7 +76,9 @@ impl Configuration {
     /// itself; the rotation group then has order n / p.
     pub fn symmetry_period(&self) -> usize {
         let n = self.sectors.len();
-        (1..=n).find(|&p| n % p == 0 && (0..n).all(|s| self.sectors[s] == self.sectors[(s + p) % n])).unwrap_or(n)
+        (1..=n)
+            .find(|&p| n.is_multiple_of(p) && (0..n).all(|s| self.sectors[s] == self.sectors[(s + p) % n]))
+            .unwrap_or(n)
     }
 
     pub fn face_sequence(&self) -> String {

@@ -153,7 +153,7 @@ pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
         let lambda = s
             .eigenvalues
             .iter()
-            .flat_map(|e| std::iter::repeat(e.modulus).take(e.algebraic_multiplicity))
+            .flat_map(|e| std::iter::repeat_n(e.modulus, e.algebraic_multiplicity))
             .take(4)
             .collect();
         let charmap = if grid.charmap && s.verdict.c1_spectral {

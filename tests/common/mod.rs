@@ -21,7 +21,7 @@ pub fn expanded(a: &Analysis) -> Vec<(f64, f64)> {
         .spectrum
         .eigenvalues
         .iter()
-        .flat_map(|e| std::iter::repeat((e.re, e.im)).take(e.algebraic_multiplicity))
+        .flat_map(|e| std::iter::repeat_n((e.re, e.im), e.algebraic_multiplicity))
         .collect();
     v.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
     v
