@@ -98,3 +98,53 @@ fn bad_plots_are_one_line_errors() {
     fails(&["sweep", "non-box", "--valences", "3..5", "--param", "a=0:1:1/2", "--plot", "/no/such/dir/s.svg"]);
     assert!(!std::path::Path::new(svg).exists(), "failed runs write no figure");
 }
+
+/// A Loop variant whose extraordinary vertices move by nβ = w (regular
+/// vertices keep Loop's 1/16): its local spectrum is known in closed form,
+/// so both kinds of interval can be predicted. On the minimal neighbourhood
+/// (centre and ring) block 0 has {1, 5/8 − w} and block m ≥ 1 has
+/// 3/8 + cos(2πm/n)/4 (the ring's circulant edge rule); the outer rings of
+/// the analysis neighbourhood add regular-rule eigenvalues 1/8 and below.
+/// Hence: convergent iff |5/8 − w| < 1, i.e. w < 13/8; spectral C¹ iff
+/// |5/8 − w| < λ1 = 3/8 + cos(2π/n)/4, i.e. 1/4 − c/4 < w < 1 + c/4 with
+/// c = cos(2π/n). At n = 6 the kronecker term makes every w regular Loop.
+#[test]
+fn convergent_and_admissible_intervals_match_the_closed_form() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("loop-w.toml");
+    std::fs::write(
+        &file,
+        "name = \"loop-w\"\ntopology = \"primal-triangle\"\n\
+         [params.w]\ndefault = \"3/8\"\nmin = 0\nmax = 2\n\
+         [vertex]\ncentre = \"1 - w + kronecker(n - 6) (w - 3/8)\"\nedge = \"(w - kronecker(n - 6) (w - 3/8)) / n\"\n\
+         [edge]\nends = \"3/8\"\nopposite = \"1/8\"\n",
+    )
+    .unwrap();
+    let v = json(&["sweep", file.to_str().unwrap(), "--valences", "3..6", "--param", "w=0:2:1/8", "--json"]);
+    let q = |s: &str| subdlab::numeric::ParamValue::parse(s).unwrap().value;
+    let step = 0.125;
+    for n in 3..=6usize {
+        let of = |key: &str| -> Vec<(f64, f64)> {
+            v[key]
+                .as_array()
+                .unwrap()
+                .iter()
+                .filter(|i| i["valence"].as_u64() == Some(n as u64))
+                .map(|i| (q(i["from"].as_str().unwrap()), q(i["to"].as_str().unwrap())))
+                .collect()
+        };
+        let (conv, adm) = (of("convergent"), of("admissible"));
+        let c = (2.0 * std::f64::consts::PI / n as f64).cos();
+        // the exact open intervals, clipped to the parameter range [0, 2]
+        let (conv_lo, conv_hi, adm_lo, adm_hi) =
+            if n == 6 { (-1.0, 3.0, -1.0, 3.0) } else { (-3.0 / 8.0, 13.0 / 8.0, 0.25 - c / 4.0, 1.0 + c / 4.0) };
+        // the grid points strictly inside
+        let inside = |lo: f64, hi: f64| {
+            let pts: Vec<f64> =
+                (0..=16).map(|k| k as f64 * step).filter(|&w| w > lo + 1e-12 && w < hi - 1e-12).collect();
+            (pts[0], *pts.last().unwrap())
+        };
+        assert_eq!(conv, vec![inside(conv_lo, conv_hi)], "convergent, n = {n}");
+        assert_eq!(adm, vec![inside(adm_lo, adm_hi)], "admissible, n = {n}");
+    }
+}

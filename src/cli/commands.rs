@@ -318,7 +318,7 @@ pub(super) fn stencil_table(st: &crate::spectrum::stencils::Stencils) -> String 
 }
 
 fn sweep(args: &super::SweepArgs) -> Result<(), String> {
-    use crate::sweep::{admissible, run, Grid};
+    use crate::sweep::{admissible, convergent, run, Grid};
     let (scheme, json, csv) = (args.scheme.as_str(), args.json, args.csv);
     if json && csv {
         return Err("choose one of --json and --csv".into());
@@ -352,6 +352,7 @@ fn sweep(args: &super::SweepArgs) -> Result<(), String> {
     let points = run(&grid, &progress)?;
     bar.finish_and_clear();
     let intervals = admissible(&points);
+    let converging = convergent(&points);
     if let (Some(path), Some((name, _))) = (&args.plot, &grid.param) {
         let fig = crate::plot::sweep::SweepFigure::new(scheme, name, &points, grid.charmap, bounds)?;
         crate::plot::save(&fig, path)?;
@@ -363,17 +364,24 @@ fn sweep(args: &super::SweepArgs) -> Result<(), String> {
             parameter: Option<&'a str>,
             points: &'a [crate::sweep::Point],
             admissible: &'a [crate::sweep::Interval],
+            convergent: &'a [crate::sweep::Interval],
         }
         let parameter = grid.param.as_ref().map(|p| p.0.as_str());
-        return print_json(&Out { scheme, parameter, points: &points, admissible: &intervals });
+        return print_json(&Out {
+            scheme,
+            parameter,
+            points: &points,
+            admissible: &intervals,
+            convergent: &converging,
+        });
     }
     let name = grid.param.as_ref().map(|p| p.0.clone()).unwrap_or_default();
     if csv {
-        println!("valence,{name},lambda0,lambda1,lambda2,lambda3,c1_spectral,charmap,error");
+        println!("valence,{name},lambda0,lambda1,lambda2,lambda3,convergent,c1_spectral,charmap,error");
     } else {
         println!(
-            "{:>7} {:>10} {:>14} {:>14} {:>14} {:>14} {:>5} {:>8}",
-            "valence", name, "|λ0|", "|λ1|", "|λ2|", "|λ3|", "C1", "charmap"
+            "{:>7} {:>10} {:>14} {:>14} {:>14} {:>14} {:>5} {:>5} {:>8}",
+            "valence", name, "|λ0|", "|λ1|", "|λ2|", "|λ3|", "conv", "C1", "charmap"
         );
     }
     for p in &points {
@@ -382,24 +390,26 @@ fn sweep(args: &super::SweepArgs) -> Result<(), String> {
         if csv {
             let err = p.error.clone().unwrap_or_default().replace(',', ";");
             println!(
-                "{},{},{},{},{},{},{},{cm},{err}",
+                "{},{},{},{},{},{},{},{},{cm},{err}",
                 p.valence,
                 p.param.clone().unwrap_or_default(),
                 l(0),
                 l(1),
                 l(2),
                 l(3),
+                p.convergent,
                 p.c1_spectral
             );
         } else {
             println!(
-                "{:>7} {:>10} {:>14} {:>14} {:>14} {:>14} {:>5} {:>8}{}",
+                "{:>7} {:>10} {:>14} {:>14} {:>14} {:>14} {:>5} {:>5} {:>8}{}",
                 p.valence,
                 p.param.clone().unwrap_or_default(),
                 l(0),
                 l(1),
                 l(2),
                 l(3),
+                p.convergent,
                 p.c1_spectral,
                 cm,
                 p.error.as_ref().map(|e| format!("  ({e})")).unwrap_or_default()
@@ -407,9 +417,13 @@ fn sweep(args: &super::SweepArgs) -> Result<(), String> {
         }
     }
     if !csv && grid.param.is_some() {
-        println!("\nadmissible intervals of {name} (passing every computed test):");
-        for i in &intervals {
-            println!("  valence {:>4}: [{}, {}]", i.valence, i.from, i.to);
+        for (what, list) in
+            [("convergent (λ0 = 1 simple and dominant)", &converging), ("admissible (every computed test)", &intervals)]
+        {
+            println!("\nintervals of {name} where the scheme is {what}:");
+            for i in list {
+                println!("  valence {:>4}: [{}, {}]", i.valence, i.from, i.to);
+            }
         }
     }
     Ok(())

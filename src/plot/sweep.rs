@@ -15,7 +15,9 @@ use crate::sweep::Point;
 pub enum CellStatus {
     /// the analysis failed (e.g. the rules are undefined for this value)
     Error,
-    /// fails Reif's spectral C¹ test
+    /// λ0 = 1 is not simple and strictly dominant
+    NotConvergent,
+    /// converges, fails Reif's spectral C¹ test
     NotSpectral,
     /// passes the spectral test, the characteristic map is not regular and injective
     SpectralOnly,
@@ -27,6 +29,7 @@ impl CellStatus {
     pub fn of(p: &Point) -> Self {
         match (p.error.is_some(), p.c1_spectral, p.charmap) {
             (true, _, _) => CellStatus::Error,
+            (false, false, _) if !p.convergent => CellStatus::NotConvergent,
             (false, false, _) => CellStatus::NotSpectral,
             (false, true, Some(false)) => CellStatus::SpectralOnly,
             (false, true, _) => CellStatus::Admissible,
@@ -35,6 +38,7 @@ impl CellStatus {
     fn colour(self) -> RGBColor {
         match self {
             CellStatus::Error => RGBColor(190, 190, 190),
+            CellStatus::NotConvergent => RGBColor(214, 96, 77),
             CellStatus::NotSpectral => RGBColor(244, 190, 186),
             CellStatus::SpectralOnly => RGBColor(253, 208, 120),
             CellStatus::Admissible => RGBColor(102, 178, 102),
@@ -43,7 +47,8 @@ impl CellStatus {
     fn label(self, charmap: bool) -> &'static str {
         match self {
             CellStatus::Error => "not analysable",
-            CellStatus::NotSpectral => "fails the spectral C¹ test",
+            CellStatus::NotConvergent => "does not converge (λ0 = 1 not simple and dominant)",
+            CellStatus::NotSpectral => "converges, fails the spectral C¹ test",
             CellStatus::SpectralOnly => "spectral C¹, characteristic map fails",
             CellStatus::Admissible if charmap => "spectral C¹ and injective characteristic map",
             CellStatus::Admissible => "spectral C¹",

@@ -145,7 +145,7 @@ fn figures(spec: &FigureSpec) -> Result<(String, Files), String> {
 /// The admissible intervals of a swept parameter per valence, as `subdlab
 /// sweep --plot` draws them, with the spec's reference bounds.
 fn sweep_figure(spec: &crate::claims::SweepFigureSpec) -> Result<(String, Files), String> {
-    use crate::sweep::{admissible, run, Grid};
+    use crate::sweep::{admissible, convergent, run, Grid};
     let (name, range) =
         spec.param.split_once('=').ok_or_else(|| format!("sweep param '{}' is not NAME=START:END:STEP", spec.param))?;
     let mut params: Vec<(String, String)> = spec.params.iter().map(|(k, v)| (k.clone(), v.clone())).collect();
@@ -171,6 +171,11 @@ fn sweep_figure(spec: &crate::claims::SweepFigureSpec) -> Result<(String, Files)
         if spec.charmap { " --charmap" } else { "" }
     );
     for i in admissible(&points) {
+        write!(md, " n = {}: [{}, {}];", i.valence, i.from, i.to).ok();
+    }
+    md.pop();
+    md += ". Convergent (λ0 = 1 simple and dominant):";
+    for i in convergent(&points) {
         write!(md, " n = {}: [{}, {}];", i.valence, i.from, i.to).ok();
     }
     md.pop();

@@ -11,6 +11,9 @@ const TOL: f64 = 1e-9;
 #[derive(Clone, Debug, Serialize)]
 pub struct Verdict {
     pub c1_spectral: bool,
+    /// λ0 = 1 simple and strictly dominant: the spectral condition for the
+    /// scheme to converge at the extraordinary point
+    pub convergent: bool,
     pub reasons: Vec<String>,
     /// the subdominant eigenvalue λ1 (when λ0 = 1 is found)
     pub subdominant: Option<f64>,
@@ -27,6 +30,7 @@ pub fn reif(eigs: &[Eigenvalue]) -> Verdict {
     let mut ok = true;
     let mut v = Verdict {
         c1_spectral: false,
+        convergent: false,
         reasons: Vec::new(),
         subdominant: None,
         subdominant_blocks: Vec::new(),
@@ -46,6 +50,8 @@ pub fn reif(eigs: &[Eigenvalue]) -> Verdict {
     } else {
         reasons.push("λ0 = 1 is simple".into());
     }
+    let dominant_one = ok;
+    v.convergent = dominant_one && eigs.get(1).is_none_or(|l1| l1.modulus < 1.0 - TOL);
     let Some(l1) = eigs.get(1) else {
         reasons.push("no subdominant eigenvalue".into());
         v.reasons = reasons;

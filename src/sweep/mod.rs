@@ -32,6 +32,8 @@ pub struct Point {
     pub param: Option<String>,
     /// moduli of λ0..λ3 (with multiplicity), as far as they exist
     pub lambda: Vec<f64>,
+    /// λ0 = 1 simple and strictly dominant
+    pub convergent: bool,
     pub c1_spectral: bool,
     /// regular and injective characteristic map (when asked for)
     pub charmap: Option<bool>,
@@ -169,6 +171,7 @@ pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
             valence: n,
             param: value.map(str::to_string),
             lambda,
+            convergent: s.verdict.convergent,
             c1_spectral: s.verdict.c1_spectral,
             charmap,
             error: None,
@@ -178,6 +181,7 @@ pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
         valence: n,
         param: value.map(str::to_string),
         lambda: Vec::new(),
+        convergent: false,
         c1_spectral: false,
         charmap: None,
         error: Some(e),
@@ -223,8 +227,7 @@ pub fn run(grid: &Grid, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Vec<
     out.into_iter().map(|p| p.ok_or_else(|| "a sweep worker stopped".to_string())).collect()
 }
 
-/// Maximal runs of consecutive swept values, per valence, where the point
-/// passes (spectral C^1, and the characteristic map when computed).
+/// Maximal runs of consecutive swept values, per valence, where a test passes.
 #[derive(Clone, Debug, Serialize)]
 pub struct Interval {
     pub valence: usize,
@@ -232,13 +235,29 @@ pub struct Interval {
     pub to: String,
 }
 
+impl Point {
+    /// Passes every computed test: spectral C^1, and the characteristic map when computed.
+    pub fn admissible(&self) -> bool {
+        self.error.is_none() && self.c1_spectral && self.charmap.unwrap_or(true)
+    }
+}
+
+/// The intervals where every computed test passes.
 pub fn admissible(points: &[Point]) -> Vec<Interval> {
+    intervals(points, Point::admissible)
+}
+
+/// The intervals where the scheme converges (λ0 = 1 simple and dominant).
+pub fn convergent(points: &[Point]) -> Vec<Interval> {
+    intervals(points, |p| p.error.is_none() && p.convergent)
+}
+
+fn intervals(points: &[Point], pass: impl Fn(&Point) -> bool) -> Vec<Interval> {
     let mut out = Vec::new();
     let mut current: Option<Interval> = None;
     for p in points {
-        let ok = p.c1_spectral && p.charmap.unwrap_or(true) && p.error.is_none();
         let v = p.param.clone().unwrap_or_default();
-        match (&mut current, ok) {
+        match (&mut current, pass(p)) {
             (Some(c), true) if c.valence == p.valence => c.to = v,
             (_, true) => {
                 out.extend(current.take());
