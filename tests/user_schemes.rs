@@ -14,10 +14,12 @@ use subdlab::schemes::{self, Scheme};
 use subdlab::spectrum::stencils::{limit_stencil, tangent_stencils};
 use subdlab::spectrum::{analyse, Options};
 
-const EXAMPLES: [(&str, &str); 3] = [
+const EXAMPLES: [(&str, &str); 4] = [
     ("schemes/loop.toml", "loop"),
     ("schemes/catmull-clark.toml", "catmull-clark"),
     ("schemes/non-box.toml", "non-box"),
+    // the edge rule at extraordinary vertices written out with j (kronecker)
+    ("schemes/catmull-clark-edge-rule.toml", "catmull-clark"),
 ];
 
 fn path(rel: &str) -> String {
@@ -289,13 +291,19 @@ impl Rng {
     }
 }
 
-const PIECES: [&str; 32] = [
+/// The first `EXPR_PIECES` pieces are expression material.
+const EXPR_PIECES: usize = 25;
+const PIECES: [&str; 37] = [
     "n",
     "j",
     "pi",
     "cos(",
     "sqrt(",
     "kronecker(",
+    "sum(",
+    ",",
+    "m",
+    "sum(m, 0, n - 1, ",
     ")",
     "(",
     "^",
@@ -322,6 +330,7 @@ const PIECES: [&str; 32] = [
     "9999999999999999999999",
     "i",
     "[vertex]\n",
+    "[edge-extraordinary]\n",
 ];
 
 fn mutate(rng: &mut Rng, text: &str) -> String {
@@ -349,7 +358,11 @@ fn mutate(rng: &mut Rng, text: &str) -> String {
 
 /// A random expression from the language's pieces, often ill-formed.
 fn random_expr(rng: &mut Rng) -> String {
-    (0..rng.below(30)).map(|_| PIECES[rng.below(21)]).collect::<Vec<_>>().join(if rng.below(2) == 0 { "" } else { " " })
+    (0..rng.below(30)).map(|_| PIECES[rng.below(EXPR_PIECES)]).collect::<Vec<_>>().join(if rng.below(2) == 0 {
+        ""
+    } else {
+        " "
+    })
 }
 
 #[test]
@@ -406,6 +419,10 @@ fn example_files_refine_meshes_as_the_built_in_schemes_do() {
         ("schemes/loop.toml", "loop", "octahedron"),
         ("schemes/catmull-clark.toml", "catmull-clark", "cube"),
         ("schemes/non-box.toml", "non-box", "cube"),
+        // valence 3 everywhere: both ends extraordinary, the mean of two stencils
+        ("schemes/catmull-clark-edge-rule.toml", "catmull-clark", "cube"),
+        // valences 3 to 6: edges with one, two and no extraordinary ends
+        ("schemes/catmull-clark-edge-rule.toml", "catmull-clark", "mixed-quads"),
     ] {
         let (m, p) = read_obj_file(std::path::Path::new(&path(&format!("meshes/{mesh}.obj")))).unwrap();
         let (m, p) = if name == "non-box" { add_face_control_vertices(&m, &p, 1.0).unwrap() } else { (m, p) };

@@ -84,3 +84,53 @@ fn a_claim_that_cannot_be_evaluated_is_inconclusive_with_the_reason() {
     assert_eq!(v[0]["claims"][0]["verdict"], "INCONCLUSIVE");
     assert!(v[0]["claims"][0]["detail"].as_str().unwrap().contains("unknown scheme"));
 }
+
+#[test]
+fn claim_values_may_use_bounded_sums() {
+    // Σ_{m=0}^{5} cos(2π m/6) = 0 (the sixth roots of unity sum to 0), exactly;
+    // Σ_{m=1}^{4} m² = 30, so 31 is refuted; a sum over the valence's Fourier
+    // modes in an eigenvalue claim: Catmull–Clark's λ1 at n = 4 is 1/2 =
+    // (1/n) Σ_m (1/2) (the mean of n equal terms)
+    let text = r#"
+paper = "sums"
+title = "sums in claim values"
+
+[[claim]]
+id = "roots-of-unity"
+location = "-"
+statement = "the sixth roots of unity sum to 0"
+check = "identity"
+lhs = "sum(m, 0, 5, cos(2 pi m / 6))"
+rhs = "0"
+
+[[claim]]
+id = "squares"
+location = "-"
+statement = "1 + 4 + 9 + 16 = 31"
+check = "identity"
+lhs = "sum(m, 1, 4, m^2)"
+rhs = "31"
+
+[[claim]]
+id = "cc.lambda1"
+location = "-"
+statement = "λ1 = 1/2 at n = 4"
+check = "subdominant"
+scheme = "catmull-clark"
+valences = "4..4"
+value = "sum(t, 1, n, 1/2) / n"
+"#;
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("sums.toml");
+    std::fs::write(&p, text).unwrap();
+    let out = subdlab(&["verify", "--claims", p.to_str().unwrap(), "--json"]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let verdicts: Vec<(&str, &str)> = v[0]["claims"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| (c["id"].as_str().unwrap(), c["verdict"].as_str().unwrap()))
+        .collect();
+    assert_eq!(verdicts, [("roots-of-unity", "HOLDS"), ("squares", "REFUTED"), ("cc.lambda1", "HOLDS")], "{v}");
+    assert!(v[0]["claims"][0]["detail"].as_str().unwrap().contains("exact"), "{v}");
+}

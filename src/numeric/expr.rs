@@ -9,7 +9,11 @@
 //! right-associative. Atoms: numbers (`3`, `0.375`, `1e-3`), variables, `pi`,
 //! `i` (the imaginary unit), calls `cos(x)`, `sin(x)`, `sqrt(x)`, `cbrt(x)`,
 //! `abs(x)`, `kronecker(x)` (1 when x = 0, else 0: piecewise definitions such
-//! as a_3 = 3/4), and parentheses. Errors name the column.
+//! as a_3 = 3/4), the bounded sum `sum(m, FROM, TO, EXPR)` (EXPR summed over
+//! the integers m = FROM..TO, m a fresh name bound inside EXPR only; at most
+//! `MAX_SUM_TERMS` terms per evaluation, nested sums counted in full; e.g.
+//! weights given by their Fourier coefficients) and parentheses. Errors name
+//! the column.
 
 use std::collections::BTreeMap;
 
@@ -27,7 +31,16 @@ pub enum Expr {
     Neg(Box<Expr>),
     Bin(char, Box<Expr>, Box<Expr>),
     Call(String, Box<Expr>),
+    /// `sum(var, from, to, body)`: body summed over the integers var = from..=to
+    Sum(String, Box<Expr>, Box<Expr>, Box<Expr>),
 }
+
+/// The most terms one evaluation of an expression may add up, counting every
+/// term of nested sums: evaluation time stays bounded whatever the input.
+pub const MAX_SUM_TERMS: u64 = 10_000;
+/// Names the language itself gives a meaning (not usable as a sum variable).
+const BUILTIN_NAMES: [&str; 9] = ["pi", "i", "cos", "sin", "sqrt", "cbrt", "abs", "kronecker", "sum"];
+const SUM_FORM: &str = "sum(variable, from, to, expression)";
 
 #[derive(Clone, Debug, PartialEq)]
 enum Tok {
@@ -70,7 +83,7 @@ fn tokenize(s: &str) -> Result<Vec<(usize, Tok)>, String> {
                 k += 1;
             }
             out.push((start, Tok::Ident(chars[start..k].iter().collect())));
-        } else if "+-*/^()".contains(c) {
+        } else if "+-*/^(),".contains(c) {
             out.push((k, Tok::Op(c)));
             k += 1;
         } else {
@@ -84,6 +97,8 @@ struct Parser {
     toks: Vec<(usize, Tok)>,
     pos: usize,
     len: usize,
+    /// variables bound by the enclosing sums
+    bound: Vec<String>,
 }
 
 impl Parser {
@@ -157,6 +172,9 @@ impl Parser {
             }
             Some(Tok::Ident(name)) => {
                 self.pos += 1;
+                if name == "sum" {
+                    return self.sum_call(depth);
+                }
                 const FUNCTIONS: [&str; 6] = ["cos", "sin", "sqrt", "cbrt", "abs", "kronecker"];
                 if FUNCTIONS.contains(&name.as_str()) {
                     if !self.eat('(') {
@@ -187,6 +205,83 @@ impl Parser {
             None => Err(format!("unexpected end of expression at column {col}")),
         }
     }
+    /// The arguments of `sum`, after the name.
+    fn sum_call(&mut self, depth: usize) -> Result<Expr, String> {
+        if !self.eat('(') {
+            return Err(format!("'sum' needs arguments {SUM_FORM} at column {}", self.col()));
+        }
+        let col = self.col();
+        let var = match self.peek() {
+            Some(Tok::Ident(v)) if BUILTIN_NAMES.contains(&v.as_str()) => {
+                return Err(format!("'{v}' cannot be a sum variable (column {col}); use a fresh name"));
+            }
+            Some(Tok::Ident(v)) if self.bound.contains(v) => {
+                return Err(format!("'{v}' is already bound by an enclosing sum (column {col}); use a fresh name"));
+            }
+            Some(Tok::Ident(v)) => v.clone(),
+            _ => return Err(format!("the first argument of sum must be a variable name, {SUM_FORM}, at column {col}")),
+        };
+        self.pos += 1;
+        let mut args = Vec::new();
+        for what in ["from", "to", "expression"] {
+            if !self.eat(',') {
+                return Err(format!("expected ',' before the {what} of {SUM_FORM} at column {}", self.col()));
+            }
+            if what == "expression" {
+                self.bound.push(var.clone());
+            }
+            let arg = self.sum(depth + 1);
+            if what == "expression" {
+                self.bound.pop();
+            }
+            args.push(arg?);
+        }
+        if !self.eat(')') {
+            return Err(format!("missing ')' after {SUM_FORM} at column {}", self.col()));
+        }
+        let body = args.pop().expect("three arguments");
+        let to = args.pop().expect("three arguments");
+        let from = args.pop().expect("three arguments");
+        Ok(Expr::Sum(var, Box::new(from), Box::new(to), Box::new(body)))
+    }
+}
+
+/// An integer summation bound from its floating value.
+fn sum_bound(z: Complex64, what: &str) -> Result<i64, String> {
+    let r = z.re.round();
+    if z.im != 0.0 || !z.re.is_finite() || (z.re - r).abs() > 1e-9 * r.abs().max(1.0) || r.abs() > 1e15 {
+        return Err(format!("the {what} bound of a sum must be an integer, got {}", fmt_complex(z)));
+    }
+    Ok(r as i64)
+}
+
+fn fmt_complex(z: Complex64) -> String {
+    if z.im == 0.0 {
+        format!("{}", z.re)
+    } else {
+        format!("{} + {}i", z.re, z.im)
+    }
+}
+
+/// Count a sum's `count` terms against the budget of one evaluation.
+fn spend(terms: &mut u64, count: i128) -> Result<(), String> {
+    let total = *terms as i128 + count.max(0);
+    if total > MAX_SUM_TERMS as i128 {
+        return Err(format!(
+            "a sum of {count} terms; at most {MAX_SUM_TERMS} terms in all (nested sums count every term)"
+        ));
+    }
+    *terms = total as u64;
+    Ok(())
+}
+
+/// The value of a sum's variable (no text: nothing prints it).
+fn sum_index(k: i64) -> super::weight::ParamValue {
+    super::weight::ParamValue { value: k as f64, exact: Some(Rational::from_integer(k.into())), text: String::new() }
+}
+
+fn shadow_error(var: &str) -> String {
+    format!("sum variable '{var}' is already a variable here; use a fresh name")
 }
 
 impl Expr {
@@ -195,7 +290,7 @@ impl Expr {
             return Err("expression longer than 10000 characters".into());
         }
         let toks = tokenize(s)?;
-        let mut p = Parser { toks, pos: 0, len: s.chars().count() };
+        let mut p = Parser { toks, pos: 0, len: s.chars().count(), bound: Vec::new() };
         let e = p.sum(0)?;
         if p.pos != p.toks.len() {
             return Err(format!("unexpected '{}' at column {}", token_text(&p.toks[p.pos].1), p.col()));
@@ -203,41 +298,52 @@ impl Expr {
         Ok(e)
     }
 
-    /// Variables the expression uses.
+    /// The free variables of the expression (a sum's own variable is bound
+    /// inside its summand and not reported).
     pub fn variables(&self) -> Vec<String> {
         let mut out = Vec::new();
-        self.walk(&mut |e| {
-            if let Expr::Var(v) = e {
-                if !out.contains(v) {
-                    out.push(v.clone());
-                }
-            }
-        });
+        self.free_variables(&mut Vec::new(), &mut out);
         out
     }
 
-    fn walk(&self, f: &mut dyn FnMut(&Expr)) {
-        f(self);
+    fn free_variables(&self, bound: &mut Vec<String>, out: &mut Vec<String>) {
         match self {
-            Expr::Neg(a) | Expr::Call(_, a) => a.walk(f),
-            Expr::Bin(_, a, b) => {
-                a.walk(f);
-                b.walk(f);
+            Expr::Var(v) => {
+                if !bound.contains(v) && !out.contains(v) {
+                    out.push(v.clone());
+                }
             }
-            _ => {}
+            Expr::Neg(a) | Expr::Call(_, a) => a.free_variables(bound, out),
+            Expr::Bin(_, a, b) => {
+                a.free_variables(bound, out);
+                b.free_variables(bound, out);
+            }
+            Expr::Sum(v, from, to, body) => {
+                from.free_variables(bound, out);
+                to.free_variables(bound, out);
+                bound.push(v.clone());
+                body.free_variables(bound, out);
+                bound.pop();
+            }
+            Expr::Num(..) | Expr::Pi | Expr::I => {}
         }
     }
 
     /// Floating-point (complex) value.
     pub fn eval(&self, env: &Env) -> Result<Complex64, String> {
+        self.eval_counted(env, &mut 0)
+    }
+
+    /// `eval`, with the sum terms spent so far in this evaluation.
+    fn eval_counted(&self, env: &Env, terms: &mut u64) -> Result<Complex64, String> {
         Ok(match self {
             Expr::Num(x, _) => Complex64::new(*x, 0.0),
             Expr::Pi => Complex64::new(std::f64::consts::PI, 0.0),
             Expr::I => Complex64::new(0.0, 1.0),
             Expr::Var(v) => Complex64::new(env.get(v).ok_or_else(|| format!("unknown variable '{v}'"))?.value, 0.0),
-            Expr::Neg(a) => -a.eval(env)?,
+            Expr::Neg(a) => -a.eval_counted(env, terms)?,
             Expr::Bin(op, a, b) => {
-                let (x, y) = (a.eval(env)?, b.eval(env)?);
+                let (x, y) = (a.eval_counted(env, terms)?, b.eval_counted(env, terms)?);
                 match op {
                     '+' => x + y,
                     '-' => x - y,
@@ -258,7 +364,7 @@ impl Expr {
                 }
             }
             Expr::Call(f, a) => {
-                let x = a.eval(env)?;
+                let x = a.eval_counted(env, terms)?;
                 match f.as_str() {
                     "cos" => x.cos(),
                     "sin" => x.sin(),
@@ -269,18 +375,37 @@ impl Expr {
                     _ => Complex64::new(x.norm(), 0.0),
                 }
             }
+            Expr::Sum(var, from, to, summand) => {
+                let lo = sum_bound(from.eval_counted(env, terms)?, "lower")?;
+                let hi = sum_bound(to.eval_counted(env, terms)?, "upper")?;
+                if env.contains_key(var) {
+                    return Err(shadow_error(var));
+                }
+                spend(terms, hi as i128 - lo as i128 + 1)?;
+                let mut inner = env.clone();
+                let mut total = Complex64::new(0.0, 0.0);
+                for k in lo..=hi {
+                    inner.insert(var.clone(), sum_index(k));
+                    total += summand.eval_counted(&inner, terms)?;
+                }
+                total
+            }
         })
     }
 
     /// Exact rational value, when the expression has one this evaluator can
     /// prove (None otherwise: irrational, complex, or undecidable here).
     pub fn exact(&self, env: &Env) -> Option<Rational> {
+        self.exact_counted(env, &mut 0)
+    }
+
+    fn exact_counted(&self, env: &Env, terms: &mut u64) -> Option<Rational> {
         Some(match self {
             Expr::Num(_, q) => q.clone()?,
             Expr::Var(v) => env.get(v)?.exact.clone()?,
-            Expr::Neg(a) => -a.exact(env)?,
+            Expr::Neg(a) => -a.exact_counted(env, terms)?,
             Expr::Bin(op, a, b) => {
-                let (x, y) = (a.exact(env)?, b.exact(env)?);
+                let (x, y) = (a.exact_counted(env, terms)?, b.exact_counted(env, terms)?);
                 match op {
                     '+' => x + y,
                     '-' => x - y,
@@ -312,20 +437,20 @@ impl Expr {
             Expr::Call(f, a) => match f.as_str() {
                 // cos(q π) and sin(q π) for rational q
                 "cos" | "sin" => {
-                    let q = a.pi_multiple(env)?;
+                    let q = a.pi_multiple(env, terms)?;
                     let (num, den) = (q.numer().to_i64()?, q.denom().to_i64()?);
                     // cos(qπ) = cos(2π · num / (2 den)); sin(x) = cos(x − π/2)
                     let (k, n) = if f == "cos" { (num, 2 * den) } else { (num * 2 - den, 4 * den) };
                     exact_cos_2pi(k, n)?
                 }
                 "sqrt" => {
-                    let x = a.exact(env)?;
+                    let x = a.exact_counted(env, terms)?;
                     use super::weight::Weight;
                     x.sqrt().ok()?
                 }
-                "abs" => a.exact(env)?.abs(),
+                "abs" => a.exact_counted(env, terms)?.abs(),
                 "kronecker" => {
-                    if a.exact(env)?.is_zero() {
+                    if a.exact_counted(env, terms)?.is_zero() {
                         Rational::one()
                     } else {
                         Rational::zero()
@@ -333,26 +458,49 @@ impl Expr {
                 }
                 _ => return None,
             },
+            Expr::Sum(var, from, to, summand) => {
+                let (lo, hi) = (from.exact_counted(env, terms)?, to.exact_counted(env, terms)?);
+                if !lo.is_integer() || !hi.is_integer() || env.contains_key(var) {
+                    return None;
+                }
+                let (lo, hi) = (lo.to_integer().to_i64()?, hi.to_integer().to_i64()?);
+                spend(terms, hi as i128 - lo as i128 + 1).ok()?;
+                let mut inner = env.clone();
+                let mut total = Rational::zero();
+                for k in lo..=hi {
+                    inner.insert(var.clone(), sum_index(k));
+                    total += summand.exact_counted(&inner, terms)?;
+                    // as for powers: a sum whose digits explode is not worth it
+                    if total.numer().bits() + total.denom().bits() > 1 << 16 {
+                        return None;
+                    }
+                }
+                total
+            }
             Expr::Pi | Expr::I => return None,
         })
     }
 
     /// q such that the expression is q·π (for exact trigonometry).
-    fn pi_multiple(&self, env: &Env) -> Option<Rational> {
+    fn pi_multiple(&self, env: &Env, terms: &mut u64) -> Option<Rational> {
         match self {
             Expr::Pi => Some(Rational::one()),
-            Expr::Neg(a) => Some(-a.pi_multiple(env)?),
-            Expr::Bin('*', a, b) => match (a.pi_multiple(env), b.pi_multiple(env)) {
-                (Some(p), None) => Some(p * b.exact(env)?),
-                (None, Some(p)) => Some(a.exact(env)? * p),
+            Expr::Neg(a) => Some(-a.pi_multiple(env, terms)?),
+            Expr::Bin('*', a, b) => match (a.pi_multiple(env, terms), b.pi_multiple(env, terms)) {
+                (Some(p), None) => Some(p * b.exact_counted(env, terms)?),
+                (None, Some(p)) => Some(a.exact_counted(env, terms)? * p),
+                // p π · q π is a multiple of π only when a factor is zero (2 π j at j = 0)
+                (Some(p), Some(q)) if p.is_zero() || q.is_zero() => Some(Rational::zero()),
                 _ => None,
             },
-            Expr::Bin('/', a, b) => Some(a.pi_multiple(env)? / b.exact(env).filter(|y| !y.is_zero())?),
+            Expr::Bin('/', a, b) => {
+                Some(a.pi_multiple(env, terms)? / b.exact_counted(env, terms).filter(|y| !y.is_zero())?)
+            }
             Expr::Bin(op @ ('+' | '-'), a, b) => {
-                let (x, y) = (a.pi_multiple(env)?, b.pi_multiple(env)?);
+                let (x, y) = (a.pi_multiple(env, terms)?, b.pi_multiple(env, terms)?);
                 Some(if *op == '+' { x + y } else { x - y })
             }
-            e => e.exact(env).filter(|x| x.is_zero()),
+            e => e.exact_counted(env, terms).filter(|x| x.is_zero()),
         }
     }
 }
@@ -431,5 +579,86 @@ mod tests {
         assert!(Expr::parse("").is_err());
         assert!(Expr::parse(&"(".repeat(5000)).is_err());
         assert!(Expr::parse("x").unwrap().eval(&Env::new()).unwrap_err().contains("unknown variable"));
+    }
+
+    #[test]
+    fn sums_evaluate_exactly_and_in_floating_point() {
+        // Σ_{m=1}^{n} m = n(n+1)/2 = 15 at n = 5; Σ_{m=0}^{3} (1/2)^m = 15/8
+        assert_eq!(ev("sum(m, 1, n, m)").re, 15.0);
+        assert_eq!(ex("sum(m, 0, 3, (1/2)^m)"), Some(q(15, 8)));
+        // an empty range sums to zero; a one-term range is the term
+        assert_eq!(ex("sum(m, 1, 0, m)"), Some(q(0, 1)));
+        assert_eq!(ex("sum(m, 4, 4, 1/m)"), Some(q(1, 4)));
+        // Σ_{m=0}^{n-1} cos(2π m j / n) = n δ_{j,0} (mod n): exact at n = 6, float at n = 5
+        let at = |n: i64, j: i64| env_int(&[("n", n), ("j", j)]);
+        let e = Expr::parse("sum(m, 0, n-1, cos(2 pi j m / n))").unwrap();
+        assert_eq!(e.exact(&at(6, 0)), Some(q(6, 1)));
+        assert_eq!(e.exact(&at(6, 2)), Some(q(0, 1)));
+        assert_eq!(e.exact(&at(5, 1)), None, "cos(2π/5) is irrational, so the sum is not proved exact");
+        assert!(e.eval(&at(5, 1)).unwrap().norm() < 1e-14);
+        assert!((e.eval(&at(5, 5)).unwrap().re - 5.0).abs() < 1e-14);
+        // the brief's Fourier example: s_j = δ_{j,0}/4 + cos(2π j/n)/(2n)
+        let f =
+            Expr::parse("sum(m, 0, n-1, (1/4 + kronecker(m-1)/4 + kronecker(m-n+1)/4) cos(2 pi j m / n)) / n").unwrap();
+        assert_eq!(f.exact(&at(4, 0)), Some(q(1, 4) + q(1, 8)));
+        assert_eq!(f.exact(&at(6, 1)), Some(q(1, 24)));
+        assert!((f.eval(&at(5, 2)).unwrap().re - (4.0 * std::f64::consts::PI / 5.0).cos() / 10.0).abs() < 1e-15);
+        // complex terms sum as complex numbers: Σ_{m=0}^{3} i^m = 0, i^0 + i^1 = 1 + i
+        assert!(ev("sum(m, 0, 3, i^m)").norm() < 1e-15);
+        let z = ev("sum(m, 0, 1, i^m)");
+        assert!((z.re - 1.0).abs() < 1e-15 && (z.im - 1.0).abs() < 1e-15);
+        assert_eq!(ex("sum(m, 0, 1, i^m)"), None);
+        // nested sums: Σ_{a=1}^{3} Σ_{b=1}^{a} 1 = 6; bounds may use outer variables
+        assert_eq!(ex("sum(a, 1, 3, sum(b, 1, a, 1))"), Some(q(6, 1)));
+        // bounds are expressions in the free variables; n/2 at n = 6 is 3
+        assert_eq!(ex("sum(m, 1, n/2, 1)"), Some(q(3, 1)));
+    }
+
+    #[test]
+    fn sum_variables_are_bound() {
+        let vars = |s: &str| Expr::parse(s).unwrap().variables();
+        assert_eq!(vars("sum(m, 0, n - 1, m j a)"), ["n", "j", "a"]);
+        // the bounds are outside the binding: m there is free
+        assert_eq!(vars("sum(m, 0, m, m)"), ["m"]);
+        // after the sum, m is free again
+        assert_eq!(vars("sum(m, 0, 1, m) + m"), ["m"]);
+        assert_eq!(vars("sum(a, 0, 2, sum(b, 0, a, b c))"), ["c"]);
+    }
+
+    #[test]
+    fn sum_errors_are_clear() {
+        let err = |s: &str| Expr::parse(s).unwrap_err();
+        assert!(err("sum(1, 2)").contains("the first argument of sum must be a variable name"));
+        assert!(err("sum(m, 0, 2)").contains("expected ',' before the expression of sum(variable, from, to"));
+        assert!(err("sum(m 0, 2, m)").contains("expected ',' before the from"));
+        assert!(err("sum(m, 0, 2, m").contains("missing ')' after sum"));
+        assert!(err("sum").contains("'sum' needs arguments"));
+        assert!(err("sum m").contains("'sum' needs arguments"));
+        assert!(err("sum(pi, 0, 2, 1)").contains("'pi' cannot be a sum variable"));
+        assert!(err("sum(sum, 0, 2, 1)").contains("'sum' cannot be a sum variable"));
+        assert!(err("sum(m, 0, 2, sum(m, 0, 1, m))").contains("'m' is already bound by an enclosing sum"));
+        assert!(err("sum(m, 0, , m)").contains("unexpected ','"));
+        assert!(err("1, 2").contains("unexpected ',' at column 2"));
+        assert!(err("cos(1, 2)").contains("missing ')'"));
+        // evaluation errors: bounds, shadowing, size
+        let env = env_int(&[("n", 5), ("k", 4)]);
+        let run = |s: &str| Expr::parse(s).unwrap().eval(&env).unwrap_err();
+        assert!(run("sum(m, 0, n/2, m)").contains("the upper bound of a sum must be an integer, got 2.5"));
+        assert!(run("sum(m, i, 2, m)").contains("the lower bound of a sum must be an integer"));
+        assert!(run("sum(m, 0, 1e300, m)").contains("must be an integer"));
+        assert!(run("sum(n, 0, 2, n)").contains("sum variable 'n' is already a variable here"));
+        assert!(run("sum(m, 1, 10001, m)").contains("a sum of 10001 terms; at most 10000 terms in all"));
+        assert!(run("sum(m, 1, 10^12, m)").contains("at most 10000 terms"));
+        // nested sums count every term: 200 × 100 = 20000 > 10000, refused quickly
+        let t0 = std::time::Instant::now();
+        assert!(run("sum(a, 1, 200, sum(b, 1, 100, a b))").contains("at most 10000 terms in all"));
+        assert_eq!(Expr::parse("sum(m, 1, 10000, 1)").unwrap().eval(&env).unwrap().re, 10000.0);
+        assert!(t0.elapsed().as_secs() < 2);
+        // exactly 10000 terms are allowed; the exact path declines what eval refuses
+        assert_eq!(ex("sum(m, 1, 10000, 1)"), Some(q(10000, 1)));
+        assert_eq!(ex("sum(m, 1, 10001, 1)"), None);
+        assert_eq!(ex("sum(n, 1, 2, 1)"), None);
+        // a sum whose exact value would need huge numbers is declined, not computed
+        assert_eq!(ex("sum(m, 1, 2000, (1/m)^256)"), None);
     }
 }

@@ -16,8 +16,14 @@
 //! ```
 //!
 //! Which neighbours each field weighs is fixed per topology (`TOPOLOGIES`),
-//! in the order `PolyMesh::vertex_fan` returns them. Everything that can be
-//! checked is checked at load time, each error naming the line and the field.
+//! in the order `PolyMesh::vertex_fan` returns them (counter-clockwise). The
+//! first neighbour around a vertex or in a face is arbitrary, so weights there
+//! may not depend on `j`. The optional `[edge-extraordinary]` rule of the
+//! primal topologies is where `j` is canonical: the new point on an edge with
+//! an extraordinary end V, as a stencil over V's 1-ring with e_0 the edge's
+//! other end (and, for quads, f_j the corner opposite V in the face between
+//! e_j and e_{j+1}). Everything that can be checked is checked at load time,
+//! each error naming the line and the field.
 
 use std::any::TypeId;
 use std::collections::{BTreeMap, HashMap, HashSet};
@@ -44,7 +50,9 @@ const MAX_PARAMS: usize = 16;
 /// Valences (and face sizes) at which weights are checked at load time.
 const CHECK_N: std::ops::RangeInclusive<i64> = 3..=12;
 /// Names the expression language or the rules reserve.
-const RESERVED: [&str; 10] = ["n", "j", "pi", "i", "cos", "sin", "sqrt", "cbrt", "abs", "kronecker"];
+const RESERVED: [&str; 11] = ["n", "j", "pi", "i", "cos", "sin", "sqrt", "cbrt", "abs", "kronecker", "sum"];
+/// The optional rule for edges with an extraordinary end (primal topologies).
+const EV_EDGE: &str = "edge-extraordinary";
 
 /// How many neighbours a field weighs: one per index j = 0..n-1, or a fixed count.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -61,6 +69,14 @@ struct FieldSpec {
 struct RuleSpec {
     section: &'static str,
     fields: &'static [FieldSpec],
+    /// a file may leave the section out (then the rule is not used)
+    optional: bool,
+    /// j has a canonical meaning here, so weights may depend on it
+    canonical_j: bool,
+}
+
+const fn rule(section: &'static str, fields: &'static [FieldSpec]) -> RuleSpec {
+    RuleSpec { section, fields, optional: false, canonical_j: false }
 }
 
 struct TopologySpec {
@@ -68,6 +84,9 @@ struct TopologySpec {
     topology: Topology,
     sector: SectorKind,
     face_control: bool,
+    /// the face size and the regular valence (primal topologies, which may
+    /// have an `[edge-extraordinary]` rule)
+    regular: Option<(usize, usize)>,
     rules: &'static [RuleSpec],
 }
 
@@ -83,13 +102,22 @@ const TOPOLOGIES: [TopologySpec; 3] = [
         topology: Topology::PrimalSplit(TriangleSplit::FacePointQuads),
         sector: SectorKind::Quad,
         face_control: false,
+        regular: Some((4, 4)),
         rules: &[
             // fan face j = [v, e_j, f_j, e_{j+1}]: edge neighbour e_j, face-opposite neighbour f_j
-            RuleSpec { section: "vertex", fields: &[f("centre", Fixed(1)), f("edge", PerJ), f("face", PerJ)] },
+            rule("vertex", &[f("centre", Fixed(1)), f("edge", PerJ), f("face", PerJ)]),
             // the edge's two ends, and the two other corners of each of its two quads
-            RuleSpec { section: "edge", fields: &[f("ends", Fixed(2)), f("side", Fixed(4))] },
+            rule("edge", &[f("ends", Fixed(2)), f("side", Fixed(4))]),
+            // an edge with an extraordinary end V (valence n != 4): V, and V's fan
+            // as in the vertex rule, turned so that e_0 is the edge's other end
+            RuleSpec {
+                section: EV_EDGE,
+                fields: &[f("centre", Fixed(1)), f("edge", PerJ), f("face", PerJ)],
+                optional: true,
+                canonical_j: true,
+            },
             // corner j of a face with n corners
-            RuleSpec { section: "face", fields: &[f("corner", PerJ)] },
+            rule("face", &[f("corner", PerJ)]),
         ],
     },
     TopologySpec {
@@ -97,10 +125,19 @@ const TOPOLOGIES: [TopologySpec; 3] = [
         topology: Topology::PrimalSplit(TriangleSplit::FourTriangles),
         sector: SectorKind::Tri,
         face_control: false,
+        regular: Some((3, 6)),
         rules: &[
-            RuleSpec { section: "vertex", fields: &[f("centre", Fixed(1)), f("edge", PerJ)] },
+            rule("vertex", &[f("centre", Fixed(1)), f("edge", PerJ)]),
             // the two ends and the apexes of the two triangles
-            RuleSpec { section: "edge", fields: &[f("ends", Fixed(2)), f("opposite", Fixed(2))] },
+            rule("edge", &[f("ends", Fixed(2)), f("opposite", Fixed(2))]),
+            // an edge with an extraordinary end V (valence n != 6): V and its
+            // 1-ring, e_0 the edge's other end, counter-clockwise
+            RuleSpec {
+                section: EV_EDGE,
+                fields: &[f("centre", Fixed(1)), f("edge", PerJ)],
+                optional: true,
+                canonical_j: true,
+            },
         ],
     },
     TopologySpec {
@@ -108,16 +145,17 @@ const TOPOLOGIES: [TopologySpec; 3] = [
         topology: Topology::FcvSplit,
         sector: SectorKind::Quad,
         face_control: true,
+        regular: None,
         rules: &[
             // the vertex and the FCV of fan face j
-            RuleSpec { section: "vertex", fields: &[f("centre", Fixed(1)), f("fcv", PerJ)] },
+            rule("vertex", &[f("centre", Fixed(1)), f("fcv", PerJ)]),
             // the two ends and the FCVs of the two faces
-            RuleSpec { section: "edge", fields: &[f("ends", Fixed(2)), f("fcv", Fixed(2))] },
+            rule("edge", &[f("ends", Fixed(2)), f("fcv", Fixed(2))]),
             // the new FCV of an old face: the old FCV and corner j of n
-            RuleSpec { section: "face", fields: &[f("centre", Fixed(1)), f("corner", PerJ)] },
+            rule("face", &[f("centre", Fixed(1)), f("corner", PerJ)]),
             // the FCV of the new quad at corner V_0 of old face F_0 (n corners):
             // V_0, the FCV of F_0, and the FCVs of F_0's two neighbours at V_0
-            RuleSpec { section: "corner", fields: &[f("vertex", Fixed(1)), f("fcv", Fixed(1)), f("side", Fixed(2))] },
+            rule("corner", &[f("vertex", Fixed(1)), f("fcv", Fixed(1)), f("side", Fixed(2))]),
         ],
     },
 ];
@@ -135,6 +173,8 @@ struct FileDoc {
     params: BTreeMap<String, Spanned<ParamDoc>>,
     vertex: Option<Section>,
     edge: Option<Section>,
+    #[serde(rename = "edge-extraordinary")]
+    edge_extraordinary: Option<Section>,
     face: Option<Section>,
     corner: Option<Section>,
 }
@@ -156,6 +196,8 @@ struct Field {
     expr: Expr,
     count: Count,
     uses_j: bool,
+    /// j is canonical in this field's rule (each j's weight is its own)
+    canonical_j: bool,
 }
 
 #[derive(Clone, Debug)]
@@ -189,7 +231,19 @@ pub struct UserScheme {
     env: Env,
     /// "section.field" -> expression
     weights: HashMap<String, Expr>,
+    /// the file has an `[edge-extraordinary]` rule
+    ev_edges: bool,
+    /// weights already evaluated, by (field, n, j, float): a weight that is a
+    /// Fourier sum costs n terms, and refinement asks for it at every edge
+    cache: Mutex<WeightCache>,
 }
+
+/// (field, n, j, float) -> the weight.
+type WeightCache = HashMap<(String, i64, i64, bool), Result<ParamValue, Inexact>>;
+
+/// Entries the weight cache holds before it starts afresh (a sweep over many
+/// valences must not grow it without bound).
+const CACHE_ENTRIES: usize = 100_000;
 
 fn line_of(text: &str, offset: usize) -> usize {
     text.as_bytes()[..offset.min(text.len())].iter().filter(|&&b| b == b'\n').count() + 1
@@ -204,6 +258,15 @@ fn literal(v: &toml::Value) -> Result<ParamValue, String> {
         // the shortest decimal that round-trips, so 0.375 is exactly 3/8
         toml::Value::Float(x) => ParamValue::parse(&format!("{x}")),
         other => Err(format!("expected a number, got a {}", other.type_str())),
+    }
+}
+
+/// Where j-dependent weights may go instead, for error messages.
+fn j_pointer(spec: &TopologySpec) -> &'static str {
+    if spec.regular.is_some() {
+        "; weights that depend on j belong in [edge-extraordinary], where j = 0 is the edge's other end"
+    } else {
+        ""
     }
 }
 
@@ -309,8 +372,13 @@ impl UserSchemeDef {
         }
 
         let spec = &TOPOLOGIES[topology];
-        let sections: [(&str, &Option<Section>); 4] =
-            [("vertex", &doc.vertex), ("edge", &doc.edge), ("face", &doc.face), ("corner", &doc.corner)];
+        let sections: [(&str, &Option<Section>); 5] = [
+            ("vertex", &doc.vertex),
+            ("edge", &doc.edge),
+            (EV_EDGE, &doc.edge_extraordinary),
+            ("face", &doc.face),
+            ("corner", &doc.corner),
+        ];
         let mut rules = Vec::new();
         for (section, table) in sections {
             let rule = spec.rules.iter().find(|r| r.section == section);
@@ -319,6 +387,7 @@ impl UserSchemeDef {
                 (None, Some(t)) => {
                     return Err(err(at(t.span()), section, &format!("topology {} has no {section} rule", spec.name)))
                 }
+                (Some(r), None) if r.optional => continue,
                 (Some(_), None) => return Err(format!("{file}: missing section [{section}] (topology {})", spec.name)),
                 (Some(r), Some(t)) => (r, t),
             };
@@ -363,15 +432,16 @@ impl UserSchemeDef {
                         || params.iter().any(|p| p.name == var);
                     if !allowed {
                         let hint = match var.as_str() {
-                            "j" => " (j indexes neighbours only in per-neighbour fields)",
-                            "n" => " (edge rules have no valence n)",
-                            _ => "",
+                            "j" if rule.canonical_j => " (j indexes neighbours only in per-neighbour fields)".into(),
+                            "j" => format!(" (j indexes neighbours only in per-neighbour fields{})", j_pointer(spec)),
+                            "n" => " (edge rules have no valence n)".into(),
+                            _ => String::new(),
                         };
                         return Err(err(line, &key, &format!("unknown variable '{var}'{hint}")));
                     }
                 }
                 let uses_j = expr.variables().iter().any(|v| v == "j");
-                fields.push(Field { key, line, expr, count: fs.count, uses_j });
+                fields.push(Field { key, line, expr, count: fs.count, uses_j, canonical_j: rule.canonical_j });
             }
             rules.push((section_line, fields));
         }
@@ -416,20 +486,27 @@ impl UserSchemeDef {
         Ok(env)
     }
 
-    /// Every weight must be a finite real number at n = 3..12 and the same
-    /// for every j (the first neighbour around a vertex or in a face is
-    /// arbitrary, so a weight that varies with j would make the rule depend
-    /// on how the mesh is stored); with `affine`, every rule's weights sum to 1.
+    /// Every weight must be a finite real number at n = 3..12 and, outside
+    /// `[edge-extraordinary]`, the same for every j (the first neighbour
+    /// around a vertex or in a face is arbitrary, so a weight that varies
+    /// with j would make the rule depend on how the mesh is stored); with
+    /// `affine`, every rule's weights sum to 1.
     fn check(&self, params: &Env) -> Result<(), String> {
         for (section_line, fields) in &self.rules {
             for n in CHECK_N {
                 let mut sum = 0.0;
                 for field in fields {
                     let js = if field.uses_j { 0..n } else { 0..1 };
+                    // j canonical and used: every neighbour has its own weight
+                    let per_j = field.canonical_j && field.uses_j;
                     let mut first = None;
                     for j in js {
                         let w = eval_f64(&field.expr, params, n, j)
                             .map_err(|e| self.err(field.line, &field.key, format!("at n = {n}, j = {j}: {e}")))?;
+                        if per_j {
+                            sum += w;
+                            continue;
+                        }
                         match first {
                             None => first = Some(w),
                             Some(w0) if (w - w0).abs() > 1e-12 * w0.abs().max(1.0) => {
@@ -437,13 +514,17 @@ impl UserSchemeDef {
                                     field.line,
                                     &field.key,
                                     format!(
-                                    "the weight differs between j = 0 and j = {j} at n = {n}; the first neighbour is \
-                                         arbitrary, so weights may not depend on j"
-                                ),
+                                        "the weight differs between j = 0 and j = {j} at n = {n}; the first neighbour \
+                                         is arbitrary, so weights may not depend on j{}",
+                                        j_pointer(&TOPOLOGIES[self.topology])
+                                    ),
                                 ))
                             }
                             _ => {}
                         }
+                    }
+                    if per_j {
+                        continue;
                     }
                     let w = first.unwrap_or(0.0);
                     sum += w * match field.count {
@@ -469,7 +550,7 @@ impl UserSchemeDef {
         let env = self.env(overrides)?;
         self.check(&env)?;
         let values = self.params.iter().map(|p| (p.name.clone(), env[&p.name].clone())).collect();
-        let weights =
+        let weights: HashMap<String, Expr> =
             self.rules.iter().flat_map(|(_, fs)| fs.iter().map(|f| (f.key.clone(), f.expr.clone()))).collect();
         Ok(UserScheme {
             name: intern(&self.name),
@@ -477,7 +558,9 @@ impl UserSchemeDef {
             topology: self.topology,
             params: Params { values },
             env,
+            ev_edges: weights.contains_key("edge-extraordinary.centre"),
             weights,
+            cache: Mutex::new(HashMap::new()),
         })
     }
 }
@@ -539,11 +622,30 @@ pub fn load(path: &Path, overrides: &[(String, String)]) -> Result<Box<dyn Schem
 impl UserScheme {
     /// The weight of field `key` at valence (or face size) n, index j.
     fn w<W: Weight>(&self, key: &str, n: i64, j: i64) -> Result<W, Inexact> {
-        let expr = self.weights.get(key).ok_or(Inexact)?;
-        let env = with_nj(&self.env, n, j);
         // evaluate only in the arithmetic asked for: exact evaluation of an
         // irrational weight fails, and float stencils must not pay for it
-        let value = if TypeId::of::<W>() == TypeId::of::<f64>() {
+        let float = TypeId::of::<W>() == TypeId::of::<f64>();
+        let id = (key.to_string(), n, j, float);
+        let cached = self.cache.lock().unwrap_or_else(|e| e.into_inner()).get(&id).cloned();
+        let value = match cached {
+            Some(v) => v,
+            None => {
+                let v = self.evaluate(key, n, j, float);
+                let mut cache = self.cache.lock().unwrap_or_else(|e| e.into_inner());
+                if cache.len() >= CACHE_ENTRIES {
+                    cache.clear();
+                }
+                cache.insert(id, v.clone());
+                v
+            }
+        };
+        W::param(&value?)
+    }
+
+    fn evaluate(&self, key: &str, n: i64, j: i64, float: bool) -> Result<ParamValue, Inexact> {
+        let expr = self.weights.get(key).ok_or(Inexact)?;
+        let env = with_nj(&self.env, n, j);
+        Ok(if float {
             let z = expr.eval(&env).map_err(|_| Inexact)?;
             if !z.re.is_finite() || z.im.abs() > 1e-12 * z.re.abs().max(1.0) {
                 return Err(Inexact);
@@ -552,13 +654,19 @@ impl UserScheme {
         } else {
             let q = expr.exact(&env).ok_or(Inexact)?;
             ParamValue { value: q.to_f64(), exact: Some(q), text: String::new() }
-        };
-        W::param(&value)
+        })
     }
 
     fn spec(&self) -> &'static TopologySpec {
         &TOPOLOGIES[self.topology]
     }
+}
+
+/// Whether `v` is extraordinary for a primal rule: a closed fan of `size`-gons
+/// whose count is not the regular valence. (Vertices with open fans, such as
+/// the rim of a truncated neighbourhood, lie in the regular part.)
+fn extraordinary(mesh: &PolyMesh, v: usize, size: usize, regular: usize) -> bool {
+    uniform_fan(mesh, v, size).is_some_and(|fan| fan.len() != regular)
 }
 
 /// The FCV of the face that holds the half-edge a -> b.
@@ -577,6 +685,55 @@ impl<W: Weight> Rules<W> for UserScheme {
 }
 
 impl UserScheme {
+    /// The `[edge-extraordinary]` stencil of the new point on edge (v, other)
+    /// seen from its extraordinary end v: v, and v's 1-ring in the
+    /// counter-clockwise order of `vertex_fan` starting at e_0 = other (with
+    /// quads, fan face j = [v, e_j, f_j, e_{j+1}]).
+    fn ev_edge<W: Weight>(&self, mesh: &PolyMesh, v: usize, other: usize, size: usize) -> RuleResult<W> {
+        let Some(fan) = uniform_fan(mesh, v, size) else { return Ok(None) };
+        let Some(start) = fan.iter().position(|face| face[1] == other) else { return Ok(None) };
+        let n = fan.len();
+        let mut s = Stencil::new().with(v, self.w("edge-extraordinary.centre", n as i64, 0)?);
+        for j in 0..n {
+            let face = &fan[(start + j) % n];
+            s.add(face[1], self.w("edge-extraordinary.edge", n as i64, j as i64)?);
+            if size == 4 {
+                s.add(face[2], self.w("edge-extraordinary.face", n as i64, j as i64)?);
+            }
+        }
+        Ok(Some(s))
+    }
+
+    /// The new point on edge (a, b) when the file has an `[edge-extraordinary]`
+    /// rule and an end is extraordinary; `None`: the regular `[edge]` rule.
+    /// With both ends extraordinary, the mean of the two ends' stencils
+    /// (Zorin's convention for the modified butterfly, and our choice here).
+    fn extraordinary_edge<W: Weight>(&self, mesh: &PolyMesh, a: usize, b: usize) -> Option<RuleResult<W>> {
+        let (size, regular) = self.spec().regular?;
+        if !self.ev_edges {
+            return None;
+        }
+        let ends = (extraordinary(mesh, a, size, regular), extraordinary(mesh, b, size, regular));
+        Some(match ends {
+            (false, false) => return None,
+            (true, false) => self.ev_edge(mesh, a, b, size),
+            (false, true) => self.ev_edge(mesh, b, a, size),
+            (true, true) => self.ev_edge_mean(mesh, a, b, size),
+        })
+    }
+
+    /// The mean of the `[edge-extraordinary]` stencils from both ends.
+    fn ev_edge_mean<W: Weight>(&self, mesh: &PolyMesh, a: usize, b: usize, size: usize) -> RuleResult<W> {
+        let (Some(sa), Some(sb)) = (self.ev_edge(mesh, a, b, size)?, self.ev_edge(mesh, b, a, size)?) else {
+            return Ok(None);
+        };
+        let half = W::ratio(1, 2);
+        let mut s = Stencil::new();
+        s.add_scaled(&sa, &half);
+        s.add_scaled(&sb, &half);
+        Ok(Some(s))
+    }
+
     fn primal_quad<W: Weight>(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         Ok(match origin {
             Origin::Vertex(v) => {
@@ -595,6 +752,9 @@ impl UserScheme {
                 };
                 if mesh.face(fl).len() != 4 || mesh.face(fr).len() != 4 {
                     return Ok(None);
+                }
+                if let Some(result) = self.extraordinary_edge(mesh, a, b) {
+                    return result;
                 }
                 let ends: W = self.w("edge.ends", 4, 0)?;
                 let side: W = self.w("edge.side", 4, 0)?;
@@ -635,6 +795,9 @@ impl UserScheme {
                 };
                 if mesh.face(fl).len() != 3 || mesh.face(fr).len() != 3 {
                     return Ok(None);
+                }
+                if let Some(result) = self.extraordinary_edge(mesh, a, b) {
+                    return result;
                 }
                 let ends: W = self.w("edge.ends", 3, 0)?;
                 let opposite: W = self.w("edge.opposite", 3, 0)?;
