@@ -4,24 +4,12 @@
 //! Sizes are capped before allocation (an oversized file is refused from its
 //! length alone).
 
+mod common;
+use common::Rng;
 use std::path::Path;
 use subdlab::mesh::obj::{parse_obj, read_obj_file, MAX_FILE_BYTES};
 use subdlab::refine::mesh::refine_mesh;
 use subdlab::schemes;
-
-/// xorshift64*: a fixed seed, so a failure reproduces.
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n as u64) as usize
-    }
-}
 
 /// Tokens that probe the reader's number and index handling.
 const TOKENS: [&str; 24] = [

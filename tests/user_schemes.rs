@@ -4,7 +4,7 @@
 //! with the line and the field, and survive random and mutated input.
 
 mod common;
-use common::{fails, subdlab};
+use common::{fails, subdlab, Rng};
 use subdlab::matrix::local::AssembleError;
 use subdlab::matrix::{assemble, LocalMatrix};
 use subdlab::neighbourhood::{discover, Configuration, NeighbourhoodKind};
@@ -275,20 +275,6 @@ fn parse_errors_name_the_line_and_the_field() {
     }
     assert!(error_of("\"3/8\"", &format!("\"{}1\"", "(".repeat(400)))
         .contains("field edge.ends: expression nested too deeply"));
-}
-
-/// xorshift64*: a deterministic generator, so failures reproduce.
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n as u64) as usize
-    }
 }
 
 /// The first `EXPR_PIECES` pieces are expression material.

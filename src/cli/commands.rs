@@ -138,8 +138,9 @@ fn list_schemes(files: &[std::path::PathBuf], json: bool) -> Result<(), String> 
     struct Entry {
         name: String,
         description: String,
-        /// the file a user scheme was read from
+        /// the file a user scheme was read from, and the topology it names
         file: Option<String>,
+        topology: Option<&'static str>,
         params: Vec<Param>,
     }
     let builtin = |p: crate::schemes::ParamSpec| Param {
@@ -156,6 +157,7 @@ fn list_schemes(files: &[std::path::PathBuf], json: bool) -> Result<(), String> 
                 name: e.name.into(),
                 description: e.description.into(),
                 file: None,
+                topology: None,
                 params: (e.params)().into_iter().map(builtin).collect(),
             })
             // regular-lattice schemes (no parameters) after the mesh-based ones
@@ -163,6 +165,7 @@ fn list_schemes(files: &[std::path::PathBuf], json: bool) -> Result<(), String> 
                 name: name.into(),
                 description: description.into(),
                 file: None,
+                topology: None,
                 params: Vec::new(),
             }))
             .collect()
@@ -175,6 +178,7 @@ fn list_schemes(files: &[std::path::PathBuf], json: bool) -> Result<(), String> 
                     name: def.name.clone(),
                     description: def.description.clone(),
                     file: Some(f.display().to_string()),
+                    topology: Some(def.topology_name()),
                     params: def
                         .params
                         .iter()
@@ -193,18 +197,19 @@ fn list_schemes(files: &[std::path::PathBuf], json: bool) -> Result<(), String> 
     if json {
         return print_json(&list);
     }
+    let w = list.iter().map(|e| e.name.chars().count() + 1).max().unwrap_or(0).max(16);
     for e in &list {
-        println!("{:<16} {}", e.name, e.description);
-        if let Some(f) = &e.file {
-            println!("{:<16} file {f}", "");
+        println!("{:<w$} {}", e.name, e.description);
+        if let (Some(f), Some(t)) = (&e.file, e.topology) {
+            println!("{:<w$} file {f}, topology {t}", "");
         }
         if e.params.is_empty() {
-            println!("{:<16} (no parameters)", "");
+            println!("{:<w$} (no parameters)", "");
         }
         for p in &e.params {
             let default = if p.default.is_empty() { "(scheme rule)" } else { p.default.as_str() };
             println!(
-                "{:<16} --param {}=VALUE  default {}  range [{}, {}]  {}",
+                "{:<w$} --param {}=VALUE  default {}  range [{}, {}]  {}",
                 "", p.name, default, p.min, p.max, p.description
             );
         }

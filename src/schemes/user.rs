@@ -546,6 +546,11 @@ impl UserSchemeDef {
     }
 
     /// The scheme with the given parameter overrides, weights checked.
+    /// The refinement topology the file names (`primal-triangle`, ...).
+    pub fn topology_name(&self) -> &'static str {
+        TOPOLOGIES[self.topology].name
+    }
+
     pub fn build(&self, overrides: &[(String, String)]) -> Result<UserScheme, String> {
         let env = self.env(overrides)?;
         self.check(&env)?;
