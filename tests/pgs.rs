@@ -177,7 +177,7 @@ fn refines_doo_sabin_nets_and_adds_a_point_to_every_non_quad() {
     // keep valence 4 (E = 2V). Net: F = 26, V = 24, E = 48, corners 96.
     // Step 1: 26 + 48 + 24 = 98 faces, V = 96, E = 192. Step 2: 98 + 192 + 96.
     assert_eq!(mesh.num_faces(), 98 + 192 + 96, "F-, E-, V-faces of two dual steps");
-    let centres = mesh.face_centres.iter().flatten().count();
+    let centres = mesh.face_points.iter().flatten().count();
     assert_eq!(centres, 8, "one point per triangle");
     assert_eq!(pts.len(), mesh.num_vertices());
     assert!(pts.iter().all(|p| p.iter().all(|x| x.is_finite())));
@@ -223,7 +223,7 @@ fn appendix_with_eq_8_the_rules_are_stationary() {
                 Some([(seed >> 11) as f64 / (1u64 << 53) as f64])
             })
             .collect();
-        let p = mesh.face_centre(0).unwrap();
+        let p = mesh.face_point(0).unwrap();
         x[p] = Some([eq1(&mesh, &x)]);
         for level in 1..=3 {
             let r = s.topology().refine(&mesh).unwrap();
@@ -234,7 +234,7 @@ fn appendix_with_eq_8_the_rules_are_stationary() {
                 .collect();
             x = apply(&st, &x);
             mesh = r.mesh;
-            let carried = x[mesh.face_centre(0).unwrap()].unwrap()[0];
+            let carried = x[mesh.face_point(0).unwrap()].unwrap()[0];
             assert!((carried - eq1(&mesh, &x)).abs() < 1e-13, "n = {n}, level {level}");
         }
     }

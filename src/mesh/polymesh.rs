@@ -23,10 +23,12 @@ pub struct PolyMesh {
     /// Optional lattice chart (sector coordinates) used to label the vertices of
     /// analysis neighbourhoods; absent for user meshes.
     pub chart: Option<Chart>,
-    /// One face control vertex (FCV) per face, for schemes that carry them
-    /// (non-box subdivision). FCVs are vertices of the mesh that belong to no
-    /// face cycle.
-    pub face_points: Option<Vec<VertexId>>,
+    /// Control points that belong to a face rather than to its boundary
+    /// cycle: `face_points[f]` is the point of face f, if it carries one, and
+    /// the list is empty when no face does. Non-box subdivision puts a face
+    /// control vertex (FCV) on every face; point-augmented schemes (the point p
+    /// of PGS) on some faces only. Such points are vertices of no face cycle.
+    pub face_points: Vec<Option<VertexId>>,
     /// A per-vertex scheme parameter, for schemes whose weights vary per vertex
     /// (Lin–Luo's α in unified sqrt(3) subdivision). Refined with the scheme's
     /// `vertex_param_rule`.
@@ -35,10 +37,6 @@ pub struct PolyMesh {
     /// per quad, the lattice direction of its first edge (corner 0 → 1) as
     /// 0 = +i, 1 = +j, 2 = −i, 3 = −j; edge k then has direction (d + k) mod 4.
     pub lattice_dirs: Option<Vec<u8>>,
-    /// An extra central control point on some faces (point-augmented schemes:
-    /// the point p of PGS). Like FCVs these belong to no face cycle; unlike
-    /// FCVs only some faces carry one. Empty when no face has one.
-    pub face_centres: Vec<Option<VertexId>>,
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -97,42 +95,31 @@ impl PolyMesh {
             half_edges,
             vertex_corner,
             chart: None,
-            face_points: None,
+            face_points: Vec::new(),
             vertex_params: None,
             lattice_dirs: None,
-            face_centres: Vec::new(),
         })
     }
 
-    /// Attach face control vertices (one per face, each a vertex id of no face).
-    pub fn with_face_points(mut self, fcv: Vec<VertexId>) -> Result<Self, String> {
-        if fcv.len() != self.faces.len() {
-            return Err(format!("{} face control vertices for {} faces", fcv.len(), self.faces.len()));
+    /// Attach face points (`points[f]`: the point of face f, if any; each a
+    /// vertex of no face cycle).
+    pub fn with_face_points(mut self, points: Vec<Option<VertexId>>) -> Result<Self, String> {
+        if points.len() != self.faces.len() {
+            return Err(format!("{} face point entries for {} faces", points.len(), self.faces.len()));
         }
-        if let Some(&v) = fcv.iter().find(|&&v| v >= self.num_vertices || self.vertex_corner[v].is_some()) {
-            return Err(format!("face control vertex {v} is missing or is a corner of a face"));
-        }
-        self.face_points = Some(fcv);
-        Ok(self)
-    }
-
-    /// Attach central points to some faces (`centres[f]`: the point of face f,
-    /// if any; each a vertex of no face cycle).
-    pub fn with_face_centres(mut self, centres: Vec<Option<VertexId>>) -> Result<Self, String> {
-        if centres.len() != self.faces.len() {
-            return Err(format!("{} face centre entries for {} faces", centres.len(), self.faces.len()));
-        }
-        if let Some(&v) = centres.iter().flatten().find(|&&v| v >= self.num_vertices || self.vertex_corner[v].is_some())
+        if let Some(&v) = points.iter().flatten().find(|&&v| v >= self.num_vertices || self.vertex_corner[v].is_some())
         {
-            return Err(format!("face centre {v} is missing or is a corner of a face"));
+            return Err(format!("face point {v} is missing or is a corner of a face"));
         }
-        self.face_centres = centres;
+        self.face_points = points;
         Ok(self)
     }
 
-    /// The central point of face f, if it carries one.
-    pub fn face_centre(&self, f: FaceId) -> Option<VertexId> {
-        self.face_centres.get(f).copied().flatten()
+    /// Whether every face carries a face point (as face control vertex schemes need).
+    pub fn has_face_point_on_every_face(&self) -> bool {
+        !self.faces.is_empty()
+            && self.face_points.len() == self.faces.len()
+            && self.face_points.iter().all(Option::is_some)
     }
 
     /// Orient a closed regular quad mesh as a lattice: the first edge of face 0
@@ -203,7 +190,7 @@ impl PolyMesh {
     }
 
     /// The sub-mesh of the faces `keep`, with every per-vertex and per-face
-    /// attribute carried along (charts, FCVs, face centres, lattice directions,
+    /// attribute carried along (charts, face points, lattice directions,
     /// per-vertex parameters). Returns it and, for each new vertex, its old id.
     pub fn restrict(&self, keep: &[FaceId]) -> Result<(PolyMesh, Vec<VertexId>), String> {
         let mut id = vec![usize::MAX; self.num_vertices];
@@ -216,18 +203,14 @@ impl PolyMesh {
             id[v]
         };
         let faces: Vec<Vec<usize>> = keep.iter().map(|&f| self.faces[f].iter().map(|&v| take(v)).collect()).collect();
-        let fcv: Option<Vec<usize>> = self.face_points.as_ref().map(|p| keep.iter().map(|&f| take(p[f])).collect());
-        let centres: Vec<Option<usize>> = if self.face_centres.is_empty() {
+        let points: Vec<Option<usize>> = if self.face_points.is_empty() {
             Vec::new()
         } else {
-            keep.iter().map(|&f| self.face_centres[f].map(&mut take)).collect()
+            keep.iter().map(|&f| self.face_points[f].map(&mut take)).collect()
         };
         let mut m = PolyMesh::new(old.len(), faces).map_err(|e| e.to_string())?;
-        if let Some(fcv) = fcv {
-            m = m.with_face_points(fcv)?;
-        }
-        if !centres.is_empty() {
-            m = m.with_face_centres(centres)?;
+        if !points.is_empty() {
+            m = m.with_face_points(points)?;
         }
         m.lattice_dirs = self.lattice_dirs.as_ref().map(|d| keep.iter().map(|&f| d[f]).collect());
         m.vertex_params = self.vertex_params.as_ref().map(|p| old.iter().map(|&v| p[v]).collect());
@@ -242,7 +225,13 @@ impl PolyMesh {
 
     /// The face control vertex of face f, if the mesh carries them.
     pub fn face_point(&self, f: FaceId) -> Option<VertexId> {
-        self.face_points.as_ref().map(|p| p[f])
+        self.face_points.get(f).copied().flatten()
+    }
+
+    /// The face point of the face that holds the half-edge a -> b (the face on
+    /// its left, faces being counter-clockwise).
+    pub fn face_point_left_of(&self, a: VertexId, b: VertexId) -> Option<VertexId> {
+        self.face_point(self.half_edge(a, b)?.0)
     }
 
     pub fn num_vertices(&self) -> usize {

@@ -127,12 +127,12 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
     }
     let mut mesh = PolyMesh::new(b.chart.vertex_coords.len(), b.faces).expect("patch is a manifold disc");
     if config.face_control {
-        mesh = mesh.with_face_points(fcv).expect("one FCV per face");
+        mesh = mesh.with_face_points(fcv.into_iter().map(Some).collect()).expect("one FCV per face");
     }
     if config.centre == CentreKind::AugmentedFace {
         let mut centres = vec![None; mesh.num_faces()];
         centres[0] = centre_set.last().copied();
-        mesh = mesh.with_face_centres(centres).expect("the centre is a vertex of no face");
+        mesh = mesh.with_face_points(centres).expect("the centre is a vertex of no face");
     }
     mesh.chart = Some(b.chart);
     (mesh, centre_set)

@@ -59,8 +59,9 @@ pub fn rings(mesh: &PolyMesh, centre_set: &[usize]) -> Vec<usize> {
         frontier = next;
         k += 1;
     }
-    if let Some(fcv) = &mesh.face_points {
-        for (f, &p) in fcv.iter().enumerate() {
+    // a face point sits in the outermost ring of its face's corners
+    for (f, p) in mesh.face_points.iter().enumerate() {
+        if let Some(p) = *p {
             ring[p] = mesh.face(f).iter().map(|&v| ring[v]).max().unwrap_or(usize::MAX);
         }
     }

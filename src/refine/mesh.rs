@@ -187,7 +187,7 @@ pub fn add_face_control_vertices(
     points: &[[f64; 3]],
     scale: f64,
 ) -> Result<(PolyMesh, Vec<[f64; 3]>), String> {
-    if mesh.face_points.is_some() {
+    if mesh.has_face_point_on_every_face() {
         return Ok((mesh.clone(), points.to_vec()));
     }
     let mut pts = points.to_vec();
@@ -199,7 +199,7 @@ pub fn add_face_control_vertices(
                 c[k] += points[v][k] / face.len() as f64;
             }
         }
-        fcv.push(pts.len());
+        fcv.push(Some(pts.len()));
         pts.push([scale * c[0], scale * c[1], scale * c[2]]);
     }
     let m = PolyMesh::new(pts.len(), mesh.faces().to_vec()).map_err(|e| e.to_string())?.with_face_points(fcv)?;
@@ -210,11 +210,13 @@ pub fn add_face_control_vertices(
 /// with face control vertices: every face becomes a fan of triangles around
 /// its FCV (Huang, section 3.2.1: the two forms carry the same points).
 pub fn four_directional(mesh: &PolyMesh, points: Vec<[f64; 3]>) -> Result<(PolyMesh, Vec<[f64; 3]>), String> {
-    let fcv = mesh.face_points.as_ref().ok_or("the mesh has no face control vertices")?;
+    if !mesh.has_face_point_on_every_face() {
+        return Err("the mesh has no face control vertices".into());
+    }
     let mut faces = Vec::new();
-    for (f, face) in mesh.faces().iter().enumerate() {
+    for (face, fcv) in mesh.faces().iter().zip(mesh.face_points.iter().flatten()) {
         for k in 0..face.len() {
-            faces.push(vec![face[k], face[(k + 1) % face.len()], fcv[f]]);
+            faces.push(vec![face[k], face[(k + 1) % face.len()], *fcv]);
         }
     }
     Ok((PolyMesh::new(points.len(), faces).map_err(|e| e.to_string())?, points))

@@ -59,19 +59,16 @@ impl NonBox {
     }
 }
 
-/// The FCV of the face that holds the half-edge a -> b.
-fn fcv_of(mesh: &PolyMesh, a: usize, b: usize) -> Option<usize> {
-    mesh.face_point(mesh.half_edge(a, b)?.0)
-}
-
 impl<W: Weight> Rules<W> for NonBox {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
-        if mesh.face_points.is_none() {
+        if !mesh.has_face_point_on_every_face() {
             return Ok(None);
         }
         Ok(match origin {
             Origin::Edge(a, b) => {
-                let (Some(l), Some(r)) = (fcv_of(mesh, a, b), fcv_of(mesh, b, a)) else { return Ok(None) };
+                let (Some(l), Some(r)) = (mesh.face_point_left_of(a, b), mesh.face_point_left_of(b, a)) else {
+                    return Ok(None);
+                };
                 let q = W::ratio(1, 4);
                 Some(Stencil::new().with(a, q.clone()).with(b, q.clone()).with(l, q.clone()).with(r, q))
             }
@@ -81,7 +78,7 @@ impl<W: Weight> Rules<W> for NonBox {
                 let a: W = self.a(k)?;
                 let mut s = Stencil::new().with(v, W::one() - a.clone());
                 for cyc in &fan {
-                    let Some(p) = fcv_of(mesh, v, cyc[1]) else { return Ok(None) };
+                    let Some(p) = mesh.face_point_left_of(v, cyc[1]) else { return Ok(None) };
                     s.add(p, a.clone() / W::int(k));
                 }
                 Some(s)
@@ -100,7 +97,10 @@ impl<W: Weight> Rules<W> for NonBox {
                 let cyc = mesh.face_from(f, k);
                 let (v0, next, prev) = (cyc[0], cyc[1], cyc[cyc.len() - 1]);
                 // the two old faces at V_0 adjacent to F_0: across (V_0, next) and (prev, V_0)
-                let (Some(f1), Some(fm1)) = (fcv_of(mesh, next, v0), fcv_of(mesh, v0, prev)) else { return Ok(None) };
+                let (Some(f1), Some(fm1)) = (mesh.face_point_left_of(next, v0), mesh.face_point_left_of(v0, prev))
+                else {
+                    return Ok(None);
+                };
                 let f0 = mesh.face_point(f).expect("checked above");
                 Some(
                     Stencil::new()

@@ -115,7 +115,7 @@ impl Pgs {
     /// The central point of face f: its own point, or eq. (1) from the net.
     /// `None` when a corner does not have valence 4.
     fn centre<W: Weight>(&self, mesh: &PolyMesh, f: usize) -> Result<Option<Stencil<W>>, Inexact> {
-        if let Some(p) = mesh.face_centre(f) {
+        if let Some(p) = mesh.face_point(f) {
             return Ok(Some(Stencil::new().with(p, W::one())));
         }
         let face = mesh.face(f);
@@ -142,7 +142,7 @@ impl Pgs {
     }
 
     fn augmented(mesh: &PolyMesh, f: usize) -> bool {
-        mesh.face_centre(f).is_some() || mesh.face(f).len() != 4
+        mesh.face_point(f).is_some() || mesh.face(f).len() != 4
     }
 }
 

@@ -674,11 +674,6 @@ fn extraordinary(mesh: &PolyMesh, v: usize, size: usize, regular: usize) -> bool
     uniform_fan(mesh, v, size).is_some_and(|fan| fan.len() != regular)
 }
 
-/// The FCV of the face that holds the half-edge a -> b.
-fn fcv_of(mesh: &PolyMesh, a: usize, b: usize) -> Option<usize> {
-    mesh.face_point(mesh.half_edge(a, b)?.0)
-}
-
 impl<W: Weight> Rules<W> for UserScheme {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         match self.spec().name {
@@ -819,7 +814,7 @@ impl UserScheme {
     }
 
     fn fcv<W: Weight>(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
-        if mesh.face_points.is_none() {
+        if !mesh.has_face_point_on_every_face() {
             return Ok(None);
         }
         Ok(match origin {
@@ -828,13 +823,15 @@ impl UserScheme {
                 let n = fan.len() as i64;
                 let mut s = Stencil::new().with(v, self.w("vertex.centre", n, 0)?);
                 for (j, cyc) in fan.iter().enumerate() {
-                    let Some(p) = fcv_of(mesh, v, cyc[1]) else { return Ok(None) };
+                    let Some(p) = mesh.face_point_left_of(v, cyc[1]) else { return Ok(None) };
                     s.add(p, self.w("vertex.fcv", n, j as i64)?);
                 }
                 Some(s)
             }
             Origin::Edge(a, b) => {
-                let (Some(l), Some(r)) = (fcv_of(mesh, a, b), fcv_of(mesh, b, a)) else { return Ok(None) };
+                let (Some(l), Some(r)) = (mesh.face_point_left_of(a, b), mesh.face_point_left_of(b, a)) else {
+                    return Ok(None);
+                };
                 let ends: W = self.w("edge.ends", 4, 0)?;
                 let fcv: W = self.w("edge.fcv", 4, 0)?;
                 Some(Stencil::new().with(a, ends.clone()).with(b, ends).with(l, fcv.clone()).with(r, fcv))
@@ -855,7 +852,7 @@ impl UserScheme {
                 let (v0, next, prev) = (cyc[0], cyc[1], cyc[cyc.len() - 1]);
                 // the old faces at V_0 next to F_0: across (V_0, next) and across (prev, V_0)
                 let (Some(f1), Some(fm1), Some(f0)) =
-                    (fcv_of(mesh, next, v0), fcv_of(mesh, v0, prev), mesh.face_point(f))
+                    (mesh.face_point_left_of(next, v0), mesh.face_point_left_of(v0, prev), mesh.face_point(f))
                 else {
                     return Ok(None);
                 };

@@ -22,12 +22,12 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
     let faces = base.mesh.faces().to_vec();
     let mut centres = vec![None; faces.len()];
     for (f, centre) in centres.iter_mut().enumerate().take(mesh.num_faces()) {
-        if mesh.face_centre(f).is_some() || mesh.face(f).len() != 4 {
+        if mesh.face_point(f).is_some() || mesh.face(f).len() != 4 {
             *centre = Some(origins.len());
             origins.push(Origin::Face(f));
         }
     }
-    let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| e.to_string())?.with_face_centres(centres)?;
+    let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| e.to_string())?.with_face_points(centres)?;
     if let (Some(old), Some(mut chart)) = (mesh.chart.as_ref(), base.mesh.chart) {
         let mut ok = true;
         for o in &origins[chart.vertex_coords.len()..] {

@@ -17,7 +17,10 @@ use crate::mesh::PolyMesh;
 use crate::refine::Origin;
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
-    let fcv = mesh.face_points.as_ref().ok_or("this scheme needs a face control vertex on every face")?;
+    if !mesh.has_face_point_on_every_face() {
+        return Err("this scheme needs a face control vertex on every face".into());
+    }
+    let fcv: Vec<usize> = mesh.face_points.iter().flatten().copied().collect();
     let is_fcv: std::collections::HashSet<usize> = fcv.iter().copied().collect();
     let mut origins: Vec<Origin> = Vec::new();
     let mut vertex_id = vec![usize::MAX; mesh.num_vertices()];
@@ -52,7 +55,7 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
                 edge_id[&(face[(k + m - 1) % m], face[k])],
             ]);
             parents.push(Origin::Face(f));
-            new_fcv.push(origins.len());
+            new_fcv.push(Some(origins.len()));
             origins.push(Origin::Corner { face: f, corner: k });
         }
     }
