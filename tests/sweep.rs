@@ -148,3 +148,17 @@ fn convergent_and_admissible_intervals_match_the_closed_form() {
         assert_eq!(adm, vec![inside(adm_lo, adm_hi)], "admissible, n = {n}");
     }
 }
+
+/// The points do not depend on how many worker threads compute them.
+#[test]
+fn thread_count_does_not_change_the_points() {
+    let args = ["sweep", "non-box", "--valences", "3..9", "--param", "a=0:1:1/8", "--csv"];
+    let one = subdlab(&[&args[..], &["--threads", "1"]].concat());
+    let three = subdlab(&[&args[..], &["--threads", "3"]].concat());
+    let all = subdlab(&args);
+    assert!(one.status.success() && three.status.success() && all.status.success());
+    assert_eq!(one.stdout, three.stdout);
+    assert_eq!(one.stdout, all.stdout);
+    fails(&[&args[..], &["--threads", "5000"]].concat());
+    fails(&[&args[..], &["--threads", "-1"]].concat());
+}

@@ -323,7 +323,7 @@ pub(super) fn stencil_table(st: &crate::spectrum::stencils::Stencils) -> String 
 }
 
 fn sweep(args: &super::SweepArgs) -> Result<(), String> {
-    use crate::sweep::{admissible, convergent, run, Grid};
+    use crate::sweep::{admissible, convergent, run_on, Grid};
     let (scheme, json, csv) = (args.scheme.as_str(), args.json, args.csv);
     if json && csv {
         return Err("choose one of --json and --csv".into());
@@ -354,7 +354,7 @@ fn sweep(args: &super::SweepArgs) -> Result<(), String> {
             .progress_chars("=> "),
     );
     let progress = |done: usize, _total: usize| bar.set_position(done as u64);
-    let points = run(&grid, &progress)?;
+    let points = run_on(&grid, args.threads as usize, &progress)?;
     bar.finish_and_clear();
     let intervals = admissible(&points);
     let converging = convergent(&points);

@@ -190,6 +190,12 @@ pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
 
 /// Every point of the grid, in order, on all available cores.
 pub fn run(grid: &Grid, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Vec<Point>, String> {
+    run_on(grid, 0, progress)
+}
+
+/// Every point of the grid, in order, on `threads` worker threads (0: one per
+/// available core). The points do not depend on the thread count.
+pub fn run_on(grid: &Grid, threads: usize, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Vec<Point>, String> {
     let values: Vec<Option<String>> = match &grid.param {
         Some((_, v)) => v.iter().cloned().map(Some).collect(),
         None => vec![None],
@@ -199,7 +205,8 @@ pub fn run(grid: &Grid, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Vec<
     if tasks.len() > MAX_POINTS {
         return Err(format!("{} grid points, above the supported {MAX_POINTS}", tasks.len()));
     }
-    let threads = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1).min(tasks.len().max(1));
+    let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
+    let threads = if threads == 0 { cores } else { threads }.min(tasks.len().max(1));
     let next = std::sync::atomic::AtomicUsize::new(0);
     let done = std::sync::atomic::AtomicUsize::new(0);
     let mut out: Vec<Option<Point>> = vec![None; tasks.len()];
