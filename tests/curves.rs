@@ -171,6 +171,32 @@ fn unified_mask_is_the_blend_of_bspline_and_four_point() {
     }
 }
 
+/// The Laurent-polynomial C¹ test (`curves::smoothness`), against symbols
+/// factored by hand. Four-point: a(z) = (1 + z)^4 (−1 + 4z − z²)/16 (expand:
+/// −1, 0, 9, 16, 9, 0, −1 over 16), so b = 2a/(1 + z)² = (−1, 2, 6, 2, −1)/8,
+/// whose one-step norm max(1 + 6 + 1, 2 + 2)/8 = 1 is not below 1. Cubic
+/// B-spline: b = (1, 2, 1)/4, norm 1/2. The blend at α = 1/2 (section 3's
+/// rules): b = (1 + z)² ((z/8) + (−1 + 4z − z²)/16) = (−1, 4, 10, 4, −1)/16,
+/// norm max(12, 8)/16 = 3/4.
+#[test]
+fn c1_by_laurent_polynomials() {
+    use subdlab::curves::smoothness::{c1_test, power_norm, symbol};
+    let four: CurveMask<Rational> = mask("four-point", None);
+    assert_eq!(symbol(&four), [-1, 0, 9, 16, 9, 0, -1].iter().map(|&k| q(k, 16)).collect::<Vec<_>>());
+    let b4: Vec<Rational> = [-1, 2, 6, 2, -1].iter().map(|&k| q(k, 8)).collect();
+    assert_eq!(power_norm(&b4, 1), q(1, 1));
+    let (steps, norms) = c1_test(&four, 8).unwrap();
+    assert_eq!(norms[0], q(1, 1));
+    assert!(steps.is_some_and(|l| l >= 2), "the four-point scheme is C¹, with more than one step");
+    let (steps, norms) = c1_test(&mask("cubic-bspline", None), 8).unwrap();
+    assert_eq!((steps, norms), (Some(1), vec![q(1, 2)]));
+    let (steps, norms) = c1_test(&mask("unified-curve", Some("1/2")), 8).unwrap();
+    assert_eq!((steps, norms), (Some(1), vec![q(3, 4)]));
+    // a mask that does not reproduce linear functions is reported, not tested
+    let skewed = CurveMask { even: vec![(0, q(1, 1))], odd: vec![(0, q(1, 4)), (1, q(3, 4))] };
+    assert!(c1_test(&skewed, 4).is_err());
+}
+
 /// A small deterministic generator (64-bit LCG) for random rational data.
 struct Lcg(u64);
 impl Lcg {

@@ -965,3 +965,107 @@ fn lemma_3_2_ridges() {
         assert!((first + printed).abs() < 1e-12 && first.abs() > 1e-3);
     }
 }
+
+/// Lemma 3.3's matrices on L = [−3, 3] × [−3, 4] (the paper's grid: quads on
+/// x ≤ 0, triangles with diagonal (1, 1) on x ≥ 0), derived by hand on the
+/// linear part. The rules reproduce linear functions in the parametrisation
+/// of `transition_rules_reproduce_linear_functions_and_figure_8_stencils`,
+/// which on this grid is X = x, Y = y − max(x, 0)/2 (the triangle side sheared
+/// by (x, y) ↦ (x, y − x/2)). S maps coarse samples at p to fine samples at p
+/// (coarse position p/2), so S·1 = 1, S·X = X/2, S·Y = Y/2; S⁺ samples at
+/// (p + (0, 1))/2, so S⁺·X = X/2 and S⁺·Y = (Y + 1)/2. Hence the 1/2
+/// eigenvector of S⁺ near Y is Y − 1 (c = −2m, m = 1/2), and Y + m·1, which
+/// the proof prints, is not one (claim ps.lemma3.3-shifted-eigenvectors).
+#[test]
+fn lemma_3_3_transition_strip_linear_part() {
+    use subdlab::spectrum::strip::{action_on, window_matrices};
+    let s = four_three(None);
+    let config = Configuration::with_faces(s.as_ref(), 5, "QQTTT").unwrap();
+    let spokes = [[0, 1], [-1, 0], [0, -1], [1, 0], [1, 1]];
+    let window: Vec<[i64; 2]> = (-3..=4).flat_map(|y| (-3..=3).map(move |x| [x, y])).collect();
+    let m = window_matrices(s.as_ref(), &config, &spokes, &window, &[[0, 0], [0, 1]]).unwrap();
+    let (s43, sp) = (&m[0], &m[1]);
+    assert_eq!(s43.len(), 56);
+    let apply = |a: &[Vec<Rational>], v: &[Rational]| -> Vec<Rational> {
+        a.iter().map(|row| row.iter().zip(v).fold(q(0, 1), |acc, (w, x)| acc + w * x)).collect()
+    };
+    let one: Vec<Rational> = window.iter().map(|_| q(1, 1)).collect();
+    let x: Vec<Rational> = window.iter().map(|p| q(p[0], 1)).collect();
+    let y: Vec<Rational> = window.iter().map(|p| q(2 * p[1] - p[0].max(0), 2)).collect();
+    let half = |v: &[Rational]| v.iter().map(|t| t * q(1, 2)).collect::<Vec<_>>();
+    assert_eq!(apply(s43, &one), one);
+    assert_eq!(apply(s43, &x), half(&x));
+    assert_eq!(apply(s43, &y), half(&y));
+    assert_eq!(apply(sp, &one), one);
+    assert_eq!(apply(sp, &x), half(&x));
+    let y_plus_one: Vec<Rational> = y.iter().map(|t| (t + q(1, 1)) * q(1, 2)).collect();
+    assert_eq!(apply(sp, &y), y_plus_one);
+    // in the basis (1, X, Y) S⁺ acts as [[1, 0, 1/2], [0, 1/2, 0], [0, 0, 1/2]]
+    let a = action_on(sp, &[one.clone(), x.clone(), y.clone()]).unwrap();
+    assert_eq!(a[0], vec![q(1, 1), q(0, 1), q(1, 2)]);
+    let printed: Vec<Rational> = y.iter().map(|t| t + q(1, 2)).collect();
+    assert_ne!(apply(sp, &printed), half(&printed), "Y + m·1 is not a 1/2-eigenvector of S⁺");
+    let true_one: Vec<Rational> = y.iter().map(|t| t - q(1, 1)).collect();
+    assert_eq!(apply(sp, &true_one), half(&true_one), "Y − 2m·1 is");
+}
+
+/// Lemma 3.8's statement (the surface, not only the proof's step two) along
+/// a path independent of `refine::mesh::composite_weights` and of the
+/// analysed limit stencils: refine the closed mesh mixed-quads.obj three times
+/// with (4a') blended in (eon_quad_term = 1, σ0 = 3) on unit data, and take
+/// limits at valence-4 quad vertices whose 2-ring is all valence-4 quad
+/// vertices (their later refinement uses the A_4 rules only). The A_4 limit
+/// stencil, derived by hand as the left eigenvector of the rules (1a), (1b)
+/// and the face point: centre 5/12, edge neighbours 1/8, diagonal neighbours
+/// 1/48 (check: 5/12·1/2 + 4·1/8·6/16 + 4·1/48·1/4 = 5/12; an edge neighbour
+/// gets 5/12·1/8 + 1/8·6/16 + 2·1/8·1/16 + 2·1/48·1/4 = 1/8; a diagonal one
+/// 2·1/8·1/16 + 1/48·1/4 = 1/48). Some limit weight on an input vertex is
+/// negative: that limit point leaves the convex hull when the input vertex
+/// is moved away.
+#[test]
+fn lemma_3_8_convex_hull_fails_in_the_limit() {
+    let (m, _) = load("mixed-quads.obj");
+    let s = schemes::build("four-three", &[("eon_quad_term".into(), "1".into())]).unwrap();
+    let nv = m.num_vertices();
+    // composite weights: weights[v][src], three sources per refinement (one per coordinate)
+    let mut weights: Vec<Vec<f64>> = Vec::new();
+    let mut fine = None;
+    for first in (0..nv).step_by(3) {
+        let unit: Vec<[f64; 3]> = (0..nv).map(|v| [0, 1, 2].map(|c| f64::from(u8::from(v == first + c)))).collect();
+        let (r, out) = refine_mesh(s.as_ref(), &m, &unit, 3).unwrap();
+        if weights.is_empty() {
+            weights = vec![vec![0.0; nv]; out.len()];
+        }
+        for (v, p) in out.iter().enumerate() {
+            for c in 0..3 {
+                if first + c < nv {
+                    weights[v][first + c] = p[c];
+                }
+            }
+        }
+        fine = Some(r);
+    }
+    let r = fine.unwrap();
+    let regular = |v: usize| r.vertex_fan(v).is_some_and(|f| f.len() == 4 && f.iter().all(|x| x.len() == 4));
+    let mut min = f64::MAX;
+    let mut checked = 0;
+    for u in 0..r.num_vertices() {
+        let Some(fan) = r.vertex_fan(u) else { continue };
+        let ring: Vec<usize> = fan.iter().flat_map(|f| f[1..].to_vec()).collect();
+        let two_ring_regular = regular(u)
+            && ring.iter().all(|&v| regular(v) && r.vertex_fan(v).unwrap().iter().flatten().all(|&w| regular(w)));
+        if !two_ring_regular {
+            continue;
+        }
+        checked += 1;
+        let mut limit: Vec<f64> = weights[u].iter().map(|w| 5.0 / 12.0 * w).collect();
+        for f in &fan {
+            for (l, (e, d)) in limit.iter_mut().zip(weights[f[1]].iter().zip(&weights[f[2]])) {
+                *l += e / 8.0 + d / 48.0;
+            }
+        }
+        min = limit.into_iter().fold(min, f64::min);
+    }
+    assert!(checked > 1000, "{checked} limit points");
+    assert!(min < -1e-4, "most negative limit weight {min}");
+}

@@ -1,7 +1,8 @@
 //! `subdlab verify`: the built-in registry's verdicts are regression-tested
 //! against the verdicts each claim file records (each of them derived and
 //! tested independently elsewhere: tests/non_box*.rs, khan_mustafa.rs,
-//! lin_luo_statements.rs, four_three.rs, pgs.rs, tps.rs, polar_bi2.rs), and
+//! lin_luo_statements.rs, curves.rs, four_three.rs, pgs.rs, tps.rs,
+//! polar_bi2.rs; the identity claims carry their own derivation), and
 //! users' own claim files drive the exit status.
 
 mod common;

@@ -6,8 +6,10 @@ use super::Verdict;
 use crate::neighbourhood::{build_patch, Configuration};
 use crate::numeric::exact::{q, QMatrix};
 use crate::numeric::Rational;
+use crate::refine::mesh::CompositeRows;
 use crate::schemes::{self, SchemeWeight};
-use crate::spectrum::{analyse, Options};
+use crate::spectrum::{analyse, fmt_f, Options};
+use num_traits::Zero;
 
 type Result4 = Result<(Verdict, String, String, String), String>;
 
@@ -16,6 +18,19 @@ pub fn run(name: &str, data: Option<&toml::Value>) -> Result4 {
         "nonbox.vector-mask" => nonbox_vector_mask(data.ok_or("needs data.cells")?),
         "nonbox.negative-eigenvalues" => nonbox_negative_eigenvalues(),
         "linluo.section6" => linluo_section6(),
+        "lattice.fit-masks" => lattice_fit_masks(need(data)?),
+        "strip.defective" => strip_defective(need(data)?),
+        "strip.structure" => strip_structure(need(data)?),
+        "strip.shifted-eigenvectors" => strip_shifted_eigenvectors(need(data)?),
+        "strip.jsr" => strip_jsr(need(data)?),
+        "window.polynomials" => window_polynomials(need(data)?),
+        "fourthree.lemma3.4" => fourthree_lemma_3_4(),
+        "fourthree.step-two-weights" => fourthree_step_two(need(data)?),
+        "fourthree.convex-hull" => fourthree_convex_hull(need(data)?),
+        "fourthree.node-counts" => fourthree_node_counts(need(data)?),
+        "matrix.nonnegative" => matrix_nonnegative(need(data)?),
+        "curve.relation3" => curve_relation3(),
+        "curve.c1-laurent" => curve_c1_laurent(need(data)?),
         other => Err(format!("no built-in check named '{other}'")),
     }
 }
@@ -145,5 +160,721 @@ fn linluo_section6() -> Result4 {
         "λ0 = 1, λ1 = λ2 (real) > |λ3| (= |λ4| for n > 3) for α ∈ [0, 2]".into(),
         format!("{} of {checked} cases (α ∈ {{0, 1/2, 1, 3/2, 2}}, n = 3..8) fail", failures.len()),
         failures.iter().take(8).cloned().collect::<Vec<_>>().join("; "),
+    ))
+}
+
+// ---------------------------------------------------------------- data helpers
+
+fn need(data: Option<&toml::Value>) -> Result<&toml::Value, String> {
+    data.ok_or_else(|| "this check needs `data`".to_string())
+}
+
+fn field<'a>(data: &'a toml::Value, key: &str) -> Result<&'a toml::Value, String> {
+    data.get(key).ok_or_else(|| format!("data.{key} is missing"))
+}
+
+fn text<'a>(data: &'a toml::Value, key: &str) -> Result<&'a str, String> {
+    field(data, key)?.as_str().ok_or_else(|| format!("data.{key} must be a string"))
+}
+
+fn int(v: &toml::Value, what: &str) -> Result<i64, String> {
+    v.as_integer().ok_or_else(|| format!("{what} must be an integer"))
+}
+
+fn ints(data: &toml::Value, key: &str) -> Result<Vec<i64>, String> {
+    field(data, key)?
+        .as_array()
+        .ok_or_else(|| format!("data.{key} must be a list of integers"))?
+        .iter()
+        .map(|x| int(x, &format!("data.{key}")))
+        .collect()
+}
+
+fn exact(s: &str) -> Result<Rational, String> {
+    crate::numeric::expr::Expr::parse(s)?
+        .exact(&Default::default())
+        .ok_or_else(|| format!("'{s}' is not an exact rational"))
+}
+
+/// Scheme parameters from a table of strings.
+fn params(data: &toml::Value, key: &str) -> Result<Vec<(String, String)>, String> {
+    match data.get(key) {
+        None => Ok(Vec::new()),
+        Some(t) => t
+            .as_table()
+            .ok_or_else(|| format!("data.{key} must be a table"))?
+            .iter()
+            .map(|(k, v)| {
+                v.as_str().map(|s| (k.clone(), s.to_string())).ok_or_else(|| format!("data.{key}.{k}: a string"))
+            })
+            .collect(),
+    }
+}
+
+/// The configuration with face sequence `faces` (its length is the valence;
+/// schemes without face sequences take the regular one of that valence).
+fn configuration(scheme: &dyn schemes::Scheme, faces: &str) -> Result<Configuration, String> {
+    if scheme.face_sequences() {
+        Configuration::with_faces(scheme, faces.len(), faces)
+    } else {
+        Configuration::regular(scheme, faces.len())
+    }
+}
+
+fn verdict(holds: bool) -> Verdict {
+    if holds {
+        Verdict::Holds
+    } else {
+        Verdict::Refuted
+    }
+}
+
+// ---------------------------------------------------------------- Khan–Mustafa: rules from a fit
+
+/// The printed rules against the exact least-squares fit of span{x^a y^b}
+/// (`monomials`) to the grid {lo..hi}², evaluated at the new points (α/2, β/2).
+/// `rules` lists the four printed masks in the order p_{2i,2j}, p_{2i+1,2j},
+/// p_{2i,2j+1}, p_{2i+1,2j+1}; mask[r − lo][s − lo] is the numerator (over
+/// `denominator`) of the weight of p_{i+r, j+s}.
+fn lattice_fit_masks(data: &toml::Value) -> Result4 {
+    use crate::lattice::fit::{derive_masks, grid, least_squares};
+    let monomials: Vec<(u32, u32)> = field(data, "monomials")?
+        .as_array()
+        .ok_or("data.monomials: a list of [a, b] exponents")?
+        .iter()
+        .map(|m| {
+            let e = m.as_array().filter(|e| e.len() == 2).ok_or("each monomial is [a, b]")?;
+            Ok((int(&e[0], "an exponent")? as u32, int(&e[1], "an exponent")? as u32))
+        })
+        .collect::<Result<_, String>>()?;
+    let (lo, hi) = (int(field(data, "lo")?, "data.lo")?, int(field(data, "hi")?, "data.hi")?);
+    let den = Rational::from_integer(int(field(data, "denominator")?, "data.denominator")?.into());
+    let rules = field(data, "rules")?.as_array().filter(|r| r.len() == 4).ok_or("data.rules: four masks")?;
+    let size = (hi - lo + 1) as usize;
+    let derived = derive_masks(&monomials, &grid(lo, hi), &q(1, 1))?;
+    let samples: Vec<(Rational, Rational)> = grid(lo, hi)
+        .iter()
+        .map(|&(r, s)| (Rational::from_integer(r.into()), Rational::from_integer(s.into())))
+        .collect();
+    let interpolates = least_squares(&monomials, &samples)?.interpolates();
+    let names = ["p_{2i,2j}", "p_{2i+1,2j}", "p_{2i,2j+1}", "p_{2i+1,2j+1}"];
+    let mut diffs = Vec::new();
+    for (k, &(a, b)) in [(0usize, 0usize), (1, 0), (0, 1), (1, 1)].iter().enumerate() {
+        let rows = rules[k].as_array().filter(|r| r.len() == size).ok_or("each mask is a square grid")?;
+        for (ri, row) in rows.iter().enumerate() {
+            let row = row.as_array().filter(|r| r.len() == size).ok_or("each mask is a square grid")?;
+            for (si, x) in row.iter().enumerate() {
+                let printed = Rational::from_integer(int(x, "a mask entry")?.into()) / &den;
+                let (r, s) = (lo + ri as i64, lo + si as i64);
+                let fit = derived[a][b].iter().find(|e| e.0 == (r, s)).map(|e| e.1.clone()).unwrap_or_default();
+                if printed != fit {
+                    diffs.push(format!("{}: p_{{i{r:+},j{s:+}}} printed {printed}, fit {fit}", names[k]));
+                }
+            }
+        }
+    }
+    Ok((
+        verdict(diffs.is_empty()),
+        format!("4 printed masks on the {size}×{size} grid"),
+        if diffs.is_empty() {
+            "every weight is the least-squares fit's".into()
+        } else {
+            format!("{} weights differ from the least-squares fit", diffs.len())
+        },
+        format!(
+            "exact least squares of {} monomials on {} points ({}); {}",
+            monomials.len(),
+            size * size,
+            if interpolates { "the fit interpolates" } else { "more points than monomials: a fit, not an interpolant" },
+            if diffs.is_empty() { "all weights agree".into() } else { diffs.join("; ") }
+        ),
+    ))
+}
+
+// ---------------------------------------------------------------- Peters–Shiue: the 4-3 transition strip
+
+struct Strip {
+    s: Vec<Vec<Rational>>,
+    s_plus: Vec<Vec<Rational>>,
+    leading: Vec<Rational>,
+    window: String,
+}
+
+/// S (window to the same positions) and S⁺ (shifted by `shift`) on the window
+/// [x0, x1] × [y0, y1] of the planar lattice around the node `faces`.
+fn strip(data: &toml::Value) -> Result<Strip, String> {
+    use crate::spectrum::strip::window_matrices;
+    let scheme = schemes::build(text(data, "scheme")?, &params(data, "params")?)?;
+    let faces = text(data, "faces")?;
+    let config = configuration(scheme.as_ref(), faces)?;
+    let spokes: Vec<[i64; 2]> = field(data, "spokes")?
+        .as_array()
+        .ok_or("data.spokes: a list of [x, y]")?
+        .iter()
+        .map(|p| {
+            let v = p.as_array().filter(|v| v.len() == 2).ok_or("each spoke is [x, y]")?;
+            Ok([int(&v[0], "a spoke")?, int(&v[1], "a spoke")?])
+        })
+        .collect::<Result<_, String>>()?;
+    let w = ints(data, "window")?;
+    let t = ints(data, "shift")?;
+    if w.len() != 4 || t.len() != 2 {
+        return Err("data.window is [x0, x1, y0, y1] and data.shift is [dx, dy]".into());
+    }
+    let window: Vec<[i64; 2]> = (w[2]..=w[3]).flat_map(|y| (w[0]..=w[1]).map(move |x| [x, y])).collect();
+    let mut m = window_matrices(scheme.as_ref(), &config, &spokes, &window, &[[0, 0], [t[0], t[1]]])?;
+    let s_plus = m.pop().expect("two matrices");
+    let s = m.pop().expect("two matrices");
+    let leading = field(data, "leading")?
+        .as_array()
+        .ok_or("data.leading: eigenvalues as strings")?
+        .iter()
+        .map(|v| v.as_str().ok_or_else(|| "data.leading: strings".to_string()).and_then(exact))
+        .collect::<Result<_, _>>()?;
+    let label = format!("L = [{}, {}] × [{}, {}] ({} points)", w[0], w[1], w[2], w[3], window.len());
+    Ok(Strip { s, s_plus, leading, window: label })
+}
+
+/// Lemma 3.3: "V ... corresponding to the integer grid L is not of full rank":
+/// S on L has fewer independent eigenvectors than points (a defective eigenvalue).
+fn strip_defective(data: &toml::Value) -> Result4 {
+    let st = strip(data)?;
+    let n = st.s.len();
+    let (spec, irrational) = crate::spectrum::strip::rational_spectrum(&st.s)?;
+    if irrational > 0 {
+        return Err(format!("{irrational} eigenvalues are not rational; geometric multiplicities not decided"));
+    }
+    let rank: usize = spec.iter().map(|e| e.2).sum();
+    let defective: Vec<String> =
+        spec.iter().filter(|e| e.2 < e.1).map(|e| format!("{} (algebraic {}, geometric {})", e.0, e.1, e.2)).collect();
+    let all: Vec<String> = spec.iter().map(|e| format!("{}^{}", e.0, e.1)).collect();
+    Ok((
+        verdict(rank < n),
+        format!("the eigenvectors of S on {} do not span R^{n}", st.window),
+        format!("{rank} independent eigenvectors for {n} points"),
+        format!(
+            "exact spectrum {}; defective: {}",
+            all.join(" "),
+            if defective.is_empty() { "none".into() } else { defective.join(", ") }
+        ),
+    ))
+}
+
+fn eigenbasis(st: &Strip) -> Result<Vec<Vec<Rational>>, String> {
+    let basis = crate::spectrum::strip::exact_eigenvectors(&st.s, &st.leading);
+    if basis.len() != st.leading.len() {
+        return Err(format!(
+            "the leading eigenvalues have {} independent eigenvectors, not {}",
+            basis.len(),
+            st.leading.len()
+        ));
+    }
+    Ok(basis)
+}
+
+/// Lemma 3.3: V⁻¹ S⁺ V is block upper triangular: the span of the leading
+/// eigenvectors of S is invariant under S⁺, which acts on it upper
+/// triangularly with the same diagonal (1, 1/2, 1/2, d = I/4), and the rest
+/// (Q⁺) is of the remaining size.
+fn strip_structure(data: &toml::Value) -> Result4 {
+    let st = strip(data)?;
+    let basis = eigenbasis(&st)?;
+    let k = basis.len();
+    let Some(a) = crate::spectrum::strip::action_on(&st.s_plus, &basis) else {
+        return Ok((
+            Verdict::Refuted,
+            "V⁻¹ S⁺ V = [[1, m1, m2, *], [0, 1/2, 0, *], [0, 0, 1/2, *], [0, 0, 0, d], Q⁺], d = I/4".into(),
+            "the span of the leading eigenvectors of S is not invariant under S⁺".into(),
+            "exact: [W | S⁺ W] has rank above that of W".into(),
+        ));
+    };
+    let mut bad = Vec::new();
+    for (i, row) in a.iter().enumerate() {
+        for (j, x) in row.iter().enumerate() {
+            let want_zero = j < i || (i != j && st.leading[i] == st.leading[j] && i > 0);
+            if i == j && *x != st.leading[i] {
+                bad.push(format!("diagonal {i}: {x}, not {}", st.leading[i]));
+            } else if want_zero && !x.is_zero() {
+                bad.push(format!("({i}, {j}) = {x}, not 0"));
+            }
+        }
+    }
+    let shown: Vec<String> =
+        a.iter().map(|r| format!("[{}]", r.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", "))).collect();
+    Ok((
+        verdict(bad.is_empty()),
+        format!(
+            "on {}: V⁻¹ S⁺ V upper block triangular with diagonal ({}), Q⁺ of size {}",
+            st.window,
+            st.leading.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(", "),
+            st.s.len() - k
+        ),
+        format!("S⁺ on the leading eigenvectors: {}", shown.join(", ")),
+        if bad.is_empty() {
+            format!(
+                "exact: the span is invariant under S⁺ and the action has the printed form; Q⁺ is {0}×{0}",
+                st.s.len() - k
+            )
+        } else {
+            bad.join("; ")
+        },
+    ))
+}
+
+/// Lemma 3.3: "the eigenvectors of S⁺ corresponding to 1/2 are simply v1 + m1 v0
+/// and v2 + m2 v0" (m_i the first row of V⁻¹ S⁺ V). With S⁺ v_i = m_i v0 + v_i/2
+/// the eigenvector is v_i − 2 m_i v0; v_i + m_i v0 is one only where m_i = 0.
+fn strip_shifted_eigenvectors(data: &toml::Value) -> Result4 {
+    let st = strip(data)?;
+    let basis = eigenbasis(&st)?;
+    let a = crate::spectrum::strip::action_on(&st.s_plus, &basis)
+        .ok_or("the leading eigenvectors are not invariant under S⁺")?;
+    let half = q(1, 2);
+    let mut out = Vec::new();
+    let mut all = true;
+    for i in 1..basis.len() {
+        if st.leading[i] != half {
+            continue;
+        }
+        let m = a[0][i].clone();
+        let x: Vec<Rational> = basis[i].iter().zip(&basis[0]).map(|(v, v0)| v + &m * v0).collect();
+        let y: Vec<Rational> =
+            st.s_plus.iter().map(|row| row.iter().zip(&x).fold(Rational::zero(), |acc, (w, z)| acc + w * z)).collect();
+        let ok = y.iter().zip(&x).all(|(a, b)| *a == &half * b);
+        all &= ok;
+        out.push(format!(
+            "v{i}: m{i} = {m}, v{i} + m{i} v0 {} (S⁺ (v{i} + c v0) = (v{i} + c v0)/2 needs c = −2 m{i} = {})",
+            if ok { "is an eigenvector" } else { "is not an eigenvector" },
+            -(q(2, 1) * &m)
+        ));
+    }
+    Ok((
+        verdict(all),
+        "the 1/2-eigenvectors of S⁺ are v_i + m_i v0".into(),
+        out.join("; "),
+        "exact, in the leading eigenvectors of S (the statement does not depend on their scaling)".into(),
+    ))
+}
+
+/// Lemma 3.3: ρ^[k](Q⁴³, Q⁺) < bound, Q the action of S and S⁺ modulo the
+/// leading eigenvectors (an orthonormal complement stands for the paper's
+/// unspecified remaining columns of V; ρ^[k] depends on that basis, the joint
+/// spectral radius it bounds does not).
+fn strip_jsr(data: &toml::Value) -> Result4 {
+    use crate::spectrum::strip::{jsr_bounds, orthogonal_complement, to_f64};
+    let st = strip(data)?;
+    let basis = eigenbasis(&st)?;
+    let n = st.s.len();
+    if crate::spectrum::strip::action_on(&st.s_plus, &basis).is_none() {
+        return Err("the leading eigenvectors are not invariant under S⁺: Q⁺ is not defined".into());
+    }
+    let length = int(field(data, "length")?, "data.length")? as usize;
+    let bound = crate::numeric::Weight::to_f64(&exact(text(data, "bound")?)?);
+    let w = faer::Mat::from_fn(n, basis.len(), |i, j| crate::numeric::Weight::to_f64(&basis[j][i]));
+    let c = orthogonal_complement(&w)?;
+    let (s, sp) = (to_f64(&st.s), to_f64(&st.s_plus));
+    let q43 = c.transpose() * &s * &c;
+    let qp = c.transpose() * &sp * &c;
+    let b = jsr_bounds(&[q43, qp], length, 4)?;
+    let word: Vec<&str> = b.lower_word.iter().rev().map(|&k| if k == 0 { "Q43" } else { "Q+" }).collect();
+    Ok((
+        if b.upper < bound {
+            Verdict::Holds
+        } else if b.lower >= bound {
+            Verdict::Refuted
+        } else {
+            Verdict::Inconclusive
+        },
+        format!("ρ^[{length}](Q43, Q+) < {bound} (Q of size {})", n - basis.len()),
+        format!("ρ^[{length}] = {} (upper bound); lower bound {} from {}", fmt_f(b.upper), fmt_f(b.lower), word.join("·")),
+        format!(
+            "every product of {length} factors in the ∞-norm, Q in an orthonormal basis of the complement of the {} leading eigenvectors; so ρ(Y43, Y+) = max(ρ(d), ρ(Q)) = {}",
+            basis.len(),
+            if b.upper < bound { format!("{bound}") } else { "undecided".into() }
+        ),
+    ))
+}
+
+// ---------------------------------------------------------------- Peters–Shiue: M, E, C and the convex hull
+
+/// Lemma 3.4 for n = 3..16: E + C is a projection, (E + C)² = E + C, C² = C,
+/// Ce = 0, eeᵗ = nE, eᵗe = n, Ee = e, EE = E; and "C is of rank 2 and E + C of
+/// rank 3" (singular values).
+fn fourthree_lemma_3_4() -> Result4 {
+    let mut worst: f64 = 0.0;
+    let mut ranks = Vec::new();
+    for n in 3..=16usize {
+        let nf = n as f64;
+        let e = faer::Mat::<f64>::from_fn(n, n, |_, _| 1.0 / nf);
+        let c = faer::Mat::<f64>::from_fn(n, n, |i, j| {
+            2.0 / nf * (std::f64::consts::TAU * (i as f64 - j as f64) / nf).cos()
+        });
+        let ec = &e + &c;
+        let ones = faer::Mat::<f64>::from_fn(n, 1, |_, _| 1.0);
+        let diff = |a: &faer::Mat<f64>, b: &faer::Mat<f64>| (a - b).norm_max();
+        worst = worst
+            .max(diff(&(&ec * &ec), &ec))
+            .max(diff(&(&c * &c), &c))
+            .max((&c * &ones).norm_max())
+            .max(diff(&(&ones * ones.transpose()), &(&e * nf)))
+            .max(((ones.transpose() * &ones)[(0, 0)] - nf).abs())
+            .max(diff(&(&e * &ones), &ones))
+            .max(diff(&(&e * &e), &e));
+        let rank = |m: &faer::Mat<f64>| -> Result<usize, String> {
+            Ok(m.singular_values().map_err(|e| format!("{e:?}"))?.iter().filter(|s| **s > 1e-9).count())
+        };
+        ranks.push((n, rank(&c)?, rank(&ec)?));
+    }
+    let ranks_ok = ranks.iter().all(|r| r.1 == 2 && r.2 == 3);
+    let holds = worst < 1e-12 && ranks_ok;
+    Ok((
+        verdict(holds),
+        "(E + C)² = E + C, C² = C, Ce = 0, eeᵗ = nE, eᵗe = n, Ee = e, EE = E; rank C = 2, rank (E + C) = 3".into(),
+        format!(
+            "largest deviation {:.1e} over n = 3..16; ranks (C, E + C) {}",
+            worst,
+            if ranks_ok { "2, 3 at every n".to_string() } else { format!("{ranks:?}") }
+        ),
+        "C_ij = (2/n) cos(2π(i − j)/n), E_ij = 1/n, floating point".into(),
+    ))
+}
+
+/// The eon configuration `faces` of 4-3 subdivision on a patch, refined with the
+/// rules of steps 1..=`steps` (σ-blended, (4a') with share `eon_quad_term`).
+type Patch = (Box<dyn schemes::Scheme>, crate::mesh::PolyMesh, crate::mesh::PolyMesh, CompositeRows);
+
+fn fourthree_patch(data: &toml::Value, steps: usize) -> Result<Patch, String> {
+    let scheme = schemes::build("four-three", &params(data, "params")?)?;
+    let faces = text(data, "faces")?;
+    let config = Configuration::with_faces(scheme.as_ref(), faces.len(), faces)?;
+    let rings = int(field(data, "rings")?, "data.rings")? as usize;
+    let (patch, _) = build_patch(&config, rings);
+    let (fine, rows) = crate::refine::mesh::composite_weights(scheme.as_ref(), &patch, 1..=steps)?;
+    Ok((scheme, patch, fine, rows))
+}
+
+fn coord(mesh: &crate::mesh::PolyMesh, v: usize) -> String {
+    match mesh.chart.as_ref() {
+        Some(c) => {
+            let x = c.vertex_coords[v];
+            format!("(sector {}, {}, {})", x.sector, x.i, x.j)
+        }
+        None => format!("#{v}"),
+    }
+}
+
+/// Lemma 3.8's proof: after the second step (regular rules in step 1, half
+/// (4b) and half (4a') in step 2) every weight of an old node in a new node is
+/// non-negative. The most negative composite weight on the patch.
+fn fourthree_step_two(data: &toml::Value) -> Result4 {
+    let (_, patch, fine, rows) = fourthree_patch(data, 2)?;
+    let mut worst = (f64::INFINITY, String::new());
+    for (v, r) in rows.iter().enumerate() {
+        for (u, w) in r.iter().flat_map(|r| r.entries.iter()) {
+            if *w < worst.0 {
+                worst = (*w, format!("new node {} on old node {}", coord(&fine, v), coord(&patch, *u)));
+            }
+        }
+    }
+    Ok((
+        verdict(worst.0 >= -1e-12),
+        "after two steps every contribution of an old node to a new node is non-negative".into(),
+        format!("most negative composite weight {} ({})", fmt_f(worst.0), worst.1),
+        format!(
+            "eon {} with the σ-blended rules of steps 1 and 2, composed exactly as a mesh refinement does",
+            text(data, "faces")?
+        ),
+    ))
+}
+
+/// Lemma 3.8: with (4a') blended in over steps σ ≤ σ0 the surface lies in the
+/// convex hull of its control points. A limit point with a negative weight on
+/// a control point leaves the hull for suitable data. Limit points of nodes u
+/// of the step-σ0 net that are regular (4 quads or 6 triangles) and at least 3
+/// lattice steps from the eon: later steps around u use regular rules only, so
+/// the limit is the regular limit stencil (computed from the scheme on the
+/// regular configuration) applied to u and its neighbours.
+fn fourthree_convex_hull(data: &toml::Value) -> Result4 {
+    use crate::schemes::four_three::{classify, NodeType};
+    use crate::spectrum::stencils::limit_stencil;
+    let steps = int(field(data, "steps")?, "data.steps")? as usize;
+    let (scheme, patch, fine, rows) = fourthree_patch(data, steps)?;
+    // regular limit stencils: weights of the centre, its edge neighbours and (quads) its diagonal neighbours
+    let regular = |faces: &str| -> Result<(f64, f64, f64), String> {
+        let config = Configuration::with_faces(scheme.as_ref(), faces.len(), faces)?;
+        let a = analyse(scheme.as_ref(), &config, &Options { exact: false, ..Options::default() })?;
+        let l = limit_stencil(&a.spectrum)?;
+        let (mut c, mut e, mut d) = (None::<f64>, None::<f64>, None::<f64>);
+        for (w, lab) in l.iter().zip(&a.spectrum.labels) {
+            use crate::neighbourhood::VertexKind as K;
+            let slot = match (lab.kind, lab.ring) {
+                (K::Centre, _) => &mut c,
+                (K::Edge, 1) => &mut e,
+                (K::Face, 1) => &mut d,
+                _ if w.abs() < 1e-12 => continue,
+                _ => return Err(format!("the regular limit stencil of {faces} reaches {}", lab.name)),
+            };
+            if slot.is_some_and(|x| (x - w).abs() > 1e-12) {
+                return Err(format!("the regular limit stencil of {faces} is not symmetric"));
+            }
+            *slot = Some(*w);
+        }
+        Ok((c.unwrap_or(0.0), e.unwrap_or(0.0), d.unwrap_or(0.0)))
+    };
+    let quad = regular("QQQQ")?;
+    let tri = regular("TTTTTT")?;
+    let chart = fine.chart.as_ref().ok_or("no chart")?;
+    let mut worst = (f64::INFINITY, String::new());
+    let mut count = 0;
+    'nodes: for u in 0..fine.num_vertices() {
+        let c = chart.vertex_coords[u];
+        if c.i + c.j < 3 {
+            continue;
+        }
+        let Some((fan, t)) = classify(&fine, u) else { continue };
+        let (wc, we, wd) = match t {
+            NodeType::RegularQuad => quad,
+            NodeType::RegularTri => tri,
+            _ => continue,
+        };
+        let mut terms: Vec<(usize, f64)> = vec![(u, wc)];
+        terms.extend(fan.iter().map(|f| (f[1], we)));
+        if t == NodeType::RegularQuad {
+            terms.extend(fan.iter().map(|f| (f[2], wd)));
+        }
+        let mut acc: std::collections::BTreeMap<usize, f64> = Default::default();
+        for (v, w) in terms {
+            let Some(r) = &rows[v] else { continue 'nodes };
+            for (k, x) in &r.entries {
+                *acc.entry(*k).or_default() += w * x;
+            }
+        }
+        count += 1;
+        for (k, x) in acc {
+            if x < worst.0 {
+                worst = (
+                    x,
+                    format!(
+                        "the limit of node {} of step {steps} on control point {}",
+                        coord(&fine, u),
+                        coord(&patch, k)
+                    ),
+                );
+            }
+        }
+    }
+    Ok((
+        verdict(worst.0 >= -1e-12),
+        "the limit surface lies in the convex hull of the control points (every limit weight ≥ 0)".into(),
+        format!("most negative limit weight {} ({})", fmt_f(worst.0), worst.1),
+        format!(
+            "eon {} ({count} regular limit points checked, from the σ-blended rules of steps 1..{steps}); a negative weight puts that limit point outside the hull when its control point is moved away",
+            text(data, "faces")?
+        ),
+    ))
+}
+
+// ---------------------------------------------------------------- non-box: non-negative weights
+
+/// Every entry of the local subdivision matrix is non-negative, at every
+/// valence and parameter set listed; also shows the centre row, whose weights
+/// (1 − a and a/k for non-box) decide the "only if".
+fn matrix_nonnegative(data: &toml::Value) -> Result4 {
+    let name = text(data, "scheme")?;
+    let valences = ints(data, "valences")?;
+    let sets = field(data, "params")?.as_array().ok_or("data.params: a list of tables")?;
+    let mut worst = (f64::INFINITY, String::new());
+    let mut checked = 0;
+    for set in sets {
+        let p: Vec<(String, String)> = set
+            .as_table()
+            .ok_or("data.params: tables")?
+            .iter()
+            .map(|(k, v)| v.as_str().map(|s| (k.clone(), s.to_string())).ok_or("parameter values are strings"))
+            .collect::<Result<_, _>>()?;
+        let scheme = schemes::build(name, &p)?;
+        for &n in &valences {
+            let config = Configuration::regular(scheme.as_ref(), n as usize)?;
+            let a = analyse(scheme.as_ref(), &config, &Options { exact: false, ..Options::default() })?;
+            checked += 1;
+            for (i, row) in a.matrix.to_dense_f64().iter().enumerate() {
+                for (j, w) in row.iter().enumerate() {
+                    if *w < worst.0 {
+                        let lab = &a.spectrum.labels;
+                        worst = (*w, format!("{p:?}, n = {n}: S[{}][{}]", lab[i].name, lab[j].name));
+                    }
+                }
+            }
+        }
+    }
+    Ok((
+        verdict(worst.0 >= -1e-12),
+        "all subdivision weights are non-negative".into(),
+        format!("smallest entry of S {} ({})", fmt_f(worst.0), worst.1),
+        format!("{checked} matrices (analysis neighbourhood)"),
+    ))
+}
+
+// ---------------------------------------------------------------- Lin–Luo: curves
+
+/// Eq. (3): P³_i = P¹_i − (Δ(P_i) + Δ(P_{i+1}))/2 with Δ(P_i) = P²_i − P⁰_i of a
+/// cubic B-spline step is the four-point point. Both sides are linear maps of
+/// the polygon: compared exactly on every unit polygon of length 8.
+fn curve_relation3() -> Result4 {
+    use crate::curves::{self, refine_closed, relation::four_point_by_relation3, CurveWeight};
+    let four = Rational::mask(curves::build("four-point", &[])?.as_ref()).map_err(|_| "inexact four-point mask")?;
+    let n = 8;
+    let mut diffs = 0;
+    for k in 0..n {
+        let e: Vec<Rational> = (0..n).map(|i| if i == k { q(1, 1) } else { q(0, 1) }).collect();
+        let lhs = four_point_by_relation3(&e).map_err(|_| "inexact B-spline mask")?;
+        let rhs = refine_closed(&four, &e);
+        diffs += lhs.iter().zip(&rhs).filter(|(a, b)| a != b).count();
+    }
+    Ok((
+        verdict(diffs == 0),
+        "P³_i = P¹_i − (Δ(P_i) + Δ(P_{i+1}))/2 is the four-point scheme's new point (Δ = new − old B-spline position)"
+            .into(),
+        if diffs == 0 { "equal on every unit polygon".into() } else { format!("{diffs} refined values differ") },
+        "exact, closed polygons of 8 points (the relation is linear, so unit polygons decide it)".into(),
+    ))
+}
+
+/// The uniform curve scheme is C¹ at each listed parameter value: its symbol is
+/// (1 + z)² b(z)/2 with ‖S_b^L‖_∞ < 1 for some L ≤ `max_steps`.
+fn curve_c1_laurent(data: &toml::Value) -> Result4 {
+    use crate::curves::{self, smoothness::c1_test, CurveWeight};
+    let name = text(data, "scheme")?;
+    let param = text(data, "param")?;
+    let max_steps = int(field(data, "max_steps")?, "data.max_steps")? as u32;
+    let values = field(data, "values")?.as_array().ok_or("data.values: strings")?;
+    let mut out = Vec::new();
+    let mut all = true;
+    for v in values {
+        let v = v.as_str().ok_or("data.values: strings")?;
+        let s = curves::build(name, &[(param.to_string(), v.to_string())])?;
+        let mask = Rational::mask(s.as_ref()).map_err(|_| "inexact mask")?;
+        match c1_test(&mask, max_steps) {
+            Ok((Some(l), norms)) => out.push(format!("{param} = {v}: ‖S_b^{l}‖ = {}", norms.last().expect("one norm"))),
+            Ok((None, norms)) => {
+                all = false;
+                out.push(format!(
+                    "{param} = {v}: ‖S_b^L‖ ≥ 1 up to L = {max_steps} (last {})",
+                    fmt_f(crate::numeric::Weight::to_f64(norms.last().expect("one norm")))
+                ));
+            }
+            Err(e) => {
+                all = false;
+                out.push(format!("{param} = {v}: {e}"));
+            }
+        }
+    }
+    Ok((
+        if all { Verdict::Holds } else { Verdict::Inconclusive },
+        format!("C¹ limit curves for constant {param}"),
+        out.join("; "),
+        "exact Laurent-polynomial test: a(z) = (1 + z)² b(z)/2 and S_b contractive (sufficient for C¹)".into(),
+    ))
+}
+
+/// Section 2: "in each subdivision step, the number of eons stays constant,
+/// the number of boundary nodes and 4-3 transition nodes doubles and regular
+/// nodes quadruple". Node types counted on a shipped closed mesh refined by
+/// `subdlab refine`'s code, level by level.
+fn fourthree_node_counts(data: &toml::Value) -> Result4 {
+    use crate::schemes::four_three::{classify, NodeType};
+    let (name, text_obj) = match text(data, "mesh")? {
+        "house.obj" => ("house.obj", include_str!("../../meshes/house.obj")),
+        "prism.obj" => ("prism.obj", include_str!("../../meshes/prism.obj")),
+        other => return Err(format!("no built-in mesh '{other}' (house.obj, prism.obj)")),
+    };
+    let obj = crate::mesh::obj::parse_obj(text_obj)?;
+    let levels = int(field(data, "levels")?, "data.levels")? as usize;
+    let scheme = schemes::build("four-three", &[])?;
+    let count = |m: &crate::mesh::PolyMesh| -> Result<[usize; 3], String> {
+        let mut c = [0usize; 3];
+        for v in 0..m.num_vertices() {
+            match classify(m, v).ok_or("a vertex is not classifiable")?.1 {
+                NodeType::Eon => c[0] += 1,
+                NodeType::Transition { .. } => c[1] += 1,
+                NodeType::RegularQuad | NodeType::RegularTri => c[2] += 1,
+            }
+        }
+        Ok(c)
+    };
+    let mut counts = vec![count(&obj.0)?];
+    for l in 1..=levels {
+        let (m, _) = crate::refine::mesh::refine_mesh(scheme.as_ref(), &obj.0, &obj.1, l)?;
+        counts.push(count(&m)?);
+    }
+    let mut bad = Vec::new();
+    for l in 1..counts.len() {
+        let (a, b) = (counts[l - 1], counts[l]);
+        if b[0] != a[0] {
+            bad.push(format!("level {l}: eons {} → {}", a[0], b[0]));
+        }
+        if b[1] != 2 * a[1] {
+            bad.push(format!("level {l}: transition nodes {} → {} (not doubled)", a[1], b[1]));
+        }
+        if b[2] != 4 * a[2] {
+            bad.push(format!("level {l}: regular nodes {} → {} (not quadrupled)", a[2], b[2]));
+        }
+    }
+    let shown: Vec<String> =
+        counts.iter().enumerate().map(|(l, c)| format!("L{l}: {}/{}/{}", c[0], c[1], c[2])).collect();
+    Ok((
+        verdict(bad.is_empty()),
+        "eons constant, transition nodes ×2, regular nodes ×4 per step".into(),
+        format!("{name}, eons/transition/regular {}", shown.join(", ")),
+        if bad.is_empty() { "every step as stated".into() } else { bad.join("; ") },
+    ))
+}
+
+/// The samples of the polynomials of total degree ≤ `degree` on a lattice
+/// window span a space that S maps into itself (S: coarse points of the
+/// window to the refined points at the same positions, fine units): the
+/// scheme maps polynomial data of that degree to polynomial data of that
+/// degree, so its limits of such data are those polynomials' space (the
+/// regular box-spline schemes "reproduce all polynomials of degree ≤ d").
+/// Also reports the first degree that is not kept.
+fn window_polynomials(data: &toml::Value) -> Result4 {
+    use crate::spectrum::strip::{action_on, window_matrices};
+    let scheme = schemes::build(text(data, "scheme")?, &params(data, "params")?)?;
+    let faces = text(data, "faces")?;
+    let config = configuration(scheme.as_ref(), faces)?;
+    let spokes: Vec<[i64; 2]> = field(data, "spokes")?
+        .as_array()
+        .ok_or("data.spokes: a list of [x, y]")?
+        .iter()
+        .map(|p| {
+            let v = p.as_array().filter(|v| v.len() == 2).ok_or("each spoke is [x, y]")?;
+            Ok([int(&v[0], "a spoke")?, int(&v[1], "a spoke")?])
+        })
+        .collect::<Result<_, String>>()?;
+    let w = ints(data, "window")?;
+    if w.len() != 4 {
+        return Err("data.window is [x0, x1, y0, y1]".into());
+    }
+    let degree = int(field(data, "degree")?, "data.degree")? as u32;
+    let window: Vec<[i64; 2]> = (w[2]..=w[3]).flat_map(|y| (w[0]..=w[1]).map(move |x| [x, y])).collect();
+    let s = window_matrices(scheme.as_ref(), &config, &spokes, &window, &[[0, 0]])?.pop().expect("one matrix");
+    let samples = |d: u32| -> Vec<Vec<Rational>> {
+        (0..=d)
+            .flat_map(|t| (0..=t).map(move |b| (t - b, b)))
+            .map(|(a, b)| window.iter().map(|p| Rational::from_integer((p[0].pow(a) * p[1].pow(b)).into())).collect())
+            .collect()
+    };
+    let kept = |d: u32| action_on(&s, &samples(d)).is_some();
+    let holds = kept(degree);
+    let next = (degree + 1..=degree + 3).find(|&d| !kept(d));
+    Ok((
+        verdict(holds),
+        format!("polynomial data of degree ≤ {degree} stay polynomial of degree ≤ {degree}"),
+        format!(
+            "degree ≤ {degree}: {}; first degree not kept: {}",
+            if holds { "kept" } else { "not kept" },
+            next.map(|d| d.to_string()).unwrap_or_else(|| format!("above {}", degree + 3))
+        ),
+        format!("exact, {} on the window [{}, {}] × [{}, {}] ({} points)", faces, w[0], w[1], w[2], w[3], window.len()),
     ))
 }

@@ -12,6 +12,7 @@ pub mod cubic_bspline;
 pub mod four_point;
 pub mod local;
 pub mod relation;
+pub mod smoothness;
 pub mod unified;
 
 use crate::numeric::{Inexact, Rational, Weight};

@@ -143,6 +143,51 @@ pub fn rank_of(rows: usize, cols: usize, mut a: Vec<Rational>) -> usize {
     rank
 }
 
+/// A basis of the null space {x : A x = 0} of the `rows` × `cols` matrix `a`
+/// (row-major), by reduction to row echelon form: one vector per free column.
+pub fn null_space(rows: usize, cols: usize, mut a: Vec<Rational>) -> Vec<Vec<Rational>> {
+    let mut pivots = Vec::new();
+    let mut rank = 0;
+    for c in 0..cols {
+        let Some(p) = (rank..rows).find(|&r| !a[r * cols + c].is_zero()) else {
+            continue;
+        };
+        for j in 0..cols {
+            a.swap(rank * cols + j, p * cols + j);
+        }
+        let piv = a[rank * cols + c].clone();
+        for j in c..cols {
+            a[rank * cols + j] = &a[rank * cols + j] / &piv;
+        }
+        for r in 0..rows {
+            if r == rank || a[r * cols + c].is_zero() {
+                continue;
+            }
+            let m = a[r * cols + c].clone();
+            for j in c..cols {
+                let t = &m * &a[rank * cols + j];
+                a[r * cols + j] = &a[r * cols + j] - t;
+            }
+        }
+        pivots.push(c);
+        rank += 1;
+        if rank == rows {
+            break;
+        }
+    }
+    let free: Vec<usize> = (0..cols).filter(|c| !pivots.contains(c)).collect();
+    free.iter()
+        .map(|&f| {
+            let mut x = vec![Rational::zero(); cols];
+            x[f] = Rational::one();
+            for (r, &pc) in pivots.iter().enumerate() {
+                x[pc] = -a[r * cols + f].clone();
+            }
+            x
+        })
+        .collect()
+}
+
 /// Polynomial with rational coefficients, lowest degree first.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Poly {
@@ -361,6 +406,15 @@ mod tests {
         let (roots, rest) = rational_roots(&p, &[q(1, 2), q(1, 1)]);
         assert_eq!(roots, vec![(q(1, 2), 2), (q(1, 1), 1)]);
         assert_eq!(rest.degree(), 0);
+    }
+
+    #[test]
+    fn null_space_of_a_rank_one_matrix() {
+        // [[1, 2, 3], [2, 4, 6]]: x + 2y + 3z = 0, basis (-2, 1, 0), (-3, 0, 1)
+        let a: Vec<Rational> = [1, 2, 3, 2, 4, 6].iter().map(|&k| q(k, 1)).collect();
+        let ns = null_space(2, 3, a);
+        assert_eq!(ns, vec![vec![q(-2, 1), q(1, 1), q(0, 1)], vec![q(-3, 1), q(0, 1), q(1, 1)]]);
+        assert!(null_space(2, 2, vec![q(1, 1), q(0, 1), q(0, 1), q(1, 1)]).is_empty());
     }
 
     #[test]

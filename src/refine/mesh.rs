@@ -91,6 +91,40 @@ pub fn refine_mesh(
     Ok((mesh, points.into_iter().map(|p| p.expect("checked above")).collect()))
 }
 
+/// Per refined vertex its weights on the vertices of the input mesh (`None`
+/// where a rule did not apply).
+pub type CompositeRows = Vec<Option<super::SparseRow<f64>>>;
+
+/// Composite weights of the refinement steps `levels` (1-based, e.g. `1..=3`
+/// for the first three steps of a real mesh) of a possibly open mesh such as an
+/// analysis patch: for every vertex of the refined mesh, its weights on the
+/// vertices of `mesh`, composed step by step with the rules of each level
+/// (`Scheme::at_level`: 4-3 subdivision blends its eon rules in over the first
+/// steps). `None` where a rule does not apply (near the boundary of a
+/// patch). The refined mesh keeps the lattice chart of the input.
+pub fn composite_weights(
+    scheme: &dyn Scheme,
+    mesh: &PolyMesh,
+    levels: std::ops::RangeInclusive<usize>,
+) -> Result<(PolyMesh, CompositeRows), String> {
+    let mut mesh = mesh.clone();
+    let mut rows: CompositeRows = (0..mesh.num_vertices()).map(|v| Some(super::SparseRow::unit(v))).collect();
+    for level in levels {
+        let refined = scheme.topology().refine(&mesh)?;
+        let step_rules = scheme.at_level(level);
+        let rules: &dyn Scheme = step_rules.as_deref().unwrap_or(scheme);
+        let stencils: Vec<Option<Stencil<f64>>> = refined
+            .vertex_origins
+            .iter()
+            .map(|&o| <f64 as SchemeWeight>::stencil(rules, &mesh, o))
+            .collect::<Result<_, _>>()
+            .map_err(|_| format!("{}: a weight is not representable", scheme.name()))?;
+        rows = apply(&stencils, &rows);
+        mesh = refined.mesh;
+    }
+    Ok((mesh, rows))
+}
+
 /// The larger of the face and vertex counts of the next level, computed from
 /// the refinement host's counting rules before any work is done.
 fn size_bound(topology: Topology, mesh: &PolyMesh) -> usize {

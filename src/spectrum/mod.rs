@@ -6,6 +6,7 @@
 pub mod eigen;
 pub mod exact;
 pub mod stencils;
+pub mod strip;
 pub mod verdict;
 
 use faer::c64;
