@@ -119,17 +119,37 @@ fn height(r: &Rational) -> usize {
 }
 
 pub fn rank_of(rows: usize, cols: usize, mut a: Vec<Rational>) -> usize {
-    let mut rank = 0;
+    echelon(rows, cols, &mut a, false).len()
+}
+
+/// Gaussian elimination in place on the `rows` × `cols` matrix `a` (row-major)
+/// with exact pivots; returns the pivot columns (row k holds pivot k). With
+/// `reduced` the pivots are scaled to 1 and cleared above as well as below
+/// (reduced row echelon form, as the null space needs); without, only below
+/// (enough for the rank, and cheaper).
+fn echelon(rows: usize, cols: usize, a: &mut [Rational], reduced: bool) -> Vec<usize> {
+    let mut pivots = Vec::new();
     for c in 0..cols {
+        let rank = pivots.len();
+        if rank == rows {
+            break;
+        }
         let Some(p) = (rank..rows).find(|&r| !a[r * cols + c].is_zero()) else {
             continue;
         };
         for j in 0..cols {
             a.swap(rank * cols + j, p * cols + j);
         }
+        if reduced {
+            let piv = a[rank * cols + c].clone();
+            for j in c..cols {
+                a[rank * cols + j] = &a[rank * cols + j] / &piv;
+            }
+        }
         let piv = a[rank * cols + c].clone();
-        for r in rank + 1..rows {
-            if a[r * cols + c].is_zero() {
+        let others = if reduced { 0..rows } else { rank + 1..rows };
+        for r in others {
+            if r == rank || a[r * cols + c].is_zero() {
                 continue;
             }
             let m = &a[r * cols + c] / &piv;
@@ -138,43 +158,15 @@ pub fn rank_of(rows: usize, cols: usize, mut a: Vec<Rational>) -> usize {
                 a[r * cols + j] = &a[r * cols + j] - t;
             }
         }
-        rank += 1;
+        pivots.push(c);
     }
-    rank
+    pivots
 }
 
 /// A basis of the null space {x : A x = 0} of the `rows` × `cols` matrix `a`
 /// (row-major), by reduction to row echelon form: one vector per free column.
 pub fn null_space(rows: usize, cols: usize, mut a: Vec<Rational>) -> Vec<Vec<Rational>> {
-    let mut pivots = Vec::new();
-    let mut rank = 0;
-    for c in 0..cols {
-        let Some(p) = (rank..rows).find(|&r| !a[r * cols + c].is_zero()) else {
-            continue;
-        };
-        for j in 0..cols {
-            a.swap(rank * cols + j, p * cols + j);
-        }
-        let piv = a[rank * cols + c].clone();
-        for j in c..cols {
-            a[rank * cols + j] = &a[rank * cols + j] / &piv;
-        }
-        for r in 0..rows {
-            if r == rank || a[r * cols + c].is_zero() {
-                continue;
-            }
-            let m = a[r * cols + c].clone();
-            for j in c..cols {
-                let t = &m * &a[rank * cols + j];
-                a[r * cols + j] = &a[r * cols + j] - t;
-            }
-        }
-        pivots.push(c);
-        rank += 1;
-        if rank == rows {
-            break;
-        }
-    }
+    let pivots = echelon(rows, cols, &mut a, true);
     let free: Vec<usize> = (0..cols).filter(|c| !pivots.contains(c)).collect();
     free.iter()
         .map(|&f| {
