@@ -23,6 +23,7 @@ fn sweep_point(c: &mut Criterion) {
         param: None,
         fixed: Vec::new(),
         charmap: false,
+        faces: None,
     };
     let mut group = c.benchmark_group("sweep_point");
     group.sample_size(10).warm_up_time(Duration::from_millis(300)).measurement_time(Duration::from_secs(2));

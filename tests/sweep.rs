@@ -162,3 +162,55 @@ fn thread_count_does_not_change_the_points() {
     fails(&[&args[..], &["--threads", "5000"]].concat());
     fails(&[&args[..], &["--threads", "-1"]].concat());
 }
+
+/// Mixed-mesh schemes sweep one face sequence; each point is the single-point
+/// `spectrum --faces` run.
+#[test]
+fn face_sequences_sweep_like_single_points() {
+    let v = json(&[
+        "sweep",
+        "four-three",
+        "--valences",
+        "5..5",
+        "--faces",
+        "QQTQT",
+        "--param",
+        "centre_weight=1/4:3/4:1/4",
+        "--json",
+    ]);
+    let points = v["points"].as_array().unwrap();
+    assert_eq!(points.len(), 3);
+    for p in points {
+        let w = p["param"].as_str().unwrap();
+        let single = json(&[
+            "spectrum",
+            "four-three",
+            "--valence",
+            "5",
+            "--faces",
+            "QQTQT",
+            "-p",
+            &format!("centre_weight={w}"),
+            "--json",
+            "--no-exact",
+        ]);
+        assert_eq!(single["faces"], "QQTQT");
+        let expanded: Vec<f64> = single["eigenvalues"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .flat_map(|e| {
+                std::iter::repeat_n(
+                    e["modulus"].as_f64().unwrap(),
+                    e["algebraic_multiplicity"].as_u64().unwrap() as usize,
+                )
+            })
+            .take(4)
+            .collect();
+        let lambda: Vec<f64> = p["lambda"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+        assert_eq!(lambda, expanded, "centre_weight = {w}");
+        assert_eq!(p["c1_spectral"], single["verdict"]["c1_spectral"]);
+    }
+    fails(&["sweep", "four-three", "--valences", "5..6", "--faces", "QQTQT"]);
+    fails(&["sweep", "four-three", "--valences", "5..5", "--faces", "QQXQT"]);
+}

@@ -339,7 +339,13 @@ fn sweep(args: &super::SweepArgs) -> Result<(), String> {
     if let Some(path) = &args.plot {
         crate::plot::format_of(path)?;
     }
-    let grid = Grid::parse(scheme, &args.valences, &parse_params(&args.params)?, args.charmap)?;
+    let grid = Grid::parse_with_faces(
+        scheme,
+        &args.valences,
+        args.faces.as_deref(),
+        &parse_params(&args.params)?,
+        args.charmap,
+    )?;
     let bounds = args
         .bounds
         .iter()

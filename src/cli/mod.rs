@@ -188,6 +188,10 @@ pub struct SweepArgs {
     /// stated bound "1/4 - cos(2 pi / n)/4"); repeatable
     #[arg(long = "bound")]
     pub bounds: Vec<String>,
+    /// face sequence around the centre for mixed-mesh schemes (four-three), e.g. QQTTT;
+    /// its length is the valence
+    #[arg(long)]
+    pub faces: Option<String>,
     /// worker threads (default: one per available core)
     #[arg(long, default_value_t = 0, value_parser = clap::value_parser!(u16).range(0..=1024))]
     pub threads: u16,

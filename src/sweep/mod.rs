@@ -23,6 +23,9 @@ pub struct Grid {
     /// other fixed parameters
     pub fixed: Vec<(String, String)>,
     pub charmap: bool,
+    /// the face sequence around the centre (mixed-mesh schemes such as
+    /// `four-three`, e.g. "QQTTT"); its length is the one valence of the grid
+    pub faces: Option<String>,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -47,6 +50,18 @@ impl Grid {
     /// parameters. The scheme and the first and last swept values are checked
     /// here, so a bad grid fails before the long run.
     pub fn parse(scheme: &str, valences: &str, params: &[(String, String)], charmap: bool) -> Result<Grid, String> {
+        Self::parse_with_faces(scheme, valences, None, params, charmap)
+    }
+
+    /// As [`Grid::parse`], with an optional face sequence around the centre:
+    /// then the valence range must be that one valence (its length).
+    pub fn parse_with_faces(
+        scheme: &str,
+        valences: &str,
+        faces: Option<&str>,
+        params: &[(String, String)],
+        charmap: bool,
+    ) -> Result<Grid, String> {
         let mut param = None;
         let mut fixed = Vec::new();
         for (k, v) in params {
@@ -59,7 +74,14 @@ impl Grid {
                 fixed.push((k.clone(), v.clone()));
             }
         }
-        let grid = Grid { scheme: scheme.to_string(), valences: parse_valences(valences)?, param, fixed, charmap };
+        let valences = parse_valences(valences)?;
+        if let Some(f) = faces {
+            if valences != [f.chars().count()] {
+                return Err(format!("--faces {f} fixes the valence to {}; use --valences {0}..{0}", f.chars().count()));
+            }
+        }
+        let faces = faces.map(str::to_string);
+        let grid = Grid { scheme: scheme.to_string(), valences, param, fixed, charmap, faces };
         let mut first = grid.fixed.clone();
         if let Some((name, values)) = &grid.param {
             first.push((name.clone(), values[0].clone()));
@@ -67,8 +89,17 @@ impl Grid {
             last.push((name.clone(), values[values.len() - 1].clone()));
             schemes::resolve(scheme, &last)?;
         }
-        schemes::resolve(scheme, &first)?;
+        let first = schemes::resolve(scheme, &first)?;
+        grid.configuration(first.as_ref(), grid.valences[0])?;
         Ok(grid)
+    }
+
+    /// The configuration of a point at valence n: regular, or the face sequence.
+    pub fn configuration(&self, scheme: &dyn schemes::Scheme, n: usize) -> Result<Configuration, String> {
+        match &self.faces {
+            Some(f) => Configuration::with_faces(scheme, n, f),
+            None => Configuration::regular(scheme, n),
+        }
     }
 
     /// Number of grid points.
@@ -149,7 +180,7 @@ pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
     }
     let run = || -> Result<Point, String> {
         let scheme = schemes::resolve(&grid.scheme, &params)?;
-        let config = Configuration::regular(scheme.as_ref(), n)?;
+        let config = grid.configuration(scheme.as_ref(), n)?;
         let opts = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
         let s = analyse(scheme.as_ref(), &config, &opts)?.spectrum;
         let lambda = s
