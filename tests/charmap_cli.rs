@@ -99,3 +99,14 @@ fn bad_input_gives_one_line_errors() {
     fails(&["plot", "nothing"]);
     assert!(!std::path::Path::new(good).exists());
 }
+
+/// Runs repeat to the last bit (no hash-order dependence in the ring's
+/// boundary sums, its normalisation or its smallest-Jacobian facet).
+#[test]
+fn charmap_runs_repeat_exactly() {
+    for scheme in ["catmull-clark", "non-box", "unified-sqrt3"] {
+        let args = ["charmap", scheme, "--valence", "5", "--json"];
+        let runs: Vec<Vec<u8>> = (0..4).map(|_| subdlab(&args).stdout).collect();
+        assert!(runs.iter().all(|r| r == &runs[0] && !r.is_empty()), "{scheme}: runs differ");
+    }
+}

@@ -52,7 +52,17 @@ pub fn extract(net: &Net) -> Ring {
                 half.insert((face[k], face[(k + 1) % face.len()]));
             }
         }
-        half.iter().filter(|(a, b)| !half.contains(&(*b, *a))).map(|&(a, b)| [p(a), p(b)]).collect()
+        // in face order, not the set's (randomly seeded) order: sums over the
+        // boundary (normalisation, winding) then repeat to the last bit
+        (0..mesh.num_faces())
+            .filter(|&f| flags(f))
+            .flat_map(|f| {
+                let face = mesh.face(f);
+                (0..face.len()).map(move |k| (face[k], face[(k + 1) % face.len()]))
+            })
+            .filter(|(a, b)| !half.contains(&(*b, *a)))
+            .map(|(a, b)| [p(a), p(b)])
+            .collect()
     };
     let outer_boundary = boundary(&|f| net.outer[f]);
     let inner_boundary = boundary(&|f| net.outer[f] && net.inner[f]);

@@ -87,14 +87,29 @@ impl Discovered {
 }
 
 const MAX_PATCH_RINGS: usize = 8;
+/// Face rings kept around the region when pruning refined meshes in the
+/// search for the analysis neighbourhood. Stencils reach at most two rings
+/// and a ring of a coarser level spans about two of the finer one, so the
+/// backward walk stays within about four rings; a scheme that needed more
+/// would fail to evaluate a stencil there, and `discover` retries unpruned.
+const PRUNE_MARGIN: usize = 4;
 const MAX_LEVELS: usize = 3;
 
 pub fn discover(scheme: &dyn Scheme, config: &Configuration) -> Result<Discovered, String> {
     let mut last_err = String::new();
     for rings in 2..=MAX_PATCH_RINGS {
-        match try_discover(scheme, config, rings) {
+        let mut blame_pruning = false;
+        match try_discover(scheme, config, rings, true, &mut blame_pruning) {
             Ok(d) => return Ok(d),
             Err(e) => last_err = e,
+        }
+        // a stencil missing next to a pruned margin: the margin was too small
+        // for this scheme, so the same patch is tried without pruning
+        if blame_pruning {
+            match try_discover(scheme, config, rings, false, &mut blame_pruning) {
+                Ok(d) => return Ok(d),
+                Err(e) => last_err = e,
+            }
         }
     }
     Err(format!(
@@ -118,7 +133,16 @@ fn compose(levels: &[Vec<Option<Stencil<f64>>>], level0: usize) -> Vec<Option<Sp
     rows
 }
 
-fn try_discover(scheme: &dyn Scheme, config: &Configuration, rings: usize) -> Result<Discovered, String> {
+/// One attempt on a patch of `rings` rings. With `prune`, refined meshes past
+/// the first analysis step keep only a margin around the region; a failure
+/// that may come from that sets `blame_pruning`.
+fn try_discover(
+    scheme: &dyn Scheme,
+    config: &Configuration,
+    rings: usize,
+    prune: bool,
+    blame_pruning: &mut bool,
+) -> Result<Discovered, String> {
     let (patch, centre_set) = build_patch(config, rings);
     let labels = label_vertices(&patch, &centre_set, config.centre.is_face_centred());
     let topology = scheme.topology();
@@ -173,7 +197,16 @@ fn try_discover(scheme: &dyn Scheme, config: &Configuration, rings: usize) -> Re
     let mut analysis = None;
     let mut levels_used = 0;
     let mut mesh_k = patch.clone();
+    // Beyond the first analysis step only the region and a margin around it
+    // are kept: the mesh would otherwise grow geometrically with the level,
+    // while the backward walk below only ever reaches a bounded number of
+    // rings around the (shrinking) region. `relabel[k]`: for the mesh after
+    // refinement k+1, the id each kept vertex had before pruning; `sizes[k]`:
+    // the vertex count of the mesh refinement k+1 started from.
+    let mut relabel: Vec<Option<Vec<usize>>> = Vec::new();
+    let mut sizes: Vec<usize> = Vec::new();
     for r in 1..=MAX_LEVELS * steps {
+        sizes.push(mesh_k.num_vertices());
         let refined = if r <= steps {
             refinements[r - 1].clone()
         } else {
@@ -192,6 +225,14 @@ fn try_discover(scheme: &dyn Scheme, config: &Configuration, rings: usize) -> Re
             .collect();
         mesh_k = refined.mesh;
         region_faces = next_region;
+        let pruned = if prune && r >= steps { prune_around(&mesh_k, &region_faces, PRUNE_MARGIN)? } else { None };
+        if let Some((pruned, old, region)) = pruned {
+            mesh_k = pruned;
+            region_faces = region;
+            relabel.push(Some(old));
+        } else {
+            relabel.push(None);
+        }
         if r % steps != 0 {
             continue; // only whole analysis steps are compared
         }
@@ -206,12 +247,19 @@ fn try_discover(scheme: &dyn Scheme, config: &Configuration, rings: usize) -> Re
         }
         for k in (0..r).rev() {
             let st = &all_stencils[k];
-            let below = if k == 0 { patch.num_vertices() } else { all_stencils[k - 1].len() };
-            let mut marked_below = vec![false; below];
+            if let Some(old) = &relabel[k] {
+                // back to the ids of the unpruned refinement, which `st` indexes
+                let mut full = vec![false; st.len()];
+                old.iter().zip(&marked).filter(|(_, m)| **m).for_each(|(&o, _)| full[o] = true);
+                marked = full;
+            }
+            let mut marked_below = vec![false; sizes[k]];
             for (v, _) in marked.iter().enumerate().filter(|(_, m)| **m) {
-                let stencil = st[v].as_ref().ok_or_else(|| {
-                    format!("first-ring vertex after {r} steps not evaluable in a {rings}-ring patch")
-                })?;
+                let Some(stencil) = st[v].as_ref() else {
+                    // the mesh this stencil is evaluated on was pruned
+                    *blame_pruning |= k >= 1 && relabel[k - 1].is_some();
+                    return Err(format!("first-ring vertex after {r} steps not evaluable in a {rings}-ring patch"));
+                };
                 stencil.support().for_each(|u| marked_below[u] = true);
             }
             marked = marked_below;
@@ -263,4 +311,33 @@ pub fn region_entities(mesh: &PolyMesh, region_faces: &[bool]) -> HashSet<Origin
         }
     }
     set
+}
+
+/// The sub-mesh of the region faces and `margin` rings of faces around them
+/// (faces sharing a vertex with the previous ring), with the region flags of
+/// the kept faces and, per kept vertex, its id in `mesh`; None when that would
+/// keep more than half the faces (copying then costs more than it saves).
+type Pruned = (PolyMesh, Vec<usize>, Vec<bool>);
+fn prune_around(mesh: &PolyMesh, region_faces: &[bool], margin: usize) -> Result<Option<Pruned>, String> {
+    let mut keep = region_faces.to_vec();
+    let mut near = vec![false; mesh.num_vertices()];
+    for _ in 0..margin {
+        for (f, face) in mesh.faces().iter().enumerate() {
+            if keep[f] {
+                face.iter().for_each(|&v| near[v] = true);
+            }
+        }
+        for (f, face) in mesh.faces().iter().enumerate() {
+            if !keep[f] && face.iter().any(|&v| near[v]) {
+                keep[f] = true;
+            }
+        }
+    }
+    let kept: Vec<usize> = (0..mesh.num_faces()).filter(|&f| keep[f]).collect();
+    if 2 * kept.len() > mesh.num_faces() {
+        return Ok(None);
+    }
+    let region = kept.iter().map(|&f| region_faces[f]).collect();
+    let (pruned, old) = mesh.restrict(&kept)?;
+    Ok(Some((pruned, old, region)))
 }

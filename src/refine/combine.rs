@@ -32,15 +32,42 @@ impl<W: Weight> SparseRow<W> {
 }
 
 impl<W: Weight> Combine<W> for SparseRow<W> {
+    /// Σ w·row, entries in increasing index order. Each index sums its
+    /// contributions in the order of the terms, whichever path is taken, so
+    /// the result is the same to the last bit. Rows next to a high-valence
+    /// centre are dense (sqrt(3) face rules reach the centre's whole ring), so
+    /// the accumulation is a flat array when the indices are dense enough and
+    /// a stable sort otherwise, never a tree map.
     fn combine(terms: &[(W, &Self)]) -> Self {
-        let mut acc: std::collections::BTreeMap<usize, W> = Default::default();
-        for (w, row) in terms {
-            for (i, x) in &row.entries {
-                let v = w.clone() * x.clone();
-                let e = acc.entry(*i).or_insert_with(W::zero);
-                *e = e.clone() + v;
+        let count: usize = terms.iter().map(|(_, r)| r.entries.len()).sum();
+        let Some(max) = terms.iter().flat_map(|(_, r)| r.entries.iter().map(|e| e.0)).max() else {
+            return SparseRow { entries: Vec::new() };
+        };
+        let mut entries: Vec<(usize, W)> = Vec::new();
+        if max < 4 * count + 64 {
+            let mut acc: Vec<Option<W>> = vec![None; max + 1];
+            for (w, row) in terms {
+                for (i, x) in &row.entries {
+                    let v = w.clone() * x.clone();
+                    let e = acc[*i].get_or_insert_with(W::zero);
+                    *e = e.clone() + v;
+                }
+            }
+            entries.extend(acc.into_iter().enumerate().filter_map(|(i, v)| v.map(|v| (i, v))));
+        } else {
+            let mut all: Vec<(usize, W)> = Vec::with_capacity(count);
+            for (w, row) in terms {
+                all.extend(row.entries.iter().map(|(i, x)| (*i, w.clone() * x.clone())));
+            }
+            all.sort_by_key(|e| e.0); // stable: term order within an index
+            for (i, v) in all {
+                match entries.last_mut() {
+                    Some((j, e)) if *j == i => *e = e.clone() + v,
+                    _ => entries.push((i, W::zero() + v)),
+                }
             }
         }
-        SparseRow { entries: acc.into_iter().filter(|(_, v)| !v.is_zero()).collect() }
+        entries.retain(|(_, v)| !v.is_zero());
+        SparseRow { entries }
     }
 }

@@ -140,18 +140,6 @@ impl Scheme for UnifiedSqrt3 {
     fn params(&self) -> &Params {
         &self.params
     }
-    /// For α ≠ 0 the face rule reaches the one-rings of the triangle's corners,
-    /// so the rows of the two-step matrix near the centre are dense in n and
-    /// discovery over two-step levels costs about 40 ms per unit of valence
-    /// (3.7 s at n = 100, 9 s at n = 200 measured); Kobbelt's α = 0 keeps 1000.
-    fn max_valence(&self) -> usize {
-        let alpha = self.params.get("alpha").map(|a| a.value).unwrap_or(0.0);
-        if alpha == 0.0 {
-            crate::neighbourhood::configuration::MAX_VALENCE
-        } else {
-            100
-        }
-    }
     fn vertex_param(&self) -> Option<&'static str> {
         (self.name == "unified-sqrt3").then_some("alpha")
     }
