@@ -221,6 +221,35 @@ fn configuration(scheme: &dyn schemes::Scheme, faces: &str) -> Result<Configurat
     }
 }
 
+/// The smallest of a stream of weights and where it occurs (the place is
+/// described only when it becomes the new minimum). HOLDS when no weight is
+/// negative: the shared shape of the non-negativity (convex hull) checks.
+struct SmallestWeight {
+    value: f64,
+    at: String,
+}
+
+impl SmallestWeight {
+    fn new() -> Self {
+        SmallestWeight { value: f64::INFINITY, at: String::new() }
+    }
+    fn offer(&mut self, w: f64, at: impl FnOnce() -> String) {
+        if w < self.value {
+            self.value = w;
+            self.at = at();
+        }
+    }
+    /// (verdict, stated, computed, detail) with the computed value described as `what`.
+    fn outcome(self, statement: &str, what: &str, detail: String) -> Result4 {
+        Ok((
+            verdict(self.value >= -1e-12),
+            statement.into(),
+            format!("{what} {} ({})", fmt_f(self.value), self.at),
+            detail,
+        ))
+    }
+}
+
 fn verdict(holds: bool) -> Verdict {
     if holds {
         Verdict::Holds
@@ -568,23 +597,20 @@ fn coord(mesh: &crate::mesh::PolyMesh, v: usize) -> String {
 /// non-negative. The most negative composite weight on the patch.
 fn fourthree_step_two(data: &toml::Value) -> Result4 {
     let (_, patch, fine, rows) = fourthree_patch(data, 2)?;
-    let mut worst = (f64::INFINITY, String::new());
+    let mut worst = SmallestWeight::new();
     for (v, r) in rows.iter().enumerate() {
         for (u, w) in r.iter().flat_map(|r| r.entries.iter()) {
-            if *w < worst.0 {
-                worst = (*w, format!("new node {} on old node {}", coord(&fine, v), coord(&patch, *u)));
-            }
+            worst.offer(*w, || format!("new node {} on old node {}", coord(&fine, v), coord(&patch, *u)));
         }
     }
-    Ok((
-        verdict(worst.0 >= -1e-12),
-        "after two steps every contribution of an old node to a new node is non-negative".into(),
-        format!("most negative composite weight {} ({})", fmt_f(worst.0), worst.1),
+    worst.outcome(
+        "after two steps every contribution of an old node to a new node is non-negative",
+        "most negative composite weight",
         format!(
             "eon {} with the σ-blended rules of steps 1 and 2, composed exactly as a mesh refinement does",
             text(data, "faces")?
         ),
-    ))
+    )
 }
 
 /// Lemma 3.8: with (4a') blended in over steps σ ≤ σ0 the surface lies in the
@@ -624,7 +650,7 @@ fn fourthree_convex_hull(data: &toml::Value) -> Result4 {
     let quad = regular("QQQQ")?;
     let tri = regular("TTTTTT")?;
     let chart = fine.chart.as_ref().ok_or("no chart")?;
-    let mut worst = (f64::INFINITY, String::new());
+    let mut worst = SmallestWeight::new();
     let mut count = 0;
     'nodes: for u in 0..fine.num_vertices() {
         let c = chart.vertex_coords[u];
@@ -651,27 +677,19 @@ fn fourthree_convex_hull(data: &toml::Value) -> Result4 {
         }
         count += 1;
         for (k, x) in acc {
-            if x < worst.0 {
-                worst = (
-                    x,
-                    format!(
-                        "the limit of node {} of step {steps} on control point {}",
-                        coord(&fine, u),
-                        coord(&patch, k)
-                    ),
-                );
-            }
+            worst.offer(x, || {
+                format!("the limit of node {} of step {steps} on control point {}", coord(&fine, u), coord(&patch, k))
+            });
         }
     }
-    Ok((
-        verdict(worst.0 >= -1e-12),
-        "the limit surface lies in the convex hull of the control points (every limit weight ≥ 0)".into(),
-        format!("most negative limit weight {} ({})", fmt_f(worst.0), worst.1),
+    worst.outcome(
+        "the limit surface lies in the convex hull of the control points (every limit weight ≥ 0)",
+        "most negative limit weight",
         format!(
             "eon {} ({count} regular limit points checked, from the σ-blended rules of steps 1..{steps}); a negative weight puts that limit point outside the hull when its control point is moved away",
             text(data, "faces")?
         ),
-    ))
+    )
 }
 
 // ---------------------------------------------------------------- non-box: non-negative weights
@@ -683,7 +701,7 @@ fn matrix_nonnegative(data: &toml::Value) -> Result4 {
     let name = text(data, "scheme")?;
     let valences = ints(data, "valences")?;
     let sets = field(data, "params")?.as_array().ok_or("data.params: a list of tables")?;
-    let mut worst = (f64::INFINITY, String::new());
+    let mut worst = SmallestWeight::new();
     let mut checked = 0;
     for set in sets {
         let p: Vec<(String, String)> = set
@@ -699,20 +717,17 @@ fn matrix_nonnegative(data: &toml::Value) -> Result4 {
             checked += 1;
             for (i, row) in a.matrix.to_dense_f64().iter().enumerate() {
                 for (j, w) in row.iter().enumerate() {
-                    if *w < worst.0 {
-                        let lab = &a.spectrum.labels;
-                        worst = (*w, format!("{p:?}, n = {n}: S[{}][{}]", lab[i].name, lab[j].name));
-                    }
+                    let lab = &a.spectrum.labels;
+                    worst.offer(*w, || format!("{p:?}, n = {n}: S[{}][{}]", lab[i].name, lab[j].name));
                 }
             }
         }
     }
-    Ok((
-        verdict(worst.0 >= -1e-12),
-        "all subdivision weights are non-negative".into(),
-        format!("smallest entry of S {} ({})", fmt_f(worst.0), worst.1),
+    worst.outcome(
+        "all subdivision weights are non-negative",
+        "smallest entry of S",
         format!("{checked} matrices (analysis neighbourhood)"),
-    ))
+    )
 }
 
 // ---------------------------------------------------------------- Lin–Luo: curves
