@@ -23,6 +23,7 @@ fn sweep_point(c: &mut Criterion) {
         param: None,
         fixed: Vec::new(),
         charmap: false,
+        charmap_options: Default::default(),
         faces: None,
     };
     let mut group = c.benchmark_group("sweep_point");

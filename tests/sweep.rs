@@ -214,3 +214,27 @@ fn face_sequences_sweep_like_single_points() {
     fails(&["sweep", "four-three", "--valences", "5..6", "--faces", "QQTQT"]);
     fails(&["sweep", "four-three", "--valences", "5..5", "--faces", "QQXQT"]);
 }
+
+/// With --charmap a point's map verdict is the single-point `charmap` run's
+/// (same levels and resolution: the command's defaults unless given).
+#[test]
+fn charmap_points_equal_single_point_runs() {
+    for extra in [&[][..], &["--levels", "3", "--resolution", "128"][..]] {
+        let args =
+            [&["sweep", "non-box", "--valences", "3..5", "--param", "a=1/4:3/4:1/4", "--charmap", "--json"][..], extra]
+                .concat();
+        let v = json(&args);
+        for p in v["points"].as_array().unwrap() {
+            let (n, a) = (p["valence"].as_u64().unwrap().to_string(), p["param"].as_str().unwrap());
+            let single = json(
+                &[&["charmap", "non-box", "--valence", &n, "-p", &format!("a={a}"), "--json"][..], extra].concat(),
+            );
+            let expected = single["c1_spectral"] == true && single["regular"] == true && single["injective"] == true;
+            assert_eq!(p["charmap"].as_bool(), Some(expected), "n = {n}, a = {a}, {extra:?}");
+        }
+    }
+    let base = ["sweep", "non-box", "--valences", "3..5", "--param", "a=1/4:3/4:1/4"];
+    fails(&[&base[..], &["--levels", "3"]].concat());
+    fails(&[&base[..], &["--charmap", "--levels", "0"]].concat());
+    fails(&[&base[..], &["--charmap", "--resolution", "5"]].concat());
+}

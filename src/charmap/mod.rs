@@ -43,6 +43,28 @@ pub struct CharMapOptions {
     pub display_levels: Option<usize>,
 }
 
+impl CharMapOptions {
+    /// The options for a check at `levels` and `resolution`, validated.
+    pub fn checked(levels: usize, resolution: usize) -> Result<Self, String> {
+        let opts = CharMapOptions { levels, resolution, display_levels: None };
+        opts.check()?;
+        Ok(opts)
+    }
+    pub fn check(&self) -> Result<(), String> {
+        if self.levels == 0 || self.levels > MAX_LEVELS {
+            return Err(format!("levels must be between 1 and {MAX_LEVELS}, got {}", self.levels));
+        }
+        if self.resolution < 16 || self.resolution > raster::MAX_RESOLUTION {
+            return Err(format!(
+                "resolution must be between 16 and {} pixels, got {}",
+                raster::MAX_RESOLUTION,
+                self.resolution
+            ));
+        }
+        Ok(())
+    }
+}
+
 impl Default for CharMapOptions {
     fn default() -> Self {
         CharMapOptions { levels: DEFAULT_LEVELS, resolution: DEFAULT_RESOLUTION, display_levels: None }
@@ -100,16 +122,7 @@ pub fn characteristic_map(
     config: &Configuration,
     opts: &CharMapOptions,
 ) -> Result<CharMap, String> {
-    if opts.levels == 0 || opts.levels > MAX_LEVELS {
-        return Err(format!("levels must be between 1 and {MAX_LEVELS}, got {}", opts.levels));
-    }
-    if opts.resolution < 16 || opts.resolution > raster::MAX_RESOLUTION {
-        return Err(format!(
-            "resolution must be between 16 and {} pixels, got {}",
-            raster::MAX_RESOLUTION,
-            opts.resolution
-        ));
-    }
+    opts.check()?;
     let analysis =
         analyse(scheme, config, &Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false })?;
     check_map(scheme, &analysis, opts)

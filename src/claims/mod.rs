@@ -44,6 +44,11 @@ pub struct SweepFigureSpec {
     pub params: BTreeMap<String, String>,
     #[serde(default)]
     pub charmap: bool,
+    /// levels and resolution of the characteristic-map check (default: `subdlab charmap`'s)
+    #[serde(default)]
+    pub levels: Option<usize>,
+    #[serde(default)]
+    pub resolution: Option<usize>,
     #[serde(default)]
     pub bounds: Vec<String>,
     pub caption: String,

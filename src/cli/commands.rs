@@ -339,12 +339,20 @@ fn sweep(args: &super::SweepArgs) -> Result<(), String> {
     if let Some(path) = &args.plot {
         crate::plot::format_of(path)?;
     }
-    let grid = Grid::parse_with_faces(
+    if !args.charmap && (args.levels.is_some() || args.resolution.is_some()) {
+        return Err("--levels and --resolution set the characteristic-map check; give --charmap too".into());
+    }
+    let mut grid = Grid::parse_with_faces(
         scheme,
         &args.valences,
         args.faces.as_deref(),
         &parse_params(&args.params)?,
         args.charmap,
+    )?;
+    let defaults = crate::charmap::CharMapOptions::default();
+    grid.charmap_options = crate::charmap::CharMapOptions::checked(
+        args.levels.unwrap_or(defaults.levels),
+        args.resolution.unwrap_or(defaults.resolution),
     )?;
     let bounds = args
         .bounds

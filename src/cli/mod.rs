@@ -177,6 +177,12 @@ pub struct SweepArgs {
     /// also check the characteristic map at every point that passes the spectral test
     #[arg(long)]
     pub charmap: bool,
+    /// with --charmap: analysis steps of refinement (default as `subdlab charmap`: 4)
+    #[arg(long)]
+    pub levels: Option<usize>,
+    /// with --charmap: pixels per side of the rasterisation (default as `subdlab charmap`: 512)
+    #[arg(long)]
+    pub resolution: Option<usize>,
     #[arg(long)]
     pub json: bool,
     #[arg(long)]

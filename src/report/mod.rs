@@ -150,7 +150,10 @@ fn sweep_figure(spec: &crate::claims::SweepFigureSpec) -> Result<(String, Files)
         spec.param.split_once('=').ok_or_else(|| format!("sweep param '{}' is not NAME=START:END:STEP", spec.param))?;
     let mut params: Vec<(String, String)> = spec.params.iter().map(|(k, v)| (k.clone(), v.clone())).collect();
     params.push((name.to_string(), range.to_string()));
-    let grid = Grid::parse(&spec.scheme, &spec.valences, &params, spec.charmap)?;
+    let mut grid = Grid::parse(&spec.scheme, &spec.valences, &params, spec.charmap)?;
+    let defaults = CharMapOptions::default();
+    let (levels, resolution) = (spec.levels.unwrap_or(defaults.levels), spec.resolution.unwrap_or(defaults.resolution));
+    grid.charmap_options = CharMapOptions::checked(levels, resolution)?;
     let bounds = spec
         .bounds
         .iter()
@@ -168,7 +171,7 @@ fn sweep_figure(spec: &crate::claims::SweepFigureSpec) -> Result<(String, Files)
         spec.scheme,
         spec.valences,
         spec.param,
-        if spec.charmap { " --charmap" } else { "" }
+        if spec.charmap { format!(" --charmap --levels {levels} --resolution {resolution}") } else { String::new() }
     );
     for i in admissible(&points) {
         write!(md, " n = {}: [{}, {}];", i.valence, i.from, i.to).ok();

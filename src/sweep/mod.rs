@@ -6,7 +6,7 @@
 
 use serde::Serialize;
 
-use crate::charmap::{characteristic_map, CharMapOptions};
+use crate::charmap::{check_map, CharMapOptions};
 use crate::neighbourhood::{Configuration, NeighbourhoodKind};
 use crate::schemes;
 use crate::spectrum::{analyse, Options};
@@ -23,6 +23,9 @@ pub struct Grid {
     /// other fixed parameters
     pub fixed: Vec<(String, String)>,
     pub charmap: bool,
+    /// levels and resolution of the characteristic-map check (default: those
+    /// of `subdlab charmap`)
+    pub charmap_options: CharMapOptions,
     /// the face sequence around the centre (mixed-mesh schemes such as
     /// `four-three`, e.g. "QQTTT"); its length is the one valence of the grid
     pub faces: Option<String>,
@@ -81,7 +84,8 @@ impl Grid {
             }
         }
         let faces = faces.map(str::to_string);
-        let grid = Grid { scheme: scheme.to_string(), valences, param, fixed, charmap, faces };
+        let charmap_options = CharMapOptions::default();
+        let grid = Grid { scheme: scheme.to_string(), valences, param, fixed, charmap, charmap_options, faces };
         let mut first = grid.fixed.clone();
         if let Some((name, values)) = &grid.param {
             first.push((name.clone(), values[0].clone()));
@@ -182,7 +186,8 @@ pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
         let scheme = schemes::resolve(&grid.scheme, &params)?;
         let config = grid.configuration(scheme.as_ref(), n)?;
         let opts = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
-        let s = analyse(scheme.as_ref(), &config, &opts)?.spectrum;
+        let analysis = analyse(scheme.as_ref(), &config, &opts)?;
+        let s = &analysis.spectrum;
         let lambda = s
             .eigenvalues
             .iter()
@@ -190,8 +195,8 @@ pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
             .take(4)
             .collect();
         let charmap = if grid.charmap && s.verdict.c1_spectral {
-            let opts = CharMapOptions { levels: 3, resolution: 128, display_levels: None };
-            let m = characteristic_map(scheme.as_ref(), &config, &opts)?;
+            // the same analysis `subdlab charmap` starts from (analysis neighbourhood, no exact stage)
+            let m = check_map(scheme.as_ref(), &analysis, &grid.charmap_options)?;
             Some(m.regular && m.injective)
         } else if grid.charmap {
             Some(false)
