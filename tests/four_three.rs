@@ -586,8 +586,8 @@ fn planar_positions(a: &Analysis, spokes: &[[f64; 2]]) -> Vec<[f64; 2]> {
 /// the quads are the unit squares of the half plane x ≤ 0 and the triangles the
 /// affine image of the regular lattice with spokes (0, ±1), (1, ±1/2) on x ≥ 0
 /// (height 1 over a base of 1 on the transition line; the paper's A_3 on Z²
-/// with diagonals, sheared). Derivation for the vertex rule (2a): 4 d_between
-/// + 3 (d_up + d_down) + 2 (d_3 + d_4) = 4 (−1, 0) + 0 + 2 (2, 0) = 0; with
+/// with diagonals, sheared). Derivation for the vertex rule (2a):
+/// 4 d_between + 3 (d_up + d_down) + 2 (d_3 + d_4) = 4 (−1, 0) + 0 + 2 (2, 0) = 0; with
 /// equilateral triangles (spokes (0, ±1), (√3/2, ±1/2)) it is (2√3 − 4, 0) ≠ 0.
 /// With these positions P, S P = P / 2, so the limit stencil (the paper's
 /// figure 8, missing from the text) maps P to the centre and the two tangent
@@ -699,13 +699,13 @@ fn sigma_blending_of_rule_4b() {
             let mut regular = [0.0; 3];
             // regular rule for edge (0, u_i) between fan faces i − 1 and i
             let (before, after) = (&fan[(i + n - 1) % n], &fan[i]);
-            let quad_sides = usize::from(before.len() == 4) + usize::from(after.len() == 4);
             for c in 0..3 {
                 four_b[c] = 0.5 * p1[0][c] + 0.25 * p1[u[i]][c];
                 for j in 0..n {
                     four_b[c] += 0.25 * beta((i + n - j) % n, n) * p1[u[j]][c];
                 }
-                let ends = if quad_sides > 0 { 6.0 / 16.0 } else { 3.0 / 8.0 };
+                // 6/16 on a quad side and 3/8 between triangles: the same weight
+                let ends = 3.0 / 8.0;
                 regular[c] = ends * (p1[0][c] + p1[u[i]][c]);
                 for face in [before, after] {
                     // the corners of the face that are not on the edge

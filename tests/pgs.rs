@@ -12,6 +12,7 @@
 //! * a_i depends on a and p only: eigenvalue w1 + 2w2 c_k in block k ≠ 0;
 //! * block 0 on (p, ā): [[1 − α, α], [1 − ω, ω]] (ω = w1 + 2w2): trace
 //!   1 − α + ω, determinant ω − α, eigenvalues 1 and ω − α.
+//!
 //! The paper's 10n × 10n matrix uses a larger net (9 points per sector plus
 //! p replicated n times); its D_k of (5)-(6) add only zero roots to these.
 

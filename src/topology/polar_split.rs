@@ -8,6 +8,7 @@
 //! * the new pole, for a pole x (`Vertex(x)`);
 //! * `Edge(p, x)` on the spoke p–x, in a triangle at pole p;
 //! * `Edge(x, y)` on the radial edge x–y of a quad (the point near x).
+//!
 //! Every interior circumferential edge gets a quad joining the shrunken faces
 //! on its two sides (parent `Edge`), so each ring of quads becomes two rings.
 //!

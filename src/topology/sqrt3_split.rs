@@ -36,17 +36,14 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
         // orient so that f holds a -> b
         let (a, b) = if mesh.half_edge(a, b).map(|x| x.0) == Some(f) { (a, b) } else { (b, a) };
         let cf = face_vertex[f];
-        match mesh.half_edge(b, a) {
-            Some((g, _)) => {
-                let cg = face_vertex[g];
-                faces.push(vec![a, cg, cf]);
-                parents.push(Origin::Edge(a, b));
-                faces.push(vec![b, cf, cg]);
-                parents.push(Origin::Edge(a, b));
-            }
-            // a boundary edge has no partner face to flip towards: its triangle
-            // is left out (the refined patch ends there; no boundary rules)
-            None => {}
+        // a boundary edge has no partner face to flip towards: its triangle
+        // is left out (the refined patch ends there; no boundary rules)
+        if let Some((g, _)) = mesh.half_edge(b, a) {
+            let cg = face_vertex[g];
+            faces.push(vec![a, cg, cf]);
+            parents.push(Origin::Edge(a, b));
+            faces.push(vec![b, cf, cg]);
+            parents.push(Origin::Edge(a, b));
         }
     }
     let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| e.to_string())?;
