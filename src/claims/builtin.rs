@@ -329,14 +329,13 @@ struct Strip {
     window: String,
 }
 
-/// S (window to the same positions) and S⁺ (shifted by `shift`) on the window
-/// [x0, x1] × [y0, y1] of the planar lattice around the node `faces`.
-fn strip(data: &toml::Value) -> Result<Strip, String> {
-    use crate::spectrum::strip::window_matrices;
+/// The scheme, the configuration of the node `faces` and the planar
+/// positions of its `spokes`: the setting of the lattice-window checks.
+type LatticeNode = (Box<dyn schemes::Scheme>, Configuration, Vec<[i64; 2]>);
+fn lattice_node(data: &toml::Value) -> Result<LatticeNode, String> {
     let scheme = schemes::build(text(data, "scheme")?, &params(data, "params")?)?;
-    let faces = text(data, "faces")?;
-    let config = configuration(scheme.as_ref(), faces)?;
-    let spokes: Vec<[i64; 2]> = field(data, "spokes")?
+    let config = configuration(scheme.as_ref(), text(data, "faces")?)?;
+    let spokes = field(data, "spokes")?
         .as_array()
         .ok_or("data.spokes: a list of [x, y]")?
         .iter()
@@ -345,6 +344,14 @@ fn strip(data: &toml::Value) -> Result<Strip, String> {
             Ok([int(&v[0], "a spoke")?, int(&v[1], "a spoke")?])
         })
         .collect::<Result<_, String>>()?;
+    Ok((scheme, config, spokes))
+}
+
+/// S (window to the same positions) and S⁺ (shifted by `shift`) on the window
+/// [x0, x1] × [y0, y1] of the planar lattice around the node `faces`.
+fn strip(data: &toml::Value) -> Result<Strip, String> {
+    use crate::spectrum::strip::window_matrices;
+    let (scheme, config, spokes) = lattice_node(data)?;
     let w = ints(data, "window")?;
     let t = ints(data, "shift")?;
     if w.len() != 4 || t.len() != 2 {
@@ -854,18 +861,7 @@ fn fourthree_node_counts(data: &toml::Value) -> Result4 {
 /// Also reports the first degree that is not kept.
 fn window_polynomials(data: &toml::Value) -> Result4 {
     use crate::spectrum::strip::{action_on, window_matrices};
-    let scheme = schemes::build(text(data, "scheme")?, &params(data, "params")?)?;
-    let faces = text(data, "faces")?;
-    let config = configuration(scheme.as_ref(), faces)?;
-    let spokes: Vec<[i64; 2]> = field(data, "spokes")?
-        .as_array()
-        .ok_or("data.spokes: a list of [x, y]")?
-        .iter()
-        .map(|p| {
-            let v = p.as_array().filter(|v| v.len() == 2).ok_or("each spoke is [x, y]")?;
-            Ok([int(&v[0], "a spoke")?, int(&v[1], "a spoke")?])
-        })
-        .collect::<Result<_, String>>()?;
+    let (scheme, config, spokes) = lattice_node(data)?;
     let w = ints(data, "window")?;
     if w.len() != 4 {
         return Err("data.window is [x0, x1, y0, y1]".into());
@@ -890,6 +886,14 @@ fn window_polynomials(data: &toml::Value) -> Result4 {
             if holds { "kept" } else { "not kept" },
             next.map(|d| d.to_string()).unwrap_or_else(|| format!("above {}", degree + 3))
         ),
-        format!("exact, {} on the window [{}, {}] × [{}, {}] ({} points)", faces, w[0], w[1], w[2], w[3], window.len()),
+        format!(
+            "exact, {} on the window [{}, {}] × [{}, {}] ({} points)",
+            text(data, "faces")?,
+            w[0],
+            w[1],
+            w[2],
+            w[3],
+            window.len()
+        ),
     ))
 }

@@ -342,23 +342,10 @@ fn sweep(args: &super::SweepArgs) -> Result<(), String> {
     if !args.charmap && (args.levels.is_some() || args.resolution.is_some()) {
         return Err("--levels and --resolution set the characteristic-map check; give --charmap too".into());
     }
-    let mut grid = Grid::parse_with_faces(
-        scheme,
-        &args.valences,
-        args.faces.as_deref(),
-        &parse_params(&args.params)?,
-        args.charmap,
-    )?;
-    let defaults = crate::charmap::CharMapOptions::default();
-    grid.charmap_options = crate::charmap::CharMapOptions::checked(
-        args.levels.unwrap_or(defaults.levels),
-        args.resolution.unwrap_or(defaults.resolution),
-    )?;
-    let bounds = args
-        .bounds
-        .iter()
-        .map(|text| Ok(crate::plot::sweep::Bound { label: text.clone(), values: grid.bound(text)? }))
-        .collect::<Result<Vec<_>, String>>()?;
+    let mut grid =
+        Grid::parse(scheme, &args.valences, args.faces.as_deref(), &parse_params(&args.params)?, args.charmap)?;
+    grid.set_charmap_options(args.levels, args.resolution)?;
+    let bounds = crate::plot::sweep::Bound::all_of(&grid, &args.bounds)?;
     let total = grid.len();
     // indicatif draws only when standard error is a terminal
     let bar = indicatif::ProgressBar::new(total as u64);
@@ -395,45 +382,37 @@ fn sweep(args: &super::SweepArgs) -> Result<(), String> {
         });
     }
     let name = grid.param.as_ref().map(|p| p.0.clone()).unwrap_or_default();
+    // one row of cells per point; CSV joins them, the table pads them
+    const WIDTHS: [usize; 9] = [7, 10, 14, 14, 14, 14, 5, 5, 8];
+    let print_row = |cells: &[String], error: &str| {
+        if csv {
+            println!("{},{}", cells.join(","), error.replace(',', ";"));
+        } else {
+            let padded: Vec<String> = cells.iter().zip(WIDTHS).map(|(c, w)| format!("{c:>w$}")).collect();
+            let note = if error.is_empty() { String::new() } else { format!("  ({error})") };
+            println!("{}{note}", padded.join(" "));
+        }
+    };
     if csv {
         println!("valence,{name},lambda0,lambda1,lambda2,lambda3,convergent,c1_spectral,charmap,error");
     } else {
-        println!(
-            "{:>7} {:>10} {:>14} {:>14} {:>14} {:>14} {:>5} {:>5} {:>8}",
-            "valence", name, "|λ0|", "|λ1|", "|λ2|", "|λ3|", "conv", "C1", "charmap"
-        );
+        let head = ["valence", name.as_str(), "|λ0|", "|λ1|", "|λ2|", "|λ3|", "conv", "C1", "charmap"];
+        print_row(&head.map(String::from), "");
     }
     for p in &points {
         let l = |k: usize| p.lambda.get(k).map(|x| crate::spectrum::fmt_f(*x)).unwrap_or_default();
-        let cm = p.charmap.map(|b| b.to_string()).unwrap_or_default();
-        if csv {
-            let err = p.error.clone().unwrap_or_default().replace(',', ";");
-            println!(
-                "{},{},{},{},{},{},{},{},{cm},{err}",
-                p.valence,
-                p.param.clone().unwrap_or_default(),
-                l(0),
-                l(1),
-                l(2),
-                l(3),
-                p.convergent,
-                p.c1_spectral
-            );
-        } else {
-            println!(
-                "{:>7} {:>10} {:>14} {:>14} {:>14} {:>14} {:>5} {:>5} {:>8}{}",
-                p.valence,
-                p.param.clone().unwrap_or_default(),
-                l(0),
-                l(1),
-                l(2),
-                l(3),
-                p.convergent,
-                p.c1_spectral,
-                cm,
-                p.error.as_ref().map(|e| format!("  ({e})")).unwrap_or_default()
-            );
-        }
+        let cells = [
+            p.valence.to_string(),
+            p.param.clone().unwrap_or_default(),
+            l(0),
+            l(1),
+            l(2),
+            l(3),
+            p.convergent.to_string(),
+            p.c1_spectral.to_string(),
+            p.charmap.map(|b| b.to_string()).unwrap_or_default(),
+        ];
+        print_row(&cells, p.error.as_deref().unwrap_or_default());
     }
     if !csv && grid.param.is_some() {
         for (what, list) in

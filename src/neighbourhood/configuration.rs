@@ -21,7 +21,6 @@ impl Configuration {
     /// The scheme's regular configuration of valence n.
     pub fn regular(scheme: &dyn Scheme, n: usize) -> Result<Self, String> {
         check_valence(n)?;
-        check_scheme_valence(scheme, n)?;
         if let Some(k) = scheme.fixed_valence().filter(|&k| k != n) {
             return Err(format!(
                 "{} is defined on the regular lattice only (valence {k}), not at valence {n}",
@@ -40,7 +39,6 @@ impl Configuration {
     /// that accept face sequences (4-3 subdivision).
     pub fn with_faces(scheme: &dyn Scheme, n: usize, faces: &str) -> Result<Self, String> {
         check_valence(n)?;
-        check_scheme_valence(scheme, n)?;
         if !scheme.face_sequences() {
             return Err(format!(
                 "scheme '{}' takes no --faces: its configurations are all {}",
@@ -84,17 +82,6 @@ impl Configuration {
     pub fn face_sequence(&self) -> String {
         self.sectors.iter().map(|k| k.letter()).collect()
     }
-}
-
-fn check_scheme_valence(scheme: &dyn Scheme, n: usize) -> Result<(), String> {
-    let max = scheme.max_valence();
-    if n > max {
-        return Err(format!(
-            "valence {n} is above the supported maximum {max} for {} with these parameters",
-            scheme.name()
-        ));
-    }
-    Ok(())
 }
 
 pub fn check_valence(n: usize) -> Result<(), String> {

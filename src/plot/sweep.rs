@@ -62,6 +62,13 @@ pub struct Bound {
     pub values: Vec<(usize, f64)>,
 }
 
+impl Bound {
+    /// The reference bounds `texts` (expressions in n) over the grid's valences.
+    pub fn all_of(grid: &crate::sweep::Grid, texts: &[String]) -> Result<Vec<Bound>, String> {
+        texts.iter().map(|t| Ok(Bound { label: t.clone(), values: grid.bound(t)? })).collect()
+    }
+}
+
 pub struct SweepFigure {
     pub scheme: String,
     pub param: String,

@@ -150,15 +150,10 @@ fn sweep_figure(spec: &crate::claims::SweepFigureSpec) -> Result<(String, Files)
         spec.param.split_once('=').ok_or_else(|| format!("sweep param '{}' is not NAME=START:END:STEP", spec.param))?;
     let mut params: Vec<(String, String)> = spec.params.iter().map(|(k, v)| (k.clone(), v.clone())).collect();
     params.push((name.to_string(), range.to_string()));
-    let mut grid = Grid::parse(&spec.scheme, &spec.valences, &params, spec.charmap)?;
-    let defaults = CharMapOptions::default();
-    let (levels, resolution) = (spec.levels.unwrap_or(defaults.levels), spec.resolution.unwrap_or(defaults.resolution));
-    grid.charmap_options = CharMapOptions::checked(levels, resolution)?;
-    let bounds = spec
-        .bounds
-        .iter()
-        .map(|b| Ok(plot::sweep::Bound { label: b.clone(), values: grid.bound(b)? }))
-        .collect::<Result<Vec<_>, String>>()?;
+    let mut grid = Grid::parse(&spec.scheme, &spec.valences, None, &params, spec.charmap)?;
+    grid.set_charmap_options(spec.levels, spec.resolution)?;
+    let CharMapOptions { levels, resolution, .. } = grid.charmap_options;
+    let bounds = plot::sweep::Bound::all_of(&grid, &spec.bounds)?;
     let points = run(&grid, &|_, _| {})?;
     let file = format!("figures/{}-sweep-{name}.svg", spec.scheme);
     let fig = plot::sweep::SweepFigure::new(&spec.scheme, name, &points, spec.charmap, bounds)?;

@@ -89,11 +89,6 @@ pub trait Scheme: Rules<f64> + Rules<Rational> + Send + Sync {
     fn boundary_note(&self) -> Option<&'static str> {
         None
     }
-    /// The largest valence the analysis accepts for this scheme (a bound on
-    /// time and memory, documented per scheme).
-    fn max_valence(&self) -> usize {
-        crate::neighbourhood::configuration::MAX_VALENCE
-    }
     /// The only valence the scheme is defined at (regular-lattice schemes: 4).
     fn fixed_valence(&self) -> Option<usize> {
         None

@@ -50,15 +50,11 @@ pub struct Point {
 impl Grid {
     /// A grid from the command-line form: a valence range `A..B` and
     /// `NAME=VALUE` (fixed) or `NAME=START:END:STEP` (swept, at most one)
-    /// parameters. The scheme and the first and last swept values are checked
-    /// here, so a bad grid fails before the long run.
-    pub fn parse(scheme: &str, valences: &str, params: &[(String, String)], charmap: bool) -> Result<Grid, String> {
-        Self::parse_with_faces(scheme, valences, None, params, charmap)
-    }
-
-    /// As [`Grid::parse`], with an optional face sequence around the centre:
-    /// then the valence range must be that one valence (its length).
-    pub fn parse_with_faces(
+    /// parameters, and optionally a face sequence around the centre (then the
+    /// valence range must be that one valence, its length). The scheme and the
+    /// first and last swept values are checked here, so a bad grid fails
+    /// before the long run.
+    pub fn parse(
         scheme: &str,
         valences: &str,
         faces: Option<&str>,
@@ -104,6 +100,14 @@ impl Grid {
             Some(f) => Configuration::with_faces(scheme, n, f),
             None => Configuration::regular(scheme, n),
         }
+    }
+
+    /// Levels and resolution of the characteristic-map check, validated;
+    /// each left out keeps `subdlab charmap`'s default.
+    pub fn set_charmap_options(&mut self, levels: Option<usize>, resolution: Option<usize>) -> Result<(), String> {
+        let d = CharMapOptions::default();
+        self.charmap_options = CharMapOptions::checked(levels.unwrap_or(d.levels), resolution.unwrap_or(d.resolution))?;
+        Ok(())
     }
 
     /// Number of grid points.
