@@ -1,26 +1,75 @@
 //! subdlab: eigenanalysis and smoothness verification of subdivision surfaces.
 //!
-//! Pipeline (one module per stage, see DESIGN.md):
-//! `schemes` (rules) + `neighbourhood` (configuration, discovery) → `topology` +
-//! `refine` (one step) → `matrix` (local S) → `dft` (Fourier blocks) →
-//! `spectrum` (eigenvalues, stencils, verdicts) → `cli`.
+//! The crate is layered; each layer imports only the layers listed before it
+//! (`tests/layers.rs` fails the build's tests when an import points upwards):
+//!
+//! 1. foundation: [`numeric`] (weights: f64 and exact rationals, expressions),
+//!    [`mesh`] (polygon meshes, charts, OBJ), [`io`] (atomic file writing),
+//!    [`error`] (the typed error);
+//! 2. scheme description, [`sdc`]: the rule interface `Rules<W>` / `Scheme`,
+//!    origins and stencils, the host a scheme runs on, typed parameters;
+//! 3. refinement hosts, [`topology`]: connectivity of one step, no weights;
+//! 4. the engine: [`refine`] (one step over any averaged data),
+//!    [`neighbourhood`] (configurations, discovery of invariant sets),
+//!    [`matrix`] (the local subdivision matrix), [`dft`] (Fourier blocks);
+//! 5. [`spectrum`]: eigenvalues with multiplicities, stencils, verdicts;
+//! 6. analyses on top of a spectrum: [`charmap`] (characteristic maps), and
+//!    the other domains, [`lattice`] (Z² masks) and [`curves`] (Z masks);
+//! 7. the scheme catalogue, [`schemes`]: one file per built-in scheme and the
+//!    scheme-file loader; nothing below imports it;
+//! 8. [`claims`] (paper statements as data) and [`sweep`];
+//! 9. [`plot`] and [`report`];
+//! 10. [`cli`], the `subdlab` command line.
+//!
+//! The [`prelude`] exports what a library user needs for the common calls.
+
+pub mod error;
+pub mod io;
+pub mod mesh;
+pub mod numeric;
+
+pub mod sdc;
+
+pub mod topology;
+
+pub mod dft;
+pub mod matrix;
+pub mod neighbourhood;
+pub mod refine;
+
+pub mod spectrum;
 
 pub mod charmap;
-pub mod claims;
-pub mod cli;
 pub mod curves;
-pub mod dft;
 // regular-lattice schemes with explicit (i, j) coordinates (Khan–Mustafa)
 pub mod lattice;
-pub mod matrix;
-pub mod mesh;
-pub mod neighbourhood;
-pub mod numeric;
+
+pub mod schemes;
+
+pub mod claims;
+pub mod sweep;
+
 // figures (SVG / PNG)
 pub mod plot;
-pub mod refine;
 pub mod report;
-pub mod schemes;
-pub mod spectrum;
-pub mod sweep;
-pub mod topology;
+
+pub mod cli;
+
+/// The common calls: build a scheme, analyse a configuration, read its
+/// spectrum and characteristic map.
+///
+/// ```
+/// use subdlab::prelude::*;
+/// let scheme = schemes::build("loop", &[]).unwrap();
+/// let spectrum = spectrum_of(scheme.as_ref(), 5).unwrap();
+/// assert!((spectrum.eigenvalues[0].re - 1.0).abs() < 1e-12);
+/// ```
+pub mod prelude {
+    pub use crate::charmap::{characteristic_map, characteristic_map_of, CharMap, CharMapOptions};
+    pub use crate::error::Error;
+    pub use crate::neighbourhood::{Configuration, NeighbourhoodKind};
+    pub use crate::numeric::{Rational, Weight};
+    pub use crate::schemes;
+    pub use crate::sdc::{CentreKind, Origin, Params, Rules, Scheme, SchemeWeight, Stencil, Topology};
+    pub use crate::spectrum::{analyse, spectrum_of, Analysis, Method, Options, Spectrum};
+}

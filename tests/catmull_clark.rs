@@ -8,6 +8,7 @@
 //!   and the sine analogue, A_n = 1 + cos(2π/n) + cos(π/n) sqrt(2(9 + cos(2π/n)));
 //! - valence 4: the tensor product of the cubic B-spline's {1, 1/2, 1/4, 1/8, 1/8}.
 
+use approx::assert_abs_diff_eq;
 mod common;
 use common::*;
 use subdlab::neighbourhood::{NeighbourhoodKind, VertexKind};
@@ -42,8 +43,8 @@ fn minimal_spectrum_matches_closed_forms_for_valences_3_to_50() {
         let c = cos2pi(1, n);
         let l1 = (5.0 + c + ((c + 1.0) * (c + 9.0)).sqrt()) / 16.0;
         let stam = (5.0 + c + (std::f64::consts::PI / n as f64).cos() * (2.0 * (9.0 + c)).sqrt()) / 16.0;
-        assert!((l1 - stam).abs() < 1e-14);
-        assert!((a.spectrum.verdict.subdominant.unwrap() - stam).abs() < 1e-10, "λ1 at n = {n}");
+        assert_abs_diff_eq!(l1, stam, epsilon = 1e-14);
+        assert_abs_diff_eq!(a.spectrum.verdict.subdominant.unwrap(), stam, epsilon = 1e-10);
         assert!(a.spectrum.verdict.c1_spectral, "CC passes the spectral test at n = {n}");
         let mut blocks = a.spectrum.verdict.subdominant_blocks.clone();
         blocks.dedup();
@@ -59,7 +60,7 @@ fn analysis_neighbourhood_is_the_two_ring_and_keeps_the_leading_spectrum() {
         assert_eq!(a.spectrum.minimal_size, 2 * n + 1);
         let c = cos2pi(1, n);
         let l1 = (5.0 + c + ((c + 1.0) * (c + 9.0)).sqrt()) / 16.0;
-        assert!((a.spectrum.eigenvalues[1].re - l1).abs() < 1e-10);
+        assert_abs_diff_eq!(a.spectrum.eigenvalues[1].re, l1, epsilon = 1e-10);
         assert_eq!(a.spectrum.eigenvalues[1].algebraic_multiplicity, 2);
         // the outer ring only adds 1/8, 1/16, 1/32, 1/64 (powers of the regular B-spline rules)
         let minimal = run("catmull-clark", n, NeighbourhoodKind::Minimal, None, false);

@@ -6,6 +6,7 @@
 //! - valence 4 is the biquadratic tensor product of Chaikin's local spectrum
 //!   {1, 1/2, 1/4, 1/4}.
 
+use approx::assert_abs_diff_eq;
 mod common;
 use common::*;
 use subdlab::neighbourhood::NeighbourhoodKind;
@@ -28,7 +29,7 @@ fn analysis_neighbourhood_is_the_one_ring_of_faces() {
     for n in 3..=50 {
         let a = run("doo-sabin", n, NeighbourhoodKind::Analysis, None, false);
         assert_eq!(a.spectrum.matrix_size, 4 * n, "4n at n = {n}");
-        assert!((a.spectrum.eigenvalues[1].re - 0.5).abs() < 1e-11);
+        assert_abs_diff_eq!(a.spectrum.eigenvalues[1].re, 0.5, epsilon = 1e-11);
         assert_eq!(a.spectrum.eigenvalues[1].algebraic_multiplicity, 2);
     }
 }

@@ -4,6 +4,7 @@
 //! - limit stencil: centre 1 − nχ, each neighbour χ = 1/(n + 3/(8β));
 //! - tangent stencils: cos(2πi/n), sin(2πi/n) on the one-ring.
 
+use approx::assert_abs_diff_eq;
 mod common;
 use common::*;
 use subdlab::neighbourhood::NeighbourhoodKind;
@@ -24,7 +25,7 @@ fn one_ring_spectrum_matches_closed_form_for_valences_3_to_50() {
         want.extend((1..n).map(|m| 0.375 + 0.25 * cos2pi(m, n)));
         assert_same_multiset(real_spectrum(&a), want, 1e-11, &format!("Loop n={n}"));
         let l1 = 0.375 + 0.25 * cos2pi(1, n);
-        assert!((a.spectrum.verdict.subdominant.unwrap() - l1).abs() < 1e-12);
+        assert_abs_diff_eq!(a.spectrum.verdict.subdominant.unwrap(), l1, epsilon = 1e-12);
         assert!(a.spectrum.verdict.c1_spectral);
     }
 }
@@ -35,7 +36,7 @@ fn analysis_neighbourhood_is_the_two_ring() {
         let a = run("loop", n, NeighbourhoodKind::Analysis, None, false);
         assert_eq!(a.spectrum.matrix_size, 3 * n + 1, "3n+1 at n = {n}");
         let l1 = 0.375 + 0.25 * cos2pi(1, n);
-        assert!((a.spectrum.eigenvalues[1].re - l1).abs() < 1e-11);
+        assert_abs_diff_eq!(a.spectrum.eigenvalues[1].re, l1, epsilon = 1e-11);
     }
 }
 

@@ -15,10 +15,11 @@ pub mod ring;
 pub mod spectral;
 pub mod wedge;
 
+use nalgebra::{Matrix2, Vector2};
 use serde::Serialize;
 
 use crate::neighbourhood::{Configuration, NeighbourhoodKind};
-use crate::schemes::Scheme;
+use crate::sdc::Scheme;
 use crate::spectrum::{analyse, Analysis, Options};
 pub use raster::Coverage;
 pub use regularity::Regularity;
@@ -178,11 +179,10 @@ pub fn check_map(scheme: &dyn Scheme, analysis: &Analysis, opts: &CharMapOptions
     // injectivity are invariant under linear maps)
     let w = isotropic(&ring::extract(&fine));
     net::transform(&mut fine.points, w);
-    let values: Vec<[f64; 2]> =
-        pair.values.iter().map(|p| [w[0][0] * p[0] + w[0][1] * p[1], w[1][0] * p[0] + w[1][1] * p[1]]).collect();
+    let values: Vec<[f64; 2]> = pair.values.iter().map(|&p| net::apply_linear(&w, p)).collect();
     let m = normalisation(d, &values, &ring::extract(&fine));
     net::transform(&mut fine.points, m);
-    let m = mul(m, w);
+    let m = m * w;
     out.refinements = fine.refinements;
     let ring = ring::extract(&fine);
 
@@ -257,7 +257,7 @@ pub fn check_map(scheme: &dyn Scheme, analysis: &Analysis, opts: &CharMapOptions
 /// the first spoke vertex (ring 1, sector 0) on the positive x-axis and the
 /// outer boundary at radius at most 1. Orientation, rotation and scale of an
 /// eigenvector pair are arbitrary; fixing them makes figures comparable.
-fn normalisation(d: &crate::neighbourhood::Discovered, values: &[[f64; 2]], raw: &Ring) -> [[f64; 2]; 2] {
+fn normalisation(d: &crate::neighbourhood::Discovered, values: &[[f64; 2]], raw: &Ring) -> Matrix2<f64> {
     let area = regularity::total_signed_area(&raw.ring) + regularity::total_signed_area(&raw.inner);
     let flip = if area < 0.0 { -1.0 } else { 1.0 };
     let reference = d
@@ -274,12 +274,12 @@ fn normalisation(d: &crate::neighbourhood::Discovered, values: &[[f64; 2]], raw:
     let radius = raw.outer_boundary.iter().flatten().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max);
     let k = if radius > 0.0 { 1.0 / radius } else { 1.0 };
     // rotate by −θ after flipping y
-    [[k * c, k * s * flip], [-k * s, k * c * flip]]
+    Matrix2::new(k * c, k * s * flip, -k * s, k * c * flip)
 }
 
 /// M^(-1/2) for the second-moment matrix M of the ring's outer boundary
 /// vertices (about the centre, which the map sends to the origin).
-fn isotropic(raw: &Ring) -> [[f64; 2]; 2] {
+fn isotropic(raw: &Ring) -> Matrix2<f64> {
     let (mut a, mut b, mut c) = (0.0, 0.0, 0.0);
     for p in raw.outer_boundary.iter().flatten() {
         a += p[0] * p[0];
@@ -291,18 +291,14 @@ fn isotropic(raw: &Ring) -> [[f64; 2]; 2] {
     let (l1, l2) = (0.5 * (a + c) + r, 0.5 * (a + c) - r);
     // (NaN compares false, so a NaN l2 is degenerate too)
     if l2.partial_cmp(&(1e-300 * l1.max(1.0))) != Some(std::cmp::Ordering::Greater) || !l1.is_finite() {
-        return [[1.0, 0.0], [0.0, 1.0]]; // degenerate: leave it to the verdicts
+        return Matrix2::identity(); // degenerate: leave it to the verdicts
     }
     let t = 0.5 * (2.0 * b).atan2(a - c);
     let (co, si) = (t.cos(), t.sin());
     let (d1, d2) = (1.0 / l1.sqrt(), 1.0 / l2.sqrt());
     // R diag(d1, d2) R^T with R the rotation by t
-    [[co * co * d1 + si * si * d2, co * si * (d1 - d2)], [co * si * (d1 - d2), si * si * d1 + co * co * d2]]
-}
-
-fn mul(x: [[f64; 2]; 2], y: [[f64; 2]; 2]) -> [[f64; 2]; 2] {
-    let e = |i: usize, j: usize| x[i][0] * y[0][j] + x[i][1] * y[1][j];
-    [[e(0, 0), e(0, 1)], [e(1, 0), e(1, 1)]]
+    let r = Matrix2::new(co, -si, si, co);
+    r * Matrix2::from_diagonal(&Vector2::new(d1, d2)) * r.transpose()
 }
 
 /// Faces of the level-0 patch whose corners all carry the eigenvector.

@@ -17,10 +17,14 @@
 
 use std::collections::HashSet;
 
+use nalgebra::{Matrix2, Vector2};
+
 use crate::mesh::PolyMesh;
 use crate::neighbourhood::Discovered;
-use crate::refine::{apply, Origin, Stencil};
-use crate::schemes::{Scheme, SchemeWeight};
+
+use crate::error::Error;
+use crate::refine::{apply, step, Step};
+use crate::sdc::{Origin, Scheme};
 
 /// Largest number of faces of a refined net: peak memory is about 1 KB per
 /// face (connectivity hash maps and the tracked region entities), so this
@@ -41,10 +45,16 @@ pub struct Net {
 }
 
 /// Apply a linear map to every defined point.
-pub fn transform(points: &mut [Option<[f64; 2]>], m: [[f64; 2]; 2]) {
+pub fn transform(points: &mut [Option<[f64; 2]>], m: Matrix2<f64>) {
     for p in points.iter_mut().flatten() {
-        *p = [m[0][0] * p[0] + m[0][1] * p[1], m[1][0] * p[0] + m[1][1] * p[1]];
+        *p = apply_linear(&m, *p);
     }
+}
+
+/// The image of one plane point under a linear map (points are stored as
+/// `[f64; 2]`, the form the JSON output and the figures use).
+pub fn apply_linear(m: &Matrix2<f64>, p: [f64; 2]) -> [f64; 2] {
+    (m * Vector2::from(p)).into()
 }
 
 /// The level-0 net: `values[k]` sits on patch vertex `d.analysis[k]`.
@@ -83,19 +93,18 @@ pub fn refine_net(
     d: &Discovered,
     level0: Vec<Option<[f64; 2]>>,
     analysis_steps: usize,
-) -> Result<Net, String> {
-    let mut last = Err(String::new());
+) -> Result<Net, Error> {
+    let mut last = Err(Error::from("no pruning margin tried"));
     for margin in MARGINS {
         last = refine_with_margin(scheme, d, level0.clone(), analysis_steps, margin);
-        match &last {
-            Err(e) if e.contains(NOT_DETERMINED) => continue,
-            _ => return last,
+        // only a point left undetermined by the pruned margin is worth a
+        // wider margin; every other failure is final
+        if !matches!(last, Err(Error::NotDetermined(_))) {
+            return last;
         }
     }
     last
 }
-
-const NOT_DETERMINED: &str = "is not determined by the analysis neighbourhood";
 
 fn refine_with_margin(
     scheme: &dyn Scheme,
@@ -103,7 +112,7 @@ fn refine_with_margin(
     level0: Vec<Option<[f64; 2]>>,
     analysis_steps: usize,
     margin: usize,
-) -> Result<Net, String> {
+) -> Result<Net, Error> {
     if analysis_steps == 0 {
         return Err("the characteristic ring needs at least one analysis step".into());
     }
@@ -136,14 +145,10 @@ fn refine_with_margin(
             return Err(format!(
                 "refinement level {} would need about {bound} faces, above the supported {MAX_NET_FACES}; use fewer levels",
                 net.refinements + 1
-            ));
+            )
+            .into());
         }
-        let r = scheme.topology().refine(&net.mesh)?;
-        let stencils: Vec<Option<Stencil<f64>>> = r
-            .vertex_origins
-            .iter()
-            .map(|&o| <f64 as SchemeWeight>::stencil(scheme, &net.mesh, o).ok().flatten())
-            .collect();
+        let Step { refined: r, stencils } = step::<f64>(scheme, &net.mesh)?;
         let points = apply(&stencils, &net.points);
         net = descend(&net, &r.mesh, &r.vertex_origins, &r.face_parents, points);
         check_defined(&net)?;
@@ -173,10 +178,13 @@ fn face_vertices(mesh: &PolyMesh, f: usize) -> impl Iterator<Item = usize> + '_ 
 
 /// Every vertex of the first ring's descendants must be defined; otherwise the
 /// neighbourhood does not determine the ring and no verdict can be given.
-fn check_defined(net: &Net) -> Result<(), String> {
+fn check_defined(net: &Net) -> Result<(), Error> {
     for f in (0..net.mesh.num_faces()).filter(|&f| net.outer[f]) {
         if face_vertices(&net.mesh, f).any(|v| net.points[v].is_none()) {
-            return Err(format!("after {} refinements a vertex of the first ring {NOT_DETERMINED}", net.refinements));
+            return Err(Error::NotDetermined(format!(
+                "after {} refinements a vertex of the first ring is not determined by the analysis neighbourhood",
+                net.refinements
+            )));
         }
     }
     if !net.outer.iter().any(|&x| x) {

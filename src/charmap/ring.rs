@@ -5,6 +5,8 @@
 
 use std::collections::HashSet;
 
+use nalgebra::{Matrix2, Vector2};
+
 use super::net::{facet_triangles, Net};
 
 /// A triangle of the refined net in the plane.
@@ -71,7 +73,10 @@ pub fn extract(net: &Net) -> Ring {
 
 /// Signed area of a triangle (positive when counter-clockwise).
 pub fn signed_area(t: &Tri) -> f64 {
-    0.5 * ((t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[1][1] - t[0][1]) * (t[2][0] - t[0][0]))
+    // half the determinant of the edge vectors: the Jacobian of the affine
+    // map from the reference triangle, times 1/2
+    let (a, b, c) = (Vector2::from(t[0]), Vector2::from(t[1]), Vector2::from(t[2]));
+    0.5 * Matrix2::from_columns(&[b - a, c - a]).determinant()
 }
 
 /// How many times a closed set of directed edges winds around the origin
@@ -80,8 +85,9 @@ pub fn signed_area(t: &Tri) -> f64 {
 pub fn winding_number(edges: &[[[f64; 2]; 2]]) -> Option<f64> {
     let mut total = 0.0;
     for [a, b] in edges {
-        let cross = a[0] * b[1] - a[1] * b[0];
-        let dot = a[0] * b[0] + a[1] * b[1];
+        let (a, b) = (Vector2::from(*a), Vector2::from(*b));
+        let cross = a.perp(&b);
+        let dot = a.dot(&b);
         if cross == 0.0 && dot <= 0.0 {
             return None;
         }

@@ -5,8 +5,8 @@ use std::path::{Path, PathBuf};
 use clap::{Args, Subcommand};
 
 use super::commands::parse_params;
-use super::output::print_json;
 use crate::charmap::{characteristic_map, CharMap, CharMapOptions, DEFAULT_LEVELS, DEFAULT_RESOLUTION, MAX_LEVELS};
+use crate::io::print_json;
 use crate::neighbourhood::configuration::check_valence;
 use crate::neighbourhood::Configuration;
 use crate::plot::{self, charmap::RingFigure, spectrum::SpectrumFigure};

@@ -1,7 +1,7 @@
 //! The subcommands.
 
-use super::output::{print_json, write_atomic};
 use super::{AnalysisArgs, Command};
+use crate::io::{print_json, write_atomic};
 use crate::matrix::export::{to_matrix_market, MatrixJson};
 use crate::neighbourhood::{Configuration, NeighbourhoodKind};
 use crate::schemes::{self, Scheme};

@@ -3,8 +3,8 @@
 //! before the mesh-based path; output reuses the same tables and JSON types, so
 //! the stable field names are the same as for every other scheme.
 
-use super::output::{print_json, write_atomic};
 use super::{AnalysisArgs, Command};
+use crate::io::{print_json, write_atomic};
 use crate::lattice::analysis::{analyse, LatticeAnalysis};
 use crate::lattice::{self, LatticeScheme};
 use crate::matrix::export::{to_matrix_market, MatrixJson};

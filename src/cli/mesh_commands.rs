@@ -4,8 +4,8 @@
 use std::path::Path;
 
 use super::commands::parse_params;
-use super::output::{print_json, write_atomic};
 use crate::curves::local::{curve_spectrum, CurveSpectrum};
+use crate::io::{print_json, write_atomic};
 use crate::mesh::obj::{read_obj_file, write_obj};
 use crate::neighbourhood::NeighbourhoodKind;
 use crate::refine::mesh::{add_face_control_vertices, four_directional, refine_mesh};

@@ -6,8 +6,6 @@ mod charmap_commands;
 mod commands;
 mod lattice;
 mod mesh_commands;
-// `pub(crate)`: figures (`crate::plot`) are written atomically too
-pub(crate) mod output;
 mod verify;
 
 use clap::{Args, Parser, Subcommand};

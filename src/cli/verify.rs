@@ -3,8 +3,8 @@
 
 use std::path::Path;
 
-use super::output::{print_json, write_atomic};
 use crate::claims::{self, ClaimFile, Outcome, Verdict};
+use crate::io::{print_json, write_atomic};
 
 pub fn run(paper: Option<String>, user: &[std::path::PathBuf], json: bool, junit: Option<&Path>) -> Result<(), String> {
     let files: Vec<ClaimFile> = if user.is_empty() {

@@ -4,7 +4,7 @@
 
 use super::{CurveEntry, CurveMask, CurveRules, CurveScheme};
 use crate::numeric::{Inexact, Weight};
-use crate::schemes::Params;
+use crate::sdc::Params;
 
 pub struct FourPoint {
     params: Params,

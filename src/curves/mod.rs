@@ -16,7 +16,7 @@ pub mod smoothness;
 pub mod unified;
 
 use crate::numeric::{Inexact, Rational, Weight};
-use crate::schemes::{ParamSpec, Params};
+use crate::sdc::{ParamSpec, Params};
 
 /// The two rules of a binary curve scheme: new P_{2i} = Σ w·P_{i+o} over
 /// `even`, new P_{2i+1} = Σ w·P_{i+o} over `odd`, as (o, w) pairs.

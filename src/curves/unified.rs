@@ -12,7 +12,7 @@
 
 use super::{CurveEntry, CurveMask, CurveRules, CurveScheme};
 use crate::numeric::{Inexact, Weight};
-use crate::schemes::{ParamSpec, Params};
+use crate::sdc::{ParamSpec, Params};
 
 pub struct UnifiedCurve {
     params: Params,

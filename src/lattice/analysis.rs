@@ -12,7 +12,7 @@ use crate::matrix::LocalMatrix;
 use crate::neighbourhood::{NeighbourhoodKind, VertexKind, VertexLabel};
 use crate::numeric::exact::{Poly, QMatrix};
 use crate::numeric::Rational;
-use crate::schemes::CentreKind;
+use crate::sdc::CentreKind;
 use crate::spectrum::{decompose, sort_eigenvalues, verdict, Method, Spectrum};
 
 /// The control points of the limit surface over the cells touching the origin

@@ -4,7 +4,7 @@
 use crate::neighbourhood::{Discovered, NeighbourhoodKind, VertexLabel};
 use crate::numeric::{Inexact, Weight};
 use crate::refine::{Combine, SparseRow};
-use crate::schemes::{Scheme, SchemeWeight};
+use crate::sdc::{Scheme, SchemeWeight};
 
 #[derive(Clone, Debug)]
 pub struct LocalMatrix<W> {

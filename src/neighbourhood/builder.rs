@@ -13,7 +13,7 @@ use std::collections::HashMap;
 
 use super::Configuration;
 use crate::mesh::{Chart, LatticeCoord, PolyMesh, SectorKind};
-use crate::schemes::CentreKind;
+use crate::sdc::CentreKind;
 
 struct PatchBuilder {
     chart: Chart,

@@ -1,7 +1,7 @@
 //! A configuration: what sits around the centre (valence, face types, centre kind).
 
 use crate::mesh::SectorKind;
-use crate::schemes::{CentreKind, Scheme};
+use crate::sdc::{CentreKind, Scheme};
 
 /// Largest valence accepted: the analysis neighbourhood of valence n has O(n)
 /// vertices and is refined up to three times during discovery; beyond this the

@@ -18,8 +18,9 @@ use super::builder::build_patch;
 use super::configuration::Configuration;
 use super::labels::{canonical_order, label_vertices, VertexLabel};
 use crate::mesh::{LatticeCoord, PolyMesh};
-use crate::refine::{apply, Origin, SparseRow, Stencil};
-use crate::schemes::{Scheme, SchemeWeight};
+use crate::refine::{apply, SparseRow};
+use crate::sdc::{Origin, Stencil};
+use crate::sdc::{Scheme, SchemeWeight};
 use crate::topology::Refined;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]

@@ -73,7 +73,7 @@ pub fn save<F: Figure>(fig: &F, path: &Path) -> Result<(), String> {
     register_font()?;
     let size = fig.size();
     match format {
-        Format::Svg => crate::cli::output::write_atomic(path, render_svg(fig)?.as_bytes()),
+        Format::Svg => crate::io::write_atomic(path, render_svg(fig)?.as_bytes()),
         Format::Png => {
             let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
             let tmp = tempfile::Builder::new()

@@ -8,10 +8,10 @@
 //! or a face type the scheme does not cover, e.g. a quad for Loop) is reported
 //! by name instead of being guessed.
 
-use super::{apply, Origin, Stencil};
+use super::{apply, step, Origin, Stencil, Step};
 use crate::mesh::PolyMesh;
-use crate::schemes::{Scheme, SchemeWeight};
-use crate::topology::{Topology, TriangleSplit};
+use crate::sdc::Scheme;
+use crate::sdc::{Topology, TriangleSplit};
 
 /// Most refinement levels accepted in one call.
 pub const MAX_LEVELS: usize = 12;
@@ -57,18 +57,13 @@ pub fn refine_mesh(
                 "level {level} would produce {bound} faces or vertices, above the supported {MAX_REFINED_FACES}; use fewer levels"
             ));
         }
-        let refined = scheme.topology().refine(&mesh)?;
         // non-stationary schemes (4-3 blends in its eon rules over the first steps)
         let step_rules = scheme.at_level(level);
         let rules: &dyn Scheme = step_rules.as_deref().unwrap_or(scheme);
-        let mut stencils: Vec<Option<Stencil<f64>>> = Vec::with_capacity(refined.vertex_origins.len());
-        for &origin in &refined.vertex_origins {
-            let st = <f64 as SchemeWeight>::stencil(rules, &mesh, origin)
-                .map_err(|_| format!("{}: a weight is not representable", scheme.name()))?;
-            match st {
-                Some(s) => stencils.push(Some(s)),
-                None => return Err(not_applicable(scheme, &mesh, origin, level)),
-            }
+        let Step { refined, stencils } = step::<f64>(rules, &mesh)?;
+        // a closed mesh must have every rule apply; name the first that does not
+        if let Some(k) = stencils.iter().position(Option::is_none) {
+            return Err(not_applicable(scheme, &mesh, refined.vertex_origins[k], level));
         }
         let new_points = apply(&stencils, &points);
         if new_points.iter().any(|p| p.is_none_or(|p| !p.iter().all(|x| x.is_finite()))) {
@@ -110,15 +105,9 @@ pub fn composite_weights(
     let mut mesh = mesh.clone();
     let mut rows: CompositeRows = (0..mesh.num_vertices()).map(|v| Some(super::SparseRow::unit(v))).collect();
     for level in levels {
-        let refined = scheme.topology().refine(&mesh)?;
         let step_rules = scheme.at_level(level);
         let rules: &dyn Scheme = step_rules.as_deref().unwrap_or(scheme);
-        let stencils: Vec<Option<Stencil<f64>>> = refined
-            .vertex_origins
-            .iter()
-            .map(|&o| <f64 as SchemeWeight>::stencil(rules, &mesh, o))
-            .collect::<Result<_, _>>()
-            .map_err(|_| format!("{}: a weight is not representable", scheme.name()))?;
+        let Step { refined, stencils } = step::<f64>(rules, &mesh)?;
         rows = apply(&stencils, &rows);
         mesh = refined.mesh;
     }

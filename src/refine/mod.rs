@@ -10,78 +10,14 @@ pub mod mesh;
 
 pub use combine::{Combine, SparseRow};
 
-use crate::mesh::{FaceId, VertexId};
-use crate::numeric::{Inexact, Weight};
+// Origins and stencils are part of the scheme description (`crate::sdc`);
+// re-exported because every consumer of a refinement step uses them.
+pub use crate::sdc::{Origin, RuleResult, Stencil};
 
-/// Where a new vertex (or a new face) comes from in the old mesh.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Origin {
-    /// the new vertex that replaces an old vertex (primal schemes)
-    Vertex(VertexId),
-    /// the new vertex on an old edge; (a, b) is a half-edge of the old mesh
-    Edge(VertexId, VertexId),
-    /// the new vertex inside an old face
-    Face(FaceId),
-    /// the new vertex near corner `corner` of old face `face` (dual schemes)
-    Corner { face: FaceId, corner: usize },
-}
-
-/// Weights on old vertices. Rules may add the same vertex several times;
-/// [`Stencil::merged`] (applied to every rule result by
-/// `schemes::SchemeWeight::stencil`) sums duplicates and drops zeros.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Stencil<W> {
-    pub terms: Vec<(VertexId, W)>,
-}
-
-impl<W: Weight> Default for Stencil<W> {
-    fn default() -> Self {
-        Stencil { terms: Vec::new() }
-    }
-}
-
-impl<W: Weight> Stencil<W> {
-    pub fn new() -> Self {
-        Self::default()
-    }
-    /// Add `w` to the weight of vertex `v` (duplicates are summed by `merged`).
-    pub fn add(&mut self, v: VertexId, w: W) {
-        self.terms.push((v, w));
-    }
-    /// Sum duplicate vertices, drop zero weights, sort by vertex.
-    pub fn merged(mut self) -> Self {
-        self.terms.sort_by_key(|t| t.0);
-        let mut out: Vec<(VertexId, W)> = Vec::with_capacity(self.terms.len());
-        for (v, w) in self.terms {
-            match out.last_mut() {
-                Some(last) if last.0 == v => last.1 = last.1.clone() + w,
-                _ => out.push((v, w)),
-            }
-        }
-        out.retain(|t| !t.1.is_zero());
-        Stencil { terms: out }
-    }
-    pub fn with(mut self, v: VertexId, w: W) -> Self {
-        self.add(v, w);
-        self
-    }
-    /// Add `scale` times another stencil.
-    pub fn add_scaled(&mut self, other: &Stencil<W>, scale: &W) {
-        for (v, w) in &other.terms {
-            self.add(*v, w.clone() * scale.clone());
-        }
-    }
-    /// Vertices with non-zero weight (call on a merged stencil).
-    pub fn support(&self) -> impl Iterator<Item = VertexId> + '_ {
-        self.terms.iter().filter(|t| !t.1.is_zero()).map(|t| t.0)
-    }
-}
-
-/// What a mask returns for one origin: `Ok(None)` when the old mesh does not
-/// hold the neighbourhood the rule needs (boundary of a truncated patch, or a
-/// face type the rule does not cover); `Err(Inexact)` when the weights are not
-/// representable in `W`.
-pub type RuleResult<W> = Result<Option<Stencil<W>>, Inexact>;
+use crate::mesh::PolyMesh;
+use crate::numeric::Weight;
+use crate::sdc::{Scheme, SchemeWeight};
+use crate::topology::Refined;
 
 /// Evaluate stencils on data; a new value is `None` when its stencil is missing
 /// or touches a missing old value.
@@ -97,4 +33,29 @@ pub fn apply<W: Weight, T: Combine<W>>(stencils: &[Option<Stencil<W>>], data: &[
             Some(T::combine(&terms))
         })
         .collect()
+}
+
+/// One refinement step of a mesh: the host's refined connectivity and, per
+/// new vertex, its stencil over the old vertices (`None` where the rule
+/// cannot be evaluated on this mesh, e.g. at the rim of a truncated patch or
+/// a pruned net). This is the one place where a host and a scheme's rules
+/// meet; discovery, characteristic-map nets and mesh refinement all step
+/// through it.
+pub struct Step<W> {
+    pub refined: Refined,
+    pub stencils: Vec<Option<Stencil<W>>>,
+}
+
+/// Refine `mesh` once with `rules` (a scheme, or its rules at one level for
+/// non-stationary schemes). Fails when the host cannot refine the mesh or a
+/// weight is not representable in `W` (irrational weights in exact arithmetic).
+pub fn step<W: SchemeWeight>(rules: &dyn Scheme, mesh: &PolyMesh) -> Result<Step<W>, String> {
+    let refined = rules.topology().refine(mesh)?;
+    let stencils = refined
+        .vertex_origins
+        .iter()
+        .map(|&o| W::stencil(rules, mesh, o))
+        .collect::<Result<_, _>>()
+        .map_err(|_| format!("{}: a weight is not representable exactly", rules.name()))?;
+    Ok(Step { refined, stencils })
 }

@@ -192,7 +192,7 @@ pub fn write(dir: &Path, files: &Files) -> Result<(), String> {
         if let Some(parent) = path.parent() {
             std::fs::create_dir_all(parent).map_err(|e| format!("cannot create {}: {e}", parent.display()))?;
         }
-        crate::cli::output::write_atomic(&path, bytes)?;
+        crate::io::write_atomic(&path, bytes)?;
     }
     Ok(())
 }

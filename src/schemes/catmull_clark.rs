@@ -8,8 +8,8 @@
 use super::{CentreKind, Params, Rules, Scheme, SchemeEntry};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Weight;
-use crate::refine::{Origin, RuleResult, Stencil};
-use crate::topology::{Topology, TriangleSplit};
+use crate::sdc::{Origin, RuleResult, Stencil};
+use crate::sdc::{Topology, TriangleSplit};
 
 pub struct CatmullClark {
     params: Params,

@@ -5,8 +5,8 @@
 use super::{CentreKind, Params, Rules, Scheme, SchemeEntry};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Weight;
-use crate::refine::{Origin, RuleResult, Stencil};
-use crate::topology::Topology;
+use crate::sdc::Topology;
+use crate::sdc::{Origin, RuleResult, Stencil};
 
 pub struct DooSabin {
     params: Params,

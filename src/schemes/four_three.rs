@@ -36,8 +36,8 @@
 use super::{CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
-use crate::refine::{Origin, RuleResult, Stencil};
-use crate::topology::{Topology, TriangleSplit};
+use crate::sdc::{Origin, RuleResult, Stencil};
+use crate::sdc::{Topology, TriangleSplit};
 
 /// σ0 of section 2: the last refinement step that still blends (4b) with the
 /// regular edge rules ("say σ0 = 3").

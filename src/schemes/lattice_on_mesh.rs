@@ -13,8 +13,8 @@ use super::{CentreKind, Params, Rules, Scheme};
 use crate::lattice::{LatticeScheme, LatticeWeight};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Rational;
-use crate::refine::{Origin, RuleResult, Stencil};
-use crate::topology::{Topology, TriangleSplit};
+use crate::sdc::{Origin, RuleResult, Stencil};
+use crate::sdc::{Topology, TriangleSplit};
 
 pub struct LatticeOnMesh {
     inner: Box<dyn LatticeScheme>,

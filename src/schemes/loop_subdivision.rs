@@ -6,8 +6,8 @@
 use super::{uniform_fan, CentreKind, Params, Rules, Scheme, SchemeEntry};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Weight;
-use crate::refine::{Origin, RuleResult, Stencil};
-use crate::topology::{Topology, TriangleSplit};
+use crate::sdc::{Origin, RuleResult, Stencil};
+use crate::sdc::{Topology, TriangleSplit};
 
 pub struct Loop {
     params: Params,

@@ -16,8 +16,8 @@
 use super::{CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
-use crate::refine::{Origin, RuleResult, Stencil};
-use crate::topology::Topology;
+use crate::sdc::Topology;
+use crate::sdc::{Origin, RuleResult, Stencil};
 
 pub struct NonBox {
     params: Params,

@@ -13,8 +13,8 @@
 use super::{uniform_fan, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Weight;
-use crate::refine::{Origin, RuleResult, Stencil};
-use crate::topology::Topology;
+use crate::sdc::Topology;
+use crate::sdc::{Origin, RuleResult, Stencil};
 
 pub struct PolarBi2 {
     params: Params,

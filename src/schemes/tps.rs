@@ -38,8 +38,8 @@
 use super::{uniform_fan, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
-use crate::refine::{Origin, RuleResult, Stencil};
-use crate::topology::Topology;
+use crate::sdc::Topology;
+use crate::sdc::{Origin, RuleResult, Stencil};
 
 pub struct Tps {
     params: Params,

@@ -19,8 +19,8 @@
 use super::{CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Weight;
-use crate::refine::{Origin, RuleResult, Stencil};
-use crate::topology::Topology;
+use crate::sdc::Topology;
+use crate::sdc::{Origin, RuleResult, Stencil};
 
 pub struct UnifiedSqrt3 {
     params: Params,

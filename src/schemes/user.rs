@@ -38,7 +38,7 @@ use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::expr::{Env, Expr};
 use crate::numeric::{Inexact, ParamValue, Weight};
 use crate::refine::{Origin, RuleResult, Stencil};
-use crate::topology::{Topology, TriangleSplit};
+use crate::sdc::{Topology, TriangleSplit};
 
 /// Scheme files are a few dozen lines; the caps keep a malformed or hostile
 /// file from costing unbounded time or memory.

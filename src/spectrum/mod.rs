@@ -18,7 +18,7 @@ use crate::matrix::{assemble, LocalMatrix};
 use crate::neighbourhood::{discover, Configuration, Discovered, NeighbourhoodKind, VertexLabel};
 use crate::numeric::recognise::recognise;
 use crate::numeric::Rational;
-use crate::schemes::Scheme;
+use crate::sdc::Scheme;
 pub use exact::ExactSummary;
 pub use verdict::Verdict;
 
@@ -143,7 +143,7 @@ pub struct Spectrum {
     pub valence: usize,
     pub params: std::collections::BTreeMap<String, String>,
     pub faces: String,
-    pub centre: crate::schemes::CentreKind,
+    pub centre: crate::sdc::CentreKind,
     pub neighbourhood: NeighbourhoodKind,
     pub matrix_size: usize,
     pub minimal_size: usize,

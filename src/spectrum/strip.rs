@@ -20,7 +20,7 @@ use num_traits::Zero;
 
 use crate::neighbourhood::{build_patch, Configuration};
 use crate::numeric::Rational;
-use crate::schemes::{Scheme, SchemeWeight};
+use crate::sdc::{Scheme, SchemeWeight};
 
 /// Planar integer position of a chart point: sector s point (i, j) is
 /// i·d_s + j·d_{s+1} with the given spoke vectors d.

@@ -10,7 +10,7 @@
 
 use super::{dual_split, Refined};
 use crate::mesh::{LatticeCoord, PolyMesh};
-use crate::refine::Origin;
+use crate::sdc::Origin;
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
     let base = dual_split::refine(mesh)?;

@@ -14,7 +14,7 @@ use std::collections::HashMap;
 
 use super::{ChartBuilder, Refined};
 use crate::mesh::PolyMesh;
-use crate::refine::Origin;
+use crate::sdc::Origin;
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
     if !mesh.has_face_point_on_every_face() {

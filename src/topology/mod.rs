@@ -13,36 +13,8 @@ pub mod sqrt3_split;
 pub mod ternary_split;
 
 use crate::mesh::{Chart, LatticeCoord, PolyMesh};
-use crate::refine::Origin;
-
-/// How triangles are split by a primal operator.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum TriangleSplit {
-    /// 1 -> 4 triangles, no face point (Loop, the triangle part of 4-3)
-    FourTriangles,
-    /// a face point and 3 quads (Catmull–Clark on triangles)
-    FacePointQuads,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Topology {
-    /// vertex, edge and (for quads and larger) face points; each face split
-    /// into quads around its face point, triangles as `TriangleSplit` says
-    PrimalSplit(TriangleSplit),
-    /// one new vertex per face corner; F-, E- and V-faces (Doo–Sabin)
-    Dual,
-    /// a new vertex in every triangle, old edges flipped (Kobbelt's sqrt(3))
-    Sqrt3,
-    /// quads around each face's control vertex, a new FCV per new quad (non-box)
-    FcvSplit,
-    /// every quad split into 3 x 3 quads (ternary primal bi-2, TPS)
-    TernarySplit,
-    /// the dual split plus a central point per non-quad (or already augmented)
-    /// face (point-augmented bi-2, PGS)
-    AugmentedDual,
-    /// radial-only binary split of polar nets (polar bi-2)
-    PolarSplit,
-}
+use crate::sdc::Origin;
+pub use crate::sdc::{Topology, TriangleSplit};
 
 impl Topology {
     pub fn refine(&self, mesh: &PolyMesh) -> Result<Refined, String> {
@@ -54,15 +26,6 @@ impl Topology {
             Topology::TernarySplit => ternary_split::refine(mesh),
             Topology::AugmentedDual => augmented_dual::refine(mesh),
             Topology::PolarSplit => polar_split::refine(mesh),
-        }
-    }
-    /// Refinements in one analysis step: the number after which the refined
-    /// lattice is the old one scaled, without rotation, so that vertices can be
-    /// matched by lattice coordinates.
-    pub fn steps_per_analysis(&self) -> usize {
-        match self {
-            Topology::Sqrt3 => 2,
-            _ => 1,
         }
     }
 }

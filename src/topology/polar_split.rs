@@ -20,7 +20,7 @@ use std::collections::HashMap;
 
 use super::{ChartBuilder, Refined};
 use crate::mesh::PolyMesh;
-use crate::refine::Origin;
+use crate::sdc::Origin;
 
 /// A pole: an interior vertex whose faces are all triangles.
 pub fn is_pole(mesh: &PolyMesh, v: usize) -> bool {

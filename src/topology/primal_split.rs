@@ -5,7 +5,7 @@ use std::collections::HashMap;
 
 use super::{ChartBuilder, Refined, TriangleSplit};
 use crate::mesh::PolyMesh;
-use crate::refine::Origin;
+use crate::sdc::Origin;
 
 pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, String> {
     let nv = mesh.num_vertices();

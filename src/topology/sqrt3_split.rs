@@ -15,7 +15,7 @@ use std::collections::HashMap;
 
 use super::{ChartBuilder, Refined};
 use crate::mesh::PolyMesh;
-use crate::refine::Origin;
+use crate::sdc::Origin;
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
     let nv = mesh.num_vertices();

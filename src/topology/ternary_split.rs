@@ -13,7 +13,7 @@ use std::collections::HashMap;
 
 use super::{ChartBuilder, Refined};
 use crate::mesh::PolyMesh;
-use crate::refine::Origin;
+use crate::sdc::Origin;
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
     if let Some(f) = (0..mesh.num_faces()).find(|&f| mesh.face(f).len() != 4) {

@@ -33,7 +33,7 @@ pub fn assert_same_multiset(mut got: Vec<f64>, mut want: Vec<f64>, tol: f64, wha
     want.sort_by(f64::total_cmp);
     assert_eq!(got.len(), want.len(), "{what}: sizes differ: got {got:?}, want {want:?}");
     for (g, w) in got.iter().zip(&want) {
-        assert!((g - w).abs() < tol, "{what}: got {got:?}, want {want:?}");
+        assert!(approx::abs_diff_eq!(*g, *w, epsilon = tol), "{what}: got {got:?}, want {want:?}");
     }
 }
 

@@ -1,6 +1,7 @@
 //! Writing results: standard output, or files replaced atomically (write to a
 //! temporary file in the same directory, then rename), so a crash leaves the
-//! old file intact.
+//! old file intact. A library module (not part of `cli`) because figures and
+//! reports are written by library code too.
 
 use std::io::Write;
 use std::path::Path;

@@ -1,0 +1,76 @@
+//! The library's typed error. Every variant displays as the one-line message
+//! the command line prints (the CLI's contract: one line on stderr, non-zero
+//! exit), while callers that must react to a failure match on the variant,
+//! never on the text.
+//!
+//! Migration note: older stages still return `Result<_, String>`; `Error`
+//! converts into `String` (so `?` works across the boundary) and a `String`
+//! converts into `Error::Message`, which carries such a message unchanged.
+
+use crate::mesh::polymesh::MeshError;
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Error {
+    /// A message from a stage that does not yet have a typed error.
+    Message(String),
+    /// An input mesh is malformed (bad index, degenerate face, non-manifold edge).
+    Mesh(MeshError),
+    /// A point the computation needs is not determined by the control points
+    /// at hand (a rule reaches past a truncated patch or a pruned margin):
+    /// the caller may retry with a larger neighbourhood.
+    NotDetermined(String),
+    /// A file could not be written; names the file and the reason.
+    Write { path: String, reason: String },
+}
+
+pub type Result<T> = std::result::Result<T, Error>;
+
+impl std::fmt::Display for Error {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Error::Message(m) | Error::NotDetermined(m) => f.write_str(m),
+            Error::Mesh(e) => write!(f, "{e}"),
+            Error::Write { path, reason } => write!(f, "cannot write {path}: {reason}"),
+        }
+    }
+}
+
+impl std::error::Error for Error {}
+
+impl From<String> for Error {
+    fn from(m: String) -> Self {
+        Error::Message(m)
+    }
+}
+
+impl From<&str> for Error {
+    fn from(m: &str) -> Self {
+        Error::Message(m.to_string())
+    }
+}
+
+impl From<MeshError> for Error {
+    fn from(e: MeshError) -> Self {
+        Error::Mesh(e)
+    }
+}
+
+impl From<Error> for String {
+    fn from(e: Error) -> Self {
+        e.to_string()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn display_is_the_one_line_message() {
+        assert_eq!(Error::from("valence 2 is below 3").to_string(), "valence 2 is below 3");
+        let e = Error::Write { path: "a.svg".into(), reason: "permission denied".into() };
+        assert_eq!(String::from(e), "cannot write a.svg: permission denied");
+        let m = MeshError::DegenerateFace { face: 3 };
+        assert_eq!(Error::from(m.clone()).to_string(), m.to_string());
+    }
+}

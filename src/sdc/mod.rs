@@ -1,0 +1,139 @@
+//! The scheme-description layer (the role of OpenSubdiv's Sdc): what a
+//! subdivision scheme *is*, independent of how it is analysed. It holds the
+//! rule interface (`Rules<W>`, `Scheme`, `SchemeWeight`), the stencil and
+//! origin types rules produce, the refinement host a scheme runs on
+//! (`Topology`), the kind of centre it is analysed at and its typed parameters.
+//!
+//! Layering: `sdc` depends only on `numeric` and `mesh`. The engine (hosts,
+//! refinement, discovery, assembly, spectrum, characteristic maps) is written
+//! against this layer and never imports the scheme catalogue (`crate::schemes`);
+//! `tests/layers.rs` enforces that.
+
+pub mod host;
+pub mod params;
+pub mod stencil;
+
+pub use host::{Topology, TriangleSplit};
+pub use params::{ParamSpec, Params};
+pub use stencil::{Origin, RuleResult, Stencil};
+
+use crate::mesh::{PolyMesh, SectorKind};
+use crate::numeric::{Rational, Weight};
+
+/// The rules of a scheme for one weight type.
+pub trait Rules<W: Weight> {
+    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W>;
+}
+
+/// What kind of point the analysis is centred on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum CentreKind {
+    /// an extraordinary vertex (Catmull–Clark, Loop, 4-3, ...)
+    Vertex,
+    /// an extraordinary face (Doo–Sabin, ...)
+    Face,
+    /// an extraordinary face with an extra control point at its centre
+    /// (point-augmented bi-2 subdivision, PGS)
+    AugmentedFace,
+    /// a pole: a vertex surrounded by triangles, rings of quads outside
+    /// (polar bi-2 subdivision)
+    Polar,
+}
+
+impl CentreKind {
+    /// Whether the analysis is centred on a face (its corners form ring 0).
+    pub fn is_face_centred(self) -> bool {
+        matches!(self, CentreKind::Face | CentreKind::AugmentedFace)
+    }
+    /// Vertex rings (beyond ring 0) whose faces carry the first ring of the
+    /// limit surface. Normally the faces touching ring 0. In a polar layout a
+    /// bi-2 ring of patches spans three rows of control points, and the first
+    /// ring that is not degenerate at the pole spans rows 1 to 3, i.e. the
+    /// faces touching rings 0 to 2.
+    pub fn first_ring_depth(self) -> usize {
+        match self {
+            CentreKind::Polar => 2,
+            _ => 0,
+        }
+    }
+}
+
+pub trait Scheme: Rules<f64> + Rules<Rational> + Send + Sync {
+    fn name(&self) -> &'static str;
+    fn description(&self) -> &'static str;
+    fn topology(&self) -> Topology;
+    fn centre_kind(&self) -> CentreKind;
+    /// The face type of the regular lattice around the centre.
+    fn sector_kind(&self) -> SectorKind;
+    fn params(&self) -> &Params;
+    /// Whether meshes carry a face control vertex per face (non-box).
+    fn face_control(&self) -> bool {
+        false
+    }
+    /// The name of a parameter that may vary per vertex (`PolyMesh::vertex_params`),
+    /// if the scheme has one.
+    fn vertex_param(&self) -> Option<&'static str> {
+        None
+    }
+    /// How the per-vertex parameter of a new vertex derives from the old ones
+    /// (weights on old vertices); `None` where the scheme has no such parameter.
+    fn vertex_param_rule(&self, _mesh: &PolyMesh, _origin: Origin) -> Option<Stencil<f64>> {
+        None
+    }
+    /// Why the scheme has no boundary rules here, for the open-mesh error.
+    fn boundary_note(&self) -> Option<&'static str> {
+        None
+    }
+    /// The only valence the scheme is defined at (regular-lattice schemes: 4).
+    fn fixed_valence(&self) -> Option<usize> {
+        None
+    }
+    /// Whether the rules commute with the rotation of a symmetric configuration
+    /// (false for asymmetric masks: then no Fourier blocks).
+    fn rotation_symmetric(&self) -> bool {
+        true
+    }
+    /// Whether meshes must carry lattice directions (`PolyMesh::orient_lattice`).
+    fn lattice_oriented(&self) -> bool {
+        false
+    }
+    /// Whether the analysis accepts any sequence of quad and triangle sectors
+    /// around the centre (`--faces`), not only the regular configuration.
+    fn face_sequences(&self) -> bool {
+        false
+    }
+    /// What the scheme needs of an input mesh, for error messages of `refine`;
+    /// `None`: derived from the topology.
+    fn mesh_requirement(&self) -> Option<&'static str> {
+        None
+    }
+    /// The rules of refinement step `level` (1 = the first) of a real mesh, for
+    /// schemes whose first steps differ from the stationary rules that the
+    /// local subdivision matrix analyses; `None`: the same rules at every step.
+    fn at_level(&self, _level: usize) -> Option<Box<dyn Scheme>> {
+        None
+    }
+}
+
+/// Weight types every scheme implements rules for; lets generic code ask a
+/// `&dyn Scheme` for stencils of any of them. This is the one entry point to
+/// the rules: results come back merged (duplicates summed, zeros dropped).
+pub trait SchemeWeight: Weight {
+    fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self>;
+    fn stencil(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
+        Ok(Self::rule(scheme, mesh, origin)?.map(|s| s.merged()))
+    }
+}
+
+impl SchemeWeight for f64 {
+    fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
+        Rules::<f64>::stencil(scheme, mesh, origin)
+    }
+}
+
+impl SchemeWeight for Rational {
+    fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
+        Rules::<Rational>::stencil(scheme, mesh, origin)
+    }
+}
