@@ -8,9 +8,9 @@ use subdlab::charmap::{characteristic_map_of, net, raster, regularity, ring, wed
 use subdlab::mesh::{PolyMesh, SectorKind};
 use subdlab::neighbourhood::{Configuration, NeighbourhoodKind};
 use subdlab::refine::{Origin, RuleResult, Stencil};
-use subdlab::schemes::{self, CentreKind, Params, Rules, Scheme, SchemeWeight};
+use subdlab::schemes::{self, Caps, CentreKind, Params, Rules, Scheme, SchemeInfo, SchemeWeight};
+use subdlab::sdc::{Topology, TriangleSplit};
 use subdlab::spectrum::{analyse, Options};
-use subdlab::topology::Topology;
 
 fn opts(levels: usize, resolution: usize) -> CharMapOptions {
     CharMapOptions { levels, resolution, display_levels: None }
@@ -260,21 +260,18 @@ impl<W: SchemeWeight> Rules<W> for SkewLoop {
     }
 }
 
+const SKEWLOOP_INFO: SchemeInfo = SchemeInfo {
+    name: "skew-loop",
+    description: "Loop with edge weights that favour Fourier block 2 (test only)",
+    topology: Topology::PrimalSplit(TriangleSplit::FourTriangles),
+    centre: CentreKind::Vertex,
+    sector: SectorKind::Tri,
+    caps: Caps::NONE,
+};
+
 impl Scheme for SkewLoop {
-    fn name(&self) -> &'static str {
-        "skew-loop"
-    }
-    fn description(&self) -> &'static str {
-        "Loop with edge weights that favour Fourier block 2 (test only)"
-    }
-    fn topology(&self) -> Topology {
-        self.base.topology()
-    }
-    fn centre_kind(&self) -> CentreKind {
-        CentreKind::Vertex
-    }
-    fn sector_kind(&self) -> SectorKind {
-        SectorKind::Tri
+    fn info(&self) -> &SchemeInfo {
+        &SKEWLOOP_INFO
     }
     fn params(&self) -> &Params {
         &self.params
@@ -412,21 +409,18 @@ impl<W: SchemeWeight> Rules<W> for JordanCc {
     }
 }
 
+const JORDANCC_INFO: SchemeInfo = SchemeInfo {
+    name: "jordan-cc",
+    description: "Catmull–Clark with edge weights that make lambda1 defective (test only)",
+    topology: Topology::PrimalSplit(TriangleSplit::FacePointQuads),
+    centre: CentreKind::Vertex,
+    sector: SectorKind::Quad,
+    caps: Caps::NONE,
+};
+
 impl Scheme for JordanCc {
-    fn name(&self) -> &'static str {
-        "jordan-cc"
-    }
-    fn description(&self) -> &'static str {
-        "Catmull–Clark with edge weights that make lambda1 defective (test only)"
-    }
-    fn topology(&self) -> Topology {
-        self.base.topology()
-    }
-    fn centre_kind(&self) -> CentreKind {
-        CentreKind::Vertex
-    }
-    fn sector_kind(&self) -> SectorKind {
-        SectorKind::Quad
+    fn info(&self) -> &SchemeInfo {
+        &JORDANCC_INFO
     }
     fn params(&self) -> &Params {
         &self.params

@@ -193,7 +193,7 @@ pub fn local_matrix<W: LatticeWeight>(scheme: &dyn LatticeScheme, w: &Window) ->
 
 /// The window whose points hold every control point influencing the limit
 /// surface over the cells around the origin, [-radius, radius]², closed under
-/// dependencies (the lattice analogue of DESIGN.md's analysis neighbourhood).
+/// dependencies (the lattice analogue of ARCHITECTURE.md's analysis neighbourhood).
 /// Found by tracking dependencies: the fine points of level k inside the region
 /// are pulled back level by level to the control points of level 0; the union
 /// grows with k and is stationary once two consecutive levels give the same set.

@@ -1,4 +1,4 @@
-//! Finding the two neighbourhoods of DESIGN.md by tracking dependencies, not by
+//! Finding the two neighbourhoods of ARCHITECTURE.md by tracking dependencies, not by
 //! hard-coding them per scheme.
 //!
 //! * minimal invariant set: the closure of the ring-0 vertices under "the new

@@ -133,9 +133,14 @@ fn size_bound(topology: Topology, mesh: &PolyMesh) -> usize {
         Topology::TernarySplit => (9 * f).max(v + 2 * e + 4 * f),
         // the dual split plus at most one central point per face
         Topology::AugmentedDual => corners.max(f + e + v) + f,
-        // hosts added later (e.g. sqrt3): a generous bound until they get an exact count
-        #[allow(unreachable_patterns)]
-        _ => 4 * corners + v + e + f,
+        // old vertices plus one per face; two triangles per flipped edge
+        Topology::Sqrt3 => (2 * e).max(v + f),
+        // one quad per corner; old vertices (the old FCVs become the face
+        // points), one per edge, one new FCV per new quad
+        Topology::FcvSplit => corners.max(v + e + corners),
+        // every face shrinks to a copy (one new point per corner at most) and
+        // every edge gets a joining quad
+        Topology::PolarSplit => (f + e).max(corners + v),
     }
 }
 
@@ -174,9 +179,6 @@ fn not_applicable(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin, level: u
         Origin::Corner { face, corner } => {
             format!("its corner rule does not apply at corner {} of face {}", corner + 1, face + 1)
         }
-        // origins added with new refinement hosts
-        #[allow(unreachable_patterns)]
-        other => format!("its rule does not apply at {other:?}"),
     };
     let needs = requirement(scheme);
     let boundary_note = match open {
@@ -198,7 +200,8 @@ fn requirement(scheme: &dyn Scheme) -> &'static str {
         Topology::AugmentedDual => {
             "a closed mesh whose vertices all have valence 4 (a Doo–Sabin net: apply one doo-sabin step first)"
         }
-        _ => "a closed mesh",
+        Topology::Sqrt3 => "a closed triangle mesh",
+        Topology::PrimalSplit(TriangleSplit::FacePointQuads) | Topology::Dual | Topology::FcvSplit => "a closed mesh",
     }
 }
 

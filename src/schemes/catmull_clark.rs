@@ -5,7 +5,7 @@
 //! vertex point = (Q + 2R + (n - 3) v) / n, Q = average of the adjacent face
 //!                points, R = average of the adjacent edge midpoints.
 
-use super::{CentreKind, Params, Rules, Scheme, SchemeEntry};
+use super::{Caps, CentreKind, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Weight;
 use crate::sdc::{Origin, RuleResult, Stencil};
@@ -15,10 +15,19 @@ pub struct CatmullClark {
     params: Params,
 }
 
+const INFO: SchemeInfo = SchemeInfo {
+    name: "catmull-clark",
+    description: "Catmull–Clark primal quad subdivision (bicubic B-spline in the regular case)",
+    topology: Topology::PrimalSplit(TriangleSplit::FacePointQuads),
+    centre: CentreKind::Vertex,
+    sector: SectorKind::Quad,
+    caps: Caps::NONE,
+};
+
 pub fn entry() -> SchemeEntry {
     SchemeEntry {
-        name: "catmull-clark",
-        description: "Catmull–Clark primal quad subdivision (bicubic B-spline in the regular case)",
+        name: INFO.name,
+        description: INFO.description,
         params: Vec::new,
         build: |params| Box::new(CatmullClark { params }),
     }
@@ -69,20 +78,8 @@ impl<W: Weight> Rules<W> for CatmullClark {
 }
 
 impl Scheme for CatmullClark {
-    fn name(&self) -> &'static str {
-        "catmull-clark"
-    }
-    fn description(&self) -> &'static str {
-        entry().description
-    }
-    fn topology(&self) -> Topology {
-        Topology::PrimalSplit(TriangleSplit::FacePointQuads)
-    }
-    fn centre_kind(&self) -> CentreKind {
-        CentreKind::Vertex
-    }
-    fn sector_kind(&self) -> SectorKind {
-        SectorKind::Quad
+    fn info(&self) -> &SchemeInfo {
+        &INFO
     }
     fn params(&self) -> &Params {
         &self.params

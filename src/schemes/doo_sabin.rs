@@ -2,7 +2,7 @@
 //! the new vertex at corner 0 of an m-gon is Σ_j α_j v_j with
 //! α_0 = 1/4 + 5/(4m), α_j = (3 + 2 cos(2πj/m)) / (4m).
 
-use super::{CentreKind, Params, Rules, Scheme, SchemeEntry};
+use super::{Caps, CentreKind, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Weight;
 use crate::sdc::Topology;
@@ -12,10 +12,19 @@ pub struct DooSabin {
     params: Params,
 }
 
+const INFO: SchemeInfo = SchemeInfo {
+    name: "doo-sabin",
+    description: "Doo–Sabin dual subdivision with the Doo–Sabin weights (biquadratic B-spline when regular)",
+    topology: Topology::Dual,
+    centre: CentreKind::Face,
+    sector: SectorKind::Quad,
+    caps: Caps::NONE,
+};
+
 pub fn entry() -> SchemeEntry {
     SchemeEntry {
-        name: "doo-sabin",
-        description: "Doo–Sabin dual subdivision with the Doo–Sabin weights (biquadratic B-spline when regular)",
+        name: INFO.name,
+        description: INFO.description,
         params: Vec::new,
         build: |params| Box::new(DooSabin { params }),
     }
@@ -41,20 +50,8 @@ impl<W: Weight> Rules<W> for DooSabin {
 }
 
 impl Scheme for DooSabin {
-    fn name(&self) -> &'static str {
-        "doo-sabin"
-    }
-    fn description(&self) -> &'static str {
-        entry().description
-    }
-    fn topology(&self) -> Topology {
-        Topology::Dual
-    }
-    fn centre_kind(&self) -> CentreKind {
-        CentreKind::Face
-    }
-    fn sector_kind(&self) -> SectorKind {
-        SectorKind::Quad
+    fn info(&self) -> &SchemeInfo {
+        &INFO
     }
     fn params(&self) -> &Params {
         &self.params

@@ -2,7 +2,7 @@
 //! subdivision"): one scheme for meshes of quads and triangles.
 //!
 //! The paper's figure 4 (the stencils) is missing from the text; the weights
-//! below are those of the authors' implementation as recorded in DESIGN.md
+//! below are those of the authors' implementation as recorded in ARCHITECTURE.md
 //! ("Facts for 4-3 subdivision"), unnormalised / denominator:
 //!
 //! (1a) regular quad vertex (4 quads):       (4 v + Σ 4 neighbours) / 8
@@ -33,7 +33,7 @@
 //! the edge at an eon is (σ−1)/σ (4b) + 1/σ (regular rule), after σ0 (4b) alone
 //! (section 2); the (4a') share is blended with the same factor (Lemma 3.8).
 
-use super::{CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry};
+use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
 use crate::sdc::{Origin, RuleResult, Stencil};
@@ -50,29 +50,37 @@ pub struct FourThree {
     level: Option<usize>,
 }
 
+const INFO: SchemeInfo = SchemeInfo {
+    name: "four-three",
+    description:
+        "Peters–Shiue 4-3 subdivision of quad/triangle meshes (A_4 and A_3 box splines, 4-3 transition, eon rules)",
+    topology: Topology::PrimalSplit(TriangleSplit::FourTriangles),
+    centre: CentreKind::Vertex,
+    sector: SectorKind::Quad,
+    caps: Caps { face_sequences: true, mesh_requirement: Some("a closed mesh of triangles and quads"), ..Caps::NONE },
+};
+
+const CENTRE_WEIGHT: ParamSpec = ParamSpec {
+    name: "centre_weight",
+    default: "",
+    min: 0.25,
+    max: 0.75,
+    description: "the eon's own weight (figure 4's alpha; 1 - alpha of the matrix M); default the paper's 3/8 (n = 3), 1/2 (n = 4), 3/5 (n > 4)",
+};
+
+const EON_QUAD_TERM: ParamSpec = ParamSpec {
+    name: "eon_quad_term",
+    default: "0",
+    min: 0.0,
+    max: 1.0,
+    description: "share t of rule (4a') in the eon rule: (1 - t) (4a) + t (4a')",
+};
+
 pub fn entry() -> SchemeEntry {
     SchemeEntry {
-        name: "four-three",
-        description:
-            "Peters–Shiue 4-3 subdivision of quad/triangle meshes (A_4 and A_3 box splines, 4-3 transition, eon rules)",
-        params: || {
-            vec![
-                ParamSpec {
-                    name: "centre_weight",
-                    default: "",
-                    min: 0.25,
-                    max: 0.75,
-                    description: "the eon's own weight (figure 4's alpha; 1 - alpha of the matrix M); default the paper's 3/8 (n = 3), 1/2 (n = 4), 3/5 (n > 4)",
-                },
-                ParamSpec {
-                    name: "eon_quad_term",
-                    default: "0",
-                    min: 0.0,
-                    max: 1.0,
-                    description: "share t of rule (4a') in the eon rule: (1 - t) (4a) + t (4a')",
-                },
-            ]
-        },
+        name: INFO.name,
+        description: INFO.description,
+        params: || vec![CENTRE_WEIGHT, EON_QUAD_TERM],
         build: |params| Box::new(FourThree { params, level: None }),
     }
 }
@@ -128,7 +136,7 @@ pub fn classify(mesh: &PolyMesh, v: usize) -> Option<(Vec<Vec<usize>>, NodeType)
 
 impl FourThree {
     fn centre_weight<W: Weight>(&self, n: i64) -> Result<W, Inexact> {
-        match self.params.get("centre_weight") {
+        match self.params.of(&CENTRE_WEIGHT) {
             Some(p) => W::param(p),
             None => Ok(paper_centre_weight(n)),
         }
@@ -187,7 +195,7 @@ impl FourThree {
     }
 
     fn eon_quad_term<W: Weight>(&self) -> Result<W, Inexact> {
-        match self.params.get("eon_quad_term") {
+        match self.params.of(&EON_QUAD_TERM) {
             Some(p) => W::param(p),
             None => Ok(W::zero()),
         }
@@ -284,29 +292,11 @@ impl<W: Weight> Rules<W> for FourThree {
 }
 
 impl Scheme for FourThree {
-    fn name(&self) -> &'static str {
-        "four-three"
-    }
-    fn description(&self) -> &'static str {
-        entry().description
-    }
-    fn topology(&self) -> Topology {
-        Topology::PrimalSplit(TriangleSplit::FourTriangles)
-    }
-    fn centre_kind(&self) -> CentreKind {
-        CentreKind::Vertex
-    }
-    fn sector_kind(&self) -> SectorKind {
-        SectorKind::Quad
+    fn info(&self) -> &SchemeInfo {
+        &INFO
     }
     fn params(&self) -> &Params {
         &self.params
-    }
-    fn face_sequences(&self) -> bool {
-        true
-    }
-    fn mesh_requirement(&self) -> Option<&'static str> {
-        Some("a closed mesh of triangles and quads")
     }
     fn at_level(&self, level: usize) -> Option<Box<dyn Scheme>> {
         Some(Box::new(FourThree { params: self.params.clone(), level: Some(level) }))

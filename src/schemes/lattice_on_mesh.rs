@@ -9,7 +9,7 @@
 //! is p_{2i,2j}, of a +i edge p_{2i+1,2j}, of a +j edge p_{2i,2j+1}, of a face
 //! p_{2i+1,2j+1} (with (i, j) the face's corner whose outgoing edge is +i).
 
-use super::{CentreKind, Params, Rules, Scheme};
+use super::{Caps, CentreKind, Params, Rules, Scheme, SchemeInfo};
 use crate::lattice::{LatticeScheme, LatticeWeight};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Rational;
@@ -19,11 +19,26 @@ use crate::sdc::{Topology, TriangleSplit};
 pub struct LatticeOnMesh {
     inner: Box<dyn LatticeScheme>,
     params: Params,
+    info: SchemeInfo,
 }
 
 impl LatticeOnMesh {
     pub fn new(inner: Box<dyn LatticeScheme>) -> Self {
-        LatticeOnMesh { inner, params: Params::default() }
+        let info = SchemeInfo {
+            name: inner.name(),
+            description: inner.description(),
+            topology: Topology::PrimalSplit(TriangleSplit::FacePointQuads),
+            centre: CentreKind::Vertex,
+            sector: SectorKind::Quad,
+            caps: Caps {
+                fixed_valence: Some(4),
+                lattice_oriented: true,
+                // asymmetric masks: the local matrix does not commute with the quarter turn
+                rotation_symmetric: false,
+                ..Caps::NONE
+            },
+        };
+        LatticeOnMesh { inner, params: Params::default(), info }
     }
 
     fn rule<W: LatticeWeight>(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
@@ -131,31 +146,10 @@ impl Rules<Rational> for LatticeOnMesh {
 }
 
 impl Scheme for LatticeOnMesh {
-    fn name(&self) -> &'static str {
-        self.inner.name()
-    }
-    fn description(&self) -> &'static str {
-        self.inner.description()
-    }
-    fn topology(&self) -> Topology {
-        Topology::PrimalSplit(TriangleSplit::FacePointQuads)
-    }
-    fn centre_kind(&self) -> CentreKind {
-        CentreKind::Vertex
-    }
-    fn sector_kind(&self) -> SectorKind {
-        SectorKind::Quad
+    fn info(&self) -> &SchemeInfo {
+        &self.info
     }
     fn params(&self) -> &Params {
         &self.params
-    }
-    fn fixed_valence(&self) -> Option<usize> {
-        Some(4)
-    }
-    fn lattice_oriented(&self) -> bool {
-        true
-    }
-    fn rotation_symmetric(&self) -> bool {
-        false // asymmetric masks: the local matrix does not commute with the quarter turn
     }
 }

@@ -3,7 +3,7 @@
 //! vertex point: (1 - nβ) v + β Σ v_i,  β = (1/n) (5/8 - (3/8 + cos(2π/n)/4)^2)
 //! edge point:   3/8 (a + b) + 1/8 (c + d), c and d the opposite apexes
 
-use super::{uniform_fan, CentreKind, Params, Rules, Scheme, SchemeEntry};
+use super::{uniform_fan, Caps, CentreKind, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Weight;
 use crate::sdc::{Origin, RuleResult, Stencil};
@@ -13,10 +13,19 @@ pub struct Loop {
     params: Params,
 }
 
+const INFO: SchemeInfo = SchemeInfo {
+    name: "loop",
+    description: "Loop primal triangle subdivision, Loop's original weights (quartic box spline when regular)",
+    topology: Topology::PrimalSplit(TriangleSplit::FourTriangles),
+    centre: CentreKind::Vertex,
+    sector: SectorKind::Tri,
+    caps: Caps::NONE,
+};
+
 pub fn entry() -> SchemeEntry {
     SchemeEntry {
-        name: "loop",
-        description: "Loop primal triangle subdivision, Loop's original weights (quartic box spline when regular)",
+        name: INFO.name,
+        description: INFO.description,
         params: Vec::new,
         build: |params| Box::new(Loop { params }),
     }
@@ -66,20 +75,8 @@ impl<W: Weight> Rules<W> for Loop {
 }
 
 impl Scheme for Loop {
-    fn name(&self) -> &'static str {
-        "loop"
-    }
-    fn description(&self) -> &'static str {
-        entry().description
-    }
-    fn topology(&self) -> Topology {
-        Topology::PrimalSplit(TriangleSplit::FourTriangles)
-    }
-    fn centre_kind(&self) -> CentreKind {
-        CentreKind::Vertex
-    }
-    fn sector_kind(&self) -> SectorKind {
-        SectorKind::Tri
+    fn info(&self) -> &SchemeInfo {
+        &INFO
     }
     fn params(&self) -> &Params {
         &self.params

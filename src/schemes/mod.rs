@@ -21,7 +21,7 @@ use crate::mesh::PolyMesh;
 // The scheme interface lives in the description layer below the engine
 // (`crate::sdc`); re-exported here because every scheme file implements it.
 pub use crate::sdc::params;
-pub use crate::sdc::{CentreKind, ParamSpec, Params, Rules, Scheme, SchemeWeight};
+pub use crate::sdc::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeInfo, SchemeWeight};
 
 /// Every built-in scheme: name, description and parameter specification.
 pub struct SchemeEntry {

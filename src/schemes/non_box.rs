@@ -13,7 +13,7 @@
 //! given, replaces a_k at every valence k ≠ 4 (vertices and k-gons); valence 4
 //! keeps 1/2 so that the regular part stays the spline.
 
-use super::{CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry};
+use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
 use crate::sdc::Topology;
@@ -23,20 +23,35 @@ pub struct NonBox {
     params: Params,
 }
 
+const INFO: SchemeInfo = SchemeInfo {
+    name: "non-box",
+    description: "Huang's non-box S_3^1 subdivision: quads with face control vertices (FCVs)",
+    topology: Topology::FcvSplit,
+    centre: CentreKind::Vertex,
+    sector: SectorKind::Quad,
+    caps: Caps {
+        face_control: true,
+        boundary_note: Some(
+            "the paper's boundary rules are cubic B-spline V- and E-vertex rules plus a boundary NFCV stencil given \
+             only in its figure 8(b), which the text lacks",
+        ),
+        ..Caps::NONE
+    },
+};
+
+const PARAM_A: ParamSpec = ParamSpec {
+    name: "a",
+    default: "",
+    min: 0.0,
+    max: 1.0,
+    description: "a_k at every valence k != 4 (default: the paper's a_3 = 3/4, a_k = 3/4 - (1/2 + cos(2pi/k)/4)^2)",
+};
+
 pub fn entry() -> SchemeEntry {
     SchemeEntry {
-        name: "non-box",
-        description: "Huang's non-box S_3^1 subdivision: quads with face control vertices (FCVs)",
-        params: || {
-            vec![ParamSpec {
-                name: "a",
-                default: "",
-                min: 0.0,
-                max: 1.0,
-                description:
-                    "a_k at every valence k != 4 (default: the paper's a_3 = 3/4, a_k = 3/4 - (1/2 + cos(2pi/k)/4)^2)",
-            }]
-        },
+        name: INFO.name,
+        description: INFO.description,
+        params: || vec![PARAM_A],
         build: |params| Box::new(NonBox { params }),
     }
 }
@@ -52,7 +67,7 @@ pub fn paper_a<W: Weight>(k: i64) -> Result<W, Inexact> {
 
 impl NonBox {
     fn a<W: Weight>(&self, k: i64) -> Result<W, Inexact> {
-        match self.params.get("a") {
+        match self.params.of(&PARAM_A) {
             Some(p) if k != 4 => W::param(p),
             _ => paper_a(k),
         }
@@ -115,31 +130,10 @@ impl<W: Weight> Rules<W> for NonBox {
 }
 
 impl Scheme for NonBox {
-    fn name(&self) -> &'static str {
-        "non-box"
-    }
-    fn description(&self) -> &'static str {
-        entry().description
-    }
-    fn topology(&self) -> Topology {
-        Topology::FcvSplit
-    }
-    fn centre_kind(&self) -> CentreKind {
-        CentreKind::Vertex
-    }
-    fn sector_kind(&self) -> SectorKind {
-        SectorKind::Quad
+    fn info(&self) -> &SchemeInfo {
+        &INFO
     }
     fn params(&self) -> &Params {
         &self.params
-    }
-    fn face_control(&self) -> bool {
-        true
-    }
-    fn boundary_note(&self) -> Option<&'static str> {
-        Some(
-            "the paper's boundary rules are cubic B-spline V- and E-vertex rules plus a boundary NFCV stencil given \
-             only in its figure 8(b), which the text lacks",
-        )
     }
 }

@@ -19,7 +19,7 @@
 //! given, replace μ_n and λ_sub at every valence n ≠ 4 (valence 4 keeps the
 //! paper's values, which make a 4-gon's rules the biquadratic ones).
 
-use super::{CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry};
+use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
 use crate::sdc::Topology;
@@ -29,29 +29,36 @@ pub struct Pgs {
     params: Params,
 }
 
+const INFO: SchemeInfo = SchemeInfo {
+    name: "pgs",
+    description: "Karčiauskas–Peters point-augmented bi-2 subdivision (PGS): Doo–Sabin nets plus a central point",
+    topology: Topology::AugmentedDual,
+    centre: CentreKind::AugmentedFace,
+    sector: SectorKind::Quad,
+    caps: Caps::NONE,
+};
+
+const MU: ParamSpec = ParamSpec {
+    name: "mu",
+    default: "",
+    min: 0.0,
+    max: 2.0,
+    description: "mu_n of eqs. (1), (8) at valences n != 4 (default 3/5 at n = 3, 2(n-2)/n)",
+};
+
+const LAMBDA_SUB: ParamSpec = ParamSpec {
+    name: "lambda_sub",
+    default: "",
+    min: 0.0,
+    max: 1.0,
+    description: "the subdominant eigenvalue prescribed by eq. (9) at valences n != 4 (default eq. (10))",
+};
+
 pub fn entry() -> SchemeEntry {
     SchemeEntry {
-        name: "pgs",
-        description: "Karčiauskas–Peters point-augmented bi-2 subdivision (PGS): Doo–Sabin nets plus a central point",
-        params: || {
-            vec![
-                ParamSpec {
-                    name: "mu",
-                    default: "",
-                    min: 0.0,
-                    max: 2.0,
-                    description: "mu_n of eqs. (1), (8) at valences n != 4 (default 3/5 at n = 3, 2(n-2)/n)",
-                },
-                ParamSpec {
-                    name: "lambda_sub",
-                    default: "",
-                    min: 0.0,
-                    max: 1.0,
-                    description:
-                        "the subdominant eigenvalue prescribed by eq. (9) at valences n != 4 (default eq. (10))",
-                },
-            ]
-        },
+        name: INFO.name,
+        description: INFO.description,
+        params: || vec![MU, LAMBDA_SUB],
         build: |params| Box::new(Pgs { params }),
     }
 }
@@ -95,12 +102,12 @@ pub fn paper_mu<W: Weight>(n: i64) -> W {
 
 impl Pgs {
     pub fn weights<W: Weight>(&self, n: i64) -> Result<PgsWeights<W>, Inexact> {
-        let given = |name: &str| if n == 4 { None } else { self.params.get(name) };
-        let mu = match given("mu") {
+        let given = |spec: &ParamSpec| if n == 4 { None } else { self.params.of(spec) };
+        let mu = match given(&MU) {
             Some(p) => W::param(p)?,
             None => paper_mu(n),
         };
-        let lambda = match given("lambda_sub") {
+        let lambda = match given(&LAMBDA_SUB) {
             Some(p) => W::param(p)?,
             None => paper_lambda_sub(n)?,
         };
@@ -188,20 +195,8 @@ impl<W: Weight> Rules<W> for Pgs {
 }
 
 impl Scheme for Pgs {
-    fn name(&self) -> &'static str {
-        "pgs"
-    }
-    fn description(&self) -> &'static str {
-        entry().description
-    }
-    fn topology(&self) -> Topology {
-        Topology::AugmentedDual
-    }
-    fn centre_kind(&self) -> CentreKind {
-        CentreKind::AugmentedFace
-    }
-    fn sector_kind(&self) -> SectorKind {
-        SectorKind::Quad
+    fn info(&self) -> &SchemeInfo {
+        &INFO
     }
     fn params(&self) -> &Params {
         &self.params

@@ -10,7 +10,7 @@
 //! * γ_j = (1/2 + cos(2πj/n))/n (15), so Σ γ_j = 1/2; α = 1/4 by default
 //!   (parameter `alpha`).
 
-use super::{uniform_fan, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry};
+use super::{uniform_fan, Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Weight;
 use crate::sdc::Topology;
@@ -20,19 +20,29 @@ pub struct PolarBi2 {
     params: Params,
 }
 
+const INFO: SchemeInfo = SchemeInfo {
+    name: "polar-bi2",
+    description: "Karčiauskas–Peters polar bi-2 subdivision (PolBS): a pole with a triangle fan, quad rings",
+    topology: Topology::PolarSplit,
+    centre: CentreKind::Polar,
+    // the faces around the pole
+    sector: SectorKind::Tri,
+    caps: Caps::NONE,
+};
+
+const ALPHA: ParamSpec = ParamSpec {
+    name: "alpha",
+    default: "1/4",
+    min: 0.0,
+    max: 1.0,
+    description: "weight of the ring average in the pole rule (12)",
+};
+
 pub fn entry() -> SchemeEntry {
     SchemeEntry {
-        name: "polar-bi2",
-        description: "Karčiauskas–Peters polar bi-2 subdivision (PolBS): a pole with a triangle fan, quad rings",
-        params: || {
-            vec![ParamSpec {
-                name: "alpha",
-                default: "1/4",
-                min: 0.0,
-                max: 1.0,
-                description: "weight of the ring average in the pole rule (12)",
-            }]
-        },
+        name: INFO.name,
+        description: INFO.description,
+        params: || vec![ALPHA],
         build: |params| Box::new(PolarBi2 { params }),
     }
 }
@@ -42,7 +52,7 @@ impl<W: Weight> Rules<W> for PolarBi2 {
         Ok(match origin {
             Origin::Vertex(p) => {
                 let Some(fan) = uniform_fan(mesh, p, 3) else { return Ok(None) };
-                let alpha: W = W::param(self.params.get("alpha").expect("alpha has a default"))?;
+                let alpha: W = W::param(self.params.of(&ALPHA).expect("alpha has a default"))?;
                 let n = fan.len() as i64;
                 let mut s = Stencil::new().with(p, W::one() - alpha.clone());
                 for tri in &fan {
@@ -71,21 +81,8 @@ impl<W: Weight> Rules<W> for PolarBi2 {
 }
 
 impl Scheme for PolarBi2 {
-    fn name(&self) -> &'static str {
-        "polar-bi2"
-    }
-    fn description(&self) -> &'static str {
-        entry().description
-    }
-    fn topology(&self) -> Topology {
-        Topology::PolarSplit
-    }
-    fn centre_kind(&self) -> CentreKind {
-        CentreKind::Polar
-    }
-    fn sector_kind(&self) -> SectorKind {
-        // the faces around the pole
-        SectorKind::Tri
+    fn info(&self) -> &SchemeInfo {
+        &INFO
     }
     fn params(&self) -> &Params {
         &self.params

@@ -35,7 +35,7 @@
 //! Valence 4 keeps the tensor-product rule, so regular regions stay the
 //! regular adjustable scheme.
 
-use super::{uniform_fan, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry};
+use super::{uniform_fan, Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
 use crate::sdc::Topology;
@@ -45,21 +45,29 @@ pub struct Tps {
     params: Params,
 }
 
+const INFO: SchemeInfo = SchemeInfo {
+    name: "tps",
+    description: "Karčiauskas–Peters primal (ternary) bi-2 subdivision of quad meshes (TPS; adjustable with e != 1/3)",
+    topology: Topology::TernarySplit,
+    centre: CentreKind::Vertex,
+    sector: SectorKind::Quad,
+    caps: Caps::NONE,
+};
+
+const E: ParamSpec = ParamSpec {
+    name: "e",
+    default: "1/3",
+    min: 0.01,
+    max: 0.49,
+    description: "split ratio e : 1-2e : e (1/3: TPS; other values: adjustable TPS, section 4.1); \
+                  e = 0 stops the contraction, e = 1/2 collapses the net",
+};
+
 pub fn entry() -> SchemeEntry {
     SchemeEntry {
-        name: "tps",
-        description:
-            "Karčiauskas–Peters primal (ternary) bi-2 subdivision of quad meshes (TPS; adjustable with e != 1/3)",
-        params: || {
-            vec![ParamSpec {
-                name: "e",
-                default: "1/3",
-                min: 0.01,
-                max: 0.49,
-                description: "split ratio e : 1-2e : e (1/3: TPS; other values: adjustable TPS, section 4.1); \
-                              e = 0 stops the contraction, e = 1/2 collapses the net",
-            }]
-        },
+        name: INFO.name,
+        description: INFO.description,
+        params: || vec![E],
         build: |params| Box::new(Tps { params }),
     }
 }
@@ -95,7 +103,7 @@ impl<W: Weight> OneD<W> {
 
 impl Tps {
     fn one_d<W: Weight>(&self) -> Result<OneD<W>, Inexact> {
-        Ok(OneD::new(W::param(self.params.get("e").expect("e has a default"))?))
+        Ok(OneD::new(W::param(self.params.of(&E).expect("e has a default"))?))
     }
 
     /// (α1, α2) of eq. (18) at valence n.
@@ -174,20 +182,8 @@ impl<W: Weight> Rules<W> for Tps {
 }
 
 impl Scheme for Tps {
-    fn name(&self) -> &'static str {
-        "tps"
-    }
-    fn description(&self) -> &'static str {
-        entry().description
-    }
-    fn topology(&self) -> Topology {
-        Topology::TernarySplit
-    }
-    fn centre_kind(&self) -> CentreKind {
-        CentreKind::Vertex
-    }
-    fn sector_kind(&self) -> SectorKind {
-        SectorKind::Quad
+    fn info(&self) -> &SchemeInfo {
+        &INFO
     }
     fn params(&self) -> &Params {
         &self.params

@@ -16,7 +16,7 @@
 //! that. The expansions are implemented because they are the rules the paper
 //! states in full and because they reduce to Kobbelt's rules (1), (2) at α = 0.
 
-use super::{CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry};
+use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Weight;
 use crate::sdc::Topology;
@@ -24,35 +24,53 @@ use crate::sdc::{Origin, RuleResult, Stencil};
 
 pub struct UnifiedSqrt3 {
     params: Params,
-    name: &'static str,
+    /// the same rules under two names: `unified-sqrt3` with α as a parameter
+    /// (also per vertex), `sqrt3` fixed at α = 0
+    info: &'static SchemeInfo,
 }
+
+const INFO: SchemeInfo = SchemeInfo {
+    name: "unified-sqrt3",
+    description: "Lin–Luo unified sqrt(3) subdivision: alpha = 0 Kobbelt, alpha = 1 interpolatory",
+    topology: Topology::Sqrt3,
+    centre: CentreKind::Vertex,
+    sector: SectorKind::Tri,
+    caps: Caps { vertex_param: Some("alpha"), ..Caps::NONE },
+};
+
+const KOBBELT_INFO: SchemeInfo = SchemeInfo {
+    name: "sqrt3",
+    description: "Kobbelt's approximating sqrt(3) subdivision (unified-sqrt3 at alpha = 0)",
+    caps: Caps::NONE,
+    ..INFO
+};
+
+const ALPHA: ParamSpec = ParamSpec {
+    name: "alpha",
+    default: "1",
+    min: 0.0,
+    max: 2.0,
+    description: "blend: 0 approximating (Kobbelt), 1 interpolatory; the paper analyses [0, 2]",
+};
 
 pub fn entry() -> SchemeEntry {
     SchemeEntry {
-        name: "unified-sqrt3",
-        description: "Lin–Luo unified sqrt(3) subdivision: alpha = 0 Kobbelt, alpha = 1 interpolatory",
-        params: || {
-            vec![ParamSpec {
-                name: "alpha",
-                default: "1",
-                min: 0.0,
-                max: 2.0,
-                description: "blend: 0 approximating (Kobbelt), 1 interpolatory; the paper analyses [0, 2]",
-            }]
-        },
-        build: |params| Box::new(UnifiedSqrt3 { params, name: "unified-sqrt3" }),
+        name: INFO.name,
+        description: INFO.description,
+        params: || vec![ALPHA],
+        build: |params| Box::new(UnifiedSqrt3 { params, info: &INFO }),
     }
 }
 
 /// Kobbelt's sqrt(3) scheme: the same rules at α = 0 (no parameter).
 pub fn kobbelt_entry() -> SchemeEntry {
     SchemeEntry {
-        name: "sqrt3",
-        description: "Kobbelt's approximating sqrt(3) subdivision (unified-sqrt3 at alpha = 0)",
+        name: KOBBELT_INFO.name,
+        description: KOBBELT_INFO.description,
         params: Vec::new,
         build: |_| {
             let params = Params { values: vec![("alpha".to_string(), crate::numeric::ParamValue::from_ratio(0, 1))] };
-            Box::new(UnifiedSqrt3 { params, name: "sqrt3" })
+            Box::new(UnifiedSqrt3 { params, info: &KOBBELT_INFO })
         },
     }
 }
@@ -63,7 +81,7 @@ impl UnifiedSqrt3 {
     fn alpha<W: Weight>(&self, mesh: &PolyMesh, v: usize) -> Result<W, crate::numeric::Inexact> {
         match &mesh.vertex_params {
             Some(a) => W::param(&crate::numeric::ParamValue::from_f64(a[v])),
-            None => W::param(self.params.get("alpha").expect("alpha has a default")),
+            None => W::param(self.params.of(&ALPHA).expect("alpha has a default")),
         }
     }
 }
@@ -118,30 +136,11 @@ impl<W: Weight> Rules<W> for UnifiedSqrt3 {
 }
 
 impl Scheme for UnifiedSqrt3 {
-    fn name(&self) -> &'static str {
-        self.name
-    }
-    fn description(&self) -> &'static str {
-        if self.name == "sqrt3" {
-            kobbelt_entry().description
-        } else {
-            entry().description
-        }
-    }
-    fn topology(&self) -> Topology {
-        Topology::Sqrt3
-    }
-    fn centre_kind(&self) -> CentreKind {
-        CentreKind::Vertex
-    }
-    fn sector_kind(&self) -> SectorKind {
-        SectorKind::Tri
+    fn info(&self) -> &SchemeInfo {
+        self.info
     }
     fn params(&self) -> &Params {
         &self.params
-    }
-    fn vertex_param(&self) -> Option<&'static str> {
-        (self.name == "unified-sqrt3").then_some("alpha")
     }
     /// Eq. (7): a new face vertex takes the mean α of the triangle's corners; an
     /// old vertex keeps its α.

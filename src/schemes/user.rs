@@ -33,7 +33,7 @@ use std::sync::Mutex;
 use serde::Deserialize;
 use toml::Spanned;
 
-use super::{uniform_fan, CentreKind, Params, Rules, Scheme};
+use super::{uniform_fan, Caps, CentreKind, Params, Rules, Scheme, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::expr::{Env, Expr};
 use crate::numeric::{Inexact, ParamValue, Weight};
@@ -224,8 +224,7 @@ pub struct UserSchemeDef {
 
 /// A user scheme with its parameter values fixed and its weights checked.
 pub struct UserScheme {
-    name: &'static str,
-    description: &'static str,
+    info: SchemeInfo,
     topology: usize,
     params: Params,
     env: Env,
@@ -557,9 +556,23 @@ impl UserSchemeDef {
         let values = self.params.iter().map(|p| (p.name.clone(), env[&p.name].clone())).collect();
         let weights: HashMap<String, Expr> =
             self.rules.iter().flat_map(|(_, fs)| fs.iter().map(|f| (f.key.clone(), f.expr.clone()))).collect();
-        Ok(UserScheme {
+        let spec = &TOPOLOGIES[self.topology];
+        let info = SchemeInfo {
             name: intern(&self.name),
             description: intern(&self.description),
+            topology: spec.topology,
+            centre: CentreKind::Vertex,
+            sector: spec.sector,
+            caps: Caps {
+                face_control: spec.face_control,
+                // the vertex and edge rules of a primal-quad file are written for quads only
+                mesh_requirement: (spec.name == "primal-quad")
+                    .then_some("a closed quad mesh (primal-quad scheme files have quad rules only)"),
+                ..Caps::NONE
+            },
+        };
+        Ok(UserScheme {
+            info,
             topology: self.topology,
             params: Params { values },
             env,
@@ -870,30 +883,10 @@ impl UserScheme {
 }
 
 impl Scheme for UserScheme {
-    fn name(&self) -> &'static str {
-        self.name
-    }
-    fn description(&self) -> &'static str {
-        self.description
-    }
-    fn topology(&self) -> Topology {
-        self.spec().topology
-    }
-    fn centre_kind(&self) -> CentreKind {
-        CentreKind::Vertex
-    }
-    fn sector_kind(&self) -> SectorKind {
-        self.spec().sector
+    fn info(&self) -> &SchemeInfo {
+        &self.info
     }
     fn params(&self) -> &Params {
         &self.params
-    }
-    fn face_control(&self) -> bool {
-        self.spec().face_control
-    }
-    fn mesh_requirement(&self) -> Option<&'static str> {
-        // the vertex and edge rules of a primal-quad file are written for quads only
-        (self.spec().name == "primal-quad")
-            .then_some("a closed quad mesh (primal-quad scheme files have quad rules only)")
     }
 }

@@ -54,58 +54,75 @@ impl CentreKind {
     pub fn first_ring_depth(self) -> usize {
         match self {
             CentreKind::Polar => 2,
-            _ => 0,
+            CentreKind::Vertex | CentreKind::Face | CentreKind::AugmentedFace => 0,
         }
     }
 }
 
-pub trait Scheme: Rules<f64> + Rules<Rational> + Send + Sync {
-    fn name(&self) -> &'static str;
-    fn description(&self) -> &'static str;
-    fn topology(&self) -> Topology;
-    fn centre_kind(&self) -> CentreKind;
+/// What a scheme is, as data: its identity, the host it refines on, the
+/// centre it is analysed at, and what it can do beyond the common case. Every
+/// built-in scheme states it once, as a `const`; engine and command line read
+/// it through the accessors on `dyn Scheme`.
+#[derive(Clone, Copy, Debug)]
+pub struct SchemeInfo {
+    pub name: &'static str,
+    pub description: &'static str,
+    pub topology: Topology,
+    pub centre: CentreKind,
     /// The face type of the regular lattice around the centre.
-    fn sector_kind(&self) -> SectorKind;
+    pub sector: SectorKind,
+    pub caps: Caps,
+}
+
+/// Capabilities and requirements a scheme may have beyond the common case
+/// (`Caps::NONE`): write `Caps { face_sequences: true, ..Caps::NONE }`.
+#[derive(Clone, Copy, Debug)]
+pub struct Caps {
+    /// Meshes carry a face control vertex per face (non-box).
+    pub face_control: bool,
+    /// The name of a parameter that may vary per vertex
+    /// (`PolyMesh::vertex_params`), refined by `Scheme::vertex_param_rule`.
+    pub vertex_param: Option<&'static str>,
+    /// The only valence the scheme is defined at (regular-lattice schemes: 4).
+    pub fixed_valence: Option<usize>,
+    /// The rules commute with the rotation of a symmetric configuration
+    /// (false for asymmetric masks: then no Fourier blocks).
+    pub rotation_symmetric: bool,
+    /// Meshes must carry lattice directions (`PolyMesh::orient_lattice`).
+    pub lattice_oriented: bool,
+    /// The analysis accepts any sequence of quad and triangle sectors around
+    /// the centre (`--faces`), not only the regular configuration.
+    pub face_sequences: bool,
+    /// What the scheme needs of an input mesh, for error messages of
+    /// `refine`; `None`: derived from the host.
+    pub mesh_requirement: Option<&'static str>,
+    /// Why the scheme has no boundary rules here, for the open-mesh error.
+    pub boundary_note: Option<&'static str>,
+}
+
+impl Caps {
+    /// A symmetric scheme on any valence with nothing extra.
+    pub const NONE: Caps = Caps {
+        face_control: false,
+        vertex_param: None,
+        fixed_valence: None,
+        rotation_symmetric: true,
+        lattice_oriented: false,
+        face_sequences: false,
+        mesh_requirement: None,
+        boundary_note: None,
+    };
+}
+
+/// A subdivision scheme: rules for both weight types, its description, its
+/// parameter values, and the two behaviours some schemes add (a per-vertex
+/// parameter rule, different rules at the first levels of a real mesh).
+pub trait Scheme: Rules<f64> + Rules<Rational> + Send + Sync {
+    fn info(&self) -> &SchemeInfo;
     fn params(&self) -> &Params;
-    /// Whether meshes carry a face control vertex per face (non-box).
-    fn face_control(&self) -> bool {
-        false
-    }
-    /// The name of a parameter that may vary per vertex (`PolyMesh::vertex_params`),
-    /// if the scheme has one.
-    fn vertex_param(&self) -> Option<&'static str> {
-        None
-    }
     /// How the per-vertex parameter of a new vertex derives from the old ones
     /// (weights on old vertices); `None` where the scheme has no such parameter.
     fn vertex_param_rule(&self, _mesh: &PolyMesh, _origin: Origin) -> Option<Stencil<f64>> {
-        None
-    }
-    /// Why the scheme has no boundary rules here, for the open-mesh error.
-    fn boundary_note(&self) -> Option<&'static str> {
-        None
-    }
-    /// The only valence the scheme is defined at (regular-lattice schemes: 4).
-    fn fixed_valence(&self) -> Option<usize> {
-        None
-    }
-    /// Whether the rules commute with the rotation of a symmetric configuration
-    /// (false for asymmetric masks: then no Fourier blocks).
-    fn rotation_symmetric(&self) -> bool {
-        true
-    }
-    /// Whether meshes must carry lattice directions (`PolyMesh::orient_lattice`).
-    fn lattice_oriented(&self) -> bool {
-        false
-    }
-    /// Whether the analysis accepts any sequence of quad and triangle sectors
-    /// around the centre (`--faces`), not only the regular configuration.
-    fn face_sequences(&self) -> bool {
-        false
-    }
-    /// What the scheme needs of an input mesh, for error messages of `refine`;
-    /// `None`: derived from the topology.
-    fn mesh_requirement(&self) -> Option<&'static str> {
         None
     }
     /// The rules of refinement step `level` (1 = the first) of a real mesh, for
@@ -113,6 +130,51 @@ pub trait Scheme: Rules<f64> + Rules<Rational> + Send + Sync {
     /// local subdivision matrix analyses; `None`: the same rules at every step.
     fn at_level(&self, _level: usize) -> Option<Box<dyn Scheme>> {
         None
+    }
+}
+
+/// Accessors to the description, so callers write `scheme.name()` rather
+/// than `scheme.info().name` (defined on the trait object: the description
+/// has one source, `Scheme::info`, which no scheme can contradict).
+impl dyn Scheme + '_ {
+    pub fn name(&self) -> &'static str {
+        self.info().name
+    }
+    pub fn description(&self) -> &'static str {
+        self.info().description
+    }
+    pub fn topology(&self) -> Topology {
+        self.info().topology
+    }
+    pub fn centre_kind(&self) -> CentreKind {
+        self.info().centre
+    }
+    pub fn sector_kind(&self) -> SectorKind {
+        self.info().sector
+    }
+    pub fn face_control(&self) -> bool {
+        self.info().caps.face_control
+    }
+    pub fn vertex_param(&self) -> Option<&'static str> {
+        self.info().caps.vertex_param
+    }
+    pub fn boundary_note(&self) -> Option<&'static str> {
+        self.info().caps.boundary_note
+    }
+    pub fn fixed_valence(&self) -> Option<usize> {
+        self.info().caps.fixed_valence
+    }
+    pub fn rotation_symmetric(&self) -> bool {
+        self.info().caps.rotation_symmetric
+    }
+    pub fn lattice_oriented(&self) -> bool {
+        self.info().caps.lattice_oriented
+    }
+    pub fn face_sequences(&self) -> bool {
+        self.info().caps.face_sequences
+    }
+    pub fn mesh_requirement(&self) -> Option<&'static str> {
+        self.info().caps.mesh_requirement
     }
 }
 

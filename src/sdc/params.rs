@@ -25,6 +25,14 @@ impl Params {
         self.values.iter().find(|(n, _)| n == name).map(|(_, v)| v)
     }
 
+    /// The value of the parameter `spec` describes. Schemes declare each
+    /// parameter once as a `const ParamSpec` and look it up by that constant,
+    /// so the name is written in one place and a typo cannot fall back
+    /// silently to a default.
+    pub fn of(&self, spec: &ParamSpec) -> Option<&ParamValue> {
+        self.get(spec.name)
+    }
+
     /// Defaults first, then the overrides. A spec whose default is empty has no
     /// single default value (the scheme applies its own rule, e.g. a formula in
     /// the valence) and is present only when given.

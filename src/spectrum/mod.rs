@@ -351,7 +351,7 @@ pub fn sort_eigenvalues(list: &mut [Eigenvalue]) {
     list.sort_by(|a, b| eigenvalue_order(c64::new(a.re, a.im), c64::new(b.re, b.im)));
 }
 
-/// The display order of eigenvalues (DESIGN.md): modulus descending, ties by
+/// The display order of eigenvalues (ARCHITECTURE.md): modulus descending, ties by
 /// real part, then imaginary part, descending.
 pub fn eigenvalue_order(a: c64, b: c64) -> std::cmp::Ordering {
     let tie = |x: f64, y: f64| (x - y).abs() <= 1e-10 * x.abs().max(y.abs()).max(1.0);
