@@ -10,6 +10,8 @@ pub mod claims;
 pub mod cli;
 pub mod curves;
 pub mod dft;
+// the closure and exact-confirmation core shared by the lattice (Z²) and curve (Z) families
+pub mod engine;
 // regular-lattice schemes with explicit (i, j) coordinates (Khan–Mustafa)
 pub mod lattice;
 pub mod matrix;

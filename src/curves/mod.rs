@@ -16,7 +16,8 @@ pub mod smoothness;
 pub mod unified;
 
 use crate::numeric::{Inexact, Rational, Weight};
-use crate::schemes::{ParamSpec, Params};
+use crate::schemes::registry::{self, Built, Family};
+use crate::schemes::Params;
 
 /// The two rules of a binary curve scheme: new P_{2i} = Σ w·P_{i+o} over
 /// `even`, new P_{2i+1} = Σ w·P_{i+o} over `odd`, as (o, w) pairs.
@@ -90,30 +91,28 @@ impl CurveWeight for Rational {
     }
 }
 
-pub struct CurveEntry {
-    pub name: &'static str,
-    pub description: &'static str,
-    pub params: fn() -> Vec<ParamSpec>,
-    pub build: fn(Params) -> Box<dyn CurveScheme>,
-}
-
-pub fn registry() -> Vec<CurveEntry> {
-    vec![cubic_bspline::entry(), four_point::entry(), unified::entry()]
-}
-
+/// The built-in curve schemes' names (listed with every other family in
+/// `schemes::registry`).
 pub fn known_names() -> Vec<&'static str> {
-    registry().iter().map(|e| e.name).collect()
+    registry::names_of(Family::Curve)
 }
 
-/// Build a curve scheme by name with `name=value` parameter overrides.
-pub fn build(name: &str, overrides: &[(String, String)]) -> Result<Box<dyn CurveScheme>, String> {
-    let reg = registry();
-    let entry = reg
-        .iter()
-        .find(|e| e.name == name)
-        .ok_or_else(|| format!("unknown curve scheme '{name}'; known curve schemes: {}", known_names().join(", ")))?;
-    let params = Params::resolve(entry.name, &(entry.params)(), overrides)?;
-    Ok((entry.build)(params))
+/// Build a curve scheme from a built-in name or a curve scheme file
+/// (`domain = "curve"`) with `name=value` parameter overrides.
+pub fn build(name_or_path: &str, overrides: &[(String, String)]) -> Result<Box<dyn CurveScheme>, String> {
+    let unknown =
+        || format!("unknown curve scheme '{name_or_path}'; known curve schemes: {}", known_names().join(", "));
+    if !registry::is_file_argument(name_or_path) && registry::find(name_or_path).is_none() {
+        return Err(unknown());
+    }
+    match registry::resolve(name_or_path, overrides)? {
+        Built::Curve(c) => Ok(c),
+        other => Err(format!(
+            "'{name_or_path}' is a {} scheme, not a curve scheme; known curve schemes: {}",
+            other.family().name(),
+            known_names().join(", ")
+        )),
+    }
 }
 
 /// One subdivision step of a closed polygon of scalars (apply it per
