@@ -62,8 +62,12 @@ fn read(path: &Path) -> Result<String, String> {
 /// `domain` is not a string, goes to the mesh loader, whose parser reports the
 /// problem with its line.
 fn family_of_text(text: &str, file: &str) -> Result<Family, String> {
-    let Ok(doc) = toml::from_str::<BTreeMap<String, Spanned<toml::Value>>>(text) else { return Ok(Family::Mesh) };
-    let Some(domain) = doc.get("domain") else { return Ok(Family::Mesh) };
+    /// Only the `domain` key; every other key is left to the family's loader.
+    #[derive(Deserialize)]
+    struct Peek {
+        domain: Option<Spanned<toml::Value>>,
+    }
+    let Ok(Peek { domain: Some(domain) }) = toml::from_str::<Peek>(text) else { return Ok(Family::Mesh) };
     match domain.get_ref().as_str() {
         Some("lattice") => Ok(Family::Lattice),
         Some("curve") => Ok(Family::Curve),
@@ -441,6 +445,9 @@ mod tests {
         assert_eq!(family_of_text("domain = \"lattice\"\n", "f").unwrap(), Family::Lattice);
         let e = family_of_text("name = \"x\"\ndomain = \"torus\"\n", "f.toml").unwrap_err();
         assert!(e.starts_with("f.toml line 2, field domain:"), "{e}");
+        // nested tables elsewhere in the file do not hide the key
+        let nested = "domain = \"curve\"\n[params.w]\ndefault = \"1/16\"\n[odd]\n\"0\" = \"-w\"\n";
+        assert_eq!(family_of_text(nested, "f").unwrap(), Family::Curve);
         // not TOML: the mesh loader reports it with its line
         assert_eq!(family_of_text("name = = 1", "f").unwrap(), Family::Mesh);
     }
