@@ -29,7 +29,7 @@ use super::registry::{Built, Family};
 use super::user::{UserParam, MAX_EXPR_CHARS, MAX_FILE_BYTES};
 use super::Params;
 use crate::numeric::expr::{Env, Expr};
-use crate::numeric::{ParamValue, Rational};
+use crate::numeric::{ParamValue, Rational, Weight};
 
 const MAX_NAME_CHARS: usize = 64;
 const MAX_DESCRIPTION_CHARS: usize = 1000;
@@ -340,19 +340,22 @@ pub(crate) fn evaluate<O>(head: &Head, term: &Term<O>, scale: Option<&Term<()>>,
         Ok(Value { float: z.re, exact: e.exact(env) })
     };
     let v = one(term.line, &term.field, &term.expr)?;
-    match scale {
-        None => Ok(v),
+    let v = match scale {
+        None => v,
         Some(s) => {
             let f = one(s.line, &s.field, &s.expr)?;
-            Ok(Value {
+            Value {
                 float: v.float * f.float,
                 exact: match (v.exact, f.exact) {
                     (Some(a), Some(b)) => Some(a * b),
                     _ => None,
                 },
-            })
+            }
         }
-    }
+    };
+    // the float of an exact weight is its correctly rounded value, as a
+    // built-in's `W::ratio(p, q)` is, not the product of rounded factors
+    Ok(Value { float: v.exact.as_ref().map_or(v.float, Weight::to_f64), exact: v.exact })
 }
 
 /// A scheme's name and description live for the rest of the process (the
