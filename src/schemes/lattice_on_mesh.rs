@@ -23,7 +23,9 @@ pub struct LatticeOnMesh {
 
 impl LatticeOnMesh {
     pub fn new(inner: Box<dyn LatticeScheme>) -> Self {
-        LatticeOnMesh { inner, params: Params::default() }
+        // a lattice scheme file may have parameters; the mesh analyses report them
+        let params = inner.params().clone();
+        LatticeOnMesh { inner, params }
     }
 
     fn rule<W: LatticeWeight>(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
