@@ -11,7 +11,8 @@
 //! 3. refinement hosts, [`topology`]: connectivity of one step, no weights;
 //! 4. the engine: [`refine`] (one step over any averaged data),
 //!    [`neighbourhood`] (configurations, discovery of invariant sets),
-//!    [`matrix`] (the local subdivision matrix), [`dft`] (Fourier blocks);
+//!    [`matrix`] (the local subdivision matrix), [`dft`] (Fourier blocks),
+//!    [`engine`] (closure, assembly and exact confirmation for the Z² and Z domains);
 //! 5. [`spectrum`]: eigenvalues with multiplicities, stencils, verdicts;
 //! 6. analyses on top of a spectrum: [`charmap`] (characteristic maps), and
 //!    the other domains, [`lattice`] (Z² masks) and [`curves`] (Z masks);
@@ -33,6 +34,8 @@ pub mod sdc;
 pub mod topology;
 
 pub mod dft;
+// the Z² and Z domains' invariant closure, assembly and exact confirmation
+pub mod engine;
 pub mod matrix;
 pub mod neighbourhood;
 pub mod refine;

@@ -8,10 +8,10 @@ use common::{fails, subdlab};
 
 use num_bigint::BigInt;
 use subdlab::curves::local::{curve_spectrum, CurveSpectrum};
-use subdlab::curves::relation::four_point_by_relation3;
-use subdlab::curves::{self, refine_closed, CurveMask, CurveWeight};
+use subdlab::curves::{refine_closed, CurveMask, CurveWeight};
 use subdlab::neighbourhood::NeighbourhoodKind;
 use subdlab::numeric::Rational;
+use subdlab::schemes::curves::{self, relation::four_point_by_relation3};
 
 fn q(p: i64, d: i64) -> Rational {
     Rational::new(BigInt::from(p), BigInt::from(d))

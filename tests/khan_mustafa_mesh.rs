@@ -39,7 +39,7 @@ fn torus() -> (PolyMesh, Vec<[f64; 3]>) {
 #[test]
 fn torus_refinement_is_the_periodic_convolution_with_the_masks() {
     let scheme = schemes::build("khan-mustafa", &[]).unwrap();
-    let km = (lattice::find("khan-mustafa").unwrap().build)();
+    let km = schemes::registry::lattice("khan-mustafa", &[]).unwrap();
     let (mut mesh, pts) = torus();
     mesh.orient_lattice().unwrap();
     let (_, out) = refine_mesh(scheme.as_ref(), &mesh, &pts, 1).unwrap();
@@ -67,7 +67,7 @@ fn torus_refinement_is_the_periodic_convolution_with_the_masks() {
 #[test]
 fn mesh_and_lattice_engines_agree_on_the_local_spectrum() {
     let scheme = schemes::build("khan-mustafa", &[]).unwrap();
-    let km = (lattice::find("khan-mustafa").unwrap().build)();
+    let km = schemes::registry::lattice("khan-mustafa", &[]).unwrap();
     for kind in [NeighbourhoodKind::Minimal, NeighbourhoodKind::Analysis] {
         let config = Configuration::regular(scheme.as_ref(), 4).unwrap();
         let mesh =

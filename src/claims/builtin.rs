@@ -743,7 +743,8 @@ fn matrix_nonnegative(data: &toml::Value) -> Result4 {
 /// cubic B-spline step is the four-point point. Both sides are linear maps of
 /// the polygon: compared exactly on every unit polygon of length 8.
 fn curve_relation3() -> Result4 {
-    use crate::curves::{self, refine_closed, relation::four_point_by_relation3, CurveWeight};
+    use crate::curves::{refine_closed, CurveWeight};
+    use crate::schemes::curves::{self, relation::four_point_by_relation3};
     let four = Rational::mask(curves::build("four-point", &[])?.as_ref()).map_err(|_| "inexact four-point mask")?;
     let n = 8;
     let mut diffs = 0;
@@ -765,7 +766,8 @@ fn curve_relation3() -> Result4 {
 /// The uniform curve scheme is C¹ at each listed parameter value: its symbol is
 /// (1 + z)² b(z)/2 with ‖S_b^L‖_∞ < 1 for some L ≤ `max_steps`.
 fn curve_c1_laurent(data: &toml::Value) -> Result4 {
-    use crate::curves::{self, smoothness::c1_test, CurveWeight};
+    use crate::curves::{smoothness::c1_test, CurveWeight};
+    use crate::schemes::curves;
     let name = text(data, "scheme")?;
     let param = text(data, "param")?;
     let max_steps = int(field(data, "max_steps")?, "data.max_steps")? as u32;

@@ -11,6 +11,7 @@ use crate::neighbourhood::{Configuration, NeighbourhoodKind, VertexKind};
 use crate::numeric::expr::{Env, Expr};
 use crate::numeric::ParamValue;
 use crate::schemes;
+use crate::schemes::registry::{self, Family};
 use crate::spectrum::stencils::{limit_stencil, tangent_stencils};
 use crate::spectrum::{analyse, eigen, eigenvalue_order, fmt_f, Options, Spectrum, Synthesis};
 
@@ -33,8 +34,8 @@ fn kind_of(s: &Subject) -> Result<NeighbourhoodKind, String> {
     s.neighbourhood.as_deref().unwrap_or("analysis").parse()
 }
 
-/// The scheme (with parameters evaluated at valence n) and configuration.
-fn subject_config(s: &Subject, n: usize) -> Result<(Box<dyn schemes::Scheme>, Configuration), String> {
+/// The subject's parameters evaluated at valence n, as `name=value` overrides.
+fn subject_params(s: &Subject, n: usize) -> Result<Vec<(String, String)>, String> {
     let base = crate::numeric::expr::env_int(&[("n", n as i64), ("k", n as i64)]);
     let mut params: Vec<(String, String)> = Vec::new();
     for (k, v) in &s.params {
@@ -45,7 +46,12 @@ fn subject_config(s: &Subject, n: usize) -> Result<(Box<dyn schemes::Scheme>, Co
         };
         params.push((k.clone(), text));
     }
-    let scheme = schemes::resolve(&s.scheme, &params)?;
+    Ok(params)
+}
+
+/// The scheme (with parameters evaluated at valence n) and configuration.
+fn subject_config(s: &Subject, n: usize) -> Result<(Box<dyn schemes::Scheme>, Configuration), String> {
+    let scheme = schemes::resolve(&s.scheme, &subject_params(s, n)?)?;
     let config = match s.faces_for(n) {
         Some(f) => Configuration::with_faces(scheme.as_ref(), n, f)?,
         None => Configuration::regular(scheme.as_ref(), n)?,
@@ -55,11 +61,13 @@ fn subject_config(s: &Subject, n: usize) -> Result<(Box<dyn schemes::Scheme>, Co
 
 fn compute(s: &Subject, n: usize) -> Result<Spectrum, String> {
     let kind = kind_of(s)?;
-    if let Some(entry) = lattice::find(&s.scheme) {
-        if n != 4 || !s.params.is_empty() {
-            return Err(format!("{} is defined on the regular lattice only (valence 4, no parameters)", s.scheme));
+    // lattice schemes (built-in or files) are analysed on Z², not on a mesh
+    if registry::family_of(&s.scheme) == Ok(Family::Lattice) {
+        if n != 4 {
+            return Err(format!("{} is defined on the regular lattice only (valence 4)", s.scheme));
         }
-        return Ok(lattice::analysis::analyse((entry.build)().as_ref(), kind, false)?.spectrum);
+        let scheme = registry::lattice(&s.scheme, &subject_params(s, n)?)?;
+        return Ok(lattice::analysis::analyse(scheme.as_ref(), kind, false)?.spectrum);
     }
     let (scheme, config) = subject_config(s, n)?;
     Ok(analyse(scheme.as_ref(), &config, &Options { neighbourhood: kind, method: None, exact: false })?.spectrum)
@@ -506,8 +514,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
             })
         }
         Check::LatticeMatrix { scheme, window, scale, rows } => {
-            let entry = lattice::find(scheme).ok_or_else(|| format!("'{scheme}' is not a regular-lattice scheme"))?;
-            let s = (entry.build)();
+            let s = registry::lattice(scheme, &[])?;
             let [i0, i1, j0, j1] = *window;
             let w = lattice::Window::rect(i0, i1, j0, j1);
             let assembled = lattice::local_matrix::<crate::numeric::Rational>(s.as_ref(), &w)?;

@@ -9,7 +9,8 @@ use crate::spectrum::stencils::stencils;
 use crate::spectrum::{analyse, Analysis, Method, Options, Spectrum};
 
 pub fn dispatch(cmd: Command) -> Result<(), String> {
-    // Regular-lattice schemes (khan-mustafa) have no mesh configuration: routed first.
+    // Lattice and curve schemes have no mesh configuration: the registry names
+    // their family, and their analyses are routed first.
     if let Some(result) = super::lattice::dispatch(&cmd) {
         return result;
     }
@@ -151,43 +152,36 @@ fn list_schemes(files: &[std::path::PathBuf], json: bool) -> Result<(), String> 
         description: p.description.into(),
     };
     let list: Vec<Entry> = if files.is_empty() {
-        schemes::registry()
+        // every family from the one registry: mesh, then lattice, then curve schemes
+        schemes::registry::entries()
             .into_iter()
             .map(|e| Entry {
-                name: e.name.into(),
-                description: e.description.into(),
+                name: e.name().into(),
+                description: e.description().into(),
                 file: None,
                 topology: None,
-                params: (e.params)().into_iter().map(builtin).collect(),
+                params: e.params().into_iter().map(builtin).collect(),
             })
-            // regular-lattice schemes (no parameters) after the mesh-based ones
-            .chain(super::lattice::scheme_list().into_iter().map(|(name, description)| Entry {
-                name: name.into(),
-                description: description.into(),
-                file: None,
-                topology: None,
-                params: Vec::new(),
-            }))
             .collect()
     } else {
         files
             .iter()
             .map(|f| {
-                let def = crate::schemes::user::load_def(f)?;
+                let def = crate::schemes::files::describe(f)?;
                 Ok(Entry {
-                    name: def.name.clone(),
-                    description: def.description.clone(),
+                    name: def.name,
+                    description: def.description,
                     file: Some(f.display().to_string()),
-                    topology: Some(def.topology_name()),
+                    topology: Some(def.topology),
                     params: def
                         .params
-                        .iter()
+                        .into_iter()
                         .map(|p| Param {
-                            name: p.name.clone(),
-                            default: p.default.text.clone(),
+                            name: p.name,
+                            default: p.default.text,
                             min: p.min,
                             max: p.max,
-                            description: p.description.clone(),
+                            description: p.description,
                         })
                         .collect(),
                 })

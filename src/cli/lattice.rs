@@ -1,31 +1,62 @@
-//! Routing of the regular-lattice schemes (`khan-mustafa`, `khan-mustafa-cubic`)
-//! on the command line. They have no mesh configuration, so they are handled
-//! before the mesh-based path; output reuses the same tables and JSON types, so
-//! the stable field names are the same as for every other scheme.
+//! The analysis commands (`spectrum`, `stencils`, `matrix`) for the schemes
+//! that have no mesh configuration: regular-lattice schemes (built-in
+//! `khan-mustafa`, `khan-mustafa-cubic`, or a `domain = "lattice"` file) and
+//! curve schemes (`spectrum` only, the same output as `subdlab curve`). The
+//! family comes from the one registry (`schemes::registry`); lattice output
+//! reuses the mesh tables and JSON types, so the stable field names are the
+//! same as for every other scheme.
 
+use super::commands::parse_params;
 use super::{AnalysisArgs, Command};
 use crate::io::{print_json, write_atomic};
 use crate::lattice::analysis::{analyse, LatticeAnalysis};
 use crate::lattice::{self, LatticeScheme};
 use crate::matrix::export::{to_matrix_market, MatrixJson};
 use crate::neighbourhood::NeighbourhoodKind;
+use crate::schemes::registry::{self, Family};
 use crate::spectrum::stencils::stencils;
 
-/// `None` when the command does not name a lattice scheme (the mesh path runs).
+/// `None` when the command is not an analysis of a lattice or curve scheme
+/// (the mesh path runs, and reports unknown names and unreadable files).
 pub(super) fn dispatch(cmd: &Command) -> Option<Result<(), String>> {
     let args = match cmd {
         Command::Spectrum(a) | Command::Stencils(a) => a,
         Command::Matrix { common, .. } => common,
-        // only the analysis commands concern lattice schemes
+        // only the analysis commands are routed by family here
         _ => return None,
     };
-    let entry = lattice::find(&args.scheme)?;
-    let scheme = (entry.build)();
-    Some(run(cmd, args, scheme.as_ref()))
+    match registry::family_of(&args.scheme) {
+        Ok(Family::Lattice) => Some(run(cmd, args)),
+        Ok(Family::Curve) => Some(curve(cmd, args)),
+        Ok(Family::Mesh) | Err(_) => None,
+    }
 }
 
-fn run(cmd: &Command, a: &AnalysisArgs, scheme: &dyn LatticeScheme) -> Result<(), String> {
-    let analysis = prepare(a, scheme)?;
+/// A curve scheme under `spectrum`: its vertex has two neighbours, so the
+/// valence must be 2; the output is that of `subdlab curve`.
+fn curve(cmd: &Command, a: &AnalysisArgs) -> Result<(), String> {
+    let name = &a.scheme;
+    if !matches!(cmd, Command::Spectrum(_)) {
+        return Err(format!(
+            "'{name}' is a curve scheme: use `subdlab spectrum` or `subdlab curve` (the JSON carries the matrix)"
+        ));
+    }
+    if a.valence != 2 {
+        return Err(format!("'{name}' is a curve scheme: a curve vertex has two neighbours (use --valence 2)"));
+    }
+    if a.faces.is_some() {
+        return Err(format!("scheme '{name}' takes no --faces: it is a curve scheme"));
+    }
+    match a.method.as_deref() {
+        None | Some("full") => {}
+        Some(m) => return Err(format!("'{name}' is a curve scheme: its matrix is analysed whole (got --method {m})")),
+    }
+    super::mesh_commands::curve(name, &a.params, &a.neighbourhood, a.json)
+}
+
+fn run(cmd: &Command, a: &AnalysisArgs) -> Result<(), String> {
+    let (built, analysis) = prepare(a)?;
+    let scheme = built.as_ref();
     match cmd {
         Command::Spectrum(_) => {
             if a.json {
@@ -87,26 +118,25 @@ fn run(cmd: &Command, a: &AnalysisArgs, scheme: &dyn LatticeScheme) -> Result<()
     }
 }
 
-/// Check the options that make sense on the lattice, then analyse.
-fn prepare(a: &AnalysisArgs, scheme: &dyn LatticeScheme) -> Result<LatticeAnalysis, String> {
-    let name = scheme.name();
+/// Check the options that make sense on the lattice, build the scheme with
+/// its parameters, then analyse.
+fn prepare(a: &AnalysisArgs) -> Result<(Box<dyn LatticeScheme>, LatticeAnalysis), String> {
+    let name = a.scheme.as_str();
     if a.valence != 4 {
         return Err(format!("{name} is defined on the regular quad lattice only (valence 4)"));
     }
     if a.faces.is_some() {
         return Err(format!("scheme '{name}' takes no --faces: it lives on the regular quad lattice"));
     }
-    if let Some(p) = a.params.first() {
-        let key = p.split_once('=').map(|(k, _)| k.trim()).unwrap_or(p.as_str());
-        return Err(format!("scheme '{name}' has no parameters (got '{key}')"));
-    }
+    let scheme = registry::lattice(name, &parse_params(&a.params)?)?;
     match a.method.as_deref() {
         None | Some("full") => {}
         Some("dft") => return Err(format!("{name} has asymmetric masks and no rotation symmetry; use --method full")),
         Some(m) => return Err(format!("unknown method '{m}'; use dft or full")),
     }
     let kind: NeighbourhoodKind = a.neighbourhood.parse()?;
-    analyse(scheme, kind, !a.no_exact)
+    let analysis = analyse(scheme.as_ref(), kind, !a.no_exact)?;
+    Ok((scheme, analysis))
 }
 
 /// "6×6 rectangle i = -3..2, j = -3..2" or "N points".
@@ -119,9 +149,4 @@ fn window_text(w: &lattice::Window) -> String {
         ),
         _ => format!("{} lattice points", w.len()),
     }
-}
-
-/// The lattice schemes for `subdlab schemes`: (name, description), no parameters.
-pub(super) fn scheme_list() -> Vec<(&'static str, &'static str)> {
-    lattice::registry().into_iter().map(|e| (e.name, e.description)).collect()
 }

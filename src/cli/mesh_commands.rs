@@ -113,7 +113,7 @@ fn read_vertex_params(path: &Path, scheme: &dyn crate::schemes::Scheme, count: u
 }
 
 pub fn curve(scheme: &str, params: &[String], neighbourhood: &str, json: bool) -> Result<(), String> {
-    let scheme = crate::curves::build(scheme, &parse_params(params)?)?;
+    let scheme = crate::schemes::curves::build(scheme, &parse_params(params)?)?;
     let kind: NeighbourhoodKind = neighbourhood.parse()?;
     let spec = curve_spectrum(scheme.as_ref(), kind)?;
     if json {

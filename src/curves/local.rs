@@ -21,9 +21,10 @@ use faer::{c64, Mat};
 use serde::Serialize;
 
 use super::{CurveMask, CurveScheme, CurveWeight};
+use crate::engine::closure::{self, assemble, invariant_closure, ClosureError, Levels, Refinement};
+use crate::engine::exact;
 use crate::neighbourhood::NeighbourhoodKind;
-use crate::numeric::exact::{rational_roots, QMatrix};
-use crate::numeric::recognise::{convergents, recognise};
+use crate::numeric::recognise::recognise;
 use crate::numeric::{Rational, Weight};
 
 /// Guard against masks whose dependency closure does not stay local.
@@ -31,20 +32,19 @@ const MAX_WINDOW: usize = 1000;
 /// Most levels followed when collecting the limit influence set.
 const MAX_INFLUENCE_LEVELS: u32 = 16;
 
-fn close<W: Weight>(mask: &CurveMask<W>, seed: BTreeSet<i64>) -> Result<BTreeSet<i64>, String> {
-    let mut set = seed;
-    let mut todo: Vec<i64> = set.iter().copied().collect();
-    while let Some(k) = todo.pop() {
-        for (i, _) in mask.stencil(k) {
-            if set.insert(i) {
-                todo.push(i);
-                if set.len() > MAX_WINDOW {
-                    return Err(format!("no invariant window of at most {MAX_WINDOW} points: the mask is not local"));
-                }
-            }
-        }
+/// The mask as the engine sees it: refined point k depends on the old points
+/// of `mask.stencil(k)`.
+struct Deps<'a, W>(&'a CurveMask<W>);
+
+impl<W: Weight> Refinement for Deps<'_, W> {
+    type Point = i64;
+    fn dependencies(&self, k: &i64) -> Result<Vec<i64>, String> {
+        Ok(self.0.stencil(*k).into_iter().map(|t| t.0).collect())
     }
-    Ok(set)
+}
+
+fn close<W: Weight>(mask: &CurveMask<W>, seed: BTreeSet<i64>) -> Result<BTreeSet<i64>, String> {
+    invariant_closure(&Deps(mask), seed, MAX_WINDOW).map_err(|e| e.to_string())
 }
 
 /// The minimal invariant window: closure of the one-ring {−1, 0, 1}.
@@ -54,24 +54,10 @@ pub fn minimal_window<W: Weight>(mask: &CurveMask<W>) -> Result<Vec<i64>, String
 
 /// The old points that influence the limit curve over [−1, 1] (see module doc).
 pub fn influence_set<W: Weight>(mask: &CurveMask<W>) -> Result<BTreeSet<i64>, String> {
-    let mut union: BTreeSet<i64> = BTreeSet::new();
-    let mut unchanged = 0;
-    for level in 1..=MAX_INFLUENCE_LEVELS {
-        let r = 1i64 << level;
-        let mut set: BTreeSet<i64> = (-r..=r).collect();
-        for _ in 0..level {
-            set = set.iter().flat_map(|&k| mask.stencil(k).into_iter().map(|t| t.0)).collect();
-        }
-        let before = union.len();
-        union.extend(set);
-        unchanged = if union.len() == before { unchanged + 1 } else { 0 };
-        // the influence of level-L points lies within the mask's reach of [−1, 1];
-        // once 2^L well exceeds that reach, further levels only repeat the pattern
-        if unchanged >= 2 && r > 4 * (mask.reach() + 1) {
-            return Ok(union);
-        }
-    }
-    Err("the set of points influencing the limit curve did not settle".into())
+    // the influence of level-L points lies within the mask's reach of [−1, 1];
+    // once 2^L well exceeds that reach, further levels only repeat the pattern
+    let levels = Levels::past_reach(mask.reach(), 1, MAX_INFLUENCE_LEVELS);
+    closure::influence_set(&Deps(mask), |l| (-(1i64 << l)..=1i64 << l).collect(), levels).map_err(|e| e.to_string())
 }
 
 /// The analysis window: closure of the influence set and the minimal window.
@@ -105,17 +91,12 @@ impl<W: Weight> CurveMatrix<W> {
 }
 
 pub fn local_matrix<W: Weight>(mask: &CurveMask<W>, window: &[i64]) -> Result<CurveMatrix<W>, String> {
-    let pos: BTreeMap<i64, usize> = window.iter().enumerate().map(|(p, &k)| (k, p)).collect();
-    let mut rows = Vec::with_capacity(window.len());
-    for &k in window {
-        let mut row = Vec::new();
-        for (i, w) in mask.stencil(k) {
-            let col = *pos.get(&i).ok_or_else(|| format!("window is not invariant: point {k} depends on {i}"))?;
-            row.push((col, w));
+    let rows = assemble(&Deps(mask), window, |&k| mask.stencil(k)).map_err(|e| match e {
+        ClosureError::NotInvariant { fine, needs } => {
+            format!("window is not invariant: point {fine} depends on {needs}")
         }
-        row.sort_by_key(|e| e.0);
-        rows.push(row);
-    }
+        e => e.to_string(),
+    })?;
     Ok(CurveMatrix { window: window.to_vec(), rows })
 }
 
@@ -193,50 +174,39 @@ pub fn curve_spectrum(scheme: &dyn CurveScheme, kind: NeighbourhoodKind) -> Resu
     let mut exact = false;
     if let Some(em) = &exact_mask {
         let qm = local_matrix(em, &window)?;
-        let mut q = QMatrix::zeros(n);
-        for (i, row) in qm.rows.iter().enumerate() {
-            for (j, w) in row {
-                q.set(i, *j, w.clone());
-            }
-        }
-        let poly = q.charpoly();
-        let candidates: Vec<Rational> = eigenvalues
-            .iter()
-            .filter(|e| e.im == 0.0)
-            .flat_map(|e| convergents(e.re, 1_000_000_000).into_iter().map(|(p, q)| Rational::ratio(p, q)))
-            .collect();
-        let (roots, rest) = rational_roots(&poly, &candidates);
-        charpoly = Some(poly.pretty());
+        let q = exact::to_qmatrix(&qm.rows);
+        let proof = exact::confirm(&q, &exact::candidates(eigenvalues.iter().filter(|e| e.im == 0.0).map(|e| e.re)));
+        charpoly = Some(proof.charpoly.pretty());
         exact_matrix = Some(qm.dense().iter().map(|r| r.iter().map(|x| x.to_string()).collect()).collect());
-        if rest.degree() == 0 {
+        if proof.complete() {
             // every eigenvalue is rational and proven: multiplicities from the
             // polynomial, eigenspace dimensions from exact ranks
             exact = true;
-            eigenvalues = roots
+            eigenvalues = proof
+                .eigenvalues
                 .iter()
-                .map(|(r, alg)| {
-                    let geo = n - q.shifted(r).rank();
-                    let re = Weight::to_f64(r);
+                .map(|r| {
+                    let re = Weight::to_f64(&r.value);
                     CurveEigenvalue {
                         re,
                         im: 0.0,
                         modulus: re.abs(),
-                        algebraic_multiplicity: *alg,
-                        geometric_multiplicity: geo,
-                        defective: geo < *alg,
-                        exact: Some(r.to_string()),
+                        algebraic_multiplicity: r.algebraic,
+                        geometric_multiplicity: r.geometric,
+                        defective: r.geometric < r.algebraic,
+                        exact: Some(r.value.to_string()),
                         recognised: recognise(re),
                     }
                 })
                 .collect();
         } else {
-            for (r, _) in &roots {
-                let v = Weight::to_f64(r);
+            for r in &proof.eigenvalues {
+                let v = Weight::to_f64(&r.value);
                 if let Some(e) = eigenvalues
                     .iter_mut()
                     .find(|e| e.im == 0.0 && (e.re - v).abs() <= 1e-7 * v.abs().max(1.0) && e.exact.is_none())
                 {
-                    e.exact = Some(r.to_string());
+                    e.exact = Some(r.value.to_string());
                 }
             }
         }

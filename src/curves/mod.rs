@@ -1,22 +1,18 @@
-//! Curve subdivision schemes of Lin–Luo section 3: the cubic B-spline, the
-//! four-point scheme and the unified α-scheme that blends them.
+//! The Z domain: binary curve subdivision (the schemes themselves, Lin–Luo
+//! section 3, are in `crate::schemes::curves`).
 //!
 //! A binary curve scheme is two rules over the old points: the new point
 //! P_{2i} (the "even" rule, at an old vertex) and P_{2i+1} (the "odd" rule,
 //! between P_i and P_{i+1}). Each scheme writes its two rules once, generic
 //! over the weight scalar, as offsets relative to i; refinement of a polygon
 //! (`refine_closed`), the local subdivision matrix (`local`) and relation (3)
-//! of the paper (`relation`) all evaluate those same masks.
+//! of the paper (`schemes::curves::relation`) all evaluate those same masks.
 
-pub mod cubic_bspline;
-pub mod four_point;
 pub mod local;
-pub mod relation;
 pub mod smoothness;
-pub mod unified;
 
 use crate::numeric::{Inexact, Rational, Weight};
-use crate::sdc::{ParamSpec, Params};
+use crate::sdc::Params;
 
 /// The two rules of a binary curve scheme: new P_{2i} = Σ w·P_{i+o} over
 /// `even`, new P_{2i+1} = Σ w·P_{i+o} over `odd`, as (o, w) pairs.
@@ -88,32 +84,6 @@ impl CurveWeight for Rational {
     fn rule(scheme: &dyn CurveScheme) -> Result<CurveMask<Self>, Inexact> {
         CurveRules::<Rational>::mask(scheme)
     }
-}
-
-pub struct CurveEntry {
-    pub name: &'static str,
-    pub description: &'static str,
-    pub params: fn() -> Vec<ParamSpec>,
-    pub build: fn(Params) -> Box<dyn CurveScheme>,
-}
-
-pub fn registry() -> Vec<CurveEntry> {
-    vec![cubic_bspline::entry(), four_point::entry(), unified::entry()]
-}
-
-pub fn known_names() -> Vec<&'static str> {
-    registry().iter().map(|e| e.name).collect()
-}
-
-/// Build a curve scheme by name with `name=value` parameter overrides.
-pub fn build(name: &str, overrides: &[(String, String)]) -> Result<Box<dyn CurveScheme>, String> {
-    let reg = registry();
-    let entry = reg
-        .iter()
-        .find(|e| e.name == name)
-        .ok_or_else(|| format!("unknown curve scheme '{name}'; known curve schemes: {}", known_names().join(", ")))?;
-    let params = Params::resolve(entry.name, &(entry.params)(), overrides)?;
-    Ok((entry.build)(params))
 }
 
 /// One subdivision step of a closed polygon of scalars (apply it per

@@ -5,8 +5,6 @@
 //! masks have no rotation symmetry), the exact confirmation from
 //! `spectrum::exact::confirm`, the verdict from `verdict::reif`.
 
-use std::collections::BTreeMap;
-
 use super::{analysis_window, local_matrix, minimal_invariant_window, point_name, LatticeScheme, Window};
 use crate::matrix::LocalMatrix;
 use crate::neighbourhood::{NeighbourhoodKind, VertexKind, VertexLabel};
@@ -89,7 +87,7 @@ pub fn analyse(scheme: &dyn LatticeScheme, kind: NeighbourhoodKind, exact: bool)
     let spectrum = Spectrum {
         scheme: scheme.name().to_string(),
         valence: 4,
-        params: BTreeMap::new(),
+        params: scheme.params().values.iter().map(|(k, v)| (k.clone(), v.text.clone())).collect(),
         faces: "QQQQ".into(),
         centre: CentreKind::Vertex,
         neighbourhood: kind,

@@ -18,9 +18,11 @@
 pub mod analysis;
 pub mod fit;
 
-use std::collections::{BTreeSet, HashSet};
+use std::collections::BTreeSet;
 
+use crate::engine::closure::{self, assemble, influence_set, invariant_closure, ClosureError, Levels, Refinement};
 use crate::numeric::{Rational, Weight};
+use crate::sdc::Params;
 
 /// A lattice point (i, j), or an offset (r, s) inside a mask.
 pub type Point = (i64, i64);
@@ -34,6 +36,12 @@ pub trait LatticeRules<W: Weight> {
 pub trait LatticeScheme: LatticeRules<f64> + LatticeRules<Rational> + Send + Sync {
     fn name(&self) -> &'static str;
     fn description(&self) -> &'static str;
+    /// The parameter values the masks were built with (scheme files may have
+    /// parameters; the built-in lattice schemes have none).
+    fn params(&self) -> &Params {
+        static NONE: Params = Params { values: Vec::new() };
+        &NONE
+    }
 }
 
 /// Weight types the lattice engine evaluates masks in; lets generic code ask a
@@ -131,42 +139,50 @@ pub fn point_name(p: Point) -> String {
     format!("p[{},{}]", part('i', p.0), part('j', p.1))
 }
 
-/// The smallest invariant window containing `seed`: close under "fine point q
-/// needs coarse point p". Every point's own index is a fine index of the next
-/// level, so the closure is exactly the set whose refined points depend only on
-/// itself. Returns an error if the closure does not stay bounded (a scheme whose
-/// masks reach too far for any finite invariant window, which binary dilation
-/// with finite masks excludes, but a malformed mask must not loop forever).
-pub fn minimal_invariant_window(scheme: &dyn LatticeScheme, seed: &[Point]) -> Result<Window, String> {
-    const LIMIT: usize = 100_000;
-    let mut set: HashSet<Point> = seed.iter().copied().collect();
-    let mut stack: Vec<Point> = seed.to_vec();
-    while let Some(q) = stack.pop() {
-        for p in dependencies(scheme, q) {
-            if set.insert(p) {
-                stack.push(p);
-                if set.len() > LIMIT {
-                    return Err(format!("{}: no invariant window of at most {LIMIT} points", scheme.name()));
-                }
-            }
-        }
+/// The lattice scheme as the engine sees it: fine point q depends on the
+/// coarse points of its exact stencil (exact, so that a weight that is zero
+/// only up to rounding is no dependency).
+struct Deps<'a>(&'a dyn LatticeScheme);
+
+impl Refinement for Deps<'_> {
+    type Point = Point;
+    fn dependencies(&self, q: &Point) -> Result<Vec<Point>, String> {
+        Ok(dependencies(self.0, *q))
     }
+}
+
+/// Most points an invariant window may have before the masks count as not local.
+const MAX_WINDOW: usize = 100_000;
+/// Most levels followed when collecting the analysis window's influence set.
+const MAX_LEVELS: u32 = 9;
+
+fn named(scheme: &dyn LatticeScheme, e: ClosureError<Point>) -> String {
+    match e {
+        ClosureError::NotInvariant { fine, needs } => format!(
+            "{}: window is not invariant: fine point {} needs {}",
+            scheme.name(),
+            point_name(fine),
+            point_name(needs)
+        ),
+        e => format!("{}: {e}", scheme.name()),
+    }
+}
+
+/// The smallest invariant window containing `seed` (`engine::closure`):
+/// every point's own index is a fine index of the next level, so the closure
+/// under "fine point q needs coarse point p" is exactly the smallest set whose
+/// refined points depend only on itself. An error, not a loop, when the masks
+/// are not local.
+pub fn minimal_invariant_window(scheme: &dyn LatticeScheme, seed: &[Point]) -> Result<Window, String> {
+    let set = invariant_closure(&Deps(scheme), seed.iter().copied(), MAX_WINDOW).map_err(|e| named(scheme, e))?;
     Ok(Window::from_set(set))
 }
 
 /// The pairs (fine point of the window, coarse point outside it) that break
 /// invariance; empty when the window is invariant.
 pub fn invariance_defects(scheme: &dyn LatticeScheme, w: &Window) -> Vec<(Point, Point)> {
-    let inside: HashSet<Point> = w.points.iter().copied().collect();
-    let mut out = Vec::new();
-    for &q in &w.points {
-        for p in dependencies(scheme, q) {
-            if !inside.contains(&p) {
-                out.push((q, p));
-            }
-        }
-    }
-    out
+    // `Deps` never fails, so neither does this
+    closure::invariance_defects(&Deps(scheme), &w.points).unwrap_or_default()
 }
 
 /// Dense local subdivision matrix on the window, rows and columns in the
@@ -174,65 +190,48 @@ pub fn invariance_defects(scheme: &dyn LatticeScheme, w: &Window) -> Vec<(Point,
 /// is not invariant, because the restriction would not be a subdivision matrix.
 pub fn local_matrix<W: LatticeWeight>(scheme: &dyn LatticeScheme, w: &Window) -> Result<Vec<Vec<W>>, String> {
     let n = w.len();
+    let rows = assemble(&Deps(scheme), &w.points, |&q| stencil::<W>(scheme, q)).map_err(|e| match e {
+        ClosureError::NotInvariant { fine, needs } => format!(
+            "{}: window of {n} points is not invariant: fine point {} needs {}",
+            scheme.name(),
+            point_name(fine),
+            point_name(needs)
+        ),
+        e => named(scheme, e),
+    })?;
     let mut m = vec![vec![W::zero(); n]; n];
-    for (row, &q) in w.points.iter().enumerate() {
-        for (p, wt) in stencil::<W>(scheme, q) {
-            let col = w.position(p).ok_or_else(|| {
-                format!(
-                    "{}: window of {n} points is not invariant: fine point {} needs {}",
-                    scheme.name(),
-                    point_name(q),
-                    point_name(p)
-                )
-            })?;
-            m[row][col] = m[row][col].clone() + wt;
+    for (row, entries) in rows.into_iter().enumerate() {
+        for (col, wt) in entries {
+            m[row][col] = wt;
         }
     }
     Ok(m)
 }
 
+/// Largest |offset| of the four masks.
+fn reach(scheme: &dyn LatticeScheme) -> i64 {
+    (0..4u8)
+        .flat_map(|k| <Rational as LatticeWeight>::mask_of(scheme, k / 2, k % 2))
+        .map(|((r, s), _)| r.abs().max(s.abs()))
+        .max()
+        .unwrap_or(0)
+}
+
 /// The window whose points hold every control point influencing the limit
 /// surface over the cells around the origin, [-radius, radius]², closed under
-/// dependencies (the lattice analogue of ARCHITECTURE.md's analysis neighbourhood).
-/// Found by tracking dependencies: the fine points of level k inside the region
-/// are pulled back level by level to the control points of level 0; the union
-/// grows with k and is stationary once two consecutive levels give the same set.
+/// dependencies (the lattice analogue of ARCHITECTURE.md's analysis neighbourhood):
+/// the fine points of level k inside the region pulled back to level 0, their
+/// union over k once it has settled (`engine::closure::influence_set`), with
+/// the origin, closed.
 pub fn analysis_window(scheme: &dyn LatticeScheme, radius: i64) -> Result<Window, String> {
-    const MAX_LEVELS: u32 = 9;
-    let mut previous: Option<HashSet<Point>> = None;
-    for k in 1..=MAX_LEVELS {
+    let square = |k: u32| {
         let r = radius << k;
-        let mut level: HashSet<Point> = (-r..=r).flat_map(|i| (-r..=r).map(move |j| (i, j))).collect();
-        for _ in 0..k {
-            let mut coarser = HashSet::new();
-            for &q in &level {
-                coarser.extend(dependencies(scheme, q));
-            }
-            level = coarser;
-        }
-        if previous.as_ref() == Some(&level) {
-            level.insert((0, 0));
-            let seed: Vec<Point> = level.into_iter().collect();
-            return minimal_invariant_window(scheme, &seed);
-        }
-        previous = Some(level);
-    }
-    Err(format!("{}: the control points of the limit surface near the origin did not settle", scheme.name()))
-}
-
-/// Every built-in lattice scheme.
-pub struct LatticeEntry {
-    pub name: &'static str,
-    pub description: &'static str,
-    pub build: fn() -> Box<dyn LatticeScheme>,
-}
-
-pub fn registry() -> Vec<LatticeEntry> {
-    vec![crate::schemes::khan_mustafa::entry(), crate::schemes::khan_mustafa::cubic_entry()]
-}
-
-pub fn find(name: &str) -> Option<LatticeEntry> {
-    registry().into_iter().find(|e| e.name == name)
+        (-r..=r).flat_map(|i| (-r..=r).map(move |j| (i, j))).collect::<Vec<Point>>()
+    };
+    let levels = Levels::past_reach(reach(scheme), radius, MAX_LEVELS);
+    let mut seed = influence_set(&Deps(scheme), square, levels).map_err(|e| named(scheme, e))?;
+    seed.insert((0, 0));
+    minimal_invariant_window(scheme, &seed.into_iter().collect::<Vec<_>>())
 }
 
 #[cfg(test)]

@@ -18,7 +18,8 @@
 //! Discussion section). They are separate names rather than a parameter because
 //! scheme parameters are numbers with a range, and the variant is a choice.
 
-use crate::lattice::{LatticeEntry, LatticeRules, LatticeScheme, Point};
+use super::registry::LatticeEntry;
+use crate::lattice::{LatticeRules, LatticeScheme, Point};
 use crate::numeric::Weight;
 
 /// Weights given as integer numerators over a common denominator, with offsets
@@ -227,7 +228,8 @@ pub fn entry() -> LatticeEntry {
     LatticeEntry {
         name: "khan-mustafa",
         description: LatticeScheme::description(&KhanMustafa),
-        build: || Box::new(KhanMustafa),
+        params: Vec::new,
+        build: |_| Box::new(KhanMustafa),
     }
 }
 
@@ -235,6 +237,7 @@ pub fn cubic_entry() -> LatticeEntry {
     LatticeEntry {
         name: "khan-mustafa-cubic",
         description: LatticeScheme::description(&KhanMustafaCubic),
-        build: || Box::new(KhanMustafaCubic),
+        params: Vec::new,
+        build: |_| Box::new(KhanMustafaCubic),
     }
 }

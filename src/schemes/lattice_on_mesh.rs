@@ -38,7 +38,9 @@ impl LatticeOnMesh {
                 ..Caps::NONE
             },
         };
-        LatticeOnMesh { inner, params: Params::default(), info }
+        // a lattice scheme file may have parameters; the mesh analyses report them
+        let params = inner.params().clone();
+        LatticeOnMesh { inner, params, info }
     }
 
     fn rule<W: LatticeWeight>(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {

@@ -3,15 +3,21 @@
 //! scalar so that the same code gives float and exact stencils.
 
 pub mod catmull_clark;
+// the curve schemes of Lin–Luo section 3 (the Z domain)
+pub mod curves;
 pub mod doo_sabin;
+// scheme files of the lattice and curve families (mesh scheme files: `user`)
+pub mod files;
 pub mod four_three;
-// a regular-lattice scheme: registered in `crate::lattice::registry`, not here
+// regular-lattice schemes (Z², `crate::lattice`), listed in `registry` with the rest
 pub mod khan_mustafa;
 pub mod lattice_on_mesh;
 pub mod loop_subdivision;
 pub mod non_box;
 pub mod pgs;
 pub mod polar_bi2;
+// every built-in name of every family, and the routing of names and files
+pub mod registry;
 pub mod tps;
 pub mod unified_sqrt3;
 // scheme files (TOML) over the built-in topologies
@@ -31,57 +37,48 @@ pub struct SchemeEntry {
     pub build: fn(Params) -> Box<dyn Scheme>,
 }
 
+/// The built-in mesh schemes (the mesh family of `registry::entries`).
 pub fn registry() -> Vec<SchemeEntry> {
-    vec![
-        catmull_clark::entry(),
-        loop_subdivision::entry(),
-        doo_sabin::entry(),
-        non_box::entry(),
-        four_three::entry(),
-        unified_sqrt3::kobbelt_entry(),
-        unified_sqrt3::entry(),
-        tps::entry(),
-        pgs::entry(),
-        polar_bi2::entry(),
-    ]
+    registry::entries()
+        .into_iter()
+        .filter_map(|e| match e {
+            registry::Entry::Mesh(m) => Some(m),
+            _ => None,
+        })
+        .collect()
 }
 
+/// Every built-in name, of every family: a scheme file may not use one.
 pub fn known_names() -> Vec<&'static str> {
-    // the regular-lattice schemes are built by `crate::lattice`, but are names all the same
-    registry().iter().map(|e| e.name).chain(crate::lattice::registry().iter().map(|e| e.name)).collect()
+    registry::known_names()
+}
+
+/// The scheme as a mesh scheme: regular-lattice schemes refine meshes and give
+/// characteristic maps through their masks on oriented quad meshes; curve
+/// schemes have no mesh rules.
+fn on_mesh(built: registry::Built, name: &str) -> Result<Box<dyn Scheme>, String> {
+    match built {
+        registry::Built::Mesh(s) => Ok(s),
+        registry::Built::Lattice(l) => Ok(Box::new(lattice_on_mesh::LatticeOnMesh::new(l))),
+        registry::Built::Curve(_) => {
+            Err(format!("'{name}' is a curve scheme: it has no mesh rules (analyse it with `subdlab curve {name}`)"))
+        }
+    }
 }
 
 /// Build a scheme by name with `name=value` parameter overrides.
 pub fn build(name: &str, overrides: &[(String, String)]) -> Result<Box<dyn Scheme>, String> {
-    let reg = registry();
-    if let Some(l) = crate::lattice::find(name) {
-        // regular-lattice schemes refine meshes and give characteristic maps
-        // through their masks on oriented quad meshes
-        if let Some((k, _)) = overrides.first() {
-            return Err(format!("scheme '{name}' has no parameters (got '{k}')"));
-        }
-        return Ok(Box::new(lattice_on_mesh::LatticeOnMesh::new((l.build)())));
-    }
-    let entry = reg
-        .iter()
-        .find(|e| e.name == name)
+    let entry = registry::find(name)
         .ok_or_else(|| format!("unknown scheme '{name}'; known schemes: {}", known_names().join(", ")))?;
-    let params = Params::resolve(entry.name, &(entry.params)(), overrides)?;
-    Ok((entry.build)(params))
+    on_mesh(entry.build(overrides)?, name)
 }
 
-/// Build a scheme from a name or a scheme file: an argument that ends in
-/// `.toml` or names an existing file is loaded as a file (`user`), anything
-/// else is a built-in name. The one entry point for command-line arguments.
+/// Build a scheme from a name or a scheme file (`registry::resolve`): an
+/// argument that ends in `.toml` or names an existing file is loaded as a
+/// file, anything else is a built-in name. The entry point for command-line
+/// arguments that need a mesh scheme.
 pub fn resolve(name_or_path: &str, overrides: &[(String, String)]) -> Result<Box<dyn Scheme>, String> {
-    let path = std::path::Path::new(name_or_path);
-    // a built-in name always means the built-in scheme, even if a file of that
-    // name happens to exist in the working directory
-    let builtin = known_names().contains(&name_or_path);
-    if !builtin && (name_or_path.ends_with(".toml") || path.is_file()) {
-        return user::load(path, overrides);
-    }
-    build(name_or_path, overrides)
+    on_mesh(registry::resolve(name_or_path, overrides)?, name_or_path)
 }
 
 /// The one-ring fan of an interior vertex, restricted to faces of the given

@@ -10,8 +10,9 @@
 //! opposite convention for its surface scheme (α = 0 approximating, α = 1
 //! interpolatory); the section-3 α here corresponds to 1 − α there.
 
-use super::{CurveEntry, CurveMask, CurveRules, CurveScheme};
+use crate::curves::{CurveMask, CurveRules, CurveScheme};
 use crate::numeric::{Inexact, Weight};
+use crate::schemes::registry::CurveEntry;
 use crate::sdc::{ParamSpec, Params};
 
 pub struct UnifiedCurve {

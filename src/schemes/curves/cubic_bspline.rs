@@ -1,8 +1,9 @@
 //! Uniform cubic B-spline subdivision (Lane–Riesenfeld / Chaikin of degree 3):
 //! P_{2i} = (P_{i-1} + 6 P_i + P_{i+1}) / 8, P_{2i+1} = (P_i + P_{i+1}) / 2.
 
-use super::{CurveEntry, CurveMask, CurveRules, CurveScheme};
+use crate::curves::{CurveMask, CurveRules, CurveScheme};
 use crate::numeric::{Inexact, Weight};
+use crate::schemes::registry::CurveEntry;
 use crate::sdc::Params;
 
 pub struct CubicBSpline {

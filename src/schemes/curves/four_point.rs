@@ -2,8 +2,9 @@
 //! w = 1/16 (the value that reproduces cubics):
 //! P_{2i} = P_i, P_{2i+1} = (1/2 + w)(P_i + P_{i+1}) − w (P_{i-1} + P_{i+2}).
 
-use super::{CurveEntry, CurveMask, CurveRules, CurveScheme};
+use crate::curves::{CurveMask, CurveRules, CurveScheme};
 use crate::numeric::{Inexact, Weight};
+use crate::schemes::registry::CurveEntry;
 use crate::sdc::Params;
 
 pub struct FourPoint {

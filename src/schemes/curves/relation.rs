@@ -8,7 +8,8 @@
 //! side from the B-spline's own rules (no weight is restated), so comparing it
 //! with a four-point step tests the paper's claim.
 
-use super::{cubic_bspline, refine_closed, CurveWeight};
+use super::cubic_bspline;
+use crate::curves::{refine_closed, CurveWeight};
 use crate::numeric::Inexact;
 
 /// A refined closed polygon built by relation (3): old points kept at even

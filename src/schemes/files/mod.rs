@@ -1,0 +1,466 @@
+//! Scheme files of the lattice (Z²) and curve (Z) families, and the routing
+//! of a scheme file to its family's loader.
+//!
+//! A file says which family it belongs to with a top-level key
+//! `domain = "lattice"` or `domain = "curve"`. Mesh scheme files (`user`) have
+//! no such key (they name a `topology`), and `user` rejects keys it does not
+//! know; so the router peeks at the TOML's keys first and hands the text to
+//! the loader of its family, which then parses it strictly.
+//!
+//! Both formats share: `name` (not a built-in name), `description`, `affine`
+//! (default true: every rule's weights sum to 1), `[params.NAME]` tables with
+//! `default`, `min`, `max`, `description` (as in mesh scheme files), and
+//! weights as expressions of the project's expression language
+//! (`numeric::expr`) in the parameters. Offsets are table keys: `"r,s"` on the
+//! lattice, `"o"` on the line. Every error names the file, the line and the
+//! field.
+
+pub mod curve;
+pub mod lattice;
+
+use std::collections::{BTreeMap, HashSet};
+use std::path::Path;
+use std::sync::Mutex;
+
+use serde::Deserialize;
+use toml::Spanned;
+
+use super::registry::{Built, Family};
+use super::user::{UserParam, MAX_EXPR_CHARS, MAX_FILE_BYTES};
+use super::Params;
+use crate::numeric::expr::{Env, Expr};
+use crate::numeric::{ParamValue, Rational, Weight};
+
+const MAX_NAME_CHARS: usize = 64;
+const MAX_DESCRIPTION_CHARS: usize = 1000;
+const MAX_PARAMS: usize = 16;
+/// Largest |offset| a mask may use: masks are local, and the window search
+/// follows them level by level.
+pub const MAX_OFFSET: i64 = 32;
+/// Names the expression language reserves.
+const RESERVED: [&str; 11] = ["n", "j", "pi", "i", "cos", "sin", "sqrt", "cbrt", "abs", "kronecker", "sum"];
+
+/// A TOML table whose values keep their positions in the file.
+pub(crate) type Section = Spanned<BTreeMap<String, Spanned<toml::Value>>>;
+
+/// Read a scheme file (size capped before reading it all).
+fn read(path: &Path) -> Result<String, String> {
+    use std::io::Read;
+    let shown = path.display().to_string();
+    let file = std::fs::File::open(path).map_err(|e| format!("cannot read scheme file {shown}: {e}"))?;
+    let mut bytes = Vec::new();
+    file.take(MAX_FILE_BYTES as u64 + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| format!("cannot read scheme file {shown}: {e}"))?;
+    if bytes.len() > MAX_FILE_BYTES {
+        return Err(format!("{shown}: larger than {MAX_FILE_BYTES} bytes; scheme files are short"));
+    }
+    String::from_utf8(bytes).map_err(|_| format!("{shown}: not UTF-8 text"))
+}
+
+/// The family a file's text declares. Text that is not TOML, or whose
+/// `domain` is not a string, goes to the mesh loader, whose parser reports the
+/// problem with its line.
+fn family_of_text(text: &str, file: &str) -> Result<Family, String> {
+    /// Only the `domain` key; every other key is left to the family's loader.
+    #[derive(Deserialize)]
+    struct Peek {
+        domain: Option<Spanned<toml::Value>>,
+    }
+    let Ok(Peek { domain: Some(domain) }) = toml::from_str::<Peek>(text) else { return Ok(Family::Mesh) };
+    match domain.get_ref().as_str() {
+        Some("lattice") => Ok(Family::Lattice),
+        Some("curve") => Ok(Family::Curve),
+        other => Err(format!(
+            "{file} line {}, field domain: {} is not a domain; use \"lattice\" or \"curve\" (mesh scheme files have \
+             no domain key: they name a topology)",
+            line_of(text, domain.span().start),
+            other.map(|d| format!("'{d}'")).unwrap_or_else(|| "a non-string value".into())
+        )),
+    }
+}
+
+/// The family of a scheme file, from its `domain` key.
+pub fn family(path: &Path) -> Result<Family, String> {
+    family_of_text(&read(path)?, &path.display().to_string())
+}
+
+/// Load a scheme file of any family with `name=value` parameter overrides.
+pub fn load(path: &Path, overrides: &[(String, String)]) -> Result<Built, String> {
+    let text = read(path)?;
+    let file = path.display().to_string();
+    Ok(match family_of_text(&text, &file)? {
+        Family::Mesh => Built::Mesh(super::user::load(path, overrides)?),
+        Family::Lattice => Built::Lattice(Box::new(lattice::LatticeFileDef::parse(&text, &file)?.build(overrides)?)),
+        Family::Curve => Built::Curve(Box::new(curve::CurveFileDef::parse(&text, &file)?.build(overrides)?)),
+    })
+}
+
+/// What `subdlab schemes FILE` shows of a file of any family.
+pub struct Described {
+    pub name: String,
+    pub description: String,
+    /// the topology a mesh file names, or the domain of a lattice or curve file
+    pub topology: &'static str,
+    pub params: Vec<UserParam>,
+}
+
+/// Parse a scheme file of any family for its name, description and parameters.
+pub fn describe(path: &Path) -> Result<Described, String> {
+    let text = read(path)?;
+    let file = path.display().to_string();
+    Ok(match family_of_text(&text, &file)? {
+        Family::Mesh => {
+            let d = super::user::UserSchemeDef::parse(&text, &file)?;
+            Described { topology: d.topology_name(), name: d.name, description: d.description, params: d.params }
+        }
+        Family::Lattice => {
+            let d = lattice::LatticeFileDef::parse(&text, &file)?;
+            Described { topology: "lattice", name: d.head.name, description: d.head.description, params: d.head.params }
+        }
+        Family::Curve => {
+            let d = curve::CurveFileDef::parse(&text, &file)?;
+            Described { topology: "curve", name: d.head.name, description: d.head.description, params: d.head.params }
+        }
+    })
+}
+
+pub(crate) fn line_of(text: &str, offset: usize) -> usize {
+    text.as_bytes()[..offset.min(text.len())].iter().filter(|&&b| b == b'\n').count() + 1
+}
+
+/// "FILE line L, field F: message", the form of every scheme-file error.
+pub(crate) fn field_error(file: &str, line: usize, field: &str, msg: impl std::fmt::Display) -> String {
+    format!("{file} line {line}, field {field}: {msg}")
+}
+
+/// The TOML parser's error as one line with the file and line.
+pub(crate) fn toml_error(e: toml::de::Error, text: &str, file: &str) -> String {
+    let msg = e.message().trim().replace('\n', "; ");
+    match e.span() {
+        Some(span) => format!("{file} line {}: {msg}", line_of(text, span.start)),
+        None => format!("{file}: {msg}"),
+    }
+}
+
+/// A parameter table as written.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct ParamDoc {
+    default: Spanned<toml::Value>,
+    min: Option<Spanned<toml::Value>>,
+    max: Option<Spanned<toml::Value>>,
+    description: Option<String>,
+}
+
+/// A number in the file: strings are parsed as numbers (3/8, 0.375), TOML
+/// integers and floats taken as written.
+fn literal(v: &toml::Value) -> Result<ParamValue, String> {
+    match v {
+        toml::Value::String(s) => ParamValue::parse(s),
+        toml::Value::Integer(k) => Ok(ParamValue::from_ratio(*k, 1)),
+        // the shortest decimal that round-trips, so 0.375 is exactly 3/8
+        toml::Value::Float(x) => ParamValue::parse(&format!("{x}")),
+        other => Err(format!("expected a number, got a {}", other.type_str())),
+    }
+}
+
+/// The keys every lattice and curve file has, checked.
+#[derive(Clone, Debug)]
+pub struct Head {
+    pub file: String,
+    pub name: String,
+    pub description: String,
+    pub affine: bool,
+    pub params: Vec<UserParam>,
+}
+
+impl Head {
+    /// Check the name (a scheme name, not a built-in one), the description and
+    /// the parameter tables.
+    pub(crate) fn parse(
+        text: &str,
+        file: &str,
+        name: &Spanned<String>,
+        description: &Option<Spanned<String>>,
+        affine: Option<bool>,
+        params: &BTreeMap<String, Spanned<ParamDoc>>,
+    ) -> Result<Head, String> {
+        let at = |span: std::ops::Range<usize>| line_of(text, span.start);
+        let err = |line: usize, field: &str, msg: &dyn std::fmt::Display| field_error(file, line, field, msg);
+        let shown = name.get_ref().trim().to_string();
+        let ok = !shown.is_empty()
+            && shown.chars().count() <= MAX_NAME_CHARS
+            && shown.chars().all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_');
+        if !ok {
+            return Err(err(
+                at(name.span()),
+                "name",
+                &format!("'{shown}' is not a scheme name (1 to {MAX_NAME_CHARS} letters, digits, '-' or '_')"),
+            ));
+        }
+        // output and claims identify schemes by name: a file must not pass for a built-in
+        if super::known_names().contains(&shown.as_str()) {
+            return Err(err(at(name.span()), "name", &format!("'{shown}' is a built-in scheme; choose another name")));
+        }
+        let description = match description {
+            Some(d) if d.get_ref().chars().count() > MAX_DESCRIPTION_CHARS => {
+                return Err(err(
+                    at(d.span()),
+                    "description",
+                    &format!("longer than {MAX_DESCRIPTION_CHARS} characters"),
+                ))
+            }
+            Some(d) => d.get_ref().replace('\n', " "),
+            None => format!("scheme file {file}"),
+        };
+        if params.len() > MAX_PARAMS {
+            return Err(format!("{file}: more than {MAX_PARAMS} parameters"));
+        }
+        let mut out = Vec::new();
+        for (pname, p) in params {
+            let line = at(p.span());
+            let key = format!("params.{pname}");
+            let ident = pname.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+                && pname.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+                && pname.len() <= MAX_NAME_CHARS;
+            if !ident {
+                return Err(err(line, &key, &"a parameter name is letters, digits and '_', starting with a letter"));
+            }
+            if RESERVED.contains(&pname.as_str()) {
+                return Err(err(line, &key, &format!("'{pname}' is reserved (n, j, pi, i and function names)")));
+            }
+            let p = p.get_ref();
+            let default =
+                literal(p.default.get_ref()).map_err(|e| err(at(p.default.span()), &format!("{key}.default"), &e))?;
+            let bound = |b: &Option<Spanned<toml::Value>>, which: &str, none: f64| -> Result<f64, String> {
+                match b {
+                    None => Ok(none),
+                    Some(v) => literal(v.get_ref())
+                        .map(|x| x.value)
+                        .map_err(|e| err(at(v.span()), &format!("{key}.{which}"), &e)),
+                }
+            };
+            let (min, max) = (bound(&p.min, "min", f64::NEG_INFINITY)?, bound(&p.max, "max", f64::INFINITY)?);
+            if !(min <= max && default.value >= min && default.value <= max) {
+                return Err(err(line, &key, &format!("default {} is not in [{min}, {max}]", default.text)));
+            }
+            out.push(UserParam {
+                name: pname.clone(),
+                default,
+                min,
+                max,
+                description: p.description.clone().unwrap_or_default(),
+            });
+        }
+        Ok(Head { file: file.to_string(), name: shown, description, affine: affine.unwrap_or(true), params: out })
+    }
+
+    /// Parameter values: the defaults, then `name=value` overrides (range-checked).
+    pub(crate) fn values(&self, overrides: &[(String, String)]) -> Result<(Env, Params), String> {
+        let mut env = Env::new();
+        for p in &self.params {
+            env.insert(p.name.clone(), p.default.clone());
+        }
+        for (name, text) in overrides {
+            let Some(p) = self.params.iter().find(|p| &p.name == name) else {
+                let known: Vec<_> = self.params.iter().map(|p| p.name.as_str()).collect();
+                return Err(if known.is_empty() {
+                    format!("scheme '{}' has no parameters (got '{name}')", self.name)
+                } else {
+                    format!("scheme '{}' has no parameter '{name}'; its parameters: {}", self.name, known.join(", "))
+                });
+            };
+            let v = ParamValue::parse(text).map_err(|e| format!("parameter {name}: {e}"))?;
+            if v.value < p.min || v.value > p.max {
+                return Err(format!(
+                    "parameter {name}={text} is out of range [{}, {}] for scheme '{}'",
+                    p.min, p.max, self.name
+                ));
+            }
+            env.insert(name.clone(), v);
+        }
+        let values = self.params.iter().map(|p| (p.name.clone(), env[&p.name].clone())).collect();
+        Ok((env, Params { values }))
+    }
+
+    /// A weight expression from a TOML value (string, integer or float), with
+    /// no variables but the parameters.
+    pub(crate) fn expr(&self, value: &toml::Value, line: usize, field: &str) -> Result<Expr, String> {
+        let err = |msg: &dyn std::fmt::Display| field_error(&self.file, line, field, msg);
+        let source = match value {
+            toml::Value::String(s) => s.clone(),
+            toml::Value::Integer(k) => k.to_string(),
+            toml::Value::Float(x) => format!("{x}"),
+            other => return Err(err(&format!("expected an expression string, got a {}", other.type_str()))),
+        };
+        if source.chars().count() > MAX_EXPR_CHARS {
+            return Err(err(&format!("expression longer than {MAX_EXPR_CHARS} characters")));
+        }
+        let expr = Expr::parse(&source).map_err(|e| err(&e))?;
+        for var in expr.variables() {
+            if !self.params.iter().any(|p| p.name == var) {
+                let hint =
+                    if var == "n" || var == "j" { " (lattice and curve masks have no valence or index)" } else { "" };
+                return Err(err(&format!("unknown variable '{var}'{hint}")));
+            }
+        }
+        Ok(expr)
+    }
+}
+
+/// A weight of a mask: its offset, its expression and where it was written.
+#[derive(Clone, Debug)]
+pub(crate) struct Term<O> {
+    pub offset: O,
+    pub expr: Expr,
+    pub line: usize,
+    pub field: String,
+}
+
+/// A weight evaluated: the float always, the rational when the expression has
+/// an exact value at these parameter values.
+pub(crate) struct Value {
+    pub float: f64,
+    pub exact: Option<Rational>,
+}
+
+/// Evaluate a weight, `scale` times the term's expression. An error names the
+/// field when the value is not a finite real number.
+pub(crate) fn evaluate<O>(head: &Head, term: &Term<O>, scale: Option<&Term<()>>, env: &Env) -> Result<Value, String> {
+    let err = |t_line: usize, field: &str, msg: &dyn std::fmt::Display| field_error(&head.file, t_line, field, msg);
+    let one = |t_line: usize, field: &str, e: &Expr| -> Result<Value, String> {
+        let z = e.eval(env).map_err(|m| err(t_line, field, &m))?;
+        if !z.re.is_finite() || !z.im.is_finite() {
+            return Err(err(t_line, field, &"the weight is not a finite number"));
+        }
+        if z.im.abs() > 1e-12 * z.re.abs().max(1.0) {
+            return Err(err(t_line, field, &format!("the weight is complex ({} + {}i)", z.re, z.im)));
+        }
+        Ok(Value { float: z.re, exact: e.exact(env) })
+    };
+    let v = one(term.line, &term.field, &term.expr)?;
+    let v = match scale {
+        None => v,
+        Some(s) => {
+            let f = one(s.line, &s.field, &s.expr)?;
+            Value {
+                float: v.float * f.float,
+                exact: match (v.exact, f.exact) {
+                    (Some(a), Some(b)) => Some(a * b),
+                    _ => None,
+                },
+            }
+        }
+    };
+    // the float of an exact weight is its correctly rounded value, as a
+    // built-in's `W::ratio(p, q)` is, not the product of rounded factors
+    Ok(Value { float: v.exact.as_ref().map_or(v.float, Weight::to_f64), exact: v.exact })
+}
+
+/// A scheme's name and description live for the rest of the process (the
+/// scheme traits return `&'static str`); each distinct string is leaked once.
+pub(crate) fn intern(s: &str) -> &'static str {
+    static SEEN: Mutex<Option<HashSet<&'static str>>> = Mutex::new(None);
+    let mut guard = SEEN.lock().unwrap_or_else(|e| e.into_inner());
+    let set = guard.get_or_insert_with(HashSet::new);
+    if let Some(&s) = set.get(s) {
+        return s;
+    }
+    let leaked: &'static str = Box::leak(s.to_string().into_boxed_str());
+    set.insert(leaked);
+    leaked
+}
+
+/// Parse an offset key: `dims` integers separated by commas, each within
+/// ±`MAX_OFFSET`.
+pub(crate) fn offset_key(key: &str, dims: usize) -> Result<Vec<i64>, String> {
+    let what = if dims == 1 { "an integer offset such as \"-1\"" } else { "an offset \"r,s\" such as \"-1,0\"" };
+    let parts: Vec<&str> = key.split(',').map(str::trim).collect();
+    if parts.len() != dims {
+        return Err(format!("'{key}' is not {what}"));
+    }
+    parts
+        .iter()
+        .map(|p| {
+            let v: i64 = p.parse().map_err(|_| format!("'{key}' is not {what}"))?;
+            if v.abs() > MAX_OFFSET {
+                return Err(format!("offset {v} is beyond ±{MAX_OFFSET}: masks are local"));
+            }
+            Ok(v)
+        })
+        .collect()
+}
+
+/// A rule's weighted offsets and its optional common factor.
+pub(crate) type RuleTerms<O> = (Vec<Term<O>>, Option<Term<()>>);
+
+/// The terms of one rule's table: every key an offset (or `scale`, a common
+/// factor, when `allow_scale`), no offset twice.
+pub(crate) fn rule_terms<O: PartialEq + Copy + std::fmt::Debug>(
+    head: &Head,
+    text: &str,
+    section: &str,
+    table: &Section,
+    parse_offset: impl Fn(&str) -> Result<O, String>,
+) -> Result<RuleTerms<O>, String> {
+    let mut terms: Vec<Term<O>> = Vec::new();
+    let mut scale = None;
+    for (key, value) in table.get_ref() {
+        let line = line_of(text, value.span().start);
+        let field = format!("{section}.\"{key}\"");
+        if key == "scale" {
+            let expr = head.expr(value.get_ref(), line, &format!("{section}.scale"))?;
+            scale = Some(Term { offset: (), expr, line, field: format!("{section}.scale") });
+            continue;
+        }
+        let offset = parse_offset(key).map_err(|e| field_error(&head.file, line, &field, e))?;
+        if let Some(t) = terms.iter().find(|t| t.offset == offset) {
+            return Err(field_error(
+                &head.file,
+                line,
+                &field,
+                format!("offset {offset:?} is already given on line {}", t.line),
+            ));
+        }
+        let expr = head.expr(value.get_ref(), line, &field)?;
+        terms.push(Term { offset, expr, line, field });
+    }
+    if terms.is_empty() {
+        return Err(field_error(
+            &head.file,
+            line_of(text, table.span().start),
+            section,
+            "the rule has no weights (keys are offsets)",
+        ));
+    }
+    Ok((terms, scale))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn domain_routing() {
+        assert_eq!(family_of_text("name = \"x\"\ntopology = \"primal-quad\"\n", "f").unwrap(), Family::Mesh);
+        assert_eq!(family_of_text("domain = \"curve\"\n", "f").unwrap(), Family::Curve);
+        assert_eq!(family_of_text("domain = \"lattice\"\n", "f").unwrap(), Family::Lattice);
+        let e = family_of_text("name = \"x\"\ndomain = \"torus\"\n", "f.toml").unwrap_err();
+        assert!(e.starts_with("f.toml line 2, field domain:"), "{e}");
+        // nested tables elsewhere in the file do not hide the key
+        let nested = "domain = \"curve\"\n[params.w]\ndefault = \"1/16\"\n[odd]\n\"0\" = \"-w\"\n";
+        assert_eq!(family_of_text(nested, "f").unwrap(), Family::Curve);
+        // not TOML: the mesh loader reports it with its line
+        assert_eq!(family_of_text("name = = 1", "f").unwrap(), Family::Mesh);
+    }
+
+    #[test]
+    fn offsets() {
+        assert_eq!(offset_key("-1, 2", 2).unwrap(), vec![-1, 2]);
+        assert_eq!(offset_key("3", 1).unwrap(), vec![3]);
+        assert!(offset_key("1", 2).unwrap_err().contains("not an offset"));
+        assert!(offset_key("x", 1).unwrap_err().contains("not an integer offset"));
+        assert!(offset_key("99", 1).unwrap_err().contains("beyond"));
+    }
+}
