@@ -30,12 +30,7 @@ pub use crate::sdc::params;
 pub use crate::sdc::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeInfo, SchemeWeight};
 
 /// Every built-in scheme: name, description and parameter specification.
-pub struct SchemeEntry {
-    pub name: &'static str,
-    pub description: &'static str,
-    pub params: fn() -> Vec<ParamSpec>,
-    pub build: fn(Params) -> Box<dyn Scheme>,
-}
+pub type SchemeEntry = registry::BuiltinEntry<dyn Scheme>;
 
 /// The built-in mesh schemes (the mesh family of `registry::entries`).
 pub fn registry() -> Vec<SchemeEntry> {

@@ -19,21 +19,20 @@ use crate::curves::CurveScheme;
 use crate::lattice::LatticeScheme;
 use crate::schemes::curves;
 
-/// A built-in regular-lattice scheme.
-pub struct LatticeEntry {
+/// A built-in scheme of one family: name, description, parameter
+/// specification and constructor; `S` is the family's scheme trait.
+pub struct BuiltinEntry<S: ?Sized> {
     pub name: &'static str,
     pub description: &'static str,
     pub params: fn() -> Vec<ParamSpec>,
-    pub build: fn(Params) -> Box<dyn LatticeScheme>,
+    pub build: fn(Params) -> Box<S>,
 }
 
+/// A built-in regular-lattice scheme.
+pub type LatticeEntry = BuiltinEntry<dyn LatticeScheme>;
+
 /// A built-in curve scheme.
-pub struct CurveEntry {
-    pub name: &'static str,
-    pub description: &'static str,
-    pub params: fn() -> Vec<ParamSpec>,
-    pub build: fn(Params) -> Box<dyn CurveScheme>,
-}
+pub type CurveEntry = BuiltinEntry<dyn CurveScheme>;
 
 /// The domain a scheme lives on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
