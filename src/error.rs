@@ -13,6 +13,13 @@ use crate::mesh::polymesh::MeshError;
 pub enum Error {
     /// A message from a stage that does not yet have a typed error.
     Message(String),
+    /// The caller asked for something out of range or unknown: a valence
+    /// below 3 or too large, an unknown scheme, parameter or option value,
+    /// a parameter outside its admissible range, NaN.
+    Input(String),
+    /// A file (mesh, scheme or claim file) that cannot be read or parsed;
+    /// the message names the file and, where known, the line.
+    File(String),
     /// An input mesh is malformed (bad index, degenerate face, non-manifold edge).
     Mesh(MeshError),
     /// A point the computation needs is not determined by the control points
@@ -28,7 +35,7 @@ pub type Result<T> = std::result::Result<T, Error>;
 impl std::fmt::Display for Error {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            Error::Message(m) | Error::NotDetermined(m) => f.write_str(m),
+            Error::Message(m) | Error::Input(m) | Error::File(m) | Error::NotDetermined(m) => f.write_str(m),
             Error::Mesh(e) => write!(f, "{e}"),
             Error::Write { path, reason } => write!(f, "cannot write {path}: {reason}"),
         }

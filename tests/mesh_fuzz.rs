@@ -153,10 +153,12 @@ fn invalid_utf8_and_oversized_files_are_refused() {
     let bad = dir.path().join("bad.obj");
     std::fs::write(&bad, b"v 0 0 0\nv 1 0 0\nv 0 1 0\n\xff\xfe f 1 2 3\n").unwrap();
     let e = read_obj_file(&bad).unwrap_err();
+    assert!(matches!(e, subdlab::error::Error::File(_)), "a file error, typed as such: {e:?}");
+    let e = e.to_string();
     assert!(e.contains("line 4") && e.contains("UTF-8"), "{e}");
     // a sparse file (no disk used) one byte above the cap
     let big = dir.path().join("big.obj");
     std::fs::File::create(&big).unwrap().set_len(MAX_FILE_BYTES + 1).unwrap();
-    let e = read_obj_file(&big).unwrap_err();
+    let e = read_obj_file(&big).unwrap_err().to_string();
     assert!(e.contains("larger than the supported"), "{e}");
 }

@@ -284,7 +284,7 @@ fn malformed_obj_gives_one_line_errors_naming_the_line() {
         (tet.to_string(), "", "no faces"),
     ];
     for (text, line, what) in cases {
-        let err = parse_obj(&text).expect_err(&format!("should fail: {text:?}"));
+        let err = parse_obj(&text).expect_err(&format!("should fail: {text:?}")).to_string();
         assert!(!err.contains('\n'), "one line: {err:?}");
         assert!(err.contains(line) && err.contains(what), "{text:?}: got {err:?}, want '{line}' and '{what}'");
     }
@@ -297,7 +297,7 @@ fn a_vertex_shared_by_two_closed_surfaces_is_rejected() {
     let mut text = String::from("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv -1 0 0\nv 0 -1 0\nv 0 0 -1\n");
     text += "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n";
     text += "f 1 6 5\nf 1 5 7\nf 5 6 7\nf 6 1 7\n";
-    let err = parse_obj(&text).unwrap_err();
+    let err = parse_obj(&text).unwrap_err().to_string();
     assert!(err.contains("line 1") && err.contains("vertex 1") && err.contains("non-manifold"), "{err}");
 }
 
@@ -306,9 +306,9 @@ fn invalid_utf8_and_missing_files_are_reported() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("bad.obj");
     std::fs::write(&path, b"v 0 0 0\nv 1 0 \xff 0\n").unwrap();
-    let err = read_obj_file(&path).unwrap_err();
+    let err = read_obj_file(&path).unwrap_err().to_string();
     assert!(err.contains("line 2") && err.contains("UTF-8"), "{err}");
-    let err = read_obj_file(&dir.path().join("missing.obj")).unwrap_err();
+    let err = read_obj_file(&dir.path().join("missing.obj")).unwrap_err().to_string();
     assert!(err.contains("cannot read"), "{err}");
 }
 
@@ -401,12 +401,12 @@ fn cli_refine_errors_are_one_line_and_leave_no_output() {
 fn size_caps_are_enforced_with_the_offending_line() {
     use subdlab::mesh::obj::{MAX_CORNERS, MAX_FACES, MAX_VERTICES};
     let text = "v 0 0 0\n".repeat(MAX_VERTICES + 1);
-    let err = parse_obj(&text).unwrap_err();
+    let err = parse_obj(&text).unwrap_err().to_string();
     assert!(err.contains(&format!("line {}", MAX_VERTICES + 1)) && err.contains("maximum"), "{err}");
     let text = format!("v 0 0 0\nv 1 0 0\nv 0 1 0\n{}", "f 1 2 3\n".repeat(MAX_FACES + 1));
-    let err = parse_obj(&text).unwrap_err();
+    let err = parse_obj(&text).unwrap_err().to_string();
     assert!(err.contains(&format!("line {}", MAX_FACES + 4)) && err.contains("maximum"), "{err}");
     let text = format!("v 0 0 0\nf{}\n", " 1".repeat(MAX_CORNERS + 1));
-    let err = parse_obj(&text).unwrap_err();
+    let err = parse_obj(&text).unwrap_err().to_string();
     assert!(err.contains("line 2") && err.contains("corners"), "{err}");
 }

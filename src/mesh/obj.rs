@@ -17,6 +17,8 @@ use std::collections::HashMap;
 use std::io::Read;
 use std::path::Path;
 
+use crate::error::Error;
+
 use super::PolyMesh;
 
 /// Largest OBJ file read, in bytes (the file is read whole, so this bounds memory).
@@ -31,8 +33,13 @@ pub const MAX_CORNERS: usize = 8_000_000;
 /// A mesh read from OBJ: connectivity and one position per vertex.
 pub type ObjMesh = (PolyMesh, Vec<[f64; 3]>);
 
-/// Read an OBJ file from disk; errors name the file and, where it applies, the line.
-pub fn read_obj_file(path: &Path) -> Result<ObjMesh, String> {
+/// Read an OBJ file from disk; errors (`Error::File`) name the file and,
+/// where it applies, the line.
+pub fn read_obj_file(path: &Path) -> Result<ObjMesh, Error> {
+    read_file(path).map_err(Error::File)
+}
+
+fn read_file(path: &Path) -> Result<ObjMesh, String> {
     let file = std::fs::File::open(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
     let too_large = || format!("{}: file is larger than the supported {} bytes", path.display(), MAX_FILE_BYTES);
     // a regular file says its size up front: refuse it before reading anything
@@ -53,11 +60,16 @@ pub fn read_obj_file(path: &Path) -> Result<ObjMesh, String> {
         let line = 1 + e.as_bytes()[..e.utf8_error().valid_up_to()].iter().filter(|&&b| b == b'\n').count();
         format!("{}: line {line}: not valid UTF-8 text", path.display())
     })?;
-    parse_obj(&text).map_err(|e| format!("{}: {e}", path.display()))
+    parse_text(&text).map_err(|e| format!("{}: {e}", path.display()))
 }
 
-/// Parse OBJ text. Errors are one line and start with `line N:` when a line is to blame.
-pub fn parse_obj(text: &str) -> Result<ObjMesh, String> {
+/// Parse OBJ text. Errors (`Error::File`) are one line and start with
+/// `line N:` when a line is to blame.
+pub fn parse_obj(text: &str) -> Result<ObjMesh, Error> {
+    parse_text(text).map_err(Error::File)
+}
+
+fn parse_text(text: &str) -> Result<ObjMesh, String> {
     let mut points: Vec<[f64; 3]> = Vec::new();
     let mut vertex_line: Vec<usize> = Vec::new();
     let mut faces: Vec<Vec<usize>> = Vec::new();

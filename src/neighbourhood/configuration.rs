@@ -1,5 +1,6 @@
 //! A configuration: what sits around the centre (valence, face types, centre kind).
 
+use crate::error::Error;
 use crate::mesh::SectorKind;
 use crate::sdc::{CentreKind, Scheme};
 
@@ -84,12 +85,12 @@ impl Configuration {
     }
 }
 
-pub fn check_valence(n: usize) -> Result<(), String> {
+pub fn check_valence(n: usize) -> Result<(), Error> {
     if n < 3 {
-        return Err(format!("valence {n} is below 3; extraordinary points have valence 3 or more"));
+        return Err(Error::Input(format!("valence {n} is below 3; extraordinary points have valence 3 or more")));
     }
     if n > MAX_VALENCE {
-        return Err(format!("valence {n} is above the supported maximum {MAX_VALENCE}"));
+        return Err(Error::Input(format!("valence {n} is above the supported maximum {MAX_VALENCE}")));
     }
     Ok(())
 }

@@ -12,6 +12,8 @@
 
 use std::path::Path;
 
+use crate::error::Error;
+
 use super::files;
 use super::{catmull_clark, doo_sabin, four_three, khan_mustafa, loop_subdivision, non_box, pgs, polar_bi2, tps};
 use super::{unified_sqrt3, ParamSpec, Params, Scheme, SchemeEntry};
@@ -93,7 +95,7 @@ impl Entry {
         }
     }
     /// The scheme with `name=value` parameter overrides.
-    pub fn build(&self, overrides: &[(String, String)]) -> Result<Built, String> {
+    pub fn build(&self, overrides: &[(String, String)]) -> Result<Built, Error> {
         let params = Params::resolve(self.name(), &self.params(), overrides)?;
         Ok(match self {
             Entry::Mesh(e) => Built::Mesh((e.build)(params)),
@@ -169,32 +171,35 @@ pub fn is_file_argument(name_or_path: &str) -> bool {
 
 /// The family of a name or scheme file, without building the scheme (a file
 /// is only read as far as its `domain` key). `Err` for an unknown name.
-pub fn family_of(name_or_path: &str) -> Result<Family, String> {
+pub fn family_of(name_or_path: &str) -> Result<Family, Error> {
     if is_file_argument(name_or_path) {
-        return files::family(Path::new(name_or_path));
+        return files::family(Path::new(name_or_path)).map_err(Error::File);
     }
     find(name_or_path).map(|e| e.family()).ok_or_else(|| unknown(name_or_path))
 }
 
-fn unknown(name: &str) -> String {
-    format!("unknown scheme '{name}'; known schemes: {}", known_names().join(", "))
+fn unknown(name: &str) -> Error {
+    Error::Input(format!("unknown scheme '{name}'; known schemes: {}", known_names().join(", ")))
 }
 
 /// Build a scheme of any family from a built-in name or a scheme file, with
 /// `name=value` parameter overrides. The one entry point for arguments that
 /// name a scheme.
-pub fn resolve(name_or_path: &str, overrides: &[(String, String)]) -> Result<Built, String> {
+pub fn resolve(name_or_path: &str, overrides: &[(String, String)]) -> Result<Built, Error> {
     if is_file_argument(name_or_path) {
-        return files::load(Path::new(name_or_path), overrides);
+        return Ok(files::load(Path::new(name_or_path), overrides)?);
     }
     find(name_or_path).ok_or_else(|| unknown(name_or_path))?.build(overrides)
 }
 
 /// A regular-lattice scheme from a built-in name or a `domain = "lattice"`
 /// file; `Err` for a scheme of another family.
-pub fn lattice(name_or_path: &str, overrides: &[(String, String)]) -> Result<Box<dyn LatticeScheme>, String> {
+pub fn lattice(name_or_path: &str, overrides: &[(String, String)]) -> Result<Box<dyn LatticeScheme>, Error> {
     match resolve(name_or_path, overrides)? {
         Built::Lattice(l) => Ok(l),
-        other => Err(format!("'{name_or_path}' is a {} scheme, not a regular-lattice scheme", other.family().name())),
+        other => Err(Error::Input(format!(
+            "'{name_or_path}' is a {} scheme, not a regular-lattice scheme",
+            other.family().name()
+        ))),
     }
 }

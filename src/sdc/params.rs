@@ -1,6 +1,7 @@
 //! Scheme parameters: specification (name, default, admissible range) and the
 //! resolved values a scheme instance runs with.
 
+use crate::error::Error;
 use crate::numeric::ParamValue;
 use serde::Serialize;
 
@@ -36,26 +37,27 @@ impl Params {
     /// Defaults first, then the overrides. A spec whose default is empty has no
     /// single default value (the scheme applies its own rule, e.g. a formula in
     /// the valence) and is present only when given.
-    pub fn resolve(scheme: &str, specs: &[ParamSpec], overrides: &[(String, String)]) -> Result<Params, String> {
+    pub fn resolve(scheme: &str, specs: &[ParamSpec], overrides: &[(String, String)]) -> Result<Params, Error> {
         let mut values = Vec::new();
         for spec in specs.iter().filter(|s| !s.default.is_empty()) {
-            values.push((spec.name.to_string(), ParamValue::parse(spec.default)?));
+            // a default is part of the program: failing to parse it is a bug, not an input error
+            values.push((spec.name.to_string(), ParamValue::parse(spec.default).map_err(Error::Message)?));
         }
         for (name, text) in overrides {
             let Some(spec) = specs.iter().find(|s| s.name == name) else {
                 let known: Vec<_> = specs.iter().map(|s| s.name).collect();
-                return Err(if known.is_empty() {
+                return Err(Error::Input(if known.is_empty() {
                     format!("scheme '{scheme}' has no parameters (got '{name}')")
                 } else {
                     format!("scheme '{scheme}' has no parameter '{name}'; its parameters: {}", known.join(", "))
-                });
+                }));
             };
-            let v = ParamValue::parse(text).map_err(|e| format!("parameter {name}: {e}"))?;
+            let v = ParamValue::parse(text).map_err(|e| Error::Input(format!("parameter {name}: {e}")))?;
             if v.value < spec.min || v.value > spec.max {
-                return Err(format!(
+                return Err(Error::Input(format!(
                     "parameter {name}={text} is out of range [{}, {}] for scheme '{scheme}'",
                     spec.min, spec.max
-                ));
+                )));
             }
             values.retain(|(n, _)| n != name);
             values.push((name.clone(), v));
@@ -85,9 +87,11 @@ mod tests {
 
     #[test]
     fn out_of_range_nan_and_unknown_are_errors() {
-        assert!(Params::resolve("s", &spec(), &o("a", "0.8")).unwrap_err().contains("out of range"));
-        assert!(Params::resolve("s", &spec(), &o("a", "-1e-9")).unwrap_err().contains("out of range"));
-        assert!(Params::resolve("s", &spec(), &o("a", "NaN")).unwrap_err().contains("not a finite number"));
-        assert!(Params::resolve("s", &spec(), &o("b", "1")).unwrap_err().contains("no parameter 'b'"));
+        assert!(Params::resolve("s", &spec(), &o("a", "0.8")).unwrap_err().to_string().contains("out of range"));
+        assert!(Params::resolve("s", &spec(), &o("a", "-1e-9")).unwrap_err().to_string().contains("out of range"));
+        assert!(Params::resolve("s", &spec(), &o("a", "NaN")).unwrap_err().to_string().contains("not a finite number"));
+        assert!(Params::resolve("s", &spec(), &o("b", "1")).unwrap_err().to_string().contains("no parameter 'b'"));
+        // user input, typed as such (the CLI's exit status depends on it)
+        assert!(matches!(Params::resolve("s", &spec(), &o("a", "0.8")), Err(Error::Input(_))));
     }
 }
