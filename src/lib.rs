@@ -21,6 +21,7 @@ pub mod plot;
 pub mod refine;
 pub mod report;
 pub mod schemes;
+pub mod sdc;
 pub mod spectrum;
 pub mod sweep;
 pub mod topology;
