@@ -323,7 +323,10 @@ const FCV: &[RuleSlots] = &[
         "edge",
         E,
         Fixed(4),
-        &[fam("ends", Arity::Fixed(2), "the edge's two ends"), fam("fcv", Arity::Fixed(2), "the FCVs of its two faces")],
+        &[
+            fam("ends", Arity::Fixed(2), "the edge's two ends"),
+            fam("fcv", Arity::Fixed(2), "the FCVs of its two faces"),
+        ],
         "the new edge point",
     ),
     rule(
@@ -878,7 +881,8 @@ fn primal_edge(mesh: &PolyMesh, a: VertexId, b: VertexId, size: usize, wants: &d
         p.put("opposite", 1, r[2]);
         if wants.family("edge", "wing") {
             // left (a, b, c), right (b, a, d): across b-c, c-a, a-d, d-b
-            let wings = [across(mesh, b, l[2])?, across(mesh, l[2], a)?, across(mesh, a, r[2])?, across(mesh, r[2], b)?];
+            let wings =
+                [across(mesh, b, l[2])?, across(mesh, l[2], a)?, across(mesh, a, r[2])?, across(mesh, r[2], b)?];
             wings.iter().enumerate().for_each(|(j, &v)| p.put("wing", j, v));
         }
     }

@@ -173,7 +173,9 @@ fn j_pointer(spec: &HostSpec) -> &'static str {
         Host::PrimalQuad | Host::PrimalTriangle => {
             "; weights that depend on j belong in [edge-extraordinary], where j = 0 is the edge's other end"
         }
-        Host::MixedQuadTriangle => "; weights that depend on j belong in [edge-eon], where j = 0 is the edge's other end",
+        Host::MixedQuadTriangle => {
+            "; weights that depend on j belong in [edge-eon], where j = 0 is the edge's other end"
+        }
         Host::Fcv | Host::Dual | Host::Sqrt3 | Host::Ternary | Host::AugmentedDual | Host::Polar => "",
     }
 }
@@ -351,10 +353,18 @@ impl UserSchemeDef {
                 let k = *b.get_ref();
                 let ev = spec.rules.iter().find(|r| r.canonical_j && r.optional && r.origin == super::OriginKind::Edge);
                 let Some(ev) = ev else {
-                    return Err(err(line, "blend-levels", &format!("topology {} has no extraordinary edge rule to blend", spec.name)));
+                    return Err(err(
+                        line,
+                        "blend-levels",
+                        &format!("topology {} has no extraordinary edge rule to blend", spec.name),
+                    ));
                 };
                 if !rules.iter().any(|r| r.spec.name == ev.name) {
-                    return Err(err(line, "blend-levels", &format!("blends the [{}] rule, which the file does not give", ev.name)));
+                    return Err(err(
+                        line,
+                        "blend-levels",
+                        &format!("blends the [{}] rule, which the file does not give", ev.name),
+                    ));
                 }
                 if !(1..=MAX_BLEND_LEVELS).contains(&k) {
                     return Err(err(line, "blend-levels", &format!("{k} is not in 1..{MAX_BLEND_LEVELS}")));
