@@ -219,7 +219,9 @@ fn four_three_centre_weight_as_a_file_parameter() {
 #[test]
 fn a_file_with_one_wrong_weight_differs_from_the_built_in() {
     type Edit = (&'static str, &'static str);
-    let cases: [(&str, &str, &[Edit], usize, Option<&str>); 5] = [
+    /// file, built-in, edits, valence, face sequence
+    type Case = (&'static str, &'static str, &'static [Edit], usize, Option<&'static str>);
+    let cases: [Case; 5] = [
         // Σ_j cos(2πj/n) = 0: still affine, but no longer Doo–Sabin
         ("schemes/doo-sabin.toml", "doo-sabin", &[("/4 + (3 + 2 cos", "/4 + (3 + 3 cos")], 5, None),
         (

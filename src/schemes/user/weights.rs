@@ -33,14 +33,16 @@ pub(super) fn eval_f64(expr: &Expr, params: &Env, n: i64, j: i64) -> Result<f64,
     Ok(z.re)
 }
 
+/// (field, n, j, float) -> the weight.
+type Cache = HashMap<(usize, i64, i64, bool), Result<ParamValue, Inexact>>;
+
 /// The weight fields of a built scheme with their parameter values.
 pub(super) struct WeightTable {
     env: Env,
     exprs: Vec<Expr>,
     /// whether field k's expression uses j (else every j shares one entry)
     uses_j: Vec<bool>,
-    /// (field, n, j, float) -> the weight
-    cache: Mutex<HashMap<(usize, i64, i64, bool), Result<ParamValue, Inexact>>>,
+    cache: Mutex<Cache>,
 }
 
 impl WeightTable {
