@@ -491,6 +491,15 @@ fn errors_in_files_of_the_new_hosts_name_the_line_and_the_field() {
             "line 3, field blend-levels: topology dual has no extraordinary edge rule",
         ),
         (dual.replace("corner = ", "corners = "), "line 4, field corner.corners: unknown field"),
+        // TOML type errors name the field too
+        (
+            dual.replace("topology = \"dual\"", "topology = \"dual\"\nblend-levels = \"a\""),
+            "line 3, field blend-levels: invalid type",
+        ),
+        (
+            dual.replace("[corner]\n", "corner = 3\n[x]\n"),
+            "line 3, field corner: invalid type: integer `3`, expected a map",
+        ),
         (
             std::fs::read_to_string(path("schemes/pgs.toml")).unwrap().replace("[point]", "[pole]"),
             "topology augmented-dual has no pole rule",

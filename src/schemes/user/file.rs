@@ -151,6 +151,24 @@ pub struct UserSchemeDef {
     pub(super) rules: Vec<RuleDef>,
 }
 
+/// The key a TOML error line assigns (`key = ...`), with its table's name
+/// (`params.a.min`), so that type errors name the field too; `None` on a
+/// line without an assignment (a table header, a syntax error).
+fn key_at(text: &str, line: usize) -> Option<String> {
+    let lines: Vec<&str> = text.lines().collect();
+    let (key, _) = lines.get(line.checked_sub(1)?)?.split_once('=')?;
+    let key = key.trim().trim_matches('"');
+    let plain = !key.is_empty() && key.chars().all(|c| c.is_ascii_alphanumeric() || "-_.".contains(c));
+    if !plain {
+        return None;
+    }
+    let table = lines[..line - 1].iter().rev().map(|l| l.trim()).find(|l| l.starts_with('['));
+    Some(match table.map(|t| t.trim_matches(|c| c == '[' || c == ']').trim()) {
+        Some(t) => format!("{t}.{key}"),
+        None => key.to_string(),
+    })
+}
+
 fn line_of(text: &str, offset: usize) -> usize {
     text.as_bytes()[..offset.min(text.len())].iter().filter(|&&b| b == b'\n').count() + 1
 }
@@ -206,7 +224,13 @@ impl UserSchemeDef {
         let doc: FileDoc = toml::from_str(text).map_err(|e| {
             let msg = e.message().trim().replace('\n', "; ");
             match e.span() {
-                Some(span) => format!("{file} line {}: {msg}", line_of(text, span.start)),
+                Some(span) => {
+                    let line = line_of(text, span.start);
+                    match key_at(text, line) {
+                        Some(key) => format!("{file} line {line}, field {key}: {msg}"),
+                        None => format!("{file} line {line}: {msg}"),
+                    }
+                }
                 None => format!("{file}: {msg}"),
             }
         })?;
