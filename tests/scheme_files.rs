@@ -361,6 +361,30 @@ fn files_refine_meshes_as_the_built_ins_do() {
     }
 }
 
+/// Lin–Luo's non-uniform scheme: α per vertex (the vertex rule at v takes
+/// α_v, corner P of the face rule α_P; eq. 7 refines α by the mean over a
+/// new face vertex's corners). The file and the built-in refine alike.
+#[test]
+fn unified_sqrt3_file_takes_alpha_per_vertex() {
+    let (file, built) = (file_scheme("schemes/unified-sqrt3.toml", &[]), builtin("unified-sqrt3", &[]));
+    assert_eq!(file.vertex_param(), Some("alpha"));
+    for mesh in ["octahedron", "mixed-triangles"] {
+        let (mut m, p) = load_mesh(mesh);
+        // α between 0 and 1, different at every vertex
+        m.vertex_params = Some((0..m.num_vertices()).map(|v| (v as f64 * 0.37).fract()).collect());
+        let (mf, pf) = refine_mesh(file.as_ref(), &m, &p, 2).unwrap();
+        let (mb, pb) = refine_mesh(built.as_ref(), &m, &p, 2).unwrap();
+        assert_eq!(mf.faces(), mb.faces());
+        assert_eq!(mf.vertex_params, mb.vertex_params, "{mesh}: refined alpha");
+        for (x, y) in pf.iter().zip(&pb) {
+            assert!((0..3).all(|k| (x[k] - y[k]).abs() < 1e-12), "{mesh}: {x:?} vs {y:?}");
+        }
+        // and α per vertex matters: the uniform default gives other points
+        let (_, uniform) = refine_mesh(file.as_ref(), &load_mesh(mesh).0, &p, 2).unwrap();
+        assert!(uniform.iter().zip(&pf).any(|(x, y)| (0..3).any(|k| (x[k] - y[k]).abs() > 1e-6)));
+    }
+}
+
 /// The butterfly scheme (Dyn, Levin, Gregory) as a file on the primal
 /// triangle host with its 2-ring `wing` slots: old vertices stay, the new
 /// point on edge a-b is 1/2 (a + b) + 1/8 (c + d) − 1/16 (the four wings).
@@ -491,6 +515,16 @@ fn errors_in_files_of_the_new_hosts_name_the_line_and_the_field() {
             "line 3, field blend-levels: topology dual has no extraordinary edge rule",
         ),
         (dual.replace("corner = ", "corners = "), "line 4, field corner.corners: unknown field"),
+        (
+            dual.replace("topology = \"dual\"", "topology = \"dual\"\nvertex-param = \"a\""),
+            "line 3, field vertex-param: topology dual has no per-vertex parameters",
+        ),
+        (
+            std::fs::read_to_string(path("schemes/unified-sqrt3.toml"))
+                .unwrap()
+                .replace("vertex-param = \"alpha\"", "vertex-param = \"beta\""),
+            "field vertex-param: 'beta' is not a parameter of the file",
+        ),
         // TOML type errors name the field too
         (
             dual.replace("topology = \"dual\"", "topology = \"dual\"\nblend-levels = \"a\""),

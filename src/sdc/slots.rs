@@ -583,6 +583,10 @@ pub struct Slot {
     pub j: usize,
     /// the valence (or face size) the slot's weight is evaluated at
     pub n: usize,
+    /// the vertex concerned (whose valence n is, and whose per-vertex
+    /// parameters the weight takes): the centre of a vertex rule, the corner
+    /// P of a sqrt(3) face rule; `None` for edge, face and corner rules
+    pub at: Option<VertexId>,
     pub target: Target,
 }
 
@@ -591,22 +595,29 @@ pub struct Slot {
 pub struct Part {
     pub rule: &'static str,
     pub n: usize,
+    /// the vertex concerned, for the slots put from now on (see `Slot::at`)
+    pub at: Option<VertexId>,
     pub scale: (i64, i64),
     pub slots: Vec<Slot>,
 }
 
 impl Part {
     fn new(rule: &'static str, n: usize) -> Self {
-        Part { rule, n, scale: (1, 1), slots: Vec::new() }
+        Part { rule, n, at: None, scale: (1, 1), slots: Vec::new() }
+    }
+    /// A rule about vertex `v` (of valence n).
+    fn around(rule: &'static str, n: usize, v: VertexId) -> Self {
+        Part { at: Some(v), ..Part::new(rule, n) }
     }
     fn put(&mut self, family: &'static str, j: usize, v: VertexId) {
-        self.slots.push(Slot { family, j, n: self.n, target: Target::Vertex(v) });
+        self.slots.push(Slot { family, j, n: self.n, at: self.at, target: Target::Vertex(v) });
     }
-    fn put_at(&mut self, family: &'static str, j: usize, n: usize, v: VertexId) {
-        self.slots.push(Slot { family, j, n, target: Target::Vertex(v) });
+    /// A slot of the neighbourhood of vertex `at` (valence n) inside a larger rule.
+    fn put_around(&mut self, family: &'static str, j: usize, n: usize, at: VertexId, v: VertexId) {
+        self.slots.push(Slot { family, j, n, at: Some(at), target: Target::Vertex(v) });
     }
     fn put_target(&mut self, family: &'static str, target: Target) {
-        self.slots.push(Slot { family, j: 0, n: self.n, target });
+        self.slots.push(Slot { family, j: 0, n: self.n, at: self.at, target });
     }
     fn scaled(mut self, num: i64, den: i64) -> Self {
         self.scale = (num, den);
@@ -756,7 +767,7 @@ pub fn gather(host: Host, mesh: &PolyMesh, origin: Origin, wants: &dyn Wants) ->
         Host::Polar => match origin {
             Origin::Vertex(p) => {
                 let fan = uniform_fan(mesh, p, 3)?;
-                let mut part = Part::new("pole", fan.len());
+                let mut part = Part::around("pole", fan.len(), p);
                 part.put("centre", 0, p);
                 fan.iter().enumerate().for_each(|(j, t)| part.put("ring", j, t[1]));
                 Ok(Gathered::one(part))
@@ -767,7 +778,7 @@ pub fn gather(host: Host, mesh: &PolyMesh, origin: Origin, wants: &dyn Wants) ->
                     let ring: Vec<VertexId> = fan.iter().map(|t| t[1]).collect();
                     let n = ring.len();
                     let i = ring.iter().position(|&a| a == y).ok_or(GatherError::NotCovered)?;
-                    let mut part = Part::new("spoke", n);
+                    let mut part = Part::around("spoke", n, x);
                     part.put("pole", 0, x);
                     (0..n).for_each(|j| part.put("ring", j, ring[(i + j) % n]));
                     Ok(Gathered::one(part))
@@ -792,7 +803,7 @@ fn vertex_fan_part(rule: &'static str, mesh: &PolyMesh, v: VertexId, size: Optio
         Some(s) => uniform_fan(mesh, v, s)?,
         None => fan(mesh, v)?,
     };
-    let mut p = Part::new(rule, fan.len());
+    let mut p = Part::around(rule, fan.len(), v);
     p.put("centre", 0, v);
     for (j, face) in fan.iter().enumerate() {
         p.put("edge", j, face[1]);
@@ -846,7 +857,7 @@ fn ev_part(
     };
     let n = fan.len();
     let start = fan.iter().position(|f| f[1] == other).ok_or(GatherError::NotCovered)?;
-    let mut p = Part::new(rule, n);
+    let mut p = Part::around(rule, n, v);
     p.put("centre", 0, v);
     for j in 0..n {
         let face = &fan[(start + j) % n];
@@ -914,7 +925,7 @@ fn mixed_vertex(mesh: &PolyMesh, v: VertexId) -> Result<Part, GatherError> {
         NodeType::RegularQuad => vertex_fan_part("vertex-quad", mesh, v, Some(4))?,
         NodeType::RegularTri => vertex_fan_part("vertex-triangle", mesh, v, Some(3))?,
         NodeType::Transition { k } => {
-            let mut p = Part::new("vertex-transition", 5);
+            let mut p = Part::around("vertex-transition", 5, v);
             p.put("centre", 0, v);
             p.put("between", 0, u(k + 1));
             p.put("boundary", 0, u(k));
@@ -924,7 +935,7 @@ fn mixed_vertex(mesh: &PolyMesh, v: VertexId) -> Result<Part, GatherError> {
             p
         }
         NodeType::Eon => {
-            let mut p = Part::new("vertex-eon", n);
+            let mut p = Part::around("vertex-eon", n, v);
             p.put("centre", 0, v);
             (0..n).for_each(|j| p.put("edge", j, u(j)));
             p
@@ -986,7 +997,7 @@ fn fcv(mesh: &PolyMesh, origin: Origin) -> Result<Part, GatherError> {
     match origin {
         Origin::Vertex(v) => {
             let fan = fan(mesh, v)?;
-            let mut p = Part::new("vertex", fan.len());
+            let mut p = Part::around("vertex", fan.len(), v);
             p.put("centre", 0, v);
             for (j, cyc) in fan.iter().enumerate() {
                 p.put("fcv", j, point(v, cyc[1])?);
@@ -1030,8 +1041,8 @@ fn sqrt3_face(mesh: &PolyMesh, f: FaceId) -> Result<Part, GatherError> {
     for (k, &c) in face.iter().enumerate() {
         let fan = uniform_fan(mesh, c, 3)?;
         let n = fan.len();
-        p.put_at("corner", k, n, c);
-        fan.iter().enumerate().for_each(|(j, t)| p.put_at("ring", j, n, t[1]));
+        p.put_around("corner", k, n, c, c);
+        fan.iter().enumerate().for_each(|(j, t)| p.put_around("ring", j, n, c, t[1]));
     }
     Ok(p)
 }

@@ -28,7 +28,7 @@ const CHECK_N: std::ops::RangeInclusive<i64> = 3..=12;
 /// Names the expression language or the rules reserve.
 const RESERVED: [&str; 11] = ["n", "j", "pi", "i", "cos", "sin", "sqrt", "cbrt", "abs", "kronecker", "sum"];
 /// Top-level keys that are not rule sections.
-const HEADER: [&str; 6] = ["name", "description", "topology", "affine", "blend-levels", "params"];
+const HEADER: [&str; 7] = ["name", "description", "topology", "affine", "blend-levels", "vertex-param", "params"];
 
 type Section = Spanned<BTreeMap<String, Spanned<toml::Value>>>;
 
@@ -42,6 +42,7 @@ struct FileDoc {
     topology: Option<Spanned<String>>,
     affine: Option<bool>,
     blend_levels: Option<Spanned<i64>>,
+    vertex_param: Option<Spanned<String>>,
     params: BTreeMap<String, Spanned<ParamDoc>>,
     sections: Vec<(String, Section)>,
     /// the first key that is neither a header key nor a rule name, and where
@@ -66,6 +67,7 @@ impl<'de> Deserialize<'de> for FileDoc {
                         "topology" => doc.topology = Some(map.next_value()?),
                         "affine" => doc.affine = Some(map.next_value()?),
                         "blend-levels" => doc.blend_levels = Some(map.next_value()?),
+                        "vertex-param" => doc.vertex_param = Some(map.next_value()?),
                         "params" => doc.params = map.next_value()?,
                         _ if all_sections().contains(&key.as_str()) => {
                             let s: Section = map.next_value()?;
@@ -147,6 +149,8 @@ pub struct UserSchemeDef {
     /// refinement steps 1..=k of a real mesh blend the extraordinary edge
     /// rule with the regular one ((σ−1)/σ and 1/σ), as 4-3 subdivision does
     pub blend_levels: Option<usize>,
+    /// a parameter that may vary per vertex (Lin–Luo's α on the sqrt3 host)
+    pub vertex_param: Option<String>,
     pub params: Vec<UserParam>,
     pub(super) rules: Vec<RuleDef>,
 }
@@ -396,8 +400,29 @@ impl UserSchemeDef {
                 Some(k as usize)
             }
         };
+        let vertex_param = match &doc.vertex_param {
+            None => None,
+            Some(v) => {
+                let line = at(v.span());
+                let name = v.get_ref();
+                // only the sqrt(3) host has a rule for the parameter of new
+                // vertices (Lin–Luo eq. 7: the mean of the parents')
+                if host != Host::Sqrt3 {
+                    return Err(err(
+                        line,
+                        "vertex-param",
+                        &format!("topology {} has no per-vertex parameters (sqrt3 has)", spec.name),
+                    ));
+                }
+                if !params.iter().any(|p| &p.name == name) {
+                    return Err(err(line, "vertex-param", &format!("'{name}' is not a parameter of the file")));
+                }
+                Some(name.clone())
+            }
+        };
         let def = UserSchemeDef {
             file: file.to_string(),
+            vertex_param,
             name,
             description,
             host,

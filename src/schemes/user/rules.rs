@@ -24,6 +24,8 @@ struct Shared {
     /// (rule, family) -> field index in `weights`
     fields: HashMap<(&'static str, &'static str), usize>,
     blend_levels: Option<usize>,
+    /// the parameter that may vary per vertex (`PolyMesh::vertex_params`)
+    vertex_param: Option<&'static str>,
 }
 
 /// A user scheme with its parameter values fixed and its weights checked.
@@ -58,6 +60,7 @@ impl UserSchemeDef {
                 weights: WeightTable::new(env, exprs),
                 fields,
                 blend_levels: self.blend_levels,
+                vertex_param: self.vertex_param.as_deref().map(intern),
             }),
             level: None,
         })
@@ -90,15 +93,20 @@ impl Wants for Shared {
 
 impl Shared {
     /// Add `scale` times the weighed slots of `part` to `s`.
-    fn fill<W: Weight>(&self, s: &mut Stencil<W>, part: &Part, scale: &W) -> Result<(), Inexact> {
+    fn fill<W: Weight>(&self, mesh: &PolyMesh, s: &mut Stencil<W>, part: &Part, scale: &W) -> Result<(), Inexact> {
         let scale = scale.clone() * W::ratio(part.scale.0, part.scale.1);
         for slot in &part.slots {
             // the gatherer collects only the families the file weighs
             let k = *self.fields.get(&(part.rule, slot.family)).ok_or(Inexact)?;
-            let w = self.weights.get::<W>(k, slot.n as i64, slot.j as i64)? * scale.clone();
+            // a mesh with per-vertex values: the parameter at the vertex concerned
+            let vertex = match (self.vertex_param, &mesh.vertex_params, slot.at) {
+                (Some(name), Some(values), Some(at)) => Some((name, *values.get(at).ok_or(Inexact)?)),
+                _ => None,
+            };
+            let w = self.weights.get_at::<W>(k, slot.n as i64, slot.j as i64, vertex)? * scale.clone();
             match &slot.target {
                 Target::Vertex(v) => s.add(*v, w),
-                Target::Derived(p) => self.fill(s, p, &w)?,
+                Target::Derived(p) => self.fill(mesh, s, p, &w)?,
             }
         }
         Ok(())
@@ -128,12 +136,12 @@ impl<W: Weight> Rules<W> for UserScheme {
             None => W::one(),
         };
         for part in &g.parts {
-            sh.fill(&mut s, part, &share)?;
+            sh.fill(mesh, &mut s, part, &share)?;
         }
         if let Some(regular) = &g.regular {
             let rest = W::one() - share;
             if !rest.is_zero() {
-                sh.fill(&mut s, regular, &rest)?;
+                sh.fill(mesh, &mut s, regular, &rest)?;
             }
         }
         Ok(Some(s))
@@ -172,6 +180,23 @@ impl Scheme for UserScheme {
             Host::MixedQuadTriangle => Some("a closed mesh of triangles and quads"),
             Host::Sqrt3 => Some("a closed triangle mesh"),
             Host::PrimalTriangle | Host::Fcv | Host::Dual | Host::Ternary | Host::AugmentedDual | Host::Polar => None,
+        }
+    }
+    fn vertex_param(&self) -> Option<&'static str> {
+        self.shared.vertex_param
+    }
+    /// A new vertex's parameter is the mean of its parents' (Lin–Luo eq. 7
+    /// on the sqrt(3) host, the only host with per-vertex parameters): an old
+    /// vertex keeps its own, a face vertex takes the mean of the corners.
+    fn vertex_param_rule(&self, mesh: &PolyMesh, origin: Origin) -> Option<Stencil<f64>> {
+        self.shared.vertex_param?;
+        match origin {
+            Origin::Vertex(v) => Some(Stencil::new().with(v, 1.0)),
+            Origin::Face(f) => {
+                let face = mesh.face(f);
+                Some(face.iter().fold(Stencil::new(), |s, &v| s.with(v, 1.0 / face.len() as f64)))
+            }
+            Origin::Edge(..) | Origin::Corner { .. } => None,
         }
     }
     fn at_level(&self, level: usize) -> Option<Box<dyn Scheme>> {

@@ -33,8 +33,8 @@ pub(super) fn eval_f64(expr: &Expr, params: &Env, n: i64, j: i64) -> Result<f64,
     Ok(z.re)
 }
 
-/// (field, n, j, float) -> the weight.
-type Cache = HashMap<(usize, i64, i64, bool), Result<ParamValue, Inexact>>;
+/// (field, n, j, float, per-vertex parameter value's bits) -> the weight.
+type Cache = HashMap<(usize, i64, i64, bool, Option<u64>), Result<ParamValue, Inexact>>;
 
 /// The weight fields of a built scheme with their parameter values.
 pub(super) struct WeightTable {
@@ -51,18 +51,24 @@ impl WeightTable {
         WeightTable { env, exprs, uses_j, cache: Mutex::new(HashMap::new()) }
     }
 
-    /// The weight of field `k` at valence (or face size) n, index j.
-    pub fn get<W: Weight>(&self, k: usize, n: i64, j: i64) -> Result<W, Inexact> {
+    /// The weight of field `k` at valence (or face size) n, index j; with
+    /// `vertex`, parameter `vertex.0` set to the per-vertex value
+    /// `vertex.1` (Lin–Luo's α at the vertex concerned). Per-vertex values are
+    /// floats read from a file: the exact path cannot take them.
+    pub fn get_at<W: Weight>(&self, k: usize, n: i64, j: i64, vertex: Option<(&str, f64)>) -> Result<W, Inexact> {
         // evaluate only in the arithmetic asked for: exact evaluation of an
         // irrational weight fails, and float stencils must not pay for it
         let float = TypeId::of::<W>() == TypeId::of::<f64>();
+        if vertex.is_some() && !float {
+            return Err(Inexact);
+        }
         let j = if self.uses_j[k] { j } else { 0 };
-        let id = (k, n, j, float);
+        let id = (k, n, j, float, vertex.map(|v| v.1.to_bits()));
         let cached = self.cache.lock().unwrap_or_else(|e| e.into_inner()).get(&id).cloned();
         let value = match cached {
             Some(v) => v,
             None => {
-                let v = self.evaluate(k, n, j, float);
+                let v = self.evaluate(k, n, j, float, vertex);
                 let mut cache = self.cache.lock().unwrap_or_else(|e| e.into_inner());
                 if cache.len() >= CACHE_ENTRIES {
                     cache.clear();
@@ -74,8 +80,18 @@ impl WeightTable {
         W::param(&value?)
     }
 
-    fn evaluate(&self, k: usize, n: i64, j: i64, float: bool) -> Result<ParamValue, Inexact> {
-        let env = with_nj(&self.env, n, j);
+    fn evaluate(
+        &self,
+        k: usize,
+        n: i64,
+        j: i64,
+        float: bool,
+        vertex: Option<(&str, f64)>,
+    ) -> Result<ParamValue, Inexact> {
+        let mut env = with_nj(&self.env, n, j);
+        if let Some((name, value)) = vertex {
+            env.insert(name.to_string(), ParamValue::from_f64(value));
+        }
         // a rational weight is taken exactly in floats too: a zero is then a
         // zero (as with the built-ins' exact cosines), not 6e-17, and the
         // stencil's support is the built-in's
