@@ -214,6 +214,27 @@ fn four_three_centre_weight_as_a_file_parameter() {
     }
 }
 
+/// Rule (4a') at eons: the share t of the quad term as a file parameter,
+/// with the level blending of a real mesh's first steps.
+#[test]
+fn four_three_quad_term_at_eons() {
+    for t in ["1/2", "1"] {
+        let o = [("eon_quad_term", t)];
+        let (file, built) = (file_scheme("schemes/four-three.toml", &o), builtin("four-three", &o));
+        for (n, faces) in [(3, "QQQ"), (4, "QQTT"), (5, "QTQTT"), (5, "QQQQQ"), (7, "QQQTQTT")] {
+            difference(file.as_ref(), built.as_ref(), n, Some(faces)).unwrap_or_else(|e| panic!("t {t}: {e}"));
+        }
+        let (m, p) = load_mesh("house");
+        assert_same_refinement(file.as_ref(), built.as_ref(), &m, &p, 4);
+    }
+    // the per-quad weights must cancel: a fan may have any number of quads
+    let text = std::fs::read_to_string(path("schemes/four-three.toml")).unwrap();
+    let def =
+        UserSchemeDef::parse(&text.replace("-eon_quad_term / (32 n)", "-eon_quad_term / (16 n)"), "x.toml").unwrap(); // t = 0 by default: the weights vanish
+    let e = def.build(&over(&[("eon_quad_term", "1")])).err().unwrap();
+    assert!(e.contains("field vertex-eon: the per-quad weights of the vertex-eon rule sum to"), "{e}");
+}
+
 /// Negative controls: one wrong weight (the file still loads: the weights
 /// still sum to 1) must show up as a different matrix.
 #[test]

@@ -84,6 +84,10 @@ pub enum Arity {
     Fixed(usize),
     /// k slots per index j = 0..n-1 (n the rule's valence or face size)
     PerJ(usize),
+    /// k slots per quad of a vertex's fan (j = the fan face's index): as
+    /// many as the fan has quads, so their weights must sum to 0 per quad
+    /// for the rule to stay affine
+    PerQuad(usize),
 }
 
 impl Arity {
@@ -91,14 +95,14 @@ impl Arity {
     pub fn count(self, n: usize) -> usize {
         match self {
             Arity::Fixed(k) => k,
-            Arity::PerJ(k) => k * n,
+            Arity::PerJ(k) | Arity::PerQuad(k) => k * n,
         }
     }
     /// The indices j a weight is asked for.
     pub fn js(self, n: usize) -> usize {
         match self {
             Arity::Fixed(k) => k,
-            Arity::PerJ(_) => n,
+            Arity::PerJ(_) | Arity::PerQuad(_) => n,
         }
     }
 }
@@ -269,7 +273,28 @@ const MIXED: &[RuleSlots] = &[
         ],
         "a transition vertex: 2 quads then 3 triangles",
     ),
-    rule("vertex-eon", V, Any, TRI_VERTEX, "any other vertex (an eon) of valence n"),
+    rule(
+        "vertex-eon",
+        V,
+        Any,
+        &[
+            fam("centre", ONE, "the vertex v"),
+            fam("edge", PER_J, "e_j, v's j-th neighbour"),
+            Family {
+                name: "quad-opposite",
+                arity: Arity::PerQuad(1),
+                optional: true,
+                doc: "(4a') the corner w_i opposite v in each quad [v, e_i, w_i, e_{i+1}] of the fan",
+            },
+            Family {
+                name: "quad-side",
+                arity: Arity::PerQuad(2),
+                optional: true,
+                doc: "(4a') e_i and e_{i+1} of each quad of the fan",
+            },
+        ],
+        "any other vertex (an eon) of valence n; the quad families are blended in like [edge-eon]",
+    ),
     rule(
         "edge-quad",
         E,
@@ -625,19 +650,25 @@ impl Part {
     }
 }
 
-/// The slots of one origin: the sum of `parts` (usually one; the mean of
-/// the two ends' rules on an edge joining two extraordinary vertices), and,
-/// where `parts` use an extraordinary rule, the regular rule of the same
-/// origin (`regular`), which a mask may blend in (4-3's first steps).
+/// The slots of one origin: the sum of `parts` and `extraordinary`.
+/// `extraordinary` holds the rules of extraordinary vertices that a mask may
+/// blend in over a real mesh's first steps (4-3): an edge at an
+/// extraordinary vertex (the mean of the two ends' rules where both are),
+/// then with `regular`, the regular rule of the same edge that they replace;
+/// 4-3's quad term (4a') at an eon.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Gathered {
     pub parts: Vec<Part>,
+    pub extraordinary: Vec<Part>,
     pub regular: Option<Part>,
 }
 
 impl Gathered {
     fn one(part: Part) -> Self {
-        Gathered { parts: vec![part], regular: None }
+        Gathered { parts: vec![part], extraordinary: Vec::new(), regular: None }
+    }
+    fn replacing(extraordinary: Vec<Part>, regular: Part) -> Self {
+        Gathered { parts: Vec::new(), extraordinary, regular: Some(regular) }
     }
 }
 
@@ -691,7 +722,7 @@ pub fn gather(host: Host, mesh: &PolyMesh, origin: Origin, wants: &dyn Wants) ->
             Origin::Face(_) | Origin::Corner { .. } => unsupported,
         },
         Host::MixedQuadTriangle => match origin {
-            Origin::Vertex(v) => mixed_vertex(mesh, v).map(Gathered::one),
+            Origin::Vertex(v) => mixed_vertex(mesh, v, wants),
             Origin::Edge(a, b) => mixed_edge(mesh, a, b, wants),
             Origin::Face(f) => {
                 if mesh.face(f).len() != 4 {
@@ -911,17 +942,17 @@ fn primal_edge(mesh: &PolyMesh, a: VertexId, b: VertexId, size: usize, wants: &d
             vec![ev_part(EV, mesh, a, b, Some(size))?.scaled(1, 2), ev_part(EV, mesh, b, a, Some(size))?.scaled(1, 2)]
         }
     };
-    Ok(Gathered { parts, regular: Some(p) })
+    Ok(Gathered::replacing(parts, p))
 }
 
-fn mixed_vertex(mesh: &PolyMesh, v: VertexId) -> Result<Part, GatherError> {
+fn mixed_vertex(mesh: &PolyMesh, v: VertexId, wants: &dyn Wants) -> Gather {
     let (fan, t) = classify(mesh, v).ok_or_else(|| match mesh.vertex_fan(v) {
         None => GatherError::Truncated,
         Some(_) => GatherError::NotCovered,
     })?;
     let n = fan.len();
     let u = |i: usize| fan[i % n][1];
-    Ok(match t {
+    Ok(Gathered::one(match t {
         NodeType::RegularQuad => vertex_fan_part("vertex-quad", mesh, v, Some(4))?,
         NodeType::RegularTri => vertex_fan_part("vertex-triangle", mesh, v, Some(3))?,
         NodeType::Transition { k } => {
@@ -938,9 +969,25 @@ fn mixed_vertex(mesh: &PolyMesh, v: VertexId) -> Result<Part, GatherError> {
             let mut p = Part::around("vertex-eon", n, v);
             p.put("centre", 0, v);
             (0..n).for_each(|j| p.put("edge", j, u(j)));
-            p
+            const EON: &str = "vertex-eon";
+            let (opposite, side) = (wants.family(EON, "quad-opposite"), wants.family(EON, "quad-side"));
+            if !opposite && !side {
+                return Ok(Gathered::one(p));
+            }
+            // (4a'): per quad face i = [v, u_i, w_i, u_{i+1}] of the fan
+            let mut quads = Part::around(EON, n, v);
+            for (i, f) in fan.iter().enumerate().filter(|(_, f)| f.len() == 4) {
+                if opposite {
+                    quads.put("quad-opposite", i, f[2]);
+                }
+                if side {
+                    quads.put("quad-side", i, f[1]);
+                    quads.put("quad-side", i, f[3]);
+                }
+            }
+            return Ok(Gathered { parts: vec![p], extraordinary: vec![quads], regular: None });
         }
-    })
+    }))
 }
 
 fn mixed_edge(mesh: &PolyMesh, a: VertexId, b: VertexId, wants: &dyn Wants) -> Gather {
@@ -986,7 +1033,7 @@ fn mixed_edge(mesh: &PolyMesh, a: VertexId, b: VertexId, wants: &dyn Wants) -> G
         .into_iter()
         .map(|(e, other)| ev_part(EON, mesh, e, other, None).map(|p| p.scaled(1, k)))
         .collect::<Result<Vec<_>, _>>()?;
-    Ok(Gathered { parts, regular: Some(regular) })
+    Ok(Gathered::replacing(parts, regular))
 }
 
 fn fcv(mesh: &PolyMesh, origin: Origin) -> Result<Part, GatherError> {

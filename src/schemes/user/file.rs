@@ -357,7 +357,7 @@ impl UserSchemeDef {
                 let has_n = rule.valence == Valence::Any;
                 for var in expr.variables() {
                     let allowed = (var == "n" && has_n)
-                        || (var == "j" && matches!(fs.arity, Arity::PerJ(_)))
+                        || (var == "j" && matches!(fs.arity, Arity::PerJ(_) | Arity::PerQuad(_)))
                         || params.iter().any(|p| p.name == var);
                     if !allowed {
                         let hint = match var.as_str() {
@@ -518,7 +518,8 @@ impl UserSchemeDef {
     pub(super) fn check(&self, params: &Env) -> Result<(), String> {
         for rule in &self.rules {
             for n in check_ns(rule.spec) {
-                let mut sum = 0.0;
+                // per-quad families: their own sum, per quad
+                let (mut sum, mut quad_sum) = (0.0, 0.0);
                 for field in &rule.fields {
                     let js = if field.uses_j { field.arity.js(n as usize) } else { 1 };
                     // j canonical and used: every neighbour has its own weight
@@ -550,7 +551,21 @@ impl UserSchemeDef {
                     if per_j {
                         continue;
                     }
-                    sum += first.unwrap_or(0.0) * field.arity.count(n as usize) as f64;
+                    match field.arity {
+                        Arity::PerQuad(k) => quad_sum += first.unwrap_or(0.0) * k as f64,
+                        Arity::Fixed(_) | Arity::PerJ(_) => {
+                            sum += first.unwrap_or(0.0) * field.arity.count(n as usize) as f64
+                        }
+                    }
+                }
+                if self.affine && quad_sum.abs() > 1e-12 {
+                    let section = rule.spec.name;
+                    return Err(format!(
+                        "{} line {}, field {section}: the per-quad weights of the {section} rule sum to {quad_sum} \
+                         per quad at n = {n}, not 0 (the fan may have any number of quads; set affine = false to \
+                         allow this)",
+                        self.file, rule.line
+                    ));
                 }
                 if self.affine && (sum - 1.0).abs() > 1e-12 {
                     let section = rule.spec.name;

@@ -131,11 +131,14 @@ impl<W: Weight> Rules<W> for UserScheme {
         // creates: the rule does not apply here
         let Ok(g) = gather(sh.host, mesh, origin, sh.as_ref()) else { return Ok(None) };
         let mut s = Stencil::new();
-        let share: W = match &g.regular {
-            Some(_) => self.ev_share(),
-            None => W::one(),
-        };
         for part in &g.parts {
+            sh.fill(mesh, &mut s, part, &W::one())?;
+        }
+        if g.extraordinary.is_empty() {
+            return Ok(Some(s));
+        }
+        let share: W = self.ev_share();
+        for part in &g.extraordinary {
             sh.fill(mesh, &mut s, part, &share)?;
         }
         if let Some(regular) = &g.regular {
