@@ -160,6 +160,39 @@ fn pgs_file_is_the_built_in() {
     same_for_valences_3_to_12("schemes/pgs.toml", "pgs", &[], &RATIONAL_COS);
 }
 
+/// PGS's `mu` and `lambda_sub` (given: they replace μ_n and λ_sub at every
+/// n != 4) as file parameters: the shipped file with the paper's μ_n and
+/// λ_sub replaced by `kronecker(n - 4) μ_4 + (1 - kronecker(n - 4)) mu`
+/// (μ_4 = 2·2/4 = 1, λ_sub at n = 4, c = 0: 1/2 · 1^3).
+#[test]
+fn pgs_parameters_as_file_parameters() {
+    let text = std::fs::read_to_string(path("schemes/pgs.toml")).unwrap();
+    let mu = "(kronecker(n - 3) 3/5 + (1 - kronecker(n - 3)) 2 (n - 2) / n)";
+    let c = "cos(2 pi / n)";
+    let lambda = format!(
+        "(1/2 (1 - {c})^3 + 3 * 5519/10000 (1 - {c})^2 {c} + 3 * 5985/10000 (1 - {c}) {c}^2 + 64367/100000 {c}^3)"
+    );
+    assert_eq!(text.matches(mu).count(), 4);
+    assert_eq!(text.matches(lambda.as_str()).count(), 5);
+    let text = text
+        .replace(mu, "(kronecker(n - 4) + (1 - kronecker(n - 4)) mu)")
+        .replace(&lambda, "(kronecker(n - 4) / 2 + (1 - kronecker(n - 4)) lambda_sub)")
+        .replace(
+            "topology = \"augmented-dual\"\n",
+            "topology = \"augmented-dual\"\n[params.mu]\ndefault = \"3/5\"\n[params.lambda_sub]\ndefault = \"1/2\"\n",
+        );
+    for (mu, lambda) in [("3/5", "1/2"), ("1/2", "3/5"), ("4/5", "11/20")] {
+        let o = [("mu", mu), ("lambda_sub", lambda)];
+        let (file, built) = (text_scheme(&text, &o), builtin("pgs", &o));
+        for n in [3, 4, 5, 6, 8] {
+            let exact = difference(file.as_ref(), built.as_ref(), n, None).unwrap_or_else(|e| panic!("{o:?}: {e}"));
+            if RATIONAL_COS.contains(&n) {
+                assert_eq!(exact, 2, "{o:?} n = {n}");
+            }
+        }
+    }
+}
+
 #[test]
 fn polar_bi2_file_is_the_built_in() {
     for alpha in ["1/4", "1/3"] {
