@@ -647,3 +647,81 @@ fn the_schemes_command_describes_every_shipped_file() {
         assert!(!entry["description"].as_str().unwrap().is_empty());
     }
 }
+
+const SHIPPED: [&str; 7] = [
+    "schemes/doo-sabin.toml",
+    "schemes/sqrt3.toml",
+    "schemes/unified-sqrt3.toml",
+    "schemes/tps.toml",
+    "schemes/pgs.toml",
+    "schemes/polar-bi2.toml",
+    "schemes/four-three.toml",
+];
+
+/// Pieces mutations insert: expression material, TOML syntax, the new
+/// hosts' section and key names.
+const PIECES: [&str; 24] = [
+    "n",
+    "j",
+    "cos(2 pi j / n)",
+    "kronecker(",
+    ")",
+    "(",
+    "-",
+    "/",
+    "1/0",
+    "0",
+    "1e308",
+    "\"",
+    "=",
+    "[",
+    "\n",
+    "[corner]\n",
+    "[point]\n",
+    "[spoke]\n",
+    "[edge-eon]\n",
+    "blend-levels = 2\n",
+    "vertex-param = \"alpha\"\n",
+    "wing = \"1\"\n",
+    "topology = \"dual\"\n",
+    "quad-side = \"j\"\n",
+];
+
+/// Mutated shipped files load or fail with one line, never panic, and a
+/// file that loads also runs (discovery at valence 5).
+#[test]
+fn mutated_files_of_the_new_hosts_never_panic() {
+    let files: Vec<String> = SHIPPED.iter().map(|rel| std::fs::read_to_string(path(rel)).unwrap()).collect();
+    let mut rng = common::Rng(0x2545_F491_4F6C_DD1D);
+    let (mut accepted, mut rejected) = (0, 0);
+    for case in 0..1400 {
+        let mut chars: Vec<char> = files[case % files.len()].chars().collect();
+        for _ in 0..1 + rng.below(3) {
+            let at = rng.below(chars.len() + 1);
+            match rng.below(3) {
+                0 => {
+                    let end = (at + 1 + rng.below(12)).min(chars.len());
+                    chars.drain(at.min(end)..end);
+                }
+                1 => chars.splice(at..at, PIECES[rng.below(PIECES.len())].chars()).for_each(drop),
+                _ => chars.insert(at, char::from_u32(rng.below(0x250) as u32).unwrap_or('?')),
+            }
+        }
+        let text: String = chars.into_iter().collect();
+        let result = std::panic::catch_unwind(|| -> Result<(), String> {
+            let scheme = UserSchemeDef::parse(&text, "x.toml")?.build(&[])?;
+            let config = Configuration::regular(&scheme, 5)?;
+            discover(&scheme, &config).map(|_| ())
+        });
+        match result {
+            Ok(Ok(())) => accepted += 1,
+            Ok(Err(e)) => {
+                assert!(!e.contains('\n') && !e.is_empty(), "case {case}: error not one line: {e:?}\n{text}");
+                rejected += 1;
+            }
+            Err(_) => panic!("case {case} panicked on:\n{text}"),
+        }
+    }
+    // both outcomes must occur, or the test proves little
+    assert!(accepted > 50 && rejected > 300, "accepted {accepted}, rejected {rejected}");
+}
