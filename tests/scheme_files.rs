@@ -725,3 +725,42 @@ fn mutated_files_of_the_new_hosts_never_panic() {
     // both outcomes must occur, or the test proves little
     assert!(accepted > 50 && rejected > 300, "accepted {accepted}, rejected {rejected}");
 }
+
+/// `subdlab refine` with a file writes the built-in's mesh (the first line
+/// names the scheme, the rest must agree).
+#[test]
+fn the_refine_command_takes_the_new_files() {
+    let dir = tempfile::tempdir().unwrap();
+    for (file, name, mesh) in
+        [("doo-sabin", "doo-sabin", "house"), ("tps", "tps", "cube"), ("four-three", "four-three", "house")]
+    {
+        let mut outputs = Vec::new();
+        for scheme in [path(&format!("schemes/{file}.toml")), name.to_string()] {
+            let out = dir.path().join(format!("{}.obj", outputs.len()));
+            let run = subdlab(&[
+                "refine",
+                &path(&format!("meshes/{mesh}.obj")),
+                "--scheme",
+                &scheme,
+                "-l",
+                "2",
+                "-o",
+                out.to_str().unwrap(),
+            ]);
+            assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+            outputs.push(std::fs::read_to_string(&out).unwrap());
+        }
+        let body = |s: &str| s.lines().filter(|l| !l.starts_with('#')).map(String::from).collect::<Vec<_>>();
+        let (a, b) = (body(&outputs[0]), body(&outputs[1]));
+        assert_eq!(a.len(), b.len(), "{file}");
+        for (x, y) in a.iter().zip(&b) {
+            if x.starts_with("v ") {
+                let nums = |l: &str| l[2..].split_whitespace().map(|t| t.parse::<f64>().unwrap()).collect::<Vec<_>>();
+                assert!(nums(x).iter().zip(nums(y)).all(|(p, q)| (p - q).abs() < 1e-9), "{file}: {x} vs {y}");
+            } else {
+                assert_eq!(x, y, "{file}");
+            }
+        }
+        assert!(outputs[0].contains(&format!("{file}-file")));
+    }
+}
