@@ -764,3 +764,61 @@ fn the_refine_command_takes_the_new_files() {
         assert!(outputs[0].contains(&format!("{file}-file")));
     }
 }
+
+/// Every origin each host's topology creates on a closed mesh it refines is
+/// gathered, by a rule the host declares for that origin kind, into slot
+/// families that rule declares (all optional families asked for).
+#[test]
+fn gatherers_cover_every_origin_with_declared_rules_and_families() {
+    use subdlab::refine::mesh::add_face_control_vertices;
+    let (cube, cube_pts) = load_mesh("cube");
+    let net = builtin("doo-sabin", &[]).topology().refine(&cube).unwrap().mesh;
+    let meshes: Vec<(Host, PolyMesh)> = vec![
+        (Host::PrimalQuad, load_mesh("mixed-quads").0),
+        (Host::PrimalTriangle, load_mesh("octahedron").0),
+        (Host::MixedQuadTriangle, load_mesh("house").0),
+        (Host::Fcv, add_face_control_vertices(&cube, &cube_pts, 1.0).unwrap().0),
+        (Host::Dual, load_mesh("house").0),
+        (Host::Sqrt3, load_mesh("mixed-triangles").0),
+        (Host::Ternary, load_mesh("mixed-quads").0),
+        (Host::AugmentedDual, net),
+        (Host::Polar, polar_sphere(5, 3).0),
+    ];
+    for (host, mesh) in meshes {
+        let spec = host.spec();
+        let refined = spec.topology.refine(&mesh).unwrap();
+        for &origin in &refined.vertex_origins {
+            let g = gather(host, &mesh, origin, &All).unwrap_or_else(|e| panic!("{} {origin:?}: {e}", spec.name));
+            let parts = g.parts.iter().chain(&g.extraordinary).chain(&g.regular);
+            let mut stack: Vec<&subdlab::sdc::slots::Part> = parts.collect();
+            assert!(!stack.is_empty());
+            while let Some(part) = stack.pop() {
+                let rule =
+                    spec.rule(part.rule).unwrap_or_else(|| panic!("{}: undeclared rule {}", spec.name, part.rule));
+                // a derived point (PGS) is a face rule inside a corner or face rule
+                if rule.name != "point" {
+                    assert_eq!(rule.origin, OriginKind::of(origin), "{} {}", spec.name, rule.name);
+                }
+                for slot in &part.slots {
+                    assert!(
+                        rule.families.iter().any(|f| f.name == slot.family),
+                        "{} {}.{}",
+                        spec.name,
+                        rule.name,
+                        slot.family
+                    );
+                    if let subdlab::sdc::slots::Target::Derived(p) = &slot.target {
+                        stack.push(p);
+                    }
+                }
+            }
+        }
+        // and the host's declared origin kinds are exactly those it created
+        let mut made: Vec<OriginKind> = refined.vertex_origins.iter().map(|&o| OriginKind::of(o)).collect();
+        made.sort_by_key(|k| *k as usize);
+        made.dedup();
+        let mut declared = spec.origins();
+        declared.sort_by_key(|k| *k as usize);
+        assert_eq!(made, declared, "{}", spec.name);
+    }
+}

@@ -610,7 +610,8 @@ pub struct Slot {
     pub n: usize,
     /// the vertex concerned (whose valence n is, and whose per-vertex
     /// parameters the weight takes): the centre of a vertex rule, the corner
-    /// P of a sqrt(3) face rule; `None` for edge, face and corner rules
+    /// P of a sqrt(3) face rule, the extraordinary end of an edge rule;
+    /// `None` where a rule concerns no single vertex (regular edges, faces)
     pub at: Option<VertexId>,
     pub target: Target,
 }
