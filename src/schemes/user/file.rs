@@ -12,7 +12,7 @@ use toml::Spanned;
 use super::weights::eval_f64;
 use crate::numeric::expr::{Env, Expr};
 use crate::numeric::ParamValue;
-use crate::sdc::slots::{Arity, Host, HostSpec, RuleSlots, Valence, HOSTS};
+use crate::sdc::slots::{Arity, Host, HostSpec, OriginKind, RuleSlots, Valence, HOSTS};
 
 /// Scheme files are a few dozen lines; the caps keep a malformed or hostile
 /// file from costing unbounded time or memory.
@@ -238,46 +238,25 @@ impl UserSchemeDef {
                 None => format!("{file}: {msg}"),
             }
         })?;
-        let at = |span: std::ops::Range<usize>| line_of(text, span.start);
-        let err =
-            |line: usize, field: &str, msg: &dyn std::fmt::Display| format!("{file} line {line}, field {field}: {msg}");
+        let cx = Cx { text, file };
         if let Some(key) = &doc.unknown {
             let mut known: Vec<&str> = HEADER.to_vec();
             known.extend(all_sections());
             return Err(format!(
                 "{file} line {}: unknown field `{}`, expected one of {}",
-                at(key.span()),
+                cx.line(key.span()),
                 key.get_ref(),
                 known.join(", ")
             ));
         }
-
         let Some(doc_name) = &doc.name else { return Err(format!("{file}: missing field `name`")) };
-        let name = doc_name.get_ref().trim().to_string();
-        let name_ok = !name.is_empty()
-            && name.chars().count() <= MAX_NAME_CHARS
-            && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_');
-        if !name_ok {
-            return Err(err(
-                at(doc_name.span()),
-                "name",
-                &format!("'{name}' is not a scheme name (1 to {MAX_NAME_CHARS} letters, digits, '-' or '_')"),
-            ));
-        }
-        // output and claims identify schemes by name: a file must not pass for a built-in
-        if crate::schemes::known_names().contains(&name.as_str()) {
-            return Err(err(
-                at(doc_name.span()),
-                "name",
-                &format!("'{name}' is a built-in scheme; choose another name"),
-            ));
-        }
+        let name = cx.name(doc_name)?;
         let description = match &doc.description {
             Some(d) if d.get_ref().chars().count() > MAX_DESCRIPTION_CHARS => {
-                return Err(err(
-                    at(d.span()),
+                return Err(cx.err(
+                    cx.line(d.span()),
                     "description",
-                    &format!("longer than {MAX_DESCRIPTION_CHARS} characters"),
+                    format!("longer than {MAX_DESCRIPTION_CHARS} characters"),
                 ))
             }
             Some(d) => d.get_ref().replace('\n', " "),
@@ -287,199 +266,28 @@ impl UserSchemeDef {
         let topo_name = doc_topology.get_ref().as_str();
         let Some(host) = Host::by_name(topo_name) else {
             let known: Vec<_> = HOSTS.iter().map(|h| h.spec().name).collect();
-            return Err(err(
-                at(doc_topology.span()),
+            return Err(cx.err(
+                cx.line(doc_topology.span()),
                 "topology",
-                &format!("unknown topology '{topo_name}'; known: {}", known.join(", ")),
+                format!("unknown topology '{topo_name}'; known: {}", known.join(", ")),
             ));
         };
-        let spec = host.spec();
-
-        let params = Self::parse_params(&doc, text, file)?;
-
-        // sections the host does not have
-        for (section, table) in &doc.sections {
-            if spec.rule(section).is_none() {
-                let have: Vec<_> = spec.rules.iter().map(|r| r.name).collect();
-                return Err(err(
-                    at(table.span()),
-                    section,
-                    &format!("topology {} has no {section} rule (its rules: {})", spec.name, have.join(", ")),
-                ));
-            }
-        }
-        let mut rules = Vec::new();
-        for rule in spec.rules {
-            let section = rule.name;
-            let Some((_, table)) = doc.sections.iter().find(|(s, _)| s == section) else {
-                if rule.optional {
-                    continue;
-                }
-                return Err(format!("{file}: missing section [{section}] (topology {})", spec.name));
-            };
-            let section_line = at(table.span());
-            for (key, value) in table.get_ref() {
-                if !rule.families.iter().any(|fs| fs.name == key) {
-                    let known: Vec<_> = rule.families.iter().map(|fs| fs.name).collect();
-                    return Err(err(
-                        at(value.span()),
-                        &format!("{section}.{key}"),
-                        &format!("unknown field; the {section} rule of {} has {}", spec.name, known.join(", ")),
-                    ));
-                }
-            }
-            let mut fields = Vec::new();
-            for fs in rule.families {
-                let key = format!("{section}.{}", fs.name);
-                let Some(value) = table.get_ref().get(fs.name) else {
-                    if fs.optional {
-                        continue;
-                    }
-                    return Err(err(section_line, &key, &"missing (write 0 for a zero weight)"));
-                };
-                let line = at(value.span());
-                let source = match value.get_ref() {
-                    toml::Value::String(s) => s.clone(),
-                    toml::Value::Integer(k) => k.to_string(),
-                    toml::Value::Float(x) => format!("{x}"),
-                    other => {
-                        return Err(err(
-                            line,
-                            &key,
-                            &format!("expected an expression string, got a {}", other.type_str()),
-                        ))
-                    }
-                };
-                if source.chars().count() > MAX_EXPR_CHARS {
-                    return Err(err(line, &key, &format!("expression longer than {MAX_EXPR_CHARS} characters")));
-                }
-                let expr = Expr::parse(&source).map_err(|e| err(line, &key, &e))?;
-                let has_n = rule.valence == Valence::Any;
-                for var in expr.variables() {
-                    let allowed = (var == "n" && has_n)
-                        || (var == "j" && matches!(fs.arity, Arity::PerJ(_) | Arity::PerQuad(_)))
-                        || params.iter().any(|p| p.name == var);
-                    if !allowed {
-                        let hint = match var.as_str() {
-                            "j" if rule.canonical_j => " (j indexes neighbours only in per-neighbour fields)".into(),
-                            "j" => format!(" (j indexes neighbours only in per-neighbour fields{})", j_pointer(spec)),
-                            "n" => format!(" ({section} rules have no valence n)"),
-                            _ => String::new(),
-                        };
-                        return Err(err(line, &key, &format!("unknown variable '{var}'{hint}")));
-                    }
-                }
-                let uses_j = expr.variables().iter().any(|v| v == "j");
-                fields.push(Field { key, family: fs.name, line, expr, arity: fs.arity, uses_j });
-            }
-            rules.push(RuleDef { spec: rule, line: section_line, fields });
-        }
-        let blend_levels = match &doc.blend_levels {
-            None => None,
-            Some(b) => {
-                let line = at(b.span());
-                let k = *b.get_ref();
-                let ev = spec.rules.iter().find(|r| r.canonical_j && r.optional && r.origin == super::OriginKind::Edge);
-                let Some(ev) = ev else {
-                    return Err(err(
-                        line,
-                        "blend-levels",
-                        &format!("topology {} has no extraordinary edge rule to blend", spec.name),
-                    ));
-                };
-                if !rules.iter().any(|r| r.spec.name == ev.name) {
-                    return Err(err(
-                        line,
-                        "blend-levels",
-                        &format!("blends the [{}] rule, which the file does not give", ev.name),
-                    ));
-                }
-                if !(1..=MAX_BLEND_LEVELS).contains(&k) {
-                    return Err(err(line, "blend-levels", &format!("{k} is not in 1..{MAX_BLEND_LEVELS}")));
-                }
-                Some(k as usize)
-            }
-        };
-        let vertex_param = match &doc.vertex_param {
-            None => None,
-            Some(v) => {
-                let line = at(v.span());
-                let name = v.get_ref();
-                // only the sqrt(3) host has a rule for the parameter of new
-                // vertices (Lin–Luo eq. 7: the mean of the parents')
-                if host != Host::Sqrt3 {
-                    return Err(err(
-                        line,
-                        "vertex-param",
-                        &format!("topology {} has no per-vertex parameters (sqrt3 has)", spec.name),
-                    ));
-                }
-                if !params.iter().any(|p| &p.name == name) {
-                    return Err(err(line, "vertex-param", &format!("'{name}' is not a parameter of the file")));
-                }
-                Some(name.clone())
-            }
-        };
+        let params = cx.params(&doc)?;
+        let rules = cx.rules(&doc, host.spec(), &params)?;
         let def = UserSchemeDef {
             file: file.to_string(),
-            vertex_param,
+            blend_levels: cx.blend_levels(&doc, host.spec(), &rules)?,
+            vertex_param: cx.vertex_param(&doc, host, &params)?,
             name,
             description,
             host,
             affine: doc.affine.unwrap_or(true),
-            blend_levels,
             params,
             rules,
         };
         // check the defaults now, so that a file that cannot work fails at load
         def.check(&def.env(&[])?)?;
         Ok(def)
-    }
-
-    fn parse_params(doc: &FileDoc, text: &str, file: &str) -> Result<Vec<UserParam>, String> {
-        let at = |span: std::ops::Range<usize>| line_of(text, span.start);
-        let err =
-            |line: usize, field: &str, msg: &dyn std::fmt::Display| format!("{file} line {line}, field {field}: {msg}");
-        if doc.params.len() > MAX_PARAMS {
-            return Err(format!("{file}: more than {MAX_PARAMS} parameters"));
-        }
-        let mut params = Vec::new();
-        for (pname, p) in &doc.params {
-            let line = at(p.span());
-            let key = format!("params.{pname}");
-            let ident = pname.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
-                && pname.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
-                && pname.len() <= MAX_NAME_CHARS;
-            if !ident {
-                return Err(err(line, &key, &"a parameter name is letters, digits and '_', starting with a letter"));
-            }
-            if RESERVED.contains(&pname.as_str()) {
-                return Err(err(line, &key, &format!("'{pname}' is reserved (n, j, pi, i and function names)")));
-            }
-            let p = p.get_ref();
-            let default =
-                literal(p.default.get_ref()).map_err(|e| err(at(p.default.span()), &format!("{key}.default"), &e))?;
-            let bound = |b: &Option<Spanned<toml::Value>>, which: &str, none: f64| -> Result<f64, String> {
-                match b {
-                    None => Ok(none),
-                    Some(v) => literal(v.get_ref())
-                        .map(|x| x.value)
-                        .map_err(|e| err(at(v.span()), &format!("{key}.{which}"), &e)),
-                }
-            };
-            let (min, max) = (bound(&p.min, "min", f64::NEG_INFINITY)?, bound(&p.max, "max", f64::INFINITY)?);
-            if !(min <= max && default.value >= min && default.value <= max) {
-                return Err(err(line, &key, &format!("default {} is not in [{min}, {max}]", default.text)));
-            }
-            params.push(UserParam {
-                name: pname.clone(),
-                default,
-                min,
-                max,
-                description: p.description.clone().unwrap_or_default(),
-            });
-        }
-        Ok(params)
     }
 
     /// Parameter values: the defaults, then `name=value` overrides.
@@ -578,6 +386,220 @@ impl UserSchemeDef {
             }
         }
         Ok(())
+    }
+}
+
+/// The text being parsed, for line numbers and error messages.
+struct Cx<'a> {
+    text: &'a str,
+    file: &'a str,
+}
+
+impl Cx<'_> {
+    fn line(&self, span: std::ops::Range<usize>) -> usize {
+        line_of(self.text, span.start)
+    }
+
+    fn err(&self, line: usize, field: &str, msg: impl std::fmt::Display) -> String {
+        format!("{} line {line}, field {field}: {msg}", self.file)
+    }
+
+    fn name(&self, doc_name: &Spanned<String>) -> Result<String, String> {
+        let name = doc_name.get_ref().trim().to_string();
+        let name_ok = !name.is_empty()
+            && name.chars().count() <= MAX_NAME_CHARS
+            && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_');
+        if !name_ok {
+            return Err(self.err(
+                self.line(doc_name.span()),
+                "name",
+                format!("'{name}' is not a scheme name (1 to {MAX_NAME_CHARS} letters, digits, '-' or '_')"),
+            ));
+        }
+        // output and claims identify schemes by name: a file must not pass for a built-in
+        if crate::schemes::known_names().contains(&name.as_str()) {
+            return Err(self.err(
+                self.line(doc_name.span()),
+                "name",
+                format!("'{name}' is a built-in scheme; choose another name"),
+            ));
+        }
+        Ok(name)
+    }
+
+    fn params(&self, doc: &FileDoc) -> Result<Vec<UserParam>, String> {
+        if doc.params.len() > MAX_PARAMS {
+            return Err(format!("{}: more than {MAX_PARAMS} parameters", self.file));
+        }
+        let mut params = Vec::new();
+        for (pname, p) in &doc.params {
+            let line = self.line(p.span());
+            let key = format!("params.{pname}");
+            let ident = pname.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+                && pname.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+                && pname.len() <= MAX_NAME_CHARS;
+            if !ident {
+                return Err(self.err(
+                    line,
+                    &key,
+                    "a parameter name is letters, digits and '_', starting with a letter",
+                ));
+            }
+            if RESERVED.contains(&pname.as_str()) {
+                return Err(self.err(line, &key, format!("'{pname}' is reserved (n, j, pi, i and function names)")));
+            }
+            let p = p.get_ref();
+            let default = literal(p.default.get_ref())
+                .map_err(|e| self.err(self.line(p.default.span()), &format!("{key}.default"), e))?;
+            let bound = |b: &Option<Spanned<toml::Value>>, which: &str, none: f64| -> Result<f64, String> {
+                match b {
+                    None => Ok(none),
+                    Some(v) => literal(v.get_ref())
+                        .map(|x| x.value)
+                        .map_err(|e| self.err(self.line(v.span()), &format!("{key}.{which}"), e)),
+                }
+            };
+            let (min, max) = (bound(&p.min, "min", f64::NEG_INFINITY)?, bound(&p.max, "max", f64::INFINITY)?);
+            if !(min <= max && default.value >= min && default.value <= max) {
+                return Err(self.err(line, &key, format!("default {} is not in [{min}, {max}]", default.text)));
+            }
+            params.push(UserParam {
+                name: pname.clone(),
+                default,
+                min,
+                max,
+                description: p.description.clone().unwrap_or_default(),
+            });
+        }
+        Ok(params)
+    }
+
+    /// The file's rule sections in the host's order, each field parsed.
+    fn rules(&self, doc: &FileDoc, spec: &HostSpec, params: &[UserParam]) -> Result<Vec<RuleDef>, String> {
+        // sections the host does not have
+        for (section, table) in &doc.sections {
+            if spec.rule(section).is_none() {
+                let have: Vec<_> = spec.rules.iter().map(|r| r.name).collect();
+                return Err(self.err(
+                    self.line(table.span()),
+                    section,
+                    format!("topology {} has no {section} rule (its rules: {})", spec.name, have.join(", ")),
+                ));
+            }
+        }
+        let mut rules = Vec::new();
+        for rule in spec.rules {
+            let section = rule.name;
+            let Some((_, table)) = doc.sections.iter().find(|(s, _)| s == section) else {
+                if rule.optional {
+                    continue;
+                }
+                return Err(format!("{}: missing section [{section}] (topology {})", self.file, spec.name));
+            };
+            let section_line = self.line(table.span());
+            for (key, value) in table.get_ref() {
+                if !rule.families.iter().any(|fs| fs.name == key) {
+                    let known: Vec<_> = rule.families.iter().map(|fs| fs.name).collect();
+                    return Err(self.err(
+                        self.line(value.span()),
+                        &format!("{section}.{key}"),
+                        format!("unknown field; the {section} rule of {} has {}", spec.name, known.join(", ")),
+                    ));
+                }
+            }
+            let mut fields = Vec::new();
+            for fs in rule.families {
+                let key = format!("{section}.{}", fs.name);
+                let Some(value) = table.get_ref().get(fs.name) else {
+                    if fs.optional {
+                        continue;
+                    }
+                    return Err(self.err(section_line, &key, "missing (write 0 for a zero weight)"));
+                };
+                let line = self.line(value.span());
+                let source = match value.get_ref() {
+                    toml::Value::String(s) => s.clone(),
+                    toml::Value::Integer(k) => k.to_string(),
+                    toml::Value::Float(x) => format!("{x}"),
+                    other => {
+                        return Err(self.err(
+                            line,
+                            &key,
+                            format!("expected an expression string, got a {}", other.type_str()),
+                        ))
+                    }
+                };
+                if source.chars().count() > MAX_EXPR_CHARS {
+                    return Err(self.err(line, &key, format!("expression longer than {MAX_EXPR_CHARS} characters")));
+                }
+                let expr = Expr::parse(&source).map_err(|e| self.err(line, &key, e))?;
+                let has_n = rule.valence == Valence::Any;
+                for var in expr.variables() {
+                    let allowed = (var == "n" && has_n)
+                        || (var == "j" && matches!(fs.arity, Arity::PerJ(_) | Arity::PerQuad(_)))
+                        || params.iter().any(|p| p.name == var);
+                    if !allowed {
+                        let hint = match var.as_str() {
+                            "j" if rule.canonical_j => " (j indexes neighbours only in per-neighbour fields)".into(),
+                            "j" => format!(" (j indexes neighbours only in per-neighbour fields{})", j_pointer(spec)),
+                            "n" => format!(" ({section} rules have no valence n)"),
+                            _ => String::new(),
+                        };
+                        return Err(self.err(line, &key, format!("unknown variable '{var}'{hint}")));
+                    }
+                }
+                let uses_j = expr.variables().iter().any(|v| v == "j");
+                fields.push(Field { key, family: fs.name, line, expr, arity: fs.arity, uses_j });
+            }
+            rules.push(RuleDef { spec: rule, line: section_line, fields });
+        }
+        Ok(rules)
+    }
+
+    fn blend_levels(&self, doc: &FileDoc, spec: &HostSpec, rules: &[RuleDef]) -> Result<Option<usize>, String> {
+        let Some(b) = &doc.blend_levels else { return Ok(None) };
+        let line = self.line(b.span());
+        let k = *b.get_ref();
+        // the extraordinary edge rule: the optional edge rule whose j is
+        // canonical ([edge-extraordinary], [edge-eon])
+        let ev = spec.rules.iter().find(|r| r.canonical_j && r.optional && r.origin == OriginKind::Edge);
+        let Some(ev) = ev else {
+            return Err(self.err(
+                line,
+                "blend-levels",
+                format!("topology {} has no extraordinary edge rule to blend", spec.name),
+            ));
+        };
+        if !rules.iter().any(|r| r.spec.name == ev.name) {
+            return Err(self.err(
+                line,
+                "blend-levels",
+                format!("blends the [{}] rule, which the file does not give", ev.name),
+            ));
+        }
+        if !(1..=MAX_BLEND_LEVELS).contains(&k) {
+            return Err(self.err(line, "blend-levels", format!("{k} is not in 1..{MAX_BLEND_LEVELS}")));
+        }
+        Ok(Some(k as usize))
+    }
+
+    fn vertex_param(&self, doc: &FileDoc, host: Host, params: &[UserParam]) -> Result<Option<String>, String> {
+        let Some(v) = &doc.vertex_param else { return Ok(None) };
+        let line = self.line(v.span());
+        let name = v.get_ref();
+        // only the sqrt(3) host has a rule for the parameter of new vertices
+        // (Lin–Luo eq. 7: the mean of the parents')
+        if host != Host::Sqrt3 {
+            return Err(self.err(
+                line,
+                "vertex-param",
+                format!("topology {} has no per-vertex parameters (sqrt3 has)", host.spec().name),
+            ));
+        }
+        if !params.iter().any(|p| &p.name == name) {
+            return Err(self.err(line, "vertex-param", format!("'{name}' is not a parameter of the file")));
+        }
+        Ok(Some(name.clone()))
     }
 }
 
