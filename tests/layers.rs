@@ -11,10 +11,10 @@ use std::path::{Path, PathBuf};
 /// order inside a layer is fixed as well).
 const LAYERS: &[(&str, u32)] = &[
     // foundation
-    ("numeric", 0),
-    ("mesh", 1),
-    ("io", 1),
-    ("error", 2),
+    ("error", 0),
+    ("io", 0),
+    ("numeric", 1),
+    ("mesh", 2),
     // scheme description (rules, stencils, host names, parameters)
     ("sdc", 3),
     // refinement hosts

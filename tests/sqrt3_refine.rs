@@ -107,3 +107,55 @@ fn vertex_parameter_file_errors_are_one_line() {
     ];
     assert!(run(&full).status.success());
 }
+
+/// `--vertex-params` with a scheme file: the file's per-vertex parameter and
+/// its range come from the file, so the command line gives the built-in's mesh.
+#[test]
+fn vertex_parameters_with_a_scheme_file_equal_the_builtin() {
+    let dir = tempfile::tempdir().unwrap();
+    let run = |args: &[&str]| Command::new(env!("CARGO_BIN_EXE_subdlab")).args(args).output().unwrap();
+    let good = dir.path().join("good.txt");
+    std::fs::write(&good, "1\n0\n1/2\n0\n1\n0\n").unwrap();
+    let mut outputs = Vec::new();
+    for scheme in ["unified-sqrt3", "schemes/unified-sqrt3.toml"] {
+        let out = dir.path().join(format!("{}.obj", outputs.len()));
+        let o = run(&[
+            "refine",
+            "meshes/octahedron.obj",
+            "--levels",
+            "2",
+            "-o",
+            out.to_str().unwrap(),
+            "--scheme",
+            scheme,
+            "--vertex-params",
+            good.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{scheme}: {}", String::from_utf8_lossy(&o.stderr));
+        let (m, p) = read_obj_file(&out).unwrap();
+        outputs.push((m.faces().to_vec(), p));
+    }
+    assert_eq!(outputs[0].0, outputs[1].0, "same connectivity");
+    for (a, b) in outputs[0].1.iter().zip(&outputs[1].1) {
+        for k in 0..3 {
+            assert!((a[k] - b[k]).abs() < 1e-12, "{a:?} vs {b:?}");
+        }
+    }
+    // the file's range applies: α = 3 is outside [0, 2]
+    let bad = dir.path().join("bad.txt");
+    std::fs::write(&bad, "1\n0\n3\n0\n1\n0\n").unwrap();
+    let out = dir.path().join("x.obj");
+    let o = run(&[
+        "refine",
+        "meshes/octahedron.obj",
+        "--levels",
+        "1",
+        "-o",
+        out.to_str().unwrap(),
+        "--scheme",
+        "schemes/unified-sqrt3.toml",
+        "--vertex-params",
+        bad.to_str().unwrap(),
+    ]);
+    assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("out of range"));
+}

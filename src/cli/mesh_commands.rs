@@ -74,12 +74,8 @@ pub fn refine(
 
 /// One value per line for each vertex, within the parameter's admissible range.
 fn read_vertex_params(path: &Path, scheme: &dyn crate::schemes::Scheme, count: usize) -> Result<Vec<f64>, String> {
-    let name = scheme.vertex_param().expect("checked by the caller");
-    let spec = crate::schemes::registry()
-        .into_iter()
-        .find(|e| e.name == scheme.name())
-        .and_then(|e| (e.params)().into_iter().find(|p| p.name == name))
-        .ok_or_else(|| format!("{}: no specification for parameter {name}", scheme.name()))?;
+    let spec = scheme.vertex_param().expect("checked by the caller");
+    let name = spec.name;
     let meta = std::fs::metadata(path).map_err(|e| format!("{}: {e}", path.display()))?;
     if meta.len() > 64 * 1024 * 1024 {
         return Err(format!("{}: file too large for per-vertex parameters", path.display()));

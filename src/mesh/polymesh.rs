@@ -65,6 +65,13 @@ impl std::fmt::Display for MeshError {
 
 impl std::error::Error for MeshError {}
 
+/// A malformed mesh comes from its file (OBJ): a file error.
+impl From<MeshError> for crate::error::Error {
+    fn from(e: MeshError) -> Self {
+        crate::error::Error::File(e.to_string())
+    }
+}
+
 impl PolyMesh {
     pub fn new(num_vertices: usize, faces: Vec<Vec<VertexId>>) -> Result<Self, MeshError> {
         let mut half_edges = HashMap::with_capacity(faces.iter().map(|f| f.len()).sum());

@@ -73,7 +73,7 @@ pub fn refine_mesh(
         let mut next = refined.mesh;
         if let Some(params) = &mesh.vertex_params {
             // a per-vertex parameter (Lin–Luo's α) is refined by the scheme's own rule for it
-            let name = scheme.vertex_param().unwrap_or("parameter");
+            let name = scheme.vertex_param().map_or("parameter", |p| p.name);
             let rules: Vec<Option<Stencil<f64>>> =
                 refined.vertex_origins.iter().map(|&o| scheme.vertex_param_rule(&mesh, o)).collect();
             let old: Vec<Option<[f64; 1]>> = params.iter().map(|&a| Some([a])).collect();

@@ -99,40 +99,10 @@ pub fn beta_4b<W: Weight>(k: i64, n: i64) -> Result<W, Inexact> {
     Ok((W::one() + W::int(2) * W::cos_2pi(k, n)?) / W::int(n))
 }
 
-/// What the vertex rules see at a vertex.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum NodeType {
-    RegularQuad,
-    RegularTri,
-    /// fan faces `k` and `k + 1` are the two quads
-    Transition {
-        k: usize,
-    },
-    Eon,
-}
-
-/// The fan of an interior vertex whose faces are all quads or triangles, and its
-/// node type; `None` on the boundary or next to a face of another size.
-pub fn classify(mesh: &PolyMesh, v: usize) -> Option<(Vec<Vec<usize>>, NodeType)> {
-    let fan = mesh.vertex_fan(v)?;
-    if fan.iter().any(|f| f.len() != 3 && f.len() != 4) {
-        return None;
-    }
-    let n = fan.len();
-    let quads: Vec<usize> = (0..n).filter(|&i| fan[i].len() == 4).collect();
-    let t = if quads.len() == n && n == 4 {
-        NodeType::RegularQuad
-    } else if quads.is_empty() && n == 6 {
-        NodeType::RegularTri
-    } else if n == 5 && quads.len() == 2 && (quads[0] + 1 == quads[1] || (quads[0] == 0 && quads[1] == 4)) {
-        // the quads are cyclically adjacent; k is the first of the two, CCW
-        let k = if quads[0] + 1 == quads[1] { quads[0] } else { 4 };
-        NodeType::Transition { k }
-    } else {
-        NodeType::Eon
-    };
-    Some((fan, t))
-}
+// The node types of a quad/triangle mesh belong to the mixed host's slot
+// layer (the host's gatherer and these rules classify alike); re-exported
+// here, where the 4-3 rules use them.
+pub use crate::sdc::slots::{classify, NodeType};
 
 impl FourThree {
     fn centre_weight<W: Weight>(&self, n: i64) -> Result<W, Inexact> {

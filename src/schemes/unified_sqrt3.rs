@@ -19,8 +19,8 @@
 use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Weight;
-use crate::sdc::Topology;
 use crate::sdc::{Origin, RuleResult, Stencil};
+use crate::sdc::{Topology, VertexParam};
 
 pub struct UnifiedSqrt3 {
     params: Params,
@@ -35,7 +35,7 @@ const INFO: SchemeInfo = SchemeInfo {
     topology: Topology::Sqrt3,
     centre: CentreKind::Vertex,
     sector: SectorKind::Tri,
-    caps: Caps { vertex_param: Some("alpha"), ..Caps::NONE },
+    caps: Caps { vertex_param: Some(VertexParam { name: ALPHA.name, min: ALPHA.min, max: ALPHA.max }), ..Caps::NONE },
 };
 
 const KOBBELT_INFO: SchemeInfo = SchemeInfo {

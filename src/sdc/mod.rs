@@ -11,6 +11,8 @@
 
 pub mod host;
 pub mod params;
+// per-host mask slots: the named neighbour positions a rule weighs
+pub mod slots;
 pub mod stencil;
 
 pub use host::{Topology, TriangleSplit};
@@ -80,9 +82,9 @@ pub struct SchemeInfo {
 pub struct Caps {
     /// Meshes carry a face control vertex per face (non-box).
     pub face_control: bool,
-    /// The name of a parameter that may vary per vertex
-    /// (`PolyMesh::vertex_params`), refined by `Scheme::vertex_param_rule`.
-    pub vertex_param: Option<&'static str>,
+    /// A parameter that may vary per vertex (`PolyMesh::vertex_params`),
+    /// refined by `Scheme::vertex_param_rule`.
+    pub vertex_param: Option<VertexParam>,
     /// The only valence the scheme is defined at (regular-lattice schemes: 4).
     pub fixed_valence: Option<usize>,
     /// The rules commute with the rotation of a symmetric configuration
@@ -98,6 +100,15 @@ pub struct Caps {
     pub mesh_requirement: Option<&'static str>,
     /// Why the scheme has no boundary rules here, for the open-mesh error.
     pub boundary_note: Option<&'static str>,
+}
+
+/// A parameter that may vary per vertex, with its admissible range (per-vertex
+/// values read from a file are checked against it).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct VertexParam {
+    pub name: &'static str,
+    pub min: f64,
+    pub max: f64,
 }
 
 impl Caps {
@@ -155,7 +166,7 @@ impl dyn Scheme + '_ {
     pub fn face_control(&self) -> bool {
         self.info().caps.face_control
     }
-    pub fn vertex_param(&self) -> Option<&'static str> {
+    pub fn vertex_param(&self) -> Option<VertexParam> {
         self.info().caps.vertex_param
     }
     pub fn boundary_note(&self) -> Option<&'static str> {

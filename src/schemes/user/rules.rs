@@ -1,0 +1,208 @@
+//! A built scheme file: its weights put on the host's mask slots
+//! (`sdc::slots`). No neighbour gathering happens here; the host's gatherer
+//! names the slots of every origin and this file only weighs them.
+
+use std::collections::{HashMap, HashSet};
+use std::sync::{Arc, Mutex};
+
+use super::file::UserSchemeDef;
+use super::weights::WeightTable;
+use crate::mesh::PolyMesh;
+use crate::numeric::{Inexact, Weight};
+use crate::refine::{Origin, RuleResult, Stencil};
+use crate::schemes::{Caps, Params, Rules, Scheme, SchemeInfo};
+use crate::sdc::slots::{gather, Host, Part, Target, Wants};
+use crate::sdc::VertexParam;
+
+/// What all refinement levels of one built file share.
+struct Shared {
+    info: SchemeInfo,
+    host: Host,
+    params: Params,
+    weights: WeightTable,
+    /// (rule, family) -> field index in `weights`
+    fields: HashMap<(&'static str, &'static str), usize>,
+    blend_levels: Option<usize>,
+}
+
+/// A user scheme with its parameter values fixed and its weights checked.
+#[derive(Clone)]
+pub struct UserScheme {
+    shared: Arc<Shared>,
+    /// refinement step of a real mesh (1-based) when the file blends its
+    /// extraordinary edge rule in over the first steps; `None`: stationary
+    level: Option<usize>,
+}
+
+impl UserSchemeDef {
+    /// The per-vertex parameter with the range its `[params]` entry gives.
+    fn vertex_param_spec(&self) -> Option<VertexParam> {
+        let name = self.vertex_param.as_deref()?;
+        let p = self.params.iter().find(|p| p.name == name)?;
+        Some(VertexParam { name: intern(name), min: p.min, max: p.max })
+    }
+
+    /// The scheme with the given parameter overrides, weights checked.
+    pub fn build(&self, overrides: &[(String, String)]) -> Result<UserScheme, String> {
+        let env = self.env(overrides)?;
+        self.check(&env)?;
+        let values = self.params.iter().map(|p| (p.name.clone(), env[&p.name].clone())).collect();
+        let mut fields = HashMap::new();
+        let mut exprs = Vec::new();
+        for rule in &self.rules {
+            for f in &rule.fields {
+                fields.insert((rule.spec.name, f.family), exprs.len());
+                exprs.push(f.expr.clone());
+            }
+        }
+        Ok(UserScheme {
+            shared: Arc::new(Shared {
+                info: info_of(intern(&self.name), intern(&self.description), self.host, self.vertex_param_spec()),
+                host: self.host,
+                params: Params { values },
+                weights: WeightTable::new(env, exprs),
+                fields,
+                blend_levels: self.blend_levels,
+            }),
+            level: None,
+        })
+    }
+}
+
+/// `Scheme::name` returns `&'static str`; a loaded scheme's name lives for the
+/// rest of the process. Interning leaks each distinct string once only, so
+/// loading the same file again costs nothing.
+fn intern(s: &str) -> &'static str {
+    static SEEN: Mutex<Option<HashSet<&'static str>>> = Mutex::new(None);
+    let mut guard = SEEN.lock().unwrap_or_else(|e| e.into_inner());
+    let set = guard.get_or_insert_with(HashSet::new);
+    if let Some(&s) = set.get(s) {
+        return s;
+    }
+    let leaked: &'static str = Box::leak(s.to_string().into_boxed_str());
+    set.insert(leaked);
+    leaked
+}
+
+impl Wants for Shared {
+    fn rule(&self, rule: &str) -> bool {
+        self.fields.keys().any(|(r, _)| *r == rule)
+    }
+    fn family(&self, rule: &str, family: &str) -> bool {
+        self.fields.keys().any(|&(r, f)| r == rule && f == family)
+    }
+}
+
+impl Shared {
+    /// Add `scale` times the weighed slots of `part` to `s`.
+    fn fill<W: Weight>(&self, mesh: &PolyMesh, s: &mut Stencil<W>, part: &Part, scale: &W) -> Result<(), Inexact> {
+        let scale = scale.clone() * W::ratio(part.scale.0, part.scale.1);
+        for slot in &part.slots {
+            // the gatherer collects only the families the file weighs
+            let k = *self.fields.get(&(part.rule, slot.family)).ok_or(Inexact)?;
+            // a mesh with per-vertex values: the parameter at the vertex concerned
+            let vertex = match (self.info.caps.vertex_param, &mesh.vertex_params, slot.at) {
+                (Some(p), Some(values), Some(at)) => Some((p.name, *values.get(at).ok_or(Inexact)?)),
+                _ => None,
+            };
+            let w = self.weights.get_at::<W>(k, slot.n as i64, slot.j as i64, vertex)? * scale.clone();
+            match &slot.target {
+                Target::Vertex(v) => s.add(*v, w),
+                Target::Derived(p) => self.fill(mesh, s, p, &w)?,
+            }
+        }
+        Ok(())
+    }
+}
+
+impl UserScheme {
+    /// Share of the extraordinary edge rule at this step: (σ−1)/σ in steps
+    /// σ ≤ blend-levels of a real mesh, else all of it.
+    fn ev_share<W: Weight>(&self) -> W {
+        match (self.level, self.shared.blend_levels) {
+            (Some(s), Some(k)) if s <= k => W::ratio(s as i64 - 1, s as i64),
+            _ => W::one(),
+        }
+    }
+}
+
+impl<W: Weight> Rules<W> for UserScheme {
+    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+        let sh = &self.shared;
+        // a truncated or uncovered neighbourhood, or an origin the host never
+        // creates: the rule does not apply here
+        let Ok(g) = gather(sh.host, mesh, origin, sh.as_ref()) else { return Ok(None) };
+        let mut s = Stencil::new();
+        for part in &g.parts {
+            sh.fill(mesh, &mut s, part, &W::one())?;
+        }
+        if g.extraordinary.is_empty() {
+            return Ok(Some(s));
+        }
+        let share: W = self.ev_share();
+        for part in &g.extraordinary {
+            sh.fill(mesh, &mut s, part, &share)?;
+        }
+        if let Some(regular) = &g.regular {
+            let rest = W::one() - share;
+            if !rest.is_zero() {
+                sh.fill(mesh, &mut s, regular, &rest)?;
+            }
+        }
+        Ok(Some(s))
+    }
+}
+
+impl Scheme for UserScheme {
+    fn info(&self) -> &SchemeInfo {
+        &self.shared.info
+    }
+    fn params(&self) -> &Params {
+        &self.shared.params
+    }
+    /// A new vertex's parameter is the mean of its parents' (Lin–Luo eq. 7
+    /// on the sqrt(3) host, the only host with per-vertex parameters): an old
+    /// vertex keeps its own, a face vertex takes the mean of the corners.
+    fn vertex_param_rule(&self, mesh: &PolyMesh, origin: Origin) -> Option<Stencil<f64>> {
+        self.shared.info.caps.vertex_param?;
+        match origin {
+            Origin::Vertex(v) => Some(Stencil::new().with(v, 1.0)),
+            Origin::Face(f) => {
+                let face = mesh.face(f);
+                Some(face.iter().fold(Stencil::new(), |s, &v| s.with(v, 1.0 / face.len() as f64)))
+            }
+            Origin::Edge(..) | Origin::Corner { .. } => None,
+        }
+    }
+    fn at_level(&self, level: usize) -> Option<Box<dyn Scheme>> {
+        self.shared.blend_levels?;
+        Some(Box::new(UserScheme { shared: self.shared.clone(), level: Some(level) }))
+    }
+}
+
+/// A scheme file's description as data: the host's topology, centre and
+/// sector, and the capabilities the host implies.
+fn info_of(name: &'static str, description: &'static str, host: Host, vertex_param: Option<VertexParam>) -> SchemeInfo {
+    let spec = host.spec();
+    let mesh_requirement = match host {
+        // the vertex and edge rules of a primal-quad file are written for quads only
+        Host::PrimalQuad => Some("a closed quad mesh (primal-quad scheme files have quad rules only)"),
+        Host::MixedQuadTriangle => Some("a closed mesh of triangles and quads"),
+        Host::Sqrt3 => Some("a closed triangle mesh"),
+        Host::PrimalTriangle | Host::Fcv | Host::Dual | Host::Ternary | Host::AugmentedDual | Host::Polar => None,
+    };
+    SchemeInfo {
+        name,
+        description,
+        topology: spec.topology,
+        centre: spec.centre,
+        sector: spec.sector,
+        caps: Caps {
+            face_control: spec.face_control,
+            face_sequences: host == Host::MixedQuadTriangle,
+            mesh_requirement,
+            vertex_param,
+            ..Caps::NONE
+        },
+    }
+}

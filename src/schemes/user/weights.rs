@@ -1,0 +1,111 @@
+//! Weight evaluation: a field's expression at (n, j), in the arithmetic the
+//! caller asks for (floats, or exact rationals where the weight is
+//! rational), cached because refinement asks for the same weight at every
+//! vertex and a Fourier-sum weight costs n terms.
+
+use std::any::TypeId;
+use std::collections::HashMap;
+use std::sync::Mutex;
+
+use crate::numeric::expr::{Env, Expr};
+use crate::numeric::{Inexact, ParamValue, Weight};
+
+/// Entries the weight cache holds before it starts afresh (a sweep over many
+/// valences must not grow it without bound).
+const CACHE_ENTRIES: usize = 100_000;
+
+fn with_nj(params: &Env, n: i64, j: i64) -> Env {
+    let mut env = params.clone();
+    env.insert("n".into(), ParamValue::from_ratio(n, 1));
+    env.insert("j".into(), ParamValue::from_ratio(j, 1));
+    env
+}
+
+/// A weight in floating point, with a reason when it is not a finite real.
+pub(super) fn eval_f64(expr: &Expr, params: &Env, n: i64, j: i64) -> Result<f64, String> {
+    let z = expr.eval(&with_nj(params, n, j))?;
+    if !z.re.is_finite() || !z.im.is_finite() {
+        return Err("the weight is not a finite number".into());
+    }
+    if z.im.abs() > 1e-12 * z.re.abs().max(1.0) {
+        return Err(format!("the weight is complex ({} + {}i)", z.re, z.im));
+    }
+    Ok(z.re)
+}
+
+/// (field, n, j, float, per-vertex parameter value's bits) -> the weight.
+type Cache = HashMap<(usize, i64, i64, bool, Option<u64>), Result<ParamValue, Inexact>>;
+
+/// The weight fields of a built scheme with their parameter values.
+pub(super) struct WeightTable {
+    env: Env,
+    exprs: Vec<Expr>,
+    /// whether field k's expression uses j (else every j shares one entry)
+    uses_j: Vec<bool>,
+    cache: Mutex<Cache>,
+}
+
+impl WeightTable {
+    pub fn new(env: Env, exprs: Vec<Expr>) -> Self {
+        let uses_j = exprs.iter().map(|e| e.variables().iter().any(|v| v == "j")).collect();
+        WeightTable { env, exprs, uses_j, cache: Mutex::new(HashMap::new()) }
+    }
+
+    /// The weight of field `k` at valence (or face size) n, index j; with
+    /// `vertex`, parameter `vertex.0` set to the per-vertex value
+    /// `vertex.1` (Lin–Luo's α at the vertex concerned). Per-vertex values are
+    /// floats read from a file: the exact path cannot take them.
+    pub fn get_at<W: Weight>(&self, k: usize, n: i64, j: i64, vertex: Option<(&str, f64)>) -> Result<W, Inexact> {
+        // evaluate only in the arithmetic asked for: exact evaluation of an
+        // irrational weight fails, and float stencils must not pay for it
+        let float = TypeId::of::<W>() == TypeId::of::<f64>();
+        if vertex.is_some() && !float {
+            return Err(Inexact);
+        }
+        let j = if self.uses_j[k] { j } else { 0 };
+        let id = (k, n, j, float, vertex.map(|v| v.1.to_bits()));
+        let cached = self.cache.lock().unwrap_or_else(|e| e.into_inner()).get(&id).cloned();
+        let value = match cached {
+            Some(v) => v,
+            None => {
+                let v = self.evaluate(k, n, j, float, vertex);
+                let mut cache = self.cache.lock().unwrap_or_else(|e| e.into_inner());
+                if cache.len() >= CACHE_ENTRIES {
+                    cache.clear();
+                }
+                cache.insert(id, v.clone());
+                v
+            }
+        };
+        W::param(&value?)
+    }
+
+    fn evaluate(
+        &self,
+        k: usize,
+        n: i64,
+        j: i64,
+        float: bool,
+        vertex: Option<(&str, f64)>,
+    ) -> Result<ParamValue, Inexact> {
+        let mut env = with_nj(&self.env, n, j);
+        if let Some((name, value)) = vertex {
+            env.insert(name.to_string(), ParamValue::from_f64(value));
+        }
+        // a rational weight is taken exactly in floats too: a zero is then a
+        // zero (as with the built-ins' exact cosines), not 6e-17, and the
+        // stencil's support is the built-in's
+        if let Some(q) = self.exprs[k].exact(&env) {
+            return Ok(ParamValue { value: q.to_f64(), exact: Some(q), text: String::new() });
+        }
+        Ok(if float {
+            let z = self.exprs[k].eval(&env).map_err(|_| Inexact)?;
+            if !z.re.is_finite() || z.im.abs() > 1e-12 * z.re.abs().max(1.0) {
+                return Err(Inexact);
+            }
+            ParamValue { value: z.re, exact: None, text: String::new() }
+        } else {
+            return Err(Inexact);
+        })
+    }
+}
