@@ -26,12 +26,12 @@ use std::collections::BTreeMap;
 use serde::Deserialize;
 use toml::Spanned;
 
+use super::MAX_FILE_BYTES;
 use super::{
     evaluate, field_error, intern, line_of, offset_key, rule_terms, toml_error, Head, ParamDoc, Section, Term,
 };
 use crate::curves::{CurveMask, CurveRules, CurveScheme};
 use crate::numeric::{Inexact, Rational};
-use crate::schemes::user::MAX_FILE_BYTES;
 use crate::schemes::Params;
 
 #[derive(Deserialize)]

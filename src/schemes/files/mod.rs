@@ -26,13 +26,17 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use super::registry::{Built, Family};
-use super::user::{UserParam, MAX_EXPR_CHARS, MAX_FILE_BYTES};
+use super::user::UserParam;
 use super::Params;
 use crate::numeric::expr::{Env, Expr};
 use crate::numeric::{ParamValue, Rational, Weight};
 
-const MAX_NAME_CHARS: usize = 64;
-const MAX_DESCRIPTION_CHARS: usize = 1000;
+/// Scheme files are a few dozen lines; the caps keep a malformed or hostile
+/// file from costing unbounded time or memory (mesh, lattice and curve files).
+pub const MAX_FILE_BYTES: usize = 64 * 1024;
+pub const MAX_EXPR_CHARS: usize = 1000;
+pub(crate) const MAX_NAME_CHARS: usize = 64;
+pub(crate) const MAX_DESCRIPTION_CHARS: usize = 1000;
 const MAX_PARAMS: usize = 16;
 /// Largest |offset| a mask may use: masks are local, and the window search
 /// follows them level by level.
@@ -155,7 +159,7 @@ pub(crate) struct ParamDoc {
 
 /// A number in the file: strings are parsed as numbers (3/8, 0.375), TOML
 /// integers and floats taken as written.
-fn literal(v: &toml::Value) -> Result<ParamValue, String> {
+pub(crate) fn literal(v: &toml::Value) -> Result<ParamValue, String> {
     match v {
         toml::Value::String(s) => ParamValue::parse(s),
         toml::Value::Integer(k) => Ok(ParamValue::from_ratio(*k, 1)),
@@ -163,6 +167,87 @@ fn literal(v: &toml::Value) -> Result<ParamValue, String> {
         toml::Value::Float(x) => ParamValue::parse(&format!("{x}")),
         other => Err(format!("expected a number, got a {}", other.type_str())),
     }
+}
+
+/// The `[params.NAME]` tables of a scheme file (mesh, lattice or curve),
+/// checked: names are identifiers and not reserved, default, min and max are
+/// numbers, and the default lies in [min, max]. Errors name line and field.
+pub(crate) fn parameter_table(
+    params: &BTreeMap<String, Spanned<ParamDoc>>,
+    text: &str,
+    file: &str,
+) -> Result<Vec<UserParam>, String> {
+    let at = |span: std::ops::Range<usize>| line_of(text, span.start);
+    let err = |line: usize, field: &str, msg: &dyn std::fmt::Display| field_error(file, line, field, msg);
+    if params.len() > MAX_PARAMS {
+        return Err(format!("{file}: more than {MAX_PARAMS} parameters"));
+    }
+    let mut out = Vec::new();
+    for (pname, p) in params {
+        let line = at(p.span());
+        let key = format!("params.{pname}");
+        let ident = pname.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+            && pname.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+            && pname.len() <= MAX_NAME_CHARS;
+        if !ident {
+            return Err(err(line, &key, &"a parameter name is letters, digits and '_', starting with a letter"));
+        }
+        if RESERVED.contains(&pname.as_str()) {
+            return Err(err(line, &key, &format!("'{pname}' is reserved (n, j, pi, i and function names)")));
+        }
+        let p = p.get_ref();
+        let default =
+            literal(p.default.get_ref()).map_err(|e| err(at(p.default.span()), &format!("{key}.default"), &e))?;
+        let bound = |b: &Option<Spanned<toml::Value>>, which: &str, none: f64| -> Result<f64, String> {
+            match b {
+                None => Ok(none),
+                Some(v) => {
+                    literal(v.get_ref()).map(|x| x.value).map_err(|e| err(at(v.span()), &format!("{key}.{which}"), &e))
+                }
+            }
+        };
+        let (min, max) = (bound(&p.min, "min", f64::NEG_INFINITY)?, bound(&p.max, "max", f64::INFINITY)?);
+        if !(min <= max && default.value >= min && default.value <= max) {
+            return Err(err(line, &key, &format!("default {} is not in [{min}, {max}]", default.text)));
+        }
+        out.push(UserParam {
+            name: pname.clone(),
+            default,
+            min,
+            max,
+            description: p.description.clone().unwrap_or_default(),
+        });
+    }
+    Ok(out)
+}
+
+/// A file's parameter values: the defaults, then `name=value` overrides,
+/// each checked against the parameter's range (mesh, lattice and curve files
+/// alike, with the built-ins' wording).
+pub(crate) fn parameter_env(scheme: &str, params: &[UserParam], overrides: &[(String, String)]) -> Result<Env, String> {
+    let mut env = Env::new();
+    for p in params {
+        env.insert(p.name.clone(), p.default.clone());
+    }
+    for (name, text) in overrides {
+        let Some(p) = params.iter().find(|p| &p.name == name) else {
+            let known: Vec<_> = params.iter().map(|p| p.name.as_str()).collect();
+            return Err(if known.is_empty() {
+                format!("scheme '{scheme}' has no parameters (got '{name}')")
+            } else {
+                format!("scheme '{scheme}' has no parameter '{name}'; its parameters: {}", known.join(", "))
+            });
+        };
+        let v = ParamValue::parse(text).map_err(|e| format!("parameter {name}: {e}"))?;
+        if v.value < p.min || v.value > p.max {
+            return Err(format!(
+                "parameter {name}={text} is out of range [{}, {}] for scheme '{scheme}'",
+                p.min, p.max
+            ));
+        }
+        env.insert(name.clone(), v);
+    }
+    Ok(env)
 }
 
 /// The keys every lattice and curve file has, checked.
@@ -214,72 +299,13 @@ impl Head {
             Some(d) => d.get_ref().replace('\n', " "),
             None => format!("scheme file {file}"),
         };
-        if params.len() > MAX_PARAMS {
-            return Err(format!("{file}: more than {MAX_PARAMS} parameters"));
-        }
-        let mut out = Vec::new();
-        for (pname, p) in params {
-            let line = at(p.span());
-            let key = format!("params.{pname}");
-            let ident = pname.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
-                && pname.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
-                && pname.len() <= MAX_NAME_CHARS;
-            if !ident {
-                return Err(err(line, &key, &"a parameter name is letters, digits and '_', starting with a letter"));
-            }
-            if RESERVED.contains(&pname.as_str()) {
-                return Err(err(line, &key, &format!("'{pname}' is reserved (n, j, pi, i and function names)")));
-            }
-            let p = p.get_ref();
-            let default =
-                literal(p.default.get_ref()).map_err(|e| err(at(p.default.span()), &format!("{key}.default"), &e))?;
-            let bound = |b: &Option<Spanned<toml::Value>>, which: &str, none: f64| -> Result<f64, String> {
-                match b {
-                    None => Ok(none),
-                    Some(v) => literal(v.get_ref())
-                        .map(|x| x.value)
-                        .map_err(|e| err(at(v.span()), &format!("{key}.{which}"), &e)),
-                }
-            };
-            let (min, max) = (bound(&p.min, "min", f64::NEG_INFINITY)?, bound(&p.max, "max", f64::INFINITY)?);
-            if !(min <= max && default.value >= min && default.value <= max) {
-                return Err(err(line, &key, &format!("default {} is not in [{min}, {max}]", default.text)));
-            }
-            out.push(UserParam {
-                name: pname.clone(),
-                default,
-                min,
-                max,
-                description: p.description.clone().unwrap_or_default(),
-            });
-        }
+        let out = parameter_table(params, text, file)?;
         Ok(Head { file: file.to_string(), name: shown, description, affine: affine.unwrap_or(true), params: out })
     }
 
     /// Parameter values: the defaults, then `name=value` overrides (range-checked).
     pub(crate) fn values(&self, overrides: &[(String, String)]) -> Result<(Env, Params), String> {
-        let mut env = Env::new();
-        for p in &self.params {
-            env.insert(p.name.clone(), p.default.clone());
-        }
-        for (name, text) in overrides {
-            let Some(p) = self.params.iter().find(|p| &p.name == name) else {
-                let known: Vec<_> = self.params.iter().map(|p| p.name.as_str()).collect();
-                return Err(if known.is_empty() {
-                    format!("scheme '{}' has no parameters (got '{name}')", self.name)
-                } else {
-                    format!("scheme '{}' has no parameter '{name}'; its parameters: {}", self.name, known.join(", "))
-                });
-            };
-            let v = ParamValue::parse(text).map_err(|e| format!("parameter {name}: {e}"))?;
-            if v.value < p.min || v.value > p.max {
-                return Err(format!(
-                    "parameter {name}={text} is out of range [{}, {}] for scheme '{}'",
-                    p.min, p.max, self.name
-                ));
-            }
-            env.insert(name.clone(), v);
-        }
+        let env = parameter_env(&self.name, &self.params, overrides)?;
         let values = self.params.iter().map(|p| (p.name.clone(), env[&p.name].clone())).collect();
         Ok((env, Params { values }))
     }

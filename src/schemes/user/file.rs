@@ -12,21 +12,16 @@ use toml::Spanned;
 use super::weights::eval_f64;
 use crate::numeric::expr::{Env, Expr};
 use crate::numeric::ParamValue;
+use crate::schemes::files::{line_of, parameter_env, parameter_table, ParamDoc};
 use crate::sdc::slots::{Arity, Host, HostSpec, OriginKind, RuleSlots, Valence, HOSTS};
 
-/// Scheme files are a few dozen lines; the caps keep a malformed or hostile
-/// file from costing unbounded time or memory.
-pub const MAX_FILE_BYTES: usize = 64 * 1024;
-pub const MAX_EXPR_CHARS: usize = 1000;
-const MAX_NAME_CHARS: usize = 64;
-const MAX_DESCRIPTION_CHARS: usize = 1000;
-const MAX_PARAMS: usize = 16;
+// the caps every scheme file has (one place: `schemes::files`)
+use crate::schemes::files::{MAX_DESCRIPTION_CHARS, MAX_NAME_CHARS};
+pub use crate::schemes::files::{MAX_EXPR_CHARS, MAX_FILE_BYTES};
 /// Most refinement steps an extraordinary edge rule may be blended over.
 const MAX_BLEND_LEVELS: i64 = 12;
 /// Valences (and face sizes) at which weights are checked at load time.
 const CHECK_N: std::ops::RangeInclusive<i64> = 3..=12;
-/// Names the expression language or the rules reserve.
-const RESERVED: [&str; 11] = ["n", "j", "pi", "i", "cos", "sin", "sqrt", "cbrt", "abs", "kronecker", "sum"];
 /// Top-level keys that are not rule sections.
 const HEADER: [&str; 7] = ["name", "description", "topology", "affine", "blend-levels", "vertex-param", "params"];
 
@@ -100,15 +95,6 @@ fn all_sections() -> Vec<&'static str> {
     out
 }
 
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ParamDoc {
-    default: Spanned<toml::Value>,
-    min: Option<Spanned<toml::Value>>,
-    max: Option<Spanned<toml::Value>>,
-    description: Option<String>,
-}
-
 /// A weight expression and where it was written.
 #[derive(Clone, Debug)]
 pub(super) struct Field {
@@ -171,22 +157,6 @@ fn key_at(text: &str, line: usize) -> Option<String> {
         Some(t) => format!("{t}.{key}"),
         None => key.to_string(),
     })
-}
-
-fn line_of(text: &str, offset: usize) -> usize {
-    text.as_bytes()[..offset.min(text.len())].iter().filter(|&&b| b == b'\n').count() + 1
-}
-
-/// A literal in the file as a parameter value: strings are parsed as numbers
-/// (3/8, 0.375), TOML integers and floats taken as written.
-fn literal(v: &toml::Value) -> Result<ParamValue, String> {
-    match v {
-        toml::Value::String(s) => ParamValue::parse(s),
-        toml::Value::Integer(k) => Ok(ParamValue::from_ratio(*k, 1)),
-        // the shortest decimal that round-trips, so 0.375 is exactly 3/8
-        toml::Value::Float(x) => ParamValue::parse(&format!("{x}")),
-        other => Err(format!("expected a number, got a {}", other.type_str())),
-    }
 }
 
 /// Where j-dependent weights may go instead, for error messages.
@@ -292,29 +262,7 @@ impl UserSchemeDef {
 
     /// Parameter values: the defaults, then `name=value` overrides.
     pub(super) fn env(&self, overrides: &[(String, String)]) -> Result<Env, String> {
-        let mut env = Env::new();
-        for p in &self.params {
-            env.insert(p.name.clone(), p.default.clone());
-        }
-        for (name, text) in overrides {
-            let Some(p) = self.params.iter().find(|p| &p.name == name) else {
-                let known: Vec<_> = self.params.iter().map(|p| p.name.as_str()).collect();
-                return Err(if known.is_empty() {
-                    format!("scheme '{}' has no parameters (got '{name}')", self.name)
-                } else {
-                    format!("scheme '{}' has no parameter '{name}'; its parameters: {}", self.name, known.join(", "))
-                });
-            };
-            let v = ParamValue::parse(text).map_err(|e| format!("parameter {name}: {e}"))?;
-            if v.value < p.min || v.value > p.max {
-                return Err(format!(
-                    "parameter {name}={text} is out of range [{}, {}] for scheme '{}'",
-                    p.min, p.max, self.name
-                ));
-            }
-            env.insert(name.clone(), v);
-        }
-        Ok(env)
+        parameter_env(&self.name, &self.params, overrides)
     }
 
     /// Every weight must be a finite real number at n = 3..12 (or at the
@@ -428,50 +376,7 @@ impl Cx<'_> {
     }
 
     fn params(&self, doc: &FileDoc) -> Result<Vec<UserParam>, String> {
-        if doc.params.len() > MAX_PARAMS {
-            return Err(format!("{}: more than {MAX_PARAMS} parameters", self.file));
-        }
-        let mut params = Vec::new();
-        for (pname, p) in &doc.params {
-            let line = self.line(p.span());
-            let key = format!("params.{pname}");
-            let ident = pname.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
-                && pname.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
-                && pname.len() <= MAX_NAME_CHARS;
-            if !ident {
-                return Err(self.err(
-                    line,
-                    &key,
-                    "a parameter name is letters, digits and '_', starting with a letter",
-                ));
-            }
-            if RESERVED.contains(&pname.as_str()) {
-                return Err(self.err(line, &key, format!("'{pname}' is reserved (n, j, pi, i and function names)")));
-            }
-            let p = p.get_ref();
-            let default = literal(p.default.get_ref())
-                .map_err(|e| self.err(self.line(p.default.span()), &format!("{key}.default"), e))?;
-            let bound = |b: &Option<Spanned<toml::Value>>, which: &str, none: f64| -> Result<f64, String> {
-                match b {
-                    None => Ok(none),
-                    Some(v) => literal(v.get_ref())
-                        .map(|x| x.value)
-                        .map_err(|e| self.err(self.line(v.span()), &format!("{key}.{which}"), e)),
-                }
-            };
-            let (min, max) = (bound(&p.min, "min", f64::NEG_INFINITY)?, bound(&p.max, "max", f64::INFINITY)?);
-            if !(min <= max && default.value >= min && default.value <= max) {
-                return Err(self.err(line, &key, format!("default {} is not in [{min}, {max}]", default.text)));
-            }
-            params.push(UserParam {
-                name: pname.clone(),
-                default,
-                min,
-                max,
-                description: p.description.clone().unwrap_or_default(),
-            });
-        }
-        Ok(params)
+        parameter_table(&doc.params, self.text, self.file)
     }
 
     /// The file's rule sections in the host's order, each field parsed.

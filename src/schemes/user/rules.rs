@@ -2,17 +2,18 @@
 //! (`sdc::slots`). No neighbour gathering happens here; the host's gatherer
 //! names the slots of every origin and this file only weighs them.
 
-use std::collections::{HashMap, HashSet};
-use std::sync::{Arc, Mutex};
+use std::collections::HashMap;
+use std::sync::Arc;
 
 use super::file::UserSchemeDef;
 use super::weights::WeightTable;
 use crate::mesh::PolyMesh;
 use crate::numeric::{Inexact, Weight};
-use crate::refine::{Origin, RuleResult, Stencil};
+use crate::schemes::files::intern;
 use crate::schemes::{Caps, Params, Rules, Scheme, SchemeInfo};
 use crate::sdc::slots::{gather, Host, Part, Target, Wants};
 use crate::sdc::VertexParam;
+use crate::sdc::{Origin, RuleResult, Stencil};
 
 /// What all refinement levels of one built file share.
 struct Shared {
@@ -67,21 +68,6 @@ impl UserSchemeDef {
             level: None,
         })
     }
-}
-
-/// `Scheme::name` returns `&'static str`; a loaded scheme's name lives for the
-/// rest of the process. Interning leaks each distinct string once only, so
-/// loading the same file again costs nothing.
-fn intern(s: &str) -> &'static str {
-    static SEEN: Mutex<Option<HashSet<&'static str>>> = Mutex::new(None);
-    let mut guard = SEEN.lock().unwrap_or_else(|e| e.into_inner());
-    let set = guard.get_or_insert_with(HashSet::new);
-    if let Some(&s) = set.get(s) {
-        return s;
-    }
-    let leaked: &'static str = Box::leak(s.to_string().into_boxed_str());
-    set.insert(leaked);
-    leaked
 }
 
 impl Wants for Shared {
