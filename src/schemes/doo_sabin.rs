@@ -4,9 +4,11 @@
 
 use super::{Caps, CentreKind, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
+use crate::numeric::Inexact;
 use crate::numeric::Weight;
+use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
-use crate::sdc::{Origin, RuleResult, Stencil};
+use crate::sdc::{Origin, RuleResult};
 
 pub struct DooSabin {
     params: Params,
@@ -30,22 +32,28 @@ pub fn entry() -> SchemeEntry {
     }
 }
 
+// The rule is a mask on the dual host's corner slots c_0..c_{m-1} (c_0 the
+// corner itself, counter-clockwise round the face), as in a scheme file.
+impl Wants for DooSabin {
+    fn rule(&self, rule: &str) -> bool {
+        rule == "corner"
+    }
+    fn family(&self, rule: &str, family: &str) -> bool {
+        rule == "corner" && family == "corner"
+    }
+}
+
+impl<W: Weight> Mask<W> for DooSabin {
+    fn weight(&self, _mesh: &PolyMesh, _rule: &'static str, slot: &Slot) -> Result<W, Inexact> {
+        let (j, m) = (slot.j as i64, slot.n as i64);
+        let w = (W::int(3) + W::int(2) * W::cos_2pi(j, m)?) / W::int(4 * m);
+        Ok(if j == 0 { w + W::ratio(1, 4) } else { w })
+    }
+}
+
 impl<W: Weight> Rules<W> for DooSabin {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
-        let Origin::Corner { face, corner } = origin else {
-            return Ok(None);
-        };
-        let cyc = mesh.face_from(face, corner);
-        let m = cyc.len() as i64;
-        let mut s = Stencil::new();
-        for (j, &v) in cyc.iter().enumerate() {
-            let mut w = (W::int(3) + W::int(2) * W::cos_2pi(j as i64, m)?) / W::int(4 * m);
-            if j == 0 {
-                w = w + W::ratio(1, 4);
-            }
-            s.add(v, w);
-        }
-        Ok(Some(s))
+        weigh(Host::Dual, mesh, origin, self, &W::one())
     }
 }
 

@@ -3,10 +3,12 @@
 //! vertex point: (1 - nβ) v + β Σ v_i,  β = (1/n) (5/8 - (3/8 + cos(2π/n)/4)^2)
 //! edge point:   3/8 (a + b) + 1/8 (c + d), c and d the opposite apexes
 
-use super::{uniform_fan, Caps, CentreKind, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
+use super::{Caps, CentreKind, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
+use crate::numeric::Inexact;
 use crate::numeric::Weight;
-use crate::sdc::{Origin, RuleResult, Stencil};
+use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
+use crate::sdc::{Origin, RuleResult};
 use crate::sdc::{Topology, TriangleSplit};
 
 pub struct Loop {
@@ -37,40 +39,35 @@ pub fn loop_beta<W: Weight>(n: i64) -> Result<W, crate::numeric::Inexact> {
     Ok((W::ratio(5, 8) - t.clone() * t) / W::int(n))
 }
 
+// The rules are a mask on the primal triangle host's slots: the host's
+// gatherer finds the neighbours (and refuses boundaries and non-triangles),
+// the mask only weighs them, exactly as a scheme file on that host does.
+impl Wants for Loop {
+    fn rule(&self, rule: &str) -> bool {
+        matches!(rule, "vertex" | "edge")
+    }
+    fn family(&self, rule: &str, family: &str) -> bool {
+        matches!((rule, family), ("vertex", "centre" | "edge") | ("edge", "ends" | "opposite"))
+    }
+}
+
+impl<W: Weight> Mask<W> for Loop {
+    fn weight(&self, _mesh: &PolyMesh, rule: &'static str, slot: &Slot) -> Result<W, Inexact> {
+        let n = slot.n as i64;
+        Ok(match (rule, slot.family) {
+            ("vertex", "centre") => W::one() - loop_beta::<W>(n)? * W::int(n),
+            ("vertex", "edge") => loop_beta(n)?,
+            ("edge", "ends") => W::ratio(3, 8),
+            ("edge", "opposite") => W::ratio(1, 8),
+            // no weight on slots the mask does not use
+            _ => W::zero(),
+        })
+    }
+}
+
 impl<W: Weight> Rules<W> for Loop {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
-        Ok(match origin {
-            Origin::Edge(a, b) => {
-                let (Some((fl, kl)), Some((fr, kr))) = (mesh.half_edge(a, b), mesh.half_edge(b, a)) else {
-                    return Ok(None);
-                };
-                if mesh.face(fl).len() != 3 || mesh.face(fr).len() != 3 {
-                    return Ok(None);
-                }
-                let c = mesh.face_from(fl, kl)[2];
-                let d = mesh.face_from(fr, kr)[2];
-                Some(
-                    Stencil::new()
-                        .with(a, W::ratio(3, 8))
-                        .with(b, W::ratio(3, 8))
-                        .with(c, W::ratio(1, 8))
-                        .with(d, W::ratio(1, 8)),
-                )
-            }
-            Origin::Vertex(v) => {
-                let Some(fan) = uniform_fan(mesh, v, 3) else {
-                    return Ok(None);
-                };
-                let n = fan.len() as i64;
-                let beta: W = loop_beta(n)?;
-                let mut s = Stencil::new().with(v, W::one() - beta.clone() * W::int(n));
-                for face in &fan {
-                    s.add(face[1], beta.clone());
-                }
-                Some(s)
-            }
-            Origin::Face(_) | Origin::Corner { .. } => None,
-        })
+        weigh(Host::PrimalTriangle, mesh, origin, self, &W::one())
     }
 }
 

@@ -17,7 +17,8 @@
 //! elsewhere the first neighbour is arbitrary and weights may not depend on j.
 
 use crate::mesh::{FaceId, PolyMesh, SectorKind, VertexId};
-use crate::sdc::{CentreKind, Origin, Topology, TriangleSplit};
+use crate::numeric::{Inexact, Weight};
+use crate::sdc::{CentreKind, Origin, RuleResult, Stencil, Topology, TriangleSplit};
 
 /// Every refinement host a mask can be written for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -562,6 +563,64 @@ impl Host {
 
 /// Which rules and optional families a mask has: the gatherer collects only
 /// what is weighed (a 2-ring family costs a larger neighbourhood).
+/// A mask: a weight for every slot of the rules it has. Built-in schemes and
+/// scheme files are both masks over the same slots, so neither gathers
+/// neighbours itself: `weigh` gathers, the mask only weighs.
+pub trait Mask<W: Weight>: Wants {
+    /// The weight of `slot` of rule `rule` (`slot.n` is the valence or face
+    /// size it is evaluated at, `slot.j` its index in its family).
+    fn weight(&self, mesh: &PolyMesh, rule: &'static str, slot: &Slot) -> Result<W, Inexact>;
+}
+
+/// The stencil of `origin` on `host` under `mask`: the host's slots of the
+/// origin, weighed. `extraordinary_share` is the share of the rules of
+/// extraordinary vertices that replace a regular rule (1 for stationary
+/// rules; less over the first steps of a real mesh where a scheme blends
+/// them in, as 4-3 does). `Ok(None)` where the neighbourhood is truncated,
+/// not covered by the host's rules, or of an origin the host never creates.
+pub fn weigh<W: Weight>(
+    host: Host,
+    mesh: &PolyMesh,
+    origin: Origin,
+    mask: &dyn Mask<W>,
+    extraordinary_share: &W,
+) -> RuleResult<W> {
+    let Ok(g) = gather(host, mesh, origin, mask) else { return Ok(None) };
+    let mut s = Stencil::new();
+    for part in &g.parts {
+        fill(mask, mesh, &mut s, part, &W::one())?;
+    }
+    for part in &g.extraordinary {
+        fill(mask, mesh, &mut s, part, extraordinary_share)?;
+    }
+    if let Some(regular) = g.regular.as_ref().filter(|_| !g.extraordinary.is_empty()) {
+        let rest = W::one() - extraordinary_share.clone();
+        if !rest.is_zero() {
+            fill(mask, mesh, &mut s, regular, &rest)?;
+        }
+    }
+    Ok(Some(s))
+}
+
+/// Add `scale` times the weighed slots of `part` to `s`.
+fn fill<W: Weight>(
+    mask: &dyn Mask<W>,
+    mesh: &PolyMesh,
+    s: &mut Stencil<W>,
+    part: &Part,
+    scale: &W,
+) -> Result<(), Inexact> {
+    let scale = scale.clone() * W::ratio(part.scale.0, part.scale.1);
+    for slot in &part.slots {
+        let w = mask.weight(mesh, part.rule, slot)? * scale.clone();
+        match &slot.target {
+            Target::Vertex(v) => s.add(*v, w),
+            Target::Derived(p) => fill(mask, mesh, s, p, &w)?,
+        }
+    }
+    Ok(())
+}
+
 pub trait Wants {
     fn rule(&self, rule: &str) -> bool;
     fn family(&self, rule: &str, family: &str) -> bool;

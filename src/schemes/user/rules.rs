@@ -11,7 +11,7 @@ use crate::mesh::PolyMesh;
 use crate::numeric::{Inexact, Weight};
 use crate::schemes::files::intern;
 use crate::schemes::{Caps, Params, Rules, Scheme, SchemeInfo};
-use crate::sdc::slots::{gather, Host, Part, Target, Wants};
+use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::VertexParam;
 use crate::sdc::{Origin, RuleResult, Stencil};
 
@@ -79,25 +79,16 @@ impl Wants for Shared {
     }
 }
 
-impl Shared {
-    /// Add `scale` times the weighed slots of `part` to `s`.
-    fn fill<W: Weight>(&self, mesh: &PolyMesh, s: &mut Stencil<W>, part: &Part, scale: &W) -> Result<(), Inexact> {
-        let scale = scale.clone() * W::ratio(part.scale.0, part.scale.1);
-        for slot in &part.slots {
-            // the gatherer collects only the families the file weighs
-            let k = *self.fields.get(&(part.rule, slot.family)).ok_or(Inexact)?;
-            // a mesh with per-vertex values: the parameter at the vertex concerned
-            let vertex = match (self.info.caps.vertex_param, &mesh.vertex_params, slot.at) {
-                (Some(p), Some(values), Some(at)) => Some((p.name, *values.get(at).ok_or(Inexact)?)),
-                _ => None,
-            };
-            let w = self.weights.get_at::<W>(k, slot.n as i64, slot.j as i64, vertex)? * scale.clone();
-            match &slot.target {
-                Target::Vertex(v) => s.add(*v, w),
-                Target::Derived(p) => self.fill(mesh, s, p, &w)?,
-            }
-        }
-        Ok(())
+impl<W: Weight> Mask<W> for Shared {
+    fn weight(&self, mesh: &PolyMesh, rule: &'static str, slot: &Slot) -> Result<W, Inexact> {
+        // the gatherer collects only the families the file weighs
+        let k = *self.fields.get(&(rule, slot.family)).ok_or(Inexact)?;
+        // a mesh with per-vertex values: the parameter at the vertex concerned
+        let vertex = match (self.info.caps.vertex_param, &mesh.vertex_params, slot.at) {
+            (Some(p), Some(values), Some(at)) => Some((p.name, *values.get(at).ok_or(Inexact)?)),
+            _ => None,
+        };
+        self.weights.get_at::<W>(k, slot.n as i64, slot.j as i64, vertex)
     }
 }
 
@@ -114,28 +105,7 @@ impl UserScheme {
 
 impl<W: Weight> Rules<W> for UserScheme {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
-        let sh = &self.shared;
-        // a truncated or uncovered neighbourhood, or an origin the host never
-        // creates: the rule does not apply here
-        let Ok(g) = gather(sh.host, mesh, origin, sh.as_ref()) else { return Ok(None) };
-        let mut s = Stencil::new();
-        for part in &g.parts {
-            sh.fill(mesh, &mut s, part, &W::one())?;
-        }
-        if g.extraordinary.is_empty() {
-            return Ok(Some(s));
-        }
-        let share: W = self.ev_share();
-        for part in &g.extraordinary {
-            sh.fill(mesh, &mut s, part, &share)?;
-        }
-        if let Some(regular) = &g.regular {
-            let rest = W::one() - share;
-            if !rest.is_zero() {
-                sh.fill(mesh, &mut s, regular, &rest)?;
-            }
-        }
-        Ok(Some(s))
+        weigh(self.shared.host, mesh, origin, self.shared.as_ref(), &self.ev_share())
     }
 }
 
