@@ -16,8 +16,9 @@
 use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
+use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
-use crate::sdc::{Origin, RuleResult, Stencil};
+use crate::sdc::{Origin, RuleResult};
 
 pub struct NonBox {
     params: Params,
@@ -74,58 +75,47 @@ impl NonBox {
     }
 }
 
+// The rules are a mask on the FCV host's slots (the host gathers the face
+// control vertices around each origin), as in a scheme file on that host.
+impl Wants for NonBox {
+    fn rule(&self, rule: &str) -> bool {
+        matches!(rule, "vertex" | "edge" | "face" | "corner")
+    }
+    fn family(&self, rule: &str, family: &str) -> bool {
+        matches!(
+            (rule, family),
+            ("vertex", "centre" | "fcv")
+                | ("edge", "ends" | "fcv")
+                | ("face", "centre" | "corner")
+                | ("corner", "vertex" | "fcv" | "side")
+        )
+    }
+}
+
+impl<W: Weight> Mask<W> for NonBox {
+    fn weight(&self, _mesh: &PolyMesh, rule: &'static str, slot: &Slot) -> Result<W, Inexact> {
+        // slot.n: the valence (vertex rule) or the face size (face rule)
+        let k = slot.n as i64;
+        Ok(match (rule, slot.family) {
+            // V-vertex: (1 − a_k) v + a_k/k Σ FCVs around v
+            ("vertex", "centre") | ("face", "centre") => W::one() - self.a(k)?,
+            // the FCV of an old face: (1 − a_k) FCV + a_k/k Σ corners
+            ("vertex", "fcv") | ("face", "corner") => self.a::<W>(k)? / W::int(k),
+            // E-vertex: the mean of the two ends and the two faces' FCVs
+            ("edge", "ends" | "fcv") => W::ratio(1, 4),
+            // the NFCV at corner V_0 of face F_0: V_0/4 + F_0/2 + the two neighbouring FCVs /8
+            ("corner", "vertex") => W::ratio(1, 4),
+            ("corner", "fcv") => W::ratio(1, 2),
+            ("corner", "side") => W::ratio(1, 8),
+            // no weight on slots the mask does not use
+            _ => W::zero(),
+        })
+    }
+}
+
 impl<W: Weight> Rules<W> for NonBox {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
-        if !mesh.has_face_point_on_every_face() {
-            return Ok(None);
-        }
-        Ok(match origin {
-            Origin::Edge(a, b) => {
-                let (Some(l), Some(r)) = (mesh.face_point_left_of(a, b), mesh.face_point_left_of(b, a)) else {
-                    return Ok(None);
-                };
-                let q = W::ratio(1, 4);
-                Some(Stencil::new().with(a, q.clone()).with(b, q.clone()).with(l, q.clone()).with(r, q))
-            }
-            Origin::Vertex(v) => {
-                let Some(fan) = mesh.vertex_fan(v) else { return Ok(None) };
-                let k = fan.len() as i64;
-                let a: W = self.a(k)?;
-                let mut s = Stencil::new().with(v, W::one() - a.clone());
-                for cyc in &fan {
-                    let Some(p) = mesh.face_point_left_of(v, cyc[1]) else { return Ok(None) };
-                    s.add(p, a.clone() / W::int(k));
-                }
-                Some(s)
-            }
-            Origin::Face(f) => {
-                let face = mesh.face(f);
-                let k = face.len() as i64;
-                let a: W = self.a(k)?;
-                let mut s = Stencil::new().with(mesh.face_point(f).expect("checked above"), W::one() - a.clone());
-                for &v in face {
-                    s.add(v, a.clone() / W::int(k));
-                }
-                Some(s)
-            }
-            Origin::Corner { face: f, corner: k } => {
-                let cyc = mesh.face_from(f, k);
-                let (v0, next, prev) = (cyc[0], cyc[1], cyc[cyc.len() - 1]);
-                // the two old faces at V_0 adjacent to F_0: across (V_0, next) and (prev, V_0)
-                let (Some(f1), Some(fm1)) = (mesh.face_point_left_of(next, v0), mesh.face_point_left_of(v0, prev))
-                else {
-                    return Ok(None);
-                };
-                let f0 = mesh.face_point(f).expect("checked above");
-                Some(
-                    Stencil::new()
-                        .with(v0, W::ratio(1, 4))
-                        .with(f0, W::ratio(1, 2))
-                        .with(f1, W::ratio(1, 8))
-                        .with(fm1, W::ratio(1, 8)),
-                )
-            }
-        })
+        weigh(Host::Fcv, mesh, origin, self, &W::one())
     }
 }
 
