@@ -18,7 +18,9 @@
 
 use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
+use crate::numeric::Inexact;
 use crate::numeric::Weight;
+use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::{Origin, RuleResult, Stencil};
 use crate::sdc::{Topology, VertexParam};
 
@@ -78,7 +80,7 @@ pub fn kobbelt_entry() -> SchemeEntry {
 impl UnifiedSqrt3 {
     /// α at vertex v: the mesh's per-vertex value when it carries one (eq. 7,
     /// non-uniform scheme; floats only), else the uniform parameter.
-    fn alpha<W: Weight>(&self, mesh: &PolyMesh, v: usize) -> Result<W, crate::numeric::Inexact> {
+    fn alpha<W: Weight>(&self, mesh: &PolyMesh, v: usize) -> Result<W, Inexact> {
         match &mesh.vertex_params {
             Some(a) => W::param(&crate::numeric::ParamValue::from_f64(a[v])),
             None => W::param(self.params.of(&ALPHA).expect("alpha has a default")),
@@ -86,52 +88,43 @@ impl UnifiedSqrt3 {
     }
 }
 
-/// The one-ring of an interior vertex of a triangle mesh: its neighbours.
-fn ring(mesh: &PolyMesh, v: usize) -> Option<Vec<usize>> {
-    let fan = super::uniform_fan(mesh, v, 3)?;
-    Some(fan.iter().map(|f| f[1]).collect())
+// The rules are a mask on the sqrt(3) host's slots: the vertex rule weighs v
+// and its ring, the face rule each corner P and P's ring (a 2-ring stencil of
+// the new face point), every slot at the valence n of its vertex P and with α
+// taken at P (`Slot::at`), exactly as a scheme file on that host does.
+impl Wants for UnifiedSqrt3 {
+    fn rule(&self, rule: &str) -> bool {
+        matches!(rule, "vertex" | "face")
+    }
+    fn family(&self, rule: &str, family: &str) -> bool {
+        matches!((rule, family), ("vertex", "centre" | "edge") | ("face", "corner" | "ring"))
+    }
+}
+
+impl<W: Weight> Mask<W> for UnifiedSqrt3 {
+    fn weight(&self, mesh: &PolyMesh, rule: &'static str, slot: &Slot) -> Result<W, Inexact> {
+        let at = slot.at.expect("every slot of the sqrt(3) host's rules belongs to a vertex");
+        let alpha: W = self.alpha(mesh, at)?;
+        let n = slot.n as i64;
+        let c = W::cos_2pi(1, n)?;
+        let one_minus = W::one() - alpha.clone();
+        let two_a_c = W::int(2) * alpha.clone() * c.clone();
+        Ok(match (rule, slot.family) {
+            // eq. (2): the old vertex relaxed
+            ("vertex", "centre") => (W::int(5) + W::int(4) * alpha + W::int(2) * one_minus * c) / W::int(9),
+            ("vertex", "edge") => one_minus * (W::int(4) - W::int(2) * c) / W::int(9 * n),
+            // eq. (1): the new face point, one term per corner P
+            ("face", "corner") => (W::int(9) + W::int(4) * alpha - two_a_c) / W::int(27),
+            ("face", "ring") => -((W::int(4) * alpha - two_a_c) / W::int(27 * n)),
+            // no weight on slots the mask does not use
+            _ => W::zero(),
+        })
+    }
 }
 
 impl<W: Weight> Rules<W> for UnifiedSqrt3 {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
-        Ok(match origin {
-            Origin::Face(f) => {
-                let face = mesh.face(f);
-                if face.len() != 3 {
-                    return Ok(None);
-                }
-                let mut s = Stencil::new();
-                for &p in face {
-                    let alpha: W = self.alpha(mesh, p)?;
-                    let Some(nb) = ring(mesh, p) else { return Ok(None) };
-                    let n = nb.len() as i64;
-                    let c = W::cos_2pi(1, n)?;
-                    let two_a_c = W::int(2) * alpha.clone() * c;
-                    s.add(p, (W::int(9) + W::int(4) * alpha.clone() - two_a_c.clone()) / W::int(27));
-                    let w = (W::int(4) * alpha.clone() - two_a_c) / W::int(27 * n);
-                    for q in nb {
-                        s.add(q, -w.clone());
-                    }
-                }
-                Some(s)
-            }
-            Origin::Vertex(v) => {
-                let alpha: W = self.alpha(mesh, v)?;
-                let Some(nb) = ring(mesh, v) else { return Ok(None) };
-                let n = nb.len() as i64;
-                let c = W::cos_2pi(1, n)?;
-                let one_minus = W::one() - alpha.clone();
-                let centre =
-                    (W::int(5) + W::int(4) * alpha.clone() + W::int(2) * one_minus.clone() * c.clone()) / W::int(9);
-                let w = one_minus * (W::int(4) - W::int(2) * c) / W::int(9 * n);
-                let mut s = Stencil::new().with(v, centre);
-                for q in nb {
-                    s.add(q, w.clone());
-                }
-                Some(s)
-            }
-            Origin::Edge(..) | Origin::Corner { .. } => None,
-        })
+        weigh(Host::Sqrt3, mesh, origin, self, &W::one())
     }
 }
 
