@@ -561,8 +561,6 @@ impl Host {
     }
 }
 
-/// Which rules and optional families a mask has: the gatherer collects only
-/// what is weighed (a 2-ring family costs a larger neighbourhood).
 /// A mask: a weight for every slot of the rules it has. Built-in schemes and
 /// scheme files are both masks over the same slots, so neither gathers
 /// neighbours itself: `weigh` gathers, the mask only weighs.
@@ -621,6 +619,8 @@ fn fill<W: Weight>(
     Ok(())
 }
 
+/// Which rules and optional families a mask has: the gatherer collects only
+/// what is weighed (a 2-ring family costs a larger neighbourhood).
 pub trait Wants {
     fn rule(&self, rule: &str) -> bool;
     fn family(&self, rule: &str, family: &str) -> bool;
