@@ -6,6 +6,7 @@
 //! applicable" instead of guessing.
 
 use std::collections::HashMap;
+use std::sync::OnceLock;
 
 use super::lattice::Chart;
 
@@ -20,6 +21,14 @@ pub struct PolyMesh {
     half_edges: HashMap<(VertexId, VertexId), (FaceId, usize)>,
     /// one face corner per vertex, to start walks around it
     vertex_corner: Vec<Option<(FaceId, usize)>>,
+    /// The fans of all interior vertices, walked once on first use: rules ask
+    /// for the fan of a high-valence centre once per face or edge around it,
+    /// and rebuilding it by half-edge walks each time made discovery
+    /// quadratic in the valence.
+    fans: OnceLock<FanTable>,
+    /// `face_points` holds a point for every face (cached: FCV rules ask on
+    /// every stencil, and scanning all faces each time was quadratic).
+    every_face_has_point: bool,
     /// Optional lattice chart (sector coordinates) used to label the vertices of
     /// analysis neighbourhoods; absent for user meshes.
     pub chart: Option<Chart>,
@@ -37,6 +46,15 @@ pub struct PolyMesh {
     /// per quad, the lattice direction of its first edge (corner 0 → 1) as
     /// 0 = +i, 1 = +j, 2 = −i, 3 = −j; edge k then has direction (d + k) mod 4.
     pub lattice_dirs: Option<Vec<u8>>,
+}
+
+/// Fans of all vertices in one flat list: vertex v's corners are
+/// `corners[start[v]..start[v + 1]]` (empty unless `closed[v]`).
+#[derive(Clone, Debug)]
+struct FanTable {
+    start: Vec<u32>,
+    corners: Vec<(FaceId, usize)>,
+    closed: Vec<bool>,
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -94,6 +112,8 @@ impl PolyMesh {
             num_vertices,
             half_edges,
             vertex_corner,
+            fans: OnceLock::new(),
+            every_face_has_point: false,
             chart: None,
             face_points: Vec::new(),
             vertex_params: None,
@@ -111,15 +131,16 @@ impl PolyMesh {
         {
             return Err(format!("face point {v} is missing or is a corner of a face"));
         }
+        self.every_face_has_point = !points.is_empty() && points.iter().all(Option::is_some);
         self.face_points = points;
         Ok(self)
     }
 
     /// Whether every face carries a face point (as face control vertex schemes need).
     pub fn has_face_point_on_every_face(&self) -> bool {
-        !self.faces.is_empty()
-            && self.face_points.len() == self.faces.len()
-            && self.face_points.iter().all(Option::is_some)
+        // the length check keeps the answer right if `face_points` was replaced
+        // wholesale after `with_face_points`
+        !self.faces.is_empty() && self.face_points.len() == self.faces.len() && self.every_face_has_point
     }
 
     /// Orient a closed regular quad mesh as a lattice: the first edge of face 0
@@ -281,30 +302,73 @@ impl PolyMesh {
     /// face's vertex cycle starting at `v`. `None` when `v` is on the boundary
     /// (its fan is open) or isolated.
     pub fn vertex_fan(&self, v: VertexId) -> Option<Vec<Vec<VertexId>>> {
-        let (f0, k0) = self.vertex_corner.get(v).copied().flatten()?;
-        let mut fan = Vec::new();
-        let (mut f, mut k) = (f0, k0);
-        loop {
-            let face = &self.faces[f];
-            fan.push(self.face_from(f, k));
-            // the previous vertex of this face around v; the next face CCW holds v -> prev
-            let prev = face[(k + face.len() - 1) % face.len()];
-            let (g, kg) = self.half_edge(v, prev)?;
-            if g == f0 {
-                break;
-            }
-            if fan.len() > self.faces.len() {
-                return None; // corrupt connectivity: never loop forever
-            }
-            f = g;
-            k = kg;
+        Some(self.fan_corners(v)?.iter().map(|&(f, k)| self.face_from(f, k)).collect())
+    }
+
+    /// The fan of `v` as (face, index of v in it), counter-clockwise from the
+    /// corner the walk starts at; `None` on the boundary. Cached for all
+    /// vertices at the first call.
+    pub fn fan_corners(&self, v: VertexId) -> Option<&[(FaceId, usize)]> {
+        if v >= self.num_vertices {
+            return None;
         }
-        Some(fan)
+        let t = self.fans.get_or_init(|| self.walk_fans());
+        let (a, b) = (t.start[v] as usize, t.start[v + 1] as usize);
+        t.closed[v].then(|| &t.corners[a..b])
+    }
+
+    /// The neighbours of `v` in fan order (the second corner of each fan face)
+    /// when every face around it has `size` corners; `None` on the boundary or
+    /// next to a face of another size.
+    pub fn uniform_ring(&self, v: VertexId, size: usize) -> Option<Vec<VertexId>> {
+        let fan = self.fan_corners(v)?;
+        fan.iter()
+            .map(|&(f, k)| {
+                let face = &self.faces[f];
+                (face.len() == size).then(|| face[(k + 1) % face.len()])
+            })
+            .collect()
+    }
+
+    fn walk_fans(&self) -> FanTable {
+        let mut t = FanTable {
+            start: Vec::with_capacity(self.num_vertices + 1),
+            corners: Vec::new(),
+            closed: vec![false; self.num_vertices],
+        };
+        for v in 0..self.num_vertices {
+            t.start.push(t.corners.len() as u32);
+            let Some((f0, k0)) = self.vertex_corner[v] else { continue };
+            let begin = t.corners.len();
+            let (mut f, mut k) = (f0, k0);
+            let closed = loop {
+                t.corners.push((f, k));
+                let face = &self.faces[f];
+                // the previous vertex of this face around v; the next face CCW holds v -> prev
+                let prev = face[(k + face.len() - 1) % face.len()];
+                let Some((g, kg)) = self.half_edge(v, prev) else { break false };
+                if g == f0 {
+                    break true;
+                }
+                if t.corners.len() - begin > self.faces.len() {
+                    break false; // corrupt connectivity: never loop forever
+                }
+                f = g;
+                k = kg;
+            };
+            if closed {
+                t.closed[v] = true;
+            } else {
+                t.corners.truncate(begin); // open fans are never handed out
+            }
+        }
+        t.start.push(t.corners.len() as u32);
+        t
     }
 
     /// Valence of an interior vertex (number of faces around it).
     pub fn valence(&self, v: VertexId) -> Option<usize> {
-        self.vertex_fan(v).map(|f| f.len())
+        self.fan_corners(v).map(<[_]>::len)
     }
 
     /// The faces that have `v` as a corner (works on the boundary too).

@@ -13,12 +13,13 @@
 //! evaluated; when one cannot, the patch grows by a ring and discovery restarts.
 
 use std::collections::{BTreeSet, HashMap, HashSet};
+use std::sync::Arc;
 
 use super::builder::build_patch;
 use super::configuration::Configuration;
 use super::labels::{canonical_order, label_vertices, VertexLabel};
 use crate::mesh::{LatticeCoord, PolyMesh};
-use crate::refine::{apply, Origin, SparseRow, Stencil};
+use crate::refine::{Combine, Origin, SparseRow, Stencil};
 use crate::schemes::{Scheme, SchemeWeight};
 use crate::topology::Refined;
 
@@ -48,8 +49,9 @@ pub struct Discovered {
     /// the refinements of one analysis step (one for binary schemes, two for
     /// sqrt(3) schemes, whose lattice only realigns after two steps)
     pub refinements: Vec<Refined>,
-    /// float stencils of each refinement (index k: level k+1 from level k)
-    pub stencils: Vec<Vec<Option<Stencil<f64>>>>,
+    /// float stencils of each refinement (index k: level k+1 from level k);
+    /// shared with the lazily assembled matrix (`matrix::local::lazy_full_f64`)
+    pub stencils: Arc<Vec<Vec<Option<Stencil<f64>>>>>,
     /// vertex of the last refinement with given lattice coordinates
     pub step_at: HashMap<LatticeCoord, usize>,
     /// level-0 vertex ids in canonical order
@@ -59,6 +61,13 @@ pub struct Discovered {
     pub patch_rings: usize,
     /// analysis steps after which the analysis set stopped growing
     pub analysis_levels: usize,
+    /// Rows over one analysis step (in level-0 vertices, f64) of the
+    /// successors of the level-0 vertices whose dependencies discovery
+    /// needed: the orbit representatives of both neighbourhoods when the
+    /// configuration is rotation-symmetric. These are the rows of S that the
+    /// Fourier blocks need, composed exactly as assembly composes them, so
+    /// assembly takes them from here instead of composing them again.
+    pub(crate) composite: HashMap<usize, SparseRow<f64>>,
 }
 
 impl Discovered {
@@ -83,6 +92,11 @@ impl Discovered {
         } else {
             &self.refinements[k - 1].mesh
         }
+    }
+    /// The f64 row over one analysis step of the successor of level-0 vertex
+    /// `v`, if discovery composed it.
+    pub(crate) fn composite_row(&self, v: usize) -> Option<&SparseRow<f64>> {
+        self.composite.get(&v)
     }
 }
 
@@ -120,17 +134,141 @@ pub fn discover(scheme: &dyn Scheme, config: &Configuration) -> Result<Discovere
 }
 
 fn stencils_f64(scheme: &dyn Scheme, mesh: &PolyMesh, refined: &Refined) -> Vec<Option<Stencil<f64>>> {
-    refined.vertex_origins.iter().map(|&o| <f64 as SchemeWeight>::stencil(scheme, mesh, o).ok().flatten()).collect()
+    refined.vertex_origins.iter().map(|&o| stencil_f64(scheme, mesh, o)).collect()
 }
 
-/// Stencils of the last level in terms of level-0 vertices, composed through
-/// the intermediate levels (sparse rows refined like points).
-fn compose(levels: &[Vec<Option<Stencil<f64>>>], level0: usize) -> Vec<Option<SparseRow<f64>>> {
-    let mut rows: Vec<Option<SparseRow<f64>>> = (0..level0).map(|v| Some(SparseRow::unit(v))).collect();
-    for st in levels {
-        rows = apply(st, &rows);
+fn stencil_f64(scheme: &dyn Scheme, mesh: &PolyMesh, o: Origin) -> Option<Stencil<f64>> {
+    <f64 as SchemeWeight>::stencil(scheme, mesh, o).ok().flatten()
+}
+
+/// The rotation of a charted mesh by `period` sectors (the configuration's
+/// symmetry) as a vertex map. Dependencies commute with it: the old vertices
+/// a rotated vertex depends on are the rotated dependencies. So sets that are
+/// unions of orbits (both neighbourhoods, the descendants of the first ring)
+/// are tracked by their representatives, the orbit members in sectors
+/// `0..period` (and the fixed centre): O(1) vertices per level instead of
+/// O(n), whose stencils near a valence-n centre have O(n) terms each.
+/// Without a usable chart, or without symmetry, every vertex represents
+/// itself and the same code tracks whole sets.
+pub(crate) struct Rotation {
+    /// per vertex: its representative and the number of period-turns from it
+    rep: Vec<(usize, usize)>,
+    /// per representative: the orbit, in turn order (empty for non-representatives)
+    orbit: Vec<Vec<usize>>,
+}
+
+impl Rotation {
+    fn identity(size: usize) -> Rotation {
+        Rotation { rep: (0..size).map(|v| (v, 0)).collect(), orbit: (0..size).map(|v| vec![v]).collect() }
     }
-    rows
+
+    /// The rotation of `mesh` by `period` sectors; the identity when it has
+    /// no chart, no symmetry, or a vertex whose rotated copies are not all in
+    /// the mesh (then orbits could not be rebuilt from representatives).
+    pub(crate) fn new(mesh: &PolyMesh, period: usize) -> Rotation {
+        let size = mesh.num_vertices();
+        let Some(chart) = mesh.chart.as_ref() else { return Rotation::identity(size) };
+        let n = chart.sectors();
+        if period == 0 || period >= n || !n.is_multiple_of(period) {
+            return Rotation::identity(size);
+        }
+        let g = n / period;
+        let at: HashMap<LatticeCoord, usize> = chart.vertex_coords.iter().enumerate().map(|(v, c)| (*c, v)).collect();
+        if at.len() != size {
+            return Rotation::identity(size); // coordinates do not identify vertices
+        }
+        let mut rep = vec![(usize::MAX, 0); size];
+        let mut orbit = vec![Vec::new(); size];
+        for (v, c) in chart.vertex_coords.iter().enumerate() {
+            if c.is_centre() {
+                rep[v] = (v, 0);
+                orbit[v] = vec![v];
+                continue;
+            }
+            if c.sector >= period {
+                continue;
+            }
+            let mut members = Vec::with_capacity(g);
+            for t in 0..g {
+                let Some(&u) = at.get(&LatticeCoord { sector: c.sector + t * period, ..*c }) else {
+                    return Rotation::identity(size);
+                };
+                rep[u] = (v, t);
+                members.push(u);
+            }
+            orbit[v] = members;
+        }
+        if rep.iter().any(|r| r.0 == usize::MAX) {
+            return Rotation::identity(size);
+        }
+        Rotation { rep, orbit }
+    }
+
+    pub(crate) fn rep(&self, v: usize) -> usize {
+        self.rep[v].0
+    }
+
+    /// All members of the orbit of representative `r`.
+    pub(crate) fn orbit(&self, r: usize) -> &[usize] {
+        &self.orbit[r]
+    }
+}
+
+/// Rows over the analysis step of last-level vertices in terms of level-0
+/// vertices, composed on demand through the intermediate levels (sparse rows
+/// refined like points) and memoised per level: a valence-n centre's ring is
+/// shared by the rows of several representatives.
+struct Composer<'a> {
+    levels: &'a [Vec<Option<Stencil<f64>>>],
+    /// memo[k][v]: row of vertex v after refinement k+1 (None inside: not composable)
+    memo: Vec<HashMap<usize, Option<SparseRow<f64>>>>,
+}
+
+impl<'a> Composer<'a> {
+    fn new(levels: &'a [Vec<Option<Stencil<f64>>>]) -> Self {
+        Composer { levels, memo: vec![HashMap::new(); levels.len()] }
+    }
+
+    /// The row of vertex v after refinement k+1. Same arithmetic, in the same
+    /// order, as applying the stencils level by level to unit rows.
+    fn row(&mut self, k: usize, v: usize) -> Option<&SparseRow<f64>> {
+        self.ensure(k, v);
+        self.memo[k][&v].as_ref()
+    }
+
+    fn ensure(&mut self, k: usize, v: usize) {
+        if self.memo[k].contains_key(&v) {
+            return;
+        }
+        let Some(st) = self.levels[k].get(v).and_then(Option::as_ref) else {
+            self.memo[k].insert(v, None);
+            return;
+        };
+        let row = if k == 0 {
+            let units: Vec<SparseRow<f64>> = st.terms.iter().map(|&(u, _)| SparseRow::unit(u)).collect();
+            let terms: Vec<(f64, &SparseRow<f64>)> = st.terms.iter().map(|t| t.1).zip(&units).collect();
+            Some(SparseRow::combine(&terms))
+        } else {
+            st.terms.iter().for_each(|&(u, _)| self.ensure(k - 1, u));
+            let (below, here) = self.memo.split_at_mut(k);
+            let below = &below[k - 1];
+            let terms: Option<Vec<(f64, &SparseRow<f64>)>> =
+                st.terms.iter().map(|&(u, w)| below[&u].as_ref().map(|r| (w, r))).collect();
+            let row = terms.map(|t| SparseRow::combine(&t));
+            here[0].insert(v, row);
+            return;
+        };
+        self.memo[k].insert(v, row);
+    }
+}
+
+/// One refinement of the search for the analysis neighbourhood past the
+/// first analysis step: stencils are evaluated only for the vertices the
+/// backward walk reaches (representatives), on the mesh they refine.
+struct LazyLevel {
+    before: PolyMesh,
+    origins: Vec<Origin>,
+    memo: HashMap<usize, Option<Stencil<f64>>>,
 }
 
 /// One attempt on a patch of `rings` rings. With `prune`, refined meshes past
@@ -158,24 +296,29 @@ fn try_discover(
     let last = &refinements[steps - 1];
     let chart = last.mesh.chart.as_ref().ok_or("refined patch lost its lattice chart")?;
     let step_at: HashMap<LatticeCoord, usize> = chart.vertex_coords.iter().enumerate().map(|(i, c)| (*c, i)).collect();
-    let composite = compose(&stencils_by_level, patch.num_vertices());
     let chart0 = patch.chart.as_ref().expect("patch has a chart");
-
-    // D(v): old vertices on which the successor of v depends
-    let dep = |v: usize| -> Option<Vec<usize>> {
-        let w = *step_at.get(&chart0.vertex_coords[v])?;
-        Some(composite[w].as_ref()?.entries.iter().map(|e| e.0).collect())
-    };
-    let closure = |start: &mut dyn Iterator<Item = usize>| -> Result<BTreeSet<usize>, String> {
+    let n = config.valence();
+    // asymmetric rules have no rotation symmetry, whatever the configuration
+    let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { n };
+    let rot0 = Rotation::new(&patch, period);
+    let mut composer = Composer::new(&stencils_by_level);
+    // D(v) for representatives v: old vertices on which the successor of v depends
+    let mut deps: HashMap<usize, Vec<usize>> = HashMap::new();
+    let mut closure = |start: &mut dyn Iterator<Item = usize>| -> Result<BTreeSet<usize>, String> {
         let mut set: BTreeSet<usize> = BTreeSet::new();
-        let mut stack: Vec<usize> = start.collect();
+        let mut stack: Vec<usize> = start.map(|v| rot0.rep(v)).collect();
         while let Some(v) = stack.pop() {
             if !set.insert(v) {
                 continue;
             }
-            let d =
-                dep(v).ok_or_else(|| format!("rule for {} not evaluable in a {rings}-ring patch", labels[v].name))?;
-            stack.extend(d.into_iter().filter(|u| !set.contains(u)));
+            if !deps.contains_key(&v) {
+                let row = step_at
+                    .get(&chart0.vertex_coords[v])
+                    .and_then(|&w| composer.row(steps - 1, w).map(|r| r.entries.iter().map(|e| e.0).collect()))
+                    .ok_or_else(|| format!("rule for {} not evaluable in a {rings}-ring patch", labels[v].name))?;
+                deps.insert(v, row);
+            }
+            stack.extend(deps[&v].iter().map(|&u| rot0.rep(u)).filter(|r| !set.contains(r)));
         }
         Ok(set)
     };
@@ -186,12 +329,15 @@ fn try_discover(
     // Dependencies are tracked backwards: mark the first-ring vertices after r
     // refinements, then walk the stencils of refinements r, r-1, ..., 1 down to
     // level 0. This is linear in the stencil sizes (forward dependency sets
-    // would cost O(n^3) at the dense central face of a dual scheme).
+    // would cost O(n^3) at the dense central face of a dual scheme), and only
+    // representatives are walked (see `Rotation`).
     // the first ring: faces touching ring 0 (or deeper rings, see `CentreKind::first_ring_depth`)
     let depth = config.centre.first_ring_depth();
     let mut region_faces: Vec<bool> =
         patch.faces().iter().map(|f| f.iter().any(|&v| labels[v].ring <= depth)).collect();
-    let mut all_stencils = stencils_by_level.clone();
+    let mut lazy: Vec<LazyLevel> = Vec::new();
+    // rots[k - 1]: rotation of the mesh after k refinements (pruned when it was)
+    let mut rots: Vec<Rotation> = Vec::new();
     let mut collected: BTreeSet<usize> = BTreeSet::new();
     let mut previous: Option<BTreeSet<usize>> = None;
     let mut analysis = None;
@@ -201,17 +347,18 @@ fn try_discover(
     // are kept: the mesh would otherwise grow geometrically with the level,
     // while the backward walk below only ever reaches a bounded number of
     // rings around the (shrinking) region. `relabel[k]`: for the mesh after
-    // refinement k+1, the id each kept vertex had before pruning; `sizes[k]`:
-    // the vertex count of the mesh refinement k+1 started from.
+    // refinement k+1, the id each kept vertex had before pruning.
     let mut relabel: Vec<Option<Vec<usize>>> = Vec::new();
-    let mut sizes: Vec<usize> = Vec::new();
     for r in 1..=MAX_LEVELS * steps {
-        sizes.push(mesh_k.num_vertices());
         let refined = if r <= steps {
             refinements[r - 1].clone()
         } else {
             let refined = topology.refine(&mesh_k)?;
-            all_stencils.push(stencils_f64(scheme, &mesh_k, &refined));
+            lazy.push(LazyLevel {
+                before: mesh_k.clone(),
+                origins: refined.vertex_origins.clone(),
+                memo: HashMap::new(),
+            });
             refined
         };
         let in_region = region_entities(&mesh_k, &region_faces);
@@ -233,38 +380,43 @@ fn try_discover(
         } else {
             relabel.push(None);
         }
+        rots.push(Rotation::new(&mesh_k, period));
         if r % steps != 0 {
             continue; // only whole analysis steps are compared
         }
-        let mut marked = vec![false; mesh_k.num_vertices()];
+        // representatives of the region's vertices after r refinements
+        let mut marked: BTreeSet<usize> = BTreeSet::new();
         for (f, face) in mesh_k.faces().iter().enumerate() {
             if region_faces[f] {
-                face.iter().for_each(|&v| marked[v] = true);
+                marked.extend(face.iter().map(|&v| rots[r - 1].rep(v)));
                 if let Some(p) = mesh_k.face_point(f) {
-                    marked[p] = true;
+                    marked.insert(rots[r - 1].rep(p));
                 }
             }
         }
         for k in (0..r).rev() {
-            let st = &all_stencils[k];
-            if let Some(old) = &relabel[k] {
-                // back to the ids of the unpruned refinement, which `st` indexes
-                let mut full = vec![false; st.len()];
-                old.iter().zip(&marked).filter(|(_, m)| **m).for_each(|(&o, _)| full[o] = true);
-                marked = full;
-            }
-            let mut marked_below = vec![false; sizes[k]];
-            for (v, _) in marked.iter().enumerate().filter(|(_, m)| **m) {
-                let Some(stencil) = st[v].as_ref() else {
+            let mut marked_below = BTreeSet::new();
+            for &v in &marked {
+                // back to the id of the unpruned refinement, which stencils index
+                let v = relabel[k].as_ref().map_or(v, |old| old[v]);
+                let stencil = if k < steps {
+                    stencils_by_level[k][v].as_ref()
+                } else {
+                    let level = &mut lazy[k - steps];
+                    let (before, origin) = (&level.before, level.origins[v]);
+                    level.memo.entry(v).or_insert_with(|| stencil_f64(scheme, before, origin)).as_ref()
+                };
+                let Some(stencil) = stencil else {
                     // the mesh this stencil is evaluated on was pruned
                     *blame_pruning |= k >= 1 && relabel[k - 1].is_some();
                     return Err(format!("first-ring vertex after {r} steps not evaluable in a {rings}-ring patch"));
                 };
-                stencil.support().for_each(|u| marked_below[u] = true);
+                let below = if k == 0 { &rot0 } else { &rots[k - 1] };
+                marked_below.extend(stencil.support().map(|u| below.rep(u)));
             }
             marked = marked_below;
         }
-        collected.extend(marked.iter().enumerate().filter(|(_, m)| **m).map(|(u, _)| u));
+        collected.extend(marked);
         let closed = closure(&mut collected.iter().copied())?;
         levels_used = r / steps;
         if levels_used >= 2 && previous.as_ref() == Some(&closed) {
@@ -274,21 +426,34 @@ fn try_discover(
         previous = Some(closed);
     }
     let analysis = analysis.or(previous).expect("at least one level");
-    let mut minimal: Vec<usize> = minimal.into_iter().collect();
-    let mut analysis: Vec<usize> = analysis.into_iter().collect();
-    canonical_order(&labels, &mut minimal);
-    canonical_order(&labels, &mut analysis);
+    let expand = |reps: BTreeSet<usize>| -> Vec<usize> {
+        let mut all: Vec<usize> = reps.iter().flat_map(|&r| rot0.orbit(r).iter().copied()).collect();
+        canonical_order(&labels, &mut all);
+        all
+    };
+    let minimal = expand(minimal);
+    let analysis = expand(analysis);
+    // the composed rows of the last level, keyed by the level-0 vertex they belong to
+    let last_rows = composer.memo.pop().expect("one level at least");
+    let composite = deps
+        .keys()
+        .filter_map(|&v| {
+            let w = step_at.get(&chart0.vertex_coords[v])?;
+            Some((v, last_rows.get(w)?.clone()?))
+        })
+        .collect();
     Ok(Discovered {
         config: config.clone(),
         patch,
         labels,
         refinements,
-        stencils: stencils_by_level,
+        stencils: Arc::new(stencils_by_level),
         step_at,
         minimal,
         analysis,
         patch_rings: rings,
         analysis_levels: levels_used,
+        composite,
     })
 }
 

@@ -70,8 +70,9 @@ impl UnifiedSqrt3 {
 
 /// The one-ring of an interior vertex of a triangle mesh: its neighbours.
 fn ring(mesh: &PolyMesh, v: usize) -> Option<Vec<usize>> {
-    let fan = super::uniform_fan(mesh, v, 3)?;
-    Some(fan.iter().map(|f| f[1]).collect())
+    // read from the mesh's cached fans: the face rule asks for the centre's
+    // ring once per face around it
+    mesh.uniform_ring(v, 3)
 }
 
 impl<W: Weight> Rules<W> for UnifiedSqrt3 {
