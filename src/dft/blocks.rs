@@ -100,28 +100,45 @@ pub fn fourier_blocks_from_rows(rows: &[&[(usize, f64)]], orbits: &Orbits) -> Ve
     // ω^k for every k: the same values `omega_pow` gives (it depends on m·t
     // mod g only), computed once instead of a cos and sin per entry and block
     let powers: Vec<c64> = (0..g).map(|k| omega_pow(k, 1, g)).collect();
-    (0..g)
-        .map(|m| {
-            let list = orbits.block_orbits(m);
-            let mut pos = vec![usize::MAX; orbits.num_orbits()];
-            for (k, &o) in list.iter().enumerate() {
-                pos[o] = k;
+    // per row entry: column orbit, τ, weight, and k = m·τ mod g for the
+    // current block m, advanced by τ from block to block (a division per
+    // entry and block would cost more than the rest of the sum)
+    let entries: Vec<Vec<(usize, usize, f64)>> = rows
+        .iter()
+        .map(|row| row.iter().map(|&(col, w)| (orbits.member[col].0, orbits.member[col].1, w)).collect())
+        .collect();
+    let mut turn: Vec<Vec<usize>> = entries.iter().map(|r| vec![0; r.len()]).collect();
+    let mut blocks = Vec::with_capacity(g);
+    for m in 0..g {
+        let list = orbits.block_orbits(m);
+        let mut pos = vec![usize::MAX; orbits.num_orbits()];
+        for (k, &o) in list.iter().enumerate() {
+            pos[o] = k;
+        }
+        let size = list.len();
+        let mut acc = vec![c64::new(0.0, 0.0); size * size];
+        for (ra, &a) in list.iter().enumerate() {
+            for (&(ob, _, w), &k) in entries[a].iter().zip(&turn[a]) {
+                let cb = pos[ob];
+                if cb == usize::MAX {
+                    continue; // a fixed point's column outside block 0: its contribution sums to zero
+                }
+                let factor = if orbits.fixed[ob] { c64::new(1.0, 0.0) } else { powers[k] };
+                acc[ra * size + cb] += factor * w;
             }
-            let mut b = Mat::<c64>::zeros(list.len(), list.len());
-            for (ra, &a) in list.iter().enumerate() {
-                for &(col, w) in rows[a] {
-                    let (ob, tau) = orbits.member[col];
-                    let cb = pos[ob];
-                    if cb == usize::MAX {
-                        continue; // a fixed point's column outside block 0: its contribution sums to zero
-                    }
-                    let factor = if orbits.fixed[ob] { c64::new(1.0, 0.0) } else { powers[(m * tau) % g] };
-                    b[(ra, cb)] += factor * w;
+        }
+        for (row, ks) in entries.iter().zip(&mut turn) {
+            for (&(_, tau, _), k) in row.iter().zip(ks.iter_mut()) {
+                *k += tau;
+                if *k >= g {
+                    *k -= g;
                 }
             }
-            FourierBlock { index: m, orbits: list, matrix: b }
-        })
-        .collect()
+        }
+        let matrix = Mat::<c64>::from_fn(size, size, |i, j| acc[i * size + j]);
+        blocks.push(FourierBlock { index: m, orbits: list, matrix });
+    }
+    blocks
 }
 
 /// Block 0 in exact arithmetic (real and rational when S is).

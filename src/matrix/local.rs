@@ -114,7 +114,7 @@ pub fn assemble_rows_f64(
 
 /// Rows over level-0 vertices to rows over the neighbourhood's positions.
 fn restrict<W: Weight>(set: &[usize], raw: Vec<Vec<(usize, W)>>) -> Result<Vec<Vec<(usize, W)>>, AssembleError> {
-    let position: std::collections::HashMap<usize, usize> = set.iter().enumerate().map(|(k, &v)| (v, k)).collect();
+    let position: crate::mesh::IdMap<usize, usize> = set.iter().enumerate().map(|(k, &v)| (v, k)).collect();
     let mut rows = Vec::with_capacity(raw.len());
     for row_w in raw {
         let mut row: Vec<(usize, W)> = Vec::with_capacity(row_w.len());
@@ -165,9 +165,9 @@ fn step_rows_over<W: Weight>(
         needed[k - 1] = (0..mark.len()).filter(|&u| mark[u]).collect();
     }
     // rows[v] at the current level, over level-0 vertices
-    let mut rows: std::collections::HashMap<usize, SparseRow<W>> = Default::default();
+    let mut rows: crate::mesh::IdMap<usize, SparseRow<W>> = Default::default();
     for k in 0..steps {
-        let mut next = std::collections::HashMap::new();
+        let mut next = crate::mesh::IdMap::default();
         for &v in &needed[k] {
             if next.contains_key(&v) {
                 continue; // a target listed twice

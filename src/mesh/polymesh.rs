@@ -5,7 +5,8 @@
 //! one-ring return `None` there, which the refinement marks as "rule not
 //! applicable" instead of guessing.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
+use std::hash::{BuildHasherDefault, Hasher};
 use std::sync::OnceLock;
 
 use super::lattice::Chart;
@@ -13,19 +14,81 @@ use super::lattice::Chart;
 pub type VertexId = usize;
 pub type FaceId = usize;
 
+/// A multiplicative (Fx-style) hasher for the small integer keys of mesh
+/// code: vertex ids, pairs of them, origins, lattice coordinates. std's
+/// SipHash guards against adversarial keys, which these are not, at several
+/// times the cost, and half-edge and origin look-ups are most of the work of
+/// building and refining the O(n)-vertex neighbourhoods of valence n.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct IdHasher(u64);
+
+const ID_HASH_K: u64 = 0x517c_c1b7_2722_0a95;
+
+impl IdHasher {
+    #[inline]
+    fn add(&mut self, word: u64) {
+        self.0 = (self.0.rotate_left(5) ^ word).wrapping_mul(ID_HASH_K);
+    }
+}
+
+impl Hasher for IdHasher {
+    #[inline]
+    fn write(&mut self, bytes: &[u8]) {
+        for chunk in bytes.chunks(8) {
+            let mut word = [0u8; 8];
+            word[..chunk.len()].copy_from_slice(chunk);
+            self.add(u64::from_le_bytes(word));
+        }
+    }
+    #[inline]
+    fn write_u8(&mut self, n: u8) {
+        self.add(n as u64);
+    }
+    #[inline]
+    fn write_u32(&mut self, n: u32) {
+        self.add(n as u64);
+    }
+    #[inline]
+    fn write_u64(&mut self, n: u64) {
+        self.add(n);
+    }
+    #[inline]
+    fn write_usize(&mut self, n: usize) {
+        self.add(n as u64);
+    }
+    #[inline]
+    fn write_i64(&mut self, n: i64) {
+        self.add(n as u64);
+    }
+    #[inline]
+    fn write_isize(&mut self, n: isize) {
+        self.add(n as u64);
+    }
+    #[inline]
+    fn finish(&self) -> u64 {
+        self.0
+    }
+}
+
+pub type IdBuild = BuildHasherDefault<IdHasher>;
+/// A `HashMap` with [`IdHasher`] (iteration order is unspecified, as for any
+/// `HashMap`; mesh code only looks keys up).
+pub type IdMap<K, V> = HashMap<K, V, IdBuild>;
+pub type IdSet<K> = HashSet<K, IdBuild>;
+
 #[derive(Clone, Debug)]
 pub struct PolyMesh {
     faces: Vec<Vec<VertexId>>,
     num_vertices: usize,
     /// half-edge (a -> b) -> (face, index of a in that face)
-    half_edges: HashMap<(VertexId, VertexId), (FaceId, usize)>,
+    half_edges: IdMap<(VertexId, VertexId), (FaceId, usize)>,
     /// one face corner per vertex, to start walks around it
     vertex_corner: Vec<Option<(FaceId, usize)>>,
-    /// The fans of all interior vertices, walked once on first use: rules ask
-    /// for the fan of a high-valence centre once per face or edge around it,
-    /// and rebuilding it by half-edge walks each time made discovery
-    /// quadratic in the valence.
-    fans: OnceLock<FanTable>,
+    /// The fan of each vertex as (face, corner) pairs, walked on first use
+    /// (None inside: an open fan): rules ask for the fan of a high-valence
+    /// centre once per face or edge around it, and rebuilding it by half-edge
+    /// walks each time made discovery quadratic in the valence.
+    fans: Vec<OnceLock<Option<Box<[(FaceId, usize)]>>>>,
     /// `face_points` holds a point for every face (cached: FCV rules ask on
     /// every stencil, and scanning all faces each time was quadratic).
     every_face_has_point: bool,
@@ -46,15 +109,6 @@ pub struct PolyMesh {
     /// per quad, the lattice direction of its first edge (corner 0 → 1) as
     /// 0 = +i, 1 = +j, 2 = −i, 3 = −j; edge k then has direction (d + k) mod 4.
     pub lattice_dirs: Option<Vec<u8>>,
-}
-
-/// Fans of all vertices in one flat list: vertex v's corners are
-/// `corners[start[v]..start[v + 1]]` (empty unless `closed[v]`).
-#[derive(Clone, Debug)]
-struct FanTable {
-    start: Vec<u32>,
-    corners: Vec<(FaceId, usize)>,
-    closed: Vec<bool>,
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -85,7 +139,7 @@ impl std::error::Error for MeshError {}
 
 impl PolyMesh {
     pub fn new(num_vertices: usize, faces: Vec<Vec<VertexId>>) -> Result<Self, MeshError> {
-        let mut half_edges = HashMap::with_capacity(faces.iter().map(|f| f.len()).sum());
+        let mut half_edges = IdMap::with_capacity_and_hasher(faces.iter().map(|f| f.len()).sum(), IdBuild::default());
         let mut vertex_corner = vec![None; num_vertices];
         for (fi, face) in faces.iter().enumerate() {
             if face.len() < 3 {
@@ -112,7 +166,7 @@ impl PolyMesh {
             num_vertices,
             half_edges,
             vertex_corner,
-            fans: OnceLock::new(),
+            fans: (0..num_vertices).map(|_| OnceLock::new()).collect(),
             every_face_has_point: false,
             chart: None,
             face_points: Vec::new(),
@@ -309,12 +363,7 @@ impl PolyMesh {
     /// corner the walk starts at; `None` on the boundary. Cached for all
     /// vertices at the first call.
     pub fn fan_corners(&self, v: VertexId) -> Option<&[(FaceId, usize)]> {
-        if v >= self.num_vertices {
-            return None;
-        }
-        let t = self.fans.get_or_init(|| self.walk_fans());
-        let (a, b) = (t.start[v] as usize, t.start[v + 1] as usize);
-        t.closed[v].then(|| &t.corners[a..b])
+        self.fans.get(v)?.get_or_init(|| self.walk_fan(v)).as_deref()
     }
 
     /// The neighbours of `v` in fan order (the second corner of each fan face)
@@ -330,40 +379,25 @@ impl PolyMesh {
             .collect()
     }
 
-    fn walk_fans(&self) -> FanTable {
-        let mut t = FanTable {
-            start: Vec::with_capacity(self.num_vertices + 1),
-            corners: Vec::new(),
-            closed: vec![false; self.num_vertices],
-        };
-        for v in 0..self.num_vertices {
-            t.start.push(t.corners.len() as u32);
-            let Some((f0, k0)) = self.vertex_corner[v] else { continue };
-            let begin = t.corners.len();
-            let (mut f, mut k) = (f0, k0);
-            let closed = loop {
-                t.corners.push((f, k));
-                let face = &self.faces[f];
-                // the previous vertex of this face around v; the next face CCW holds v -> prev
-                let prev = face[(k + face.len() - 1) % face.len()];
-                let Some((g, kg)) = self.half_edge(v, prev) else { break false };
-                if g == f0 {
-                    break true;
-                }
-                if t.corners.len() - begin > self.faces.len() {
-                    break false; // corrupt connectivity: never loop forever
-                }
-                f = g;
-                k = kg;
-            };
-            if closed {
-                t.closed[v] = true;
-            } else {
-                t.corners.truncate(begin); // open fans are never handed out
+    fn walk_fan(&self, v: VertexId) -> Option<Box<[(FaceId, usize)]>> {
+        let (f0, k0) = self.vertex_corner[v]?;
+        let mut fan = Vec::new();
+        let (mut f, mut k) = (f0, k0);
+        loop {
+            fan.push((f, k));
+            let face = &self.faces[f];
+            // the previous vertex of this face around v; the next face CCW holds v -> prev
+            let prev = face[(k + face.len() - 1) % face.len()];
+            let (g, kg) = self.half_edge(v, prev)?;
+            if g == f0 {
+                return Some(fan.into_boxed_slice());
             }
+            if fan.len() > self.faces.len() {
+                return None; // corrupt connectivity: never loop forever
+            }
+            f = g;
+            k = kg;
         }
-        t.start.push(t.corners.len() as u32);
-        t
     }
 
     /// Valence of an interior vertex (number of faces around it).

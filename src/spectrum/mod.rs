@@ -371,12 +371,33 @@ fn synthesise(x: &[c64], m: usize, block_orbits: &[usize], orbits: &Orbits, size
         .collect()
 }
 
-/// Merge equal eigenvalues found in different blocks.
+/// Merge equal eigenvalues found in different blocks: each joins the first
+/// earlier distinct value within the tolerance. Candidates are looked up in
+/// buckets of the real part (a match is at most the tolerance away in it), so
+/// n blocks' eigenvalues are not each compared with every distinct one.
 fn merge(list: Vec<Eigenvalue>) -> Vec<Eigenvalue> {
+    const BUCKET: f64 = 1e-6;
+    const MAX_SPAN: f64 = 64.0;
     let mut out: Vec<Eigenvalue> = Vec::new();
+    let mut buckets: std::collections::HashMap<i64, Vec<usize>> = std::collections::HashMap::new();
+    let key = |re: f64| (re / BUCKET).floor() as i64;
     for e in list {
         let z = e.value();
-        if let Some(t) = out.iter_mut().find(|t| (t.value() - z).norm() < MERGE_TOL * z.norm().max(1.0)) {
+        let tol = MERGE_TOL * z.norm().max(1.0);
+        let close = |t: &Eigenvalue| (t.value() - z).norm() < tol;
+        let found = if (tol / BUCKET) < MAX_SPAN && z.re.is_finite() {
+            // the first (lowest index) match among the buckets the tolerance
+            // reaches, one more on each side against rounding at the edges
+            (key(z.re - tol) - 1..=key(z.re + tol) + 1)
+                .filter_map(|b| buckets.get(&b))
+                .flat_map(|ids| ids.iter().copied())
+                .filter(|&i| close(&out[i]))
+                .min()
+        } else {
+            out.iter().position(close)
+        };
+        if let Some(i) = found {
+            let t = &mut out[i];
             t.algebraic_multiplicity += e.algebraic_multiplicity;
             t.geometric_multiplicity += e.geometric_multiplicity;
             t.defective |= e.defective;
@@ -385,6 +406,7 @@ fn merge(list: Vec<Eigenvalue>) -> Vec<Eigenvalue> {
             t.block = t.blocks[0];
             t.vectors.extend(e.vectors);
         } else {
+            buckets.entry(key(z.re)).or_default().push(out.len());
             out.push(e);
         }
     }

@@ -16,7 +16,7 @@
 //! near x on the radial edge to ring r + 1 and r − 1 get rings 2r and 2r − 1
 //! (one ring per radial half-segment), the spoke points ring 1, the pole stays at 0.
 
-use std::collections::HashMap;
+use crate::mesh::IdMap;
 
 use super::{ChartBuilder, Refined};
 use crate::mesh::PolyMesh;
@@ -38,15 +38,14 @@ fn key(a: usize, b: usize) -> (usize, usize) {
 }
 
 /// Radial (true) or circumferential (false) for every edge.
-fn classify(mesh: &PolyMesh, pole: &[bool]) -> Result<HashMap<(usize, usize), bool>, String> {
-    let mut radial: HashMap<(usize, usize), bool> = HashMap::new();
+fn classify(mesh: &PolyMesh, pole: &[bool]) -> Result<IdMap<(usize, usize), bool>, String> {
+    let mut radial: IdMap<(usize, usize), bool> = IdMap::default();
     let not_polar = |f: usize, why: &str| format!("not a polar net: face {} {why}", f + 1);
-    let set = |map: &mut HashMap<(usize, usize), bool>, a: usize, b: usize, r: bool, f: usize| match map
-        .insert(key(a, b), r)
-    {
-        Some(old) if old != r => Err(not_polar(f, "has an edge that is both radial and circumferential")),
-        _ => Ok(()),
-    };
+    let set =
+        |map: &mut IdMap<(usize, usize), bool>, a: usize, b: usize, r: bool, f: usize| match map.insert(key(a, b), r) {
+            Some(old) if old != r => Err(not_polar(f, "has an edge that is both radial and circumferential")),
+            _ => Ok(()),
+        };
     for (f, face) in mesh.faces().iter().enumerate() {
         match face.len() {
             3 => {
@@ -92,7 +91,7 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
     let pole = poles(mesh);
     let radial = classify(mesh, &pole)?;
     let mut origins: Vec<Origin> = Vec::new();
-    let mut ids: HashMap<Origin, usize> = HashMap::new();
+    let mut ids: IdMap<Origin, usize> = IdMap::default();
     let mut id = |o: Origin, origins: &mut Vec<Origin>| {
         *ids.entry(o).or_insert_with(|| {
             origins.push(o);
