@@ -166,9 +166,9 @@ fn step_rows_over<W: Weight>(
     }
     // rows[v] at the current level, over level-0 vertices
     let mut rows: crate::mesh::IdMap<usize, SparseRow<W>> = Default::default();
-    for k in 0..steps {
+    for (k, level) in needed.iter().enumerate() {
         let mut next = crate::mesh::IdMap::default();
-        for &v in &needed[k] {
+        for &v in level {
             if next.contains_key(&v) {
                 continue; // a target listed twice
             }

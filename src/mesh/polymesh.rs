@@ -70,6 +70,9 @@ impl Hasher for IdHasher {
     }
 }
 
+/// A vertex's fan as (face, corner) pairs counter-clockwise; None when open.
+type Fan = Option<Box<[(FaceId, usize)]>>;
+
 pub type IdBuild = BuildHasherDefault<IdHasher>;
 /// A `HashMap` with [`IdHasher`] (iteration order is unspecified, as for any
 /// `HashMap`; mesh code only looks keys up).
@@ -88,7 +91,7 @@ pub struct PolyMesh {
     /// (None inside: an open fan): rules ask for the fan of a high-valence
     /// centre once per face or edge around it, and rebuilding it by half-edge
     /// walks each time made discovery quadratic in the valence.
-    fans: Vec<OnceLock<Option<Box<[(FaceId, usize)]>>>>,
+    fans: Vec<OnceLock<Fan>>,
     /// `face_points` holds a point for every face (cached: FCV rules ask on
     /// every stencil, and scanning all faces each time was quadratic).
     every_face_has_point: bool,
@@ -379,7 +382,7 @@ impl PolyMesh {
             .collect()
     }
 
-    fn walk_fan(&self, v: VertexId) -> Option<Box<[(FaceId, usize)]>> {
+    fn walk_fan(&self, v: VertexId) -> Fan {
         let (f0, k0) = self.vertex_corner[v]?;
         let mut fan = Vec::new();
         let (mut f, mut k) = (f0, k0);

@@ -355,12 +355,12 @@ fn try_discover(
             if !set.insert(v) {
                 continue;
             }
-            if !deps.contains_key(&v) {
+            if let std::collections::hash_map::Entry::Vacant(slot) = deps.entry(v) {
                 let row = step_at
                     .get(&chart0.vertex_coords[v])
                     .and_then(|&w| composer.row(steps - 1, w).map(|r| r.entries.iter().map(|e| e.0).collect()))
                     .ok_or_else(|| format!("rule for {} not evaluable in a {rings}-ring patch", labels[v].name))?;
-                deps.insert(v, row);
+                slot.insert(row);
             }
             stack.extend(deps[&v].iter().map(|&u| rot0.rep(u)).filter(|r| !set.contains(r)));
         }
