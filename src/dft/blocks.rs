@@ -98,37 +98,48 @@ pub fn fourier_blocks(s: &LocalMatrix<f64>, orbits: &Orbits) -> Vec<FourierBlock
 pub fn fourier_blocks_from_rows(rows: &[&[(usize, f64)]], orbits: &Orbits) -> Vec<FourierBlock> {
     let g = orbits.group_order;
     // ω^k for every k: the same values `omega_pow` gives (it depends on m·t
-    // mod g only), computed once instead of a cos and sin per entry and block
+    // mod g only), computed once instead of a cos and sin per entry and block.
+    // A fixed point's column has τ = 0, so its factor is ω^0 = 1 exactly.
     let powers: Vec<c64> = (0..g).map(|k| omega_pow(k, 1, g)).collect();
-    // per row entry: column orbit, τ, weight, and k = m·τ mod g for the
-    // current block m, advanced by τ from block to block (a division per
-    // entry and block would cost more than the rest of the sum)
-    let entries: Vec<Vec<(usize, usize, f64)>> = rows
+    // block coordinates: block 0 holds every orbit, the others all but the fixed ones
+    let position = |m: usize| {
+        let mut pos = vec![usize::MAX; orbits.num_orbits()];
+        for (k, &o) in orbits.block_orbits(m).iter().enumerate() {
+            pos[o] = k;
+        }
+        pos
+    };
+    let (pos0, pos1) = (position(0), position(1.min(g - 1)));
+    // per row entry: its column in block 0 and in the other blocks, τ, the
+    // weight, and k = m·τ mod g for the current block m, advanced by τ from
+    // block to block (a division per entry and block would cost more than
+    // the rest of the sum)
+    let entries: Vec<Vec<(usize, usize, usize, f64)>> = rows
         .iter()
-        .map(|row| row.iter().map(|&(col, w)| (orbits.member[col].0, orbits.member[col].1, w)).collect())
+        .map(|row| {
+            row.iter()
+                .map(|&(col, w)| {
+                    let (ob, tau) = orbits.member[col];
+                    (pos0[ob], pos1[ob], tau, w)
+                })
+                .collect()
+        })
         .collect();
     let mut turn: Vec<Vec<usize>> = entries.iter().map(|r| vec![0; r.len()]).collect();
     let mut blocks = Vec::with_capacity(g);
     for m in 0..g {
         let list = orbits.block_orbits(m);
-        let mut pos = vec![usize::MAX; orbits.num_orbits()];
-        for (k, &o) in list.iter().enumerate() {
-            pos[o] = k;
-        }
         let size = list.len();
         let mut acc = vec![c64::new(0.0, 0.0); size * size];
         for (ra, &a) in list.iter().enumerate() {
-            for (&(ob, _, w), &k) in entries[a].iter().zip(&turn[a]) {
-                let cb = pos[ob];
-                if cb == usize::MAX {
-                    continue; // a fixed point's column outside block 0: its contribution sums to zero
+            for (&(cb0, cbm, tau, w), k) in entries[a].iter().zip(turn[a].iter_mut()) {
+                let cb = if m == 0 { cb0 } else { cbm };
+                // a fixed point's column outside block 0: its contribution sums to zero
+                if cb != usize::MAX {
+                    acc[ra * size + cb] += powers[*k] * w;
                 }
-                let factor = if orbits.fixed[ob] { c64::new(1.0, 0.0) } else { powers[k] };
-                acc[ra * size + cb] += factor * w;
-            }
-        }
-        for (row, ks) in entries.iter().zip(&mut turn) {
-            for (&(_, tau, _), k) in row.iter().zip(ks.iter_mut()) {
+                // every row but a fixed point's is in every block, so its k
+                // is advanced here; a fixed point's row is only used in block 0
                 *k += tau;
                 if *k >= g {
                     *k -= g;
