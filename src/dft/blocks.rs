@@ -12,7 +12,10 @@
 use faer::c64;
 use faer::Mat;
 
-use crate::matrix::LocalMatrix;
+use crate::numeric::Rational;
+
+use crate::matrix::{FullMatrix, LocalMatrix};
+use crate::neighbourhood::{NeighbourhoodKind, VertexLabel};
 use crate::numeric::Weight;
 
 /// Orbit structure of a labelled neighbourhood under rotation by `period` sectors.
@@ -28,17 +31,22 @@ pub struct Orbits {
 
 impl Orbits {
     pub fn new<W: Weight>(m: &LocalMatrix<W>, period: usize, sectors: usize) -> Orbits {
+        Orbits::from_labels(&m.labels, period, sectors)
+    }
+    /// The orbits of the vertices with these labels (matrix order): the
+    /// labels alone decide them, so the rows of S can be assembled after.
+    pub fn from_labels(labels: &[VertexLabel], period: usize, sectors: usize) -> Orbits {
         let g = sectors / period;
         let mut key_to_orbit = std::collections::HashMap::new();
-        let mut member = Vec::with_capacity(m.size());
+        let mut member = Vec::with_capacity(labels.len());
         let mut representative = Vec::new();
         let mut fixed = Vec::new();
-        let mut order: Vec<usize> = (0..m.size()).collect();
+        let mut order: Vec<usize> = (0..labels.len()).collect();
         // make representatives the t = 0 copies: visit sector < period first
-        order.sort_by_key(|&k| m.labels[k].sector / period);
-        let mut tmp = vec![(0, 0); m.size()];
+        order.sort_by_key(|&k| labels[k].sector / period);
+        let mut tmp = vec![(0, 0); labels.len()];
         for &k in &order {
-            let l = &m.labels[k];
+            let l = &labels[k];
             let is_fixed = l.i == 0 && l.j == 0;
             let key = if is_fixed { (usize::MAX, 0, 0) } else { (l.sector % period, l.i, l.j) };
             let orbit = *key_to_orbit.entry(key).or_insert_with(|| {
@@ -80,43 +88,129 @@ pub fn omega_pow(m: usize, t: usize, g: usize) -> c64 {
 
 /// All g Fourier blocks of a rotation-symmetric local matrix.
 pub fn fourier_blocks(s: &LocalMatrix<f64>, orbits: &Orbits) -> Vec<FourierBlock> {
+    let rows: Vec<&[(usize, f64)]> = orbits.representative.iter().map(|&k| s.rows[k].as_slice()).collect();
+    fourier_blocks_from_rows(&rows, orbits)
+}
+
+/// All g Fourier blocks from the representative rows alone: `rows[o]` is the
+/// row of S (over all columns) of orbit o's representative. The other rows
+/// are rotations of these, so nothing else of S is needed.
+pub fn fourier_blocks_from_rows(rows: &[&[(usize, f64)]], orbits: &Orbits) -> Vec<FourierBlock> {
     let g = orbits.group_order;
-    (0..g)
-        .map(|m| {
-            let list = orbits.block_orbits(m);
-            let mut pos = vec![usize::MAX; orbits.num_orbits()];
-            for (k, &o) in list.iter().enumerate() {
-                pos[o] = k;
-            }
-            let mut b = Mat::<c64>::zeros(list.len(), list.len());
-            for (ra, &a) in list.iter().enumerate() {
-                let row = orbits.representative[a];
-                for &(col, w) in &s.rows[row] {
+    // ω^k for every k: the same values `omega_pow` gives (it depends on m·t
+    // mod g only), computed once instead of a cos and sin per entry and block.
+    // A fixed point's column has τ = 0, so its factor is ω^0 = 1 exactly.
+    let powers: Vec<c64> = (0..g).map(|k| omega_pow(k, 1, g)).collect();
+    // block coordinates: block 0 holds every orbit, the others all but the fixed ones
+    let position = |m: usize| {
+        let mut pos = vec![usize::MAX; orbits.num_orbits()];
+        for (k, &o) in orbits.block_orbits(m).iter().enumerate() {
+            pos[o] = k;
+        }
+        pos
+    };
+    let (pos0, pos1) = (position(0), position(1.min(g - 1)));
+    // per row entry: its column in block 0 and in the other blocks, τ, the
+    // weight, and k = m·τ mod g for the current block m, advanced by τ from
+    // block to block (a division per entry and block would cost more than
+    // the rest of the sum)
+    let entries: Vec<Vec<(usize, usize, usize, f64)>> = rows
+        .iter()
+        .map(|row| {
+            row.iter()
+                .map(|&(col, w)| {
                     let (ob, tau) = orbits.member[col];
-                    let cb = pos[ob];
-                    if cb == usize::MAX {
-                        continue; // a fixed point's column outside block 0: its contribution sums to zero
-                    }
-                    let factor = if orbits.fixed[ob] { c64::new(1.0, 0.0) } else { omega_pow(m, tau, g) };
-                    b[(ra, cb)] += factor * w;
+                    (pos0[ob], pos1[ob], tau, w)
+                })
+                .collect()
+        })
+        .collect();
+    let mut turn: Vec<Vec<usize>> = entries.iter().map(|r| vec![0; r.len()]).collect();
+    let mut blocks = Vec::with_capacity(g);
+    for m in 0..g {
+        let list = orbits.block_orbits(m);
+        let size = list.len();
+        let mut acc = vec![c64::new(0.0, 0.0); size * size];
+        for (ra, &a) in list.iter().enumerate() {
+            for (&(cb0, cbm, tau, w), k) in entries[a].iter().zip(turn[a].iter_mut()) {
+                let cb = if m == 0 { cb0 } else { cbm };
+                // a fixed point's column outside block 0: its contribution sums to zero
+                if cb != usize::MAX {
+                    acc[ra * size + cb] += powers[*k] * w;
+                }
+                // every row but a fixed point's is in every block, so its k
+                // is advanced here; a fixed point's row is only used in block 0
+                *k += tau;
+                if *k >= g {
+                    *k -= g;
                 }
             }
-            FourierBlock { index: m, orbits: list, matrix: b }
-        })
-        .collect()
+        }
+        let matrix = Mat::<c64>::from_fn(size, size, |i, j| acc[i * size + j]);
+        blocks.push(FourierBlock { index: m, orbits: list, matrix });
+    }
+    blocks
 }
 
 /// Block 0 in exact arithmetic (real and rational when S is).
 pub fn block_zero_exact(s: &LocalMatrix<crate::numeric::Rational>, orbits: &Orbits) -> crate::numeric::exact::QMatrix {
+    let rows: Vec<&[(usize, Rational)]> = orbits.representative.iter().map(|&k| s.rows[k].as_slice()).collect();
+    block_zero_exact_from_rows(&rows, orbits)
+}
+
+/// Block 0 in exact arithmetic from the representative rows (`rows[o]`: the
+/// row of orbit o's representative, as in [`fourier_blocks_from_rows`]).
+pub fn block_zero_exact_from_rows(rows: &[&[(usize, Rational)]], orbits: &Orbits) -> crate::numeric::exact::QMatrix {
     let list = orbits.block_orbits(0);
+    let mut pos = vec![usize::MAX; orbits.num_orbits()];
+    for (k, &o) in list.iter().enumerate() {
+        pos[o] = k;
+    }
     let mut q = crate::numeric::exact::QMatrix::zeros(list.len());
     for (ra, &a) in list.iter().enumerate() {
-        for (col, w) in &s.rows[orbits.representative[a]] {
+        for (col, w) in rows[a] {
             let cb = orbits.member[*col].0;
-            let idx = list.iter().position(|&o| o == cb).expect("block 0 holds every orbit");
+            let idx = pos[cb];
             let v = q.get(ra, idx) + w;
             q.set(ra, idx, v);
         }
     }
     q
+}
+
+/// The whole exact matrix from its representative rows, assembled on first
+/// use by rotating them: row (t, a) is row (0, a) with every column (τ, b)
+/// moved to (τ + t, b). S commutes with the rotation exactly, so this is the
+/// matrix [`assemble`] gives, without evaluating the rules again.
+pub fn lazy_full_by_rotation<W: Weight>(
+    labels: Vec<VertexLabel>,
+    kind: NeighbourhoodKind,
+    orbits: &Orbits,
+    rep_rows: Vec<Vec<(usize, W)>>,
+) -> FullMatrix<W> {
+    let orbits = orbits.clone();
+    FullMatrix::lazy(move || {
+        let g = orbits.group_order;
+        let mut index = vec![vec![usize::MAX; g]; orbits.num_orbits()];
+        for (k, &(o, t)) in orbits.member.iter().enumerate() {
+            index[o][t] = k;
+        }
+        let rows = orbits
+            .member
+            .iter()
+            .map(|&(o, t)| {
+                let mut row: Vec<(usize, W)> = rep_rows[o]
+                    .iter()
+                    .map(|(col, w)| {
+                        let (ob, tau) = orbits.member[*col];
+                        let c = if orbits.fixed[ob] { *col } else { index[ob][(tau + t) % g] };
+                        (c, w.clone())
+                    })
+                    .collect();
+                row.sort_by_key(|e| e.0);
+                row
+            })
+            .collect();
+        LocalMatrix { kind, labels, rows }
+    })
 }

@@ -3,4 +3,4 @@
 
 pub mod blocks;
 
-pub use blocks::{fourier_blocks, omega_pow, FourierBlock, Orbits};
+pub use blocks::{fourier_blocks, fourier_blocks_from_rows, lazy_full_by_rotation, omega_pow, FourierBlock, Orbits};

@@ -4,7 +4,7 @@
 use crate::neighbourhood::{Discovered, NeighbourhoodKind, VertexLabel};
 use crate::numeric::{Inexact, Weight};
 use crate::refine::{Combine, SparseRow};
-use crate::sdc::{Scheme, SchemeWeight};
+use crate::sdc::{Scheme, SchemeWeight, Stencil};
 
 #[derive(Clone, Debug)]
 pub struct LocalMatrix<W> {
@@ -56,14 +56,68 @@ pub fn assemble<W: SchemeWeight>(
     d: &Discovered,
     kind: NeighbourhoodKind,
 ) -> Result<LocalMatrix<W>, AssembleError> {
+    let all: Vec<usize> = (0..d.set(kind).len()).collect();
+    let rows = assemble_rows::<W>(scheme, d, kind, &all)?;
+    Ok(LocalMatrix { kind, labels: set_labels(d, kind), rows })
+}
+
+/// The labels of the neighbourhood's vertices, in matrix order.
+pub fn set_labels(d: &Discovered, kind: NeighbourhoodKind) -> Vec<VertexLabel> {
+    d.set(kind).iter().map(|&v| d.labels[v].clone()).collect()
+}
+
+/// Rows `which` (matrix indices) of S, each over all columns, sorted by
+/// column: the same rows [`assemble`] gives, without composing the others.
+/// The Fourier blocks need only the rows of one representative per rotation
+/// orbit, O(1) rows instead of O(n).
+pub fn assemble_rows<W: SchemeWeight>(
+    scheme: &dyn Scheme,
+    d: &Discovered,
+    kind: NeighbourhoodKind,
+    which: &[usize],
+) -> Result<Vec<Vec<(usize, W)>>, AssembleError> {
     let set = d.set(kind);
-    let position: std::collections::HashMap<usize, usize> = set.iter().enumerate().map(|(k, &v)| (v, k)).collect();
     let targets: Vec<usize> =
-        set.iter().map(|&v| d.successor(v).ok_or(AssembleError::Missing)).collect::<Result<_, _>>()?;
-    let rows_w = step_rows::<W>(scheme, d, &targets)?;
-    let mut rows = Vec::with_capacity(set.len());
-    for row_w in rows_w {
-        let mut row: Vec<(usize, W)> = Vec::new();
+        which.iter().map(|&k| d.successor(set[k]).ok_or(AssembleError::Missing)).collect::<Result<_, _>>()?;
+    let raw = step_rows::<W>(d, &targets, |k, v| {
+        W::stencil(scheme, d.mesh_before(k), d.refinements[k].vertex_origins[v])
+            .map_err(|Inexact| AssembleError::Inexact)?
+            .ok_or(AssembleError::Missing)
+    })?;
+    restrict(set, raw)
+}
+
+/// [`assemble_rows`] in f64 from what discovery computed: the rows it composed
+/// for the orbit representatives, else its float stencils (the same values
+/// the rules give, as discovery evaluated them with the same code).
+pub fn assemble_rows_f64(
+    d: &Discovered,
+    kind: NeighbourhoodKind,
+    which: &[usize],
+) -> Result<Vec<Vec<(usize, f64)>>, AssembleError> {
+    let set = d.set(kind);
+    let mut raw: Vec<Option<Vec<(usize, f64)>>> =
+        which.iter().map(|&k| d.composite_row(set[k]).map(|r| r.entries.clone())).collect();
+    let missing: Vec<usize> = (0..which.len()).filter(|&i| raw[i].is_none()).collect();
+    if !missing.is_empty() {
+        let targets: Vec<usize> = missing
+            .iter()
+            .map(|&i| d.successor(set[which[i]]).ok_or(AssembleError::Missing))
+            .collect::<Result<_, _>>()?;
+        let rows = step_rows::<f64>(d, &targets, |k, v| d.stencils[k][v].clone().ok_or(AssembleError::Missing))?;
+        for (i, row) in missing.into_iter().zip(rows) {
+            raw[i] = Some(row);
+        }
+    }
+    restrict(set, raw.into_iter().map(|r| r.expect("filled above")).collect())
+}
+
+/// Rows over level-0 vertices to rows over the neighbourhood's positions.
+fn restrict<W: Weight>(set: &[usize], raw: Vec<Vec<(usize, W)>>) -> Result<Vec<Vec<(usize, W)>>, AssembleError> {
+    let position: crate::mesh::IdMap<usize, usize> = set.iter().enumerate().map(|(k, &v)| (v, k)).collect();
+    let mut rows = Vec::with_capacity(raw.len());
+    for row_w in raw {
+        let mut row: Vec<(usize, W)> = Vec::with_capacity(row_w.len());
         for (u, wt) in row_w {
             if wt.is_zero() {
                 continue;
@@ -74,38 +128,51 @@ pub fn assemble<W: SchemeWeight>(
         row.sort_by_key(|e| e.0);
         rows.push(row);
     }
-    Ok(LocalMatrix { kind, labels: set.iter().map(|&v| d.labels[v].clone()).collect(), rows })
+    Ok(rows)
 }
 
 /// Stencils over a whole analysis step (in W) of the given last-level
 /// vertices, in terms of level-0 vertices. Only the vertices the targets need
-/// are evaluated at the intermediate levels (found from the float stencils).
-fn step_rows<W: SchemeWeight>(
-    scheme: &dyn Scheme,
+/// are evaluated at the intermediate levels (found from the float stencils);
+/// `stencil(k, v)` gives the stencil of vertex v of refinement k+1.
+fn step_rows<W: Weight>(
     d: &Discovered,
     targets: &[usize],
+    stencil: impl FnMut(usize, usize) -> Result<Stencil<W>, AssembleError>,
 ) -> Result<Vec<Vec<(usize, W)>>, AssembleError> {
-    let steps = d.refinements.len();
+    let sizes: Vec<usize> = d.refinements.iter().map(|r| r.mesh.num_vertices()).collect();
+    step_rows_over(&d.stencils, &sizes, targets, stencil)
+}
+
+/// [`step_rows`] given discovery's float stencils per refinement and the
+/// vertex count after each refinement.
+fn step_rows_over<W: Weight>(
+    float_stencils: &[Vec<Option<Stencil<f64>>>],
+    sizes: &[usize],
+    targets: &[usize],
+    mut stencil: impl FnMut(usize, usize) -> Result<Stencil<W>, AssembleError>,
+) -> Result<Vec<Vec<(usize, W)>>, AssembleError> {
+    let steps = float_stencils.len();
     // needed[k]: vertices after refinement k+1 whose stencils are needed
     let mut needed: Vec<Vec<usize>> = vec![Vec::new(); steps];
     needed[steps - 1] = targets.to_vec();
     for k in (1..steps).rev() {
-        let mut mark = vec![false; d.refinements[k - 1].mesh.num_vertices()];
+        let mut mark = vec![false; sizes[k - 1]];
         for &v in &needed[k] {
-            let st = d.stencils[k][v].as_ref().ok_or(AssembleError::Missing)?;
+            let st = float_stencils[k][v].as_ref().ok_or(AssembleError::Missing)?;
             st.support().for_each(|u| mark[u] = true);
         }
         needed[k - 1] = (0..mark.len()).filter(|&u| mark[u]).collect();
     }
     // rows[v] at the current level, over level-0 vertices
-    let mut rows: std::collections::HashMap<usize, SparseRow<W>> = Default::default();
-    for k in 0..steps {
-        let mesh = d.mesh_before(k);
-        let mut next = std::collections::HashMap::new();
-        for &v in &needed[k] {
-            let st = W::stencil(scheme, mesh, d.refinements[k].vertex_origins[v])
-                .map_err(|Inexact| AssembleError::Inexact)?
-                .ok_or(AssembleError::Missing)?;
+    let mut rows: crate::mesh::IdMap<usize, SparseRow<W>> = Default::default();
+    for (k, level) in needed.iter().enumerate() {
+        let mut next = crate::mesh::IdMap::default();
+        for &v in level {
+            if next.contains_key(&v) {
+                continue; // a target listed twice
+            }
+            let st = stencil(k, v)?;
             let row = if k == 0 {
                 SparseRow { entries: st.terms }
             } else {
@@ -121,7 +188,74 @@ fn step_rows<W: SchemeWeight>(
         }
         rows = next;
     }
-    Ok(targets.iter().map(|t| rows.remove(t).map(|r| r.entries).unwrap_or_default()).collect())
+    Ok(targets.iter().map(|t| rows.get(t).map(|r| r.entries.clone()).unwrap_or_default()).collect())
+}
+
+/// S over the whole neighbourhood, assembled on first use. The spectrum of a
+/// rotation-symmetric configuration needs only the representative rows, but
+/// exports, `--method full` and callers of [`crate::spectrum::Analysis`] may
+/// read all of S; they get it, through `Deref`, as if it had been assembled
+/// up front.
+pub struct FullMatrix<W: Weight> {
+    cell: std::sync::OnceLock<LocalMatrix<W>>,
+    build: std::sync::Mutex<Option<Builder<W>>>,
+}
+
+type Builder<W> = Box<dyn FnOnce() -> LocalMatrix<W> + Send>;
+
+impl<W: Weight> FullMatrix<W> {
+    /// Already assembled.
+    pub fn ready(m: LocalMatrix<W>) -> Self {
+        FullMatrix { cell: std::sync::OnceLock::from(m), build: std::sync::Mutex::new(None) }
+    }
+    /// Assembled by `build` on first access.
+    pub fn lazy(build: impl FnOnce() -> LocalMatrix<W> + Send + 'static) -> Self {
+        FullMatrix { cell: std::sync::OnceLock::new(), build: std::sync::Mutex::new(Some(Box::new(build))) }
+    }
+    /// Whether S has been assembled (for tests and benchmarks of the lazy path).
+    pub fn is_assembled(&self) -> bool {
+        self.cell.get().is_some()
+    }
+}
+
+impl<W: Weight> std::ops::Deref for FullMatrix<W> {
+    type Target = LocalMatrix<W>;
+    fn deref(&self) -> &LocalMatrix<W> {
+        self.cell.get_or_init(|| {
+            let build = self.build.lock().unwrap_or_else(|e| e.into_inner()).take();
+            build.expect("a lazy matrix has its builder until first use")()
+        })
+    }
+}
+
+impl<W: Weight> std::fmt::Debug for FullMatrix<W> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self.cell.get() {
+            Some(m) => m.fmt(f),
+            None => f.write_str("FullMatrix(not assembled yet)"),
+        }
+    }
+}
+
+/// The whole f64 matrix from discovery's float stencils, assembled on first
+/// use: row for row what [`assemble`] gives in f64 (discovery evaluated the
+/// same rules with the same code). The stencils are shared, not copied.
+pub fn lazy_full_f64(d: &Discovered, kind: NeighbourhoodKind) -> Result<FullMatrix<f64>, AssembleError> {
+    let set = d.set(kind).to_vec();
+    let targets: Vec<usize> =
+        set.iter().map(|&v| d.successor(v).ok_or(AssembleError::Missing)).collect::<Result<_, _>>()?;
+    let labels = set_labels(d, kind);
+    let stencils = std::sync::Arc::clone(&d.stencils);
+    let sizes: Vec<usize> = d.refinements.iter().map(|r| r.mesh.num_vertices()).collect();
+    Ok(FullMatrix::lazy(move || {
+        let rows =
+            step_rows_over(&stencils, &sizes, &targets, |k, v| stencils[k][v].clone().ok_or(AssembleError::Missing))
+                .and_then(|raw| restrict(&set, raw))
+                // the representative rows assembled, and S commutes with the
+                // rotation, so every other row is a rotated copy of an assembled one
+                .expect("every row of a rotation-symmetric S assembles when its representatives do");
+        LocalMatrix { kind, labels, rows }
+    }))
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

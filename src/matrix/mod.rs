@@ -4,4 +4,4 @@
 pub mod export;
 pub mod local;
 
-pub use local::{assemble, LocalMatrix};
+pub use local::{assemble, assemble_rows, FullMatrix, LocalMatrix};

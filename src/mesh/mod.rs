@@ -6,4 +6,4 @@ pub mod obj;
 pub mod polymesh;
 
 pub use lattice::{Chart, LatticeCoord, SectorKind};
-pub use polymesh::{FaceId, PolyMesh, VertexId};
+pub use polymesh::{FaceId, IdMap, IdSet, PolyMesh, VertexId};

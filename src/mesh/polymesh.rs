@@ -5,21 +5,96 @@
 //! one-ring return `None` there, which the refinement marks as "rule not
 //! applicable" instead of guessing.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
+use std::hash::{BuildHasherDefault, Hasher};
+use std::sync::OnceLock;
 
 use super::lattice::Chart;
 
 pub type VertexId = usize;
 pub type FaceId = usize;
 
+/// A multiplicative (Fx-style) hasher for the small integer keys of mesh
+/// code: vertex ids, pairs of them, origins, lattice coordinates. std's
+/// SipHash guards against adversarial keys, which these are not, at several
+/// times the cost, and half-edge and origin look-ups are most of the work of
+/// building and refining the O(n)-vertex neighbourhoods of valence n.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct IdHasher(u64);
+
+const ID_HASH_K: u64 = 0x517c_c1b7_2722_0a95;
+
+impl IdHasher {
+    #[inline]
+    fn add(&mut self, word: u64) {
+        self.0 = (self.0.rotate_left(5) ^ word).wrapping_mul(ID_HASH_K);
+    }
+}
+
+impl Hasher for IdHasher {
+    #[inline]
+    fn write(&mut self, bytes: &[u8]) {
+        for chunk in bytes.chunks(8) {
+            let mut word = [0u8; 8];
+            word[..chunk.len()].copy_from_slice(chunk);
+            self.add(u64::from_le_bytes(word));
+        }
+    }
+    #[inline]
+    fn write_u8(&mut self, n: u8) {
+        self.add(n as u64);
+    }
+    #[inline]
+    fn write_u32(&mut self, n: u32) {
+        self.add(n as u64);
+    }
+    #[inline]
+    fn write_u64(&mut self, n: u64) {
+        self.add(n);
+    }
+    #[inline]
+    fn write_usize(&mut self, n: usize) {
+        self.add(n as u64);
+    }
+    #[inline]
+    fn write_i64(&mut self, n: i64) {
+        self.add(n as u64);
+    }
+    #[inline]
+    fn write_isize(&mut self, n: isize) {
+        self.add(n as u64);
+    }
+    #[inline]
+    fn finish(&self) -> u64 {
+        self.0
+    }
+}
+
+/// A vertex's fan as (face, corner) pairs counter-clockwise; None when open.
+type Fan = Option<Box<[(FaceId, usize)]>>;
+
+pub type IdBuild = BuildHasherDefault<IdHasher>;
+/// A `HashMap` with [`IdHasher`] (iteration order is unspecified, as for any
+/// `HashMap`; mesh code only looks keys up).
+pub type IdMap<K, V> = HashMap<K, V, IdBuild>;
+pub type IdSet<K> = HashSet<K, IdBuild>;
+
 #[derive(Clone, Debug)]
 pub struct PolyMesh {
     faces: Vec<Vec<VertexId>>,
     num_vertices: usize,
     /// half-edge (a -> b) -> (face, index of a in that face)
-    half_edges: HashMap<(VertexId, VertexId), (FaceId, usize)>,
+    half_edges: IdMap<(VertexId, VertexId), (FaceId, usize)>,
     /// one face corner per vertex, to start walks around it
     vertex_corner: Vec<Option<(FaceId, usize)>>,
+    /// The fan of each vertex as (face, corner) pairs, walked on first use
+    /// (None inside: an open fan): rules ask for the fan of a high-valence
+    /// centre once per face or edge around it, and rebuilding it by half-edge
+    /// walks each time made discovery quadratic in the valence.
+    fans: Vec<OnceLock<Fan>>,
+    /// `face_points` holds a point for every face (cached: FCV rules ask on
+    /// every stencil, and scanning all faces each time was quadratic).
+    every_face_has_point: bool,
     /// Optional lattice chart (sector coordinates) used to label the vertices of
     /// analysis neighbourhoods; absent for user meshes.
     pub chart: Option<Chart>,
@@ -74,7 +149,7 @@ impl From<MeshError> for crate::error::Error {
 
 impl PolyMesh {
     pub fn new(num_vertices: usize, faces: Vec<Vec<VertexId>>) -> Result<Self, MeshError> {
-        let mut half_edges = HashMap::with_capacity(faces.iter().map(|f| f.len()).sum());
+        let mut half_edges = IdMap::with_capacity_and_hasher(faces.iter().map(|f| f.len()).sum(), IdBuild::default());
         let mut vertex_corner = vec![None; num_vertices];
         for (fi, face) in faces.iter().enumerate() {
             if face.len() < 3 {
@@ -101,6 +176,8 @@ impl PolyMesh {
             num_vertices,
             half_edges,
             vertex_corner,
+            fans: (0..num_vertices).map(|_| OnceLock::new()).collect(),
+            every_face_has_point: false,
             chart: None,
             face_points: Vec::new(),
             vertex_params: None,
@@ -118,15 +195,16 @@ impl PolyMesh {
         {
             return Err(format!("face point {v} is missing or is a corner of a face"));
         }
+        self.every_face_has_point = !points.is_empty() && points.iter().all(Option::is_some);
         self.face_points = points;
         Ok(self)
     }
 
     /// Whether every face carries a face point (as face control vertex schemes need).
     pub fn has_face_point_on_every_face(&self) -> bool {
-        !self.faces.is_empty()
-            && self.face_points.len() == self.faces.len()
-            && self.face_points.iter().all(Option::is_some)
+        // the length check keeps the answer right if `face_points` was replaced
+        // wholesale after `with_face_points`
+        !self.faces.is_empty() && self.face_points.len() == self.faces.len() && self.every_face_has_point
     }
 
     /// Orient a closed regular quad mesh as a lattice: the first edge of face 0
@@ -288,17 +366,41 @@ impl PolyMesh {
     /// face's vertex cycle starting at `v`. `None` when `v` is on the boundary
     /// (its fan is open) or isolated.
     pub fn vertex_fan(&self, v: VertexId) -> Option<Vec<Vec<VertexId>>> {
-        let (f0, k0) = self.vertex_corner.get(v).copied().flatten()?;
+        Some(self.fan_corners(v)?.iter().map(|&(f, k)| self.face_from(f, k)).collect())
+    }
+
+    /// The fan of `v` as (face, index of v in it), counter-clockwise from the
+    /// corner the walk starts at; `None` on the boundary. Cached for all
+    /// vertices at the first call.
+    pub fn fan_corners(&self, v: VertexId) -> Option<&[(FaceId, usize)]> {
+        self.fans.get(v)?.get_or_init(|| self.walk_fan(v)).as_deref()
+    }
+
+    /// The neighbours of `v` in fan order (the second corner of each fan face)
+    /// when every face around it has `size` corners; `None` on the boundary or
+    /// next to a face of another size.
+    pub fn uniform_ring(&self, v: VertexId, size: usize) -> Option<Vec<VertexId>> {
+        let fan = self.fan_corners(v)?;
+        fan.iter()
+            .map(|&(f, k)| {
+                let face = &self.faces[f];
+                (face.len() == size).then(|| face[(k + 1) % face.len()])
+            })
+            .collect()
+    }
+
+    fn walk_fan(&self, v: VertexId) -> Fan {
+        let (f0, k0) = self.vertex_corner[v]?;
         let mut fan = Vec::new();
         let (mut f, mut k) = (f0, k0);
         loop {
+            fan.push((f, k));
             let face = &self.faces[f];
-            fan.push(self.face_from(f, k));
             // the previous vertex of this face around v; the next face CCW holds v -> prev
             let prev = face[(k + face.len() - 1) % face.len()];
             let (g, kg) = self.half_edge(v, prev)?;
             if g == f0 {
-                break;
+                return Some(fan.into_boxed_slice());
             }
             if fan.len() > self.faces.len() {
                 return None; // corrupt connectivity: never loop forever
@@ -306,12 +408,11 @@ impl PolyMesh {
             f = g;
             k = kg;
         }
-        Some(fan)
     }
 
     /// Valence of an interior vertex (number of faces around it).
     pub fn valence(&self, v: VertexId) -> Option<usize> {
-        self.vertex_fan(v).map(|f| f.len())
+        self.fan_corners(v).map(<[_]>::len)
     }
 
     /// The faces that have `v` as a corner (works on the boundary too).

@@ -9,7 +9,7 @@
 //! at its centre; coordinates are doubled there too (chart scale 2), vertices at
 //! even and FCVs at odd lattice points.
 
-use std::collections::HashMap;
+use crate::mesh::IdMap;
 
 use super::Configuration;
 use crate::mesh::{Chart, LatticeCoord, PolyMesh, SectorKind};
@@ -17,7 +17,7 @@ use crate::sdc::CentreKind;
 
 struct PatchBuilder {
     chart: Chart,
-    ids: HashMap<LatticeCoord, usize>,
+    ids: IdMap<LatticeCoord, usize>,
     faces: Vec<Vec<usize>>,
 }
 
@@ -53,7 +53,7 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
             vertex_coords: Vec::new(),
             face_sector: Vec::new(),
         },
-        ids: HashMap::new(),
+        ids: IdMap::default(),
         faces: Vec::new(),
     };
     let centre_set = match config.centre {

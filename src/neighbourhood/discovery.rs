@@ -12,15 +12,16 @@
 //! Both need the old patch large enough that every rule involved can be
 //! evaluated; when one cannot, the patch grows by a ring and discovery restarts.
 
-use std::collections::{BTreeSet, HashMap, HashSet};
+use std::borrow::Cow;
+use std::collections::{BTreeSet, HashMap};
+use std::sync::Arc;
 
 use super::builder::build_patch;
 use super::configuration::Configuration;
 use super::labels::{canonical_order, label_vertices, VertexLabel};
-use crate::mesh::{LatticeCoord, PolyMesh};
-use crate::refine::{apply, SparseRow};
-use crate::sdc::{Origin, Stencil};
-use crate::sdc::{Scheme, SchemeWeight};
+use crate::mesh::{IdMap, IdSet, LatticeCoord, PolyMesh};
+use crate::refine::{Combine, SparseRow};
+use crate::sdc::{Origin, Scheme, SchemeWeight, Stencil};
 use crate::topology::Refined;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
@@ -49,10 +50,11 @@ pub struct Discovered {
     /// the refinements of one analysis step (one for binary schemes, two for
     /// sqrt(3) schemes, whose lattice only realigns after two steps)
     pub refinements: Vec<Refined>,
-    /// float stencils of each refinement (index k: level k+1 from level k)
-    pub stencils: Vec<Vec<Option<Stencil<f64>>>>,
+    /// float stencils of each refinement (index k: level k+1 from level k);
+    /// shared with the lazily assembled matrix (`matrix::local::lazy_full_f64`)
+    pub stencils: Arc<Vec<Vec<Option<Stencil<f64>>>>>,
     /// vertex of the last refinement with given lattice coordinates
-    pub step_at: HashMap<LatticeCoord, usize>,
+    pub step_at: IdMap<LatticeCoord, usize>,
     /// level-0 vertex ids in canonical order
     pub minimal: Vec<usize>,
     pub analysis: Vec<usize>,
@@ -60,6 +62,13 @@ pub struct Discovered {
     pub patch_rings: usize,
     /// analysis steps after which the analysis set stopped growing
     pub analysis_levels: usize,
+    /// Rows over one analysis step (in level-0 vertices, f64) of the
+    /// successors of the level-0 vertices whose dependencies discovery
+    /// needed: the orbit representatives of both neighbourhoods when the
+    /// configuration is rotation-symmetric. These are the rows of S that the
+    /// Fourier blocks need, composed exactly as assembly composes them, so
+    /// assembly takes them from here instead of composing them again.
+    pub(crate) composite: HashMap<usize, SparseRow<f64>>,
 }
 
 impl Discovered {
@@ -84,6 +93,11 @@ impl Discovered {
         } else {
             &self.refinements[k - 1].mesh
         }
+    }
+    /// The f64 row over one analysis step of the successor of level-0 vertex
+    /// `v`, if discovery composed it.
+    pub(crate) fn composite_row(&self, v: usize) -> Option<&SparseRow<f64>> {
+        self.composite.get(&v)
     }
 }
 
@@ -120,18 +134,184 @@ pub fn discover(scheme: &dyn Scheme, config: &Configuration) -> Result<Discovere
     ))
 }
 
-fn stencils_f64(scheme: &dyn Scheme, mesh: &PolyMesh, refined: &Refined) -> Vec<Option<Stencil<f64>>> {
-    refined.vertex_origins.iter().map(|&o| <f64 as SchemeWeight>::stencil(scheme, mesh, o).ok().flatten()).collect()
+fn stencil_f64(scheme: &dyn Scheme, mesh: &PolyMesh, o: Origin) -> Option<Stencil<f64>> {
+    <f64 as SchemeWeight>::stencil(scheme, mesh, o).ok().flatten()
 }
 
-/// Stencils of the last level in terms of level-0 vertices, composed through
-/// the intermediate levels (sparse rows refined like points).
-fn compose(levels: &[Vec<Option<Stencil<f64>>>], level0: usize) -> Vec<Option<SparseRow<f64>>> {
-    let mut rows: Vec<Option<SparseRow<f64>>> = (0..level0).map(|v| Some(SparseRow::unit(v))).collect();
-    for st in levels {
-        rows = apply(st, &rows);
+/// The rotation of a charted mesh by `period` sectors (the configuration's
+/// symmetry) as a vertex map. Dependencies commute with it: the old vertices
+/// a rotated vertex depends on are the rotated dependencies. So sets that are
+/// unions of orbits (both neighbourhoods, the descendants of the first ring)
+/// are tracked by their representatives, the orbit members in sectors
+/// `0..period` (and the fixed centre): O(1) vertices per level instead of
+/// O(n), whose stencils near a valence-n centre have O(n) terms each.
+/// Without a usable chart, or without symmetry, every vertex represents
+/// itself and the same code tracks whole sets.
+pub(crate) struct Rotation {
+    /// per vertex: its representative and the number of period-turns from it
+    rep: Vec<(usize, usize)>,
+    /// per representative: the orbit, in turn order (empty for non-representatives)
+    orbit: Vec<Vec<usize>>,
+}
+
+impl Rotation {
+    fn identity(size: usize) -> Rotation {
+        Rotation { rep: (0..size).map(|v| (v, 0)).collect(), orbit: (0..size).map(|v| vec![v]).collect() }
     }
-    rows
+
+    /// The rotation of `mesh` by `period` sectors; the identity when it has
+    /// no chart or no symmetry, or when a representative is missing. With
+    /// `complete`, every orbit must be in the mesh (orbits are rebuilt from
+    /// representatives there); without, only each vertex's representative
+    /// (meshes cut down to a window of sectors, see `window_around_representatives`).
+    pub(crate) fn new(mesh: &PolyMesh, period: usize, complete: bool) -> Rotation {
+        let size = mesh.num_vertices();
+        let Some(chart) = mesh.chart.as_ref() else { return Rotation::identity(size) };
+        let n = chart.sectors();
+        if period == 0 || period >= n || !n.is_multiple_of(period) {
+            return Rotation::identity(size);
+        }
+        let g = n / period;
+        let at: IdMap<LatticeCoord, usize> = chart.vertex_coords.iter().enumerate().map(|(v, c)| (*c, v)).collect();
+        if at.len() != size {
+            return Rotation::identity(size); // coordinates do not identify vertices
+        }
+        let mut rep = Vec::with_capacity(size);
+        for c in &chart.vertex_coords {
+            if c.is_centre() {
+                rep.push((at[c], 0));
+                continue;
+            }
+            let Some(&r) = at.get(&LatticeCoord { sector: c.sector % period, ..*c }) else {
+                return Rotation::identity(size);
+            };
+            rep.push((r, c.sector / period));
+        }
+        let mut orbit = vec![Vec::new(); size];
+        if complete {
+            for (v, &(r, _)) in rep.iter().enumerate() {
+                if r == v {
+                    orbit[r] = vec![usize::MAX; if chart.vertex_coords[v].is_centre() { 1 } else { g }];
+                }
+            }
+            for (v, &(r, t)) in rep.iter().enumerate() {
+                orbit[r][t] = v;
+            }
+            if orbit.iter().flatten().any(|&u| u == usize::MAX) {
+                return Rotation::identity(size);
+            }
+        }
+        Rotation { rep, orbit }
+    }
+
+    pub(crate) fn rep(&self, v: usize) -> usize {
+        self.rep[v].0
+    }
+
+    /// All members of the orbit of representative `r`.
+    pub(crate) fn orbit(&self, r: usize) -> &[usize] {
+        &self.orbit[r]
+    }
+}
+
+/// The float stencils of the refinements of one analysis step, evaluated on
+/// demand: discovery needs those of the representatives (O(1) per level), and
+/// a patch too small for the rules is rejected before the others are
+/// evaluated. [`StepStencils::complete`] evaluates the rest for the caller
+/// (the characteristic map refines whole nets with them).
+struct StepStencils<'a> {
+    scheme: &'a dyn Scheme,
+    before: Vec<&'a PolyMesh>,
+    origins: Vec<&'a [Origin]>,
+    stencils: Vec<Vec<Option<Stencil<f64>>>>,
+    done: Vec<Vec<bool>>,
+}
+
+impl<'a> StepStencils<'a> {
+    fn new(scheme: &'a dyn Scheme, patch: &'a PolyMesh, refinements: &'a [Refined]) -> Self {
+        let before = (0..refinements.len()).map(|k| if k == 0 { patch } else { &refinements[k - 1].mesh }).collect();
+        let origins: Vec<&[Origin]> = refinements.iter().map(|r| r.vertex_origins.as_slice()).collect();
+        let stencils = origins.iter().map(|o| vec![None; o.len()]).collect();
+        let done = origins.iter().map(|o| vec![false; o.len()]).collect();
+        StepStencils { scheme, before, origins, stencils, done }
+    }
+
+    /// The stencil of vertex v of refinement k+1 (None: not evaluable).
+    fn get(&mut self, k: usize, v: usize) -> Option<&Stencil<f64>> {
+        if v >= self.done[k].len() {
+            return None;
+        }
+        if !self.done[k][v] {
+            self.done[k][v] = true;
+            self.stencils[k][v] = stencil_f64(self.scheme, self.before[k], self.origins[k][v]);
+        }
+        self.stencils[k][v].as_ref()
+    }
+
+    fn complete(mut self) -> Vec<Vec<Option<Stencil<f64>>>> {
+        for k in 0..self.done.len() {
+            for v in 0..self.done[k].len() {
+                self.get(k, v);
+            }
+        }
+        self.stencils
+    }
+}
+
+/// Rows over the analysis step of last-level vertices in terms of level-0
+/// vertices, composed on demand through the intermediate levels (sparse rows
+/// refined like points) and memoised per level: a valence-n centre's ring is
+/// shared by the rows of several representatives.
+struct Composer<'a> {
+    stencils: StepStencils<'a>,
+    /// memo[k][v]: row of vertex v after refinement k+1 (None inside: not composable)
+    memo: Vec<IdMap<usize, Option<SparseRow<f64>>>>,
+}
+
+impl<'a> Composer<'a> {
+    fn new(stencils: StepStencils<'a>) -> Self {
+        let levels = stencils.done.len();
+        Composer { stencils, memo: vec![IdMap::default(); levels] }
+    }
+
+    /// The row of vertex v after refinement k+1. Same arithmetic, in the same
+    /// order, as applying the stencils level by level to unit rows.
+    fn row(&mut self, k: usize, v: usize) -> Option<&SparseRow<f64>> {
+        self.ensure(k, v);
+        self.memo[k][&v].as_ref()
+    }
+
+    fn ensure(&mut self, k: usize, v: usize) {
+        if self.memo[k].contains_key(&v) {
+            return;
+        }
+        let Some(terms) = self.stencils.get(k, v).map(|st| st.terms.clone()) else {
+            self.memo[k].insert(v, None);
+            return;
+        };
+        let row = if k == 0 {
+            // a merged stencil (sorted, no duplicates, no zeros) is already
+            // its row over level 0: combining unit rows would give the same
+            // entries at the cost of one allocation per term
+            Some(SparseRow { entries: terms })
+        } else {
+            terms.iter().for_each(|&(u, _)| self.ensure(k - 1, u));
+            let below = &self.memo[k - 1];
+            let terms: Option<Vec<(f64, &SparseRow<f64>)>> =
+                terms.iter().map(|&(u, w)| below[&u].as_ref().map(|r| (w, r))).collect();
+            terms.map(|t| SparseRow::combine(&t))
+        };
+        self.memo[k].insert(v, row);
+    }
+}
+
+/// One refinement of the search for the analysis neighbourhood past the
+/// first analysis step: stencils are evaluated only for the vertices the
+/// backward walk reaches (representatives), on the mesh they refine.
+struct LazyLevel<'a> {
+    before: Cow<'a, PolyMesh>,
+    origins: Vec<Origin>,
+    memo: IdMap<usize, Option<Stencil<f64>>>,
 }
 
 /// One attempt on a patch of `rings` rings. With `prune`, refined meshes past
@@ -149,124 +329,148 @@ fn try_discover(
     let topology = scheme.topology();
     let steps = topology.steps_per_analysis();
     let mut refinements: Vec<Refined> = Vec::new();
-    let mut stencils_by_level: Vec<Vec<Option<Stencil<f64>>>> = Vec::new();
     for k in 0..steps {
         let before = if k == 0 { &patch } else { &refinements[k - 1].mesh };
         let r = topology.refine(before)?;
-        stencils_by_level.push(stencils_f64(scheme, before, &r));
         refinements.push(r);
     }
     let last = &refinements[steps - 1];
     let chart = last.mesh.chart.as_ref().ok_or("refined patch lost its lattice chart")?;
-    let step_at: HashMap<LatticeCoord, usize> = chart.vertex_coords.iter().enumerate().map(|(i, c)| (*c, i)).collect();
-    let composite = compose(&stencils_by_level, patch.num_vertices());
+    let step_at: IdMap<LatticeCoord, usize> = chart.vertex_coords.iter().enumerate().map(|(i, c)| (*c, i)).collect();
     let chart0 = patch.chart.as_ref().expect("patch has a chart");
-
-    // D(v): old vertices on which the successor of v depends
-    let dep = |v: usize| -> Option<Vec<usize>> {
-        let w = *step_at.get(&chart0.vertex_coords[v])?;
-        Some(composite[w].as_ref()?.entries.iter().map(|e| e.0).collect())
-    };
-    let closure = |start: &mut dyn Iterator<Item = usize>| -> Result<BTreeSet<usize>, String> {
+    let n = config.valence();
+    // asymmetric rules have no rotation symmetry, whatever the configuration
+    let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { n };
+    let rot0 = Rotation::new(&patch, period, true);
+    let mut composer = Composer::new(StepStencils::new(scheme, &patch, &refinements));
+    // D(v) for representatives v: old vertices on which the successor of v depends
+    let mut deps: IdMap<usize, Vec<usize>> = IdMap::default();
+    let closure = |composer: &mut Composer,
+                   deps: &mut IdMap<usize, Vec<usize>>,
+                   start: &mut dyn Iterator<Item = usize>|
+     -> Result<BTreeSet<usize>, String> {
         let mut set: BTreeSet<usize> = BTreeSet::new();
-        let mut stack: Vec<usize> = start.collect();
+        let mut stack: Vec<usize> = start.map(|v| rot0.rep(v)).collect();
         while let Some(v) = stack.pop() {
             if !set.insert(v) {
                 continue;
             }
-            let d =
-                dep(v).ok_or_else(|| format!("rule for {} not evaluable in a {rings}-ring patch", labels[v].name))?;
-            stack.extend(d.into_iter().filter(|u| !set.contains(u)));
+            if let std::collections::hash_map::Entry::Vacant(slot) = deps.entry(v) {
+                let row = step_at
+                    .get(&chart0.vertex_coords[v])
+                    .and_then(|&w| composer.row(steps - 1, w).map(|r| r.entries.iter().map(|e| e.0).collect()))
+                    .ok_or_else(|| format!("rule for {} not evaluable in a {rings}-ring patch", labels[v].name))?;
+                slot.insert(row);
+            }
+            stack.extend(deps[&v].iter().map(|&u| rot0.rep(u)).filter(|r| !set.contains(r)));
         }
         Ok(set)
     };
 
-    let minimal = closure(&mut centre_set.iter().copied())?;
+    let minimal = closure(&mut composer, &mut deps, &mut centre_set.iter().copied())?;
 
     // --- analysis neighbourhood: dependencies of the first ring's descendants.
     // Dependencies are tracked backwards: mark the first-ring vertices after r
     // refinements, then walk the stencils of refinements r, r-1, ..., 1 down to
     // level 0. This is linear in the stencil sizes (forward dependency sets
-    // would cost O(n^3) at the dense central face of a dual scheme).
+    // would cost O(n^3) at the dense central face of a dual scheme), and only
+    // representatives are walked (see `Rotation`).
     // the first ring: faces touching ring 0 (or deeper rings, see `CentreKind::first_ring_depth`)
     let depth = config.centre.first_ring_depth();
     let mut region_faces: Vec<bool> =
         patch.faces().iter().map(|f| f.iter().any(|&v| labels[v].ring <= depth)).collect();
-    let mut all_stencils = stencils_by_level.clone();
+    let mut lazy: Vec<LazyLevel> = Vec::new();
+    // rots[k - 1]: rotation of the mesh after k refinements (pruned when it was)
+    let mut rots: Vec<Rotation> = Vec::new();
     let mut collected: BTreeSet<usize> = BTreeSet::new();
     let mut previous: Option<BTreeSet<usize>> = None;
     let mut analysis = None;
     let mut levels_used = 0;
-    let mut mesh_k = patch.clone();
+    let mut mesh_k: Cow<PolyMesh> = Cow::Borrowed(&patch);
     // Beyond the first analysis step only the region and a margin around it
     // are kept: the mesh would otherwise grow geometrically with the level,
     // while the backward walk below only ever reaches a bounded number of
     // rings around the (shrinking) region. `relabel[k]`: for the mesh after
-    // refinement k+1, the id each kept vertex had before pruning; `sizes[k]`:
-    // the vertex count of the mesh refinement k+1 started from.
+    // refinement k+1, the id each kept vertex had before pruning.
     let mut relabel: Vec<Option<Vec<usize>>> = Vec::new();
-    let mut sizes: Vec<usize> = Vec::new();
     for r in 1..=MAX_LEVELS * steps {
-        sizes.push(mesh_k.num_vertices());
-        let refined = if r <= steps {
-            refinements[r - 1].clone()
-        } else {
-            let refined = topology.refine(&mesh_k)?;
-            all_stencils.push(stencils_f64(scheme, &mesh_k, &refined));
-            refined
-        };
         let in_region = region_entities(&mesh_k, &region_faces);
-        let descends: Vec<bool> = refined.vertex_origins.iter().map(|o| in_region.contains(o)).collect();
-        let next_region: Vec<bool> = refined
-            .mesh
+        // the first analysis step's refinements are discovery's own (read,
+        // not copied); later ones are made here
+        let (refined_mesh, origins, parents): (Cow<PolyMesh>, Cow<[Origin]>, Cow<[Origin]>) = if r <= steps {
+            let rf = &refinements[r - 1];
+            (Cow::Borrowed(&rf.mesh), Cow::Borrowed(&rf.vertex_origins), Cow::Borrowed(&rf.face_parents))
+        } else {
+            let rf = topology.refine(&mesh_k)?;
+            (Cow::Owned(rf.mesh), Cow::Owned(rf.vertex_origins), Cow::Owned(rf.face_parents))
+        };
+        let descends: Vec<bool> = origins.iter().map(|o| in_region.contains(o)).collect();
+        region_faces = refined_mesh
             .faces()
             .iter()
-            .zip(&refined.face_parents)
+            .zip(parents.iter())
             .map(|(f, p)| in_region.contains(p) && f.iter().all(|&v| descends[v]))
             .collect();
-        mesh_k = refined.mesh;
-        region_faces = next_region;
-        let pruned = if prune && r >= steps { prune_around(&mesh_k, &region_faces, PRUNE_MARGIN)? } else { None };
-        if let Some((pruned, old, region)) = pruned {
-            mesh_k = pruned;
-            region_faces = region;
-            relabel.push(Some(old));
-        } else {
-            relabel.push(None);
+        let before = std::mem::replace(&mut mesh_k, refined_mesh);
+        if r > steps {
+            // kept for evaluating this refinement's stencils on demand
+            lazy.push(LazyLevel { before, origins: origins.into_owned(), memo: IdMap::default() });
         }
+        let mut old_ids: Option<Vec<usize>> = None;
+        if prune && r >= steps {
+            if let Some((pruned, old, region)) = prune_around(&mesh_k, &region_faces, PRUNE_MARGIN)? {
+                mesh_k = Cow::Owned(pruned);
+                region_faces = region;
+                old_ids = Some(old);
+            }
+            if let Some((windowed, old, region)) = window_around_representatives(&mesh_k, &region_faces, period)? {
+                mesh_k = Cow::Owned(windowed);
+                region_faces = region;
+                old_ids = Some(match old_ids {
+                    Some(first) => old.iter().map(|&v| first[v]).collect(),
+                    None => old,
+                });
+            }
+        }
+        relabel.push(old_ids);
+        rots.push(Rotation::new(&mesh_k, period, false));
         if r % steps != 0 {
             continue; // only whole analysis steps are compared
         }
-        let mut marked = vec![false; mesh_k.num_vertices()];
+        // representatives of the region's vertices after r refinements
+        let mut marked: BTreeSet<usize> = BTreeSet::new();
         for (f, face) in mesh_k.faces().iter().enumerate() {
             if region_faces[f] {
-                face.iter().for_each(|&v| marked[v] = true);
+                marked.extend(face.iter().map(|&v| rots[r - 1].rep(v)));
                 if let Some(p) = mesh_k.face_point(f) {
-                    marked[p] = true;
+                    marked.insert(rots[r - 1].rep(p));
                 }
             }
         }
         for k in (0..r).rev() {
-            let st = &all_stencils[k];
-            if let Some(old) = &relabel[k] {
-                // back to the ids of the unpruned refinement, which `st` indexes
-                let mut full = vec![false; st.len()];
-                old.iter().zip(&marked).filter(|(_, m)| **m).for_each(|(&o, _)| full[o] = true);
-                marked = full;
-            }
-            let mut marked_below = vec![false; sizes[k]];
-            for (v, _) in marked.iter().enumerate().filter(|(_, m)| **m) {
-                let Some(stencil) = st[v].as_ref() else {
+            let mut marked_below = BTreeSet::new();
+            for &v in &marked {
+                // back to the id of the unpruned refinement, which stencils index
+                let v = relabel[k].as_ref().map_or(v, |old| old[v]);
+                let stencil = if k < steps {
+                    composer.stencils.get(k, v)
+                } else {
+                    let level = &mut lazy[k - steps];
+                    let (before, origin) = (&level.before, level.origins[v]);
+                    level.memo.entry(v).or_insert_with(|| stencil_f64(scheme, before, origin)).as_ref()
+                };
+                let Some(stencil) = stencil else {
                     // the mesh this stencil is evaluated on was pruned
                     *blame_pruning |= k >= 1 && relabel[k - 1].is_some();
                     return Err(format!("first-ring vertex after {r} steps not evaluable in a {rings}-ring patch"));
                 };
-                stencil.support().for_each(|u| marked_below[u] = true);
+                let below = if k == 0 { &rot0 } else { &rots[k - 1] };
+                marked_below.extend(stencil.support().map(|u| below.rep(u)));
             }
             marked = marked_below;
         }
-        collected.extend(marked.iter().enumerate().filter(|(_, m)| **m).map(|(u, _)| u));
-        let closed = closure(&mut collected.iter().copied())?;
+        collected.extend(marked);
+        let closed = closure(&mut composer, &mut deps, &mut collected.iter().copied())?;
         levels_used = r / steps;
         if levels_used >= 2 && previous.as_ref() == Some(&closed) {
             analysis = Some(closed);
@@ -275,29 +479,43 @@ fn try_discover(
         previous = Some(closed);
     }
     let analysis = analysis.or(previous).expect("at least one level");
-    let mut minimal: Vec<usize> = minimal.into_iter().collect();
-    let mut analysis: Vec<usize> = analysis.into_iter().collect();
-    canonical_order(&labels, &mut minimal);
-    canonical_order(&labels, &mut analysis);
+    let expand = |reps: BTreeSet<usize>| -> Vec<usize> {
+        let mut all: Vec<usize> = reps.iter().flat_map(|&r| rot0.orbit(r).iter().copied()).collect();
+        canonical_order(&labels, &mut all);
+        all
+    };
+    let minimal = expand(minimal);
+    let analysis = expand(analysis);
+    // the composed rows of the last level, keyed by the level-0 vertex they belong to
+    let last_rows = composer.memo.pop().expect("one level at least");
+    let stencils_by_level = composer.stencils.complete();
+    let composite = deps
+        .keys()
+        .filter_map(|&v| {
+            let w = step_at.get(&chart0.vertex_coords[v])?;
+            Some((v, last_rows.get(w)?.clone()?))
+        })
+        .collect();
     Ok(Discovered {
         config: config.clone(),
         patch,
         labels,
         refinements,
-        stencils: stencils_by_level,
+        stencils: Arc::new(stencils_by_level),
         step_at,
         minimal,
         analysis,
         patch_rings: rings,
         analysis_levels: levels_used,
+        composite,
     })
 }
 
 /// Vertices, edges (both orientations), faces and corners of the region
 /// faces, as origins: the old entities whose new vertices descend from the
 /// region (also used to follow the characteristic ring through refinement).
-pub fn region_entities(mesh: &PolyMesh, region_faces: &[bool]) -> HashSet<Origin> {
-    let mut set = HashSet::new();
+pub fn region_entities(mesh: &PolyMesh, region_faces: &[bool]) -> IdSet<Origin> {
+    let mut set = IdSet::default();
     for (f, face) in mesh.faces().iter().enumerate() {
         if !region_faces[f] {
             continue;
@@ -312,6 +530,77 @@ pub fn region_entities(mesh: &PolyMesh, region_faces: &[bool]) -> HashSet<Origin
         }
     }
     set
+}
+
+/// Sectors kept on each side of the representatives' sectors `0..period` in
+/// the refinements past the first analysis step. The walk evaluates stencils
+/// of representatives (and the centre) only; their supports reach one sector
+/// to each side, and each refinement of a mesh cut at a sector boundary
+/// loses at most about one sector of evaluable vertices next to the cut.
+/// Three analysis steps of two refinements and two-ring masks stay well
+/// inside this; a scheme that did not would fail to evaluate a stencil next
+/// to the cut, and `discover` retries without pruning.
+const WINDOW_SECTORS: usize = 16;
+/// Vertex rings around the centre (or the central face) whose faces are kept
+/// in every sector: the centre's rules read its whole fan, and the next
+/// refinement rebuilds that fan (and its first ring's fans) from the faces
+/// touching rings 0 and 1.
+const DISC_RINGS: usize = 1;
+
+/// The sub-mesh of the faces within `WINDOW_SECTORS` sectors of the
+/// representatives' sectors `0..period`, and of the faces near the centre
+/// (within `DISC_RINGS` rings) in every sector. Only representatives are
+/// walked (see `Rotation`), so the rest of a valence-n mesh is never read,
+/// and cutting it makes every deeper refinement O(1) in size per sector
+/// outside the disc. None when that would keep more than half the faces.
+fn window_around_representatives(
+    mesh: &PolyMesh,
+    region_faces: &[bool],
+    period: usize,
+) -> Result<Option<Pruned>, String> {
+    let Some(chart) = mesh.chart.as_ref() else { return Ok(None) };
+    let n = chart.sectors();
+    if period == 0 || period >= n || !n.is_multiple_of(period) || 2 * (period + 2 * WINDOW_SECTORS) > n {
+        return Ok(None);
+    }
+    // distance in sectors to the representatives' sectors 0..period
+    let sector_distance = |s: usize| if s < period { 0 } else { (s + 1 - period).min(n - s) };
+    // rings around the centre: ring 0 is the centre vertex or the central face's corners
+    let mut ring = vec![usize::MAX; mesh.num_vertices()];
+    for (v, c) in chart.vertex_coords.iter().enumerate() {
+        if c.is_centre() {
+            ring[v] = 0;
+        }
+    }
+    for (f, face) in mesh.faces().iter().enumerate() {
+        if chart.face_sector[f].is_none() {
+            face.iter().for_each(|&v| ring[v] = 0);
+        }
+    }
+    // a few passes over the faces (no per-vertex face lists: only the rings
+    // up to DISC_RINGS matter)
+    for k in 1..=DISC_RINGS {
+        let reached: Vec<usize> = mesh
+            .faces()
+            .iter()
+            .filter(|face| face.iter().any(|&v| ring[v] == k - 1))
+            .flat_map(|face| face.iter().copied())
+            .filter(|&u| ring[u] == usize::MAX)
+            .collect();
+        reached.into_iter().for_each(|u| ring[u] = k);
+    }
+    let kept: Vec<usize> = (0..mesh.num_faces())
+        .filter(|&f| match chart.face_sector[f] {
+            None => true,
+            Some(s) => sector_distance(s) <= WINDOW_SECTORS || mesh.face(f).iter().any(|&v| ring[v] <= DISC_RINGS),
+        })
+        .collect();
+    if 2 * kept.len() > mesh.num_faces() {
+        return Ok(None);
+    }
+    let region = kept.iter().map(|&f| region_faces[f]).collect();
+    let (cut, old) = mesh.restrict(&kept)?;
+    Ok(Some((cut, old, region)))
 }
 
 /// The sub-mesh of the region faces and `margin` rings of faces around them

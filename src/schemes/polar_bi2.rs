@@ -60,10 +60,11 @@ impl<W: Weight> Rules<W> for PolarBi2 {
                 }
                 Some(s)
             }
-            Origin::Edge(x, y) => match uniform_fan(mesh, x, 3) {
+            // the pole's ring from the mesh's cached fan: every spoke point
+            // asks for it, and building the fan each time was quadratic in n
+            Origin::Edge(x, y) => match mesh.uniform_ring(x, 3) {
                 // a spoke point next to the pole: eq. (11)
-                Some(fan) => {
-                    let ring: Vec<usize> = fan.iter().map(|tri| tri[1]).collect();
+                Some(ring) => {
                     let n = ring.len();
                     let Some(i) = ring.iter().position(|&a| a == y) else { return Ok(None) };
                     let mut s = Stencil::new().with(x, W::ratio(1, 2));

@@ -9,7 +9,7 @@ use num_bigint::BigInt;
 use serde::Serialize;
 
 use super::Eigenvalue;
-use crate::dft::blocks::block_zero_exact;
+use crate::dft::blocks::{block_zero_exact, block_zero_exact_from_rows};
 use crate::dft::Orbits;
 use crate::matrix::LocalMatrix;
 use crate::numeric::exact::{rational_roots, QMatrix};
@@ -56,22 +56,39 @@ pub fn to_qmatrix(m: &LocalMatrix<Rational>) -> QMatrix {
 }
 
 pub fn confirm(m: &LocalMatrix<Rational>, eigs: &mut [Eigenvalue], period: usize, n: usize) -> ExactSummary {
-    let candidates: Vec<(usize, Rational)> =
-        eigs.iter().enumerate().filter_map(|(k, e)| Some((k, parse_ratio(e.recognised.as_deref()?)?))).collect();
-    let full = m.size() <= EXACT_FULL_MAX || period == n;
-    let (method, mat) = if full {
-        ("full", to_qmatrix(m))
+    if needs_full(m.size(), period, n) {
+        confirm_with("full", &to_qmatrix(m), true, eigs)
     } else {
         let orbits = Orbits::new(m, period, n);
-        ("block0", block_zero_exact(m, &orbits))
-    };
+        confirm_with("block0", &block_zero_exact(m, &orbits), false, eigs)
+    }
+}
+
+/// Whether confirmation works on the whole S (small, or without rotation
+/// symmetry) rather than on Fourier block 0.
+pub fn needs_full(size: usize, period: usize, n: usize) -> bool {
+    size <= EXACT_FULL_MAX || period == n
+}
+
+/// [`confirm`] for a rotation-symmetric S too large for the full method, from
+/// its representative rows alone (`rows[o]`: the row of orbit o's
+/// representative): block 0 needs nothing else.
+pub fn confirm_block0(rows: &[&[(usize, Rational)]], orbits: &Orbits, eigs: &mut [Eigenvalue]) -> ExactSummary {
+    confirm_with("block0", &block_zero_exact_from_rows(rows, orbits), false, eigs)
+}
+
+/// Test the float eigenvalues' rational readings against the exact
+/// characteristic polynomial of `mat` (all of S when `full`, else block 0).
+fn confirm_with(method: &str, mat: &QMatrix, full: bool, eigs: &mut [Eigenvalue]) -> ExactSummary {
+    let candidates: Vec<(usize, Rational)> =
+        eigs.iter().enumerate().filter_map(|(k, e)| Some((k, parse_ratio(e.recognised.as_deref()?)?))).collect();
     let poly = mat.charpoly();
     let cand_values: Vec<Rational> = candidates.iter().map(|c| c.1.clone()).collect();
     let (roots, rest) = rational_roots(&poly, &cand_values);
     let mut agrees = true;
     let mut out = Vec::new();
     for (r, alg) in &roots {
-        let geo = full.then(|| m.size() - mat.shifted(r).rank());
+        let geo = full.then(|| mat.n - mat.shifted(r).rank());
         let text = r.to_string();
         if let Some((k, _)) = candidates.iter().find(|c| &c.1 == r) {
             let e = &mut eigs[*k];

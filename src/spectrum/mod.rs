@@ -13,8 +13,10 @@ use faer::c64;
 use faer::Mat;
 use serde::Serialize;
 
-use crate::dft::{fourier_blocks, omega_pow, Orbits};
-use crate::matrix::{assemble, LocalMatrix};
+use crate::dft::lazy_full_by_rotation;
+use crate::dft::{fourier_blocks_from_rows, omega_pow, Orbits};
+use crate::matrix::local::{assemble_rows, assemble_rows_f64, lazy_full_f64, set_labels};
+use crate::matrix::{assemble, FullMatrix, LocalMatrix};
 use crate::neighbourhood::{discover, Configuration, Discovered, NeighbourhoodKind, VertexLabel};
 use crate::numeric::recognise::recognise;
 use crate::numeric::Rational;
@@ -199,24 +201,58 @@ impl Spectrum {
 /// Everything computed for one scheme and configuration.
 pub struct Analysis {
     pub discovered: Discovered,
-    pub matrix: LocalMatrix<f64>,
-    pub exact_matrix: Option<LocalMatrix<Rational>>,
+    /// S over the whole neighbourhood; with Fourier blocks only the
+    /// representative rows were needed, and the rest is assembled on first
+    /// access (see [`FullMatrix`])
+    pub matrix: FullMatrix<f64>,
+    pub exact_matrix: Option<FullMatrix<Rational>>,
     pub spectrum: Spectrum,
 }
 
 pub fn analyse(scheme: &dyn Scheme, config: &Configuration, opts: &Options) -> Result<Analysis, String> {
     let discovered = discover(scheme, config)?;
-    let matrix = assemble::<f64>(scheme, &discovered, opts.neighbourhood).map_err(|e| e.to_string())?;
-    let exact_matrix =
-        if opts.exact { assemble::<Rational>(scheme, &discovered, opts.neighbourhood).ok() } else { None };
+    let kind = opts.neighbourhood;
+    let labels = set_labels(&discovered, kind);
+    let size = labels.len();
     let n = config.valence();
     // asymmetric rules have no rotation symmetry, whatever the configuration
     let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { n };
     let symmetric = period < n;
     let method = opts.method.unwrap_or(if symmetric { Method::Dft } else { Method::Full });
-    let Decomposition { blocks: blocks_info, mut eigenvalues, synthesis } = decompose(&matrix, period, n, method)?;
+    let matrix = lazy_full_f64(&discovered, kind).map_err(|e| e.to_string())?;
+    let orbits = Orbits::from_labels(&labels, period, n);
+    let Decomposition { blocks: blocks_info, mut eigenvalues, synthesis } = match method {
+        Method::Dft => {
+            // the representative rows are all the blocks need
+            let rows = assemble_rows_f64(&discovered, kind, &orbits.representative).map_err(|e| e.to_string())?;
+            let rows: Vec<&[(usize, f64)]> = rows.iter().map(Vec::as_slice).collect();
+            decompose_dft(&rows, orbits.clone())?
+        }
+        Method::Full => decompose(&matrix, period, n, Method::Full)?,
+    };
     sort_eigenvalues(&mut eigenvalues);
-    let exact_analysis = exact_matrix.as_ref().map(|m| exact::confirm(m, &mut eigenvalues, period, n));
+    let (exact_matrix, exact_analysis) = if !opts.exact {
+        (None, None)
+    } else if exact::needs_full(size, period, n) {
+        match assemble::<Rational>(scheme, &discovered, kind) {
+            Ok(m) => {
+                let summary = exact::confirm(&m, &mut eigenvalues, period, n);
+                (Some(FullMatrix::ready(m)), Some(summary))
+            }
+            Err(_) => (None, None),
+        }
+    } else {
+        // block 0 needs the representative rows only; the rest of the exact
+        // S, if anyone asks, is their rotation
+        match assemble_rows::<Rational>(scheme, &discovered, kind, &orbits.representative) {
+            Ok(rows) => {
+                let refs: Vec<&[(usize, Rational)]> = rows.iter().map(Vec::as_slice).collect();
+                let summary = exact::confirm_block0(&refs, &orbits, &mut eigenvalues);
+                (Some(lazy_full_by_rotation(labels.clone(), kind, &orbits, rows)), Some(summary))
+            }
+            Err(_) => (None, None),
+        }
+    };
     let verdict = verdict::reif(&eigenvalues);
     let spectrum = Spectrum {
         scheme: scheme.name().to_string(),
@@ -225,7 +261,7 @@ pub fn analyse(scheme: &dyn Scheme, config: &Configuration, opts: &Options) -> R
         faces: config.face_sequence(),
         centre: config.centre,
         neighbourhood: opts.neighbourhood,
-        matrix_size: matrix.size(),
+        matrix_size: size,
         minimal_size: discovered.minimal.len(),
         analysis_size: discovered.analysis.len(),
         method,
@@ -233,7 +269,7 @@ pub fn analyse(scheme: &dyn Scheme, config: &Configuration, opts: &Options) -> R
         eigenvalues,
         verdict,
         exact_analysis,
-        labels: matrix.labels.clone(),
+        labels,
         synthesis,
     };
     Ok(Analysis { discovered, matrix, exact_matrix, spectrum })
@@ -250,27 +286,37 @@ pub struct Decomposition {
 /// The eigen-stage of the pipeline on its own (the benchmark times this):
 /// `period` is the configuration's rotation period, `n` its valence.
 pub fn decompose(matrix: &LocalMatrix<f64>, period: usize, n: usize, method: Method) -> Result<Decomposition, String> {
-    let (blocks, mut eigenvalues, synthesis) = match method {
+    match method {
         Method::Dft => {
             let orbits = Orbits::new(matrix, period, n);
-            let blocks = fourier_blocks(matrix, &orbits);
-            let mut all = Vec::new();
-            for b in &blocks {
-                for e in eigen::block_eigen(&b.matrix)? {
-                    all.push(Eigenvalue::from_block(e, b.index));
-                }
-            }
-            let info = blocks.iter().map(|b| BlockInfo { index: b.index, size: b.matrix.nrows() }).collect();
-            let (block_orbits, mats) = blocks.into_iter().map(|b| (b.orbits, b.matrix)).unzip();
-            (info, all, Synthesis::Dft { orbits, block_orbits, blocks: mats })
+            let rows: Vec<&[(usize, f64)]> = orbits.representative.iter().map(|&k| matrix.rows[k].as_slice()).collect();
+            decompose_dft(&rows, orbits)
         }
         Method::Full => {
             let dense = Mat::<c64>::from_fn(matrix.size(), matrix.size(), |i, j| c64::new(matrix.get(i, j), 0.0));
             let all = eigen::block_eigen(&dense)?.into_iter().map(|e| Eigenvalue::from_block(e, 0)).collect();
-            (vec![BlockInfo { index: 0, size: matrix.size() }], all, Synthesis::Full { matrix: dense })
+            Ok(finish(vec![BlockInfo { index: 0, size: matrix.size() }], all, Synthesis::Full { matrix: dense }))
         }
-    };
-    eigenvalues = merge(eigenvalues);
+    }
+}
+
+/// The Fourier path from the representative rows (`rows[o]`: the row of S of
+/// orbit o's representative, over all columns).
+pub fn decompose_dft(rows: &[&[(usize, f64)]], orbits: Orbits) -> Result<Decomposition, String> {
+    let blocks = fourier_blocks_from_rows(rows, &orbits);
+    let mut all = Vec::new();
+    for b in &blocks {
+        for e in eigen::block_eigen(&b.matrix)? {
+            all.push(Eigenvalue::from_block(e, b.index));
+        }
+    }
+    let info = blocks.iter().map(|b| BlockInfo { index: b.index, size: b.matrix.nrows() }).collect();
+    let (block_orbits, mats) = blocks.into_iter().map(|b| (b.orbits, b.matrix)).unzip();
+    Ok(finish(info, all, Synthesis::Dft { orbits, block_orbits, blocks: mats }))
+}
+
+fn finish(blocks: Vec<BlockInfo>, eigenvalues: Vec<Eigenvalue>, synthesis: Synthesis) -> Decomposition {
+    let mut eigenvalues = merge(eigenvalues);
     for e in &mut eigenvalues {
         // snap tiny imaginary parts of real eigenvalues (conjugate blocks) to zero
         if e.im.abs() < 1e-12 * e.modulus.max(1.0) {
@@ -278,7 +324,7 @@ pub fn decompose(matrix: &LocalMatrix<f64>, period: usize, n: usize, method: Met
         }
         e.recognised = if e.is_real() { recognise(e.re) } else { None };
     }
-    Ok(Decomposition { blocks, eigenvalues, synthesis })
+    Decomposition { blocks, eigenvalues, synthesis }
 }
 
 impl Eigenvalue {
@@ -326,12 +372,33 @@ fn synthesise(x: &[c64], m: usize, block_orbits: &[usize], orbits: &Orbits, size
         .collect()
 }
 
-/// Merge equal eigenvalues found in different blocks.
+/// Merge equal eigenvalues found in different blocks: each joins the first
+/// earlier distinct value within the tolerance. Candidates are looked up in
+/// buckets of the real part (a match is at most the tolerance away in it), so
+/// n blocks' eigenvalues are not each compared with every distinct one.
 fn merge(list: Vec<Eigenvalue>) -> Vec<Eigenvalue> {
+    const BUCKET: f64 = 1e-6;
+    const MAX_SPAN: f64 = 64.0;
     let mut out: Vec<Eigenvalue> = Vec::new();
+    let mut buckets: std::collections::HashMap<i64, Vec<usize>> = std::collections::HashMap::new();
+    let key = |re: f64| (re / BUCKET).floor() as i64;
     for e in list {
         let z = e.value();
-        if let Some(t) = out.iter_mut().find(|t| (t.value() - z).norm() < MERGE_TOL * z.norm().max(1.0)) {
+        let tol = MERGE_TOL * z.norm().max(1.0);
+        let close = |t: &Eigenvalue| (t.value() - z).norm() < tol;
+        let found = if (tol / BUCKET) < MAX_SPAN && z.re.is_finite() {
+            // the first (lowest index) match among the buckets the tolerance
+            // reaches, one more on each side against rounding at the edges
+            (key(z.re - tol) - 1..=key(z.re + tol) + 1)
+                .filter_map(|b| buckets.get(&b))
+                .flat_map(|ids| ids.iter().copied())
+                .filter(|&i| close(&out[i]))
+                .min()
+        } else {
+            out.iter().position(close)
+        };
+        if let Some(i) = found {
+            let t = &mut out[i];
             t.algebraic_multiplicity += e.algebraic_multiplicity;
             t.geometric_multiplicity += e.geometric_multiplicity;
             t.defective |= e.defective;
@@ -340,6 +407,7 @@ fn merge(list: Vec<Eigenvalue>) -> Vec<Eigenvalue> {
             t.block = t.blocks[0];
             t.vectors.extend(e.vectors);
         } else {
+            buckets.entry(key(z.re)).or_default().push(out.len());
             out.push(e);
         }
     }

@@ -2,7 +2,7 @@
 //! corner; F-faces shrink the old faces, E-faces sit on interior edges,
 //! V-faces on interior vertices.
 
-use std::collections::HashMap;
+use crate::mesh::IdMap;
 
 use super::{ChartBuilder, Refined};
 use crate::mesh::PolyMesh;
@@ -10,7 +10,7 @@ use crate::sdc::Origin;
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
     let mut origins = Vec::new();
-    let mut corner_id: HashMap<(usize, usize), usize> = HashMap::new(); // (face, old vertex) -> new
+    let mut corner_id: IdMap<(usize, usize), usize> = IdMap::default(); // (face, old vertex) -> new
     for (f, face) in mesh.faces().iter().enumerate() {
         for (k, &v) in face.iter().enumerate() {
             corner_id.insert((f, v), origins.len());

@@ -10,7 +10,7 @@
 //! Charts use doubled lattice coordinates (scale 2): vertices at even, FCVs at
 //! odd points.
 
-use std::collections::HashMap;
+use crate::mesh::IdMap;
 
 use super::{ChartBuilder, Refined};
 use crate::mesh::PolyMesh;
@@ -21,7 +21,7 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
         return Err("this scheme needs a face control vertex on every face".into());
     }
     let fcv: Vec<usize> = mesh.face_points.iter().flatten().copied().collect();
-    let is_fcv: std::collections::HashSet<usize> = fcv.iter().copied().collect();
+    let is_fcv: crate::mesh::IdSet<usize> = fcv.iter().copied().collect();
     let mut origins: Vec<Origin> = Vec::new();
     let mut vertex_id = vec![usize::MAX; mesh.num_vertices()];
     for v in 0..mesh.num_vertices() {
@@ -30,7 +30,7 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
             origins.push(Origin::Vertex(v));
         }
     }
-    let mut edge_id: HashMap<(usize, usize), usize> = HashMap::new();
+    let mut edge_id: IdMap<(usize, usize), usize> = IdMap::default();
     for (a, b) in mesh.edges() {
         edge_id.insert((a, b), origins.len());
         edge_id.insert((b, a), origins.len());

@@ -16,7 +16,7 @@
 //! near x on the radial edge to ring r + 1 and r − 1 get rings 2r and 2r − 1
 //! (one ring per radial half-segment), the spoke points ring 1, the pole stays at 0.
 
-use std::collections::HashMap;
+use crate::mesh::IdMap;
 
 use super::{ChartBuilder, Refined};
 use crate::mesh::PolyMesh;
@@ -24,7 +24,13 @@ use crate::sdc::Origin;
 
 /// A pole: an interior vertex whose faces are all triangles.
 pub fn is_pole(mesh: &PolyMesh, v: usize) -> bool {
-    mesh.vertex_fan(v).is_some_and(|fan| fan.iter().all(|f| f.len() == 3))
+    mesh.fan_corners(v).is_some_and(|fan| fan.iter().all(|&(f, _)| mesh.face(f).len() == 3))
+}
+
+/// `is_pole` for every vertex, asked once: each triangle asks for its three
+/// corners, and a pole of valence n has n triangles (n fan walks of length n).
+fn poles(mesh: &PolyMesh) -> Vec<bool> {
+    (0..mesh.num_vertices()).map(|v| is_pole(mesh, v)).collect()
 }
 
 fn key(a: usize, b: usize) -> (usize, usize) {
@@ -32,19 +38,18 @@ fn key(a: usize, b: usize) -> (usize, usize) {
 }
 
 /// Radial (true) or circumferential (false) for every edge.
-fn classify(mesh: &PolyMesh) -> Result<HashMap<(usize, usize), bool>, String> {
-    let mut radial: HashMap<(usize, usize), bool> = HashMap::new();
+fn classify(mesh: &PolyMesh, pole: &[bool]) -> Result<IdMap<(usize, usize), bool>, String> {
+    let mut radial: IdMap<(usize, usize), bool> = IdMap::default();
     let not_polar = |f: usize, why: &str| format!("not a polar net: face {} {why}", f + 1);
-    let set = |map: &mut HashMap<(usize, usize), bool>, a: usize, b: usize, r: bool, f: usize| match map
-        .insert(key(a, b), r)
-    {
-        Some(old) if old != r => Err(not_polar(f, "has an edge that is both radial and circumferential")),
-        _ => Ok(()),
-    };
+    let set =
+        |map: &mut IdMap<(usize, usize), bool>, a: usize, b: usize, r: bool, f: usize| match map.insert(key(a, b), r) {
+            Some(old) if old != r => Err(not_polar(f, "has an edge that is both radial and circumferential")),
+            _ => Ok(()),
+        };
     for (f, face) in mesh.faces().iter().enumerate() {
         match face.len() {
             3 => {
-                let poles: Vec<usize> = (0..3).filter(|&k| is_pole(mesh, face[k])).collect();
+                let poles: Vec<usize> = (0..3).filter(|&k| pole[face[k]]).collect();
                 let [k] = poles[..] else { return Err(not_polar(f, "is a triangle without exactly one pole")) };
                 let (p, a, b) = (face[k], face[(k + 1) % 3], face[(k + 2) % 3]);
                 set(&mut radial, p, a, true, f)?;
@@ -83,9 +88,10 @@ fn classify(mesh: &PolyMesh) -> Result<HashMap<(usize, usize), bool>, String> {
 }
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
-    let radial = classify(mesh)?;
+    let pole = poles(mesh);
+    let radial = classify(mesh, &pole)?;
     let mut origins: Vec<Origin> = Vec::new();
-    let mut ids: HashMap<Origin, usize> = HashMap::new();
+    let mut ids: IdMap<Origin, usize> = IdMap::default();
     let mut id = |o: Origin, origins: &mut Vec<Origin>| {
         *ids.entry(o).or_insert_with(|| {
             origins.push(o);
@@ -97,10 +103,10 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
         let m = face.len();
         let x = face[k];
         if m == 3 {
-            if is_pole(mesh, x) {
+            if pole[x] {
                 return Origin::Vertex(x);
             }
-            let p = *face.iter().find(|&&v| is_pole(mesh, v)).expect("classified");
+            let p = *face.iter().find(|&&v| pole[v]).expect("classified");
             return Origin::Edge(p, x);
         }
         let (next, prev) = (face[(k + 1) % m], face[(k + m - 1) % m]);

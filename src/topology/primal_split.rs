@@ -1,7 +1,7 @@
 //! Primal split: Catmull–Clark-like (quads around face points) and Loop-like
 //! (1 -> 4 triangles) refinement, and any mixture (4-3 subdivision).
 
-use std::collections::HashMap;
+use crate::mesh::IdMap;
 
 use super::{ChartBuilder, Refined, TriangleSplit};
 use crate::mesh::PolyMesh;
@@ -10,7 +10,7 @@ use crate::sdc::Origin;
 pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, String> {
     let nv = mesh.num_vertices();
     let mut origins: Vec<Origin> = (0..nv).map(Origin::Vertex).collect();
-    let mut edge_id: HashMap<(usize, usize), usize> = HashMap::new();
+    let mut edge_id: IdMap<(usize, usize), usize> = IdMap::default();
     for (a, b) in mesh.edges() {
         let id = origins.len();
         origins.push(Origin::Edge(a, b));

@@ -11,8 +11,6 @@
 //! and coordinates return to its own units (scale 1: vertex c -> c, face vertex
 //! -> (a + b + c)/3), so vertices two steps apart match by coordinates.
 
-use std::collections::HashMap;
-
 use super::{ChartBuilder, Refined};
 use crate::mesh::PolyMesh;
 use crate::sdc::Origin;
@@ -27,23 +25,26 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
     }
     let mut faces = Vec::new();
     let mut parents = Vec::new();
-    let mut done: HashMap<(usize, usize), ()> = HashMap::new();
-    for (a, b) in mesh.edges() {
-        if done.insert((a.min(b), a.max(b)), ()).is_some() {
-            continue;
-        }
-        let (f, _) = mesh.half_edge(a, b).or_else(|| mesh.half_edge(b, a)).ok_or("dangling edge")?;
-        // orient so that f holds a -> b
-        let (a, b) = if mesh.half_edge(a, b).map(|x| x.0) == Some(f) { (a, b) } else { (b, a) };
-        let cf = face_vertex[f];
-        // a boundary edge has no partner face to flip towards: its triangle
-        // is left out (the refined patch ends there; no boundary rules)
-        if let Some((g, _)) = mesh.half_edge(b, a) {
-            let cg = face_vertex[g];
-            faces.push(vec![a, cg, cf]);
-            parents.push(Origin::Edge(a, b));
-            faces.push(vec![b, cf, cg]);
-            parents.push(Origin::Edge(a, b));
+    // every edge once, in the order of `PolyMesh::edges` (the half-edge of
+    // face f at corner k, unless its twin comes first), with the face that
+    // holds it read off directly instead of looked up
+    for (f, face) in mesh.faces().iter().enumerate() {
+        for k in 0..face.len() {
+            let (a, b) = (face[k], face[(k + 1) % face.len()]);
+            let twin = mesh.half_edge(b, a);
+            if twin.is_some() && a > b {
+                continue;
+            }
+            let cf = face_vertex[f];
+            // a boundary edge has no partner face to flip towards: its triangle
+            // is left out (the refined patch ends there; no boundary rules)
+            if let Some((g, _)) = twin {
+                let cg = face_vertex[g];
+                faces.push(vec![a, cg, cf]);
+                parents.push(Origin::Edge(a, b));
+                faces.push(vec![b, cf, cg]);
+                parents.push(Origin::Edge(a, b));
+            }
         }
     }
     let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| e.to_string())?;

@@ -9,7 +9,7 @@
 //! the interior vertex near corner v0 of quad (v0, v1, v2, v3) to
 //! (4v0 + 2v1 + v2 + 2v3)/3 (the bilinear point at (1/3, 1/3), times 3).
 
-use std::collections::HashMap;
+use crate::mesh::IdMap;
 
 use super::{ChartBuilder, Refined};
 use crate::mesh::PolyMesh;
@@ -25,7 +25,7 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
     }
     let nv = mesh.num_vertices();
     let mut origins: Vec<Origin> = (0..nv).map(Origin::Vertex).collect();
-    let mut edge_id: HashMap<(usize, usize), usize> = HashMap::new();
+    let mut edge_id: IdMap<(usize, usize), usize> = IdMap::default();
     for (a, b) in mesh.edges() {
         edge_id.insert((a, b), origins.len());
         origins.push(Origin::Edge(a, b));
