@@ -35,11 +35,12 @@
 //! Valence 4 keeps the tensor-product rule, so regular regions stay the
 //! regular adjustable scheme.
 
-use super::{uniform_fan, Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
+use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
+use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
-use crate::sdc::{Origin, RuleResult, Stencil};
+use crate::sdc::{Origin, RuleResult};
 
 pub struct Tps {
     params: Params,
@@ -130,54 +131,55 @@ impl Tps {
     }
 }
 
-/// The quad on the other side of a -> b, as a cycle starting at a.
-fn quad_at(mesh: &PolyMesh, a: usize, b: usize) -> Option<Vec<usize>> {
-    let (f, k) = mesh.half_edge(a, b)?;
-    let cyc = mesh.face_from(f, k);
-    (cyc.len() == 4).then_some(cyc)
+// The rules are a mask on the ternary host's slots (as a scheme file on that
+// host): corner points, edge points and vertex points of the 3 x 3 split.
+impl Wants for Tps {
+    fn rule(&self, rule: &str) -> bool {
+        matches!(rule, "vertex" | "edge" | "corner")
+    }
+    fn family(&self, rule: &str, family: &str) -> bool {
+        matches!(
+            (rule, family),
+            ("vertex", "centre" | "edge" | "face")
+                | ("edge", "near" | "far" | "near-side" | "far-side")
+                | ("corner", "near" | "side" | "far")
+        )
+    }
+}
+
+impl<W: Weight> Mask<W> for Tps {
+    fn weight(&self, _mesh: &PolyMesh, rule: &'static str, slot: &Slot) -> Result<W, Inexact> {
+        let w = self.one_d::<W>()?;
+        Ok(match (rule, slot.family) {
+            // the corner point near c_0 of a quad: the tensor product of the 1-D rule
+            ("corner", "near") => w.near.clone() * w.near,
+            ("corner", "side") => w.near * w.far,
+            ("corner", "far") => w.far.clone() * w.far,
+            // the edge point near a on edge a-b, and the quads' other corners
+            ("edge", "near") => w.near * w.v0,
+            ("edge", "far") => w.far * w.v0,
+            ("edge", "near-side") => w.near * w.v1,
+            ("edge", "far-side") => w.far * w.v1,
+            // the vertex point (valence n) with the weights α1, α2 of `alphas`
+            ("vertex", family) => {
+                let n = slot.n as i64;
+                let (a1, a2): (W, W) = self.alphas(n)?;
+                match family {
+                    "centre" => W::one() - a1 - a2,
+                    "edge" => a1 / W::int(n),
+                    "face" => a2 / W::int(n),
+                    _ => W::zero(),
+                }
+            }
+            // no weight on slots the mask does not use
+            _ => W::zero(),
+        })
+    }
 }
 
 impl<W: Weight> Rules<W> for Tps {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
-        let w = self.one_d::<W>()?;
-        Ok(match origin {
-            Origin::Corner { face, corner } => {
-                let c = mesh.face_from(face, corner);
-                if c.len() != 4 {
-                    return Ok(None);
-                }
-                let (nn, nf, ff) =
-                    (w.near.clone() * w.near.clone(), w.near.clone() * w.far.clone(), w.far.clone() * w.far.clone());
-                Some(Stencil::new().with(c[0], nn).with(c[1], nf.clone()).with(c[2], ff).with(c[3], nf))
-            }
-            Origin::Edge(a, b) => {
-                // left quad holds a -> b: (a, b, b_left, a_left); right quad b -> a: (b, a, a_right, b_right)
-                let (Some(l), Some(r)) = (quad_at(mesh, a, b), quad_at(mesh, b, a)) else { return Ok(None) };
-                let (near_across, far_across) = (w.near.clone() * w.v1.clone(), w.far.clone() * w.v1.clone());
-                Some(
-                    Stencil::new()
-                        .with(a, w.near.clone() * w.v0.clone())
-                        .with(b, w.far.clone() * w.v0.clone())
-                        .with(l[3], near_across.clone())
-                        .with(r[2], near_across)
-                        .with(l[2], far_across.clone())
-                        .with(r[3], far_across),
-                )
-            }
-            Origin::Vertex(v) => {
-                let Some(fan) = uniform_fan(mesh, v, 4) else { return Ok(None) };
-                let n = fan.len() as i64;
-                let (a1, a2): (W, W) = self.alphas(n)?;
-                let mut s = Stencil::new().with(v, W::one() - a1.clone() - a2.clone());
-                for quad in &fan {
-                    // each edge neighbour is the second corner of exactly one quad of the fan
-                    s.add(quad[1], a1.clone() / W::int(n));
-                    s.add(quad[2], a2.clone() / W::int(n));
-                }
-                Some(s)
-            }
-            Origin::Face(_) => None,
-        })
+        weigh(Host::Ternary, mesh, origin, self, &W::one())
     }
 }
 
