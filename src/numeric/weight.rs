@@ -56,8 +56,8 @@ impl Weight for f64 {
     }
     fn cos_2pi(k: i64, n: i64) -> Result<Self, Inexact> {
         // exact values where they exist, so that e.g. cos(2π/4) is 0, not 6e-17
-        match exact_cos_2pi(k, n) {
-            Some(r) => Ok(ToPrimitive::to_f64(&r).unwrap_or(f64::NAN)),
+        match rational_cos_2pi(k, n) {
+            Some((p, q)) => Ok(p as f64 / q as f64),
             None => Ok((2.0 * std::f64::consts::PI * (k.rem_euclid(n)) as f64 / n as f64).cos()),
         }
     }
@@ -110,23 +110,28 @@ impl Weight for Rational {
     }
 }
 
-/// cos(2πk/n) when it is rational (n/gcd ∈ {1, 2, 3, 4, 6}).
-pub fn exact_cos_2pi(k: i64, n: i64) -> Option<Rational> {
+/// cos(2πk/n) as a fraction p/q when it is rational (n/gcd ∈ {1, 2, 3, 4, 6}),
+/// in machine integers: the float path asks for it at every stencil weight,
+/// so it must not build big rationals.
+pub fn rational_cos_2pi(k: i64, n: i64) -> Option<(i64, i64)> {
     if n <= 0 {
         return None;
     }
     let k = k.rem_euclid(n);
     let g = gcd(k, n).max(1);
-    let (k, d) = (k / g, n / g);
-    let r = |p: i64, q: i64| Some(Rational::new(BigInt::from(p), BigInt::from(q)));
-    match (k, d) {
-        (0, 1) => r(1, 1),
-        (_, 2) => r(-1, 1),
-        (_, 3) => r(-1, 2),
-        (_, 4) => r(0, 1),
-        (_, 6) => r(1, 2),
+    match (k / g, n / g) {
+        (0, 1) => Some((1, 1)),
+        (_, 2) => Some((-1, 1)),
+        (_, 3) => Some((-1, 2)),
+        (_, 4) => Some((0, 1)),
+        (_, 6) => Some((1, 2)),
         _ => None,
     }
+}
+
+/// cos(2πk/n) when it is rational (n/gcd ∈ {1, 2, 3, 4, 6}).
+pub fn exact_cos_2pi(k: i64, n: i64) -> Option<Rational> {
+    rational_cos_2pi(k, n).map(|(p, q)| Rational::new(BigInt::from(p), BigInt::from(q)))
 }
 
 pub fn gcd(a: i64, b: i64) -> i64 {

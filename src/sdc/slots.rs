@@ -887,16 +887,18 @@ pub fn gather(host: Host, mesh: &PolyMesh, origin: Origin, wants: &dyn Wants) ->
 /// face-opposite neighbours f_j = fan[j][2]. `size`: the faces must all have
 /// this many corners.
 fn vertex_fan_part(rule: &'static str, mesh: &PolyMesh, v: VertexId, size: Option<usize>) -> Result<Part, GatherError> {
-    let fan = match size {
-        Some(s) => uniform_fan(mesh, v, s)?,
-        None => fan(mesh, v)?,
-    };
+    // the fan as (face, corner) pairs from the mesh's cache, without copying faces
+    let fan = mesh.fan_corners(v).ok_or(GatherError::Truncated)?;
+    if size.is_some_and(|s| fan.iter().any(|&(f, _)| mesh.face(f).len() != s)) {
+        return Err(GatherError::NotCovered);
+    }
     let mut p = Part::around(rule, fan.len(), v);
     p.put("centre", 0, v);
-    for (j, face) in fan.iter().enumerate() {
-        p.put("edge", j, face[1]);
+    for (j, &(f, k)) in fan.iter().enumerate() {
+        let face = mesh.face(f);
+        p.put("edge", j, face[(k + 1) % face.len()]);
         if face.len() == 4 {
-            p.put("face", j, face[2]);
+            p.put("face", j, face[(k + 2) % 4]);
         }
     }
     Ok(p)
@@ -1143,10 +1145,13 @@ fn sqrt3_face(mesh: &PolyMesh, f: FaceId) -> Result<Part, GatherError> {
     }
     let mut p = Part::new("face", 3);
     for (k, &c) in face.iter().enumerate() {
-        let fan = uniform_fan(mesh, c, 3)?;
-        let n = fan.len();
+        // the ring from the mesh's cached fan: a corner of valence n is asked
+        // for by its n faces, so copying its whole fan each time would cost n²
+        mesh.fan_corners(c).ok_or(GatherError::Truncated)?;
+        let ring = mesh.uniform_ring(c, 3).ok_or(GatherError::NotCovered)?;
+        let n = ring.len();
         p.put_around("corner", k, n, c, c);
-        fan.iter().enumerate().for_each(|(j, t)| p.put_around("ring", j, n, c, t[1]));
+        ring.iter().enumerate().for_each(|(j, &t)| p.put_around("ring", j, n, c, t));
     }
     Ok(p)
 }
