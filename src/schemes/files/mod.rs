@@ -47,8 +47,8 @@ const RESERVED: [&str; 11] = ["n", "j", "pi", "i", "cos", "sin", "sqrt", "cbrt",
 /// A TOML table whose values keep their positions in the file.
 pub(crate) type Section = Spanned<BTreeMap<String, Spanned<toml::Value>>>;
 
-/// Read a scheme file (size capped before reading it all).
-fn read(path: &Path) -> Result<String, String> {
+/// Read a scheme file of any family (size capped before reading it all).
+pub(crate) fn read_scheme_file(path: &Path) -> Result<String, String> {
     use std::io::Read;
     let shown = path.display().to_string();
     let file = std::fs::File::open(path).map_err(|e| format!("cannot read scheme file {shown}: {e}"))?;
@@ -86,12 +86,12 @@ fn family_of_text(text: &str, file: &str) -> Result<Family, String> {
 
 /// The family of a scheme file, from its `domain` key.
 pub fn family(path: &Path) -> Result<Family, String> {
-    family_of_text(&read(path)?, &path.display().to_string())
+    family_of_text(&read_scheme_file(path)?, &path.display().to_string())
 }
 
 /// Load a scheme file of any family with `name=value` parameter overrides.
 pub fn load(path: &Path, overrides: &[(String, String)]) -> Result<Built, String> {
-    let text = read(path)?;
+    let text = read_scheme_file(path)?;
     let file = path.display().to_string();
     Ok(match family_of_text(&text, &file)? {
         Family::Mesh => Built::Mesh(super::user::load(path, overrides)?),
@@ -111,7 +111,7 @@ pub struct Described {
 
 /// Parse a scheme file of any family for its name, description and parameters.
 pub fn describe(path: &Path) -> Result<Described, String> {
-    let text = read(path)?;
+    let text = read_scheme_file(path)?;
     let file = path.display().to_string();
     Ok(match family_of_text(&text, &file)? {
         Family::Mesh => {

@@ -12,7 +12,7 @@ use toml::Spanned;
 use super::weights::eval_f64;
 use crate::numeric::expr::{Env, Expr};
 use crate::numeric::ParamValue;
-use crate::schemes::files::{line_of, parameter_env, parameter_table, ParamDoc};
+use crate::schemes::files::{line_of, parameter_env, parameter_table, read_scheme_file, ParamDoc};
 use crate::sdc::slots::{Arity, Host, HostSpec, OriginKind, RuleSlots, Valence, HOSTS};
 
 // the caps every scheme file has (one place: `schemes::files`)
@@ -510,16 +510,7 @@ impl Cx<'_> {
 
 /// Read and parse a scheme file (size capped before reading it all).
 pub fn load_def(path: &Path) -> Result<UserSchemeDef, String> {
-    use std::io::Read;
     let shown = path.display().to_string();
-    let file = std::fs::File::open(path).map_err(|e| format!("cannot read scheme file {shown}: {e}"))?;
-    let mut bytes = Vec::new();
-    file.take(MAX_FILE_BYTES as u64 + 1)
-        .read_to_end(&mut bytes)
-        .map_err(|e| format!("cannot read scheme file {shown}: {e}"))?;
-    if bytes.len() > MAX_FILE_BYTES {
-        return Err(format!("{shown}: larger than {MAX_FILE_BYTES} bytes; scheme files are short"));
-    }
-    let text = String::from_utf8(bytes).map_err(|_| format!("{shown}: not UTF-8 text"))?;
+    let text = read_scheme_file(path)?;
     UserSchemeDef::parse(&text, &shown)
 }
