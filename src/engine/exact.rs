@@ -4,10 +4,10 @@
 //! exact geometric multiplicity n − rank(S − λI) of each. The floats only
 //! propose candidates; every reported value is proven on the exact matrix.
 //!
-//! The mesh pipeline (`crate::spectrum::exact::confirm`, which the lattice
-//! analysis reuses for its `Spectrum`) does the same on the full matrix or on
-//! Fourier block 0 and reports it in its own stable JSON type; its full branch
-//! is exactly `confirm` here.
+//! This is the one exact confirmation: the curve analysis calls it, and the
+//! mesh and lattice pipelines (`crate::spectrum::exact`) call it on the whole
+//! S; for large rotation-symmetric S they test Fourier block 0 instead, whose
+//! rational roots (without ranks) are all a block can prove.
 
 use crate::numeric::exact::{rational_roots, Poly, QMatrix};
 use crate::numeric::recognise::convergents;

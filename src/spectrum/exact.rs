@@ -11,6 +11,7 @@ use serde::Serialize;
 use super::Eigenvalue;
 use crate::dft::blocks::{block_zero_exact, block_zero_exact_from_rows};
 use crate::dft::Orbits;
+use crate::engine::exact as engine_exact;
 use crate::matrix::LocalMatrix;
 use crate::numeric::exact::{rational_roots, QMatrix};
 use crate::numeric::Rational;
@@ -46,13 +47,7 @@ fn parse_ratio(s: &str) -> Option<Rational> {
 }
 
 pub fn to_qmatrix(m: &LocalMatrix<Rational>) -> QMatrix {
-    let mut q = QMatrix::zeros(m.size());
-    for (i, row) in m.rows.iter().enumerate() {
-        for (j, w) in row {
-            q.set(i, *j, w.clone());
-        }
-    }
-    q
+    engine_exact::to_qmatrix(&m.rows)
 }
 
 pub fn confirm(m: &LocalMatrix<Rational>, eigs: &mut [Eigenvalue], period: usize, n: usize) -> ExactSummary {
@@ -82,29 +77,40 @@ pub fn confirm_block0(rows: &[&[(usize, Rational)]], orbits: &Orbits, eigs: &mut
 fn confirm_with(method: &str, mat: &QMatrix, full: bool, eigs: &mut [Eigenvalue]) -> ExactSummary {
     let candidates: Vec<(usize, Rational)> =
         eigs.iter().enumerate().filter_map(|(k, e)| Some((k, parse_ratio(e.recognised.as_deref()?)?))).collect();
-    let poly = mat.charpoly();
     let cand_values: Vec<Rational> = candidates.iter().map(|c| c.1.clone()).collect();
-    let (roots, rest) = rational_roots(&poly, &cand_values);
+    // the whole S: the one exact confirmation every domain uses (roots and
+    // exact ranks); block 0 alone: its rational roots only, since ranks of a
+    // block say nothing about the eigenspaces of S
+    let (poly, roots, remaining_degree) = if full {
+        let c = engine_exact::confirm(mat, &cand_values);
+        let roots: Vec<(Rational, usize, Option<usize>)> =
+            c.eigenvalues.into_iter().map(|e| (e.value, e.algebraic, Some(e.geometric))).collect();
+        (c.charpoly, roots, c.remaining_degree)
+    } else {
+        let poly = mat.charpoly();
+        let (roots, rest) = rational_roots(&poly, &cand_values);
+        let degree = rest.degree();
+        (poly, roots.into_iter().map(|(r, a)| (r, a, None)).collect(), degree)
+    };
     let mut agrees = true;
     let mut out = Vec::new();
-    for (r, alg) in &roots {
-        let geo = full.then(|| mat.n - mat.shifted(r).rank());
+    for (r, alg, geo) in &roots {
         let text = r.to_string();
         if let Some((k, _)) = candidates.iter().find(|c| &c.1 == r) {
             let e = &mut eigs[*k];
             e.exact = Some(text.clone());
-            if full && (e.algebraic_multiplicity != *alg || Some(e.geometric_multiplicity) != geo) {
+            if full && (e.algebraic_multiplicity != *alg || Some(e.geometric_multiplicity) != *geo) {
                 agrees = false;
             }
         }
-        out.push(ExactRoot { value: text, algebraic_multiplicity: *alg, geometric_multiplicity: geo });
+        out.push(ExactRoot { value: text, algebraic_multiplicity: *alg, geometric_multiplicity: *geo });
     }
     ExactSummary {
         method: method.to_string(),
         polynomial_degree: poly.degree(),
         charpoly: (poly.degree() <= 12).then(|| poly.pretty()),
         rational_roots: out,
-        remaining_degree: rest.degree(),
+        remaining_degree,
         agrees_with_float: agrees,
     }
 }
