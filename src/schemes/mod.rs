@@ -75,10 +75,3 @@ pub fn build(name: &str, overrides: &[(String, String)]) -> Result<Box<dyn Schem
 pub fn resolve(name_or_path: &str, overrides: &[(String, String)]) -> Result<Box<dyn Scheme>, String> {
     on_mesh(registry::resolve(name_or_path, overrides)?, name_or_path)
 }
-
-/// The one-ring fan of an interior vertex, restricted to faces of the given
-/// size; `None` when the vertex is on the boundary or a face has another size.
-pub(crate) fn uniform_fan(mesh: &PolyMesh, v: usize, size: usize) -> Option<Vec<Vec<usize>>> {
-    let fan = mesh.vertex_fan(v)?;
-    fan.iter().all(|f| f.len() == size).then_some(fan)
-}

@@ -10,11 +10,13 @@
 //! * γ_j = (1/2 + cos(2πj/n))/n (15), so Σ γ_j = 1/2; α = 1/4 by default
 //!   (parameter `alpha`).
 
-use super::{uniform_fan, Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
+use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
+use crate::numeric::Inexact;
 use crate::numeric::Weight;
+use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
-use crate::sdc::{Origin, RuleResult, Stencil};
+use crate::sdc::{Origin, RuleResult};
 
 pub struct PolarBi2 {
     params: Params,
@@ -47,37 +49,40 @@ pub fn entry() -> SchemeEntry {
     }
 }
 
+// The rules are a mask on the polar host's slots (as a scheme file on that
+// host): the pole (eq. 12), the spoke points next to it (eq. 11, ring turned
+// so that a_0 is the spoke's end) and the radial Chaikin points.
+impl Wants for PolarBi2 {
+    fn rule(&self, rule: &str) -> bool {
+        matches!(rule, "pole" | "spoke" | "radial")
+    }
+    fn family(&self, rule: &str, family: &str) -> bool {
+        matches!((rule, family), ("pole", "centre" | "ring") | ("spoke", "pole" | "ring") | ("radial", "near" | "far"))
+    }
+}
+
+impl<W: Weight> Mask<W> for PolarBi2 {
+    fn weight(&self, _mesh: &PolyMesh, rule: &'static str, slot: &Slot) -> Result<W, Inexact> {
+        let n = slot.n as i64;
+        Ok(match (rule, slot.family) {
+            // p' = (1 − α) p + α ā
+            ("pole", "centre") => W::one() - W::param(self.params.of(&ALPHA).expect("alpha has a default"))?,
+            ("pole", "ring") => W::param(self.params.of(&ALPHA).expect("alpha has a default"))? / W::int(n),
+            // a_i' = p/2 + Σ_j γ_j a_{i+j}, γ_j = (1/2 + cos(2πj/n))/n (Σ γ_j = 1/2)
+            ("spoke", "pole") => W::ratio(1, 2),
+            ("spoke", "ring") => (W::ratio(1, 2) + W::cos_2pi(slot.j as i64, n)?) / W::int(n),
+            // binary 1-D (Chaikin) subdivision along every spoke
+            ("radial", "near") => W::ratio(3, 4),
+            ("radial", "far") => W::ratio(1, 4),
+            // no weight on slots the mask does not use
+            _ => W::zero(),
+        })
+    }
+}
+
 impl<W: Weight> Rules<W> for PolarBi2 {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
-        Ok(match origin {
-            Origin::Vertex(p) => {
-                let Some(fan) = uniform_fan(mesh, p, 3) else { return Ok(None) };
-                let alpha: W = W::param(self.params.of(&ALPHA).expect("alpha has a default"))?;
-                let n = fan.len() as i64;
-                let mut s = Stencil::new().with(p, W::one() - alpha.clone());
-                for tri in &fan {
-                    s.add(tri[1], alpha.clone() / W::int(n));
-                }
-                Some(s)
-            }
-            // the pole's ring from the mesh's cached fan: every spoke point
-            // asks for it, and building the fan each time was quadratic in n
-            Origin::Edge(x, y) => match mesh.uniform_ring(x, 3) {
-                // a spoke point next to the pole: eq. (11)
-                Some(ring) => {
-                    let n = ring.len();
-                    let Some(i) = ring.iter().position(|&a| a == y) else { return Ok(None) };
-                    let mut s = Stencil::new().with(x, W::ratio(1, 2));
-                    for j in 0..n {
-                        let gamma = (W::ratio(1, 2) + W::cos_2pi(j as i64, n as i64)?) / W::int(n as i64);
-                        s.add(ring[(i + j) % n], gamma);
-                    }
-                    Some(s)
-                }
-                None => Some(Stencil::new().with(x, W::ratio(3, 4)).with(y, W::ratio(1, 4))),
-            },
-            _ => None,
-        })
+        weigh(Host::Polar, mesh, origin, self, &W::one())
     }
 }
 

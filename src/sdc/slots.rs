@@ -854,16 +854,18 @@ pub fn gather(host: Host, mesh: &PolyMesh, origin: Origin, wants: &dyn Wants) ->
         },
         Host::Polar => match origin {
             Origin::Vertex(p) => {
-                let fan = uniform_fan(mesh, p, 3)?;
-                let mut part = Part::around("pole", fan.len(), p);
+                mesh.fan_corners(p).ok_or(GatherError::Truncated)?;
+                let ring = mesh.uniform_ring(p, 3).ok_or(GatherError::NotCovered)?;
+                let mut part = Part::around("pole", ring.len(), p);
                 part.put("centre", 0, p);
-                fan.iter().enumerate().for_each(|(j, t)| part.put("ring", j, t[1]));
+                ring.iter().enumerate().for_each(|(j, &a)| part.put("ring", j, a));
                 Ok(Gathered::one(part))
             }
-            Origin::Edge(x, y) => match uniform_fan(mesh, x, 3) {
+            // the pole's ring from the mesh's cached fan: every spoke point asks
+            // for it, and copying the fan each time would be quadratic in n
+            Origin::Edge(x, y) => match mesh.uniform_ring(x, 3) {
                 // x is a pole: the spoke rule, ring turned so that a_0 = y
-                Ok(fan) => {
-                    let ring: Vec<VertexId> = fan.iter().map(|t| t[1]).collect();
+                Some(ring) => {
                     let n = ring.len();
                     let i = ring.iter().position(|&a| a == y).ok_or(GatherError::NotCovered)?;
                     let mut part = Part::around("spoke", n, x);
@@ -871,7 +873,7 @@ pub fn gather(host: Host, mesh: &PolyMesh, origin: Origin, wants: &dyn Wants) ->
                     (0..n).for_each(|j| part.put("ring", j, ring[(i + j) % n]));
                     Ok(Gathered::one(part))
                 }
-                Err(_) => {
+                None => {
                     let mut part = Part::new("radial", 2);
                     part.put("near", 0, x);
                     part.put("far", 0, y);
