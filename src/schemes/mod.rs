@@ -23,7 +23,6 @@ pub mod unified_sqrt3;
 // scheme files (TOML) over the built-in topologies
 pub mod user;
 
-use crate::mesh::PolyMesh;
 // The scheme interface lives in the description layer below the engine
 // (`crate::sdc`); re-exported here because every scheme file implements it.
 pub use crate::sdc::params;
