@@ -22,8 +22,9 @@
 use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
+use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
-use crate::sdc::{Origin, RuleResult, Stencil};
+use crate::sdc::{Origin, RuleResult};
 
 pub struct Pgs {
     params: Params,
@@ -118,79 +119,58 @@ impl Pgs {
         let alpha = W::ratio(3, 4) + mu.clone() * (omega - W::one());
         Ok(PgsWeights { mu, w1, w2, alpha })
     }
+}
 
-    /// The central point of face f: its own point, or eq. (1) from the net.
-    /// `None` when a corner does not have valence 4.
-    fn centre<W: Weight>(&self, mesh: &PolyMesh, f: usize) -> Result<Option<Stencil<W>>, Inexact> {
-        if let Some(p) = mesh.face_point(f) {
-            return Ok(Some(Stencil::new().with(p, W::one())));
-        }
-        let face = mesh.face(f);
-        let n = face.len() as i64;
-        let mu: W = self.weights::<W>(n)?.mu;
-        let corner_w = mu.clone() / W::int(n);
-        let outer_w = (W::one() - mu) / W::int(2 * n);
-        let mut s = Stencil::new();
-        for (k, &a) in face.iter().enumerate() {
-            let (prev, next) = (face[(k + face.len() - 1) % face.len()], face[(k + 1) % face.len()]);
-            let Some(fan) = mesh.vertex_fan(a) else { return Ok(None) };
-            if fan.len() != 4 {
-                return Ok(None);
-            }
-            s.add(a, corner_w.clone());
-            // b_i and d_i: the neighbours of a_i that are not corners of the face
-            for cyc in &fan {
-                if cyc[1] != prev && cyc[1] != next {
-                    s.add(cyc[1], outer_w.clone());
+// The rules are a mask on the augmented dual host's slots (as a scheme file
+// on that host): the biquadratic corner of a plain quad, the corner of a
+// face with a central point, the new central point, and eq. (1), the central
+// point a face without one gets from the net (a derived slot).
+impl Wants for Pgs {
+    fn rule(&self, rule: &str) -> bool {
+        matches!(rule, "corner" | "corner-augmented" | "face" | "point")
+    }
+    fn family(&self, rule: &str, family: &str) -> bool {
+        matches!(
+            (rule, family),
+            ("corner", "vertex" | "side" | "far")
+                | ("corner-augmented", "vertex" | "side" | "point")
+                | ("face", "point" | "corner")
+                | ("point", "corner" | "outer")
+        )
+    }
+}
+
+impl<W: Weight> Mask<W> for Pgs {
+    fn weight(&self, _mesh: &PolyMesh, rule: &'static str, slot: &Slot) -> Result<W, Inexact> {
+        // slot.n: the size of the face concerned
+        let n = slot.n as i64;
+        Ok(match (rule, slot.family) {
+            ("corner", "vertex") => W::ratio(9, 16),
+            ("corner", "side") => W::ratio(3, 16),
+            ("corner", "far") => W::ratio(1, 16),
+            ("corner-augmented", family) => {
+                let PgsWeights { w1, w2, .. } = self.weights::<W>(n)?;
+                match family {
+                    "vertex" => w1,
+                    "side" => w2,
+                    "point" => W::one() - w1 - W::int(2) * w2,
+                    _ => W::zero(),
                 }
             }
-        }
-        Ok(Some(s))
-    }
-
-    fn augmented(mesh: &PolyMesh, f: usize) -> bool {
-        mesh.face_point(f).is_some() || mesh.face(f).len() != 4
+            ("face", "point") => W::one() - self.weights::<W>(n)?.alpha,
+            ("face", "corner") => self.weights::<W>(n)?.alpha / W::int(n),
+            // eq. (1): μ/n on the corners a_i, (1 − μ)/(2n) on their outer neighbours
+            ("point", "corner") => self.weights::<W>(n)?.mu / W::int(n),
+            ("point", "outer") => (W::one() - self.weights::<W>(n)?.mu) / W::int(2 * n),
+            // no weight on slots the mask does not use
+            _ => W::zero(),
+        })
     }
 }
 
 impl<W: Weight> Rules<W> for Pgs {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
-        match origin {
-            Origin::Corner { face, corner } if Pgs::augmented(mesh, face) => {
-                let cyc = mesh.face_from(face, corner);
-                let n = cyc.len() as i64;
-                let PgsWeights { w1, w2, .. } = self.weights::<W>(n)?;
-                let Some(p) = self.centre::<W>(mesh, face)? else { return Ok(None) };
-                let mut s = Stencil::new().with(cyc[0], w1.clone());
-                s.add(cyc[1], w2.clone());
-                s.add(cyc[cyc.len() - 1], w2.clone());
-                s.add_scaled(&p, &(W::one() - w1 - W::int(2) * w2));
-                Ok(Some(s))
-            }
-            Origin::Corner { face, corner } => {
-                let cyc = mesh.face_from(face, corner);
-                // a Doo–Sabin net has valence-4 vertices only (the patch
-                // boundary of an analysis neighbourhood has no fan: allowed)
-                if mesh.valence(cyc[0]).is_some_and(|v| v != 4) {
-                    return Ok(None);
-                }
-                let w = |k: i64| W::ratio(k, 16);
-                Ok(Some(Stencil::new().with(cyc[0], w(9)).with(cyc[1], w(3)).with(cyc[2], w(1)).with(cyc[3], w(3))))
-            }
-            Origin::Face(f) => {
-                let face = mesh.face(f);
-                let n = face.len() as i64;
-                let alpha = self.weights::<W>(n)?.alpha;
-                let Some(p) = self.centre::<W>(mesh, f)? else { return Ok(None) };
-                let mut s = Stencil::new();
-                s.add_scaled(&p, &(W::one() - alpha.clone()));
-                for &a in face {
-                    s.add(a, alpha.clone() / W::int(n));
-                }
-                Ok(Some(s))
-            }
-            Origin::Vertex(_) | Origin::Edge(..) => Ok(None),
-        }
+        weigh(Host::AugmentedDual, mesh, origin, self, &W::one())
     }
 }
 
