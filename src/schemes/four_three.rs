@@ -36,7 +36,8 @@
 use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
-use crate::sdc::{Origin, RuleResult, Stencil};
+use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
+use crate::sdc::{Origin, RuleResult};
 use crate::sdc::{Topology, TriangleSplit};
 
 /// σ0 of section 2: the last refinement step that still blends (4b) with the
@@ -120,144 +121,90 @@ impl FourThree {
         }
     }
 
-    fn vertex_rule<W: Weight>(&self, v: usize, fan: &[Vec<usize>], t: &NodeType) -> Result<Stencil<W>, Inexact> {
-        let n = fan.len();
-        // u_i = fan[i][1]: the neighbour shared by fan faces i - 1 and i
-        let u = |i: usize| fan[i % n][1];
-        let mut s = Stencil::new();
-        match *t {
-            NodeType::RegularQuad => {
-                s.add(v, W::ratio(1, 2));
-                (0..4).for_each(|i| s.add(u(i), W::ratio(1, 8)));
-            }
-            NodeType::RegularTri => {
-                s.add(v, W::ratio(10, 16));
-                (0..6).for_each(|i| s.add(u(i), W::ratio(1, 16)));
-            }
-            NodeType::Transition { k } => {
-                s.add(v, W::ratio(18, 32));
-                s.add(u(k + 1), W::ratio(4, 32)); // between the two quads
-                s.add(u(k), W::ratio(3, 32)); // quad/tri boundary
-                s.add(u(k + 2), W::ratio(3, 32)); // quad/tri boundary
-                s.add(u(k + 3), W::ratio(2, 32));
-                s.add(u(k + 4), W::ratio(2, 32));
-            }
-            NodeType::Eon => {
-                let nn = n as i64;
-                let c: W = self.centre_weight(nn)?;
-                s.add(v, c.clone());
-                let b = (W::one() - c) / W::int(nn);
-                (0..n).for_each(|i| s.add(u(i), b.clone()));
-                let share = self.eon_quad_term::<W>()? * self.eon_share();
-                if !share.is_zero() {
-                    // (4a'): + 1/(16n) (w_i − (u_i + u_{i+1})/2) per quad face i = [v, u_i, w_i, u_{i+1}]
-                    let w = share / W::int(16 * nn);
-                    let half = w.clone() * W::ratio(-1, 2);
-                    for f in fan.iter().filter(|f| f.len() == 4) {
-                        s.add(f[2], w.clone());
-                        s.add(f[1], half.clone());
-                        s.add(f[3], half.clone());
-                    }
-                }
-            }
-        }
-        Ok(s)
-    }
-
     fn eon_quad_term<W: Weight>(&self) -> Result<W, Inexact> {
         match self.params.of(&EON_QUAD_TERM) {
             Some(p) => W::param(p),
             None => Ok(W::zero()),
         }
     }
+}
 
-    /// (4b) for the edge from eon `e` (fan `fan`) to its neighbour `b`.
-    fn rule_4b<W: Weight>(e: usize, fan: &[Vec<usize>], b: usize) -> Result<Option<Stencil<W>>, Inexact> {
-        let n = fan.len();
-        let Some(i) = (0..n).find(|&i| fan[i][1] == b) else { return Ok(None) };
-        let quarter = W::ratio(1, 4);
-        let mut s = Stencil::new().with(e, W::ratio(1, 2)).with(b, quarter.clone());
-        for (j, f) in fan.iter().enumerate() {
-            let k = (i as i64 - j as i64).rem_euclid(n as i64);
-            s.add(f[1], beta_4b::<W>(k, n as i64)? * quarter.clone());
+// The rules are a mask on the mixed quad/triangle host's slots (as a scheme
+// file on that host): the host classifies every vertex (regular quad,
+// regular triangle, transition, eon) and edge; the eon's rule (4a) with the
+// optional quad term (4a') and the eon edge rule (4b) are blended in over
+// the first levels of a real mesh by `weigh`'s extraordinary share.
+impl Wants for FourThree {
+    fn rule(&self, rule: &str) -> bool {
+        matches!(
+            rule,
+            "vertex-quad"
+                | "vertex-triangle"
+                | "vertex-transition"
+                | "vertex-eon"
+                | "edge-quad"
+                | "edge-triangle"
+                | "edge-mixed"
+                | "edge-eon"
+                | "face"
+        )
+    }
+    fn family(&self, rule: &str, family: &str) -> bool {
+        match (rule, family) {
+            // the quad term (4a') only when it has weight
+            ("vertex-eon", "quad-opposite" | "quad-side") => !self.eon_quad_term::<f64>().is_ok_and(|t| t == 0.0),
+            _ => self.rule(rule),
         }
-        Ok(Some(s))
     }
 }
 
-/// The regular edge rules (1b), (2b), (3b) for the edge a–b between faces
-/// `left` (holding a → b, starting at a) and `right` (holding b → a, starting at b).
-fn regular_edge<W: Weight>(a: usize, b: usize, left: &[usize], right: &[usize]) -> Stencil<W> {
-    let (ql, qr) = (left.len() == 4, right.len() == 4);
-    let mut s = Stencil::new();
-    let d = if ql || qr { 16 } else { 8 };
-    let end = if ql || qr { 6 } else { 3 };
-    s.add(a, W::ratio(end, d));
-    s.add(b, W::ratio(end, d));
-    for (face, quad) in [(left, ql), (right, qr)] {
-        if quad {
-            // the two corners off the edge
-            s.add(face[2], W::ratio(1, 16));
-            s.add(face[3], W::ratio(1, 16));
-        } else {
-            // the apex: 1/8 in (3b), 2/16 in (2b)
-            s.add(face[2], W::ratio(1, 8));
-        }
+impl<W: Weight> Mask<W> for FourThree {
+    fn weight(&self, _mesh: &PolyMesh, rule: &'static str, slot: &Slot) -> Result<W, Inexact> {
+        let n = slot.n as i64;
+        Ok(match (rule, slot.family) {
+            ("vertex-quad", "centre") => W::ratio(1, 2),
+            ("vertex-quad", "edge") => W::ratio(1, 8),
+            ("vertex-triangle", "centre") => W::ratio(10, 16),
+            ("vertex-triangle", "edge") => W::ratio(1, 16),
+            // two quads, then three triangles
+            ("vertex-transition", "centre") => W::ratio(18, 32),
+            ("vertex-transition", "between") => W::ratio(4, 32),
+            ("vertex-transition", "boundary") => W::ratio(3, 32),
+            ("vertex-transition", "triangle-side") => W::ratio(2, 32),
+            // (4a): the centre weight, the rest shared by the n neighbours
+            ("vertex-eon", "centre") => self.centre_weight(n)?,
+            ("vertex-eon", "edge") => (W::one() - self.centre_weight::<W>(n)?) / W::int(n),
+            // (4a'): + t/(16n) (w_i − (u_i + u_{i+1})/2) per quad face i = [v, u_i, w_i, u_{i+1}]
+            ("vertex-eon", "quad-opposite") => self.eon_quad_term::<W>()? / W::int(16 * n),
+            ("vertex-eon", "quad-side") => self.eon_quad_term::<W>()? / W::int(16 * n) * W::ratio(-1, 2),
+            ("edge-quad", "ends") => W::ratio(6, 16),
+            ("edge-quad", "side") => W::ratio(1, 16),
+            ("edge-triangle", "ends") => W::ratio(3, 8),
+            ("edge-triangle", "opposite") => W::ratio(1, 8),
+            ("edge-mixed", "ends") => W::ratio(6, 16),
+            ("edge-mixed", "side") => W::ratio(1, 16),
+            ("edge-mixed", "opposite") => W::ratio(2, 16),
+            // (4b): (2 e + u_0 + Σ_j β_j u_j) / 4, u_0 the edge's other end
+            ("edge-eon", "centre") => W::ratio(1, 2),
+            ("edge-eon", "edge") => {
+                let j = slot.j as i64;
+                let beta = beta_4b::<W>((-j).rem_euclid(n), n)? * W::ratio(1, 4);
+                if j == 0 {
+                    W::ratio(1, 4) + beta
+                } else {
+                    beta
+                }
+            }
+            ("face", "corner") => W::ratio(1, n),
+            // no weight on slots the mask does not use
+            _ => W::zero(),
+        })
     }
-    s
 }
 
 impl<W: Weight> Rules<W> for FourThree {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
-        match origin {
-            Origin::Vertex(v) => {
-                let Some((fan, t)) = classify(mesh, v) else { return Ok(None) };
-                Ok(Some(self.vertex_rule(v, &fan, &t)?))
-            }
-            Origin::Face(f) => {
-                let face = mesh.face(f);
-                if face.len() != 4 {
-                    return Ok(None);
-                }
-                let mut s = Stencil::new();
-                face.iter().for_each(|&v| s.add(v, W::ratio(1, 4)));
-                Ok(Some(s))
-            }
-            Origin::Edge(a, b) => {
-                let (Some((fl, kl)), Some((fr, kr))) = (mesh.half_edge(a, b), mesh.half_edge(b, a)) else {
-                    return Ok(None);
-                };
-                let (left, right) = (mesh.face_from(fl, kl), mesh.face_from(fr, kr));
-                if [&left, &right].iter().any(|f| f.len() != 3 && f.len() != 4) {
-                    return Ok(None);
-                }
-                // both ends must be classifiable: whether an end is an eon decides the rule
-                let (Some(ca), Some(cb)) = (classify(mesh, a), classify(mesh, b)) else { return Ok(None) };
-                let regular = regular_edge::<W>(a, b, &left, &right);
-                let mut eon_rules = Vec::new();
-                for (e, (fan, t), other) in [(a, &ca, b), (b, &cb, a)] {
-                    if *t == NodeType::Eon {
-                        match Self::rule_4b::<W>(e, fan, other)? {
-                            Some(s) => eon_rules.push(s),
-                            None => return Ok(None),
-                        }
-                    }
-                }
-                if eon_rules.is_empty() {
-                    return Ok(Some(regular));
-                }
-                // an edge joining two eons (the paper does not say): the mean of both (4b)
-                let mean = W::ratio(1, eon_rules.len() as i64);
-                let share: W = self.eon_share();
-                let mut s = Stencil::new();
-                for r in &eon_rules {
-                    s.add_scaled(r, &(mean.clone() * share.clone()));
-                }
-                s.add_scaled(&regular, &(W::one() - share));
-                Ok(Some(s))
-            }
-            Origin::Corner { .. } => Ok(None),
-        }
+        weigh(Host::MixedQuadTriangle, mesh, origin, self, &self.eon_share())
     }
 }
 

@@ -1,6 +1,9 @@
-//! Subdivision schemes: one file per scheme, each a mask (the weights) over a
-//! topology operator (the connectivity). Masks are generic over the weight
-//! scalar so that the same code gives float and exact stencils.
+//! The scheme catalogue, above the engine (nothing in the engine imports
+//! it): one file per built-in scheme, the registry of every family
+//! (`registry`), and scheme files (`user` for meshes, `files` for lattices
+//! and curves). A scheme's rules are written once, generic over the weight
+//! scalar so that the same code gives float and exact stencils; most are
+//! masks over their refinement host's slots (`sdc::slots`).
 
 pub mod catmull_clark;
 // the curve schemes of Lin–Luo section 3 (the Z domain)

@@ -929,7 +929,8 @@ fn quad_corner(rule: &'static str, own: &'static str, c: &[VertexId]) -> Part {
 /// fans, such as the rim of a truncated neighbourhood, lie in the regular part.)
 fn extraordinary(mesh: &PolyMesh, v: VertexId, size: usize) -> bool {
     let regular = if size == 4 { 4 } else { 6 };
-    uniform_fan(mesh, v, size).is_ok_and(|fan| fan.len() != regular)
+    // from the cached fan: every edge at v asks, so copying the fan would cost valence²
+    mesh.fan_corners(v).is_some_and(|fan| fan.len() != regular && fan.iter().all(|&(f, _)| mesh.face(f).len() == size))
 }
 
 /// The `rule` seen from end v of edge v-other: v and its fan turned so that
