@@ -3,6 +3,7 @@
 //! leaves q in place), new face vertices take the mean α of their triangle
 //! (eq. 7), and a constant per-vertex α is the uniform scheme.
 
+use std::path::Path;
 use std::process::Command;
 use subdlab::mesh::obj::read_obj_file;
 use subdlab::refine::mesh::refine_mesh;
@@ -108,29 +109,26 @@ fn vertex_parameter_file_errors_are_one_line() {
     assert!(run(&full).status.success());
 }
 
+/// `subdlab refine meshes/octahedron.obj` with per-vertex parameters.
+fn refine_octahedron(out: &Path, levels: &str, scheme: &str, params: &Path) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_subdlab"))
+        .args(["refine", "meshes/octahedron.obj", "--levels", levels, "-o", out.to_str().unwrap()])
+        .args(["--scheme", scheme, "--vertex-params", params.to_str().unwrap()])
+        .output()
+        .unwrap()
+}
+
 /// `--vertex-params` with a scheme file: the file's per-vertex parameter and
 /// its range come from the file, so the command line gives the built-in's mesh.
 #[test]
 fn vertex_parameters_with_a_scheme_file_equal_the_builtin() {
     let dir = tempfile::tempdir().unwrap();
-    let run = |args: &[&str]| Command::new(env!("CARGO_BIN_EXE_subdlab")).args(args).output().unwrap();
     let good = dir.path().join("good.txt");
     std::fs::write(&good, "1\n0\n1/2\n0\n1\n0\n").unwrap();
     let mut outputs = Vec::new();
     for scheme in ["unified-sqrt3", "schemes/unified-sqrt3.toml"] {
         let out = dir.path().join(format!("{}.obj", outputs.len()));
-        let o = run(&[
-            "refine",
-            "meshes/octahedron.obj",
-            "--levels",
-            "2",
-            "-o",
-            out.to_str().unwrap(),
-            "--scheme",
-            scheme,
-            "--vertex-params",
-            good.to_str().unwrap(),
-        ]);
+        let o = refine_octahedron(&out, "2", scheme, &good);
         assert!(o.status.success(), "{scheme}: {}", String::from_utf8_lossy(&o.stderr));
         let (m, p) = read_obj_file(&out).unwrap();
         outputs.push((m.faces().to_vec(), p));
@@ -144,18 +142,6 @@ fn vertex_parameters_with_a_scheme_file_equal_the_builtin() {
     // the file's range applies: α = 3 is outside [0, 2]
     let bad = dir.path().join("bad.txt");
     std::fs::write(&bad, "1\n0\n3\n0\n1\n0\n").unwrap();
-    let out = dir.path().join("x.obj");
-    let o = run(&[
-        "refine",
-        "meshes/octahedron.obj",
-        "--levels",
-        "1",
-        "-o",
-        out.to_str().unwrap(),
-        "--scheme",
-        "schemes/unified-sqrt3.toml",
-        "--vertex-params",
-        bad.to_str().unwrap(),
-    ]);
+    let o = refine_octahedron(&dir.path().join("x.obj"), "1", "schemes/unified-sqrt3.toml", &bad);
     assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("out of range"));
 }

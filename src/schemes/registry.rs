@@ -66,26 +66,22 @@ pub enum Entry {
 }
 
 impl Entry {
-    pub fn name(&self) -> &'static str {
+    /// Name, description and parameter specification: the part every family shares.
+    fn common(&self) -> (&'static str, &'static str, fn() -> Vec<ParamSpec>) {
         match self {
-            Entry::Mesh(e) => e.name,
-            Entry::Lattice(e) => e.name,
-            Entry::Curve(e) => e.name,
+            Entry::Mesh(e) => (e.name, e.description, e.params),
+            Entry::Lattice(e) => (e.name, e.description, e.params),
+            Entry::Curve(e) => (e.name, e.description, e.params),
         }
+    }
+    pub fn name(&self) -> &'static str {
+        self.common().0
     }
     pub fn description(&self) -> &'static str {
-        match self {
-            Entry::Mesh(e) => e.description,
-            Entry::Lattice(e) => e.description,
-            Entry::Curve(e) => e.description,
-        }
+        self.common().1
     }
     pub fn params(&self) -> Vec<ParamSpec> {
-        match self {
-            Entry::Mesh(e) => (e.params)(),
-            Entry::Lattice(e) => (e.params)(),
-            Entry::Curve(e) => (e.params)(),
-        }
+        (self.common().2)()
     }
     pub fn family(&self) -> Family {
         match self {

@@ -27,9 +27,7 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use super::MAX_FILE_BYTES;
-use super::{
-    evaluate, field_error, intern, line_of, offset_key, rule_terms, toml_error, Head, ParamDoc, Section, Term,
-};
+use super::{evaluate, intern, line_of, not_affine, offset_key, rule_terms, toml_error, Head, ParamDoc, Section, Term};
 use crate::curves::{CurveMask, CurveRules, CurveScheme};
 use crate::numeric::{Inexact, Rational};
 use crate::schemes::Params;
@@ -131,15 +129,7 @@ impl CurveFileDef {
             };
             if self.head.affine && !is_one {
                 let shown = exact_sum.map(|s| s.to_string()).unwrap_or_else(|| sum.to_string());
-                return Err(field_error(
-                    &self.head.file,
-                    rule.line,
-                    rule.section,
-                    format!(
-                        "the weights of the {} rule sum to {shown}, not 1 (set affine = false to allow this)",
-                        rule.section
-                    ),
-                ));
+                return Err(not_affine(&self.head, rule.line, rule.section, "rule", shown));
             }
         }
         Ok(CurveFileScheme {

@@ -27,7 +27,8 @@ use toml::Spanned;
 
 use super::MAX_FILE_BYTES;
 use super::{
-    evaluate, field_error, intern, line_of, offset_key, rule_terms, toml_error, Head, ParamDoc, Section, Term,
+    evaluate, field_error, intern, line_of, not_affine, offset_key, rule_terms, toml_error, Head, ParamDoc, Section,
+    Term,
 };
 use crate::lattice::{LatticeRules, LatticeScheme, Point};
 use crate::numeric::{Rational, Weight};
@@ -132,15 +133,7 @@ impl LatticeFileDef {
                     exact[a][b].push((t.offset, q));
                 }
                 if self.head.affine && sum != <Rational as Weight>::one() {
-                    return Err(field_error(
-                        &self.head.file,
-                        m.line,
-                        m.section,
-                        format!(
-                            "the weights of the {} mask sum to {sum}, not 1 (set affine = false to allow this)",
-                            m.section
-                        ),
-                    ));
+                    return Err(not_affine(&self.head, m.line, m.section, "mask", sum));
                 }
             }
         }

@@ -138,6 +138,17 @@ pub(crate) fn field_error(file: &str, line: usize, field: &str, msg: impl std::f
     format!("{file} line {line}, field {field}: {msg}")
 }
 
+/// The error of an affine file whose rule (or mask) `section` does not sum
+/// to 1: every family words it alike.
+pub(crate) fn not_affine(head: &Head, line: usize, section: &str, what: &str, sum: impl std::fmt::Display) -> String {
+    field_error(
+        &head.file,
+        line,
+        section,
+        format!("the weights of the {section} {what} sum to {sum}, not 1 (set affine = false to allow this)"),
+    )
+}
+
 /// The TOML parser's error as one line with the file and line.
 pub(crate) fn toml_error(e: toml::de::Error, text: &str, file: &str) -> String {
     let msg = e.message().trim().replace('\n', "; ");
