@@ -10,9 +10,10 @@
 //!    origins and stencils, the host a scheme runs on, typed parameters;
 //! 3. refinement hosts, [`topology`]: connectivity of one step, no weights;
 //! 4. the engine: [`refine`] (one step over any averaged data),
+//!    [`engine`] (the invariant closure of every domain; assembly and exact
+//!    confirmation for the Z² and Z domains),
 //!    [`neighbourhood`] (configurations, discovery of invariant sets),
-//!    [`matrix`] (the local subdivision matrix), [`dft`] (Fourier blocks),
-//!    [`engine`] (closure, assembly and exact confirmation for the Z² and Z domains);
+//!    [`matrix`] (the local subdivision matrix), [`dft`] (Fourier blocks);
 //! 5. [`spectrum`]: eigenvalues with multiplicities, stencils, verdicts;
 //! 6. analyses on top of a spectrum: [`charmap`] (characteristic maps), and
 //!    the other domains, [`lattice`] (Z² masks) and [`curves`] (Z masks);
@@ -34,7 +35,7 @@ pub mod sdc;
 pub mod topology;
 
 pub mod dft;
-// the Z² and Z domains' invariant closure, assembly and exact confirmation
+// the invariant closure of every domain; Z² and Z assembly and exact confirmation
 pub mod engine;
 pub mod matrix;
 pub mod neighbourhood;

@@ -21,8 +21,8 @@ const LAYERS: &[(&str, u32)] = &[
     ("topology", 4),
     // the engine
     ("refine", 5),
+    ("engine", 5),
     ("neighbourhood", 6),
-    ("engine", 6),
     ("matrix", 7),
     ("dft", 8),
     ("spectrum", 9),

@@ -129,7 +129,7 @@ fn refine_with_margin(
     // the successor map (lattice charts) refers to
     for k in 0..steps {
         let r = &d.refinements[k];
-        let points = apply(&d.stencils[k], &net.points);
+        let points = apply(&d.float_stencils(scheme)[k], &net.points);
         net = descend(&net, &r.mesh, &r.vertex_origins, &r.face_parents, points);
     }
     let centre1: HashSet<usize> = centre0

@@ -22,14 +22,14 @@
 //! centre is the origin and the successor is the identity: the fine point with
 //! index q sits where the coarse point q sat, at half the scale.
 //!
-//! How the mesh pipeline (`crate::neighbourhood::discovery`) can adopt this:
-//! its points are the vertices of an analysis patch (labelled by ring, sector
-//! and index), `successor` is the child of a vertex in the refined patch
-//! (`Origin::Vertex`), and `dependencies` is the support of the child's
-//! stencil (`SchemeWeight::stencil`) mapped back to parent labels. A stencil
-//! the patch is too small to evaluate is the `Err` of `dependencies`; growing
-//! the patch and retrying stays in discovery, which then calls
-//! `invariant_closure` and `influence_set` instead of its own loops.
+//! The mesh pipeline (`crate::neighbourhood::discovery`) uses the same
+//! `invariant_closure`: its points are vertex ids of the analysis patch
+//! (orbit representatives), `successor` is the vertex at the same lattice
+//! coordinates after one analysis step (a lookup that fails when the patch is
+//! too small, whereupon discovery grows the patch and retries), and
+//! `dependencies` is the support of the composed stencil of that vertex. Its
+//! influence set is collected by a backward walk of its own, because each
+//! level of a mesh is a different (pruned) mesh, not one grid.
 
 use std::collections::BTreeSet;
 use std::fmt;
@@ -44,9 +44,10 @@ pub trait Refinement {
 
     /// The fine point that stands for coarse point `p` after one step. On Z
     /// and Z² with the centre at the origin the dilation maps index q to the
-    /// same index one level finer, hence the identity default.
-    fn successor(&self, p: &Self::Point) -> Self::Point {
-        p.clone()
+    /// same index one level finer, hence the identity default. On a mesh
+    /// patch it is a lookup that fails when the patch is too small.
+    fn successor(&self, p: &Self::Point) -> Result<Self::Point, String> {
+        Ok(p.clone())
     }
 }
 
@@ -97,7 +98,8 @@ pub fn invariant_closure<R: Refinement>(
     let mut set: BTreeSet<R::Point> = seed.into_iter().collect();
     let mut todo: Vec<R::Point> = set.iter().cloned().collect();
     while let Some(p) = todo.pop() {
-        for d in scheme.dependencies(&scheme.successor(&p)).map_err(ClosureError::Dependency)? {
+        let fine = scheme.successor(&p).map_err(ClosureError::Dependency)?;
+        for d in scheme.dependencies(&fine).map_err(ClosureError::Dependency)? {
             if set.insert(d.clone()) {
                 if set.len() > limit {
                     return Err(ClosureError::Unbounded { limit });
@@ -118,7 +120,8 @@ pub fn invariance_defects<R: Refinement>(
     let inside: BTreeSet<&R::Point> = window.iter().collect();
     let mut out = Vec::new();
     for p in window {
-        for d in scheme.dependencies(&scheme.successor(p)).map_err(ClosureError::Dependency)? {
+        let fine = scheme.successor(p).map_err(ClosureError::Dependency)?;
+        for d in scheme.dependencies(&fine).map_err(ClosureError::Dependency)? {
             if !inside.contains(&d) {
                 out.push((p.clone(), d));
             }
@@ -197,7 +200,7 @@ where
     let index: std::collections::BTreeMap<&R::Point, usize> = window.iter().enumerate().map(|(k, p)| (p, k)).collect();
     let mut rows = Vec::with_capacity(window.len());
     for p in window {
-        let fine = scheme.successor(p);
+        let fine = scheme.successor(p).map_err(ClosureError::Dependency)?;
         let mut row: Vec<(usize, W)> = Vec::new();
         for (d, w) in stencil(&fine) {
             let Some(&col) = index.get(&d) else {

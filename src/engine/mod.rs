@@ -10,8 +10,9 @@
 //!   exact rational matrix (characteristic polynomial, rational roots,
 //!   algebraic and geometric multiplicities).
 //!
-//! The mesh pipeline (`crate::neighbourhood::discovery`) has the same closure
-//! over a different point type; `closure`'s module doc says how it can adopt it.
+//! The mesh pipeline (`crate::neighbourhood::discovery`) calls the same
+//! closure on a different point type (vertex ids of an analysis patch); see
+//! `closure`'s module doc.
 
 pub mod closure;
 pub mod exact;

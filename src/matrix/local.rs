@@ -79,7 +79,7 @@ pub fn assemble_rows<W: SchemeWeight>(
     let set = d.set(kind);
     let targets: Vec<usize> =
         which.iter().map(|&k| d.successor(set[k]).ok_or(AssembleError::Missing)).collect::<Result<_, _>>()?;
-    let raw = step_rows::<W>(d, &targets, |k, v| {
+    let raw = step_rows::<W>(d.refinements.len(), &targets, |k, v| {
         W::stencil(scheme, d.mesh_before(k), d.refinements[k].vertex_origins[v])
             .map_err(|Inexact| AssembleError::Inexact)?
             .ok_or(AssembleError::Missing)
@@ -88,9 +88,11 @@ pub fn assemble_rows<W: SchemeWeight>(
 }
 
 /// [`assemble_rows`] in f64 from what discovery computed: the rows it composed
-/// for the orbit representatives, else its float stencils (the same values
-/// the rules give, as discovery evaluated them with the same code).
+/// for the orbit representatives; any other row is composed from the float
+/// stencils (the same values the rules give, as discovery evaluated them with
+/// the same code).
 pub fn assemble_rows_f64(
+    scheme: &dyn Scheme,
     d: &Discovered,
     kind: NeighbourhoodKind,
     which: &[usize],
@@ -104,7 +106,10 @@ pub fn assemble_rows_f64(
             .iter()
             .map(|&i| d.successor(set[which[i]]).ok_or(AssembleError::Missing))
             .collect::<Result<_, _>>()?;
-        let rows = step_rows::<f64>(d, &targets, |k, v| d.stencils[k][v].clone().ok_or(AssembleError::Missing))?;
+        let stencils = d.float_stencils(scheme);
+        let rows = step_rows::<f64>(d.refinements.len(), &targets, |k, v| {
+            stencils[k][v].clone().ok_or(AssembleError::Missing)
+        })?;
         for (i, row) in missing.into_iter().zip(rows) {
             raw[i] = Some(row);
         }
@@ -131,48 +136,38 @@ fn restrict<W: Weight>(set: &[usize], raw: Vec<Vec<(usize, W)>>) -> Result<Vec<V
     Ok(rows)
 }
 
-/// Stencils over a whole analysis step (in W) of the given last-level
-/// vertices, in terms of level-0 vertices. Only the vertices the targets need
-/// are evaluated at the intermediate levels (found from the float stencils);
-/// `stencil(k, v)` gives the stencil of vertex v of refinement k+1.
+/// Stencils over a whole analysis step of `levels` refinements (in W) of the
+/// given last-level vertices, in terms of level-0 vertices; `stencil(k, v)`
+/// gives the stencil of vertex v of refinement k+1. Only the vertices the
+/// targets need are evaluated: stencils are taken top-down (each level's
+/// supports are the next level's needs), then composed bottom-up, each
+/// stencil's terms in their own order, so f64 rows come out the same
+/// whichever way they were asked for.
 fn step_rows<W: Weight>(
-    d: &Discovered,
-    targets: &[usize],
-    stencil: impl FnMut(usize, usize) -> Result<Stencil<W>, AssembleError>,
-) -> Result<Vec<Vec<(usize, W)>>, AssembleError> {
-    let sizes: Vec<usize> = d.refinements.iter().map(|r| r.mesh.num_vertices()).collect();
-    step_rows_over(&d.stencils, &sizes, targets, stencil)
-}
-
-/// [`step_rows`] given discovery's float stencils per refinement and the
-/// vertex count after each refinement.
-fn step_rows_over<W: Weight>(
-    float_stencils: &[Vec<Option<Stencil<f64>>>],
-    sizes: &[usize],
+    levels: usize,
     targets: &[usize],
     mut stencil: impl FnMut(usize, usize) -> Result<Stencil<W>, AssembleError>,
 ) -> Result<Vec<Vec<(usize, W)>>, AssembleError> {
-    let steps = float_stencils.len();
-    // needed[k]: vertices after refinement k+1 whose stencils are needed
-    let mut needed: Vec<Vec<usize>> = vec![Vec::new(); steps];
-    needed[steps - 1] = targets.to_vec();
-    for k in (1..steps).rev() {
-        let mut mark = vec![false; sizes[k - 1]];
-        for &v in &needed[k] {
-            let st = float_stencils[k][v].as_ref().ok_or(AssembleError::Missing)?;
-            st.support().for_each(|u| mark[u] = true);
+    // needed[k]: the stencils of the vertices after refinement k+1 that are needed
+    let mut needed: Vec<crate::mesh::IdMap<usize, Stencil<W>>> = vec![Default::default(); levels];
+    let mut wanted: Vec<usize> = targets.to_vec();
+    for k in (0..levels).rev() {
+        let mut below = Vec::new();
+        for v in wanted {
+            if needed[k].contains_key(&v) {
+                continue; // listed twice, or reached through two stencils
+            }
+            let st = stencil(k, v)?;
+            below.extend(st.support());
+            needed[k].insert(v, st);
         }
-        needed[k - 1] = (0..mark.len()).filter(|&u| mark[u]).collect();
+        wanted = below;
     }
     // rows[v] at the current level, over level-0 vertices
     let mut rows: crate::mesh::IdMap<usize, SparseRow<W>> = Default::default();
-    for (k, level) in needed.iter().enumerate() {
+    for (k, level) in needed.into_iter().enumerate() {
         let mut next = crate::mesh::IdMap::default();
-        for &v in level {
-            if next.contains_key(&v) {
-                continue; // a target listed twice
-            }
-            let st = stencil(k, v)?;
+        for (v, st) in level {
             let row = if k == 0 {
                 SparseRow { entries: st.terms }
             } else {
@@ -239,21 +234,25 @@ impl<W: Weight> std::fmt::Debug for FullMatrix<W> {
 
 /// The whole f64 matrix from discovery's float stencils, assembled on first
 /// use: row for row what [`assemble`] gives in f64 (discovery evaluated the
-/// same rules with the same code). The stencils are shared, not copied.
-pub fn lazy_full_f64(d: &Discovered, kind: NeighbourhoodKind) -> Result<FullMatrix<f64>, AssembleError> {
+/// same rules with the same code). Completes the float stencils now (see
+/// [`Discovered::float_stencils`]); they are shared, not copied.
+pub fn lazy_full_f64(
+    scheme: &dyn Scheme,
+    d: &Discovered,
+    kind: NeighbourhoodKind,
+) -> Result<FullMatrix<f64>, AssembleError> {
     let set = d.set(kind).to_vec();
     let targets: Vec<usize> =
         set.iter().map(|&v| d.successor(v).ok_or(AssembleError::Missing)).collect::<Result<_, _>>()?;
     let labels = set_labels(d, kind);
-    let stencils = std::sync::Arc::clone(&d.stencils);
-    let sizes: Vec<usize> = d.refinements.iter().map(|r| r.mesh.num_vertices()).collect();
+    let stencils = std::sync::Arc::clone(d.float_stencils(scheme));
+    let levels = d.refinements.len();
     Ok(FullMatrix::lazy(move || {
-        let rows =
-            step_rows_over(&stencils, &sizes, &targets, |k, v| stencils[k][v].clone().ok_or(AssembleError::Missing))
-                .and_then(|raw| restrict(&set, raw))
-                // the representative rows assembled, and S commutes with the
-                // rotation, so every other row is a rotated copy of an assembled one
-                .expect("every row of a rotation-symmetric S assembles when its representatives do");
+        let rows = step_rows(levels, &targets, |k, v| stencils[k][v].clone().ok_or(AssembleError::Missing))
+            .and_then(|raw| restrict(&set, raw))
+            // the representative rows assembled, and S commutes with the
+            // rotation, so every other row is a rotated copy of an assembled one
+            .expect("every row of a rotation-symmetric S assembles when its representatives do");
         LocalMatrix { kind, labels, rows }
     }))
 }

@@ -13,12 +13,14 @@
 //! evaluated; when one cannot, the patch grows by a ring and discovery restarts.
 
 use std::borrow::Cow;
+use std::cell::RefCell;
 use std::collections::{BTreeSet, HashMap};
 use std::sync::Arc;
 
 use super::builder::build_patch;
 use super::configuration::Configuration;
 use super::labels::{canonical_order, label_vertices, VertexLabel};
+use crate::engine::closure::{invariant_closure, Refinement};
 use crate::mesh::{IdMap, IdSet, LatticeCoord, PolyMesh};
 use crate::refine::{Combine, SparseRow};
 use crate::sdc::{Origin, Scheme, SchemeWeight, Stencil};
@@ -50,9 +52,9 @@ pub struct Discovered {
     /// the refinements of one analysis step (one for binary schemes, two for
     /// sqrt(3) schemes, whose lattice only realigns after two steps)
     pub refinements: Vec<Refined>,
-    /// float stencils of each refinement (index k: level k+1 from level k);
-    /// shared with the lazily assembled matrix (`matrix::local::lazy_full_f64`)
-    pub stencils: Arc<Vec<Vec<Option<Stencil<f64>>>>>,
+    /// float stencils of each refinement (index k: level k+1 from level k),
+    /// completed on first use by [`Discovered::float_stencils`]
+    stencils: FloatStencils,
     /// vertex of the last refinement with given lattice coordinates
     pub step_at: IdMap<LatticeCoord, usize>,
     /// level-0 vertex ids in canonical order
@@ -94,11 +96,52 @@ impl Discovered {
             &self.refinements[k - 1].mesh
         }
     }
+    /// The float stencils of every vertex of each refinement of one analysis
+    /// step (index k: level k+1 from level k; None where the patch is too
+    /// small to evaluate the rule). Discovery evaluates only the stencils of
+    /// orbit representatives (O(1) vertices per level, see `Rotation`); the
+    /// spectrum needs no more, so the rest (O(n) stencils, those of the
+    /// centre's ring with O(n) terms each) is evaluated here on first use,
+    /// by whoever needs every vertex: the characteristic map, which refines
+    /// whole nets, and the full matrix. `scheme` must be the scheme that
+    /// discovered `self`.
+    pub fn float_stencils(&self, scheme: &dyn Scheme) -> &Arc<Vec<Vec<Option<Stencil<f64>>>>> {
+        self.stencils.all.get_or_init(|| {
+            let partial = self.stencils.partial.lock().unwrap_or_else(|e| e.into_inner()).take();
+            let evaluated = partial
+                .unwrap_or_else(|| self.refinements.iter().map(|r| vec![None; r.vertex_origins.len()]).collect());
+            let all = evaluated
+                .into_iter()
+                .enumerate()
+                .map(|(k, level)| {
+                    let (before, origins) = (self.mesh_before(k), &self.refinements[k].vertex_origins);
+                    level
+                        .into_iter()
+                        .enumerate()
+                        .map(|(v, st)| st.unwrap_or_else(|| stencil_f64(scheme, before, origins[v])))
+                        .collect()
+                })
+                .collect();
+            Arc::new(all)
+        })
+    }
     /// The f64 row over one analysis step of the successor of level-0 vertex
     /// `v`, if discovery composed it.
     pub(crate) fn composite_row(&self, v: usize) -> Option<&SparseRow<f64>> {
         self.composite.get(&v)
     }
+}
+
+/// Per refinement and vertex, the float stencil once evaluated: the outer
+/// `Option` says whether it was (discovery evaluates the representatives'
+/// only), the inner one whether the rule could be.
+type PartialStencils = Vec<Vec<Option<Option<Stencil<f64>>>>>;
+
+/// Discovery's float stencils and, once someone needs every vertex's, all of
+/// them (see [`Discovered::float_stencils`]).
+struct FloatStencils {
+    partial: std::sync::Mutex<Option<PartialStencils>>,
+    all: std::sync::OnceLock<Arc<Vec<Vec<Option<Stencil<f64>>>>>>,
 }
 
 const MAX_PATCH_RINGS: usize = 8;
@@ -217,8 +260,8 @@ impl Rotation {
 /// The float stencils of the refinements of one analysis step, evaluated on
 /// demand: discovery needs those of the representatives (O(1) per level), and
 /// a patch too small for the rules is rejected before the others are
-/// evaluated. [`StepStencils::complete`] evaluates the rest for the caller
-/// (the characteristic map refines whole nets with them).
+/// evaluated. [`Discovered::float_stencils`] evaluates the rest for a caller
+/// that needs them (the characteristic map refines whole nets with them).
 struct StepStencils<'a> {
     scheme: &'a dyn Scheme,
     before: Vec<&'a PolyMesh>,
@@ -248,13 +291,13 @@ impl<'a> StepStencils<'a> {
         self.stencils[k][v].as_ref()
     }
 
-    fn complete(mut self) -> Vec<Vec<Option<Stencil<f64>>>> {
-        for k in 0..self.done.len() {
-            for v in 0..self.done[k].len() {
-                self.get(k, v);
-            }
-        }
+    /// What was evaluated, for [`Discovered::float_stencils`] to complete.
+    fn into_partial(self) -> PartialStencils {
         self.stencils
+            .into_iter()
+            .zip(self.done)
+            .map(|(level, done)| level.into_iter().zip(done).map(|(st, d)| d.then_some(st)).collect())
+            .collect()
     }
 }
 
@@ -305,6 +348,54 @@ impl<'a> Composer<'a> {
     }
 }
 
+/// Discovery's dependencies in the terms of the engine's closure
+/// (`engine::closure`), so that the invariant neighbourhoods come out of the
+/// same `invariant_closure` as the Z² and Z windows. A point is a vertex id:
+/// coarse points are level-0 orbit representatives (see `Rotation`), fine
+/// points vertices after one analysis step. The successor of a coarse vertex
+/// is the fine vertex at its lattice coordinates; a fine vertex depends on
+/// the representatives of the level-0 vertices in its composed row.
+struct RepresentativeSteps<'a> {
+    composer: RefCell<Composer<'a>>,
+    rot0: &'a Rotation,
+    step_at: &'a IdMap<LatticeCoord, usize>,
+    coords: &'a [LatticeCoord],
+    labels: &'a [VertexLabel],
+    rings: usize,
+    /// index of the analysis step's last refinement
+    last: usize,
+    /// successor → level-0 vertex, for every successor the closure asked for
+    /// (their composed rows are the representative rows assembly needs)
+    asked: RefCell<IdMap<usize, usize>>,
+}
+
+impl Refinement for RepresentativeSteps<'_> {
+    type Point = usize;
+
+    fn successor(&self, v: &usize) -> Result<usize, String> {
+        let w = self.step_at.get(&self.coords[*v]).copied().ok_or_else(|| self.not_evaluable(*v))?;
+        self.asked.borrow_mut().insert(w, *v);
+        Ok(w)
+    }
+
+    fn dependencies(&self, w: &usize) -> Result<Vec<usize>, String> {
+        let mut composer = self.composer.borrow_mut();
+        match composer.row(self.last, *w) {
+            Some(row) => Ok(row.entries.iter().map(|e| self.rot0.rep(e.0)).collect()),
+            None => Err(self.asked.borrow().get(w).map_or_else(
+                || format!("a refined vertex is not evaluable in a {}-ring patch", self.rings),
+                |&v| self.not_evaluable(v),
+            )),
+        }
+    }
+}
+
+impl RepresentativeSteps<'_> {
+    fn not_evaluable(&self, v: usize) -> String {
+        format!("rule for {} not evaluable in a {}-ring patch", self.labels[v].name, self.rings)
+    }
+}
+
 /// One refinement of the search for the analysis neighbourhood past the
 /// first analysis step: stencils are evaluated only for the vertices the
 /// backward walk reaches (representatives), on the mesh they refine.
@@ -342,32 +433,22 @@ fn try_discover(
     // asymmetric rules have no rotation symmetry, whatever the configuration
     let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { n };
     let rot0 = Rotation::new(&patch, period, true);
-    let mut composer = Composer::new(StepStencils::new(scheme, &patch, &refinements));
-    // D(v) for representatives v: old vertices on which the successor of v depends
-    let mut deps: IdMap<usize, Vec<usize>> = IdMap::default();
-    let closure = |composer: &mut Composer,
-                   deps: &mut IdMap<usize, Vec<usize>>,
-                   start: &mut dyn Iterator<Item = usize>|
-     -> Result<BTreeSet<usize>, String> {
-        let mut set: BTreeSet<usize> = BTreeSet::new();
-        let mut stack: Vec<usize> = start.map(|v| rot0.rep(v)).collect();
-        while let Some(v) = stack.pop() {
-            if !set.insert(v) {
-                continue;
-            }
-            if let std::collections::hash_map::Entry::Vacant(slot) = deps.entry(v) {
-                let row = step_at
-                    .get(&chart0.vertex_coords[v])
-                    .and_then(|&w| composer.row(steps - 1, w).map(|r| r.entries.iter().map(|e| e.0).collect()))
-                    .ok_or_else(|| format!("rule for {} not evaluable in a {rings}-ring patch", labels[v].name))?;
-                slot.insert(row);
-            }
-            stack.extend(deps[&v].iter().map(|&u| rot0.rep(u)).filter(|r| !set.contains(r)));
-        }
-        Ok(set)
+    let orbits = RepresentativeSteps {
+        composer: RefCell::new(Composer::new(StepStencils::new(scheme, &patch, &refinements))),
+        rot0: &rot0,
+        step_at: &step_at,
+        coords: &chart0.vertex_coords,
+        labels: &labels,
+        rings,
+        last: steps - 1,
+        asked: RefCell::new(IdMap::default()),
+    };
+    let closure = |seed: &mut dyn Iterator<Item = usize>| -> Result<BTreeSet<usize>, String> {
+        let seed: Vec<usize> = seed.map(|v| rot0.rep(v)).collect();
+        invariant_closure(&orbits, seed, patch.num_vertices()).map_err(|e| e.to_string())
     };
 
-    let minimal = closure(&mut composer, &mut deps, &mut centre_set.iter().copied())?;
+    let minimal = closure(&mut centre_set.iter().copied())?;
 
     // --- analysis neighbourhood: dependencies of the first ring's descendants.
     // Dependencies are tracked backwards: mark the first-ring vertices after r
@@ -452,25 +533,26 @@ fn try_discover(
             for &v in &marked {
                 // back to the id of the unpruned refinement, which stencils index
                 let v = relabel[k].as_ref().map_or(v, |old| old[v]);
-                let stencil = if k < steps {
-                    composer.stencils.get(k, v)
+                let support: Option<Vec<usize>> = if k < steps {
+                    orbits.composer.borrow_mut().stencils.get(k, v).map(|st| st.support().collect())
                 } else {
                     let level = &mut lazy[k - steps];
                     let (before, origin) = (&level.before, level.origins[v]);
-                    level.memo.entry(v).or_insert_with(|| stencil_f64(scheme, before, origin)).as_ref()
+                    let stencil = level.memo.entry(v).or_insert_with(|| stencil_f64(scheme, before, origin));
+                    stencil.as_ref().map(|st| st.support().collect())
                 };
-                let Some(stencil) = stencil else {
+                let Some(support) = support else {
                     // the mesh this stencil is evaluated on was pruned
                     *blame_pruning |= k >= 1 && relabel[k - 1].is_some();
                     return Err(format!("first-ring vertex after {r} steps not evaluable in a {rings}-ring patch"));
                 };
                 let below = if k == 0 { &rot0 } else { &rots[k - 1] };
-                marked_below.extend(stencil.support().map(|u| below.rep(u)));
+                marked_below.extend(support.into_iter().map(|u| below.rep(u)));
             }
             marked = marked_below;
         }
         collected.extend(marked);
-        let closed = closure(&mut composer, &mut deps, &mut collected.iter().copied())?;
+        let closed = closure(&mut collected.iter().copied())?;
         levels_used = r / steps;
         if levels_used >= 2 && previous.as_ref() == Some(&closed) {
             analysis = Some(closed);
@@ -487,21 +569,17 @@ fn try_discover(
     let minimal = expand(minimal);
     let analysis = expand(analysis);
     // the composed rows of the last level, keyed by the level-0 vertex they belong to
+    let asked = orbits.asked.into_inner();
+    let mut composer = orbits.composer.into_inner();
     let last_rows = composer.memo.pop().expect("one level at least");
-    let stencils_by_level = composer.stencils.complete();
-    let composite = deps
-        .keys()
-        .filter_map(|&v| {
-            let w = step_at.get(&chart0.vertex_coords[v])?;
-            Some((v, last_rows.get(w)?.clone()?))
-        })
-        .collect();
+    let partial = composer.stencils.into_partial();
+    let composite = asked.into_iter().filter_map(|(w, v)| Some((v, last_rows.get(&w)?.clone()?))).collect();
     Ok(Discovered {
         config: config.clone(),
         patch,
         labels,
         refinements,
-        stencils: Arc::new(stencils_by_level),
+        stencils: FloatStencils { partial: std::sync::Mutex::new(Some(partial)), all: std::sync::OnceLock::new() },
         step_at,
         minimal,
         analysis,

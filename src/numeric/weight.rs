@@ -56,10 +56,30 @@ impl Weight for f64 {
     }
     fn cos_2pi(k: i64, n: i64) -> Result<Self, Inexact> {
         // exact values where they exist, so that e.g. cos(2π/4) is 0, not 6e-17
-        match rational_cos_2pi(k, n) {
-            Some((p, q)) => Ok(p as f64 / q as f64),
-            None => Ok((2.0 * std::f64::consts::PI * (k.rem_euclid(n)) as f64 / n as f64).cos()),
+        // Rules ask for the same cosine once per slot (a valence-1000 centre
+        // has thousands of slots), and the rational test plus `cos` cost far
+        // more than a lookup, so the last few answers are kept per thread.
+        thread_local! {
+            static RECENT: std::cell::RefCell<[(i64, i64, f64); 4]> =
+                const { std::cell::RefCell::new([(0, 0, f64::NAN); 4]) };
         }
+        if n <= 0 {
+            return Ok(f64::NAN); // no such angle; callers validate n first
+        }
+        let k = k.rem_euclid(n);
+        if let Some(c) = RECENT.with(|r| r.borrow().iter().find(|e| e.0 == k && e.1 == n).map(|e| e.2)) {
+            return Ok(c);
+        }
+        let c = match rational_cos_2pi(k, n) {
+            Some((p, q)) => p as f64 / q as f64,
+            None => (2.0 * std::f64::consts::PI * k as f64 / n as f64).cos(),
+        };
+        RECENT.with(|r| {
+            let mut r = r.borrow_mut();
+            r.rotate_right(1);
+            r[0] = (k, n, c);
+        });
+        Ok(c)
     }
     fn sqrt(&self) -> Result<Self, Inexact> {
         Ok(f64::sqrt(*self))

@@ -219,16 +219,22 @@ pub fn analyse(scheme: &dyn Scheme, config: &Configuration, opts: &Options) -> R
     let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { n };
     let symmetric = period < n;
     let method = opts.method.unwrap_or(if symmetric { Method::Dft } else { Method::Full });
-    let matrix = lazy_full_f64(&discovered, kind).map_err(|e| e.to_string())?;
     let orbits = Orbits::from_labels(&labels, period, n);
-    let Decomposition { blocks: blocks_info, mut eigenvalues, synthesis } = match method {
+    let (matrix, Decomposition { blocks: blocks_info, mut eigenvalues, synthesis }) = match method {
         Method::Dft => {
-            // the representative rows are all the blocks need
-            let rows = assemble_rows_f64(&discovered, kind, &orbits.representative).map_err(|e| e.to_string())?;
-            let rows: Vec<&[(usize, f64)]> = rows.iter().map(Vec::as_slice).collect();
-            decompose_dft(&rows, orbits.clone())?
+            // the representative rows are all the blocks need; the rest of S,
+            // if anyone asks, is their rotation
+            let rows =
+                assemble_rows_f64(scheme, &discovered, kind, &orbits.representative).map_err(|e| e.to_string())?;
+            let refs: Vec<&[(usize, f64)]> = rows.iter().map(Vec::as_slice).collect();
+            let decomposition = decompose_dft(&refs, orbits.clone())?;
+            (lazy_full_by_rotation(labels.clone(), kind, &orbits, rows), decomposition)
         }
-        Method::Full => decompose(&matrix, period, n, Method::Full)?,
+        Method::Full => {
+            let matrix = lazy_full_f64(scheme, &discovered, kind).map_err(|e| e.to_string())?;
+            let decomposition = decompose(&matrix, period, n, Method::Full)?;
+            (matrix, decomposition)
+        }
     };
     sort_eigenvalues(&mut eigenvalues);
     let (exact_matrix, exact_analysis) = if !opts.exact {
