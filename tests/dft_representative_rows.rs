@@ -176,3 +176,45 @@ fn high_valence_subdominant_eigenvalues_match_closed_forms() {
         assert_eq!(a.spectrum.matrix_size, 6 * n + 1);
     }
 }
+
+/// At high valence discovery refines only the sectors
+/// around the orbit representatives (the rest of the patch is never read),
+/// and makes the whole analysis step only when asked. Second route: the same
+/// rules declared asymmetric, which tracks every vertex on the whole patch.
+#[test]
+fn windowed_discovery_at_high_valence_matches_tracking_every_vertex() {
+    for (name, s) in all_schemes() {
+        let n = 160;
+        let config = Configuration::regular(s.as_ref(), n).unwrap();
+        let by_orbits = discover(s.as_ref(), &config).unwrap();
+        let every = discover(&Asymmetric::of(s.as_ref()), &config).unwrap();
+        assert_eq!(by_orbits.minimal, every.minimal, "{name} n={n}: minimal neighbourhood");
+        assert_eq!(by_orbits.analysis, every.analysis, "{name} n={n}: analysis neighbourhood");
+        // the 2-ring rules of unified sqrt(3) at α ≠ 0 need a 4-ring patch, the
+        // first size at which the window leaves out most of it (the others'
+        // 2-ring patches are mostly the disc every sector keeps)
+        if name.ends_with("alpha=1/2") || name.ends_with("alpha=1") {
+            assert!(!by_orbits.whole_step_made(), "{name}: discovery refined only the window");
+        }
+        // the whole step, made on demand, is the step of the whole patch
+        let whole = &every.refinements();
+        let made = by_orbits.refinements();
+        assert_eq!(made.len(), whole.len(), "{name}");
+        for (a, b) in made.iter().zip(whole.iter()) {
+            assert_eq!(a.mesh.num_faces(), b.mesh.num_faces(), "{name}: faces of the whole step");
+            assert_eq!(a.vertex_origins, b.vertex_origins, "{name}: vertices of the whole step");
+        }
+        // and every row of S from it agrees with the representative rows
+        for kind in [NeighbourhoodKind::Minimal, NeighbourhoodKind::Analysis] {
+            let a = analyse(s.as_ref(), &config, &Options { neighbourhood: kind, method: None, exact: false }).unwrap();
+            let rules = assemble::<f64>(s.as_ref(), &a.discovered, kind).unwrap();
+            let orbits = Orbits::new(&rules, config.symmetry_period(), n);
+            let reps =
+                subdlab::matrix::local::assemble_rows_f64(s.as_ref(), &a.discovered, kind, &orbits.representative)
+                    .unwrap();
+            for (o, &k) in orbits.representative.iter().enumerate() {
+                assert_eq!(reps[o], rules.rows[k], "{name} {kind:?}: representative row {k}");
+            }
+        }
+    }
+}

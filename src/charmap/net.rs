@@ -128,7 +128,7 @@ fn refine_with_margin(
     // the first analysis step reuses discovery's refinements, whose vertex ids
     // the successor map (lattice charts) refers to
     for k in 0..steps {
-        let r = &d.refinements[k];
+        let r = &d.refinements()[k];
         let points = apply(&d.float_stencils(scheme)[k], &net.points);
         net = descend(&net, &r.mesh, &r.vertex_origins, &r.face_parents, points);
     }

@@ -79,8 +79,8 @@ pub fn assemble_rows<W: SchemeWeight>(
     let set = d.set(kind);
     let targets: Vec<usize> =
         which.iter().map(|&k| d.successor(set[k]).ok_or(AssembleError::Missing)).collect::<Result<_, _>>()?;
-    let raw = step_rows::<W>(d.refinements.len(), &targets, |k, v| {
-        W::stencil(scheme, d.mesh_before(k), d.refinements[k].vertex_origins[v])
+    let raw = step_rows::<W>(d.refinements().len(), &targets, |k, v| {
+        W::stencil(scheme, d.mesh_before(k), d.refinements()[k].vertex_origins[v])
             .map_err(|Inexact| AssembleError::Inexact)?
             .ok_or(AssembleError::Missing)
     })?;
@@ -107,7 +107,7 @@ pub fn assemble_rows_f64(
             .map(|&i| d.successor(set[which[i]]).ok_or(AssembleError::Missing))
             .collect::<Result<_, _>>()?;
         let stencils = d.float_stencils(scheme);
-        let rows = step_rows::<f64>(d.refinements.len(), &targets, |k, v| {
+        let rows = step_rows::<f64>(d.refinements().len(), &targets, |k, v| {
             stencils[k][v].clone().ok_or(AssembleError::Missing)
         })?;
         for (i, row) in missing.into_iter().zip(rows) {
@@ -246,7 +246,7 @@ pub fn lazy_full_f64(
         set.iter().map(|&v| d.successor(v).ok_or(AssembleError::Missing)).collect::<Result<_, _>>()?;
     let labels = set_labels(d, kind);
     let stencils = std::sync::Arc::clone(d.float_stencils(scheme));
-    let levels = d.refinements.len();
+    let levels = d.refinements().len();
     Ok(FullMatrix::lazy(move || {
         let rows = step_rows(levels, &targets, |k, v| stencils[k][v].clone().ok_or(AssembleError::Missing))
             .and_then(|raw| restrict(&set, raw))

@@ -308,6 +308,27 @@ impl PolyMesh {
         Ok((m, old))
     }
 
+    /// The mesh of the faces `keep` only, every vertex keeping its id: a
+    /// vertex of no kept face stays, isolated (no fan, so no rule can be
+    /// evaluated at it). Unlike [`PolyMesh::restrict`] nothing is renumbered,
+    /// so ids, chart coordinates and per-vertex data mean what they meant.
+    pub fn keep_faces(&self, keep: &[FaceId]) -> Result<PolyMesh, String> {
+        let faces: Vec<Vec<usize>> = keep.iter().map(|&f| self.faces[f].clone()).collect();
+        let mut m = PolyMesh::new(self.num_vertices, faces).map_err(|e| e.to_string())?;
+        if !self.face_points.is_empty() {
+            m = m.with_face_points(keep.iter().map(|&f| self.face_points[f]).collect())?;
+        }
+        m.lattice_dirs = self.lattice_dirs.as_ref().map(|d| keep.iter().map(|&f| d[f]).collect());
+        m.vertex_params = self.vertex_params.clone();
+        m.chart = self.chart.as_ref().map(|c| Chart {
+            sector_kinds: c.sector_kinds.clone(),
+            scale: c.scale,
+            vertex_coords: c.vertex_coords.clone(),
+            face_sector: keep.iter().map(|&f| c.face_sector[f]).collect(),
+        });
+        Ok(m)
+    }
+
     /// The face control vertex of face f, if the mesh carries them.
     pub fn face_point(&self, f: FaceId) -> Option<VertexId> {
         self.face_points.get(f).copied().flatten()

@@ -15,7 +15,7 @@
 use std::borrow::Cow;
 use std::cell::RefCell;
 use std::collections::{BTreeSet, HashMap};
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 use super::builder::build_patch;
 use super::configuration::Configuration;
@@ -23,6 +23,7 @@ use super::labels::{canonical_order, label_vertices, VertexLabel};
 use crate::engine::closure::{invariant_closure, Refinement};
 use crate::mesh::{IdMap, IdSet, LatticeCoord, PolyMesh};
 use crate::refine::{Combine, SparseRow};
+use crate::sdc::Topology;
 use crate::sdc::{Origin, Scheme, SchemeWeight, Stencil};
 use crate::topology::Refined;
 
@@ -49,14 +50,14 @@ pub struct Discovered {
     /// the generous level-0 patch
     pub patch: PolyMesh,
     pub labels: Vec<VertexLabel>,
-    /// the refinements of one analysis step (one for binary schemes, two for
-    /// sqrt(3) schemes, whose lattice only realigns after two steps)
-    pub refinements: Vec<Refined>,
+    /// the host that refines the patch
+    topology: Topology,
+    /// one analysis step of the whole patch, made on first use (see
+    /// [`Discovered::refinements`])
+    full_step: OnceLock<FullStep>,
     /// float stencils of each refinement (index k: level k+1 from level k),
     /// completed on first use by [`Discovered::float_stencils`]
     stencils: FloatStencils,
-    /// vertex of the last refinement with given lattice coordinates
-    pub step_at: IdMap<LatticeCoord, usize>,
     /// level-0 vertex ids in canonical order
     pub minimal: Vec<usize>,
     pub analysis: Vec<usize>,
@@ -73,6 +74,23 @@ pub struct Discovered {
     pub(crate) composite: HashMap<usize, SparseRow<f64>>,
 }
 
+/// The refinements of one analysis step of the whole patch (one for binary
+/// schemes, two for sqrt(3) schemes, whose lattice only realigns after two
+/// steps) and, per lattice coordinate, the vertex of the last one there.
+struct FullStep {
+    refinements: Vec<Refined>,
+    step_at: IdMap<LatticeCoord, usize>,
+}
+
+impl FullStep {
+    fn new(refinements: Vec<Refined>) -> Result<FullStep, String> {
+        let last = refinements.last().ok_or("an analysis step has at least one refinement")?;
+        let chart = last.mesh.chart.as_ref().ok_or("refined patch lost its lattice chart")?;
+        let step_at = chart.vertex_coords.iter().enumerate().map(|(i, c)| (*c, i)).collect();
+        Ok(FullStep { refinements, step_at })
+    }
+}
+
 impl Discovered {
     pub fn set(&self, kind: NeighbourhoodKind) -> &[usize] {
         match kind {
@@ -86,14 +104,41 @@ impl Discovered {
     /// positional, so the 60-degree turn of two steps is undone by the lookup.)
     pub fn successor(&self, v: usize) -> Option<usize> {
         let c = self.patch.chart.as_ref()?.vertex_coords[v];
-        self.step_at.get(&c).copied()
+        self.full_step().step_at.get(&c).copied()
+    }
+    /// The refinements of one analysis step of the whole patch (one for
+    /// binary schemes, two for sqrt(3) schemes). Discovery of a large
+    /// rotation-symmetric configuration refines only the sectors around the
+    /// orbit representatives (see `window_faces`); whoever needs every vertex
+    /// (the characteristic map, exact or full assembly) gets the whole step,
+    /// made here on first use.
+    pub fn refinements(&self) -> &[Refined] {
+        &self.full_step().refinements
+    }
+    /// Whether the whole analysis step has been made: by discovery itself
+    /// (small or asymmetric configurations) or on demand since (for tests and
+    /// benchmarks of the windowed path).
+    pub fn whole_step_made(&self) -> bool {
+        self.full_step.get().is_some()
+    }
+    fn full_step(&self) -> &FullStep {
+        self.full_step.get_or_init(|| {
+            let mut refinements: Vec<Refined> = Vec::new();
+            for _ in 0..self.topology.steps_per_analysis() {
+                let before = refinements.last().map_or(&self.patch, |r| &r.mesh);
+                // discovery refined part of this patch, and the whole refines
+                // as any mesh the host accepts does
+                refinements.push(self.topology.refine(before).expect("the patch discovery refined refines"));
+            }
+            FullStep::new(refinements).expect("a refined patch keeps its lattice chart")
+        })
     }
     /// The mesh before refinement k (0 = the patch).
     pub fn mesh_before(&self, k: usize) -> &PolyMesh {
         if k == 0 {
             &self.patch
         } else {
-            &self.refinements[k - 1].mesh
+            &self.refinements()[k - 1].mesh
         }
     }
     /// The float stencils of every vertex of each refinement of one analysis
@@ -109,12 +154,12 @@ impl Discovered {
         self.stencils.all.get_or_init(|| {
             let partial = self.stencils.partial.lock().unwrap_or_else(|e| e.into_inner()).take();
             let evaluated = partial
-                .unwrap_or_else(|| self.refinements.iter().map(|r| vec![None; r.vertex_origins.len()]).collect());
+                .unwrap_or_else(|| self.refinements().iter().map(|r| vec![None; r.vertex_origins.len()]).collect());
             let all = evaluated
                 .into_iter()
                 .enumerate()
                 .map(|(k, level)| {
-                    let (before, origins) = (self.mesh_before(k), &self.refinements[k].vertex_origins);
+                    let (before, origins) = (self.mesh_before(k), &self.refinements()[k].vertex_origins);
                     level
                         .into_iter()
                         .enumerate()
@@ -309,12 +354,14 @@ struct Composer<'a> {
     stencils: StepStencils<'a>,
     /// memo[k][v]: row of vertex v after refinement k+1 (None inside: not composable)
     memo: Vec<IdMap<usize, Option<SparseRow<f64>>>>,
+    /// the first (k, v) whose stencil could not be evaluated
+    first_failure: Option<(usize, usize)>,
 }
 
 impl<'a> Composer<'a> {
     fn new(stencils: StepStencils<'a>) -> Self {
         let levels = stencils.done.len();
-        Composer { stencils, memo: vec![IdMap::default(); levels] }
+        Composer { stencils, memo: vec![IdMap::default(); levels], first_failure: None }
     }
 
     /// The row of vertex v after refinement k+1. Same arithmetic, in the same
@@ -329,6 +376,7 @@ impl<'a> Composer<'a> {
             return;
         }
         let Some(terms) = self.stencils.get(k, v).map(|st| st.terms.clone()) else {
+            self.first_failure.get_or_insert((k, v));
             self.memo[k].insert(v, None);
             return;
         };
@@ -419,24 +467,47 @@ fn try_discover(
     let labels = label_vertices(&patch, &centre_set, config.centre.is_face_centred());
     let topology = scheme.topology();
     let steps = topology.steps_per_analysis();
-    let mut refinements: Vec<Refined> = Vec::new();
-    for k in 0..steps {
-        let before = if k == 0 { &patch } else { &refinements[k - 1].mesh };
-        let r = topology.refine(before)?;
-        refinements.push(r);
-    }
-    let last = &refinements[steps - 1];
-    let chart = last.mesh.chart.as_ref().ok_or("refined patch lost its lattice chart")?;
-    let step_at: IdMap<LatticeCoord, usize> = chart.vertex_coords.iter().enumerate().map(|(i, c)| (*c, i)).collect();
     let chart0 = patch.chart.as_ref().expect("patch has a chart");
     let n = config.valence();
     // asymmetric rules have no rotation symmetry, whatever the configuration
     let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { n };
     let rot0 = Rotation::new(&patch, period, true);
+    // Only representatives are walked, so a large symmetric patch is refined
+    // only in the sectors around theirs (vertex ids kept); the whole step is
+    // made later if someone needs it (`Discovered::refinements`). A rule cut
+    // off by the window blames pruning, and the patch is tried whole.
+    let kept = if prune { window_faces(&patch, period) } else { None };
+    let window = kept.as_ref().map(|kept| patch.keep_faces(kept)).transpose()?;
+    let windowed = window.is_some();
+    let base = window.as_ref().unwrap_or(&patch);
+    // Whether the window may be why the stencil of vertex v of refinement
+    // k+1 could not be evaluated. A rule that fails on the whole patch too
+    // needs a larger patch, not the whole one (so no costly retry); that is
+    // checked at level 0, where window and patch share vertex ids, and
+    // assumed deeper down.
+    let cut_by_window = |k: usize, v: usize, refinements: &[Refined]| -> bool {
+        let Some(kept) = kept.as_ref().filter(|_| windowed) else { return false };
+        if k > 0 {
+            return true;
+        }
+        let origin = match refinements[0].vertex_origins[v] {
+            Origin::Face(f) => Origin::Face(kept[f]),
+            Origin::Corner { face, corner } => Origin::Corner { face: kept[face], corner },
+            o @ (Origin::Vertex(_) | Origin::Edge(..)) => o,
+        };
+        stencil_f64(scheme, &patch, origin).is_some()
+    };
+    let mut refinements: Vec<Refined> = Vec::new();
+    for _ in 0..steps {
+        let before = refinements.last().map_or(base, |r| &r.mesh);
+        refinements.push(topology.refine(before)?);
+    }
+    let step = FullStep::new(refinements)?;
+    let (refinements, step_at) = (&step.refinements, &step.step_at);
     let orbits = RepresentativeSteps {
-        composer: RefCell::new(Composer::new(StepStencils::new(scheme, &patch, &refinements))),
+        composer: RefCell::new(Composer::new(StepStencils::new(scheme, base, refinements))),
         rot0: &rot0,
-        step_at: &step_at,
+        step_at,
         coords: &chart0.vertex_coords,
         labels: &labels,
         rings,
@@ -448,7 +519,13 @@ fn try_discover(
         invariant_closure(&orbits, seed, patch.num_vertices()).map_err(|e| e.to_string())
     };
 
-    let minimal = closure(&mut centre_set.iter().copied())?;
+    let blame_closure = |blame: &mut bool| {
+        let failure = orbits.composer.borrow().first_failure;
+        // a successor missing is not the window's doing: the last refinement
+        // keeps every level-0 vertex's child
+        *blame |= failure.is_some_and(|(k, v)| cut_by_window(k, v, refinements));
+    };
+    let minimal = closure(&mut centre_set.iter().copied()).inspect_err(|_| blame_closure(blame_pruning))?;
 
     // --- analysis neighbourhood: dependencies of the first ring's descendants.
     // Dependencies are tracked backwards: mark the first-ring vertices after r
@@ -458,8 +535,7 @@ fn try_discover(
     // representatives are walked (see `Rotation`).
     // the first ring: faces touching ring 0 (or deeper rings, see `CentreKind::first_ring_depth`)
     let depth = config.centre.first_ring_depth();
-    let mut region_faces: Vec<bool> =
-        patch.faces().iter().map(|f| f.iter().any(|&v| labels[v].ring <= depth)).collect();
+    let mut region_faces: Vec<bool> = base.faces().iter().map(|f| f.iter().any(|&v| labels[v].ring <= depth)).collect();
     let mut lazy: Vec<LazyLevel> = Vec::new();
     // rots[k - 1]: rotation of the mesh after k refinements (pruned when it was)
     let mut rots: Vec<Rotation> = Vec::new();
@@ -467,7 +543,7 @@ fn try_discover(
     let mut previous: Option<BTreeSet<usize>> = None;
     let mut analysis = None;
     let mut levels_used = 0;
-    let mut mesh_k: Cow<PolyMesh> = Cow::Borrowed(&patch);
+    let mut mesh_k: Cow<PolyMesh> = Cow::Borrowed(base);
     // Beyond the first analysis step only the region and a margin around it
     // are kept: the mesh would otherwise grow geometrically with the level,
     // while the backward walk below only ever reaches a bounded number of
@@ -542,8 +618,8 @@ fn try_discover(
                     stencil.as_ref().map(|st| st.support().collect())
                 };
                 let Some(support) = support else {
-                    // the mesh this stencil is evaluated on was pruned
-                    *blame_pruning |= k >= 1 && relabel[k - 1].is_some();
+                    // the mesh this stencil is evaluated on was cut down
+                    *blame_pruning |= (k >= 1 && relabel[k - 1].is_some()) || cut_by_window(k, v, refinements);
                     return Err(format!("first-ring vertex after {r} steps not evaluable in a {rings}-ring patch"));
                 };
                 let below = if k == 0 { &rot0 } else { &rots[k - 1] };
@@ -552,7 +628,7 @@ fn try_discover(
             marked = marked_below;
         }
         collected.extend(marked);
-        let closed = closure(&mut collected.iter().copied())?;
+        let closed = closure(&mut collected.iter().copied()).inspect_err(|_| blame_closure(blame_pruning))?;
         levels_used = r / steps;
         if levels_used >= 2 && previous.as_ref() == Some(&closed) {
             analysis = Some(closed);
@@ -574,13 +650,15 @@ fn try_discover(
     let last_rows = composer.memo.pop().expect("one level at least");
     let partial = composer.stencils.into_partial();
     let composite = asked.into_iter().filter_map(|(w, v)| Some((v, last_rows.get(&w)?.clone()?))).collect();
+    // what discovery refined and evaluated is the whole step unless windowed
+    let (full_step, partial) = if windowed { (OnceLock::new(), None) } else { (OnceLock::from(step), Some(partial)) };
     Ok(Discovered {
         config: config.clone(),
         patch,
         labels,
-        refinements,
-        stencils: FloatStencils { partial: std::sync::Mutex::new(Some(partial)), all: std::sync::OnceLock::new() },
-        step_at,
+        topology,
+        full_step,
+        stencils: FloatStencils { partial: std::sync::Mutex::new(partial), all: OnceLock::new() },
         minimal,
         analysis,
         patch_rings: rings,
@@ -636,10 +714,19 @@ fn window_around_representatives(
     region_faces: &[bool],
     period: usize,
 ) -> Result<Option<Pruned>, String> {
-    let Some(chart) = mesh.chart.as_ref() else { return Ok(None) };
+    let Some(kept) = window_faces(mesh, period) else { return Ok(None) };
+    let region = kept.iter().map(|&f| region_faces[f]).collect();
+    let (cut, old) = mesh.restrict(&kept)?;
+    Ok(Some((cut, old, region)))
+}
+
+/// The faces [`window_around_representatives`] keeps; None when it would
+/// keep more than half of them (or the mesh has no usable symmetry).
+fn window_faces(mesh: &PolyMesh, period: usize) -> Option<Vec<usize>> {
+    let chart = mesh.chart.as_ref()?;
     let n = chart.sectors();
     if period == 0 || period >= n || !n.is_multiple_of(period) || 2 * (period + 2 * WINDOW_SECTORS) > n {
-        return Ok(None);
+        return None;
     }
     // distance in sectors to the representatives' sectors 0..period
     let sector_distance = |s: usize| if s < period { 0 } else { (s + 1 - period).min(n - s) };
@@ -673,12 +760,7 @@ fn window_around_representatives(
             Some(s) => sector_distance(s) <= WINDOW_SECTORS || mesh.face(f).iter().any(|&v| ring[v] <= DISC_RINGS),
         })
         .collect();
-    if 2 * kept.len() > mesh.num_faces() {
-        return Ok(None);
-    }
-    let region = kept.iter().map(|&f| region_faces[f]).collect();
-    let (cut, old) = mesh.restrict(&kept)?;
-    Ok(Some((cut, old, region)))
+    (2 * kept.len() <= mesh.num_faces()).then_some(kept)
 }
 
 /// The sub-mesh of the region faces and `margin` rings of faces around them
