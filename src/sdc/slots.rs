@@ -9,7 +9,9 @@
 //! slots of one origin to mesh vertices; a mask then only puts a weight on
 //! every slot. The gatherer is the one place that walks the mesh, so a scheme
 //! file and the built-in masks of the same shape need no gathering of their
-//! own.
+//! own. Rules over general polygons weigh `face-corner` slots (every corner
+//! of a face, with the face's corner count `Slot::m`), so that Catmull–Clark's
+//! centroids of any m-gon are slot weights like the rest.
 //!
 //! Conventions: fans and rings run counter-clockwise as
 //! `PolyMesh::vertex_fan` gives them. Where a rule says its j is canonical,
