@@ -203,6 +203,48 @@ fn catmull_clark_polygon_file_is_the_built_in_on_any_faces() {
     assert!(a.1.iter().zip(&b.1).any(|(x, y)| (0..3).any(|k| (x[k] - y[k]).abs() > 1e-3)));
 }
 
+/// Mutated polygon files (the face-corner fields, m, j) load or fail with
+/// one line, never panic, and a file that loads runs: discovery at valence 5
+/// and one step on a mesh of triangles and quads.
+#[test]
+fn mutated_polygon_files_never_panic() {
+    let text: Vec<char> =
+        std::fs::read_to_string(path("schemes/catmull-clark-polygons.toml")).unwrap().chars().collect();
+    let pieces = ["m", "j", "n", "(", ")", "/", "-", "0", "1/0", "face-corner = \"1/m\"\n", "[edge]\n", "\"", "="];
+    let (house, pts) = load_mesh("house");
+    let mut rng = common::Rng(0x9E37_79B9_7F4A_7C15);
+    let (mut accepted, mut rejected) = (0, 0);
+    for case in 0..400 {
+        let mut chars = text.clone();
+        for _ in 0..1 + rng.below(2) {
+            let at = rng.below(chars.len() + 1);
+            match rng.below(2) {
+                0 => {
+                    let end = (at + 1 + rng.below(8)).min(chars.len());
+                    chars.drain(at.min(end)..end);
+                }
+                _ => chars.splice(at..at, pieces[rng.below(pieces.len())].chars()).for_each(drop),
+            }
+        }
+        let text: String = chars.into_iter().collect();
+        let result = std::panic::catch_unwind(|| -> Result<(), String> {
+            let scheme = UserSchemeDef::parse(&text, "x.toml")?.build(&[])?;
+            let config = Configuration::regular(&scheme, 5)?;
+            discover(&scheme, &config)?;
+            refine_mesh(&scheme, &house, &pts, 1).map(|_| ())
+        });
+        match result {
+            Ok(Ok(())) => accepted += 1,
+            Ok(Err(e)) => {
+                assert!(!e.contains('\n') && !e.is_empty(), "case {case}: error not one line: {e:?}\n{text}");
+                rejected += 1;
+            }
+            Err(_) => panic!("case {case} panicked on:\n{text}"),
+        }
+    }
+    assert!(accepted > 20 && rejected > 100, "accepted {accepted}, rejected {rejected}");
+}
+
 /// Scheme-file errors of the face-corner fields name the line and the field.
 #[test]
 fn face_corner_fields_are_checked_at_load() {
