@@ -135,3 +135,178 @@ fn limit_and_tangent_stencils_match_halstead_kass_derose() {
         assert!(in_span(&t, &cos_form) && in_span(&t, &sin_form), "tangent stencils span the closed form at n = {n}");
     }
 }
+
+/// A closed mesh of a pentagon, quads and triangles: a pentagonal prism
+/// (bottom 0..4, top ring 5..9) with a pyramid roof (apex 10). Valences:
+/// 3 at the bottom (pentagon, two quads), 4 on the top ring (two quads, two
+/// triangles), 5 at the apex (triangles only).
+fn pentagonal_house() -> Vec<Vec<usize>> {
+    let mut faces = vec![vec![4, 3, 2, 1, 0]];
+    for i in 0..5 {
+        let k = (i + 1) % 5;
+        faces.push(vec![i, k, 5 + k, 5 + i]);
+        faces.push(vec![5 + i, 5 + k, 10]);
+    }
+    faces
+}
+
+type Row = std::collections::BTreeMap<usize, subdlab::numeric::Rational>;
+
+fn q(p: i64, d: i64) -> subdlab::numeric::Rational {
+    subdlab::numeric::Rational::new(p.into(), d.into())
+}
+
+fn add(row: &mut Row, v: usize, w: subdlab::numeric::Rational) {
+    *row.entry(v).or_insert_with(|| q(0, 1)) += w;
+}
+
+fn add_row(row: &mut Row, other: &Row, scale: &subdlab::numeric::Rational) {
+    for (&v, w) in other {
+        add(row, v, w * scale);
+    }
+}
+
+/// Catmull & Clark's rules (1978) written out on a raw face list, without
+/// the mesh type or the scheme's code: face point = centroid; edge point =
+/// (v + w + F1 + F2)/4 with F1, F2 the face points on both sides; vertex
+/// point = (Q + 2R + (n − 3) S)/n with Q the mean of the face points around
+/// S and R the mean of the midpoints of the n edges at S. `bump` adds 1/100
+/// to the weight of the origin's first old vertex in one rule (a negative
+/// control).
+fn closed_form(faces: &[Vec<usize>], origin: subdlab::refine::Origin, bump: bool) -> Row {
+    use subdlab::refine::Origin;
+    let face_point = |f: &[usize]| {
+        let mut r = Row::new();
+        f.iter().for_each(|&c| add(&mut r, c, q(1, f.len() as i64)));
+        r
+    };
+    // the face holding the directed edge a -> b
+    let holding = |a: usize, b: usize| {
+        faces.iter().find(|f| (0..f.len()).any(|k| f[k] == a && f[(k + 1) % f.len()] == b)).unwrap()
+    };
+    let mut row = match origin {
+        Origin::Face(f) => face_point(&faces[f]),
+        Origin::Edge(a, b) => {
+            let mut r = Row::new();
+            add(&mut r, a, q(1, 4));
+            add(&mut r, b, q(1, 4));
+            add_row(&mut r, &face_point(holding(a, b)), &q(1, 4));
+            add_row(&mut r, &face_point(holding(b, a)), &q(1, 4));
+            r
+        }
+        Origin::Vertex(s) => {
+            let around: Vec<&Vec<usize>> = faces.iter().filter(|f| f.contains(&s)).collect();
+            // the neighbours: the corner after s in each face around s
+            let neighbours: Vec<usize> =
+                around.iter().map(|f| f[(f.iter().position(|&c| c == s).unwrap() + 1) % f.len()]).collect();
+            let n = neighbours.len() as i64;
+            let mut qm = Row::new();
+            around.iter().for_each(|f| add_row(&mut qm, &face_point(f), &q(1, n)));
+            let mut rm = Row::new();
+            for &w in &neighbours {
+                add(&mut rm, s, q(1, 2 * n));
+                add(&mut rm, w, q(1, 2 * n));
+            }
+            let mut r = Row::new();
+            add_row(&mut r, &qm, &q(1, n));
+            add_row(&mut r, &rm, &q(2, n));
+            add(&mut r, s, q(n - 3, n));
+            r
+        }
+        Origin::Corner { .. } => panic!("Catmull–Clark makes no corner points"),
+    };
+    if bump {
+        let first = *row.keys().next().unwrap();
+        add(&mut row, first, q(1, 100));
+    }
+    row.retain(|_, w| *w != q(0, 1));
+    row
+}
+
+/// One exact refinement step of `scheme` on the mesh against the closed
+/// form: every new vertex's stencil (a row of the step's subdivision matrix)
+/// equal entry by entry; `bump` perturbs the closed form at the first origin
+/// of that kind. `Err` names the first origin that differs.
+fn step_against_closed_form(
+    scheme: &dyn subdlab::sdc::Scheme,
+    faces: &[Vec<usize>],
+    bump: Option<fn(&subdlab::refine::Origin) -> bool>,
+) -> Result<usize, String> {
+    use subdlab::mesh::PolyMesh;
+    use subdlab::numeric::Rational;
+    let mesh = PolyMesh::new(1 + faces.iter().flatten().max().unwrap(), faces.to_vec()).unwrap();
+    let step = subdlab::refine::step::<Rational>(scheme, &mesh).unwrap();
+    let mut bumped = false;
+    for (origin, stencil) in step.refined.vertex_origins.iter().zip(&step.stencils) {
+        if let subdlab::refine::Origin::Face(f) = origin {
+            assert_eq!(mesh.face(*f), &faces[*f][..], "faces keep their order");
+        }
+        let bump_here = !bumped && bump.is_some_and(|b| b(origin));
+        bumped |= bump_here;
+        let want = closed_form(faces, *origin, bump_here);
+        let got: Row = stencil.as_ref().ok_or(format!("{origin:?}: no stencil"))?.terms.iter().cloned().collect();
+        if got != want {
+            return Err(format!("{origin:?}: {got:?} against the closed form {want:?}"));
+        }
+    }
+    Ok(step.stencils.len())
+}
+
+/// Catmull–Clark on a mesh with a pentagon, quads and triangles (valences
+/// 3, 4 and 5; fans mixing a pentagon with quads, and quads with
+/// triangles): every row of one exact refinement step is the closed-form
+/// rule, computed independently above.
+#[test]
+fn non_quad_faces_follow_the_closed_form_rules_exactly() {
+    use subdlab::refine::Origin;
+    let faces = pentagonal_house();
+    let cc = scheme("catmull-clark");
+    // 11 vertices, 20 edges, 11 faces
+    assert_eq!(step_against_closed_form(cc.as_ref(), &faces, None), Ok(42));
+    // the same on the cube (quads only), and on the triangles of an octahedron
+    let cube = vec![
+        vec![0, 3, 2, 1],
+        vec![4, 5, 6, 7],
+        vec![0, 1, 5, 4],
+        vec![1, 2, 6, 5],
+        vec![2, 3, 7, 6],
+        vec![3, 0, 4, 7],
+    ];
+    assert_eq!(step_against_closed_form(cc.as_ref(), &cube, None), Ok(26));
+    let octahedron = vec![
+        vec![0, 2, 4],
+        vec![2, 1, 4],
+        vec![1, 3, 4],
+        vec![3, 0, 4],
+        vec![2, 0, 5],
+        vec![1, 2, 5],
+        vec![3, 1, 5],
+        vec![0, 3, 5],
+    ];
+    assert_eq!(step_against_closed_form(cc.as_ref(), &octahedron, None), Ok(26));
+    // negative controls: a closed form off by 1/100 in one weight of each
+    // rule is told apart (the apex's vertex rule, a pentagon's face point, an
+    // edge between a pentagon and a quad)
+    let bumps: [fn(&Origin) -> bool; 3] = [
+        |o| *o == Origin::Vertex(10),
+        |o| *o == Origin::Face(0),
+        |o| matches!(*o, Origin::Edge(a, b) if a < 5 && b < 5),
+    ];
+    for bump in bumps {
+        let e = step_against_closed_form(cc.as_ref(), &faces, Some(bump)).unwrap_err();
+        assert!(e.contains("against the closed form"), "{e}");
+    }
+    // and a scheme that weighs the faces around a vertex as if they were
+    // quads (1/(4n²) on every corner where 1/(m n²) belongs) agrees on the
+    // cube but not where the faces are not quads
+    let text =
+        std::fs::read_to_string(format!("{}/schemes/catmull-clark-polygons.toml", env!("CARGO_MANIFEST_DIR"))).unwrap();
+    assert_eq!(text.matches("face-corner = \"1 / (m n^2)\"").count(), 1);
+    let as_quads = text
+        .replace("face-corner = \"1 / (m n^2)\"", "face-corner = \"1 / (4 n^2)\"")
+        .replace("topology = \"primal-quad\"", "topology = \"primal-quad\"\naffine = false");
+    let as_quads = subdlab::schemes::user::UserSchemeDef::parse(&as_quads, "x.toml").unwrap().build(&[]).unwrap();
+    assert_eq!(step_against_closed_form(&as_quads, &cube, None), Ok(26));
+    let e = step_against_closed_form(&as_quads, &faces, None).unwrap_err();
+    assert!(e.starts_with("Vertex("), "{e}");
+}

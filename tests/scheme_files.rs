@@ -146,6 +146,148 @@ fn sqrt3_files_are_the_built_ins() {
     }
 }
 
+/// The primal-quad host's face-corner slots: `catmull-clark-polygons.toml`
+/// weighs the corners of every face around a vertex and beside an edge (m
+/// the face's corner count), as the built-in does, so it is Catmull–Clark on
+/// any closed mesh: the same matrices (all rational, so exact at every
+/// valence) and the same refinement of meshes with triangles, quads and a
+/// pentagon. `catmull-clark.toml`, written with the quad slots only, still
+/// refuses other faces.
+#[test]
+fn catmull_clark_polygon_file_is_the_built_in_on_any_faces() {
+    let all: Vec<usize> = (3..=12).collect();
+    same_for_valences_3_to_12("schemes/catmull-clark-polygons.toml", "catmull-clark", &[], &all);
+    let (file, built) = (file_scheme("schemes/catmull-clark-polygons.toml", &[]), builtin("catmull-clark", &[]));
+    assert_eq!(file.mesh_requirement(), built.mesh_requirement());
+    // a pentagonal prism with a pyramid roof: a pentagon, quads, triangles
+    let mut faces = vec![vec![4, 3, 2, 1, 0]];
+    let mut pts: Vec<[f64; 3]> = Vec::new();
+    for i in 0..5 {
+        let t = 2.0 * std::f64::consts::PI * i as f64 / 5.0;
+        pts.push([t.cos(), t.sin(), 0.0]);
+        let k = (i + 1) % 5;
+        faces.push(vec![i, k, 5 + k, 5 + i]);
+        faces.push(vec![5 + i, 5 + k, 10]);
+    }
+    for i in 0..5 {
+        pts.push([pts[i][0], pts[i][1], 1.0]);
+    }
+    pts.push([0.0, 0.0, 1.7]);
+    let pentagon = PolyMesh::new(11, faces).unwrap();
+    assert_same_refinement(file.as_ref(), built.as_ref(), &pentagon, &pts, 3);
+    for mesh in ["house", "prism", "octahedron", "mixed-quads", "cube"] {
+        let (m, p) = load_mesh(mesh);
+        assert_same_refinement(file.as_ref(), built.as_ref(), &m, &p, 2);
+    }
+    // the quad-only file (no face-corner fields) refuses the pentagon
+    let quads = file_scheme("schemes/catmull-clark.toml", &[]);
+    let e = refine_mesh(quads.as_ref(), &pentagon, &pts, 1).unwrap_err();
+    assert!(e.contains("a closed quad mesh"), "{e}");
+    // negative control: 1/(4 n^2) on every corner, the quad value, is
+    // rejected at load (affine at m = 4 only); without the affine check it
+    // is the built-in where all faces are quads (the local matrix at n = 5)
+    // but moves the new points of the pentagon mesh
+    let text = std::fs::read_to_string(path("schemes/catmull-clark-polygons.toml")).unwrap();
+    let quad_weight = text.replace("face-corner = \"1 / (m n^2)\"", "face-corner = \"1 / (4 n^2)\"");
+    let e = UserSchemeDef::parse(&quad_weight, "x.toml").unwrap_err();
+    assert!(e.contains("field vertex: the weights of the vertex rule sum to") && e.contains("m = 3"), "{e}");
+    let loose = text_scheme(
+        &quad_weight.replace("topology = \"primal-quad\"", "topology = \"primal-quad\"\naffine = false"),
+        &[],
+    );
+    difference(loose.as_ref(), built.as_ref(), 5, None).unwrap();
+    let (a, b) = (
+        refine_mesh(loose.as_ref(), &pentagon, &pts, 1).unwrap(),
+        refine_mesh(built.as_ref(), &pentagon, &pts, 1).unwrap(),
+    );
+    assert!(a.1.iter().zip(&b.1).any(|(x, y)| (0..3).any(|k| (x[k] - y[k]).abs() > 1e-3)));
+}
+
+/// Mutated polygon files (the face-corner fields, m, j) load or fail with
+/// one line, never panic, and a file that loads runs: discovery at valence 5
+/// and one step on a mesh of triangles and quads.
+#[test]
+fn mutated_polygon_files_never_panic() {
+    let text: Vec<char> =
+        std::fs::read_to_string(path("schemes/catmull-clark-polygons.toml")).unwrap().chars().collect();
+    let pieces = ["m", "j", "n", "(", ")", "/", "-", "0", "1/0", "face-corner = \"1/m\"\n", "[edge]\n", "\"", "="];
+    let (house, pts) = load_mesh("house");
+    let mut rng = common::Rng(0x9E37_79B9_7F4A_7C15);
+    let (mut accepted, mut rejected) = (0, 0);
+    for case in 0..400 {
+        let mut chars = text.clone();
+        for _ in 0..1 + rng.below(2) {
+            let at = rng.below(chars.len() + 1);
+            match rng.below(2) {
+                0 => {
+                    let end = (at + 1 + rng.below(8)).min(chars.len());
+                    chars.drain(at.min(end)..end);
+                }
+                _ => chars.splice(at..at, pieces[rng.below(pieces.len())].chars()).for_each(drop),
+            }
+        }
+        let text: String = chars.into_iter().collect();
+        let result = std::panic::catch_unwind(|| -> Result<(), String> {
+            let scheme = UserSchemeDef::parse(&text, "x.toml")?.build(&[])?;
+            let config = Configuration::regular(&scheme, 5)?;
+            discover(&scheme, &config)?;
+            refine_mesh(&scheme, &house, &pts, 1).map(|_| ())
+        });
+        match result {
+            Ok(Ok(())) => accepted += 1,
+            Ok(Err(e)) => {
+                assert!(!e.contains('\n') && !e.is_empty(), "case {case}: error not one line: {e:?}\n{text}");
+                rejected += 1;
+            }
+            Err(_) => panic!("case {case} panicked on:\n{text}"),
+        }
+    }
+    assert!(accepted > 20 && rejected > 100, "accepted {accepted}, rejected {rejected}");
+}
+
+/// Scheme-file errors of the face-corner fields name the line and the field.
+#[test]
+fn face_corner_fields_are_checked_at_load() {
+    let text = std::fs::read_to_string(path("schemes/catmull-clark-polygons.toml")).unwrap();
+    let cases = [
+        // m belongs to face-corner fields only
+        (
+            text.replace("ends = \"1/4\"", "ends = \"1/m\""),
+            "field edge.ends: unknown variable 'm' (m, a face's corner count",
+        ),
+        // a parameter m would hide the corner count
+        (
+            text.replace("topology = \"primal-quad\"", "topology = \"primal-quad\"\n[params.m]\ndefault = \"1\""),
+            "field vertex.face-corner: the parameter 'm' hides the corner count m",
+        ),
+        // the edge rule must be affine at every corner count
+        (
+            text.replace("face-corner = \"1 / (4 m)\"", "face-corner = \"1 / 16\""),
+            "field edge: the weights of the edge rule sum to",
+        ),
+        // the weights may not depend on the face index j
+        (
+            text.replace("face-corner = \"1 / (4 m)\"", "face-corner = \"(1 + j) / (4 m)\""),
+            "field edge.face-corner: the weight differs between j = 0 and j = 1 at n = 4, m = 3",
+        ),
+        // face-corner fields are no quad-vertex fields of other hosts
+        (text.replace("topology = \"primal-quad\"", "topology = \"ternary\""), "topology ternary has no face rule"),
+    ];
+    for (bad, want) in cases {
+        let e = UserSchemeDef::parse(&bad, "x.toml").err().unwrap_or_else(|| panic!("should fail: {want}"));
+        assert!(!e.contains('\n') && e.contains(want), "got '{e}', want '{want}'");
+    }
+    // m is still free as a sum's index and, in files without face-corner
+    // fields, as a parameter
+    assert!(UserSchemeDef::parse(&std::fs::read_to_string(path("schemes/loop-fourier-edge.toml")).unwrap(), "x.toml")
+        .is_ok());
+    let cc = std::fs::read_to_string(path("schemes/catmull-clark.toml")).unwrap();
+    let with_m = cc
+        .replace("topology = \"primal-quad\"", "topology = \"primal-quad\"\n[params.m]\ndefault = \"3/8\"")
+        .replace("ends = \"3/8\"", "ends = \"m\"");
+    assert!(UserSchemeDef::parse(&with_m, "x.toml").is_ok());
+}
+
 #[test]
 fn tps_file_is_the_built_in_at_two_split_ratios() {
     // every TPS weight is rational (no cosines): exact at every valence

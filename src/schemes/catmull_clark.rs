@@ -7,8 +7,9 @@
 
 use super::{Caps, CentreKind, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
-use crate::numeric::Weight;
-use crate::sdc::{Origin, RuleResult, Stencil};
+use crate::numeric::{Inexact, Weight};
+use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
+use crate::sdc::{Origin, RuleResult};
 use crate::sdc::{Topology, TriangleSplit};
 
 pub struct CatmullClark {
@@ -33,47 +34,49 @@ pub fn entry() -> SchemeEntry {
     }
 }
 
-fn face_point<W: Weight>(face: &[usize]) -> Stencil<W> {
-    let w = W::ratio(1, face.len() as i64);
-    let mut s = Stencil::new();
-    for &v in face {
-        s.add(v, w.clone());
+// The rules are a mask on the primal quad host's slots for general polygons:
+// the gatherer names every corner of each face of a vertex's fan and of an
+// edge's two faces (with the face's corner count m), so the centroids of
+// triangles, pentagons, ... are weighed like those of quads, and a scheme
+// file weighing the same slots (schemes/catmull-clark-polygons.toml) is the
+// same scheme on any closed polygon mesh.
+impl Wants for CatmullClark {
+    fn rule(&self, rule: &str) -> bool {
+        matches!(rule, "vertex" | "edge" | "face")
     }
-    s
+    fn family(&self, rule: &str, family: &str) -> bool {
+        matches!(
+            (rule, family),
+            ("vertex", "centre" | "edge" | "face-corner") | ("edge", "ends" | "face-corner") | ("face", "corner")
+        )
+    }
+}
+
+impl<W: Weight> Mask<W> for CatmullClark {
+    fn weight(&self, _mesh: &PolyMesh, rule: &'static str, slot: &Slot) -> Result<W, Inexact> {
+        let n = slot.n as i64;
+        Ok(match (rule, slot.family, slot.m) {
+            // (n - 3)/n of v, and v's half of the n edge midpoints (weight 2/n^2 each)
+            ("vertex", "centre", _) => W::ratio(n - 2, n),
+            // e_j's half of its edge midpoint
+            ("vertex", "edge", _) => W::ratio(1, n * n),
+            // Q/n: the centroid of each fan face, 1/n^2 each (the factor
+            // 1/m first, as the face point is a stencil of its own)
+            ("vertex", "face-corner", Some(m)) => W::ratio(1, m as i64) * W::ratio(1, n * n),
+            ("edge", "ends", _) => W::ratio(1, 4),
+            // a quarter of each of the two face points
+            ("edge", "face-corner", Some(m)) => W::ratio(1, m as i64) * W::ratio(1, 4),
+            // the face point: the centroid of the n corners
+            ("face", "corner", _) => W::ratio(1, n),
+            // no weight on slots the mask does not use
+            _ => W::zero(),
+        })
+    }
 }
 
 impl<W: Weight> Rules<W> for CatmullClark {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
-        Ok(match origin {
-            Origin::Face(f) => Some(face_point(mesh.face(f))),
-            Origin::Edge(a, b) => {
-                let (Some((fl, _)), Some((fr, _))) = (mesh.half_edge(a, b), mesh.half_edge(b, a)) else {
-                    return Ok(None);
-                };
-                let quarter = W::ratio(1, 4);
-                let mut s = Stencil::new().with(a, quarter.clone()).with(b, quarter.clone());
-                s.add_scaled(&face_point(mesh.face(fl)), &quarter);
-                s.add_scaled(&face_point(mesh.face(fr)), &quarter);
-                Some(s)
-            }
-            Origin::Vertex(v) => {
-                let Some(fan) = mesh.vertex_fan(v) else {
-                    return Ok(None);
-                };
-                let n = fan.len() as i64;
-                let mut s = Stencil::new().with(v, W::ratio(n - 3, n));
-                let inv_n2 = W::ratio(1, n * n);
-                for face in &fan {
-                    // Q / n: each adjacent face point with weight 1/n^2
-                    s.add_scaled(&face_point(face), &inv_n2);
-                    // 2R / n: each edge midpoint (v + e)/2 with weight 2/n^2
-                    s.add(v, inv_n2.clone());
-                    s.add(face[1], inv_n2.clone());
-                }
-                Some(s)
-            }
-            Origin::Corner { .. } => None,
-        })
+        weigh(Host::PrimalQuad, mesh, origin, self, &W::one())
     }
 }
 

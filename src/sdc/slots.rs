@@ -9,7 +9,9 @@
 //! slots of one origin to mesh vertices; a mask then only puts a weight on
 //! every slot. The gatherer is the one place that walks the mesh, so a scheme
 //! file and the built-in masks of the same shape need no gathering of their
-//! own.
+//! own. Rules over general polygons weigh `face-corner` slots (every corner
+//! of a face, with the face's corner count `Slot::m`), so that Catmull–Clark's
+//! centroids of any m-gon are slot weights like the rest.
 //!
 //! Conventions: fans and rings run counter-clockwise as
 //! `PolyMesh::vertex_fan` gives them. Where a rule says its j is canonical,
@@ -86,21 +88,29 @@ pub enum Arity {
     /// many as the fan has quads, so their weights must sum to 0 per quad
     /// for the rule to stay affine
     PerQuad(usize),
+    /// one slot per corner of each face the rule names (j = the face's
+    /// index, the slot's `m` its corner count): `Some(k)` faces (the two
+    /// faces of an edge), `None` one per j = 0..n-1 (the fan of a vertex).
+    /// The faces may be any polygons, so a rule over general polygons (the
+    /// centroids in Catmull–Clark's rules) needs no rule per face size
+    FaceCorners(Option<usize>),
 }
 
 impl Arity {
-    /// Slots of the family at valence (or face size) n, for affine checks.
-    pub fn count(self, n: usize) -> usize {
+    /// Slots of the family at valence (or face size) n when every face it
+    /// names has m corners, for affine checks.
+    pub fn count(self, n: usize, m: usize) -> usize {
         match self {
             Arity::Fixed(k) => k,
             Arity::PerJ(k) | Arity::PerQuad(k) => k * n,
+            Arity::FaceCorners(_) => self.js(n) * m,
         }
     }
     /// The indices j a weight is asked for.
     pub fn js(self, n: usize) -> usize {
         match self {
-            Arity::Fixed(k) => k,
-            Arity::PerJ(_) | Arity::PerQuad(_) => n,
+            Arity::Fixed(k) | Arity::FaceCorners(Some(k)) => k,
+            Arity::PerJ(_) | Arity::PerQuad(_) | Arity::FaceCorners(None) => n,
         }
     }
 }
@@ -113,6 +123,9 @@ pub struct Family {
     /// a file may leave it out (then it is not gathered: the rule keeps its
     /// smaller stencil, e.g. the 1-ring edge rule without butterfly wings)
     pub optional: bool,
+    /// the slots exist at quads only: in a rule that also has face-corner
+    /// slots (and so takes any polygons), a face of another size has none
+    pub quad_only: bool,
     pub doc: &'static str,
 }
 
@@ -169,7 +182,19 @@ impl HostSpec {
 }
 
 const fn fam(name: &'static str, arity: Arity, doc: &'static str) -> Family {
-    Family { name, arity, optional: false, doc }
+    Family { name, arity, optional: false, quad_only: false, doc }
+}
+
+/// A family of the primal quad host whose slots exist at quads only.
+const fn quad_fam(name: &'static str, arity: Arity, doc: &'static str) -> Family {
+    Family { quad_only: true, ..fam(name, arity, doc) }
+}
+
+/// The corners of the faces of a primal quad rule, for masks over general
+/// polygons. Optional: a mask without it keeps the quad-only rule (its
+/// gatherer refuses other faces, as the quad scheme files expect).
+const fn corner_family(arity: Arity, doc: &'static str) -> Family {
+    Family { optional: true, ..fam("face-corner", arity, doc) }
 }
 
 const ONE: Arity = Arity::Fixed(1);
@@ -207,16 +232,34 @@ const QUAD_VERTEX: &[Family] = &[
 const TRI_VERTEX: &[Family] = &[fam("centre", ONE, "the vertex v"), fam("edge", PER_J, "e_j, v's j-th neighbour")];
 
 const PRIMAL_QUAD: &[RuleSlots] = &[
-    rule("vertex", V, Any, QUAD_VERTEX, "the new vertex point of v (valence n)"),
+    rule(
+        "vertex",
+        V,
+        Any,
+        &[
+            fam("centre", ONE, "the vertex v"),
+            fam("edge", PER_J, "e_j, the other end of the j-th edge at v"),
+            quad_fam("face", PER_J, "f_j, the corner opposite v in the quad [v, e_j, f_j, e_{j+1}]"),
+            corner_family(
+                Arity::FaceCorners(None),
+                "every corner of fan face j [v, e_j, ..., e_{j+1}] (v and e_j, e_{j+1} included), m its corner count",
+            ),
+        ],
+        "the new vertex point of v (valence n; any polygons around v where the mask weighs face-corner)",
+    ),
     rule(
         "edge",
         E,
         Fixed(4),
         &[
             fam("ends", Arity::Fixed(2), "the edge's two ends"),
-            fam("side", Arity::Fixed(4), "the two other corners of each of the edge's two quads"),
+            quad_fam("side", Arity::Fixed(4), "the two other corners of each of the edge's two quads"),
+            corner_family(
+                Arity::FaceCorners(Some(2)),
+                "every corner of the edge's left (j = 0) and right (j = 1) face (the ends included), m its corner count",
+            ),
         ],
-        "the new edge point",
+        "the new edge point (between any polygons where the mask weighs face-corner)",
     ),
     canonical(
         "edge-extraordinary",
@@ -241,6 +284,7 @@ const PRIMAL_TRIANGLE: &[RuleSlots] = &[
                 name: "wing",
                 arity: Arity::Fixed(4),
                 optional: true,
+                quad_only: false,
                 doc: "2-ring: the apexes of the four triangles across the other edges of the edge's two triangles \
                       (the butterfly's wings)",
             },
@@ -282,12 +326,14 @@ const MIXED: &[RuleSlots] = &[
                 name: "quad-opposite",
                 arity: Arity::PerQuad(1),
                 optional: true,
+                quad_only: false,
                 doc: "(4a') the corner w_i opposite v in each quad [v, e_i, w_i, e_{i+1}] of the fan",
             },
             Family {
                 name: "quad-side",
                 arity: Arity::PerQuad(2),
                 optional: true,
+                quad_only: false,
                 doc: "(4a') e_i and e_{i+1} of each quad of the fan",
             },
         ],
@@ -584,7 +630,9 @@ pub fn weigh<W: Weight>(
     extraordinary_share: &W,
 ) -> RuleResult<W> {
     let Ok(g) = gather(host, mesh, origin, mask) else { return Ok(None) };
-    let mut s = Stencil::new();
+    // one term per direct slot (a derived point adds its own): no regrowth
+    let slots = g.parts.iter().chain(&g.extraordinary).chain(&g.regular).map(|p| p.slots.len()).sum();
+    let mut s = Stencil { terms: Vec::with_capacity(slots) };
     for part in &g.parts {
         fill(mask, mesh, &mut s, part, &W::one())?;
     }
@@ -669,6 +717,9 @@ pub struct Slot {
     /// P of a sqrt(3) face rule, the extraordinary end of an edge rule;
     /// `None` where a rule concerns no single vertex (regular edges, faces)
     pub at: Option<VertexId>,
+    /// the corner count of the face a face-corner slot lies in (its own for
+    /// each face of a vertex's fan or an edge); `None` for other slots
+    pub m: Option<usize>,
     pub target: Target,
 }
 
@@ -692,14 +743,22 @@ impl Part {
         Part { at: Some(v), ..Part::new(rule, n) }
     }
     fn put(&mut self, family: &'static str, j: usize, v: VertexId) {
-        self.slots.push(Slot { family, j, n: self.n, at: self.at, target: Target::Vertex(v) });
+        self.slots.push(Slot { family, j, n: self.n, at: self.at, m: None, target: Target::Vertex(v) });
     }
     /// A slot of the neighbourhood of vertex `at` (valence n) inside a larger rule.
     fn put_around(&mut self, family: &'static str, j: usize, n: usize, at: VertexId, v: VertexId) {
-        self.slots.push(Slot { family, j, n, at: Some(at), target: Target::Vertex(v) });
+        self.slots.push(Slot { family, j, n, at: Some(at), m: None, target: Target::Vertex(v) });
     }
     fn put_target(&mut self, family: &'static str, target: Target) {
-        self.slots.push(Slot { family, j: 0, n: self.n, at: self.at, target });
+        self.slots.push(Slot { family, j: 0, n: self.n, at: self.at, m: None, target });
+    }
+    /// The face-corner slots of face j: its corners from `start` on.
+    fn put_face_corners(&mut self, j: usize, face: &[VertexId], start: usize) {
+        let m = face.len();
+        for t in 0..m {
+            let target = Target::Vertex(face[(start + t) % m]);
+            self.slots.push(Slot { family: "face-corner", j, n: self.n, at: self.at, m: Some(m), target });
+        }
     }
     fn scaled(mut self, num: i64, den: i64) -> Self {
         self.scale = (num, den);
@@ -768,7 +827,13 @@ pub fn gather(host: Host, mesh: &PolyMesh, origin: Origin, wants: &dyn Wants) ->
     let unsupported = Err(GatherError::Unsupported(host, OriginKind::of(origin)));
     match host {
         Host::PrimalQuad => match origin {
-            Origin::Vertex(v) => vertex_fan_part("vertex", mesh, v, Some(4)).map(Gathered::one),
+            // a mask that weighs the fan faces' corners takes any polygons;
+            // without them the rule is written for quads and refuses others
+            Origin::Vertex(v) => match wants.family("vertex", "face-corner") {
+                true => polygon_vertex(mesh, v, wants.family("vertex", "face")),
+                false => vertex_fan_part("vertex", mesh, v, Some(4)),
+            }
+            .map(Gathered::one),
             Origin::Edge(a, b) => primal_edge(mesh, a, b, 4, wants),
             Origin::Face(f) => Ok(Gathered::one(face_corners("face", mesh, f))),
             Origin::Corner { .. } => unsupported,
@@ -906,6 +971,26 @@ fn vertex_fan_part(rule: &'static str, mesh: &PolyMesh, v: VertexId, size: Optio
     Ok(p)
 }
 
+/// The primal quad vertex rule over any polygons: per fan face j its
+/// corners from v on, then e_j, then (at a quad, if weighed) f_j. Face j's
+/// corners come before e_j so that each vertex's weights add up in the order
+/// of the face-point-then-edge-midpoint formulas they come from.
+fn polygon_vertex(mesh: &PolyMesh, v: VertexId, opposite: bool) -> Result<Part, GatherError> {
+    let fan = mesh.fan_corners(v).ok_or(GatherError::Truncated)?;
+    let mut p = Part::around("vertex", fan.len(), v);
+    p.slots.reserve(1 + 2 * fan.len() + fan.iter().map(|&(f, _)| mesh.face(f).len()).sum::<usize>());
+    p.put("centre", 0, v);
+    for (j, &(f, k)) in fan.iter().enumerate() {
+        let face = mesh.face(f);
+        p.put_face_corners(j, face, k);
+        p.put("edge", j, face[(k + 1) % face.len()]);
+        if opposite && face.len() == 4 {
+            p.put("face", j, face[(k + 2) % 4]);
+        }
+    }
+    Ok(p)
+}
+
 /// Corner j of face f.
 fn face_corners(rule: &'static str, mesh: &PolyMesh, f: FaceId) -> Part {
     let face = mesh.face(f);
@@ -973,20 +1058,45 @@ fn across(mesh: &PolyMesh, p: VertexId, q: VertexId) -> Result<VertexId, GatherE
 }
 
 fn primal_edge(mesh: &PolyMesh, a: VertexId, b: VertexId, size: usize, wants: &dyn Wants) -> Gather {
-    let (l, r) = edge_faces(mesh, a, b)?;
-    sized([&l, &r], size)?;
+    // the two faces in the mesh's storage, each with the index of the edge's
+    // first end (every edge point asks: no copies of the faces)
+    let (Some((fl, kl)), Some((fr, kr))) = (mesh.half_edge(a, b), mesh.half_edge(b, a)) else {
+        return Err(GatherError::Truncated);
+    };
+    let (l, r) = (mesh.face(fl), mesh.face(fr));
+    // corner t of a face counted from the edge's first end
+    let at = |face: &[VertexId], k: usize, t: usize| face[(k + t) % face.len()];
+    // a quad mask that weighs the two faces' corners takes any polygons
+    let polygons = size == 4 && wants.family("edge", "face-corner");
+    if !polygons {
+        sized([l, r], size)?;
+    }
+    // (a quad mask always weighs `side`; a polygon mask may not)
+    let sides = !polygons || wants.family("edge", "side");
     let mut p = Part::new("edge", if size == 4 { 4 } else { 6 });
+    if polygons {
+        p.slots.reserve(6 + l.len() + r.len());
+    }
     p.put("ends", 0, a);
     p.put("ends", 1, b);
     if size == 4 {
-        [l[2], l[3], r[2], r[3]].iter().enumerate().for_each(|(j, &v)| p.put("side", j, v));
+        for (i, (face, k)) in [(l, kl), (r, kr)].into_iter().enumerate() {
+            // side slots 0, 1 on the left quad, 2, 3 on the right one
+            if sides && face.len() == 4 {
+                p.put("side", 2 * i, at(face, k, 2));
+                p.put("side", 2 * i + 1, at(face, k, 3));
+            }
+            if polygons {
+                p.put_face_corners(i, face, k);
+            }
+        }
     } else {
-        p.put("opposite", 0, l[2]);
-        p.put("opposite", 1, r[2]);
+        let (c, d) = (at(l, kl, 2), at(r, kr, 2));
+        p.put("opposite", 0, c);
+        p.put("opposite", 1, d);
         if wants.family("edge", "wing") {
             // left (a, b, c), right (b, a, d): across b-c, c-a, a-d, d-b
-            let wings =
-                [across(mesh, b, l[2])?, across(mesh, l[2], a)?, across(mesh, a, r[2])?, across(mesh, r[2], b)?];
+            let wings = [across(mesh, b, c)?, across(mesh, c, a)?, across(mesh, a, d)?, across(mesh, d, b)?];
             wings.iter().enumerate().for_each(|(j, &v)| p.put("wing", j, v));
         }
     }

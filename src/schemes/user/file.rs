@@ -104,6 +104,8 @@ pub(super) struct Field {
     pub line: usize,
     pub expr: Expr,
     pub arity: Arity,
+    /// the family's slots exist at quads only (`Family::quad_only`)
+    pub quad_only: bool,
     pub uses_j: bool,
 }
 
@@ -270,68 +272,86 @@ impl UserSchemeDef {
     /// same for every j (the first neighbour around a vertex or in a face is
     /// arbitrary, so a weight that varies with j would make the rule depend
     /// on how the mesh is stored); with `affine`, every rule's weights sum to
-    /// 1 (at a uniform valence n: a derived point counts as one point).
+    /// 1 (at a uniform valence n: a derived point counts as one point; with
+    /// face-corner fields, at every uniform corner count m = 3..12).
     pub(super) fn check(&self, params: &Env) -> Result<(), String> {
         for rule in &self.rules {
+            // a rule with face-corner fields takes any polygons: checked at
+            // every corner count m (quad-only families at m = 4 only), which
+            // makes it affine on fans of mixed faces too, as each face then
+            // carries the same share; other rules see quads (m = 4) only
+            let polygons = rule.fields.iter().any(|f| matches!(f.arity, Arity::FaceCorners(_)));
+            let ms = if polygons { CHECK_N } else { 4..=4 };
             for n in check_ns(rule.spec) {
-                // per-quad families: their own sum, per quad
-                let (mut sum, mut quad_sum) = (0.0, 0.0);
-                for field in &rule.fields {
-                    let js = if field.uses_j { field.arity.js(n as usize) } else { 1 };
-                    // j canonical and used: every neighbour has its own weight
-                    let per_j = rule.spec.canonical_j && field.uses_j;
-                    let mut first = None;
-                    for j in 0..js as i64 {
-                        let w = eval_f64(&field.expr, params, n, j)
-                            .map_err(|e| self.err(field.line, &field.key, format!("at n = {n}, j = {j}: {e}")))?;
-                        if per_j {
-                            sum += w;
-                            continue;
-                        }
-                        match first {
-                            None => first = Some(w),
-                            Some(w0) if (w - w0).abs() > 1e-12 * f64::max(w0.abs(), 1.0) => {
-                                return Err(self.err(
-                                    field.line,
-                                    &field.key,
-                                    format!(
-                                        "the weight differs between j = 0 and j = {j} at n = {n}; the first neighbour \
-                                         is arbitrary, so weights may not depend on j{}",
-                                        j_pointer(self.host.spec())
-                                    ),
-                                ))
-                            }
-                            _ => {}
-                        }
-                    }
-                    if per_j {
-                        continue;
-                    }
-                    match field.arity {
-                        Arity::PerQuad(k) => quad_sum += first.unwrap_or(0.0) * k as f64,
-                        Arity::Fixed(_) | Arity::PerJ(_) => {
-                            sum += first.unwrap_or(0.0) * field.arity.count(n as usize) as f64
-                        }
-                    }
-                }
-                if self.affine && quad_sum.abs() > 1e-12 {
-                    let section = rule.spec.name;
-                    return Err(format!(
-                        "{} line {}, field {section}: the per-quad weights of the {section} rule sum to {quad_sum} \
-                         per quad at n = {n}, not 0 (the fan may have any number of quads; set affine = false to \
-                         allow this)",
-                        self.file, rule.line
-                    ));
-                }
-                if self.affine && (sum - 1.0).abs() > 1e-12 {
-                    let section = rule.spec.name;
-                    return Err(format!(
-                        "{} line {}, field {section}: the weights of the {section} rule sum to {sum} at n = {n}, not \
-                         1 (set affine = false to allow this)",
-                        self.file, rule.line
-                    ));
+                for m in ms.clone() {
+                    self.check_at(rule, params, n, m, polygons)?;
                 }
             }
+        }
+        Ok(())
+    }
+
+    /// One rule at valence n with faces of m corners (`polygons`: m is a
+    /// variable of the rule, named in messages).
+    fn check_at(&self, rule: &RuleDef, params: &Env, n: i64, m: i64, polygons: bool) -> Result<(), String> {
+        let at = if polygons { format!("n = {n}, m = {m}") } else { format!("n = {n}") };
+        // per-quad families: their own sum, per quad
+        let (mut sum, mut quad_sum) = (0.0, 0.0);
+        for field in rule.fields.iter().filter(|f| m == 4 || !f.quad_only) {
+            let corners = matches!(field.arity, Arity::FaceCorners(_));
+            let js = if field.uses_j { field.arity.js(n as usize) } else { 1 };
+            // j canonical and used: every neighbour has its own weight
+            let per_j = rule.spec.canonical_j && field.uses_j;
+            let mut first = None;
+            for j in 0..js as i64 {
+                let w = eval_f64(&field.expr, params, n, j, corners.then_some(m)).map_err(|e| {
+                    let m = if corners { format!(", m = {m}") } else { String::new() };
+                    self.err(field.line, &field.key, format!("at n = {n}, j = {j}{m}: {e}"))
+                })?;
+                if per_j {
+                    sum += w;
+                    continue;
+                }
+                match first {
+                    None => first = Some(w),
+                    Some(w0) if (w - w0).abs() > 1e-12 * f64::max(w0.abs(), 1.0) => {
+                        return Err(self.err(
+                            field.line,
+                            &field.key,
+                            format!(
+                                "the weight differs between j = 0 and j = {j} at {at}; the first neighbour is \
+                                 arbitrary, so weights may not depend on j{}",
+                                j_pointer(self.host.spec())
+                            ),
+                        ))
+                    }
+                    _ => {}
+                }
+            }
+            if per_j {
+                continue;
+            }
+            match field.arity {
+                Arity::PerQuad(k) => quad_sum += first.unwrap_or(0.0) * k as f64,
+                Arity::Fixed(_) | Arity::PerJ(_) | Arity::FaceCorners(_) => {
+                    sum += first.unwrap_or(0.0) * field.arity.count(n as usize, m as usize) as f64
+                }
+            }
+        }
+        let section = rule.spec.name;
+        if self.affine && quad_sum.abs() > 1e-12 {
+            return Err(format!(
+                "{} line {}, field {section}: the per-quad weights of the {section} rule sum to {quad_sum} per quad \
+                 at {at}, not 0 (the fan may have any number of quads; set affine = false to allow this)",
+                self.file, rule.line
+            ));
+        }
+        if self.affine && (sum - 1.0).abs() > 1e-12 {
+            return Err(format!(
+                "{} line {}, field {section}: the weights of the {section} rule sum to {sum} at {at}, not 1 (set \
+                 affine = false to allow this)",
+                self.file, rule.line
+            ));
         }
         Ok(())
     }
@@ -439,22 +459,43 @@ impl Cx<'_> {
                 }
                 let expr = Expr::parse(&source).map_err(|e| self.err(line, &key, e))?;
                 let has_n = rule.valence == Valence::Any;
+                let corners = matches!(fs.arity, Arity::FaceCorners(_));
+                // in a face-corner field m is the face's corner count: a
+                // parameter of that name would be ambiguous there
+                if corners && params.iter().any(|p| p.name == "m") {
+                    return Err(self.err(
+                        line,
+                        &key,
+                        "the parameter 'm' hides the corner count m of face-corner fields; rename it",
+                    ));
+                }
                 for var in expr.variables() {
                     let allowed = (var == "n" && has_n)
-                        || (var == "j" && matches!(fs.arity, Arity::PerJ(_) | Arity::PerQuad(_)))
+                        || (var == "j"
+                            && matches!(fs.arity, Arity::PerJ(_) | Arity::PerQuad(_) | Arity::FaceCorners(_)))
+                        || (var == "m" && corners)
                         || params.iter().any(|p| p.name == var);
                     if !allowed {
                         let hint = match var.as_str() {
                             "j" if rule.canonical_j => " (j indexes neighbours only in per-neighbour fields)".into(),
                             "j" => format!(" (j indexes neighbours only in per-neighbour fields{})", j_pointer(spec)),
                             "n" => format!(" ({section} rules have no valence n)"),
+                            "m" => " (m, a face's corner count, is a variable of face-corner fields only)".into(),
                             _ => String::new(),
                         };
                         return Err(self.err(line, &key, format!("unknown variable '{var}'{hint}")));
                     }
                 }
                 let uses_j = expr.variables().iter().any(|v| v == "j");
-                fields.push(Field { key, family: fs.name, line, expr, arity: fs.arity, uses_j });
+                fields.push(Field {
+                    key,
+                    family: fs.name,
+                    line,
+                    expr,
+                    arity: fs.arity,
+                    quad_only: fs.quad_only,
+                    uses_j,
+                });
             }
             rules.push(RuleDef { spec: rule, line: section_line, fields });
         }

@@ -1,7 +1,8 @@
 //! User-defined schemes: a TOML file names one of the refinement hosts
 //! (`sdc::slots::Host`) and gives, per rule of the host, a weight for every
 //! slot family as an expression (`numeric::expr`) in the valence or face
-//! size `n`, the neighbour index `j` and named parameters. The result
+//! size `n`, the neighbour index `j`, the corner count `m` of the face a
+//! `face-corner` slot lies in, and named parameters. The result
 //! implements `Scheme`, so every analysis runs on it unchanged.
 //!
 //! ```toml

@@ -11,7 +11,7 @@ use crate::mesh::PolyMesh;
 use crate::numeric::{Inexact, Weight};
 use crate::schemes::files::intern;
 use crate::schemes::{Caps, Params, Rules, Scheme, SchemeInfo};
-use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
+use crate::sdc::slots::{weigh, Arity, Host, Mask, Slot, Wants};
 use crate::sdc::VertexParam;
 use crate::sdc::{Origin, RuleResult, Stencil};
 
@@ -36,6 +36,17 @@ pub struct UserScheme {
 }
 
 impl UserSchemeDef {
+    /// Whether the file's vertex and edge rules both weigh face corners (then
+    /// the primal quad host's gatherer takes any polygons for both).
+    fn polygons(&self) -> bool {
+        let weighs = |rule: &str| {
+            self.rules
+                .iter()
+                .any(|r| r.spec.name == rule && r.fields.iter().any(|f| matches!(f.arity, Arity::FaceCorners(_))))
+        };
+        weighs("vertex") && weighs("edge")
+    }
+
     /// The per-vertex parameter with the range its `[params]` entry gives.
     fn vertex_param_spec(&self) -> Option<VertexParam> {
         let name = self.vertex_param.as_deref()?;
@@ -49,19 +60,26 @@ impl UserSchemeDef {
         self.check(&env)?;
         let values = self.params.iter().map(|p| (p.name.clone(), env[&p.name].clone())).collect();
         let mut fields = HashMap::new();
-        let mut exprs = Vec::new();
+        let (mut exprs, mut face_corner) = (Vec::new(), Vec::new());
         for rule in &self.rules {
             for f in &rule.fields {
                 fields.insert((rule.spec.name, f.family), exprs.len());
                 exprs.push(f.expr.clone());
+                face_corner.push(matches!(f.arity, Arity::FaceCorners(_)));
             }
         }
         Ok(UserScheme {
             shared: Arc::new(Shared {
-                info: info_of(intern(&self.name), intern(&self.description), self.host, self.vertex_param_spec()),
+                info: info_of(
+                    intern(&self.name),
+                    intern(&self.description),
+                    self.host,
+                    self.vertex_param_spec(),
+                    self.polygons(),
+                ),
                 host: self.host,
                 params: Params { values },
-                weights: WeightTable::new(env, exprs),
+                weights: WeightTable::new(env, exprs, face_corner),
                 fields,
                 blend_levels: self.blend_levels,
             }),
@@ -88,7 +106,7 @@ impl<W: Weight> Mask<W> for Shared {
             (Some(p), Some(values), Some(at)) => Some((p.name, *values.get(at).ok_or(Inexact)?)),
             _ => None,
         };
-        self.weights.get_at::<W>(k, slot.n as i64, slot.j as i64, vertex)
+        self.weights.get_at::<W>(k, slot.n as i64, slot.j as i64, slot.m.map(|m| m as i64), vertex)
     }
 }
 
@@ -137,11 +155,21 @@ impl Scheme for UserScheme {
 }
 
 /// A scheme file's description as data: the host's topology, centre and
-/// sector, and the capabilities the host implies.
-fn info_of(name: &'static str, description: &'static str, host: Host, vertex_param: Option<VertexParam>) -> SchemeInfo {
+/// sector, and the capabilities the host implies. `polygons`: the file's
+/// vertex and edge rules weigh face corners, so they take any polygons.
+fn info_of(
+    name: &'static str,
+    description: &'static str,
+    host: Host,
+    vertex_param: Option<VertexParam>,
+    polygons: bool,
+) -> SchemeInfo {
     let spec = host.spec();
     let mesh_requirement = match host {
-        // the vertex and edge rules of a primal-quad file are written for quads only
+        // any closed mesh (the host's own requirement)
+        Host::PrimalQuad if polygons => None,
+        // the vertex and edge rules of a primal-quad file without face-corner
+        // fields are written for quads only
         Host::PrimalQuad => Some("a closed quad mesh (primal-quad scheme files have quad rules only)"),
         Host::MixedQuadTriangle => Some("a closed mesh of triangles and quads"),
         Host::Sqrt3 => Some("a closed triangle mesh"),

@@ -14,16 +14,21 @@ use crate::numeric::{Inexact, ParamValue, Weight};
 /// valences must not grow it without bound).
 const CACHE_ENTRIES: usize = 100_000;
 
-fn with_nj(params: &Env, n: i64, j: i64) -> Env {
+/// The parameters with n, j and, for face-corner fields, the face's corner
+/// count m (only there: elsewhere `m` may be a sum's index or a parameter).
+fn with_nj(params: &Env, n: i64, j: i64, m: Option<i64>) -> Env {
     let mut env = params.clone();
     env.insert("n".into(), ParamValue::from_ratio(n, 1));
     env.insert("j".into(), ParamValue::from_ratio(j, 1));
+    if let Some(m) = m {
+        env.insert("m".into(), ParamValue::from_ratio(m, 1));
+    }
     env
 }
 
 /// A weight in floating point, with a reason when it is not a finite real.
-pub(super) fn eval_f64(expr: &Expr, params: &Env, n: i64, j: i64) -> Result<f64, String> {
-    let z = expr.eval(&with_nj(params, n, j))?;
+pub(super) fn eval_f64(expr: &Expr, params: &Env, n: i64, j: i64, m: Option<i64>) -> Result<f64, String> {
+    let z = expr.eval(&with_nj(params, n, j, m))?;
     if !z.re.is_finite() || !z.im.is_finite() {
         return Err("the weight is not a finite number".into());
     }
@@ -33,8 +38,8 @@ pub(super) fn eval_f64(expr: &Expr, params: &Env, n: i64, j: i64) -> Result<f64,
     Ok(z.re)
 }
 
-/// (field, n, j, float, per-vertex parameter value's bits) -> the weight.
-type Cache = HashMap<(usize, i64, i64, bool, Option<u64>), Result<ParamValue, Inexact>>;
+/// (field, n, j, m, float, per-vertex parameter value's bits) -> the weight.
+type Cache = HashMap<(usize, i64, i64, Option<i64>, bool, Option<u64>), Result<ParamValue, Inexact>>;
 
 /// The weight fields of a built scheme with their parameter values.
 pub(super) struct WeightTable {
@@ -42,20 +47,31 @@ pub(super) struct WeightTable {
     exprs: Vec<Expr>,
     /// whether field k's expression uses j (else every j shares one entry)
     uses_j: Vec<bool>,
+    /// whether field k is a face-corner field (its expression may use m)
+    face_corner: Vec<bool>,
     cache: Mutex<Cache>,
 }
 
 impl WeightTable {
-    pub fn new(env: Env, exprs: Vec<Expr>) -> Self {
+    /// `face_corner[k]`: field k is a face-corner field.
+    pub fn new(env: Env, exprs: Vec<Expr>, face_corner: Vec<bool>) -> Self {
         let uses_j = exprs.iter().map(|e| e.variables().iter().any(|v| v == "j")).collect();
-        WeightTable { env, exprs, uses_j, cache: Mutex::new(HashMap::new()) }
+        WeightTable { env, exprs, uses_j, face_corner, cache: Mutex::new(HashMap::new()) }
     }
 
-    /// The weight of field `k` at valence (or face size) n, index j; with
+    /// The weight of field `k` at valence (or face size) n, index j, and for
+    /// a face-corner field at corner count m; with
     /// `vertex`, parameter `vertex.0` set to the per-vertex value
     /// `vertex.1` (Lin–Luo's α at the vertex concerned). Per-vertex values are
     /// floats read from a file: the exact path cannot take them.
-    pub fn get_at<W: Weight>(&self, k: usize, n: i64, j: i64, vertex: Option<(&str, f64)>) -> Result<W, Inexact> {
+    pub fn get_at<W: Weight>(
+        &self,
+        k: usize,
+        n: i64,
+        j: i64,
+        m: Option<i64>,
+        vertex: Option<(&str, f64)>,
+    ) -> Result<W, Inexact> {
         // evaluate only in the arithmetic asked for: exact evaluation of an
         // irrational weight fails, and float stencils must not pay for it
         let float = TypeId::of::<W>() == TypeId::of::<f64>();
@@ -63,12 +79,14 @@ impl WeightTable {
             return Err(Inexact);
         }
         let j = if self.uses_j[k] { j } else { 0 };
-        let id = (k, n, j, float, vertex.map(|v| v.1.to_bits()));
+        // m is a variable of face-corner fields only (a face-corner slot always has one)
+        let m = if self.face_corner[k] { Some(m.ok_or(Inexact)?) } else { None };
+        let id = (k, n, j, m, float, vertex.map(|v| v.1.to_bits()));
         let cached = self.cache.lock().unwrap_or_else(|e| e.into_inner()).get(&id).cloned();
         let value = match cached {
             Some(v) => v,
             None => {
-                let v = self.evaluate(k, n, j, float, vertex);
+                let v = self.evaluate(k, n, j, m, float, vertex);
                 let mut cache = self.cache.lock().unwrap_or_else(|e| e.into_inner());
                 if cache.len() >= CACHE_ENTRIES {
                     cache.clear();
@@ -85,10 +103,11 @@ impl WeightTable {
         k: usize,
         n: i64,
         j: i64,
+        m: Option<i64>,
         float: bool,
         vertex: Option<(&str, f64)>,
     ) -> Result<ParamValue, Inexact> {
-        let mut env = with_nj(&self.env, n, j);
+        let mut env = with_nj(&self.env, n, j, m);
         if let Some((name, value)) = vertex {
             env.insert(name.to_string(), ParamValue::from_f64(value));
         }
