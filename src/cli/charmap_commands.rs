@@ -34,7 +34,7 @@ pub struct CharmapArgs {
     /// scheme parameter NAME=VALUE; repeatable
     #[arg(long = "param", short = 'p')]
     pub params: Vec<String>,
-    /// write a figure (.svg or .png) of the nested rings and the control net
+    /// write a figure (.svg, .pdf or .png) of the nested rings and the control net
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// draw the normalised wedge of one sector (angle 2π/n stretched to π/2) instead of the rings
@@ -63,7 +63,7 @@ pub enum PlotWhat {
         /// how many distinct moduli after λ0 = 1 to draw (1 to 6)
         #[arg(long, default_value_t = 3)]
         count: usize,
-        /// output figure (.svg or .png)
+        /// output figure (.svg, .pdf or .png)
         #[arg(long)]
         out: PathBuf,
     },
@@ -93,7 +93,7 @@ pub fn charmap(a: &CharmapArgs) -> Result<(), String> {
     if let Some(out) = &a.out {
         check_out(out)?;
     } else if a.wedge {
-        return Err("--wedge selects the figure; give the figure file with --out FILE.svg|png".into());
+        return Err("--wedge selects the figure; give the figure file with --out FILE.svg|pdf|png".into());
     }
     let scheme = build_scheme(&a.scheme, &a.params)?;
     let config = Configuration::regular(scheme.as_ref(), a.valence)?;

@@ -185,7 +185,7 @@ pub struct SweepArgs {
     pub json: bool,
     #[arg(long)]
     pub csv: bool,
-    /// draw the admissible intervals (valence x swept value) into FILE.svg or FILE.png
+    /// draw the admissible intervals (valence x swept value) into FILE.svg, FILE.pdf or FILE.png
     #[arg(long)]
     pub plot: Option<std::path::PathBuf>,
     /// a reference bound to draw on the plot, an expression in n (e.g. a paper's

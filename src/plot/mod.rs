@@ -1,10 +1,13 @@
-//! Figures: SVG for papers, PNG for quick looks.
+//! Figures: SVG and PDF for papers (vector, text as the embedded font's
+//! glyphs), PNG for quick looks.
 //!
 //! Text is laid out with an embedded font (DejaVu Sans, `assets/fonts/`,
 //! licence next to it) registered with plotters' ab_glyph backend, so no
 //! system font is needed: without a registered font the PNG backend panics at
-//! the first label. Files are written atomically (temporary file in the
-//! target's directory, then rename).
+//! the first label. PDF is the SVG converted in-process (usvg + svg2pdf) with
+//! the same font, which the PDF embeds (subset), so neither a system font nor
+//! an external converter is needed; one SVG pixel is one PDF point. Files are
+//! written atomically (temporary file in the target's directory, then rename).
 
 pub mod charmap;
 pub mod spectrum;
@@ -34,16 +37,20 @@ fn register_font() -> Result<(), String> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Format {
     Svg,
+    Pdf,
     Png,
 }
 
-/// The figure format from the file extension (`.svg` or `.png`, any case).
+/// The figure format from the file extension (`.svg`, `.pdf` or `.png`, any case).
 pub fn format_of(path: &Path) -> Result<Format, String> {
     match path.extension().and_then(|e| e.to_str()).map(|e| e.to_ascii_lowercase()).as_deref() {
         Some("svg") => Ok(Format::Svg),
+        Some("pdf") => Ok(Format::Pdf),
         Some("png") => Ok(Format::Png),
-        Some(other) => Err(format!("unknown figure extension '.{other}' in {}; use .svg or .png", path.display())),
-        None => Err(format!("{} has no extension; use .svg or .png", path.display())),
+        Some(other) => {
+            Err(format!("unknown figure extension '.{other}' in {}; use .svg, .pdf or .png", path.display()))
+        }
+        None => Err(format!("{} has no extension; use .svg, .pdf or .png", path.display())),
     }
 }
 
@@ -67,6 +74,31 @@ pub fn render_svg<F: Figure>(fig: &F) -> Result<String, String> {
     Ok(svg)
 }
 
+/// The family name of the embedded font, as its name table gives it.
+const FONT_FAMILY: &str = "DejaVu Sans";
+
+/// The PDF of a figure: its SVG, parsed with the embedded font as the only
+/// font (every family the SVG names resolves to it), converted to PDF.
+pub fn render_pdf<F: Figure>(fig: &F) -> Result<Vec<u8>, String> {
+    svg_to_pdf(&render_svg(fig)?)
+}
+
+/// An SVG text (as figures render it) to a PDF document of one page.
+pub fn svg_to_pdf(svg: &str) -> Result<Vec<u8>, String> {
+    use svg2pdf::usvg;
+    let mut options = usvg::Options { font_family: FONT_FAMILY.to_string(), ..usvg::Options::default() };
+    {
+        let fonts = options.fontdb_mut();
+        fonts.load_font_data(FONT_BYTES.to_vec());
+        fonts.set_sans_serif_family(FONT_FAMILY);
+        fonts.set_serif_family(FONT_FAMILY);
+        fonts.set_monospace_family(FONT_FAMILY);
+    }
+    let tree = usvg::Tree::from_str(svg, &options).map_err(|e| format!("cannot read the figure's SVG: {e}"))?;
+    svg2pdf::to_pdf(&tree, svg2pdf::ConversionOptions::default(), svg2pdf::PageOptions::default())
+        .map_err(|e| format!("cannot convert the figure to PDF: {e}"))
+}
+
 /// Draw `fig` into `path` (format from the extension), atomically.
 pub fn save<F: Figure>(fig: &F, path: &Path) -> Result<(), String> {
     let format = format_of(path)?;
@@ -74,6 +106,7 @@ pub fn save<F: Figure>(fig: &F, path: &Path) -> Result<(), String> {
     let size = fig.size();
     match format {
         Format::Svg => crate::io::write_atomic(path, render_svg(fig)?.as_bytes()),
+        Format::Pdf => crate::io::write_atomic(path, &render_pdf(fig)?),
         Format::Png => {
             let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
             let tmp = tempfile::Builder::new()

@@ -1,0 +1,90 @@
+//! Figure formats chosen by extension: the same figure as SVG, PDF and PNG,
+//! each parsed back (SVG size and text, PDF header, page count, page size and
+//! embedded font, PNG signature and size), and an unknown extension refused.
+
+mod common;
+use common::{fails, subdlab};
+
+/// (width, height) from the `<svg width=".." height="..">` header.
+fn svg_size(svg: &str) -> (u32, u32) {
+    let head = &svg[..svg.find('>').expect("an svg element")];
+    let attr = |name: &str| -> u32 {
+        let at = head.find(&format!(" {name}=\"")).unwrap_or_else(|| panic!("no {name} in {head}")) + name.len() + 3;
+        head[at..].split('"').next().unwrap().parse().unwrap()
+    };
+    (attr("width"), attr("height"))
+}
+
+/// The number of page objects, the MediaBox of the (only) page and the base
+/// font names of a PDF, read from its uncompressed object dictionaries.
+fn pdf_outline(pdf: &[u8]) -> (usize, Vec<f64>, Vec<String>) {
+    let text = String::from_utf8_lossy(pdf);
+    let pages = text.match_indices("/Type /Page").filter(|(i, _)| !text[i + 11..].starts_with('s')).count();
+    let media = text.find("/MediaBox [").map(|i| {
+        let rest = &text[i + 11..];
+        rest[..rest.find(']').unwrap()].split_whitespace().map(|x| x.parse::<f64>().unwrap()).collect()
+    });
+    let fonts = text
+        .match_indices("/BaseFont /")
+        .map(|(i, _)| {
+            text[i + 11..].split(|c: char| c.is_whitespace() || c == '/' || c == '>').next().unwrap().to_string()
+        })
+        .collect();
+    (pages, media.unwrap_or_default(), fonts)
+}
+
+#[test]
+fn one_figure_in_svg_pdf_and_png() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = |ext: &str| dir.path().join(format!("ring.{ext}"));
+    for ext in ["svg", "pdf", "png"] {
+        let file = path(ext);
+        let out = subdlab(&["charmap", "catmull-clark", "--valence", "5", "--out", file.to_str().unwrap()]);
+        assert!(out.status.success(), "{ext}: {}", String::from_utf8_lossy(&out.stderr));
+    }
+    let svg = std::fs::read_to_string(path("svg")).unwrap();
+    let (w, h) = svg_size(&svg);
+    assert!(w >= 300 && h >= 300, "a legible size: {w}x{h}");
+    assert!(svg.contains("Catmull") || svg.contains("catmull"), "the figure names its scheme");
+
+    // the PDF is the same page: one page of w x h points, text in the
+    // embedded font, nothing left to a system font
+    let pdf = std::fs::read(path("pdf")).unwrap();
+    assert!(pdf.starts_with(b"%PDF-1."), "PDF header");
+    assert!(String::from_utf8_lossy(&pdf[pdf.len().saturating_sub(32)..]).contains("%%EOF"), "PDF trailer");
+    let (pages, media, fonts) = pdf_outline(&pdf);
+    assert_eq!(pages, 1);
+    assert_eq!(media, vec![0.0, 0.0, w as f64, h as f64], "page size in points = SVG size in pixels");
+    assert!(!fonts.is_empty(), "the labels are text in an embedded font");
+    assert!(fonts.iter().all(|f| f.ends_with("+DejaVuSans")), "only the embedded font (a subset): {fonts:?}");
+    assert!(String::from_utf8_lossy(&pdf).contains("/FontFile"), "the font program is in the file");
+
+    // the PNG has the same pixel size
+    let png = std::fs::read(path("png")).unwrap();
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+    let be = |k: usize| u32::from_be_bytes(png[k..k + 4].try_into().unwrap());
+    assert_eq!((be(16), be(20)), (w, h), "PNG IHDR size");
+}
+
+#[test]
+fn pdf_of_the_spectrum_plot() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("moduli.pdf");
+    let out = subdlab(&["plot", "spectrum", "loop", "--valences", "3..8", "--out", file.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let pdf = std::fs::read(&file).unwrap();
+    let (pages, media, fonts) = pdf_outline(&pdf);
+    assert_eq!(pages, 1);
+    assert_eq!(media.len(), 4);
+    assert!(media[2] > 0.0 && media[3] > 0.0);
+    assert!(!fonts.is_empty());
+}
+
+#[test]
+fn an_unknown_figure_extension_is_a_one_line_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("ring.eps");
+    let err = fails(&["charmap", "catmull-clark", "--valence", "5", "--out", file.to_str().unwrap()]);
+    assert!(err.contains(".eps") && err.contains(".pdf"), "{err}");
+    assert!(!file.exists(), "nothing written");
+}
