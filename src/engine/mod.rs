@@ -1,8 +1,9 @@
-//! The engine core shared by the scheme families that live on a fixed grid
-//! with binary dilation: the regular lattice Z² (`crate::lattice`) and the
-//! line Z (`crate::curves`). What they have in common is written once here,
-//! generic over the point type:
+//! The engine core shared by the scheme families, written once here, generic
+//! over the point type:
 //!
+//! - `local`: the one local-matrix type (sparse rows over labelled points) of
+//!   every family: mesh neighbourhoods (`crate::matrix`), the regular lattice
+//!   Z² (`crate::lattice`), the line Z (`crate::curves`) and strip windows;
 //! - `closure`: the smallest invariant window around a seed, the invariance
 //!   test, the set of control points that influence the limit over a region,
 //!   and the assembly of the local matrix's rows on an invariant window;
@@ -15,3 +16,6 @@
 
 pub mod closure;
 pub mod exact;
+pub mod local;
+
+pub use local::LocalMatrix;
