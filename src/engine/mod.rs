@@ -4,9 +4,10 @@
 //! - `local`: the one local-matrix type (sparse rows over labelled points) of
 //!   every family: mesh neighbourhoods (`crate::matrix`), the regular lattice
 //!   Z² (`crate::lattice`), the line Z (`crate::curves`) and strip windows;
-//! - `closure`: the smallest invariant window around a seed, the invariance
-//!   test, the set of control points that influence the limit over a region,
-//!   and the assembly of the local matrix's rows on an invariant window;
+//! - `closure`: for grids with binary dilation (Z², Z, strip windows), the
+//!   smallest invariant window around a seed, the invariance test, the set of
+//!   control points that influence the limit over a region, and the assembly
+//!   of the local matrix on an invariant window;
 //! - `exact`: the exact confirmation of floating-point eigenvalues against the
 //!   exact rational matrix (characteristic polynomial, rational roots,
 //!   algebraic and geometric multiplicities).

@@ -89,7 +89,8 @@ pub fn dependencies(scheme: &dyn LatticeScheme, q: Point) -> Vec<Point> {
     stencil::<Rational>(scheme, q).into_iter().map(|(p, _)| p).collect()
 }
 
-/// An ordered set of lattice points: the rows and columns of a local matrix.
+/// An ordered set of lattice points: the labels of a local matrix
+/// (`window_matrix`), built as a rectangle or from a closure.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Window {
     pub points: Vec<Point>,
@@ -124,9 +125,6 @@ impl Window {
             Some((i0, i1, j0, j1)) => ((i1 - i0 + 1) * (j1 - j0 + 1)) as usize == self.len(),
             None => true,
         }
-    }
-    pub fn position(&self, p: Point) -> Option<usize> {
-        self.points.iter().position(|&x| x == p)
     }
 }
 

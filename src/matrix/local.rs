@@ -61,7 +61,7 @@ pub fn assemble_rows<W: SchemeWeight>(
     let targets: Vec<usize> =
         which.iter().map(|&k| d.successor(set[k]).ok_or(AssembleError::Missing)).collect::<Result<_, _>>()?;
     let raw = step_rows::<W>(d, &targets, |k, v| {
-        W::stencil(scheme, d.mesh_before(k), d.refinements[k].vertex_origins[v])
+        crate::refine::new_stencil::<W>(scheme, d.mesh_before(k), &d.refinements[k], v)
             .map_err(|Inexact| AssembleError::Inexact)?
             .ok_or(AssembleError::Missing)
     })?;

@@ -16,7 +16,7 @@ pub use combine::{Combine, SparseRow};
 pub use crate::sdc::{Origin, RuleResult, Stencil};
 
 use crate::mesh::PolyMesh;
-use crate::numeric::Weight;
+use crate::numeric::{Inexact, Weight};
 use crate::sdc::{Scheme, SchemeWeight};
 use crate::topology::Refined;
 
@@ -72,8 +72,16 @@ pub fn step_selected<W: SchemeWeight>(
         if std::mem::replace(&mut done[v], true) {
             continue;
         }
-        stencils[v] = W::stencil(rules, mesh, refined.vertex_origins[v])
-            .map_err(|_| format!("{}: a weight is not representable exactly", rules.name()))?;
+        stencils[v] = new_stencil(rules, mesh, &refined, v)
+            .map_err(|Inexact| format!("{}: a weight is not representable exactly", rules.name()))?;
     }
     Ok(Step { refined, stencils })
+}
+
+/// The stencil of new vertex `v` of `refined`, a refinement of `mesh` by
+/// `rules`'s host: what a step evaluates per new vertex, for callers that keep
+/// the refined connectivity of earlier steps (the assembly of S in another
+/// weight type than discovery's) and need a few stencils again.
+pub fn new_stencil<W: SchemeWeight>(rules: &dyn Scheme, mesh: &PolyMesh, refined: &Refined, v: usize) -> RuleResult<W> {
+    W::stencil(rules, mesh, refined.vertex_origins[v])
 }
