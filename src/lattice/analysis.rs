@@ -1,7 +1,7 @@
 //! Spectra of lattice schemes, reported with the same types (and so the same
-//! stable JSON fields) as the mesh-based schemes: the window's matrix (the one
-//! local-matrix type, on lattice points) is relabelled with vertex labels, the float spectrum comes from the
-//! shared dense eigen-stage (`spectrum::decompose`, full method: asymmetric
+//! stable JSON fields) as the mesh-based schemes: the window's matrix (the
+//! one local-matrix type, on lattice points) is relabelled with vertex
+//! labels, the float spectrum comes from the shared dense eigen-stage (`spectrum::decompose`, full method: asymmetric
 //! masks have no rotation symmetry), the exact confirmation from
 //! `spectrum::exact::confirm`, the verdict from `verdict::reif`.
 
