@@ -7,7 +7,8 @@ use crate::neighbourhood::{build_patch, Configuration};
 use crate::numeric::exact::{q, QMatrix};
 use crate::numeric::Rational;
 use crate::refine::mesh::CompositeRows;
-use crate::schemes::{self, SchemeWeight};
+use crate::refine::step_selected;
+use crate::schemes;
 use crate::spectrum::{analyse, fmt_f, Options};
 use num_traits::Zero;
 
@@ -71,23 +72,28 @@ fn nonbox_vector_mask(data: &toml::Value) -> Result4 {
     let scheme = schemes::build("non-box", &[])?;
     let config = Configuration::regular(scheme.as_ref(), 4)?;
     let (patch, _) = build_patch(&config, 4);
-    let refined = scheme.topology().refine(&patch)?;
-    let chart = refined.mesh.chart.as_ref().ok_or("no chart")?;
+    // one step of the patch, with the stencils of the fine points over the
+    // coarse cells [2, 4)² of sector 0 (fine chart coordinates [4, 8)²)
+    let mut cells = Vec::new();
+    let step = step_selected::<Rational>(scheme.as_ref(), &patch, |refined| {
+        let chart = refined.mesh.chart.as_ref().ok_or("no chart")?;
+        cells = (0..refined.vertex_origins.len())
+            .filter(|&v| {
+                let (x, y) = chart.in_chart(chart.vertex_coords[v], 0);
+                (4..8).contains(&x) && (4..8).contains(&y)
+            })
+            .collect();
+        Ok(cells.clone())
+    })?;
     let fcv0: std::collections::HashSet<usize> = patch.face_points.iter().flatten().copied().collect();
-    let fcv1: std::collections::HashSet<usize> = refined.mesh.face_points.iter().flatten().copied().collect();
+    let fcv1: std::collections::HashSet<usize> = step.refined.mesh.face_points.iter().flatten().copied().collect();
     let mut t = [[q(0, 1), q(0, 1)], [q(0, 1), q(0, 1)]];
-    for (v, &o) in refined.vertex_origins.iter().enumerate() {
-        let (x, y) = chart.in_chart(chart.vertex_coords[v], 0);
-        if !(4..8).contains(&x) || !(4..8).contains(&y) {
-            continue;
-        }
+    for v in cells {
         let i = usize::from(!fcv1.contains(&v));
-        let st = <Rational as SchemeWeight>::stencil(scheme.as_ref(), &patch, o)
-            .map_err(|_| "an irrational weight")?
-            .ok_or("rule not evaluable")?;
-        for (u, w) in st.terms {
-            let j = usize::from(!fcv0.contains(&u));
-            t[i][j] = &t[i][j] + &w;
+        let st = step.stencils[v].as_ref().ok_or("rule not evaluable")?;
+        for (u, w) in &st.terms {
+            let j = usize::from(!fcv0.contains(u));
+            t[i][j] = &t[i][j] + w;
         }
     }
     let four = q(4, 1);

@@ -23,6 +23,7 @@ use serde::Serialize;
 use super::{CurveMask, CurveScheme, CurveWeight};
 use crate::engine::closure::{self, assemble, invariant_closure, ClosureError, Levels, Refinement};
 use crate::engine::exact;
+use crate::engine::LocalMatrix;
 use crate::neighbourhood::NeighbourhoodKind;
 use crate::numeric::recognise::recognise;
 use crate::numeric::{Rational, Weight};
@@ -67,37 +68,15 @@ pub fn analysis_window<W: Weight>(mask: &CurveMask<W>) -> Result<Vec<i64>, Strin
     Ok(close(mask, seed)?.into_iter().collect())
 }
 
-/// Local subdivision matrix on an invariant window: sparse rows (column, weight).
-#[derive(Clone, Debug)]
-pub struct CurveMatrix<W> {
-    pub window: Vec<i64>,
-    pub rows: Vec<Vec<(usize, W)>>,
-}
-
-impl<W: Weight> CurveMatrix<W> {
-    pub fn size(&self) -> usize {
-        self.window.len()
-    }
-    pub fn dense(&self) -> Vec<Vec<W>> {
-        let n = self.size();
-        let mut d = vec![vec![W::zero(); n]; n];
-        for (i, row) in self.rows.iter().enumerate() {
-            for (j, w) in row {
-                d[i][*j] = w.clone();
-            }
-        }
-        d
-    }
-}
-
-pub fn local_matrix<W: Weight>(mask: &CurveMask<W>, window: &[i64]) -> Result<CurveMatrix<W>, String> {
-    let rows = assemble(&Deps(mask), window, |&k| mask.stencil(k)).map_err(|e| match e {
+/// The local subdivision matrix on an invariant window of old point indices
+/// (the window is the matrix's labels).
+pub fn local_matrix<W: Weight>(mask: &CurveMask<W>, window: &[i64]) -> Result<LocalMatrix<i64, W>, String> {
+    assemble(&Deps(mask), window, |&k| Ok(mask.stencil(k))).map_err(|e| match e {
         ClosureError::NotInvariant { fine, needs } => {
             format!("window is not invariant: point {fine} depends on {needs}")
         }
         e => e.to_string(),
-    })?;
-    Ok(CurveMatrix { window: window.to_vec(), rows })
+    })
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -174,7 +153,7 @@ pub fn curve_spectrum(scheme: &dyn CurveScheme, kind: NeighbourhoodKind) -> Resu
     let mut exact = false;
     if let Some(em) = &exact_mask {
         let qm = local_matrix(em, &window)?;
-        let q = exact::to_qmatrix(&qm.rows);
+        let q = qm.to_qmatrix();
         let proof = exact::confirm(&q, &exact::candidates(eigenvalues.iter().filter(|e| e.im == 0.0).map(|e| e.re)));
         charpoly = Some(proof.charpoly.pretty());
         exact_matrix = Some(qm.dense().iter().map(|r| r.iter().map(|x| x.to_string()).collect()).collect());

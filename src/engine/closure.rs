@@ -16,7 +16,8 @@
 //! - `influence_set`: the coarse points that influence the limit over a region
 //!   (fine points of level L over the region, pulled back L levels), collected
 //!   over L until the union stops growing.
-//! - `assemble`: the sparse rows of the local matrix on an invariant window.
+//! - `assemble`: the local matrix (`engine::local::LocalMatrix`) on an
+//!   invariant window.
 //!
 //! On Z² (`crate::lattice`, point (i, j)) and Z (`crate::curves`, point i) the
 //! centre is the origin and the successor is the identity: the fine point with
@@ -33,6 +34,9 @@
 
 use std::collections::BTreeSet;
 use std::fmt;
+
+use super::local::LocalMatrix;
+use crate::numeric::Weight;
 
 /// What the closure routines need of a stationary binary scheme.
 pub trait Refinement {
@@ -84,8 +88,6 @@ impl<P: fmt::Debug> fmt::Display for ClosureError<P> {
 
 /// Pairs (point of a window, coarse point outside it that its successor needs).
 pub type Defects<P> = Vec<(P, P)>;
-/// Sparse rows of a local matrix: (column, weight), columns ascending.
-pub type Rows<W> = Vec<Vec<(usize, W)>>;
 
 /// The smallest invariant window containing `seed`: add, for every point p of
 /// the set, the dependencies of its successor, until nothing new appears. At
@@ -184,25 +186,23 @@ pub fn influence_set<R: Refinement>(
     Err(ClosureError::Unsettled { levels: levels.max })
 }
 
-/// The rows of the local matrix on an invariant window, in the window's order:
-/// row k is the stencil of the successor of point k, as (column, weight) with
-/// repeated columns summed and columns ascending. `Err` names the first
-/// dependency outside the window (the restriction would not be a subdivision
-/// matrix).
-pub fn assemble<R: Refinement, W>(
+/// The local matrix on an invariant window, rows and columns in the window's
+/// order: row k is the stencil of the successor of point k, as (column,
+/// weight) with repeated columns summed, zero sums dropped and columns
+/// ascending. `Err` names the first dependency outside the window (the
+/// restriction would not be a subdivision matrix), or passes on a stencil
+/// that could not be evaluated.
+pub fn assemble<R: Refinement, W: Weight>(
     scheme: &R,
     window: &[R::Point],
-    mut stencil: impl FnMut(&R::Point) -> Vec<(R::Point, W)>,
-) -> Result<Rows<W>, ClosureError<R::Point>>
-where
-    W: Clone + std::ops::Add<Output = W>,
-{
+    mut stencil: impl FnMut(&R::Point) -> Result<Vec<(R::Point, W)>, String>,
+) -> Result<LocalMatrix<R::Point, W>, ClosureError<R::Point>> {
     let index: std::collections::BTreeMap<&R::Point, usize> = window.iter().enumerate().map(|(k, p)| (p, k)).collect();
     let mut rows = Vec::with_capacity(window.len());
     for p in window {
         let fine = scheme.successor(p).map_err(ClosureError::Dependency)?;
         let mut row: Vec<(usize, W)> = Vec::new();
-        for (d, w) in stencil(&fine) {
+        for (d, w) in stencil(&fine).map_err(ClosureError::Dependency)? {
             let Some(&col) = index.get(&d) else {
                 return Err(ClosureError::NotInvariant { fine, needs: d });
             };
@@ -211,10 +211,11 @@ where
                 None => row.push((col, w)),
             }
         }
+        row.retain(|e| !e.1.is_zero());
         row.sort_by_key(|e| e.0);
         rows.push(row);
     }
-    Ok(rows)
+    Ok(LocalMatrix::new(window.to_vec(), rows))
 }
 
 #[cfg(test)]
@@ -322,21 +323,32 @@ mod tests {
         assert_eq!(invariance_defects(&CubicBSpline, &[-1, 0]).unwrap(), vec![(0, 1)]);
         assert!(invariance_defects(&CubicBSpline, &[-1, 0, 1]).unwrap().is_empty());
         // the 3×3 matrix on the one-ring, weights ×8: rows [4 4 0], [1 6 1], [0 4 4]
-        let weights = |q: &i64| -> Vec<(i64, i64)> {
+        let weights = |q: &i64| -> Result<Vec<(i64, f64)>, String> {
             let i = q.div_euclid(2);
-            if q.rem_euclid(2) == 0 {
-                vec![(i - 1, 1), (i, 6), (i + 1, 1)]
+            Ok(if q.rem_euclid(2) == 0 {
+                vec![(i - 1, 1.0), (i, 6.0), (i + 1, 1.0)]
             } else {
                 // a repeated offset must be summed: 4 = 2 + 2
-                vec![(i, 2), (i + 1, 4), (i, 2)]
-            }
+                let mut v = vec![(i, 2.0), (i + 1, 4.0), (i, 2.0)];
+                if *q == 1 {
+                    // weights that cancel are no entry
+                    v.extend([(-1, 1.0), (-1, -1.0)]);
+                }
+                v
+            })
         };
-        let rows = assemble(&CubicBSpline, &[-1, 0, 1], weights).unwrap();
-        assert_eq!(rows, vec![vec![(0, 4), (1, 4)], vec![(0, 1), (1, 6), (2, 1)], vec![(1, 4), (2, 4)]]);
+        let m = assemble(&CubicBSpline, &[-1, 0, 1], weights).unwrap();
+        assert_eq!(m.labels, vec![-1, 0, 1]);
+        assert_eq!(
+            m.rows,
+            vec![vec![(0, 4.0), (1, 4.0)], vec![(0, 1.0), (1, 6.0), (2, 1.0)], vec![(1, 4.0), (2, 4.0)]]
+        );
         assert_eq!(
             assemble(&CubicBSpline, &[-1, 0], weights).unwrap_err(),
             ClosureError::NotInvariant { fine: 0, needs: 1 }
         );
+        let failing = |_: &i64| -> Result<Vec<(i64, f64)>, String> { Err("no rule".into()) };
+        assert_eq!(assemble(&CubicBSpline, &[0], failing).unwrap_err(), ClosureError::Dependency("no rule".into()));
     }
 
     #[test]

@@ -44,17 +44,6 @@ impl Confirmation {
     }
 }
 
-/// The dense exact matrix of sparse rows (column, weight).
-pub fn to_qmatrix(rows: &[Vec<(usize, Rational)>]) -> QMatrix {
-    let mut q = QMatrix::zeros(rows.len());
-    for (i, row) in rows.iter().enumerate() {
-        for (j, w) in row {
-            q.set(i, *j, w.clone());
-        }
-    }
-    q
-}
-
 /// Candidate rationals for real float eigenvalues: the continued-fraction
 /// convergents of each (a true rational eigenvalue p/q with moderate q is
 /// among them, since the float is within rounding of it).
@@ -83,7 +72,12 @@ pub fn confirm(q: &QMatrix, candidates: &[Rational]) -> Confirmation {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::engine::local::{LocalMatrix, Rows};
     use crate::numeric::exact::q;
+
+    fn to_qmatrix(rows: Rows<Rational>) -> QMatrix {
+        LocalMatrix::new((0..rows.len()).collect(), rows).to_qmatrix()
+    }
 
     #[test]
     fn a_jordan_block_and_a_repeated_diagonal_value() {
@@ -91,7 +85,7 @@ mod tests {
         // (x − 1/2)²(x − 1/4); 1/2 has one eigenvector (a Jordan block),
         // 1/4 one as well
         let rows = vec![vec![(0, q(1, 2)), (1, q(1, 1))], vec![(1, q(1, 2))], vec![(2, q(1, 4))]];
-        let c = confirm(&to_qmatrix(&rows), &candidates([0.5, 0.25]));
+        let c = confirm(&to_qmatrix(rows), &candidates([0.5, 0.25]));
         assert!(c.complete());
         let half = c.eigenvalues.iter().find(|e| e.value == q(1, 2)).unwrap();
         assert_eq!((half.algebraic, half.geometric), (2, 1));
@@ -103,7 +97,7 @@ mod tests {
     fn irrational_roots_stay_unproven() {
         // [[0, 2], [1, 0]] has eigenvalues ±√2: no candidate is a root
         let rows = vec![vec![(1, q(2, 1))], vec![(0, q(1, 1))]];
-        let c = confirm(&to_qmatrix(&rows), &candidates([std::f64::consts::SQRT_2, -std::f64::consts::SQRT_2]));
+        let c = confirm(&to_qmatrix(rows), &candidates([std::f64::consts::SQRT_2, -std::f64::consts::SQRT_2]));
         assert!(c.eigenvalues.is_empty());
         assert_eq!(c.remaining_degree, 2);
         assert!(!c.complete());

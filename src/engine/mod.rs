@@ -1,11 +1,13 @@
-//! The engine core shared by the scheme families that live on a fixed grid
-//! with binary dilation: the regular lattice Z² (`crate::lattice`) and the
-//! line Z (`crate::curves`). What they have in common is written once here,
-//! generic over the point type:
+//! The engine core shared by the scheme families, written once here, generic
+//! over the point type:
 //!
-//! - `closure`: the smallest invariant window around a seed, the invariance
-//!   test, the set of control points that influence the limit over a region,
-//!   and the assembly of the local matrix's rows on an invariant window;
+//! - `local`: the one local-matrix type (sparse rows over labelled points) of
+//!   every family: mesh neighbourhoods (`crate::matrix`), the regular lattice
+//!   Z² (`crate::lattice`), the line Z (`crate::curves`) and strip windows;
+//! - `closure`: for grids with binary dilation (Z², Z, strip windows), the
+//!   smallest invariant window around a seed, the invariance test, the set of
+//!   control points that influence the limit over a region, and the assembly
+//!   of the local matrix on an invariant window;
 //! - `exact`: the exact confirmation of floating-point eigenvalues against the
 //!   exact rational matrix (characteristic polynomial, rational roots,
 //!   algebraic and geometric multiplicities).
@@ -16,3 +18,6 @@
 
 pub mod closure;
 pub mod exact;
+pub mod local;
+
+pub use local::LocalMatrix;

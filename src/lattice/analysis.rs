@@ -1,11 +1,11 @@
 //! Spectra of lattice schemes, reported with the same types (and so the same
-//! stable JSON fields) as the mesh-based schemes: the window's matrix becomes a
-//! `LocalMatrix` with labelled vertices, the float spectrum comes from the
-//! shared dense eigen-stage (`spectrum::decompose`, full method: asymmetric
+//! stable JSON fields) as the mesh-based schemes: the window's matrix (the
+//! one local-matrix type, on lattice points) is relabelled with vertex
+//! labels, the float spectrum comes from the shared dense eigen-stage (`spectrum::decompose`, full method: asymmetric
 //! masks have no rotation symmetry), the exact confirmation from
 //! `spectrum::exact::confirm`, the verdict from `verdict::reif`.
 
-use super::{analysis_window, local_matrix, minimal_invariant_window, point_name, LatticeScheme, Window};
+use super::{analysis_window, minimal_invariant_window, point_name, window_matrix, LatticeScheme, Window};
 use crate::matrix::LocalMatrix;
 use crate::neighbourhood::{NeighbourhoodKind, VertexKind, VertexLabel};
 use crate::numeric::exact::{Poly, QMatrix};
@@ -38,23 +38,22 @@ fn label(k: usize, p: (i64, i64)) -> VertexLabel {
     }
 }
 
-/// The matrix on a window as a sparse `LocalMatrix` with lattice labels.
+/// The matrix on a window with the labels of the mesh tables and JSON (the
+/// paper's point names, lattice coordinates as i, j).
 pub fn to_local<W: super::LatticeWeight>(
     scheme: &dyn LatticeScheme,
     w: &Window,
     kind: NeighbourhoodKind,
 ) -> Result<LocalMatrix<W>, String> {
-    let dense = local_matrix::<W>(scheme, w)?;
-    let rows =
-        dense.into_iter().map(|row| row.into_iter().enumerate().filter(|(_, x)| !x.is_zero()).collect()).collect();
-    Ok(LocalMatrix { kind, labels: w.points.iter().enumerate().map(|(k, &p)| label(k, p)).collect(), rows })
+    Ok(window_matrix::<W>(scheme, w)?.relabel(|k, &p| label(k, p)).with_kind(kind))
 }
 
 /// Exact characteristic polynomial det(xI − S) of the matrix on a window.
 pub fn charpoly(scheme: &dyn LatticeScheme, w: &Window) -> Result<Poly, String> {
-    Ok(to_qmatrix(&local_matrix::<Rational>(scheme, w)?).charpoly())
+    Ok(window_matrix::<Rational>(scheme, w)?.to_qmatrix().charpoly())
 }
 
+/// The exact matrix of dense rows (as `local_matrix` gives them).
 pub fn to_qmatrix(dense: &[Vec<Rational>]) -> QMatrix {
     let mut q = QMatrix::zeros(dense.len());
     for (i, row) in dense.iter().enumerate() {

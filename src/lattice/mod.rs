@@ -21,6 +21,7 @@ pub mod fit;
 use std::collections::BTreeSet;
 
 use crate::engine::closure::{self, assemble, influence_set, invariant_closure, ClosureError, Levels, Refinement};
+use crate::engine::LocalMatrix;
 use crate::numeric::{Rational, Weight};
 use crate::sdc::Params;
 
@@ -88,7 +89,8 @@ pub fn dependencies(scheme: &dyn LatticeScheme, q: Point) -> Vec<Point> {
     stencil::<Rational>(scheme, q).into_iter().map(|(p, _)| p).collect()
 }
 
-/// An ordered set of lattice points: the rows and columns of a local matrix.
+/// An ordered set of lattice points: the labels of a local matrix
+/// (`window_matrix`), built as a rectangle or from a closure.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Window {
     pub points: Vec<Point>,
@@ -123,9 +125,6 @@ impl Window {
             Some((i0, i1, j0, j1)) => ((i1 - i0 + 1) * (j1 - j0 + 1)) as usize == self.len(),
             None => true,
         }
-    }
-    pub fn position(&self, p: Point) -> Option<usize> {
-        self.points.iter().position(|&x| x == p)
     }
 }
 
@@ -185,27 +184,29 @@ pub fn invariance_defects(scheme: &dyn LatticeScheme, w: &Window) -> Vec<(Point,
     closure::invariance_defects(&Deps(scheme), &w.points).unwrap_or_default()
 }
 
-/// Dense local subdivision matrix on the window, rows and columns in the
-/// window's order. Error (naming the first escaping dependency) when the window
-/// is not invariant, because the restriction would not be a subdivision matrix.
-pub fn local_matrix<W: LatticeWeight>(scheme: &dyn LatticeScheme, w: &Window) -> Result<Vec<Vec<W>>, String> {
-    let n = w.len();
-    let rows = assemble(&Deps(scheme), &w.points, |&q| stencil::<W>(scheme, q)).map_err(|e| match e {
+/// The local subdivision matrix on the window, rows and columns in the
+/// window's order (its points are the matrix's labels). Error (naming the
+/// first escaping dependency) when the window is not invariant, because the
+/// restriction would not be a subdivision matrix.
+pub fn window_matrix<W: LatticeWeight>(
+    scheme: &dyn LatticeScheme,
+    w: &Window,
+) -> Result<LocalMatrix<Point, W>, String> {
+    assemble(&Deps(scheme), &w.points, |&q| Ok(stencil::<W>(scheme, q))).map_err(|e| match e {
         ClosureError::NotInvariant { fine, needs } => format!(
-            "{}: window of {n} points is not invariant: fine point {} needs {}",
+            "{}: window of {} points is not invariant: fine point {} needs {}",
             scheme.name(),
+            w.len(),
             point_name(fine),
             point_name(needs)
         ),
         e => named(scheme, e),
-    })?;
-    let mut m = vec![vec![W::zero(); n]; n];
-    for (row, entries) in rows.into_iter().enumerate() {
-        for (col, wt) in entries {
-            m[row][col] = wt;
-        }
-    }
-    Ok(m)
+    })
+}
+
+/// [`window_matrix`] as dense rows (the form the papers print).
+pub fn local_matrix<W: LatticeWeight>(scheme: &dyn LatticeScheme, w: &Window) -> Result<Vec<Vec<W>>, String> {
+    Ok(window_matrix(scheme, w)?.dense())
 }
 
 /// Largest |offset| of the four masks.

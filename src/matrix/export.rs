@@ -7,7 +7,7 @@ use crate::neighbourhood::VertexLabel;
 
 /// Matrix Market "coordinate real general", 1-based indices; labels as comments.
 pub fn to_matrix_market(m: &LocalMatrix<f64>, header: &str) -> String {
-    let nnz: usize = m.rows.iter().map(|r| r.len()).sum();
+    let nnz = m.entries().count();
     let mut s = String::from("%%MatrixMarket matrix coordinate real general\n");
     for line in header.lines() {
         s.push_str(&format!("% {line}\n"));
@@ -16,10 +16,8 @@ pub fn to_matrix_market(m: &LocalMatrix<f64>, header: &str) -> String {
         s.push_str(&format!("% row/col {}: {}\n", k + 1, l.name));
     }
     s.push_str(&format!("{} {} {}\n", m.size(), m.size(), nnz));
-    for (i, row) in m.rows.iter().enumerate() {
-        for (j, w) in row {
-            s.push_str(&format!("{} {} {:.17e}\n", i + 1, j + 1, w));
-        }
+    for (i, j, w) in m.entries() {
+        s.push_str(&format!("{} {} {:.17e}\n", i + 1, j + 1, w));
     }
     s
 }

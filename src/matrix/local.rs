@@ -6,31 +6,12 @@ use crate::numeric::{Inexact, Weight};
 use crate::refine::{Combine, SparseRow};
 use crate::sdc::{Scheme, SchemeWeight, Stencil};
 
-#[derive(Clone, Debug)]
-pub struct LocalMatrix<W> {
-    pub kind: NeighbourhoodKind,
-    pub labels: Vec<VertexLabel>,
-    /// sparse rows: (column, weight)
-    pub rows: Vec<Vec<(usize, W)>>,
-}
+/// S on a mesh neighbourhood: the one local-matrix type of every family
+/// (`engine::LocalMatrix`) on the neighbourhood's labelled vertices, marked
+/// with the neighbourhood (minimal or analysis) it is on.
+pub type LocalMatrix<W> = crate::engine::LocalMatrix<VertexLabel, W, NeighbourhoodKind>;
 
-impl<W: Weight> LocalMatrix<W> {
-    pub fn size(&self) -> usize {
-        self.rows.len()
-    }
-    pub fn get(&self, i: usize, j: usize) -> W {
-        self.rows[i].iter().find(|e| e.0 == j).map(|e| e.1.clone()).unwrap_or_else(W::zero)
-    }
-    pub fn to_dense_f64(&self) -> Vec<Vec<f64>> {
-        let n = self.size();
-        let mut d = vec![vec![0.0; n]; n];
-        for (i, row) in self.rows.iter().enumerate() {
-            for (j, w) in row {
-                d[i][j.to_owned()] = w.to_f64();
-            }
-        }
-        d
-    }
+impl<W> LocalMatrix<W> {
     /// Position of the vertex obtained by rotating vertex k by `period` sectors.
     pub fn rotation(&self, period: usize, sectors: usize) -> Vec<usize> {
         let key = |l: &VertexLabel| (l.sector, l.i, l.j);
@@ -80,7 +61,7 @@ pub fn assemble_rows<W: SchemeWeight>(
     let targets: Vec<usize> =
         which.iter().map(|&k| d.successor(set[k]).ok_or(AssembleError::Missing)).collect::<Result<_, _>>()?;
     let raw = step_rows::<W>(d.refinements().len(), &targets, |k, v| {
-        W::stencil(scheme, d.mesh_before(k), d.refinements()[k].vertex_origins[v])
+        crate::refine::new_stencil::<W>(scheme, d.mesh_before(k), &d.refinements()[k], v)
             .map_err(|Inexact| AssembleError::Inexact)?
             .ok_or(AssembleError::Missing)
     })?;

@@ -24,7 +24,7 @@ use crate::engine::closure::{invariant_closure, Refinement};
 use crate::mesh::{IdMap, IdSet, LatticeCoord, PolyMesh};
 use crate::refine::{Combine, SparseRow};
 use crate::sdc::Topology;
-use crate::sdc::{Origin, Scheme, SchemeWeight, Stencil};
+use crate::sdc::{Origin, Scheme, Stencil};
 use crate::topology::Refined;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
@@ -222,8 +222,10 @@ pub fn discover(scheme: &dyn Scheme, config: &Configuration) -> Result<Discovere
     ))
 }
 
+/// A float stencil as one refinement step evaluates it; None when the rule
+/// cannot be evaluated on this mesh.
 fn stencil_f64(scheme: &dyn Scheme, mesh: &PolyMesh, o: Origin) -> Option<Stencil<f64>> {
-    <f64 as SchemeWeight>::stencil(scheme, mesh, o).ok().flatten()
+    crate::refine::stencil_at::<f64>(scheme, mesh, o).ok().flatten()
 }
 
 /// The rotation of a charted mesh by `period` sectors (the configuration's
@@ -500,7 +502,7 @@ fn try_discover(
     let mut refinements: Vec<Refined> = Vec::new();
     for _ in 0..steps {
         let before = refinements.last().map_or(base, |r| &r.mesh);
-        refinements.push(topology.refine(before)?);
+        refinements.push(crate::refine::connectivity(scheme, before)?);
     }
     let step = FullStep::new(refinements)?;
     let (refinements, step_at) = (&step.refinements, &step.step_at);
@@ -558,7 +560,7 @@ fn try_discover(
             let rf = &refinements[r - 1];
             (Cow::Borrowed(&rf.mesh), Cow::Borrowed(&rf.vertex_origins), Cow::Borrowed(&rf.face_parents))
         } else {
-            let rf = topology.refine(&mesh_k)?;
+            let rf = crate::refine::connectivity(scheme, &mesh_k)?;
             (Cow::Owned(rf.mesh), Cow::Owned(rf.vertex_origins), Cow::Owned(rf.face_parents))
         };
         let descends: Vec<bool> = origins.iter().map(|o| in_region.contains(o)).collect();

@@ -47,7 +47,7 @@ fn parse_ratio(s: &str) -> Option<Rational> {
 }
 
 pub fn to_qmatrix(m: &LocalMatrix<Rational>) -> QMatrix {
-    engine_exact::to_qmatrix(&m.rows)
+    m.to_qmatrix()
 }
 
 pub fn confirm(m: &LocalMatrix<Rational>, eigs: &mut [Eigenvalue], period: usize, n: usize) -> ExactSummary {

@@ -11,16 +11,21 @@
 //! The matrices come from the scheme's own stencils on a generous patch of the
 //! node's configuration (the sectors of the configuration must tile the plane,
 //! e.g. the transition node QQTTT of 4-3 subdivision with the quads on one side
-//! of the line and the triangles on the other), never from a restated rule.
+//! of the line and the triangles on the other), never from a restated rule:
+//! one refinement step of the patch (`refine::step_selected`, stencils of the
+//! refined points the rows need) and the engine's assembly on the window
+//! (`engine::closure::assemble`), whose points are the planar positions.
 
 use std::collections::HashMap;
 
 use faer::Mat;
 use num_traits::Zero;
 
+use crate::engine::closure::{assemble, ClosureError, Refinement};
 use crate::neighbourhood::{build_patch, Configuration};
 use crate::numeric::Rational;
-use crate::sdc::{Scheme, SchemeWeight};
+use crate::refine::{step_selected, Step};
+use crate::sdc::Scheme;
 
 /// Planar integer position of a chart point: sector s point (i, j) is
 /// i·d_s + j·d_{s+1} with the given spoke vectors d.
@@ -28,6 +33,37 @@ fn planar(spokes: &[[i64; 2]], sector: usize, i: i64, j: i64) -> [i64; 2] {
     let n = spokes.len();
     let (u, v) = (spokes[sector % n], spokes[(sector + 1) % n]);
     [i * u[0] + j * v[0], i * u[1] + j * v[1]]
+}
+
+/// One refinement step of the node's patch seen on the planar lattice, with
+/// the refined point at fine position p + `shift` standing for the coarse
+/// point p (the identity for S, one lattice step along the line for S⁺).
+struct Shifted<'a> {
+    step: &'a Step<Rational>,
+    /// planar position of each coarse vertex
+    coarse: &'a HashMap<usize, [i64; 2]>,
+    /// refined vertex at each fine planar position
+    fine: &'a HashMap<[i64; 2], usize>,
+    shift: [i64; 2],
+}
+
+impl Shifted<'_> {
+    /// The stencil of the refined point at fine position `at`, over coarse positions.
+    fn stencil(&self, at: &[i64; 2]) -> Result<Vec<([i64; 2], Rational)>, String> {
+        let v = *self.fine.get(at).ok_or_else(|| format!("no refined point at {at:?}"))?;
+        let st = self.step.stencils[v].as_ref().ok_or_else(|| format!("no rule for the refined point at {at:?}"))?;
+        Ok(st.terms.iter().map(|(u, w)| (self.coarse[u], w.clone())).collect())
+    }
+}
+
+impl Refinement for Shifted<'_> {
+    type Point = [i64; 2];
+    fn dependencies(&self, q: &[i64; 2]) -> Result<Vec<[i64; 2]>, String> {
+        Ok(self.stencil(q)?.into_iter().map(|(p, _)| p).collect())
+    }
+    fn successor(&self, p: &[i64; 2]) -> Result<[i64; 2], String> {
+        Ok([p[0] + self.shift[0], p[1] + self.shift[1]])
+    }
 }
 
 /// Exact matrices on a window of lattice points: for each `shift` t, the
@@ -52,31 +88,31 @@ pub fn window_matrices(
     let chart = patch.chart.as_ref().ok_or("the patch has no lattice chart")?;
     let coarse: HashMap<usize, [i64; 2]> =
         chart.vertex_coords.iter().enumerate().map(|(v, c)| (v, planar(spokes, c.sector, c.i, c.j))).collect();
-    let column: HashMap<[i64; 2], usize> = window.iter().enumerate().map(|(k, p)| (*p, k)).collect();
-    let refined = scheme.topology().refine(&patch)?;
-    let fine_chart = refined.mesh.chart.as_ref().ok_or("the refined patch has no lattice chart")?;
-    let fine: HashMap<[i64; 2], usize> =
-        fine_chart.vertex_coords.iter().enumerate().map(|(v, c)| (planar(spokes, c.sector, c.i, c.j), v)).collect();
-    let mut out = Vec::new();
-    for t in shifts {
-        let mut m = vec![vec![Rational::zero(); window.len()]; window.len()];
-        for (r, p) in window.iter().enumerate() {
-            let at = [p[0] + t[0], p[1] + t[1]];
-            let v = *fine.get(&at).ok_or_else(|| format!("no refined point at {at:?}"))?;
-            let st = <Rational as SchemeWeight>::stencil(scheme, &patch, refined.vertex_origins[v])
-                .map_err(|_| "an irrational weight".to_string())?
-                .ok_or_else(|| format!("no rule for the refined point at {at:?}"))?;
-            for (u, w) in st.terms {
-                let q = coarse[&u];
-                let c = *column.get(&q).ok_or_else(|| {
-                    format!("the refined point at {at:?} depends on {q:?}, outside the window (not invariant)")
-                })?;
-                m[r][c] = &m[r][c] + &w;
-            }
-        }
-        out.push(m);
-    }
-    Ok(out)
+    // the stencils of the refined points at the window's positions, shifted
+    let mut fine: HashMap<[i64; 2], usize> = HashMap::new();
+    let step = step_selected::<Rational>(scheme, &patch, |refined| {
+        let fine_chart = refined.mesh.chart.as_ref().ok_or("the refined patch has no lattice chart")?;
+        fine =
+            fine_chart.vertex_coords.iter().enumerate().map(|(v, c)| (planar(spokes, c.sector, c.i, c.j), v)).collect();
+        shifts
+            .iter()
+            .flat_map(|t| window.iter().map(move |p| [p[0] + t[0], p[1] + t[1]]))
+            .map(|at| fine.get(&at).copied().ok_or_else(|| format!("no refined point at {at:?}")))
+            .collect()
+    })?;
+    shifts
+        .iter()
+        .map(|&shift| {
+            let on_window = Shifted { step: &step, coarse: &coarse, fine: &fine, shift };
+            let m = assemble(&on_window, window, |at| on_window.stencil(at)).map_err(|e| match e {
+                ClosureError::NotInvariant { fine: at, needs } => {
+                    format!("the refined point at {at:?} depends on {needs:?}, outside the window (not invariant)")
+                }
+                e => e.to_string(),
+            })?;
+            Ok(m.dense())
+        })
+        .collect()
 }
 
 /// Bounds on the joint spectral radius ρ(A_1, ..., A_m) = lim_k max ‖A_{ε_k} ⋯ A_{ε_1}‖^{1/k}.
