@@ -94,7 +94,7 @@ fn bad_plots_are_one_line_errors() {
     fails(&["sweep", "non-box", "--valences", "3..5", "--param", "a=0:1:1/2", "--plot", svg, "--bound", "1/("]);
     fails(&["sweep", "non-box", "--valences", "3..5", "--param", "a=0:1:1/2", "--plot", svg, "--bound", "q + 1"]);
     fails(&["sweep", "non-box", "--valences", "3..5", "--param", "a=0:1:1/2", "--plot", svg, "--bound", "sqrt(n - 4)"]);
-    fails(&["sweep", "non-box", "--valences", "3..5", "--param", "a=0:1:1/2", "--plot", "s.pdf"]);
+    fails(&["sweep", "non-box", "--valences", "3..5", "--param", "a=0:1:1/2", "--plot", "s.eps"]);
     fails(&["sweep", "non-box", "--valences", "3..5", "--param", "a=0:1:1/2", "--plot", "/no/such/dir/s.svg"]);
     assert!(!std::path::Path::new(svg).exists(), "failed runs write no figure");
 }
