@@ -247,9 +247,7 @@ pub fn out(text: &str) -> Result<(), String> {
         }
     }
     let mut o = std::io::stdout().lock();
-    o.write_all(text.as_bytes())
-        .and_then(|_| o.flush())
-        .map_err(|e| format!("cannot write to standard output: {e}"))
+    o.write_all(text.as_bytes()).and_then(|_| o.flush()).map_err(|e| format!("cannot write to standard output: {e}"))
 }
 
 /// Whether the process started with standard output closed (`>&-`). Rust's

@@ -449,9 +449,8 @@ fn read_claim(file: &str, k: usize, header: Option<usize>, text: &str, raw: toml
         return malformed(format!("{}: unknown check '{kind}'; the checks are {}", at(line), kinds.join(", ")));
     };
     let scheme_based = !["identity", "matrix-eigenvalues", "lattice-matrix", "builtin"].contains(&kind);
-    let allowed = |key: &str| {
-        COMMON_KEYS.contains(&key) || own.contains(&key) || (scheme_based && SUBJECT_KEYS.contains(&key))
-    };
+    let allowed =
+        |key: &str| COMMON_KEYS.contains(&key) || own.contains(&key) || (scheme_based && SUBJECT_KEYS.contains(&key));
     if let Some(key) = table.keys().find(|key| !allowed(key)) {
         let mut known: Vec<&str> = COMMON_KEYS.to_vec();
         if scheme_based {

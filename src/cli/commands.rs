@@ -428,10 +428,7 @@ fn sweep(args: &super::SweepArgs) -> Result<(), String> {
         }
     };
     if csv {
-        print_row(
-            &[format!("valence,{name},lambda0,lambda1,lambda2,lambda3,convergent,c1_spectral,charmap")],
-            "error",
-        );
+        print_row(&[format!("valence,{name},lambda0,lambda1,lambda2,lambda3,convergent,c1_spectral,charmap")], "error");
     } else {
         let head = ["valence", name.as_str(), "|λ0|", "|λ1|", "|λ2|", "|λ3|", "conv", "C1", "charmap"];
         print_row(&head.map(String::from), "");

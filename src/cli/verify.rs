@@ -33,7 +33,13 @@ pub(super) fn read_capped(path: &Path, limit: u64, what: &str) -> Result<String,
 /// so the other files are still evaluated and the JUnit report is complete.
 fn unreadable(path: &Path, message: String) -> (ClaimFile, Vec<Outcome>) {
     let name = path.display().to_string();
-    let file = ClaimFile { paper: name.clone(), title: "(unreadable claim file)".into(), figures: vec![], sweeps: vec![], claims: vec![] };
+    let file = ClaimFile {
+        paper: name.clone(),
+        title: "(unreadable claim file)".into(),
+        figures: vec![],
+        sweeps: vec![],
+        claims: vec![],
+    };
     let outcome = Outcome {
         id: "file".into(),
         paper: name,
@@ -244,9 +250,7 @@ fn xml_escape(s: &str) -> String {
             '>' => out += "&gt;",
             '"' => out += "&quot;",
             '\t' | '\n' | '\r' => out.push(c),
-            c if (c as u32) < 0x20 || c == '\u{fffe}' || c == '\u{ffff}' => {
-                out += &format!("\\u{{{:x}}}", c as u32)
-            }
+            c if (c as u32) < 0x20 || c == '\u{fffe}' || c == '\u{ffff}' => out += &format!("\\u{{{:x}}}", c as u32),
             c => out.push(c),
         }
     }
@@ -258,8 +262,7 @@ fn junit_xml(results: &[(ClaimFile, Vec<Outcome>)], judge: &Judge) -> String {
     for (f, outcomes) in results {
         let failing: Vec<&Outcome> = outcomes.iter().filter(|o| !judge.passes(o)).collect();
         // ERROR and INCONCLUSIVE are <error>s, a wrong verdict a <failure>
-        let errors =
-            failing.iter().filter(|o| matches!(o.verdict, Verdict::Error | Verdict::Inconclusive)).count();
+        let errors = failing.iter().filter(|o| matches!(o.verdict, Verdict::Error | Verdict::Inconclusive)).count();
         let failures = failing.len() - errors;
         x += &format!(
             "  <testsuite name=\"{}\" tests=\"{}\" failures=\"{failures}\" errors=\"{errors}\">\n",
@@ -275,10 +278,7 @@ fn junit_xml(results: &[(ClaimFile, Vec<Outcome>)], judge: &Judge) -> String {
             let body = format!("{}\nstated: {}\ncomputed: {}\n{}", o.statement, o.stated, o.computed, o.detail);
             let required = judge.required(o);
             if o.verdict == Verdict::Error {
-                x += &format!(
-                    ">\n      <error message=\"ERROR\">{}</error>\n    </testcase>\n",
-                    xml_escape(&body)
-                );
+                x += &format!(">\n      <error message=\"ERROR\">{}</error>\n    </testcase>\n", xml_escape(&body));
             } else if judge.passes(o) && o.verdict == Verdict::Holds {
                 x += "/>\n";
             } else if judge.passes(o) {
@@ -289,13 +289,13 @@ fn junit_xml(results: &[(ClaimFile, Vec<Outcome>)], judge: &Judge) -> String {
                     xml_escape(&body)
                 );
             } else {
-                let message =
-                    if required == Verdict::Holds { o.verdict.to_string() } else { format!("{} (expected {required})", o.verdict) };
+                let message = if required == Verdict::Holds {
+                    o.verdict.to_string()
+                } else {
+                    format!("{} (expected {required})", o.verdict)
+                };
                 let tag = if o.verdict == Verdict::Inconclusive { "error" } else { "failure" };
-                x += &format!(
-                    ">\n      <{tag} message=\"{message}\">{}</{tag}>\n    </testcase>\n",
-                    xml_escape(&body)
-                );
+                x += &format!(">\n      <{tag} message=\"{message}\">{}</{tag}>\n    </testcase>\n", xml_escape(&body));
             }
         }
         x += "  </testsuite>\n";

@@ -49,9 +49,8 @@ pub fn refine_mesh(
         ));
     }
     // refuse before any work: the first level's size, then the host's growth per level
-    let estimate = (1..levels).fold(size_bound(scheme.topology(), mesh), |size, _| {
-        size.saturating_mul(growth_per_level(scheme.topology()))
-    });
+    let estimate = (1..levels)
+        .fold(size_bound(scheme.topology(), mesh), |size, _| size.saturating_mul(growth_per_level(scheme.topology())));
     if estimate > MAX_REFINED_FACES {
         return Err(format!(
             "{levels} level(s) would produce about {estimate} faces or vertices (estimated before refining), above the supported {MAX_REFINED_FACES}; use fewer levels"

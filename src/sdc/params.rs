@@ -65,7 +65,11 @@ impl Params {
                 }
                 _ => false,
             };
-            if v.value < spec.min || v.value > spec.max || exact_outside(spec.min, true) || exact_outside(spec.max, false) {
+            if v.value < spec.min
+                || v.value > spec.max
+                || exact_outside(spec.min, true)
+                || exact_outside(spec.max, false)
+            {
                 return Err(Error::Input(format!(
                     "parameter {name}={text} is out of range [{}, {}] for scheme '{scheme}'",
                     spec.min, spec.max
