@@ -154,8 +154,14 @@ pub struct Summary {
     pub holds: usize,
     pub refuted: usize,
     pub inconclusive: usize,
-    /// malformed claims and unreadable files
+    /// malformed claims and unreadable files (left out of the JSON when 0,
+    /// so existing summaries keep their exact shape)
+    #[serde(skip_serializing_if = "is_zero")]
     pub error: usize,
+}
+
+fn is_zero(x: &usize) -> bool {
+    *x == 0
 }
 
 pub fn summary(o: &[Outcome]) -> Summary {
