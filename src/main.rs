@@ -8,8 +8,7 @@ fn main() {
     unsafe {
         libc::signal(libc::SIGPIPE, libc::SIG_DFL);
     }
-    if let Err(e) = subdlab::cli::run() {
-        eprintln!("error: {e}");
-        std::process::exit(2);
-    }
+    // an interrupted write leaves no temporary file behind
+    subdlab::io::install_cleanup_handlers();
+    std::process::exit(subdlab::cli::main());
 }

@@ -187,6 +187,35 @@ fn int(v: &toml::Value, what: &str) -> Result<i64, String> {
     v.as_integer().ok_or_else(|| format!("{what} must be an integer"))
 }
 
+/// An integer of the claim data within [lo, hi]: the data drive loops and
+/// allocations, so every size is bounded (and never wraps when negative).
+fn int_in(data: &toml::Value, key: &str, lo: i64, hi: i64) -> Result<i64, String> {
+    let v = int(field(data, key)?, &format!("data.{key}"))?;
+    if v < lo || v > hi {
+        return Err(format!("data.{key} = {v} is outside the supported range {lo}..{hi}"));
+    }
+    Ok(v)
+}
+
+/// A window [x0, x1, y0, y1] of at most `max_points` lattice points.
+fn small_window(data: &toml::Value, max_points: i64) -> Result<Vec<i64>, String> {
+    let w = ints(data, "window")?;
+    if w.len() != 4 {
+        return Err("data.window is [x0, x1, y0, y1]".into());
+    }
+    if w[0] > w[1] || w[2] > w[3] {
+        return Err(format!("data.window {w:?} is empty (it must have x0 <= x1 and y0 <= y1)"));
+    }
+    let points = (w[1] as i128 - w[0] as i128 + 1) * (w[3] as i128 - w[2] as i128 + 1);
+    if points > max_points as i128 {
+        return Err(format!("data.window {w:?} has {points} points; at most {max_points} are supported"));
+    }
+    Ok(w)
+}
+
+/// Most points of the window of a strip or polynomial check.
+const MAX_DATA_WINDOW: i64 = 144;
+
 fn ints(data: &toml::Value, key: &str) -> Result<Vec<i64>, String> {
     field(data, key)?
         .as_array()
@@ -279,11 +308,22 @@ fn lattice_fit_masks(data: &toml::Value) -> Result4 {
         .iter()
         .map(|m| {
             let e = m.as_array().filter(|e| e.len() == 2).ok_or("each monomial is [a, b]")?;
-            Ok((int(&e[0], "an exponent")? as u32, int(&e[1], "an exponent")? as u32))
+            let exponent = |v: &toml::Value| match int(v, "an exponent")? {
+                x @ 0..=6 => Ok(x as u32),
+                x => Err(format!("monomial exponent {x} is outside the supported range 0..6")),
+            };
+            Ok((exponent(&e[0])?, exponent(&e[1])?))
         })
         .collect::<Result<_, String>>()?;
-    let (lo, hi) = (int(field(data, "lo")?, "data.lo")?, int(field(data, "hi")?, "data.hi")?);
-    let den = Rational::from_integer(int(field(data, "denominator")?, "data.denominator")?.into());
+    let (lo, hi) = (int_in(data, "lo", -4, 4)?, int_in(data, "hi", -4, 4)?);
+    if lo >= hi {
+        return Err(format!("data.lo = {lo} must be below data.hi = {hi}"));
+    }
+    let den = int(field(data, "denominator")?, "data.denominator")?;
+    if den == 0 {
+        return Err("data.denominator must not be 0".into());
+    }
+    let den = Rational::from_integer(den.into());
     let rules = field(data, "rules")?.as_array().filter(|r| r.len() == 4).ok_or("data.rules: four masks")?;
     let size = (hi - lo + 1) as usize;
     let derived = derive_masks(&monomials, &grid(lo, hi), &q(1, 1))?;
@@ -358,10 +398,10 @@ fn lattice_node(data: &toml::Value) -> Result<LatticeNode, String> {
 fn strip(data: &toml::Value) -> Result<Strip, String> {
     use crate::spectrum::strip::window_matrices;
     let (scheme, config, spokes) = lattice_node(data)?;
-    let w = ints(data, "window")?;
+    let w = small_window(data, MAX_DATA_WINDOW)?;
     let t = ints(data, "shift")?;
-    if w.len() != 4 || t.len() != 2 {
-        return Err("data.window is [x0, x1, y0, y1] and data.shift is [dx, dy]".into());
+    if t.len() != 2 || t.iter().any(|x| x.abs() > 16) {
+        return Err("data.shift is [dx, dy] with |dx|, |dy| <= 16".into());
     }
     let window: Vec<[i64; 2]> = (w[2]..=w[3]).flat_map(|y| (w[0]..=w[1]).map(move |x| [x, y])).collect();
     let mut m = window_matrices(scheme.as_ref(), &config, &spokes, &window, &[[0, 0], [t[0], t[1]]])?;
@@ -510,7 +550,7 @@ fn strip_jsr(data: &toml::Value) -> Result4 {
     if crate::spectrum::strip::action_on(&st.s_plus, &basis).is_none() {
         return Err("the leading eigenvectors are not invariant under S⁺: Q⁺ is not defined".into());
     }
-    let length = int(field(data, "length")?, "data.length")? as usize;
+    let length = int_in(data, "length", 1, 16)? as usize;
     let bound = crate::numeric::Weight::to_f64(&exact(text(data, "bound")?)?);
     let w = faer::Mat::from_fn(n, basis.len(), |i, j| crate::numeric::Weight::to_f64(&basis[j][i]));
     let c = orthogonal_complement(&w)?;
@@ -589,7 +629,7 @@ fn fourthree_patch(data: &toml::Value, steps: usize) -> Result<Patch, String> {
     let scheme = schemes::build("four-three", &params(data, "params")?)?;
     let faces = text(data, "faces")?;
     let config = Configuration::with_faces(scheme.as_ref(), faces.len(), faces)?;
-    let rings = int(field(data, "rings")?, "data.rings")? as usize;
+    let rings = int_in(data, "rings", 1, 8)? as usize;
     let (patch, _) = build_patch(&config, rings);
     let (fine, rows) = crate::refine::mesh::composite_weights(scheme.as_ref(), &patch, 1..=steps)?;
     Ok((scheme, patch, fine, rows))
@@ -636,7 +676,7 @@ fn fourthree_step_two(data: &toml::Value) -> Result4 {
 fn fourthree_convex_hull(data: &toml::Value) -> Result4 {
     use crate::schemes::four_three::{classify, NodeType};
     use crate::spectrum::stencils::limit_stencil;
-    let steps = int(field(data, "steps")?, "data.steps")? as usize;
+    let steps = int_in(data, "steps", 1, 4)? as usize;
     let (scheme, patch, fine, rows) = fourthree_patch(data, steps)?;
     // regular limit stencils: weights of the centre, its edge neighbours and (quads) its diagonal neighbours
     let regular = |faces: &str| -> Result<(f64, f64, f64), String> {
@@ -776,8 +816,11 @@ fn curve_c1_laurent(data: &toml::Value) -> Result4 {
     use crate::schemes::curves;
     let name = text(data, "scheme")?;
     let param = text(data, "param")?;
-    let max_steps = int(field(data, "max_steps")?, "data.max_steps")? as u32;
+    let max_steps = int_in(data, "max_steps", 1, 64)? as u32;
     let values = field(data, "values")?.as_array().ok_or("data.values: strings")?;
+    if values.is_empty() || values.len() > 100 {
+        return Err("data.values: 1 to 100 parameter values".into());
+    }
     let mut out = Vec::new();
     let mut all = true;
     for v in values {
@@ -819,7 +862,7 @@ fn fourthree_node_counts(data: &toml::Value) -> Result4 {
         other => return Err(format!("no built-in mesh '{other}' (house.obj, prism.obj)")),
     };
     let obj = crate::mesh::obj::parse_obj(text_obj)?;
-    let levels = int(field(data, "levels")?, "data.levels")? as usize;
+    let levels = int_in(data, "levels", 1, 5)? as usize;
     let scheme = schemes::build("four-three", &[])?;
     let count = |m: &crate::mesh::PolyMesh| -> Result<[usize; 3], String> {
         let mut c = [0usize; 3];
@@ -870,11 +913,11 @@ fn fourthree_node_counts(data: &toml::Value) -> Result4 {
 fn window_polynomials(data: &toml::Value) -> Result4 {
     use crate::spectrum::strip::{action_on, window_matrices};
     let (scheme, config, spokes) = lattice_node(data)?;
-    let w = ints(data, "window")?;
-    if w.len() != 4 {
-        return Err("data.window is [x0, x1, y0, y1]".into());
-    }
-    let degree = int(field(data, "degree")?, "data.degree")? as u32;
+    let w = small_window(data, MAX_DATA_WINDOW)?;
+    // a polynomial of degree ≤ d + 1 is determined by its samples only while
+    // d + 1 is below the window's width and height
+    let side = (w[1] - w[0]).min(w[3] - w[2]);
+    let degree = int_in(data, "degree", 0, (side - 1).max(0))? as u32;
     let window: Vec<[i64; 2]> = (w[2]..=w[3]).flat_map(|y| (w[0]..=w[1]).map(move |x| [x, y])).collect();
     let s = window_matrices(scheme.as_ref(), &config, &spokes, &window, &[[0, 0]])?.pop().expect("one matrix");
     let samples = |d: u32| -> Vec<Vec<Rational>> {

@@ -90,6 +90,11 @@ fn env_with(s: &Subject, n: usize, m: Option<usize>) -> Result<Env, String> {
         env.insert("tris".into(), ParamValue::from_ratio(n as i64 - quads, 1));
     }
     let defs: Vec<(&String, &String)> = s.params.iter().chain(s.vars.iter()).collect();
+    if let Some((name, _)) = defs.iter().find(|(k, _)| env.contains_key(k.as_str())) {
+        return Err(format!(
+            "'{name}' is given by the check (the valence n or k, the block m, quads, tris) and cannot be redefined in params or vars"
+        ));
+    }
     // definitions may refer to each other: evaluate in dependency order
     let mut pending = defs;
     while !pending.is_empty() {
@@ -118,8 +123,20 @@ fn env_with(s: &Subject, n: usize, m: Option<usize>) -> Result<Env, String> {
     Ok(env)
 }
 
+/// The value of a stated expression; a value that is not a finite number
+/// (0·10^400, an overflow) cannot decide a claim, so it is an error (the
+/// claim becomes INCONCLUSIVE).
 fn eval(text: &str, env: &Env) -> Result<Complex64, String> {
-    Expr::parse(text).map_err(|e| format!("'{text}': {e}"))?.eval(env).map_err(|e| format!("'{text}': {e}"))
+    let z = Expr::parse(text).map_err(|e| format!("'{text}': {e}"))?.eval(env).map_err(|e| format!("'{text}': {e}"))?;
+    finite(z, text)
+}
+
+fn finite(z: Complex64, text: &str) -> Result<Complex64, String> {
+    if z.re.is_finite() && z.im.is_finite() {
+        Ok(z)
+    } else {
+        Err(format!("'{text}' is not a finite number ({}): it cannot decide the claim", show(z)))
+    }
 }
 
 pub fn show(z: Complex64) -> String {
@@ -193,6 +210,9 @@ fn inconclusive(detail: String) -> Partial {
 }
 
 pub fn evaluate(paper: &str, claim: &Claim, cache: &mut Cache) -> Outcome {
+    if let Check::Malformed(message) = &claim.check {
+        return error_outcome(paper, claim, message.clone());
+    }
     let p = match run(&claim.check, cache) {
         Ok(p) => p,
         Err(e) => inconclusive(e),
@@ -208,6 +228,22 @@ pub fn evaluate(paper: &str, claim: &Claim, cache: &mut Cache) -> Outcome {
         stated: p.stated,
         computed: p.computed,
         detail: p.detail,
+    }
+}
+
+/// The ERROR outcome of a claim that could not be read or evaluated.
+pub fn error_outcome(paper: &str, claim: &Claim, detail: String) -> Outcome {
+    Outcome {
+        id: claim.id.clone(),
+        paper: paper.to_string(),
+        location: claim.location.clone(),
+        statement: claim.statement.clone(),
+        convention: claim.convention.clone(),
+        verdict: Verdict::Error,
+        expected: claim.expected,
+        stated: String::new(),
+        computed: String::new(),
+        detail,
     }
 }
 
@@ -333,7 +369,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
                 env.insert("lambda3".into(), ParamValue::from_f64(l3));
                 env.insert("size".into(), ParamValue::from_ratio(spec.matrix_size as i64, 1));
             }
-            let (a, b) = (l.eval(&env)?, r.eval(&env)?);
+            let (a, b) = (finite(l.eval(&env)?, lhs)?, finite(r.eval(&env)?, rhs)?);
             if a.im.abs() > 1e-12 || b.im.abs() > 1e-12 {
                 return Err(format!("'{lhs}' or '{rhs}' is not real at n = {n}"));
             }
@@ -454,7 +490,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
                     detail: "exact rational arithmetic".into(),
                 });
             }
-            let (a, b) = (l.eval(&env)?, r.eval(&env)?);
+            let (a, b) = (finite(l.eval(&env)?, lhs)?, finite(r.eval(&env)?, rhs)?);
             let ok = (a - b).norm() <= 1e-12 * a.norm().max(b.norm()).max(1.0);
             Ok(Partial {
                 verdict: if ok { Verdict::Holds } else { Verdict::Refuted },
@@ -516,6 +552,10 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
         Check::LatticeMatrix { scheme, window, scale, rows } => {
             let s = registry::lattice(scheme, &[])?;
             let [i0, i1, j0, j1] = *window;
+            check_window(*window)?;
+            if rows.is_empty() {
+                return Err("no printed rows: nothing to compare".into());
+            }
             let w = lattice::Window::rect(i0, i1, j0, j1);
             let assembled = lattice::local_matrix::<crate::numeric::Rational>(s.as_ref(), &w)?;
             let scale = Expr::parse(scale)?.exact(&Env::new()).ok_or("the scale must be an exact rational")?;
@@ -560,12 +600,34 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
                 },
             })
         }
+        Check::Malformed(m) => Err(m.clone()),
         Check::Builtin { name, data } => {
             let (verdict, stated, computed, detail) = super::builtin::run(name, data.as_ref())?;
             Ok(Partial { verdict, stated, computed, detail })
         }
     }
 }
+
+/// Most points of a printed lattice window (i fastest): matrices of that size
+/// are assembled exactly, so the window is bounded like every other input.
+pub const MAX_WINDOW_POINTS: i64 = 1024;
+
+/// A window [i0, i1] × [j0, j1]: non-empty and at most [`MAX_WINDOW_POINTS`].
+pub fn check_window([i0, i1, j0, j1]: [i64; 4]) -> Result<(), String> {
+    if i0 > i1 || j0 > j1 {
+        return Err(format!("the window [{i0}, {i1}, {j0}, {j1}] is empty (it must have i0 <= i1 and j0 <= j1)"));
+    }
+    let points = (i1 as i128 - i0 as i128 + 1) * (j1 as i128 - j0 as i128 + 1);
+    if points > MAX_WINDOW_POINTS as i128 {
+        return Err(format!(
+            "the window [{i0}, {i1}, {j0}, {j1}] has {points} points; at most {MAX_WINDOW_POINTS} are supported"
+        ));
+    }
+    Ok(())
+}
+
+/// Most stated values of one claim, counting repeats.
+pub const MAX_STATED_VALUES: usize = 100_000;
 
 /// Stated values; an entry "EXPR ; COUNT" stands for COUNT copies of EXPR.
 fn stated_values(values: &[String], env: &Env) -> Result<Vec<Complex64>, String> {
@@ -581,6 +643,9 @@ fn stated_values(values: &[String], env: &Env) -> Result<Vec<Complex64>, String>
             }
             None => (v.as_str(), 1),
         };
+        if out.len() + count > MAX_STATED_VALUES {
+            return Err(format!("more than {MAX_STATED_VALUES} stated values (counting repeats)"));
+        }
         let z = eval(e, env)?;
         out.extend(std::iter::repeat_n(z, count));
     }

@@ -211,28 +211,31 @@ pub enum Check {
         op: String,
         rhs: String,
     },
-    /// Every real eigenvalue is non-negative (`expect = true`) or not.
+    /// Every real eigenvalue is non-negative (`expect = true`, the default) or not.
     NonnegativeSpectrum {
         #[serde(flatten)]
         subject: Subject,
+        #[serde(default = "yes")]
         expect: bool,
     },
-    /// The characteristic map is regular and injective (`expect = true`) or
+    /// The characteristic map is regular and injective (`expect = true`, the default) or
     /// not (Reif's test, `charmap`); `levels` and `resolution` as for
     /// `subdlab charmap` (defaults 3 and 256).
     CharacteristicMap {
         #[serde(flatten)]
         subject: Subject,
+        #[serde(default = "yes")]
         expect: bool,
         #[serde(default)]
         levels: Option<usize>,
         #[serde(default)]
         resolution: Option<usize>,
     },
-    /// The spectral C^1 test (Reif) passes (`expect = true`) or fails.
+    /// The spectral C^1 test (Reif) passes (`expect = true`, the default) or fails.
     SpectralC1 {
         #[serde(flatten)]
         subject: Subject,
+        #[serde(default = "yes")]
         expect: bool,
     },
     /// An algebraic identity between two expressions, exact where possible.
@@ -263,7 +266,38 @@ pub enum Check {
         #[serde(default)]
         data: Option<toml::Value>,
     },
+    /// A claim that could not be read (unknown key, missing field, wrong
+    /// type): its verdict is ERROR with this message; never in a file.
+    #[serde(skip)]
+    Malformed(String),
 }
+
+fn yes() -> bool {
+    true
+}
+
+/// The keys each check kind reads, besides the common ones
+/// ([`COMMON_KEYS`]); anything else in a claim is an error naming its line.
+pub const CHECK_KEYS: &[(&str, &[&str])] = &[
+    ("eigenvalues", &["values", "compare", "block"]),
+    ("subdominant", &["value"]),
+    ("size", &["value"]),
+    ("limit-stencil", &["weights"]),
+    ("tangent-stencils", &["cos", "sin"]),
+    ("inequality", &["lhs", "op", "rhs"]),
+    ("nonnegative-spectrum", &["expect"]),
+    ("characteristic-map", &["expect", "levels", "resolution"]),
+    ("spectral-c1", &["expect"]),
+    ("identity", &["lhs", "rhs", "vars"]),
+    ("matrix-eigenvalues", &["valences", "vars", "rows", "values"]),
+    ("lattice-matrix", &["scheme", "window", "scale", "rows"]),
+    ("builtin", &["name", "data"]),
+];
+/// Keys of every claim.
+pub const COMMON_KEYS: &[&str] = &["id", "location", "statement", "convention", "expected", "check"];
+/// Keys of the checks that analyse a scheme (all but identity,
+/// matrix-eigenvalues, lattice-matrix and builtin).
+pub const SUBJECT_KEYS: &[&str] = &["scheme", "valences", "faces", "params", "neighbourhood", "vars"];
 
 fn no_valences() -> Valences {
     Valences::List(Vec::new())
@@ -279,6 +313,8 @@ pub enum Verdict {
     Holds,
     Refuted,
     Inconclusive,
+    /// the claim itself could not be read (a malformed claim of a file)
+    Error,
 }
 
 impl std::fmt::Display for Verdict {
@@ -287,6 +323,7 @@ impl std::fmt::Display for Verdict {
             Verdict::Holds => "HOLDS",
             Verdict::Refuted => "REFUTED",
             Verdict::Inconclusive => "INCONCLUSIVE",
+            Verdict::Error => "ERROR",
         })
     }
 }
@@ -318,21 +355,123 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ("karciauskas-peters", include_str!("../../claims/karciauskas-peters.toml")),
 ];
 
+/// Reads a claim file. A TOML syntax error or a bad top level (paper,
+/// title, figures) fails the file; a malformed claim (an unknown key, a
+/// missing field, a value of the wrong type, a repeated id) becomes a claim
+/// whose check is [`Check::Malformed`], so the others are still evaluated.
+/// Errors name the file and the line.
 pub fn parse_file(name: &str, text: &str) -> Result<ClaimFile, String> {
-    let f: ClaimFile = toml::from_str(text).map_err(|e| {
+    let short = |e: &dyn std::fmt::Display| {
         let msg = e.to_string();
-        let first = msg.lines().next().unwrap_or("").trim().to_string();
         // toml reports "TOML parse error at line L, column C" first; keep the message short
+        let first = msg.lines().next().unwrap_or("").trim().to_string();
         let detail = msg.lines().last().unwrap_or("").trim().to_string();
-        format!("{name}: {first}: {detail}")
-    })?;
-    let mut seen = std::collections::HashSet::new();
-    for c in &f.claims {
-        if !seen.insert(&c.id) {
-            return Err(format!("{name}: claim id '{}' appears twice", c.id));
+        if first == detail {
+            first
+        } else {
+            format!("{first}: {detail}")
         }
+    };
+    let mut table: toml::Table = toml::from_str(text).map_err(|e| format!("{name}: {}", short(&e)))?;
+    let raw_claims = match table.remove("claim") {
+        None => Vec::new(),
+        Some(toml::Value::Array(a)) => a,
+        Some(_) => return Err(format!("{name}: 'claim' must be an array of tables ([[claim]])")),
+    };
+    let mut f: ClaimFile = toml::Value::Table(table).try_into().map_err(|e| format!("{name}: {}", short(&e)))?;
+    let headers = claim_header_lines(text);
+    let mut seen = std::collections::HashSet::new();
+    for (k, raw) in raw_claims.into_iter().enumerate() {
+        let header = headers.get(k).copied();
+        let mut claim = read_claim(name, k, header, text, raw);
+        if !seen.insert(claim.id.clone()) && !matches!(claim.check, Check::Malformed(_)) {
+            let at = header.map(|l| format!(" line {l}")).unwrap_or_default();
+            claim.check = Check::Malformed(format!("{name}{at}: claim id '{}' appears twice", claim.id));
+        }
+        f.claims.push(claim);
     }
     Ok(f)
+}
+
+/// The 1-based line of each `[[claim]]` header, in order.
+fn claim_header_lines(text: &str) -> Vec<usize> {
+    text.lines()
+        .enumerate()
+        .filter(|(_, l)| {
+            let t: String = l.split('#').next().unwrap_or("").chars().filter(|c| !c.is_whitespace()).collect();
+            t == "[[claim]]"
+        })
+        .map(|(k, _)| k + 1)
+        .collect()
+}
+
+/// The line of `key = ...` in the claim whose header is on line `header`.
+fn key_line(text: &str, header: usize, key: &str) -> Option<usize> {
+    for (k, line) in text.lines().enumerate().skip(header) {
+        let t = line.trim_start();
+        if t.starts_with('[') {
+            return None;
+        }
+        let name = t.split(['=', '.']).next().unwrap_or("").trim().trim_matches('"').trim_matches('\'');
+        if name == key && t.contains('=') {
+            return Some(k + 1);
+        }
+    }
+    None
+}
+
+fn read_claim(file: &str, k: usize, header: Option<usize>, text: &str, raw: toml::Value) -> Claim {
+    let get = |key: &str| raw.get(key).and_then(|v| v.as_str()).map(str::to_string);
+    let id = get("id").unwrap_or_else(|| format!("claim-{}", k + 1));
+    let at = |line: Option<usize>| match line {
+        Some(l) => format!("{file} line {l}: claim {} ('{id}')", k + 1),
+        None => format!("{file}: claim {} ('{id}')", k + 1),
+    };
+    let malformed = |message: String| Claim {
+        id: id.clone(),
+        location: get("location").unwrap_or_default(),
+        statement: get("statement").unwrap_or_default(),
+        convention: get("convention"),
+        expected: raw.get("expected").and_then(|v| v.clone().try_into().ok()),
+        check: Check::Malformed(message),
+    };
+    let Some(table) = raw.as_table() else {
+        return malformed(format!("{}: a claim must be a table", at(header)));
+    };
+    let kind = match table.get("check") {
+        Some(toml::Value::String(c)) => c.as_str(),
+        Some(_) => return malformed(format!("{}: 'check' must be a string", at(header))),
+        None => return malformed(format!("{}: missing field 'check'", at(header))),
+    };
+    let Some((_, own)) = CHECK_KEYS.iter().find(|(c, _)| *c == kind) else {
+        let kinds: Vec<&str> = CHECK_KEYS.iter().map(|(c, _)| *c).collect();
+        let line = header.and_then(|h| key_line(text, h, "check"));
+        return malformed(format!("{}: unknown check '{kind}'; the checks are {}", at(line), kinds.join(", ")));
+    };
+    let scheme_based = !["identity", "matrix-eigenvalues", "lattice-matrix", "builtin"].contains(&kind);
+    let allowed =
+        |key: &str| COMMON_KEYS.contains(&key) || own.contains(&key) || (scheme_based && SUBJECT_KEYS.contains(&key));
+    if let Some(key) = table.keys().find(|key| !allowed(key)) {
+        let mut known: Vec<&str> = COMMON_KEYS.to_vec();
+        if scheme_based {
+            known.extend(SUBJECT_KEYS);
+        }
+        known.extend(own.iter());
+        let line = header.and_then(|h| key_line(text, h, key));
+        return malformed(format!(
+            "{}: unknown key '{key}' for check '{kind}'; its keys are {}",
+            at(line),
+            known.join(", ")
+        ));
+    }
+    match raw.clone().try_into::<Claim>() {
+        Ok(c) => c,
+        Err(e) => {
+            let msg = e.to_string();
+            let detail = msg.lines().last().unwrap_or("").trim().to_string();
+            malformed(format!("{}: {detail}", at(header)))
+        }
+    }
 }
 
 pub fn builtin_files() -> Result<Vec<ClaimFile>, String> {
@@ -340,19 +479,56 @@ pub fn builtin_files() -> Result<Vec<ClaimFile>, String> {
 }
 
 /// Evaluate several files side by side (papers are independent; each has its
-/// own cache of analyses).
+/// own cache of analyses), on at most one worker per core. Workers have large
+/// stacks (deeply nested expressions recurse), and a claim whose evaluation
+/// fails unexpectedly gets an ERROR verdict instead of ending the run.
 pub fn evaluate_all(files: &[ClaimFile]) -> Result<Vec<Vec<Outcome>>, String> {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let workers = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1).min(files.len()).max(1);
+    let next = AtomicUsize::new(0);
+    let results: std::sync::Mutex<Vec<Option<Vec<Outcome>>>> = std::sync::Mutex::new(vec![None; files.len()]);
     std::thread::scope(|scope| {
-        let handles: Vec<_> = files.iter().map(|f| scope.spawn(move || evaluate(f))).collect();
-        handles
-            .into_iter()
-            .map(|h| h.join().map_err(|_| "internal error while evaluating claims".to_string()))
-            .collect()
-    })
+        let mut handles = Vec::new();
+        for _ in 0..workers {
+            let work = || loop {
+                let k = next.fetch_add(1, Ordering::SeqCst);
+                let Some(f) = files.get(k) else { break };
+                let o = evaluate(f);
+                results.lock().unwrap_or_else(|e| e.into_inner())[k] = Some(o);
+            };
+            let h = std::thread::Builder::new()
+                .stack_size(EVALUATION_STACK)
+                .spawn_scoped(scope, work)
+                .map_err(|e| format!("cannot start a worker thread: {e}"))?;
+            handles.push(h);
+        }
+        for h in handles {
+            h.join().map_err(|_| "internal error while evaluating claims".to_string())?;
+        }
+        Ok::<(), String>(())
+    })?;
+    let results = results.into_inner().unwrap_or_else(|e| e.into_inner());
+    Ok(results.into_iter().map(|o| o.unwrap_or_default()).collect())
 }
+
+/// Stack of a claim-evaluation worker.
+const EVALUATION_STACK: usize = 64 << 20;
 
 /// Evaluate every claim of a file.
 pub fn evaluate(file: &ClaimFile) -> Vec<Outcome> {
     let mut cache = checks::Cache::default();
-    file.claims.iter().map(|c| checks::evaluate(&file.paper, c, &mut cache)).collect()
+    file.claims
+        .iter()
+        .map(|c| {
+            let run = std::panic::AssertUnwindSafe(|| checks::evaluate(&file.paper, c, &mut cache));
+            std::panic::catch_unwind(run).unwrap_or_else(|p| {
+                let why = p
+                    .downcast_ref::<&str>()
+                    .map(|s| s.to_string())
+                    .or_else(|| p.downcast_ref::<String>().cloned())
+                    .unwrap_or_default();
+                checks::error_outcome(&file.paper, c, format!("internal error while evaluating this claim: {why}"))
+            })
+        })
+        .collect()
 }

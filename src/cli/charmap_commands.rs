@@ -20,7 +20,7 @@ const FIGURE_LEVELS: usize = 3;
 
 #[derive(Args, Debug, Clone)]
 pub struct CharmapArgs {
-    /// scheme name (see `subdlab schemes`)
+    /// scheme name (see `subdlab schemes`) or a scheme file (.toml, see schemes/)
     pub scheme: String,
     /// valence of the extraordinary vertex (or face)
     #[arg(long, short = 'n')]
@@ -35,7 +35,7 @@ pub struct CharmapArgs {
     #[arg(long = "param", short = 'p')]
     pub params: Vec<String>,
     /// write a figure (.svg, .pdf or .png) of the nested rings and the control net
-    #[arg(long)]
+    #[arg(short, long)]
     pub out: Option<PathBuf>,
     /// draw the normalised wedge of one sector (angle 2π/n stretched to π/2) instead of the rings
     #[arg(long)]
@@ -52,7 +52,7 @@ pub struct CharmapArgs {
 pub enum PlotWhat {
     /// Leading eigenvalue moduli against valence
     Spectrum {
-        /// scheme name (see `subdlab schemes`)
+        /// scheme name (see `subdlab schemes`) or a scheme file (.toml, see schemes/)
         scheme: String,
         /// valence range, e.g. 3..40 (inclusive) or a single valence
         #[arg(long, default_value = "3..40")]
@@ -64,7 +64,7 @@ pub enum PlotWhat {
         #[arg(long, default_value_t = 3)]
         count: usize,
         /// output figure (.svg, .pdf or .png)
-        #[arg(long)]
+        #[arg(short, long)]
         out: PathBuf,
     },
 }
@@ -112,18 +112,17 @@ pub fn charmap(a: &CharmapArgs) -> Result<(), String> {
     if a.json {
         print_json(&map)
     } else {
-        print!("{}", table(&map));
-        Ok(())
+        crate::io::out(&table(&map))
     }
 }
 
 fn table(m: &CharMap) -> String {
     let mut out = format!(
-        "scheme {}  valence {}  λ1 = {}  blocks {:?}\nlevels {} ({} refinements)  resolution {}\n\n",
+        "scheme {}  valence {}  λ1 = {}  blocks {}\nlevels {} ({} refinements)  resolution {}\n\n",
         m.scheme,
         m.valence,
         crate::spectrum::fmt_f(m.lambda1),
-        m.subdominant_blocks,
+        m.subdominant_blocks.iter().map(|b| b.to_string()).collect::<Vec<_>>().join(", "),
         m.levels,
         m.refinements,
         m.resolution
@@ -131,7 +130,8 @@ fn table(m: &CharMap) -> String {
     let yes = |b: bool| if b { "yes" } else { "NO" };
     out += &format!("regular    {}\ninjective  {}\n", yes(m.regular), yes(m.injective));
     if let Some(w) = m.winding_number {
-        out += &format!("winding number {w} (inner boundary {:?})\n", m.inner_winding_number);
+        let inner = m.inner_winding_number.map(|x| x.to_string()).unwrap_or_else(|| "-".into());
+        out += &format!("winding number {w} (inner boundary {inner})\n");
     }
     if let (Some(o), Some(c), Some(p)) = (m.overlap_pixels, m.copy_overlap_pixels, m.ring_pixels) {
         out += &format!("overlap pixels {o} (ring {p} pixels; shared with the scaled copy {c})\n");

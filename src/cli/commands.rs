@@ -8,20 +8,29 @@ use crate::schemes::{self, Scheme};
 use crate::spectrum::stencils::stencils;
 use crate::spectrum::{analyse, Analysis, Method, Options, Spectrum};
 
-pub fn dispatch(cmd: Command) -> Result<(), String> {
+/// Runs a command; Ok holds the exit status (0, or 1 from `verify` when a
+/// claim is not as required).
+pub fn dispatch(cmd: Command) -> Result<i32, String> {
+    if let Command::Verify { paper, claims, json, junit, check_expected } = cmd {
+        let opts = super::verify::VerifyOptions { json, junit, check_expected };
+        return super::verify::run(paper, &claims, &opts);
+    }
+    dispatch_other(cmd).map(|()| 0)
+}
+
+fn dispatch_other(cmd: Command) -> Result<(), String> {
     // Lattice and curve schemes have no mesh configuration: the registry names
     // their family, and their analyses are routed first.
     if let Some(result) = super::lattice::dispatch(&cmd) {
         return result;
     }
     match cmd {
-        Command::Verify { paper, claims, json, junit } => super::verify::run(paper, &claims, json, junit.as_deref()),
+        Command::Verify { .. } => unreachable!("verify is dispatched first"),
         Command::Sweep(a) => sweep(&a),
         Command::Report { out } => {
             let files = crate::report::build()?;
             crate::report::write(&out, &files)?;
-            println!("wrote {} files to {}", files.len(), out.display());
-            Ok(())
+            out_text(&format!("wrote {} files to {}\n", files.len(), out.display()))
         }
         Command::Schemes { files, json } => list_schemes(&files, json),
         Command::Refine { mesh, scheme, levels, params, output, fcv_scale, four_directional, vertex_params } => {
@@ -38,8 +47,7 @@ pub fn dispatch(cmd: Command) -> Result<(), String> {
             if a.json {
                 print_json(&analysis.spectrum)
             } else {
-                print!("{}", spectrum_table(&analysis.spectrum));
-                Ok(())
+                out_text(&spectrum_table(&analysis.spectrum))
             }
         }
         Command::Stencils(a) => {
@@ -48,21 +56,21 @@ pub fn dispatch(cmd: Command) -> Result<(), String> {
             if a.json {
                 print_json(&st)
             } else {
-                print!("{}", stencil_table(&st));
-                Ok(())
+                out_text(&stencil_table(&st))
             }
         }
         Command::Matrix { common, format, output } => {
+            let format = matrix_format(format.as_deref(), common.json)?;
             let (scheme, analysis) = run_analysis(&common)?;
-            let text = match format.as_str() {
+            let text = match format {
                 "mtx" => to_matrix_market(
                     &analysis.matrix,
                     &format!(
-                        "subdlab local subdivision matrix: scheme {} valence {} faces {} neighbourhood {:?}",
+                        "subdlab local subdivision matrix: scheme {} valence {} faces {} neighbourhood {}",
                         scheme.name(),
                         common.valence,
                         analysis.spectrum.faces,
-                        analysis.spectrum.neighbourhood
+                        kind_name(analysis.spectrum.neighbourhood)
                     ),
                 ),
                 "json" => {
@@ -79,18 +87,35 @@ pub fn dispatch(cmd: Command) -> Result<(), String> {
                             (0..q.size()).map(|i| (0..q.size()).map(|j| q.get(i, j).to_string()).collect()).collect()
                         }),
                     };
-                    serde_json::to_string_pretty(&j).map_err(|e| e.to_string())? + "\n"
+                    crate::io::json_text(&j)? + "\n"
                 }
                 other => return Err(format!("unknown matrix format '{other}'; use mtx or json")),
             };
             match output {
                 Some(p) => write_atomic(&p, text.as_bytes()),
-                None => {
-                    print!("{text}");
-                    Ok(())
-                }
+                None => out_text(&text),
             }
         }
+    }
+}
+
+pub(super) use crate::io::out as out_text;
+
+/// The matrix format: `--format` (mtx or json), or json for `--json`.
+pub(super) fn matrix_format(format: Option<&str>, json: bool) -> Result<&str, String> {
+    match (format, json) {
+        (None, false) => Ok("mtx"),
+        (None, true) | (Some("json"), _) => Ok("json"),
+        (Some(f), true) => Err(format!("--json asks for the json format, but --format is {f}")),
+        (Some(f), false) => Ok(f),
+    }
+}
+
+/// "minimal" or "analysis", as on the command line.
+pub(super) fn kind_name(k: NeighbourhoodKind) -> &'static str {
+    match k {
+        NeighbourhoodKind::Minimal => "minimal",
+        NeighbourhoodKind::Analysis => "analysis",
     }
 }
 
@@ -192,33 +217,41 @@ fn list_schemes(files: &[std::path::PathBuf], json: bool) -> Result<(), String> 
         return print_json(&list);
     }
     let w = list.iter().map(|e| e.name.chars().count() + 1).max().unwrap_or(0).max(16);
+    let mut text = String::new();
+    // names and descriptions come from files: shown with control characters escaped
+    let shown = crate::io::printable;
     for e in &list {
-        println!("{:<w$} {}", e.name, e.description);
+        text += &format!("{:<w$} {}\n", shown(&e.name), shown(&e.description));
         if let (Some(f), Some(t)) = (&e.file, e.topology) {
-            println!("{:<w$} file {f}, topology {t}", "");
+            text += &format!("{:<w$} file {}, topology {t}\n", "", shown(f));
         }
         if e.params.is_empty() {
-            println!("{:<w$} (no parameters)", "");
+            text += &format!("{:<w$} (no parameters)\n", "");
         }
         for p in &e.params {
             let default = if p.default.is_empty() { "(scheme rule)" } else { p.default.as_str() };
-            println!(
-                "{:<w$} --param {}=VALUE  default {}  range [{}, {}]  {}",
-                "", p.name, default, p.min, p.max, p.description
+            text += &format!(
+                "{:<w$} --param {}=VALUE  default {}  range [{}, {}]  {}\n",
+                "",
+                shown(&p.name),
+                shown(default),
+                p.min,
+                p.max,
+                shown(&p.description)
             );
         }
     }
-    Ok(())
+    out_text(&text)
 }
 
 pub(super) fn spectrum_table(s: &Spectrum) -> String {
     let mut out = String::new();
     out += &format!(
-        "scheme {}  valence {}  faces {}  neighbourhood {:?} ({} vertices; minimal {}, analysis {})\n",
+        "scheme {}  valence {}  faces {}  neighbourhood {} ({} vertices; minimal {}, analysis {})\n",
         s.scheme,
         s.valence,
         short_faces(&s.faces),
-        s.neighbourhood,
+        kind_name(s.neighbourhood),
         s.matrix_size,
         s.minimal_size,
         s.analysis_size
@@ -230,8 +263,11 @@ pub(super) fn spectrum_table(s: &Spectrum) -> String {
         );
     }
     out += &format!(
-        "method {:?}: blocks {}\n\n",
-        s.method,
+        "method {}: blocks {}\n\n",
+        match s.method {
+            Method::Dft => "dft",
+            Method::Full => "full",
+        },
         s.blocks.iter().map(|b| format!("{}:{}", b.index, b.size)).collect::<Vec<_>>().join(" ")
     );
     out += &format!("{:>4}  {:<34} {:>14}  {:>4} {:>4}  {}\n", "#", "eigenvalue", "modulus", "alg", "geo", "blocks");
@@ -289,8 +325,11 @@ fn compact_blocks(b: &[usize]) -> String {
 
 pub(super) fn stencil_table(st: &crate::spectrum::stencils::Stencils) -> String {
     let mut out = format!(
-        "scheme {}  valence {}  faces {}  neighbourhood {:?}\n\n",
-        st.scheme, st.valence, st.faces, st.neighbourhood
+        "scheme {}  valence {}  faces {}  neighbourhood {}\n\n",
+        st.scheme,
+        st.valence,
+        st.faces,
+        kind_name(st.neighbourhood)
     );
     out += &format!("{:<22} {:>22}", "vertex", "limit");
     for k in 0..st.tangent.len() {
@@ -378,17 +417,18 @@ fn sweep(args: &super::SweepArgs) -> Result<(), String> {
     let name = grid.param.as_ref().map(|p| p.0.clone()).unwrap_or_default();
     // one row of cells per point; CSV joins them, the table pads them
     const WIDTHS: [usize; 9] = [7, 10, 14, 14, 14, 14, 5, 5, 8];
-    let print_row = |cells: &[String], error: &str| {
+    let mut text = String::new();
+    let mut print_row = |cells: &[String], error: &str| {
         if csv {
-            println!("{},{}", cells.join(","), error.replace(',', ";"));
+            text += &format!("{},{}\n", cells.join(","), error.replace(',', ";"));
         } else {
             let padded: Vec<String> = cells.iter().zip(WIDTHS).map(|(c, w)| format!("{c:>w$}")).collect();
             let note = if error.is_empty() { String::new() } else { format!("  ({error})") };
-            println!("{}{note}", padded.join(" "));
+            text += &format!("{}{note}\n", padded.join(" "));
         }
     };
     if csv {
-        println!("valence,{name},lambda0,lambda1,lambda2,lambda3,convergent,c1_spectral,charmap,error");
+        print_row(&[format!("valence,{name},lambda0,lambda1,lambda2,lambda3,convergent,c1_spectral,charmap")], "error");
     } else {
         let head = ["valence", name.as_str(), "|λ0|", "|λ1|", "|λ2|", "|λ3|", "conv", "C1", "charmap"];
         print_row(&head.map(String::from), "");
@@ -412,11 +452,11 @@ fn sweep(args: &super::SweepArgs) -> Result<(), String> {
         for (what, list) in
             [("convergent (λ0 = 1 simple and dominant)", &converging), ("admissible (every computed test)", &intervals)]
         {
-            println!("\nintervals of {name} where the scheme is {what}:");
+            text += &format!("\nintervals of {name} where the scheme is {what}:\n");
             for i in list {
-                println!("  valence {:>4}: [{}, {}]", i.valence, i.from, i.to);
+                text += &format!("  valence {:>4}: [{}, {}]\n", i.valence, i.from, i.to);
             }
         }
     }
-    Ok(())
+    out_text(&text)
 }

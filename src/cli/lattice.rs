@@ -6,7 +6,7 @@
 //! reuses the mesh tables and JSON types, so the stable field names are the
 //! same as for every other scheme.
 
-use super::commands::parse_params;
+use super::commands::{out_text, parse_params};
 use super::{AnalysisArgs, Command};
 use crate::io::{print_json, write_atomic};
 use crate::lattice::analysis::{analyse, LatticeAnalysis};
@@ -62,9 +62,11 @@ fn run(cmd: &Command, a: &AnalysisArgs) -> Result<(), String> {
             if a.json {
                 print_json(&analysis.spectrum)
             } else {
-                print!("{}", super::commands::spectrum_table(&analysis.spectrum));
-                println!("window: {}", window_text(&analysis.window));
-                Ok(())
+                out_text(&format!(
+                    "{}window: {}\n",
+                    super::commands::spectrum_table(&analysis.spectrum),
+                    window_text(&analysis.window)
+                ))
             }
         }
         Command::Stencils(_) => {
@@ -72,19 +74,18 @@ fn run(cmd: &Command, a: &AnalysisArgs) -> Result<(), String> {
             if a.json {
                 print_json(&st)
             } else {
-                print!("{}", super::commands::stencil_table(&st));
-                Ok(())
+                out_text(&super::commands::stencil_table(&st))
             }
         }
         Command::Matrix { format, output, .. } => {
             let m = &analysis.matrix;
-            let text = match format.as_str() {
+            let text = match super::commands::matrix_format(format.as_deref(), a.json)? {
                 "mtx" => to_matrix_market(
                     m,
                     &format!(
-                        "subdlab local subdivision matrix: scheme {} (regular lattice) neighbourhood {:?}\nwindow {}",
+                        "subdlab local subdivision matrix: scheme {} (regular lattice) neighbourhood {}\nwindow {}",
                         scheme.name(),
-                        m.kind,
+                        super::commands::kind_name(m.kind),
                         window_text(&analysis.window)
                     ),
                 ),
@@ -102,16 +103,13 @@ fn run(cmd: &Command, a: &AnalysisArgs) -> Result<(), String> {
                             (0..q.size()).map(|i| (0..q.size()).map(|j| q.get(i, j).to_string()).collect()).collect(),
                         ),
                     };
-                    serde_json::to_string_pretty(&j).map_err(|e| e.to_string())? + "\n"
+                    crate::io::json_text(&j)? + "\n"
                 }
                 other => return Err(format!("unknown matrix format '{other}'; use mtx or json")),
             };
             match output {
                 Some(p) => write_atomic(p, text.as_bytes()),
-                None => {
-                    print!("{text}");
-                    Ok(())
-                }
+                None => out_text(&text),
             }
         }
         _ => Ok(()),

@@ -76,11 +76,7 @@ pub fn refine(
 fn read_vertex_params(path: &Path, scheme: &dyn crate::schemes::Scheme, count: usize) -> Result<Vec<f64>, String> {
     let spec = scheme.vertex_param().expect("checked by the caller");
     let name = spec.name;
-    let meta = std::fs::metadata(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    if meta.len() > 64 * 1024 * 1024 {
-        return Err(format!("{}: file too large for per-vertex parameters", path.display()));
-    }
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let text = super::verify::read_capped(path, 64 * 1024 * 1024, "file of per-vertex parameters")?;
     let mut values = Vec::new();
     for (k, line) in text.lines().enumerate() {
         let t = line.split('#').next().unwrap_or("").trim();
@@ -115,8 +111,7 @@ pub fn curve(scheme: &str, params: &[String], neighbourhood: &str, json: bool) -
     if json {
         return print_json(&spec);
     }
-    print!("{}", curve_table(&spec));
-    Ok(())
+    crate::io::out(&curve_table(&spec))
 }
 
 fn curve_table(s: &CurveSpectrum) -> String {

@@ -11,7 +11,7 @@ mod verify;
 use clap::{Args, Parser, Subcommand};
 
 #[derive(Parser, Debug)]
-#[command(name = "subdlab", version, about = "Eigenanalysis and smoothness verification of subdivision surfaces")]
+#[command(name = "subdlab", version = env!("SUBDLAB_VERSION_LONG"), about = "Eigenanalysis and smoothness verification of subdivision surfaces")]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
@@ -24,7 +24,7 @@ pub enum Command {
     /// Write reports/: an index and one page per paper (claims, figures, refuted statements)
     Report {
         /// the report folder
-        #[arg(long, default_value = "reports")]
+        #[arg(short, long, default_value = "reports")]
         out: std::path::PathBuf,
     },
     /// Check the papers' statements (built-in registry, or your own claim files)
@@ -32,20 +32,28 @@ pub enum Command {
         /// only this paper of the built-in registry (see the list printed without it)
         #[arg(long)]
         paper: Option<String>,
-        /// a claim file of your own (TOML, same format as claims/); repeatable.
-        /// Exits non-zero when any of its claims is not HOLDS
+        /// a claim file of your own (TOML, same format as claims/, see
+        /// examples/claims/); repeatable
         #[arg(long)]
         claims: Vec<std::path::PathBuf>,
+        /// machine-readable JSON output (stable field names)
         #[arg(long)]
         json: bool,
-        /// also write a JUnit XML report (atomically)
+        /// also write a JUnit XML report (atomically; written even when a
+        /// claim is malformed)
         #[arg(long)]
         junit: Option<std::path::PathBuf>,
+        /// pass a claim when its verdict is the one the file records in
+        /// `expected` (HOLDS when it records none): an expected refutation
+        /// passes. Exit status 0 when every verdict is as recorded
+        #[arg(long)]
+        check_expected: bool,
     },
     /// List the built-in schemes (or the given scheme files) with their parameters, defaults and ranges
     Schemes {
         /// scheme files (TOML) to describe instead of the built-in schemes
         files: Vec<std::path::PathBuf>,
+        /// machine-readable JSON output (stable field names)
         #[arg(long)]
         json: bool,
     },
@@ -57,11 +65,11 @@ pub enum Command {
     Matrix {
         #[command(flatten)]
         common: AnalysisArgs,
-        /// mtx (Matrix Market) or json
-        #[arg(long, default_value = "mtx")]
-        format: String,
+        /// mtx (Matrix Market, the default) or json (also chosen by --json)
+        #[arg(long)]
+        format: Option<String>,
         /// write to this file (atomically) instead of standard output
-        #[arg(short, long)]
+        #[arg(short = 'o', long = "out", visible_alias = "output")]
         output: Option<std::path::PathBuf>,
     },
     /// Refine a closed OBJ mesh with a scheme (the same rules as the analysis); writes OBJ
@@ -78,7 +86,7 @@ pub enum Command {
         #[arg(long = "param", short = 'p')]
         params: Vec<String>,
         /// output OBJ file (written atomically)
-        #[arg(short, long)]
+        #[arg(short = 'o', long = "out", visible_alias = "output")]
         output: std::path::PathBuf,
         /// schemes with face control vertices (non-box): initial FCVs at this
         /// multiple of each face's barycentre (the paper's section 5 uses 0.5, 1, 1.5)
@@ -145,21 +153,48 @@ pub struct AnalysisArgs {
     pub json: bool,
 }
 
-pub fn run() -> Result<(), String> {
+/// Runs the command line and returns the exit status: 0 success; 1 when
+/// `verify` finds a claim that is not as required (REFUTED or INCONCLUSIVE);
+/// 2 for usage errors (clap's full message: what is missing, the usage line)
+/// and for every other error (one line on stderr, control characters shown
+/// escaped).
+pub fn main() -> i32 {
     let cli = match Cli::try_parse() {
         Ok(c) => c,
         Err(e) => {
-            // help and version go to stdout with exit 0; usage errors are one line
-            if matches!(e.kind(), clap::error::ErrorKind::DisplayHelp | clap::error::ErrorKind::DisplayVersion) {
-                print!("{e}");
-                return Ok(());
+            use clap::error::ErrorKind;
+            // help and version go to stdout with exit 0
+            if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
+                return match crate::io::out(&e.to_string()) {
+                    Ok(()) => 0,
+                    Err(m) => {
+                        eprintln!("error: {m}");
+                        2
+                    }
+                };
             }
-            let msg = e.to_string();
-            let first = msg.lines().find(|l| !l.trim().is_empty()).unwrap_or("invalid arguments");
-            return Err(first.trim_start_matches("error: ").to_string());
+            // a usage error (or the help after a bare `subdlab`): clap's whole message
+            eprint!("{}", e.render());
+            return 2;
         }
     };
-    commands::dispatch(cli.command)
+    match commands::dispatch(cli.command) {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("error: {}", crate::io::printable(&e));
+            2
+        }
+    }
+}
+
+/// Runs the command line; usage errors and failures are the message (see
+/// [`main`] for the exit statuses the binary uses).
+pub fn run() -> Result<(), String> {
+    let cli = Cli::try_parse().map_err(|e| e.to_string())?;
+    match commands::dispatch(cli.command)? {
+        0 => Ok(()),
+        _ => Err("some claims are not as required".into()),
+    }
 }
 
 #[derive(Args, Debug)]
@@ -181,12 +216,14 @@ pub struct SweepArgs {
     /// with --charmap: pixels per side of the rasterisation (default as `subdlab charmap`: 512)
     #[arg(long)]
     pub resolution: Option<usize>,
+    /// machine-readable JSON output (stable field names)
     #[arg(long)]
     pub json: bool,
+    /// comma-separated values, one row per point
     #[arg(long)]
     pub csv: bool,
     /// draw the admissible intervals (valence x swept value) into FILE.svg, FILE.pdf or FILE.png
-    #[arg(long)]
+    #[arg(short = 'o', long = "out", visible_alias = "plot")]
     pub plot: Option<std::path::PathBuf>,
     /// a reference bound to draw on the plot, an expression in n (e.g. a paper's
     /// stated bound "1/4 - cos(2 pi / n)/4"); repeatable
@@ -196,7 +233,7 @@ pub struct SweepArgs {
     /// its length is the valence
     #[arg(long)]
     pub faces: Option<String>,
-    /// worker threads (default: one per available core)
-    #[arg(long, default_value_t = 0, value_parser = clap::value_parser!(u16).range(0..=1024))]
+    /// worker threads (0, the default: one per available core)
+    #[arg(long, default_value_t = 0, hide_default_value = true, value_parser = clap::value_parser!(u16).range(0..=1024))]
     pub threads: u16,
 }

@@ -30,6 +30,10 @@ pub enum Expr {
     I,
     Neg(Box<Expr>),
     Bin(char, Box<Expr>, Box<Expr>),
+    /// a left-associative chain `first op1 e1 op2 e2 ...` of `+ -` or of
+    /// `* /` (implicit multiplication included), kept flat so that evaluation
+    /// of a long chain does not recurse once per operator
+    Chain(Box<Expr>, Vec<(char, Expr)>),
     Call(String, Box<Expr>),
     /// `sum(var, from, to, body)`: body summed over the integers var = from..=to
     Sum(String, Box<Expr>, Box<Expr>, Box<Expr>),
@@ -38,6 +42,12 @@ pub enum Expr {
 /// The most terms one evaluation of an expression may add up, counting every
 /// term of nested sums: evaluation time stays bounded whatever the input.
 pub const MAX_SUM_TERMS: u64 = 10_000;
+/// Largest exact rational an evaluation builds (bits of numerator plus
+/// denominator): past it the exact path declines (None) and the float value
+/// is used, so the cost of every exact operation stays bounded.
+pub const MAX_EXACT_BITS: u64 = 4096;
+/// Deepest nesting of parentheses, signs, powers and calls.
+pub const MAX_DEPTH: usize = 200;
 /// Names the language itself gives a meaning (not usable as a sum variable).
 const BUILTIN_NAMES: [&str; 9] = ["pi", "i", "cos", "sin", "sqrt", "cbrt", "abs", "kronecker", "sum"];
 const SUM_FORM: &str = "sum(variable, from, to, expression)";
@@ -117,34 +127,36 @@ impl Parser {
         }
     }
     fn sum(&mut self, depth: usize) -> Result<Expr, String> {
-        let mut e = self.product(depth)?;
+        let first = self.product(depth)?;
+        let mut rest = Vec::new();
         loop {
             let op = match self.peek() {
                 Some(Tok::Op(c)) if *c == '+' || *c == '-' => *c,
-                _ => return Ok(e),
+                _ => return Ok(chain(first, rest)),
             };
             self.pos += 1;
-            e = Expr::Bin(op, Box::new(e), Box::new(self.product(depth)?));
+            rest.push((op, self.product(depth)?));
         }
     }
     fn product(&mut self, depth: usize) -> Result<Expr, String> {
-        let mut e = self.unary(depth)?;
+        let first = self.unary(depth)?;
+        let mut rest = Vec::new();
         loop {
             let op = match self.peek() {
                 Some(Tok::Op(c)) if *c == '*' || *c == '/' => *c,
                 // implicit multiplication: `2 pi`, `3 cos(x)`, `4a`
                 Some(Tok::Num(_)) | Some(Tok::Ident(_)) | Some(Tok::Op('(')) => '*',
-                _ => return Ok(e),
+                _ => return Ok(chain(first, rest)),
             };
             if op != '*' || matches!(self.peek(), Some(Tok::Op('*'))) {
                 self.pos += 1;
             }
-            e = Expr::Bin(op, Box::new(e), Box::new(self.unary(depth)?));
+            rest.push((op, self.unary(depth)?));
         }
     }
     fn unary(&mut self, depth: usize) -> Result<Expr, String> {
-        if depth > 200 {
-            return Err("expression nested too deeply".into());
+        if depth > MAX_DEPTH {
+            return Err(format!("expression nested too deeply (more than {MAX_DEPTH} levels)"));
         }
         if self.eat('-') {
             return Ok(Expr::Neg(Box::new(self.unary(depth + 1)?)));
@@ -246,6 +258,81 @@ impl Parser {
     }
 }
 
+/// One operand, or a flat chain of several.
+fn chain(first: Expr, rest: Vec<(char, Expr)>) -> Expr {
+    if rest.is_empty() {
+        first
+    } else {
+        Expr::Chain(Box::new(first), rest)
+    }
+}
+
+/// Floating-point `x op y` for + - * / and ^.
+fn float_op(op: char, x: Complex64, y: Complex64) -> Result<Complex64, String> {
+    Ok(match op {
+        '+' => x + y,
+        '-' => x - y,
+        '*' => x * y,
+        '/' => {
+            if y.norm() == 0.0 {
+                return Err("division by zero".into());
+            }
+            x / y
+        }
+        _ => {
+            if y.im == 0.0 && y.re.fract() == 0.0 && y.re.abs() <= 64.0 {
+                x.powi(y.re as i32)
+            } else {
+                // principal branch: a real base has imaginary part +0, never -0
+                positive_zero(x).powc(y)
+            }
+        }
+    })
+}
+
+/// The same number with a zero imaginary part of sign +: −1 as (−1, −0.0)
+/// (what negating 1 gives) would put sqrt and powers on the wrong side of the
+/// branch cut (sqrt(−1) = −i).
+fn positive_zero(z: Complex64) -> Complex64 {
+    Complex64::new(z.re, z.im + 0.0)
+}
+
+fn too_big(q: &Rational) -> bool {
+    q.numer().bits() + q.denom().bits() > MAX_EXACT_BITS
+}
+
+/// Exact `x op y` for + - * / and ^, None when undefined, not rational, or
+/// larger than [`MAX_EXACT_BITS`].
+fn exact_op(op: char, x: Rational, y: Rational) -> Option<Rational> {
+    let r = match op {
+        '+' => x + y,
+        '-' => x - y,
+        '*' => x * y,
+        '/' => {
+            if y.is_zero() {
+                return None;
+            }
+            x / y
+        }
+        _ => {
+            if !y.is_integer() || y.abs() > Rational::from_integer(256.into()) {
+                return None;
+            }
+            let k = y.to_integer().to_i32()?;
+            if k < 0 && x.is_zero() {
+                return None;
+            }
+            // decide from the operands' sizes before computing the power
+            let bits = x.numer().bits() + x.denom().bits();
+            if bits.saturating_mul(k.unsigned_abs() as u64) > 2 * MAX_EXACT_BITS {
+                return None;
+            }
+            num_traits::pow::Pow::pow(x, k)
+        }
+    };
+    (!too_big(&r)).then_some(r)
+}
+
 /// An integer summation bound from its floating value.
 fn sum_bound(z: Complex64, what: &str) -> Result<i64, String> {
     let r = z.re.round();
@@ -314,6 +401,12 @@ impl Expr {
                 }
             }
             Expr::Neg(a) | Expr::Call(_, a) => a.free_variables(bound, out),
+            Expr::Chain(first, rest) => {
+                first.free_variables(bound, out);
+                for (_, e) in rest {
+                    e.free_variables(bound, out);
+                }
+            }
             Expr::Bin(_, a, b) => {
                 a.free_variables(bound, out);
                 b.free_variables(bound, out);
@@ -342,36 +435,31 @@ impl Expr {
             Expr::I => Complex64::new(0.0, 1.0),
             Expr::Var(v) => Complex64::new(env.get(v).ok_or_else(|| format!("unknown variable '{v}'"))?.value, 0.0),
             Expr::Neg(a) => -a.eval_counted(env, terms)?,
-            Expr::Bin(op, a, b) => {
-                let (x, y) = (a.eval_counted(env, terms)?, b.eval_counted(env, terms)?);
-                match op {
-                    '+' => x + y,
-                    '-' => x - y,
-                    '*' => x * y,
-                    '/' => {
-                        if y.norm() == 0.0 {
-                            return Err("division by zero".into());
-                        }
-                        x / y
-                    }
-                    _ => {
-                        if y.im == 0.0 && y.re.fract() == 0.0 && y.re.abs() <= 64.0 {
-                            x.powi(y.re as i32)
-                        } else {
-                            x.powc(y)
-                        }
-                    }
+            Expr::Bin(op, a, b) => float_op(*op, a.eval_counted(env, terms)?, b.eval_counted(env, terms)?)?,
+            Expr::Chain(first, rest) => {
+                let mut x = first.eval_counted(env, terms)?;
+                for (op, e) in rest {
+                    x = float_op(*op, x, e.eval_counted(env, terms)?)?;
                 }
+                x
+            }
+            Expr::Call(f, a) if f == "kronecker" => {
+                // decided exactly where the argument is rational (as `exact`
+                // does), else within 1e-12 of zero
+                let zero = match a.exact(env) {
+                    Some(q) => q.is_zero(),
+                    None => a.eval_counted(env, terms)?.norm() < 1e-12,
+                };
+                Complex64::new(if zero { 1.0 } else { 0.0 }, 0.0)
             }
             Expr::Call(f, a) => {
-                let x = a.eval_counted(env, terms)?;
+                let x = positive_zero(a.eval_counted(env, terms)?);
                 match f.as_str() {
                     "cos" => x.cos(),
                     "sin" => x.sin(),
                     "sqrt" => x.sqrt(),
                     "cbrt" if x.im == 0.0 => Complex64::new(x.re.cbrt(), 0.0),
                     "cbrt" => x.powf(1.0 / 3.0),
-                    "kronecker" => Complex64::new(if x.norm() < 1e-12 { 1.0 } else { 0.0 }, 0.0),
                     _ => Complex64::new(x.norm(), 0.0),
                 }
             }
@@ -404,35 +492,13 @@ impl Expr {
             Expr::Num(_, q) => q.clone()?,
             Expr::Var(v) => env.get(v)?.exact.clone()?,
             Expr::Neg(a) => -a.exact_counted(env, terms)?,
-            Expr::Bin(op, a, b) => {
-                let (x, y) = (a.exact_counted(env, terms)?, b.exact_counted(env, terms)?);
-                match op {
-                    '+' => x + y,
-                    '-' => x - y,
-                    '*' => x * y,
-                    '/' => {
-                        if y.is_zero() {
-                            return None;
-                        }
-                        x / y
-                    }
-                    _ => {
-                        if !y.is_integer() || y.abs() > Rational::from_integer(256.into()) {
-                            return None;
-                        }
-                        let k = y.to_integer().to_i32()?;
-                        if k < 0 && x.is_zero() {
-                            return None;
-                        }
-                        // nested powers ((9^256)^256)^256 would need gigabytes of
-                        // digits: past a million bits the value is not worth it
-                        let bits = x.numer().bits() + x.denom().bits();
-                        if bits.saturating_mul(k.unsigned_abs() as u64) > 1 << 20 {
-                            return None;
-                        }
-                        num_traits::pow::Pow::pow(x, k)
-                    }
+            Expr::Bin(op, a, b) => exact_op(*op, a.exact_counted(env, terms)?, b.exact_counted(env, terms)?)?,
+            Expr::Chain(first, rest) => {
+                let mut x = first.exact_counted(env, terms)?;
+                for (op, e) in rest {
+                    x = exact_op(*op, x, e.exact_counted(env, terms)?)?;
                 }
+                x
             }
             Expr::Call(f, a) => match f.as_str() {
                 // cos(q π) and sin(q π) for rational q
@@ -470,8 +536,8 @@ impl Expr {
                 for k in lo..=hi {
                     inner.insert(var.clone(), sum_index(k));
                     total += summand.exact_counted(&inner, terms)?;
-                    // as for powers: a sum whose digits explode is not worth it
-                    if total.numer().bits() + total.denom().bits() > 1 << 16 {
+                    // as for every operation: a sum whose digits explode is not worth it
+                    if too_big(&total) {
                         return None;
                     }
                 }
@@ -499,6 +565,37 @@ impl Expr {
             Expr::Bin(op @ ('+' | '-'), a, b) => {
                 let (x, y) = (a.pi_multiple(env, terms)?, b.pi_multiple(env, terms)?);
                 Some(if *op == '+' { x + y } else { x - y })
+            }
+            Expr::Chain(first, rest) if matches!(rest[0].0, '+' | '-') => {
+                let mut x = first.pi_multiple(env, terms)?;
+                for (op, e) in rest {
+                    let y = e.pi_multiple(env, terms)?;
+                    x = if *op == '+' { x + y } else { x - y };
+                }
+                Some(x)
+            }
+            Expr::Chain(first, rest) => {
+                // a product coef · π^power: a multiple of π when power is 1,
+                // or when the coefficient is 0
+                let mut coef = Rational::one();
+                let mut power = 0u32;
+                let factors = std::iter::once(('*', &**first)).chain(rest.iter().map(|(op, e)| (*op, e)));
+                for (op, e) in factors {
+                    match (e.exact_counted(env, terms), op) {
+                        (Some(q), '*') => coef = exact_op('*', coef, q)?,
+                        (Some(q), _) => coef = exact_op('/', coef, q)?,
+                        (None, '*') => {
+                            coef = exact_op('*', coef, e.pi_multiple(env, terms)?)?;
+                            power += 1;
+                        }
+                        (None, _) => return None,
+                    }
+                }
+                match power {
+                    1 => Some(coef),
+                    _ if coef.is_zero() => Some(coef),
+                    _ => None,
+                }
             }
             e => e.exact_counted(env, terms).filter(|x| x.is_zero()),
         }

@@ -196,6 +196,14 @@ impl ParamValue {
                 return Err(format!("'{t}' divides by zero"));
             }
             let r = Rational::new(p, q);
+            // like decimals (60 digits), exact values stay small enough for the
+            // exact analysis to finish
+            if r.numer().bits() > MAX_FRACTION_BITS || r.denom().bits() > MAX_FRACTION_BITS {
+                return Err(format!(
+                    "'{}': numerator and denominator (reduced) of at most {MAX_FRACTION_BITS} bits (about 120 digits) are supported",
+                    if t.len() > 40 { format!("{}…", &t[..t.char_indices().nth(40).map_or(t.len(), |c| c.0)]) } else { t.to_string() }
+                ));
+            }
             return Ok(ParamValue { value: Weight::to_f64(&r), exact: Some(r), text: t.to_string() });
         }
         let value: f64 = t.parse().map_err(|_| format!("'{t}' is not a number (use 3/8, 0.375 or 1e-3)"))?;
@@ -205,6 +213,9 @@ impl ParamValue {
         Ok(ParamValue { value, exact: decimal_to_rational(t), text: t.to_string() })
     }
 }
+
+/// Largest numerator or denominator of a fraction `p/q` parameter value.
+pub const MAX_FRACTION_BITS: u64 = 400;
 
 /// Exact value of a decimal literal such as "-0.375" or "1.5e-2".
 fn decimal_to_rational(t: &str) -> Option<Rational> {

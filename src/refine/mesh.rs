@@ -48,6 +48,14 @@ pub fn refine_mesh(
             scheme.boundary_note().map(|n| format!(" ({n})")).unwrap_or_default()
         ));
     }
+    // refuse before any work: the first level's size, then the host's growth per level
+    let estimate = (1..levels)
+        .fold(size_bound(scheme.topology(), mesh), |size, _| size.saturating_mul(growth_per_level(scheme.topology())));
+    if estimate > MAX_REFINED_FACES {
+        return Err(format!(
+            "{levels} level(s) would produce about {estimate} faces or vertices (estimated before refining), above the supported {MAX_REFINED_FACES}; use fewer levels"
+        ));
+    }
     let mut mesh = mesh.clone();
     let mut points: Vec<Option<[f64; 3]>> = points.iter().map(|p| Some(*p)).collect();
     for level in 1..=levels {
@@ -116,6 +124,16 @@ pub fn composite_weights(
 
 /// The larger of the face and vertex counts of the next level, computed from
 /// the refinement host's counting rules before any work is done.
+/// How many times the faces multiply per level once the mesh is refined
+/// (each split's count of new faces per old face, asymptotically).
+fn growth_per_level(topology: Topology) -> usize {
+    match topology {
+        Topology::TernarySplit => 9,
+        Topology::Sqrt3 => 3,
+        _ => 4,
+    }
+}
+
 fn size_bound(topology: Topology, mesh: &PolyMesh) -> usize {
     let corners: usize = mesh.faces().iter().map(|f| f.len()).sum();
     let (v, e, f) = (mesh.num_vertices(), mesh.edges().len(), mesh.num_faces());

@@ -53,7 +53,23 @@ impl Params {
                 }));
             };
             let v = ParamValue::parse(text).map_err(|e| Error::Input(format!("parameter {name}: {e}")))?;
-            if v.value < spec.min || v.value > spec.max {
+            // exact values are compared exactly with integer bounds (1.0000000000000001 > 1)
+            let exact_outside = |bound: f64, below: bool| match (&v.exact, bound.fract() == 0.0 && bound.abs() < 1e15) {
+                (Some(q), true) => {
+                    let b = crate::numeric::Rational::from_integer((bound as i64).into());
+                    if below {
+                        *q < b
+                    } else {
+                        *q > b
+                    }
+                }
+                _ => false,
+            };
+            if v.value < spec.min
+                || v.value > spec.max
+                || exact_outside(spec.min, true)
+                || exact_outside(spec.max, false)
+            {
                 return Err(Error::Input(format!(
                     "parameter {name}={text} is out of range [{}, {}] for scheme '{scheme}'",
                     spec.min, spec.max

@@ -198,6 +198,10 @@ impl Spectrum {
     }
 }
 
+/// Largest matrix analysed whole (`Method::Full`): a dense eigenproblem of
+/// this size takes seconds; beyond, the request is refused up front.
+pub const MAX_FULL_SIZE: usize = 1500;
+
 /// Everything computed for one scheme and configuration.
 pub struct Analysis {
     pub discovered: Discovered,
@@ -219,6 +223,15 @@ pub fn analyse(scheme: &dyn Scheme, config: &Configuration, opts: &Options) -> R
     let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { n };
     let symmetric = period < n;
     let method = opts.method.unwrap_or(if symmetric { Method::Dft } else { Method::Full });
+    if method == Method::Full && size > MAX_FULL_SIZE {
+        // refused before the O(size³) work, with the estimate
+        let minutes = (size as f64 / 1800.0).powi(3);
+        return Err(format!(
+            "the whole-matrix method needs a dense {size}×{size} eigenproblem, above the supported {MAX_FULL_SIZE}×{MAX_FULL_SIZE} \
+             (its cost grows as the cube of the size: about {minutes:.1} min here){}",
+            if symmetric { "; use --method dft" } else { "; this configuration has no rotation symmetry: use a smaller valence" }
+        ));
+    }
     let orbits = Orbits::from_labels(&labels, period, n);
     let (matrix, Decomposition { blocks: blocks_info, mut eigenvalues, synthesis }) = match method {
         Method::Dft => {

@@ -94,6 +94,13 @@ pub fn fails(args: &[&str]) -> String {
     let err = String::from_utf8_lossy(&out.stderr).to_string();
     assert!(!out.status.success(), "{args:?} should fail");
     assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
+    // usage errors are clap's whole message (the error line, the usage line,
+    // the --help hint); every other error is one line
+    if err.trim_end().ends_with("For more information, try '--help'.") {
+        assert_eq!(out.status.code(), Some(2), "{args:?}: usage errors exit 2");
+        assert!(err.starts_with("error: "), "{args:?}: {err:?}");
+        return err.lines().next().unwrap_or_default().to_string();
+    }
     assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: one-line error expected, got {err:?}");
     err
 }

@@ -1,0 +1,586 @@
+//! Regression tests of the robustness findings (output files, expressions,
+//! claim files, standard output, usage errors, expensive requests) and of the
+//! CI user's path (exit statuses, ERROR verdicts, --check-expected, JUnit,
+//! versions, the example claim files). Big inputs are generated here.
+
+mod common;
+use common::{fails, subdlab};
+use std::path::Path;
+
+fn claim_file(dir: &Path, name: &str, claims: &str) -> String {
+    let p = dir.join(name);
+    std::fs::write(&p, format!("paper = \"t\"\ntitle = \"t\"\n{claims}")).unwrap();
+    p.to_str().unwrap().to_string()
+}
+
+fn claim(id: &str, body: &str) -> String {
+    format!("\n[[claim]]\nid = \"{id}\"\nlocation = \"x\"\nstatement = \"x\"\n{body}\n")
+}
+
+fn verdicts(args: &[&str]) -> (Vec<(String, String)>, std::process::Output) {
+    let mut a = args.to_vec();
+    a.push("--json");
+    let out = subdlab(&a);
+    let v: serde_json::Value =
+        serde_json::from_slice(&out.stdout).unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&out.stderr)));
+    let list = v
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|p| p["claims"].as_array().unwrap().clone())
+        .map(|c| (c["id"].as_str().unwrap().to_string(), c["verdict"].as_str().unwrap().to_string()))
+        .collect();
+    (list, out)
+}
+
+// ------------------------------------------------------------ output files
+
+#[cfg(unix)]
+#[test]
+fn outputs_get_umask_modes_and_replaced_files_keep_theirs() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("m.mtx");
+    let o = subdlab(&["matrix", "loop", "-n", "3", "-o", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // the test harness runs with the umask of its parent; the file must be 0666 minus it
+    let umask = {
+        let probe = dir.path().join("probe");
+        std::fs::File::create(&probe).unwrap();
+        0o666 & !std::fs::metadata(&probe).unwrap().permissions().mode() & 0o777
+    };
+    assert_eq!(std::fs::metadata(&out).unwrap().permissions().mode() & 0o777, 0o666 & !umask);
+    // an existing file's mode is kept when it is replaced
+    std::fs::set_permissions(&out, std::fs::Permissions::from_mode(0o640)).unwrap();
+    assert!(subdlab(&["matrix", "loop", "-n", "4", "--out", out.to_str().unwrap()]).status.success());
+    assert_eq!(std::fs::metadata(&out).unwrap().permissions().mode() & 0o777, 0o640);
+    assert!(std::fs::read_to_string(&out).unwrap().contains("valence 4"));
+}
+
+#[cfg(unix)]
+#[test]
+fn symlinks_keep_pointing_and_special_files_are_written_in_place() {
+    let dir = tempfile::tempdir().unwrap();
+    let target = dir.path().join("target.txt");
+    std::fs::write(&target, "old").unwrap();
+    let link = dir.path().join("link.mtx");
+    std::os::unix::fs::symlink(&target, &link).unwrap();
+    assert!(subdlab(&["matrix", "loop", "-n", "3", "--output", link.to_str().unwrap()]).status.success());
+    assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink(), "the link must stay a link");
+    assert!(std::fs::read_to_string(&target).unwrap().starts_with("%%MatrixMarket"));
+    // a FIFO is written into, not replaced by a regular file
+    let fifo = dir.path().join("pipe");
+    let c = std::ffi::CString::new(fifo.to_str().unwrap()).unwrap();
+    // SAFETY: mkfifo with a valid C string
+    assert_eq!(unsafe { libc_mkfifo(c.as_ptr(), 0o600) }, 0);
+    let reader = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || std::fs::read_to_string(fifo).unwrap())
+    };
+    assert!(subdlab(&["matrix", "loop", "-n", "3", "-o", fifo.to_str().unwrap()]).status.success());
+    assert!(reader.join().unwrap().starts_with("%%MatrixMarket"));
+    use std::os::unix::fs::FileTypeExt;
+    assert!(std::fs::metadata(&fifo).unwrap().file_type().is_fifo());
+    // /dev/null stays the device; /dev/stdout reaches standard output
+    assert!(subdlab(&["matrix", "loop", "-n", "3", "-o", "/dev/null"]).status.success());
+    assert!(std::fs::metadata("/dev/null").unwrap().file_type().is_char_device());
+    let o = subdlab(&["matrix", "loop", "-n", "3", "-o", "/dev/stdout"]);
+    assert!(String::from_utf8_lossy(&o.stdout).starts_with("%%MatrixMarket"));
+    // a directory or a dangling link: one-line errors
+    assert!(fails(&["matrix", "loop", "-n", "3", "-o", dir.path().to_str().unwrap()]).contains("is a directory"));
+    let dangling = dir.path().join("dangling");
+    std::os::unix::fs::symlink(dir.path().join("nowhere/x"), &dangling).unwrap();
+    assert!(fails(&["matrix", "loop", "-n", "3", "-o", dangling.to_str().unwrap()]).contains("does not exist"));
+    // nothing else was left in the folder
+    let mut names: Vec<String> =
+        std::fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name().into_string().unwrap()).collect();
+    names.sort();
+    assert_eq!(names, ["dangling", "link.mtx", "pipe", "target.txt"]);
+}
+
+#[cfg(unix)]
+extern "C" {
+    #[link_name = "mkfifo"]
+    fn libc_mkfifo(path: *const std::os::raw::c_char, mode: u32) -> i32;
+}
+
+/// A quad torus of `k` × `k` faces as OBJ text.
+fn torus(k: usize) -> String {
+    let mut s = String::new();
+    for i in 0..k {
+        for j in 0..k {
+            let (u, v) = (i as f64 / k as f64 * std::f64::consts::TAU, j as f64 / k as f64 * std::f64::consts::TAU);
+            s += &format!("v {} {} {}\n", (2.0 + v.cos()) * u.cos(), (2.0 + v.cos()) * u.sin(), v.sin());
+        }
+    }
+    let id = |i: usize, j: usize| (i % k) * k + (j % k) + 1;
+    for i in 0..k {
+        for j in 0..k {
+            s += &format!("f {} {} {} {}\n", id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+        }
+    }
+    s
+}
+
+#[cfg(unix)]
+#[test]
+fn interrupted_writes_leave_no_temporary_and_stale_ones_are_removed() {
+    let dir = tempfile::tempdir().unwrap();
+    let mesh = dir.path().join("torus.obj");
+    std::fs::write(&mesh, torus(350)).unwrap();
+    let out = dir.path().join("out.obj");
+    let temporaries = || {
+        std::fs::read_dir(dir.path())
+            .unwrap()
+            .map(|e| e.unwrap().file_name().into_string().unwrap())
+            .filter(|n| n.contains(".subdlab-"))
+            .collect::<Vec<_>>()
+    };
+    for signal in ["INT", "TERM"] {
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_subdlab"))
+            .args(["refine", mesh.to_str().unwrap(), "--scheme", "catmull-clark", "-l", "2", "-o"])
+            .arg(&out)
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .unwrap();
+        // wait for the temporary to appear, then interrupt the write
+        let t0 = std::time::Instant::now();
+        while temporaries().is_empty() && t0.elapsed().as_secs() < 60 {
+            if child.try_wait().unwrap().is_some() {
+                break;
+            }
+            std::thread::sleep(std::time::Duration::from_millis(2));
+        }
+        let seen = !temporaries().is_empty();
+        let _ = std::process::Command::new("kill").args([&format!("-{signal}"), &child.id().to_string()]).status();
+        let status = child.wait().unwrap();
+        if seen {
+            use std::os::unix::process::ExitStatusExt;
+            assert!(status.signal().is_some() || status.success(), "{status:?}");
+        }
+        assert!(temporaries().is_empty(), "SIGINT/TERM left {:?}", temporaries());
+    }
+    // a temporary of a process that no longer runs (killed with SIGKILL) is
+    // removed by the next write of the same file
+    let stale = dir.path().join(".out.obj.subdlab-999999999-0.tmp");
+    std::fs::write(&stale, "partial").unwrap();
+    let cube = Path::new(env!("CARGO_MANIFEST_DIR")).join("meshes/cube.obj");
+    let o = subdlab(&[
+        "refine",
+        cube.to_str().unwrap(),
+        "--scheme",
+        "catmull-clark",
+        "-l",
+        "1",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(!stale.exists());
+    assert!(temporaries().is_empty());
+}
+
+// ------------------------------------------------------------ standard output, usage
+
+#[cfg(unix)]
+#[test]
+fn full_or_closed_stdout_is_a_one_line_error() {
+    for args in [vec!["schemes"], vec!["spectrum", "loop", "-n", "5", "--json"], vec!["--help"]] {
+        let full = std::fs::OpenOptions::new().write(true).open("/dev/full").unwrap();
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_subdlab")).args(&args).stdout(full).output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(err.contains("cannot write to standard output"), "{err}");
+    }
+    // a closed stdout (`>&-`)
+    let out = std::process::Command::new("sh")
+        .arg("-c")
+        .arg(format!("'{}' schemes >&-", env!("CARGO_BIN_EXE_subdlab")))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("standard output: it is closed"));
+}
+
+#[test]
+fn usage_errors_show_clap_s_whole_message() {
+    let out = subdlab(&["spectrum", "loop"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("--valence <VALENCE>") && err.contains("Usage: subdlab spectrum"), "{err}");
+    let out = subdlab(&[]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("Usage: subdlab <COMMAND>"));
+    // user text in errors is shown with control characters escaped
+    let err = fails(&["spectrum", "four-three", "-n", "5", "--faces", "QQTQT\n"]);
+    assert!(err.contains("\\n"), "{err}");
+}
+
+#[test]
+fn version_and_json_carry_tool_and_schema_versions() {
+    let v = String::from_utf8(subdlab(&["--version"]).stdout).unwrap();
+    assert!(v.starts_with(&format!("subdlab {}", env!("CARGO_PKG_VERSION"))), "{v}");
+    for args in [
+        vec!["spectrum", "loop", "-n", "5", "--json"],
+        vec!["schemes", "--json"],
+        vec!["matrix", "loop", "-n", "3", "--json"],
+        vec!["verify", "--paper", "khan-mustafa", "--json"],
+    ] {
+        let out = subdlab(&args);
+        let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        let first = if j.is_array() { &j[0] } else { &j };
+        assert_eq!(first["subdlab_version"], env!("CARGO_PKG_VERSION"), "{args:?}");
+        assert_eq!(first["schema_version"], 1, "{args:?}");
+        assert!(first.get("git_commit").is_some(), "{args:?}");
+    }
+}
+
+#[test]
+fn human_tables_print_no_debug_text() {
+    for args in [
+        vec!["spectrum", "catmull-clark", "-n", "4"],
+        vec!["stencils", "loop", "-n", "5"],
+        vec!["charmap", "loop", "-n", "5"],
+    ] {
+        let text = String::from_utf8(subdlab(&args).stdout).unwrap();
+        for debug in ["Analysis", "Minimal", "Dft", "Full", "Some(", "None", "[0, "] {
+            assert!(!text.contains(debug), "{args:?} prints {debug}: {text}");
+        }
+    }
+    let text = String::from_utf8(subdlab(&["spectrum", "catmull-clark", "-n", "4"]).stdout).unwrap();
+    assert!(text.contains("neighbourhood analysis") && text.contains("method dft"), "{text}");
+}
+
+// ------------------------------------------------------------ expensive requests
+
+#[test]
+fn expensive_requests_are_refused_up_front_with_the_estimate() {
+    let cube = Path::new(env!("CARGO_MANIFEST_DIR")).join("meshes/cube.obj");
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("c.obj");
+    let t0 = std::time::Instant::now();
+    let err = fails(&[
+        "refine",
+        cube.to_str().unwrap(),
+        "--scheme",
+        "catmull-clark",
+        "-l",
+        "12",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    // 6 quads: the first level has max(24 faces, 26 vertices) = 26, then 4x per level
+    assert!(err.contains(&format!("about {}", 26usize * 4usize.pow(11))), "{err}");
+    let err = fails(&["spectrum", "catmull-clark", "-n", "300", "--method", "full"]);
+    // the analysis neighbourhood of Catmull–Clark has 6n + 1 vertices
+    assert!(err.contains("1801×1801"), "{err}");
+    assert!(t0.elapsed().as_secs() < 20, "refusals must come before the work");
+}
+
+// ------------------------------------------------------------ expressions
+
+#[test]
+fn long_expression_chains_do_not_overflow_the_stack() {
+    let dir = tempfile::tempdir().unwrap();
+    // 4999 terms of every chain kind (just under the 10000-character limit)
+    let ones = |sep: &str| format!("1{}", format!("{sep}1").repeat(4999 / (sep.len() + 1)));
+    let mut claims = String::new();
+    let plus = format!("1{}", "+1".repeat(4999));
+    claims += &claim("plus", &format!("check = \"identity\"\nlhs = \"{plus}\"\nrhs = \"5000\""));
+    claims += &claim("times", &format!("check = \"identity\"\nlhs = \"{}\"\nrhs = \"1\"", ones("*")));
+    claims += &claim("implicit", &format!("check = \"identity\"\nlhs = \"{}\"\nrhs = \"1\"", ones(" ")));
+    claims += &claim("cos", &format!("check = \"identity\"\nlhs = \"cos(0 {})\"\nrhs = \"1\"", "*1".repeat(4000)));
+    claims += &claim(
+        "float",
+        &format!(
+            "check = \"inequality\"\nscheme = \"\"\nvalences = [3]\nlhs = \"{} + 0 pi\"\nop = \">\"\nrhs = \"4989\"",
+            &plus[..9979]
+        ),
+    );
+    let f = claim_file(dir.path(), "deep.toml", &claims);
+    let (v, out) = verdicts(&["verify", "--claims", &f]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(v.iter().all(|(_, x)| x == "HOLDS"), "{v:?}");
+    // nesting beyond the depth limit is a clear error, not a crash
+    let deep = format!("{}1{}", "(".repeat(300), ")".repeat(300));
+    let f = claim_file(
+        dir.path(),
+        "nest.toml",
+        &claim("n", &format!("check = \"identity\"\nlhs = \"{deep}\"\nrhs = \"1\"")),
+    );
+    let (_, out) = verdicts(&["verify", "--claims", &f]);
+    assert!(String::from_utf8_lossy(&out.stdout).contains("nested too deeply"));
+}
+
+#[test]
+fn principal_branch_and_kronecker_agree_between_exact_and_float() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut c = String::new();
+    for (id, lhs, rhs) in [
+        ("sqrt-1", "sqrt(-1)", "i"),
+        ("sqrt-4", "sqrt(-4)", "2 i"),
+        ("half-power", "(-1)^(1/2)", "i"),
+        ("var", "sqrt(-a)", "sqrt(a) i"),
+        ("kron-exact", "kronecker(1e-13)", "0"),
+        ("kron-float", "kronecker(1e-13) + 0 pi", "0"),
+        ("kron-zero", "kronecker(cos(pi/2)) + 0 pi", "1"),
+    ] {
+        c += &claim(id, &format!("check = \"identity\"\nlhs = \"{lhs}\"\nrhs = \"{rhs}\"\nvars = {{ a = \"2\" }}"));
+    }
+    let f = claim_file(dir.path(), "branch.toml", &c);
+    let (v, _) = verdicts(&["verify", "--claims", &f]);
+    assert!(v.iter().all(|(_, x)| x == "HOLDS"), "{v:?}");
+}
+
+#[test]
+fn the_exact_path_is_bounded() {
+    let dir = tempfile::tempdir().unwrap();
+    let bomb = "sum(m,1,10000,((1001/1000)^256)^190-((1001/1000)^256)^190)";
+    let big = vec!["((3^256)^256)^9"; 200].join("*");
+    let mut c = claim("bomb", &format!("check = \"identity\"\nlhs = \"{bomb}\"\nrhs = \"0\""));
+    c += &claim("product", &format!("check = \"identity\"\nlhs = \"{big}\"\nrhs = \"1\""));
+    c += &claim("huge", "check = \"identity\"\nlhs = \"((3^256)^256)^9\"\nrhs = \"((3^256)^256)^9 + 1\"");
+    let f = claim_file(dir.path(), "bomb.toml", &c);
+    let t0 = std::time::Instant::now();
+    let out = subdlab(&["verify", "--claims", &f]);
+    assert!(t0.elapsed().as_secs() < 30, "{:?}", t0.elapsed());
+    // no 500 KB line of digits
+    assert!(out.stdout.len() < 20_000, "{}", out.stdout.len());
+    // a long exact fraction as a parameter: a one-line error at once
+    let a = format!("1{}/3{}", "7".repeat(3000), "1".repeat(3000));
+    let t0 = std::time::Instant::now();
+    let err = fails(&["spectrum", "non-box", "-n", "5", "-p", &format!("a={a}")]);
+    assert!(err.contains("at most 400 bits"), "{err}");
+    assert!(err.len() < 300, "{err}");
+    assert!(t0.elapsed().as_secs() < 10);
+    // exact values just outside an integer bound are outside
+    let above_one = format!("a=1{}1/1{}", "0".repeat(29), "0".repeat(30));
+    let err = fails(&["spectrum", "non-box", "-n", "5", "-p", &above_one]);
+    assert!(err.contains("out of range"), "{err}");
+}
+
+// ------------------------------------------------------------ claim files
+
+#[test]
+fn unknown_keys_are_errors_naming_the_line_and_the_rest_is_evaluated() {
+    let dir = tempfile::tempdir().unwrap();
+    let good = claim("good", "check = \"identity\"\nlhs = \"1/2 + 1/4\"\nrhs = \"3/4\"");
+    let typo = claim(
+        "typo",
+        "check = \"size\"\nscheme = \"loop\"\nvalences = [5]\nvalue = \"n + 1\"\nneighborhood = \"minimal\"",
+    );
+    let f = claim_file(dir.path(), "keys.toml", &format!("{good}{typo}"));
+    let junit = dir.path().join("j.xml");
+    let out = subdlab(&["verify", "--claims", &f, "--junit", junit.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    // header lines 1-2, good claim on lines 4-9, the typo claim's key on line 17
+    let text = std::fs::read_to_string(&f).unwrap();
+    let line = text.lines().position(|l| l.starts_with("neighborhood")).unwrap() + 1;
+    assert!(err.contains(&format!("line {line}")) && err.contains("unknown key 'neighborhood'"), "{err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("HOLDS        good") && stdout.contains("ERROR        typo"), "{stdout}");
+    let xml = std::fs::read_to_string(&junit).unwrap();
+    assert!(xml.contains("<error message=\"ERROR\">") && xml.contains("tests=\"2\""), "{xml}");
+    for (key, body) in [
+        ("blok", "check = \"eigenvalues\"\nscheme = \"loop\"\nvalences = [5]\nvalues = [\"1\"]\ncompare = \"contains\"\nblok = \"1\""),
+        ("rhss", "check = \"identity\"\nlhs = \"1\"\nrhs = \"1\"\nrhss = \"2\""),
+        ("expeted", "check = \"identity\"\nlhs = \"1\"\nrhs = \"1\"\nexpeted = \"REFUTED\""),
+    ] {
+        let f = claim_file(dir.path(), "k.toml", &claim("k", body));
+        let (v, out) = verdicts(&["verify", "--claims", &f]);
+        assert_eq!(v, [("k".to_string(), "ERROR".to_string())]);
+        assert!(String::from_utf8_lossy(&out.stderr).contains(&format!("unknown key '{key}'")));
+    }
+    // the valence cannot be redefined by vars
+    let f = claim_file(
+        dir.path(),
+        "n.toml",
+        &claim("n", "check = \"size\"\nscheme = \"loop\"\nvalences = [5]\nvalue = \"n + 1\"\nvars = { n = \"6\" }"),
+    );
+    let (v, _) = verdicts(&["verify", "--claims", &f]);
+    assert_eq!(v[0].1, "INCONCLUSIVE");
+}
+
+#[test]
+fn exit_statuses_junit_and_expected_verdicts() {
+    let dir = tempfile::tempdir().unwrap();
+    let holds = claim("holds", "check = \"identity\"\nlhs = \"cos(pi/3)\"\nrhs = \"1/2\"");
+    // a known-false statement pinned as a regression
+    let pinned = claim("pinned", "check = \"identity\"\nlhs = \"1/3\"\nrhs = \"0.333\"\nexpected = \"REFUTED\"");
+    let f = claim_file(dir.path(), "a.toml", &format!("{holds}{pinned}"));
+    let junit = dir.path().join("j.xml");
+    let j = junit.to_str().unwrap();
+    assert_eq!(subdlab(&["verify", "--claims", &f, "--junit", j]).status.code(), Some(1));
+    assert!(std::fs::read_to_string(&junit).unwrap().contains("failures=\"1\""));
+    let out = subdlab(&["verify", "--check-expected", "--claims", &f, "--junit", j]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let xml = std::fs::read_to_string(&junit).unwrap();
+    assert!(xml.contains("failures=\"0\" errors=\"0\"") && xml.contains("REFUTED as recorded"), "{xml}");
+    // a syntax error in one file: its ERROR, the other file still evaluated, JUnit written
+    let broken = dir.path().join("broken.toml");
+    std::fs::write(&broken, "paper = \"x\"\ntitle = \n").unwrap();
+    std::fs::remove_file(&junit).unwrap();
+    let out = subdlab(&["verify", "--claims", broken.to_str().unwrap(), "--claims", &f, "--junit", j]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("HOLDS        holds"));
+    let xml = std::fs::read_to_string(&junit).unwrap();
+    assert!(xml.contains("broken.toml") && xml.contains("<error message=\"ERROR\">"), "{xml}");
+    // control characters are escaped in JUnit (XML 1.0 cannot carry them)
+    let ctl = claim("ctl", "check = \"identity\"\nlhs = \"1\"\nrhs = \"2\"")
+        .replace("statement = \"x\"", "statement = \"a\\u0001b\\u001b\"");
+    let f = claim_file(dir.path(), "ctl.toml", &ctl);
+    subdlab(&["verify", "--claims", &f, "--junit", j]);
+    let xml = std::fs::read_to_string(&junit).unwrap();
+    assert!(!xml.chars().any(|c| (c as u32) < 0x20 && !"\t\n\r".contains(c)), "{xml:?}");
+    assert!(xml.contains("a\\u{1}b\\u{1b}"), "{xml}");
+    // the built-in registry under --check-expected is green
+    let out = subdlab(&["verify", "--paper", "khan-mustafa", "--check-expected", "--junit", j]);
+    assert_eq!(out.status.code(), Some(0));
+    let xml = std::fs::read_to_string(&junit).unwrap();
+    assert!(!xml.contains("<failure") && !xml.contains("<error"), "{xml}");
+    assert_eq!(subdlab(&["verify", "--paper", "khan-mustafa"]).status.code(), Some(1));
+}
+
+#[test]
+fn non_finite_values_are_inconclusive_and_empty_ranges_are_not_holds() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut c = String::new();
+    c += &claim(
+        "ineq",
+        "check = \"inequality\"\nscheme = \"\"\nvalences = [3]\nlhs = \"0*10^400\"\nop = \">=\"\nrhs = \"1\"",
+    );
+    c += &claim("size", "check = \"size\"\nscheme = \"loop\"\nvalences = [5]\nvalue = \"0*10^400\"");
+    c += &claim("sub", "check = \"subdominant\"\nscheme = \"loop\"\nvalences = [5]\nvalue = \"0*10^400\"");
+    c += &claim(
+        "window",
+        "check = \"lattice-matrix\"\nscheme = \"khan-mustafa\"\nwindow = [5, -5, 5, -5]\nscale = \"1\"\nrows = []",
+    );
+    c += &claim("bigwindow", "check = \"lattice-matrix\"\nscheme = \"khan-mustafa\"\nwindow = [-9223372036854775808, 9223372036854775807, 0, 0]\nscale = \"1\"\nrows = [\"1\"]");
+    c += &claim("empty", "check = \"spectral-c1\"\nscheme = \"loop\"\nvalences = []");
+    let f = claim_file(dir.path(), "nan.toml", &c);
+    let (v, _) = verdicts(&["verify", "--claims", &f]);
+    for (id, verdict) in &v {
+        assert_eq!(verdict, "INCONCLUSIVE", "{id}: {v:?}");
+    }
+    assert_eq!(v.len(), 6);
+}
+
+#[test]
+fn builtin_data_is_validated() {
+    let dir = tempfile::tempdir().unwrap();
+    let strip = r#"scheme = "four-three", faces = "QQTTT", spokes = [[0, 1], [-1, 0], [0, -1], [1, 0], [1, 1]], shift = [0, 1], leading = ["1", "1/2", "1/2", "1/4", "1/4", "1/4"], bound = "1/4""#;
+    let km = r#"monomials = [[0, 0], [1, 0], [0, 1], [1, 1], [2, 0], [0, 2]], lo = -1, hi = 1, rules = [[[0]], [[0]], [[0]], [[0]]]"#;
+    let poly = r#"scheme = "catmull-clark", faces = "QQQQ", spokes = [[1, 0], [0, 1], [-1, 0], [0, -1]]"#;
+    let cases = [
+        (
+            "curve.c1-laurent",
+            r#"{ scheme = "unified-curve", param = "alpha", values = ["2"], max_steps = 0 }"#.to_string(),
+        ),
+        ("lattice.fit-masks", format!("{{ {km}, denominator = 0 }}")),
+        ("lattice.fit-masks", "{ monomials = [[0, 0], [-1, 0]], lo = -1, hi = 1, denominator = 1, rules = [] }".into()),
+        (
+            "lattice.fit-masks",
+            format!("{{ {km}, denominator = 1, lo = -300, hi = 300 }}").replace("lo = -1, hi = 1, ", ""),
+        ),
+        ("strip.jsr", format!("{{ {strip}, window = [-9223372036854775808, 9223372036854775807, 0, 0], length = 3 }}")),
+        ("strip.jsr", format!("{{ {strip}, window = [-3, 3, -3, 4], length = -1 }}")),
+        ("strip.jsr", format!("{{ {strip}, window = [-3, 3, -3, 4], length = 40 }}")),
+        ("strip.jsr", format!("{{ {strip}, window = [-100000, 100000, -100000, 100000], length = 3 }}")),
+        ("strip.defective", format!("{{ {strip}, window = [-20, 20, -20, 20] }}")),
+        ("window.polynomials", format!("{{ {poly}, window = [-4, 4, -4, 4], degree = -1 }}")),
+        ("window.polynomials", format!("{{ {poly}, window = [-60, 60, -60, 60], degree = 3 }}")),
+        ("window.polynomials", format!("{{ {poly}, window = [-4, 4, -4, 4], degree = 20 }}")),
+        (
+            "fourthree.convex-hull",
+            r#"{ faces = "QQQQQ", params = { eon_quad_term = "1" }, rings = 4, steps = 12 }"#.into(),
+        ),
+        (
+            "fourthree.convex-hull",
+            r#"{ faces = "QQQQQ", params = { eon_quad_term = "1" }, rings = 1000000, steps = 3 }"#.into(),
+        ),
+        (
+            "fourthree.convex-hull",
+            r#"{ faces = "QQQQQ", params = { eon_quad_term = "1" }, rings = -1, steps = 3 }"#.into(),
+        ),
+        (
+            "fourthree.convex-hull",
+            r#"{ faces = "QQQQQ", params = { eon_quad_term = "1" }, rings = 4, steps = 0 }"#.into(),
+        ),
+        ("fourthree.step-two-weights", r#"{ faces = "QQQQQ", params = { eon_quad_term = "1" }, rings = 0 }"#.into()),
+    ];
+    let mut c = String::new();
+    for (k, (name, data)) in cases.iter().enumerate() {
+        c += &claim(&format!("c{k}"), &format!("check = \"builtin\"\nname = \"{name}\"\ndata = {data}"));
+    }
+    // 3000 entries of 100000 repeats: refused, not allocated
+    let many = vec!["\"0;100000\""; 3000].join(",");
+    c += &claim("count", &format!("check = \"eigenvalues\"\nscheme = \"loop\"\nvalences = [5]\nvalues = [{many}]"));
+    let f = claim_file(dir.path(), "data.toml", &c);
+    let t0 = std::time::Instant::now();
+    let (v, out) = verdicts(&["verify", "--claims", &f]);
+    assert!(t0.elapsed().as_secs() < 60, "{:?}", t0.elapsed());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!err.contains("panicked"), "{err}");
+    assert_eq!(v.len(), cases.len() + 1);
+    for (id, verdict) in &v {
+        assert_eq!(verdict, "INCONCLUSIVE", "{id}: {v:?}");
+    }
+}
+
+#[cfg(unix)]
+#[test]
+fn unbounded_inputs_are_capped() {
+    let t0 = std::time::Instant::now();
+    let err = fails(&["verify", "--claims", "/dev/zero"]);
+    assert!(err.contains("larger than 16 MiB"), "{err}");
+    let cube = Path::new(env!("CARGO_MANIFEST_DIR")).join("meshes/cube.obj");
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("o.obj");
+    let err = fails(&[
+        "refine",
+        cube.to_str().unwrap(),
+        "--scheme",
+        "unified-sqrt3",
+        "-l",
+        "1",
+        "--vertex-params",
+        "/dev/zero",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(err.contains("larger than 64 MiB"), "{err}");
+    assert!(t0.elapsed().as_secs() < 30);
+    // many claim files: bounded worker threads
+    let f = claim_file(dir.path(), "one.toml", &claim("a", "check = \"identity\"\nlhs = \"1\"\nrhs = \"1\""));
+    let mut args = vec!["verify"];
+    for _ in 0..500 {
+        args.push("--claims");
+        args.push(&f);
+    }
+    assert_eq!(subdlab(&args).status.code(), Some(0));
+}
+
+// ------------------------------------------------------------ the README's examples
+
+#[test]
+fn every_check_kind_has_a_runnable_example_claim_file() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/claims");
+    for (kind, _) in subdlab::claims::CHECK_KEYS {
+        let file = dir.join(format!("{kind}.toml"));
+        let text = std::fs::read_to_string(&file).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
+        assert!(text.contains(&format!("check = \"{kind}\"")), "{kind}");
+        let out = subdlab(&["verify", "--check-expected", "--claims", file.to_str().unwrap(), "--json"]);
+        assert_eq!(out.status.code(), Some(0), "{kind}: {}", String::from_utf8_lossy(&out.stderr));
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        let claims = v[0]["claims"].as_array().unwrap();
+        assert!(!claims.is_empty());
+        for c in claims {
+            let want = c["expected"].as_str().unwrap_or("HOLDS");
+            assert_eq!(c["verdict"], want, "{kind}: {c}");
+        }
+    }
+}
