@@ -7,6 +7,7 @@
 //! target's directory, then rename).
 
 pub mod charmap;
+pub mod curvature;
 pub mod spectrum;
 pub mod sweep;
 
