@@ -38,6 +38,9 @@ pub struct CurvatureArgs {
     /// rings of the surface figure (1 to 8)
     #[arg(long, default_value_t = 4)]
     pub rings: usize,
+    /// skip the exact rational confirmation (evidence is then floating-point)
+    #[arg(long)]
+    pub no_exact: bool,
     /// machine-readable JSON output (stable field names)
     #[arg(long)]
     pub json: bool,
@@ -76,6 +79,7 @@ pub fn run(a: &CurvatureArgs) -> Result<(), String> {
         levels: a.levels,
         figures: a.out.is_some(),
         surface_rings: if a.out.is_some() && kind == CurvatureFigureKind::Surface { a.rings } else { 0 },
+        exact: !a.no_exact,
     };
     let c = curvature(scheme.as_ref(), &config, &opts)?;
     if let Some(out) = &a.out {

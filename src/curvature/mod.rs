@@ -54,10 +54,11 @@
 //! # Evidence
 //!
 //! Eigenvalues are compared with a relative tolerance [`EIG_TOL`]
-//! (`floating-point`). When the exact path proved both λ and μ rational
-//! (`Eigenvalue::exact`), |μ| and λ² are compared in exact arithmetic
-//! (`exact`); the Jordan structure still comes from the floating-point
-//! multiplicities.
+//! (`floating-point`; the margin |μ|/λ² − 1 is reported). When λ and μ both
+//! read as small rationals, [`curvature`] runs the exact path, and when it
+//! proves both (`Eigenvalue::exact`), |μ| and λ² are compared in exact
+//! arithmetic (`exact`); the Jordan structure still comes from the
+//! floating-point multiplicities.
 //!
 //! # C² (Reif)
 //!
@@ -155,11 +156,15 @@ pub struct CurvatureOptions {
     pub figures: bool,
     /// rings of the limit-surface figure (0: not computed; needs `figures`)
     pub surface_rings: usize,
+    /// confirm λ and μ in exact arithmetic when both read as small rationals
+    /// and S is rational (the `exact` evidence; [`curvature`] only, a given
+    /// [`Analysis`] is used as it is)
+    pub exact: bool,
 }
 
 impl Default for CurvatureOptions {
     fn default() -> Self {
-        CurvatureOptions { levels: DEFAULT_LEVELS, figures: false, surface_rings: 0 }
+        CurvatureOptions { levels: DEFAULT_LEVELS, figures: false, surface_rings: 0, exact: true }
     }
 }
 
@@ -185,6 +190,10 @@ pub struct EigenInfo {
     pub ring_size: f64,
     /// the eigenfunctions vanish on the characteristic ring (excluded)
     pub vanishes: bool,
+    /// for a defective eigenvalue: the eigenvectors at the top of its Jordan
+    /// chains (the ones multiplied by m in S^m) do not vanish on the ring, so
+    /// the chain shows in the surface; null when not defective
+    pub jordan_visible: Option<bool>,
     #[serde(skip)]
     index: usize,
 }
@@ -295,9 +304,19 @@ pub struct SurfaceRows {
 /// Analyse `scheme` at `config` (analysis neighbourhood, exact confirmation
 /// on) and run the second-order analysis.
 pub fn curvature(scheme: &dyn Scheme, config: &Configuration, opts: &CurvatureOptions) -> Result<Curvature, String> {
-    let analysis =
-        analyse(scheme, config, &Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: true })?;
-    curvature_of_analysis(scheme, &analysis, opts)
+    let options = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
+    let analysis = analyse(scheme, config, &options)?;
+    let c = curvature_of_analysis(scheme, &analysis, opts)?;
+    // the exact path (a characteristic polynomial over Q, about a second for
+    // 80 × 80) runs only where it can decide something: λ and μ both read as
+    // small rationals
+    let eigs = &analysis.spectrum.eigenvalues;
+    let rational = |i: usize| eigs.get(i).is_some_and(|e| e.recognised.is_some());
+    if opts.exact && c.mu.as_ref().is_some_and(|m| rational(1) && rational(m.index)) {
+        let exact = analyse(scheme, config, &Options { exact: true, ..options })?;
+        return curvature_of_analysis(scheme, &exact, opts);
+    }
+    Ok(c)
 }
 
 /// The common call for the regular configuration.
@@ -425,7 +444,14 @@ pub fn curvature_of_analysis(
             ));
         }
         Ordering::Equal => {
-            if let Some(d) = at_lam2.iter().find(|i| i.defective) {
+            let hidden = at_lam2.iter().filter(|i| i.jordan_visible == Some(false)).count();
+            if hidden > 0 {
+                out.reasons.push(format!(
+                    "{hidden} eigenvalue(s) of modulus λ² are defective, but the tops of their Jordan chains vanish \
+                     on the ring: the chains do not show in the surface"
+                ));
+            }
+            if let Some(d) = at_lam2.iter().find(|i| i.jordan_visible == Some(true)) {
                 out.class = CurvatureClass::Unbounded;
                 out.reasons.push(format!(
                     "|μ| = λ² = {} but the eigenvalue {} is defective (Jordan block): curvature grows like m",
@@ -521,8 +547,52 @@ fn examine(spec: &Spectrum, sampler: &RingSampler, e: &Eigenvalue, index: usize,
         exact: e.exact.clone(),
         ring_size,
         vanishes: ring_size <= VANISH_TOL,
+        jordan_visible: e.defective.then(|| jordan_visible(spec, sampler, e)),
         index,
     }
+}
+
+/// Whether some Jordan chain of `e` has a top eigenvector that does not vanish
+/// on the ring. Per block B: with N = B − νI, the chain tops are N·w for w in
+/// the null space of N² (singular values below a relative tolerance), w not
+/// in the null space of N.
+fn jordan_visible(spec: &Spectrum, sampler: &RingSampler, e: &Eigenvalue) -> bool {
+    let nu = c64::new(e.re, e.im);
+    let mut tops = Vec::new();
+    for &m in &e.blocks {
+        let b = match &spec.synthesis {
+            Synthesis::Dft { blocks, .. } => &blocks[m],
+            Synthesis::Full { matrix } => matrix,
+        };
+        let k = b.nrows();
+        let n = faer::Mat::<c64>::from_fn(k, k, |i, j| if i == j { b[(i, j)] - nu } else { b[(i, j)] });
+        let n2 = &n * &n;
+        let Ok(svd) = n2.svd() else { return true };
+        let sv = svd.S().column_vector();
+        let norm = n.norm_l2().max(1e-300);
+        let tol = 1e-9 * norm * norm.max(1.0);
+        let mut right = Vec::new();
+        for c in (0..k).filter(|&c| sv[c].re < tol) {
+            let w: Vec<c64> = (0..k).map(|i| svd.V()[(i, c)]).collect();
+            let top: Vec<c64> = (0..k).map(|i| (0..k).fold(c64::new(0.0, 0.0), |a, j| a + n[(i, j)] * w[j])).collect();
+            if top.iter().map(|z| z.norm()).fold(0.0, f64::max) > 1e-7 * norm {
+                right.push(top);
+            }
+        }
+        if !right.is_empty() {
+            tops.push(crate::spectrum::EigenVectors { block: m, right });
+        }
+    }
+    if tops.is_empty() {
+        // the floating-point structure says defective but no chain was found
+        // at this tolerance: keep the conservative reading
+        return true;
+    }
+    let probe = Eigenvalue { vectors: tops, ..e.clone() };
+    spec.right_vectors(&probe).iter().any(|x| {
+        let scale = x.iter().map(|z| z.norm()).fold(0.0, f64::max);
+        scale > 0.0 && sampler.ring_values_c(x).iter().map(|z| z.norm()).fold(0.0, f64::max) / scale > VANISH_TOL
+    })
 }
 
 fn parse_rational(s: &str) -> Option<Rational> {
@@ -638,9 +708,9 @@ fn c2_test(
         holds = false;
         reasons.push("an eigenvalue of modulus λ² is not λ² itself".into());
     }
-    if at_value.iter().any(|i| i.defective) {
+    if at_value.iter().any(|i| i.jordan_visible == Some(true)) {
         holds = false;
-        reasons.push("λ² is defective".into());
+        reasons.push("λ² has a Jordan chain that shows on the ring".into());
     }
     let chi_x: Vec<f64> = pair.iter().map(|p| p[0]).collect();
     let chi_y: Vec<f64> = pair.iter().map(|p| p[1]).collect();
@@ -716,6 +786,13 @@ fn figure_data(
     let mut mu_functions = Vec::new();
     for e in spec.eigenvalues.iter().filter(|e| (e.modulus - mu.modulus).abs() <= EIG_TOL * mu.modulus.max(1e-300)) {
         for (block, x) in vectors_with_blocks(spec, e) {
+            // a block m > g/2 whose conjugate block g − m is drawn repeats its functions
+            if let Synthesis::Dft { orbits, .. } = &spec.synthesis {
+                let g = orbits.group_order;
+                if 2 * block > g && e.blocks.contains(&(g - block)) {
+                    continue;
+                }
+            }
             for (part, f) in
                 [("re", x.iter().map(|z| z.re).collect::<Vec<f64>>()), ("im", x.iter().map(|z| z.im).collect())]
             {
@@ -777,7 +854,7 @@ fn figure_data(
 /// a graph.
 fn ring_signs(sampler: &RingSampler, data: &[[f64; 3]], scale: f64) -> Vec<(Vec<[f64; 2]>, i8)> {
     let zmax = data.iter().map(|p| p[2].abs()).fold(0.0, f64::max).max(1e-300);
-    let norm: Vec<[f64; 3]> = data.iter().map(|p| [p[0] / scale, p[1] / scale, p[2] / zmax * 1.0]).collect();
+    let norm: Vec<[f64; 3]> = data.iter().map(|p| [p[0] / scale, p[1] / scale, p[2] / zmax]).collect();
     let pts = sampler.points(&norm);
     let mesh = &sampler.net.mesh;
     let vf = mesh.vertex_faces();
@@ -800,7 +877,7 @@ fn ring_signs(sampler: &RingSampler, data: &[[f64; 3]], scale: f64) -> Vec<(Vec<
             sum += cn.atan2(dot);
         }
         // a closed fan: every neighbour is shared by two faces
-        (!count.is_empty() && count.values().all(|&c| c == 2)).then(|| 2.0 * std::f64::consts::PI - sum)
+        (!count.is_empty() && count.values().all(|&c| c == 2)).then_some(2.0 * std::f64::consts::PI - sum)
     };
     let defects: Vec<Option<f64>> =
         (0..mesh.num_vertices()).map(|v| if pts[v].is_some() { defect(v) } else { None }).collect();
