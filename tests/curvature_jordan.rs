@@ -43,3 +43,30 @@ fn four_three_eon_jordan_block_shows_on_the_ring() {
     assert_eq!(c.class, CurvatureClass::Bounded, "{:?}", c.reasons);
     assert!(c.examined.iter().all(|e| e.jordan_visible.is_none()));
 }
+
+#[test]
+fn four_three_regular_box_spline_configurations_pass_the_c2_test() {
+    // The regular quad (valence 4, all quads) and triangle (valence 6, all
+    // triangles) configurations of 4-3 are box-spline subdivision (A_4 and
+    // A_3 of Peters–Shiue): the characteristic map is linear, λ = 1/2, and the
+    // eigenfunctions of λ² = 1/4 are exactly x², xy, y² of it.
+    use subdlab::curvature::curvature;
+    use subdlab::neighbourhood::Configuration;
+    let s = schemes::build("four-three", &[]).unwrap();
+    for (n, faces) in [(4, "QQQQ"), (6, "TTTTTT")] {
+        let config = Configuration::with_faces(s.as_ref(), n, faces).unwrap();
+        let c = curvature(s.as_ref(), &config, &CurvatureOptions::default()).unwrap();
+        assert!((c.lambda.unwrap() - 0.5).abs() < 1e-12, "{faces}");
+        assert_eq!(c.class, CurvatureClass::Bounded, "{faces}");
+        let t = c.c2.unwrap();
+        assert!(t.holds && t.spans_quadratics && t.max_residual.unwrap() < 1e-9, "{faces}: {:?}", t.reasons);
+    }
+    // negative control: the eon of valence 5 (Jordan block above) fails
+    let c = curvature(
+        s.as_ref(),
+        &Configuration::with_faces(s.as_ref(), 5, "QQQQQ").unwrap(),
+        &CurvatureOptions::default(),
+    )
+    .unwrap();
+    assert!(!c.c2.unwrap().holds);
+}

@@ -23,7 +23,11 @@
 //! so the curvature tends to zero (|μ| < λ²: a forced flat spot for generic
 //! data), stays bounded (|μ| = λ² without a Jordan block; it oscillates from
 //! ring to ring when an eigenvalue of that modulus is not λ² itself), or
-//! diverges (|μ| > λ², or a Jordan block at λ², where κ_m ~ m).
+//! diverges (|μ| > λ², or a Jordan block at λ², where κ_m ~ m). A Jordan
+//! chain S w2 = λ² w2 + w1 puts m λ^(2m−2) on the eigenvector w1 at its top,
+//! so it counts when w1's eigenfunction does not vanish on the ring
+//! (`EigenInfo::jordan_visible`: per block B, the tops are (B − λ²I) w for w
+//! in the null space of (B − λ²I)²).
 //!
 //! # The L_p limit
 //!
