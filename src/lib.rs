@@ -17,6 +17,8 @@
 //! 5. [`spectrum`]: eigenvalues with multiplicities, stencils, verdicts;
 //! 6. analyses on top of a spectrum: [`charmap`] (characteristic maps), and
 //!    the other domains, [`lattice`] (Z² masks) and [`curves`] (Z masks);
+//!    on top of the characteristic map, [`curvature`] (second order: the
+//!    curvature class, F(μ), Reif's C² test);
 //! 7. the scheme catalogue, [`schemes`]: one file per built-in scheme and the
 //!    scheme-file loader; nothing below imports it;
 //! 8. [`claims`] (paper statements as data) and [`sweep`];
@@ -45,6 +47,8 @@ pub mod spectrum;
 
 pub mod charmap;
 pub mod curves;
+// second order: curvature class, F(μ), Reif's C² test (uses charmap)
+pub mod curvature;
 // regular-lattice schemes with explicit (i, j) coordinates (Khan–Mustafa)
 pub mod lattice;
 

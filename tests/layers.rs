@@ -30,13 +30,15 @@ const LAYERS: &[(&str, u32)] = &[
     ("charmap", 10),
     ("lattice", 10),
     ("curves", 10),
+    // second-order analysis: on top of the characteristic map
+    ("curvature", 11),
     // the scheme catalogue: nothing below may import it
-    ("schemes", 11),
-    ("claims", 12),
-    ("sweep", 12),
-    ("plot", 13),
-    ("report", 14),
-    ("cli", 15),
+    ("schemes", 12),
+    ("claims", 13),
+    ("sweep", 13),
+    ("plot", 14),
+    ("report", 15),
+    ("cli", 16),
 ];
 
 fn rank(module: &str) -> Option<u32> {

@@ -23,7 +23,7 @@ use crate::mesh::PolyMesh;
 use crate::neighbourhood::Discovered;
 
 use crate::error::Error;
-use crate::refine::{apply, step, Step};
+use crate::refine::{apply, step, Combine, Step};
 use crate::sdc::{Origin, Scheme};
 
 /// Largest number of faces of a refined net: peak memory is about 1 KB per
@@ -31,11 +31,13 @@ use crate::sdc::{Origin, Scheme};
 /// bounds a run to roughly a gigabyte.
 pub const MAX_NET_FACES: usize = 1_000_000;
 
-/// A refined planar net with the two tracked face sets.
+/// A refined net with the two tracked face sets: planar points for the
+/// characteristic map, or any data refinement averages (`refine::Combine`),
+/// e.g. sparse weight rows over the level-0 vertices (`curvature`).
 #[derive(Clone, Debug)]
-pub struct Net {
+pub struct Net<T = [f64; 2]> {
     pub mesh: PolyMesh,
-    pub points: Vec<Option<[f64; 2]>>,
+    pub points: Vec<Option<T>>,
     /// descendants of the level-0 first ring
     pub outer: Vec<bool>,
     /// descendants of the first ring after one analysis step
@@ -88,12 +90,12 @@ fn faces_touching(mesh: &PolyMesh, set: &HashSet<usize>) -> Vec<bool> {
 const MARGINS: [usize; 3] = [2, 4, 8];
 
 /// Refine the level-0 net `analysis_steps` whole analysis steps (at least one).
-pub fn refine_net(
+pub fn refine_net<T: Combine<f64> + Clone>(
     scheme: &dyn Scheme,
     d: &Discovered,
-    level0: Vec<Option<[f64; 2]>>,
+    level0: Vec<Option<T>>,
     analysis_steps: usize,
-) -> Result<Net, Error> {
+) -> Result<Net<T>, Error> {
     let mut last = Err(Error::from("no pruning margin tried"));
     for margin in MARGINS {
         last = refine_with_margin(scheme, d, level0.clone(), analysis_steps, margin);
@@ -106,13 +108,13 @@ pub fn refine_net(
     last
 }
 
-fn refine_with_margin(
+fn refine_with_margin<T: Combine<f64> + Clone>(
     scheme: &dyn Scheme,
     d: &Discovered,
-    level0: Vec<Option<[f64; 2]>>,
+    level0: Vec<Option<T>>,
     analysis_steps: usize,
     margin: usize,
-) -> Result<Net, Error> {
+) -> Result<Net<T>, Error> {
     if analysis_steps == 0 {
         return Err("the characteristic ring needs at least one analysis step".into());
     }
@@ -157,7 +159,7 @@ fn refine_with_margin(
     Ok(net)
 }
 
-fn descend(old: &Net, mesh: &PolyMesh, origins: &[Origin], parents: &[Origin], points: Vec<Option<[f64; 2]>>) -> Net {
+fn descend<T>(old: &Net<T>, mesh: &PolyMesh, origins: &[Origin], parents: &[Origin], points: Vec<Option<T>>) -> Net<T> {
     let carry = |flags: &[bool]| -> Vec<bool> {
         let ents = crate::neighbourhood::discovery::region_entities(&old.mesh, flags);
         let from: Vec<bool> = origins.iter().map(|o| ents.contains(o)).collect();
@@ -178,7 +180,7 @@ fn face_vertices(mesh: &PolyMesh, f: usize) -> impl Iterator<Item = usize> + '_ 
 
 /// Every vertex of the first ring's descendants must be defined; otherwise the
 /// neighbourhood does not determine the ring and no verdict can be given.
-fn check_defined(net: &Net) -> Result<(), Error> {
+fn check_defined<T>(net: &Net<T>) -> Result<(), Error> {
     for f in (0..net.mesh.num_faces()).filter(|&f| net.outer[f]) {
         if face_vertices(&net.mesh, f).any(|v| net.points[v].is_none()) {
             return Err(Error::NotDetermined(format!(
@@ -201,7 +203,7 @@ fn check_defined(net: &Net) -> Result<(), Error> {
 /// ring alone. A too-small margin shows up as an undefined first-ring vertex
 /// (`check_defined`), never as a silent error, and `refine_net` then retries
 /// with a wider one.
-fn prune(net: Net, margin: usize) -> Result<Net, String> {
+fn prune<T: Clone>(net: Net<T>, margin: usize) -> Result<Net<T>, String> {
     let mesh = &net.mesh;
     let mut near: HashSet<usize> = HashSet::new();
     for f in (0..mesh.num_faces()).filter(|&f| net.outer[f]) {
@@ -220,7 +222,7 @@ fn prune(net: Net, margin: usize) -> Result<Net, String> {
     let keep: Vec<usize> = (0..mesh.num_faces()).filter(|&f| mesh.face(f).iter().any(|v| near.contains(v))).collect();
     // carry every attribute (charts, FCVs, face centres, lattice directions)
     let (new_mesh, old) = mesh.restrict(&keep)?;
-    let points: Vec<Option<[f64; 2]>> = old.iter().map(|&v| net.points[v]).collect();
+    let points: Vec<Option<T>> = old.iter().map(|&v| net.points[v].clone()).collect();
     Ok(Net {
         outer: keep.iter().map(|&f| net.outer[f]).collect(),
         inner: keep.iter().map(|&f| net.inner[f]).collect(),

@@ -41,6 +41,7 @@ fn dispatch_other(cmd: Command) -> Result<(), String> {
             super::mesh_commands::curve(&scheme, &params, &neighbourhood, json)
         }
         Command::Charmap(a) => super::charmap_commands::charmap(&a),
+        Command::Curvature(a) => super::curvature::run(&a),
         Command::Plot { what } => super::charmap_commands::plot(&what),
         Command::Spectrum(a) => {
             let (_, analysis) = run_analysis(&a)?;

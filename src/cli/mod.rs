@@ -4,6 +4,7 @@
 
 mod charmap_commands;
 mod commands;
+mod curvature;
 mod lattice;
 mod mesh_commands;
 mod verify;
@@ -117,6 +118,8 @@ pub enum Command {
     },
     /// Characteristic map: regularity and injectivity of the characteristic ring; optional figure
     Charmap(charmap_commands::CharmapArgs),
+    /// Second order at the centre: curvature class, L_p limit, F(μ) and shapes, Reif's C² test
+    Curvature(curvature::CurvatureArgs),
     /// Figures (SVG or PNG by the file extension)
     Plot {
         #[command(subcommand)]

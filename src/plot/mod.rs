@@ -10,6 +10,7 @@
 //! written atomically (temporary file in the target's directory, then rename).
 
 pub mod charmap;
+pub mod curvature;
 pub mod spectrum;
 pub mod sweep;
 

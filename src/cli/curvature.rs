@@ -1,0 +1,165 @@
+//! `subdlab curvature`: the second-order analysis at an extraordinary point
+//! (curvature class, L_p limit, F(μ) and shapes, Reif's C² test) and its figures.
+
+use std::path::{Path, PathBuf};
+
+use clap::Args;
+
+use super::commands::parse_params;
+use crate::curvature::{curvature, Curvature, CurvatureOptions, DEFAULT_LEVELS, MAX_LEVELS};
+use crate::io::print_json;
+use crate::neighbourhood::Configuration;
+use crate::plot::{self, curvature::CurvatureFigure, curvature::CurvatureFigureKind};
+use crate::schemes;
+
+#[derive(Args, Debug, Clone)]
+pub struct CurvatureArgs {
+    /// scheme name (see `subdlab schemes`) or a scheme file (.toml)
+    pub scheme: String,
+    /// valence of the extraordinary vertex (or face)
+    #[arg(long, short = 'n')]
+    pub valence: usize,
+    /// scheme parameter NAME=VALUE; repeatable
+    #[arg(long = "param", short = 'p')]
+    pub params: Vec<String>,
+    /// face sequence around the centre for mixed-mesh schemes (four-three), e.g. QQTTT
+    #[arg(long)]
+    pub faces: Option<String>,
+    /// analysis steps of refinement of the ring samples (1 to 6)
+    #[arg(long, default_value_t = DEFAULT_LEVELS)]
+    pub levels: usize,
+    /// write a figure (.svg or .png); which one: --figure
+    #[arg(short = 'o', long)]
+    pub out: Option<PathBuf>,
+    /// central-ring (μ-eigenfunctions over the characteristic ring) or
+    /// surface (sign of Gaussian curvature of refined quadratics, per ring)
+    #[arg(long, default_value = "central-ring")]
+    pub figure: String,
+    /// rings of the surface figure (1 to 8)
+    #[arg(long, default_value_t = 4)]
+    pub rings: usize,
+    /// skip the exact rational confirmation (evidence is then floating-point)
+    #[arg(long)]
+    pub no_exact: bool,
+    /// machine-readable JSON output (stable field names)
+    #[arg(long)]
+    pub json: bool,
+}
+
+fn check_out(path: &Path) -> Result<(), String> {
+    plot::format_of(path)?;
+    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    if !dir.is_dir() {
+        return Err(format!("cannot write {}: directory {} does not exist", path.display(), dir.display()));
+    }
+    Ok(())
+}
+
+pub fn run(a: &CurvatureArgs) -> Result<(), String> {
+    if a.levels == 0 || a.levels > MAX_LEVELS {
+        return Err(format!("--levels must be between 1 and {MAX_LEVELS}, got {}", a.levels));
+    }
+    if a.rings == 0 || a.rings > 8 {
+        return Err(format!("--rings must be between 1 and 8, got {}", a.rings));
+    }
+    let kind = match a.figure.as_str() {
+        "central-ring" => CurvatureFigureKind::CentralRing,
+        "surface" => CurvatureFigureKind::Surface,
+        other => return Err(format!("unknown figure '{other}'; use central-ring or surface")),
+    };
+    if let Some(out) = &a.out {
+        check_out(out)?;
+    }
+    let scheme = schemes::resolve(&a.scheme, &parse_params(&a.params)?)?;
+    let config = match &a.faces {
+        None => Configuration::regular(scheme.as_ref(), a.valence)?,
+        Some(faces) => Configuration::with_faces(scheme.as_ref(), a.valence, faces)?,
+    };
+    let opts = CurvatureOptions {
+        levels: a.levels,
+        figures: a.out.is_some(),
+        surface_rings: if a.out.is_some() && kind == CurvatureFigureKind::Surface { a.rings } else { 0 },
+        exact: !a.no_exact,
+    };
+    let c = curvature(scheme.as_ref(), &config, &opts)?;
+    if let Some(out) = &a.out {
+        if c.figures.is_none() {
+            return Err(format!("no figure written: the curvature class is {}", c.class.name()));
+        }
+        plot::save(&CurvatureFigure { c: &c, kind }, out)?;
+    }
+    if a.json {
+        print_json(&c)
+    } else {
+        print!("{}", table(&c));
+        Ok(())
+    }
+}
+
+fn table(c: &Curvature) -> String {
+    let f = crate::spectrum::fmt_f;
+    let opt = |x: Option<f64>| x.map_or("-".to_string(), f);
+    let mut out = format!(
+        "scheme {}  valence {}  faces {}\nλ = {}  λ² = {}  |μ| = {}  |μ|/λ² = {}\n\n",
+        c.scheme,
+        c.valence,
+        c.faces,
+        opt(c.lambda),
+        opt(c.lambda_squared),
+        opt(c.mu.as_ref().map(|m| m.modulus)),
+        opt(c.mu_over_lambda_squared)
+    );
+    out += &format!("curvature class  {}  (evidence: {})\n", c.class.name(), c.evidence.name());
+    out += &format!(
+        "L_p limit        {}\n",
+        match (c.class, c.lp_limit) {
+            (_, Some(p)) => format!("principal curvatures in L_p for p < {}", f(p)),
+            (crate::curvature::CurvatureClass::NotApplicable, None) => "-".into(),
+            (_, None) => "every finite p".into(),
+        }
+    );
+    if let Some(s) = &c.shapes {
+        out += &format!(
+            "F(μ)             {:?}  (necessary condition F ⊇ {{0, 2, n−2}}: {})\nshapes           elliptic {}  saddle {}\n",
+            s.fourier_index,
+            if s.necessary_condition { "holds" } else { "fails" },
+            if s.elliptic_possible { "possible" } else { "impossible" },
+            if s.saddle_possible { "possible" } else { "impossible" }
+        );
+    }
+    if let Some(t) = &c.c2 {
+        out += &format!(
+            "C² test (Reif)   {}  (quadratic {}, spans x², xy, y²: {}, largest residual {})\n",
+            if t.holds { "holds" } else { "fails" },
+            t.quadratic,
+            t.spans_quadratics,
+            t.max_residual.map_or("-".into(), |r| format!("{r:.3e}"))
+        );
+    }
+    if !c.examined.is_empty() {
+        out += "\neigenvalues below λ examined:\n";
+        for e in &c.examined {
+            out += &format!(
+                "  {:<24} |·|/λ² = {:<12} blocks {:?}{}{}\n",
+                if e.im == 0.0 { f(e.re) } else { format!("{}{:+}i", f(e.re), e.im) },
+                f(e.over_lambda_squared),
+                e.blocks,
+                if e.defective { "  defective" } else { "" },
+                if e.vanishes { "  (vanishes on the ring: excluded)" } else { "" }
+            );
+        }
+    }
+    out += "\n";
+    for r in &c.reasons {
+        out += &format!("  - {r}\n");
+    }
+    if let Some(s) = &c.shapes {
+        out += &format!("  - {}\n", s.explanation);
+    }
+    if let Some(t) = &c.c2 {
+        for r in &t.reasons {
+            out += &format!("  - C²: {r}\n");
+        }
+    }
+    out
+}

@@ -1,0 +1,162 @@
+//! Second-order figures (`subdlab curvature --out`): the central ring (each
+//! μ-eigenfunction as a colour map of heights over the characteristic ring,
+//! one panel per eigenfunction) and the limit-surface curvature rings (input
+//! nets sampled from z = x² + y² and z = x² − y² over the characteristic map,
+//! refined with the scheme's rules, each ring's faces coloured by the sign
+//! of the discrete Gaussian curvature of the refined net).
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+use super::{err, Figure, FONT};
+use crate::curvature::Curvature;
+
+/// Which second-order figure to draw.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CurvatureFigureKind {
+    CentralRing,
+    Surface,
+}
+
+pub struct CurvatureFigure<'a> {
+    pub c: &'a Curvature,
+    pub kind: CurvatureFigureKind,
+}
+
+const NEG: (f64, f64, f64) = (33.0, 102.0, 172.0);
+const POS: (f64, f64, f64) = (178.0, 24.0, 43.0);
+
+/// Diverging colour map: −1 blue, 0 white, +1 red.
+fn diverging(t: f64) -> RGBColor {
+    let t = if t.is_finite() { t.clamp(-1.0, 1.0) } else { 0.0 };
+    let (c, a) = if t < 0.0 { (NEG, -t) } else { (POS, t) };
+    let mix = |x: f64| (255.0 + (x - 255.0) * a).round() as u8;
+    RGBColor(mix(c.0), mix(c.1), mix(c.2))
+}
+
+/// A square window around the points (equal scales on both axes).
+fn window(points: impl Iterator<Item = [f64; 2]>) -> Option<((f64, f64), f64)> {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in points.filter(|p| p[0].is_finite() && p[1].is_finite()) {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    if !lo[0].is_finite() {
+        return None;
+    }
+    let half = 0.52 * (hi[0] - lo[0]).max(hi[1] - lo[1]).max(1e-300);
+    Some((((lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0), half))
+}
+
+impl Figure for CurvatureFigure<'_> {
+    fn size(&self) -> (u32, u32) {
+        match self.kind {
+            CurvatureFigureKind::CentralRing => {
+                let panels = self.c.figures.as_ref().map_or(1, |f| f.mu_functions.len().max(1)) as u32;
+                let cols = panels.min(3);
+                let rows = panels.div_ceil(3);
+                (cols * 420 + 20, rows * 440 + 90)
+            }
+            CurvatureFigureKind::Surface => {
+                let rings = self.c.figures.as_ref().and_then(|f| f.surface.first()).map_or(1, |s| s.rings.len().max(1));
+                (rings as u32 * 300 + 140, 2 * 320 + 110)
+            }
+        }
+    }
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), String>
+    where
+        DB::ErrorType: 'static,
+    {
+        let c = self.c;
+        let data = c.figures.as_ref().ok_or("no curvature figure data (the analysis stopped before the ring)")?;
+        root.fill(&WHITE).map_err(err)?;
+        let mu = c.mu.as_ref().map_or("none".to_string(), |m| format!("{:.6}", m.modulus));
+        let title = format!(
+            "{} n = {}: curvature {}, λ = {:.6}, |μ| = {mu}",
+            c.scheme,
+            c.valence,
+            c.class.name(),
+            c.lambda.unwrap_or(f64::NAN)
+        );
+        let (top, rest) = root.split_vertically(80);
+        top.draw(&Text::new(title, (20, 12), (FONT, 24).into_font())).map_err(err)?;
+        match self.kind {
+            CurvatureFigureKind::CentralRing => {
+                top.draw(&Text::new(
+                    "central ring: μ-eigenfunctions as heights over the characteristic ring (blue < 0 < red)",
+                    (20, 46),
+                    (FONT, 16).into_font(),
+                ))
+                .map_err(err)?;
+                if data.mu_functions.is_empty() {
+                    return Err("no μ-eigenfunction to draw".into());
+                }
+                let (center, half) = window(data.triangles.iter().flatten().copied()).ok_or("nothing to draw")?;
+                let cols = data.mu_functions.len().min(3);
+                let rows = data.mu_functions.len().div_ceil(3);
+                let panels = rest.split_evenly((rows, cols));
+                for ((label, values), area) in data.mu_functions.iter().zip(panels.iter()) {
+                    let top = values.iter().flatten().map(|v| v.abs()).fold(0.0, f64::max).max(1e-300);
+                    let mut chart = ChartBuilder::on(area)
+                        .margin(10)
+                        .caption(label, (FONT, 15))
+                        .x_label_area_size(25)
+                        .y_label_area_size(40)
+                        .build_cartesian_2d(center.0 - half..center.0 + half, center.1 - half..center.1 + half)
+                        .map_err(err)?;
+                    chart.configure_mesh().disable_mesh().label_style((FONT, 12)).draw().map_err(err)?;
+                    chart
+                        .draw_series(data.triangles.iter().zip(values).map(|(t, v)| {
+                            let mean = (v[0] + v[1] + v[2]) / (3.0 * top);
+                            let colour = diverging(mean);
+                            Polygon::new(t.iter().map(|p| (p[0], p[1])).collect::<Vec<_>>(), colour.filled())
+                        }))
+                        .map_err(err)?;
+                }
+            }
+            CurvatureFigureKind::Surface => {
+                top.draw(&Text::new(
+                    "limit surface from sampled quadratics, ring k (scaled by 1/λ^k): sign of Gaussian curvature \
+                     (red > 0 elliptic, blue < 0 hyperbolic)",
+                    (20, 46),
+                    (FONT, 15).into_font(),
+                ))
+                .map_err(err)?;
+                if data.surface.is_empty() {
+                    return Err("no limit-surface rings computed".into());
+                }
+                let rows = data.surface.len();
+                let cols = data.surface[0].rings.len().max(1);
+                let (labels, grid) = rest.split_horizontally(140);
+                let label_rows = labels.split_evenly((rows, 1));
+                let panels = grid.split_evenly((rows, cols));
+                for (r, s) in data.surface.iter().enumerate() {
+                    label_rows[r].draw(&Text::new(s.input.clone(), (10, 150), (FONT, 16).into_font())).map_err(err)?;
+                    for (k, ring) in s.rings.iter().enumerate() {
+                        let area = &panels[r * cols + k];
+                        let (center, half) =
+                            window(ring.iter().flat_map(|(p, _)| p.iter().copied())).ok_or("nothing to draw")?;
+                        let mut chart = ChartBuilder::on(area)
+                            .margin(8)
+                            .caption(format!("ring {k}"), (FONT, 15))
+                            .build_cartesian_2d(center.0 - half..center.0 + half, center.1 - half..center.1 + half)
+                            .map_err(err)?;
+                        chart
+                            .draw_series(ring.iter().map(|(p, sign)| {
+                                let colour = match sign {
+                                    1 => RGBColor(214, 96, 77),
+                                    -1 => RGBColor(67, 147, 195),
+                                    _ => RGBColor(200, 200, 200),
+                                };
+                                Polygon::new(p.iter().map(|q| (q[0], q[1])).collect::<Vec<_>>(), colour.filled())
+                            }))
+                            .map_err(err)?;
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}
