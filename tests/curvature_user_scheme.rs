@@ -131,7 +131,7 @@ fn cli_bad_input_is_one_line() {
         vec!["curvature", "no-such-scheme", "--valence", "5"],
         vec!["curvature", "loop", "--valence", "5", "--levels", "0"],
         vec!["curvature", "loop", "--valence", "5", "--figure", "chart", "-o", "x.svg"],
-        vec!["curvature", "loop", "--valence", "5", "-o", "x.pdf"],
+        vec!["curvature", "loop", "--valence", "5", "-o", "x.eps"],
         vec!["curvature", "loop", "--valence", "5", "-o", "/no/such/dir/x.svg"],
     ] {
         let (ok, _, err) = subdlab(&args);

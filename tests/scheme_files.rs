@@ -233,14 +233,7 @@ fn mutated_polygon_files_never_panic() {
             discover(&scheme, &config)?;
             refine_mesh(&scheme, &house, &pts, 1).map(|_| ())
         });
-        match result {
-            Ok(Ok(())) => accepted += 1,
-            Ok(Err(e)) => {
-                assert!(!e.contains('\n') && !e.is_empty(), "case {case}: error not one line: {e:?}\n{text}");
-                rejected += 1;
-            }
-            Err(_) => panic!("case {case} panicked on:\n{text}"),
-        }
+        common::tally_fuzz_case(case, &text, result, &mut accepted, &mut rejected);
     }
     assert!(accepted > 20 && rejected > 100, "accepted {accepted}, rejected {rejected}");
 }
@@ -855,14 +848,7 @@ fn mutated_files_of_the_new_hosts_never_panic() {
             let config = Configuration::regular(&scheme, 5)?;
             discover(&scheme, &config).map(|_| ())
         });
-        match result {
-            Ok(Ok(())) => accepted += 1,
-            Ok(Err(e)) => {
-                assert!(!e.contains('\n') && !e.is_empty(), "case {case}: error not one line: {e:?}\n{text}");
-                rejected += 1;
-            }
-            Err(_) => panic!("case {case} panicked on:\n{text}"),
-        }
+        common::tally_fuzz_case(case, &text, result, &mut accepted, &mut rejected);
     }
     // both outcomes must occur, or the test proves little
     assert!(accepted > 50 && rejected > 300, "accepted {accepted}, rejected {rejected}");

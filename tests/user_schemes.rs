@@ -381,14 +381,7 @@ fn random_and_mutated_files_never_panic_or_hang() {
             let config = Configuration::regular(&scheme, 5)?;
             discover(&scheme, &config).map(|_| ())
         });
-        match result {
-            Ok(Ok(())) => accepted += 1,
-            Ok(Err(e)) => {
-                assert!(!e.contains('\n') && !e.is_empty(), "case {case}: error not one line: {e:?}\n{text}");
-                rejected += 1;
-            }
-            Err(_) => panic!("case {case} panicked on:\n{text}"),
-        }
+        common::tally_fuzz_case(case, &text, result, &mut accepted, &mut rejected);
         assert!(t0.elapsed().as_secs() < 10, "case {case} took {:?}:\n{text}", t0.elapsed());
     }
     eprintln!("{accepted} files accepted, {rejected} rejected");

@@ -217,6 +217,16 @@ pub fn evaluate(paper: &str, claim: &Claim, cache: &mut Cache) -> Outcome {
         Ok(p) => p,
         Err(e) => inconclusive(e),
     };
+    outcome(paper, claim, p)
+}
+
+/// The ERROR outcome of a claim that could not be read or evaluated.
+pub fn error_outcome(paper: &str, claim: &Claim, detail: String) -> Outcome {
+    outcome(paper, claim, Partial { verdict: Verdict::Error, stated: String::new(), computed: String::new(), detail })
+}
+
+/// A claim's outcome: what the claim says of itself, and the verdict.
+fn outcome(paper: &str, claim: &Claim, p: Partial) -> Outcome {
     Outcome {
         id: claim.id.clone(),
         paper: paper.to_string(),
@@ -228,22 +238,6 @@ pub fn evaluate(paper: &str, claim: &Claim, cache: &mut Cache) -> Outcome {
         stated: p.stated,
         computed: p.computed,
         detail: p.detail,
-    }
-}
-
-/// The ERROR outcome of a claim that could not be read or evaluated.
-pub fn error_outcome(paper: &str, claim: &Claim, detail: String) -> Outcome {
-    Outcome {
-        id: claim.id.clone(),
-        paper: paper.to_string(),
-        location: claim.location.clone(),
-        statement: claim.statement.clone(),
-        convention: claim.convention.clone(),
-        verdict: Verdict::Error,
-        expected: claim.expected,
-        stated: String::new(),
-        computed: String::new(),
-        detail,
     }
 }
 

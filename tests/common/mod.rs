@@ -118,3 +118,23 @@ impl Rng {
         (self.next() % n as u64) as usize
     }
 }
+
+/// Counts one case of a fuzz test that mutates a file and loads (and runs)
+/// it: a load or run error must be one non-empty line, and a panic fails the
+/// test with the input that caused it.
+pub fn tally_fuzz_case(
+    case: usize,
+    text: &str,
+    result: std::thread::Result<Result<(), String>>,
+    accepted: &mut usize,
+    rejected: &mut usize,
+) {
+    match result {
+        Ok(Ok(())) => *accepted += 1,
+        Ok(Err(e)) => {
+            assert!(!e.contains('\n') && !e.is_empty(), "case {case}: error not one line: {e:?}\n{text}");
+            *rejected += 1;
+        }
+        Err(_) => panic!("case {case} panicked on:\n{text}"),
+    }
+}
