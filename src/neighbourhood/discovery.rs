@@ -200,7 +200,7 @@ const MAX_LEVELS: usize = 3;
 
 pub fn discover(scheme: &dyn Scheme, config: &Configuration) -> Result<Discovered, String> {
     let mut last_err = String::new();
-    for rings in 2..=MAX_PATCH_RINGS {
+    for rings in first_patch_rings(scheme, config)..=MAX_PATCH_RINGS {
         let mut blame_pruning = false;
         match try_discover(scheme, config, rings, true, &mut blame_pruning) {
             Ok(d) => return Ok(d),
@@ -220,6 +220,26 @@ pub fn discover(scheme: &dyn Scheme, config: &Configuration) -> Result<Discovere
         scheme.name(),
         config.valence()
     ))
+}
+
+/// Valences above this are probed at about this valence first.
+const PROBE_VALENCE: usize = 24;
+
+/// The first patch size worth trying. How many rings the rules reach does not
+/// depend on the valence, so a large symmetric configuration starts with the
+/// patch that the same sector pattern needed at about `PROBE_VALENCE`
+/// sectors (found in milliseconds), instead of first failing on smaller
+/// patches, each of which costs a refinement of O(n) faces. Starting larger
+/// than necessary changes nothing found: both neighbourhoods are closures
+/// under the rules, and a patch only has to be large enough to evaluate them.
+fn first_patch_rings(scheme: &dyn Scheme, config: &Configuration) -> usize {
+    let n = config.valence();
+    let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { n };
+    if n <= 2 * PROBE_VALENCE || 2 * period > PROBE_VALENCE || scheme.fixed_valence().is_some() {
+        return 2;
+    }
+    let probe = Configuration { sectors: config.sectors[..period].repeat(PROBE_VALENCE / period), ..config.clone() };
+    discover(scheme, &probe).map_or(2, |d| d.patch_rings)
 }
 
 /// A float stencil as one refinement step evaluates it; None when the rule
