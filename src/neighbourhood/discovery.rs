@@ -508,7 +508,7 @@ fn try_discover(
     // checked at level 0, where window and patch share vertex ids, and
     // assumed deeper down.
     let cut_by_window = |k: usize, v: usize, refinements: &[Refined]| -> bool {
-        let Some(kept) = kept.as_ref().filter(|_| windowed) else { return false };
+        let Some(kept) = kept.as_ref() else { return false };
         if k > 0 {
             return true;
         }
