@@ -150,7 +150,7 @@ impl Discovered {
     /// by whoever needs every vertex: the characteristic map, which refines
     /// whole nets, and the full matrix. `scheme` must be the scheme that
     /// discovered `self`.
-    pub fn float_stencils(&self, scheme: &dyn Scheme) -> &Arc<Vec<Vec<Option<Stencil<f64>>>>> {
+    pub fn float_stencils(&self, scheme: &dyn Scheme) -> &Arc<FloatStencilTable> {
         self.stencils.all.get_or_init(|| {
             let partial = self.stencils.partial.lock().unwrap_or_else(|e| e.into_inner()).take();
             let evaluated = partial
@@ -181,12 +181,14 @@ impl Discovered {
 /// `Option` says whether it was (discovery evaluates the representatives'
 /// only), the inner one whether the rule could be.
 type PartialStencils = Vec<Vec<Option<Option<Stencil<f64>>>>>;
+/// Per refinement and vertex, the float stencil (None: not evaluable).
+pub type FloatStencilTable = Vec<Vec<Option<Stencil<f64>>>>;
 
 /// Discovery's float stencils and, once someone needs every vertex's, all of
 /// them (see [`Discovered::float_stencils`]).
 struct FloatStencils {
     partial: std::sync::Mutex<Option<PartialStencils>>,
-    all: std::sync::OnceLock<Arc<Vec<Vec<Option<Stencil<f64>>>>>>,
+    all: std::sync::OnceLock<Arc<FloatStencilTable>>,
 }
 
 const MAX_PATCH_RINGS: usize = 8;
