@@ -21,6 +21,8 @@
 //! the largest of the closed forms above (other than λ), which fails if an
 //! outer eigenvalue were larger.
 
+mod common;
+
 use std::f64::consts::PI;
 
 use subdlab::curvature::{curvature_of, Curvature, CurvatureClass, CurvatureOptions};
@@ -70,13 +72,7 @@ fn classes_three_to_twenty_follow_the_block_closed_forms() {
         assert!((c.lambda.unwrap() - lam(n)).abs() < 1e-12, "n = {n}");
         let m = c.mu.as_ref().unwrap();
         assert!((m.modulus - mu).abs() < 1e-10, "n = {n}: μ = {} against {mu}", m.modulus);
-        let want = if (mu - l2).abs() < 1e-12 {
-            CurvatureClass::Bounded
-        } else if mu > l2 {
-            CurvatureClass::Unbounded
-        } else {
-            CurvatureClass::Zero
-        };
+        let want = common::class_from_closed_forms(mu, l2);
         assert_eq!(c.class, want, "n = {n}");
         assert_eq!(c.shapes.as_ref().unwrap().fourier_index, f, "n = {n}");
         if want == CurvatureClass::Unbounded {

@@ -22,6 +22,8 @@
 //! for n = 3 blocks 1 and 2 both carry λ, and μ = max(λ², 1/8) = 1/8 since
 //! λ = 3/8 − 1/8 = 1/4, λ² = 1/16.
 
+mod common;
+
 use std::f64::consts::PI;
 
 use subdlab::curvature::{curvature_of, Curvature, CurvatureClass, CurvatureOptions, Evidence};
@@ -78,13 +80,7 @@ fn block_two_overtakes_lambda_squared_at_seven() {
         let m = c.mu.as_ref().unwrap_or_else(|| panic!("n = {n}: no μ"));
         assert!((c.lambda.unwrap() - lam(n)).abs() < 1e-12, "n = {n}");
         assert!((m.modulus - mu).abs() < 1e-10, "n = {n}: μ {} against {mu}", m.modulus);
-        let want = if (mu - l2).abs() < 1e-12 {
-            CurvatureClass::Bounded
-        } else if mu > l2 {
-            CurvatureClass::Unbounded
-        } else {
-            CurvatureClass::Zero
-        };
+        let want = common::class_from_closed_forms(mu, l2);
         assert_eq!(c.class, want, "n = {n}");
         // the class changes exactly at the threshold (n = 3 is the ring-2 case)
         if n >= 4 {

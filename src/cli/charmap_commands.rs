@@ -74,7 +74,7 @@ fn build_scheme(name: &str, params: &[String]) -> Result<Box<dyn Scheme>, String
 }
 
 /// Fails early, before any computation, when the output cannot be written.
-fn check_out(path: &Path) -> Result<(), String> {
+pub(super) fn check_out(path: &Path) -> Result<(), String> {
     plot::format_of(path)?;
     let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
     if !dir.is_dir() {

@@ -130,12 +130,25 @@ pub(super) fn parse_params(list: &[String]) -> Result<Vec<(String, String)>, Str
         .collect()
 }
 
-fn run_analysis(a: &AnalysisArgs) -> Result<(Box<dyn Scheme>, Analysis), String> {
-    let scheme = schemes::resolve(&a.scheme, &parse_params(&a.params)?)?;
-    let config = match &a.faces {
-        None => Configuration::regular(scheme.as_ref(), a.valence)?,
-        Some(faces) => Configuration::with_faces(scheme.as_ref(), a.valence, faces)?,
+/// The scheme (name or file, with `--param`s) and its configuration at the
+/// valence (regular, or the `--faces` sequence), as every analysis command
+/// reads them.
+pub(super) fn scheme_and_configuration(
+    scheme: &str,
+    params: &[String],
+    valence: usize,
+    faces: Option<&str>,
+) -> Result<(Box<dyn Scheme>, Configuration), String> {
+    let scheme = schemes::resolve(scheme, &parse_params(params)?)?;
+    let config = match faces {
+        None => Configuration::regular(scheme.as_ref(), valence)?,
+        Some(faces) => Configuration::with_faces(scheme.as_ref(), valence, faces)?,
     };
+    Ok((scheme, config))
+}
+
+fn run_analysis(a: &AnalysisArgs) -> Result<(Box<dyn Scheme>, Analysis), String> {
+    let (scheme, config) = scheme_and_configuration(&a.scheme, &a.params, a.valence, a.faces.as_deref())?;
     let neighbourhood: NeighbourhoodKind = a.neighbourhood.parse()?;
     let method = match a.method.as_deref() {
         None => None,

@@ -1,16 +1,15 @@
 //! `subdlab curvature`: the second-order analysis at an extraordinary point
 //! (curvature class, L_p limit, F(μ) and shapes, Reif's C² test) and its figures.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use clap::Args;
 
-use super::commands::parse_params;
+use super::charmap_commands::check_out;
+use super::commands::scheme_and_configuration;
 use crate::curvature::{curvature, Curvature, CurvatureOptions, DEFAULT_LEVELS, MAX_LEVELS};
 use crate::io::print_json;
-use crate::neighbourhood::Configuration;
 use crate::plot::{self, curvature::CurvatureFigure, curvature::CurvatureFigureKind};
-use crate::schemes;
 
 #[derive(Args, Debug, Clone)]
 pub struct CurvatureArgs {
@@ -28,7 +27,7 @@ pub struct CurvatureArgs {
     /// analysis steps of refinement of the ring samples (1 to 6)
     #[arg(long, default_value_t = DEFAULT_LEVELS)]
     pub levels: usize,
-    /// write a figure (.svg or .png); which one: --figure
+    /// write a figure (.svg, .pdf or .png); which one: --figure
     #[arg(short = 'o', long)]
     pub out: Option<PathBuf>,
     /// central-ring (μ-eigenfunctions over the characteristic ring) or
@@ -46,15 +45,6 @@ pub struct CurvatureArgs {
     pub json: bool,
 }
 
-fn check_out(path: &Path) -> Result<(), String> {
-    plot::format_of(path)?;
-    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    if !dir.is_dir() {
-        return Err(format!("cannot write {}: directory {} does not exist", path.display(), dir.display()));
-    }
-    Ok(())
-}
-
 pub fn run(a: &CurvatureArgs) -> Result<(), String> {
     if a.levels == 0 || a.levels > MAX_LEVELS {
         return Err(format!("--levels must be between 1 and {MAX_LEVELS}, got {}", a.levels));
@@ -70,11 +60,7 @@ pub fn run(a: &CurvatureArgs) -> Result<(), String> {
     if let Some(out) = &a.out {
         check_out(out)?;
     }
-    let scheme = schemes::resolve(&a.scheme, &parse_params(&a.params)?)?;
-    let config = match &a.faces {
-        None => Configuration::regular(scheme.as_ref(), a.valence)?,
-        Some(faces) => Configuration::with_faces(scheme.as_ref(), a.valence, faces)?,
-    };
+    let (scheme, config) = scheme_and_configuration(&a.scheme, &a.params, a.valence, a.faces.as_deref())?;
     let opts = CurvatureOptions {
         levels: a.levels,
         figures: a.out.is_some(),

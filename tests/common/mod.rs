@@ -138,3 +138,16 @@ pub fn tally_fuzz_case(
         Err(_) => panic!("case {case} panicked on:\n{text}"),
     }
 }
+
+/// The curvature class Peters–Reif's definitions give for a closed-form μ
+/// (largest modulus below λ) and λ², for comparison with `subdlab::curvature`.
+pub fn class_from_closed_forms(mu: f64, lambda_squared: f64) -> subdlab::curvature::CurvatureClass {
+    use subdlab::curvature::CurvatureClass;
+    if (mu - lambda_squared).abs() < 1e-12 {
+        CurvatureClass::Bounded
+    } else if mu > lambda_squared {
+        CurvatureClass::Unbounded
+    } else {
+        CurvatureClass::Zero
+    }
+}
