@@ -218,3 +218,43 @@ fn windowed_discovery_at_high_valence_matches_tracking_every_vertex() {
         }
     }
 }
+
+/// The Fourier blocks are built in runs of consecutive block indices, side
+/// by side, each run starting its ω-powers at its first block. At a valence
+/// spanning several runs every block must equal the definition evaluated
+/// entry by entry: B_m[a, b] = Σ_τ S[rep a, (b, τ)] ω^{mτ}, with ω^{mτ} from
+/// `omega_pow` (a cos and sin per entry) instead of the runs' table.
+#[test]
+fn fourier_blocks_built_in_runs_equal_the_definition_entry_by_entry() {
+    use subdlab::dft::{fourier_blocks_from_rows, omega_pow};
+    let n = 150;
+    for name in ["loop", "catmull-clark"] {
+        let s = scheme(name);
+        let config = Configuration::regular(s.as_ref(), n).unwrap();
+        let found = discover(s.as_ref(), &config).unwrap();
+        let kind = NeighbourhoodKind::Analysis;
+        let labels = subdlab::matrix::local::set_labels(&found, kind);
+        let orbits = Orbits::from_labels(&labels, config.symmetry_period(), n);
+        let rows = subdlab::matrix::local::assemble_rows_f64(s.as_ref(), &found, kind, &orbits.representative).unwrap();
+        let refs: Vec<&[(usize, f64)]> = rows.iter().map(Vec::as_slice).collect();
+        let blocks = fourier_blocks_from_rows(&refs, &orbits);
+        assert_eq!(blocks.len(), n, "{name}: one block per rotation");
+        for (m, b) in blocks.iter().enumerate() {
+            assert_eq!(b.index, m);
+            let list = orbits.block_orbits(m);
+            for (ra, &a) in list.iter().enumerate() {
+                let mut want = vec![faer::c64::new(0.0, 0.0); list.len()];
+                for &(col, w) in &rows[a] {
+                    let (ob, tau) = orbits.member[col];
+                    if let Some(cb) = list.iter().position(|&o| o == ob) {
+                        want[cb] += omega_pow(m, tau, n) * w;
+                    }
+                }
+                for (cb, w) in want.iter().enumerate() {
+                    let got = b.matrix[(ra, cb)];
+                    assert!((got - w).norm() <= 1e-13, "{name} n={n}: block {m} entry ({ra},{cb}) {got} vs {w}");
+                }
+            }
+        }
+    }
+}

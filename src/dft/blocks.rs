@@ -11,6 +11,7 @@
 
 use faer::c64;
 use faer::Mat;
+use rayon::prelude::*;
 
 use crate::numeric::Rational;
 
@@ -95,6 +96,10 @@ pub fn fourier_blocks(s: &LocalMatrix<f64>, orbits: &Orbits) -> Vec<FourierBlock
 /// All g Fourier blocks from the representative rows alone: `rows[o]` is the
 /// row of S (over all columns) of orbit o's representative. The other rows
 /// are rotations of these, so nothing else of S is needed.
+/// Blocks built in one run of [`fourier_blocks_from_rows`]: enough work per
+/// run to outweigh handing it to another thread.
+const BLOCKS_PER_RUN: usize = 64;
+
 pub fn fourier_blocks_from_rows(rows: &[&[(usize, f64)]], orbits: &Orbits) -> Vec<FourierBlock> {
     let g = orbits.group_order;
     // ω^k for every k: the same values `omega_pow` gives (it depends on m·t
@@ -125,31 +130,42 @@ pub fn fourier_blocks_from_rows(rows: &[&[(usize, f64)]], orbits: &Orbits) -> Ve
                 .collect()
         })
         .collect();
-    let mut turn: Vec<Vec<usize>> = entries.iter().map(|r| vec![0; r.len()]).collect();
-    let mut blocks = Vec::with_capacity(g);
-    for m in 0..g {
-        let list = orbits.block_orbits(m);
-        let size = list.len();
-        let mut acc = vec![c64::new(0.0, 0.0); size * size];
-        for (ra, &a) in list.iter().enumerate() {
-            for (&(cb0, cbm, tau, w), k) in entries[a].iter().zip(turn[a].iter_mut()) {
-                let cb = if m == 0 { cb0 } else { cbm };
-                // a fixed point's column outside block 0: its contribution sums to zero
-                if cb != usize::MAX {
-                    acc[ra * size + cb] += powers[*k] * w;
+    // blocks are independent: contiguous runs of them are built side by
+    // side, each run starting its k = m·τ mod g at its first block
+    let runs = g.div_ceil(BLOCKS_PER_RUN);
+    let built: Vec<Vec<FourierBlock>> = (0..runs)
+        .into_par_iter()
+        .map(|run| {
+            let first = run * BLOCKS_PER_RUN;
+            let mut turn: Vec<Vec<usize>> =
+                entries.iter().map(|r| r.iter().map(|e| (first % g) * e.2 % g).collect()).collect();
+            let mut blocks = Vec::with_capacity(BLOCKS_PER_RUN);
+            for m in first..(first + BLOCKS_PER_RUN).min(g) {
+                let list = orbits.block_orbits(m);
+                let size = list.len();
+                let mut acc = vec![c64::new(0.0, 0.0); size * size];
+                for (ra, &a) in list.iter().enumerate() {
+                    for (&(cb0, cbm, tau, w), k) in entries[a].iter().zip(turn[a].iter_mut()) {
+                        let cb = if m == 0 { cb0 } else { cbm };
+                        // a fixed point's column outside block 0: its contribution sums to zero
+                        if cb != usize::MAX {
+                            acc[ra * size + cb] += powers[*k] * w;
+                        }
+                        // every row but a fixed point's is in every block, so its k
+                        // is advanced here; a fixed point's row is only used in block 0
+                        *k += tau;
+                        if *k >= g {
+                            *k -= g;
+                        }
+                    }
                 }
-                // every row but a fixed point's is in every block, so its k
-                // is advanced here; a fixed point's row is only used in block 0
-                *k += tau;
-                if *k >= g {
-                    *k -= g;
-                }
+                let matrix = Mat::<c64>::from_fn(size, size, |i, j| acc[i * size + j]);
+                blocks.push(FourierBlock { index: m, orbits: list, matrix });
             }
-        }
-        let matrix = Mat::<c64>::from_fn(size, size, |i, j| acc[i * size + j]);
-        blocks.push(FourierBlock { index: m, orbits: list, matrix });
-    }
-    blocks
+            blocks
+        })
+        .collect();
+    built.into_iter().flatten().collect()
 }
 
 /// Block 0 in exact arithmetic (real and rational when S is).

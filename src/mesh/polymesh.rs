@@ -79,12 +79,81 @@ pub type IdBuild = BuildHasherDefault<IdHasher>;
 pub type IdMap<K, V> = HashMap<K, V, IdBuild>;
 pub type IdSet<K> = HashSet<K, IdBuild>;
 
+/// The half-edges of a mesh, grouped by start vertex (compressed rows):
+/// the half-edges leaving vertex a are `out[start[a]..start[a + 1]]`, sorted
+/// by end vertex. Built with two linear passes and a sort of each (short)
+/// group, and read with a scan or a binary search, this is several times
+/// cheaper than a hash map keyed by vertex pairs, and building the meshes of
+/// each refinement level is a large part of analysing a high valence.
+#[derive(Clone, Debug, Default)]
+struct HalfEdges {
+    start: Vec<usize>,
+    /// (end vertex b, face, index of a in that face)
+    out: Vec<(VertexId, FaceId, usize)>,
+}
+
+impl HalfEdges {
+    /// Every corner of `faces` as a half-edge (indices must be valid).
+    fn new(num_vertices: usize, faces: &[Vec<VertexId>]) -> HalfEdges {
+        let mut start = vec![0usize; num_vertices + 1];
+        for face in faces {
+            for &a in face {
+                start[a + 1] += 1;
+            }
+        }
+        for v in 0..num_vertices {
+            start[v + 1] += start[v];
+        }
+        let mut fill = start.clone();
+        let mut out = vec![(0, 0, 0); start[num_vertices]];
+        for (fi, face) in faces.iter().enumerate() {
+            for (k, &a) in face.iter().enumerate() {
+                out[fill[a]] = (face[(k + 1) % face.len()], fi, k);
+                fill[a] += 1;
+            }
+        }
+        for v in 0..num_vertices {
+            out[start[v]..start[v + 1]].sort_unstable();
+        }
+        HalfEdges { start, out }
+    }
+
+    /// A half-edge that two faces (or one face twice) use in the same
+    /// direction: the one whose second use comes first in face order.
+    fn first_repeated(&self) -> Option<MeshError> {
+        let mut first: Option<(FaceId, usize, VertexId, VertexId)> = None;
+        for a in 0..self.start.len() - 1 {
+            let group = &self.out[self.start[a]..self.start[a + 1]];
+            for pair in group.windows(2) {
+                // sorted by (b, face, corner): the later use is the second
+                if pair[0].0 == pair[1].0 {
+                    let (b, f, k) = pair[1];
+                    if first.is_none_or(|(f0, k0, ..)| (f, k) < (f0, k0)) {
+                        first = Some((f, k, a, b));
+                    }
+                }
+            }
+        }
+        first.map(|(_, _, a, b)| MeshError::NonManifoldEdge { a, b })
+    }
+
+    fn get(&self, a: VertexId, b: VertexId) -> Option<(FaceId, usize)> {
+        let group = &self.out[*self.start.get(a)?..*self.start.get(a + 1)?];
+        let found = if group.len() <= 16 {
+            group.iter().find(|e| e.0 == b)
+        } else {
+            group.binary_search_by_key(&b, |e| e.0).ok().map(|i| &group[i])
+        };
+        found.map(|&(_, f, k)| (f, k))
+    }
+}
+
 #[derive(Clone, Debug)]
 pub struct PolyMesh {
     faces: Vec<Vec<VertexId>>,
     num_vertices: usize,
     /// half-edge (a -> b) -> (face, index of a in that face)
-    half_edges: IdMap<(VertexId, VertexId), (FaceId, usize)>,
+    half_edges: HalfEdges,
     /// one face corner per vertex, to start walks around it
     vertex_corner: Vec<Option<(FaceId, usize)>>,
     /// The fan of each vertex as (face, corner) pairs, walked on first use
@@ -149,23 +218,34 @@ impl From<MeshError> for crate::error::Error {
 
 impl PolyMesh {
     pub fn new(num_vertices: usize, faces: Vec<Vec<VertexId>>) -> Result<Self, MeshError> {
-        let mut half_edges = IdMap::with_capacity_and_hasher(faces.iter().map(|f| f.len()).sum(), IdBuild::default());
+        // face cycles are checked in face order; a repeated half-edge is
+        // reported only if it comes before the first bad face, so the error
+        // is the first defect in face order
+        let bad = faces.iter().enumerate().find_map(|(fi, face)| {
+            if face.len() < 3 {
+                return Some(MeshError::DegenerateFace { face: fi });
+            }
+            face.iter().enumerate().find_map(|(k, &a)| {
+                if a >= num_vertices {
+                    Some(MeshError::BadIndex { face: fi, index: a })
+                } else if a == face[(k + 1) % face.len()] {
+                    Some(MeshError::DegenerateFace { face: fi })
+                } else {
+                    None
+                }
+            })
+        });
+        let good = match &bad {
+            Some(MeshError::DegenerateFace { face } | MeshError::BadIndex { face, .. }) => *face,
+            _ => faces.len(),
+        };
+        let half_edges = HalfEdges::new(num_vertices, &faces[..good]);
+        if let Some(e) = half_edges.first_repeated().or(bad) {
+            return Err(e);
+        }
         let mut vertex_corner = vec![None; num_vertices];
         for (fi, face) in faces.iter().enumerate() {
-            if face.len() < 3 {
-                return Err(MeshError::DegenerateFace { face: fi });
-            }
             for (k, &a) in face.iter().enumerate() {
-                if a >= num_vertices {
-                    return Err(MeshError::BadIndex { face: fi, index: a });
-                }
-                let b = face[(k + 1) % face.len()];
-                if a == b {
-                    return Err(MeshError::DegenerateFace { face: fi });
-                }
-                if half_edges.insert((a, b), (fi, k)).is_some() {
-                    return Err(MeshError::NonManifoldEdge { a, b });
-                }
                 if vertex_corner[a].is_none() {
                     vertex_corner[a] = Some((fi, k));
                 }
@@ -355,7 +435,7 @@ impl PolyMesh {
 
     /// The face that contains the half-edge a -> b, with the index of a in it.
     pub fn half_edge(&self, a: VertexId, b: VertexId) -> Option<(FaceId, usize)> {
-        self.half_edges.get(&(a, b)).copied()
+        self.half_edges.get(a, b)
     }
 
     /// Face `f` rotated so that it starts at its corner `k`.
@@ -370,7 +450,7 @@ impl PolyMesh {
         for face in &self.faces {
             for k in 0..face.len() {
                 let (a, b) = (face[k], face[(k + 1) % face.len()]);
-                if !self.half_edges.contains_key(&(b, a)) || a < b {
+                if self.half_edges.get(b, a).is_none() || a < b {
                     out.push((a, b));
                 }
             }
@@ -380,7 +460,7 @@ impl PolyMesh {
 
     /// True when the edge {a, b} has a face on both sides.
     pub fn is_interior_edge(&self, a: VertexId, b: VertexId) -> bool {
-        self.half_edges.contains_key(&(a, b)) && self.half_edges.contains_key(&(b, a))
+        self.half_edges.get(a, b).is_some() && self.half_edges.get(b, a).is_some()
     }
 
     /// The faces around vertex `v` in counter-clockwise order, each given as the

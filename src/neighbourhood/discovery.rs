@@ -275,7 +275,7 @@ impl Rotation {
     /// no chart or no symmetry, or when a representative is missing. With
     /// `complete`, every orbit must be in the mesh (orbits are rebuilt from
     /// representatives there); without, only each vertex's representative
-    /// (meshes cut down to a window of sectors, see `window_around_representatives`).
+    /// (meshes cut down to a window of sectors, see `window_faces`).
     pub(crate) fn new(mesh: &PolyMesh, period: usize, complete: bool) -> Rotation {
         let size = mesh.num_vertices();
         let Some(chart) = mesh.chart.as_ref() else { return Rotation::identity(size) };
@@ -599,18 +599,10 @@ fn try_discover(
         }
         let mut old_ids: Option<Vec<usize>> = None;
         if prune && r >= steps {
-            if let Some((pruned, old, region)) = prune_around(&mesh_k, &region_faces, PRUNE_MARGIN)? {
+            if let Some((pruned, old, region)) = prune_around(&mesh_k, &region_faces, PRUNE_MARGIN, period)? {
                 mesh_k = Cow::Owned(pruned);
                 region_faces = region;
                 old_ids = Some(old);
-            }
-            if let Some((windowed, old, region)) = window_around_representatives(&mesh_k, &region_faces, period)? {
-                mesh_k = Cow::Owned(windowed);
-                region_faces = region;
-                old_ids = Some(match old_ids {
-                    Some(first) => old.iter().map(|&v| first[v]).collect(),
-                    None => old,
-                });
             }
         }
         relabel.push(old_ids);
@@ -733,19 +725,10 @@ const DISC_RINGS: usize = 1;
 /// walked (see `Rotation`), so the rest of a valence-n mesh is never read,
 /// and cutting it makes every deeper refinement O(1) in size per sector
 /// outside the disc. None when that would keep more than half the faces.
-fn window_around_representatives(
-    mesh: &PolyMesh,
-    region_faces: &[bool],
-    period: usize,
-) -> Result<Option<Pruned>, String> {
-    let Some(kept) = window_faces(mesh, period) else { return Ok(None) };
-    let region = kept.iter().map(|&f| region_faces[f]).collect();
-    let (cut, old) = mesh.restrict(&kept)?;
-    Ok(Some((cut, old, region)))
-}
-
-/// The faces [`window_around_representatives`] keeps; None when it would
-/// keep more than half of them (or the mesh has no usable symmetry).
+/// The faces of a window around the representatives' sectors: the sectors
+/// within `WINDOW_SECTORS` of theirs and a disc of `DISC_RINGS` rings around
+/// the centre in every sector; None when it would keep more than half of
+/// them (or the mesh has no usable symmetry).
 fn window_faces(mesh: &PolyMesh, period: usize) -> Option<Vec<usize>> {
     let chart = mesh.chart.as_ref()?;
     let n = chart.sectors();
@@ -788,11 +771,19 @@ fn window_faces(mesh: &PolyMesh, period: usize) -> Option<Vec<usize>> {
 }
 
 /// The sub-mesh of the region faces and `margin` rings of faces around them
-/// (faces sharing a vertex with the previous ring), with the region flags of
-/// the kept faces and, per kept vertex, its id in `mesh`; None when that would
-/// keep more than half the faces (copying then costs more than it saves).
+/// (faces sharing a vertex with the previous ring), cut down further to the
+/// window around the representatives (`window_faces`) where the mesh has
+/// one, with the region flags of the kept faces and, per kept vertex, its id
+/// in `mesh`; None when that would keep more than half the faces (copying
+/// then costs more than it saves). Both cuts make one sub-mesh: building the
+/// mesh of a deep level is a large part of discovery at high valence.
 type Pruned = (PolyMesh, Vec<usize>, Vec<bool>);
-fn prune_around(mesh: &PolyMesh, region_faces: &[bool], margin: usize) -> Result<Option<Pruned>, String> {
+fn prune_around(
+    mesh: &PolyMesh,
+    region_faces: &[bool],
+    margin: usize,
+    period: usize,
+) -> Result<Option<Pruned>, String> {
     let mut keep = region_faces.to_vec();
     let mut near = vec![false; mesh.num_vertices()];
     for _ in 0..margin {
@@ -806,6 +797,11 @@ fn prune_around(mesh: &PolyMesh, region_faces: &[bool], margin: usize) -> Result
                 keep[f] = true;
             }
         }
+    }
+    if let Some(window) = window_faces(mesh, period) {
+        let mut in_window = vec![false; mesh.num_faces()];
+        window.into_iter().for_each(|f| in_window[f] = true);
+        keep.iter_mut().zip(in_window).for_each(|(k, w)| *k &= w);
     }
     let kept: Vec<usize> = (0..mesh.num_faces()).filter(|&f| keep[f]).collect();
     if 2 * kept.len() > mesh.num_faces() {

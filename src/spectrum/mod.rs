@@ -11,6 +11,7 @@ pub mod verdict;
 
 use faer::c64;
 use faer::Mat;
+use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::dft::lazy_full_by_rotation;
@@ -323,11 +324,13 @@ pub fn decompose(matrix: &LocalMatrix<f64>, period: usize, n: usize, method: Met
 /// orbit o's representative, over all columns).
 pub fn decompose_dft(rows: &[&[(usize, f64)]], orbits: Orbits) -> Result<Decomposition, String> {
     let blocks = fourier_blocks_from_rows(rows, &orbits);
+    // the blocks are independent eigenproblems: solved side by side, and
+    // collected in block order, so the result does not depend on scheduling
+    let solved: Vec<Result<Vec<eigen::BlockEigen>, String>> =
+        blocks.par_iter().map(|b| eigen::block_eigen(&b.matrix)).collect();
     let mut all = Vec::new();
-    for b in &blocks {
-        for e in eigen::block_eigen(&b.matrix)? {
-            all.push(Eigenvalue::from_block(e, b.index));
-        }
+    for (b, eigen) in blocks.iter().zip(solved) {
+        all.extend(eigen?.into_iter().map(|e| Eigenvalue::from_block(e, b.index)));
     }
     let info = blocks.iter().map(|b| BlockInfo { index: b.index, size: b.matrix.nrows() }).collect();
     let (block_orbits, mats) = blocks.into_iter().map(|b| (b.orbits, b.matrix)).unzip();
