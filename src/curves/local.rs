@@ -1,5 +1,6 @@
 //! The local subdivision matrix of a curve scheme around a vertex, and its
-//! spectrum (exact where every weight is rational).
+//! spectrum (exact where every weight is rational), by the one driver that
+//! every domain uses (`spectrum::driver`).
 //!
 //! Windows are found by following dependencies through the mask, never typed
 //! in. Refined point k depends on the old points of `mask.stencil(k)`; a set
@@ -17,16 +18,19 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 
-use faer::{c64, Mat};
+use faer::c64;
 use serde::Serialize;
 
 use super::{CurveMask, CurveScheme, CurveWeight};
 use crate::engine::closure::{self, assemble, invariant_closure, ClosureError, Levels, Refinement};
-use crate::engine::exact;
 use crate::engine::LocalMatrix;
-use crate::neighbourhood::NeighbourhoodKind;
+use crate::neighbourhood::{NeighbourhoodKind, VertexKind, VertexLabel};
 use crate::numeric::recognise::recognise;
 use crate::numeric::{Rational, Weight};
+use crate::sdc::CentreKind;
+use crate::spectrum::driver::{solve, Assembled, Identity, Problem};
+use crate::spectrum::exact::Candidates;
+use crate::spectrum::Method;
 
 /// Guard against masks whose dependency closure does not stay local.
 const MAX_WINDOW: usize = 1000;
@@ -113,7 +117,25 @@ pub struct CurveSpectrum {
     pub eigenvalues: Vec<CurveEigenvalue>,
 }
 
-/// Window, local matrix and spectrum of a curve scheme at a vertex.
+/// The labels of a window's points for the shared spectrum types: point i
+/// of the line as "P_i", its distance from the centre as its ring.
+fn label(k: usize, &i: &i64) -> VertexLabel {
+    VertexLabel {
+        name: format!("P_{i}"),
+        ring: i.unsigned_abs() as usize,
+        sector: 0,
+        index: k,
+        kind: if i == 0 { VertexKind::Centre } else { VertexKind::Vertex },
+        i,
+        j: 0,
+    }
+}
+
+/// Window, local matrix and spectrum of a curve scheme at a vertex. The
+/// spectrum comes from the one driver (`spectrum::driver::solve`) that the
+/// mesh and lattice domains use; when every weight is rational and every
+/// eigenvalue is a proven rational root, the eigenvalues reported are the
+/// exact ones, with multiplicities from the polynomial and exact ranks.
 pub fn curve_spectrum(scheme: &dyn CurveScheme, kind: NeighbourhoodKind) -> Result<CurveSpectrum, String> {
     let mask = <f64 as CurveWeight>::mask(scheme).map_err(|_| "a weight is not representable".to_string())?;
     let exact_mask = <Rational as CurveWeight>::mask(scheme).ok();
@@ -127,81 +149,88 @@ pub fn curve_spectrum(scheme: &dyn CurveScheme, kind: NeighbourhoodKind) -> Resu
         NeighbourhoodKind::Minimal => minimal.clone(),
         NeighbourhoodKind::Analysis => analysis.clone(),
     };
-    let m = local_matrix(&mask, &window)?;
-    let n = m.size();
-    let dense = m.dense();
-    let block = Mat::<c64>::from_fn(n, n, |i, j| c64::new(dense[i][j], 0.0));
-    let floats = crate::spectrum::eigen::block_eigen(&block)?;
-    let mut eigenvalues: Vec<CurveEigenvalue> = floats
-        .iter()
-        .map(|e| {
-            let im = if e.value.im.abs() < 1e-12 * e.value.norm().max(1.0) { 0.0 } else { e.value.im };
-            CurveEigenvalue {
-                re: e.value.re,
-                im,
-                modulus: e.value.norm(),
-                algebraic_multiplicity: e.algebraic,
-                geometric_multiplicity: e.geometric,
-                defective: e.geometric < e.algebraic,
-                exact: None,
-                recognised: if im == 0.0 { recognise(e.value.re) } else { None },
-            }
-        })
-        .collect();
-    let mut exact_matrix = None;
-    let mut charpoly = None;
-    let mut exact = false;
-    if let Some(em) = &exact_mask {
-        let qm = local_matrix(em, &window)?;
-        let q = qm.to_qmatrix();
-        let proof = exact::confirm(&q, &exact::candidates(eigenvalues.iter().filter(|e| e.im == 0.0).map(|e| e.re)));
-        charpoly = Some(proof.charpoly.pretty());
-        exact_matrix = Some(qm.dense().iter().map(|r| r.iter().map(|x| x.to_string()).collect()).collect());
-        if proof.complete() {
-            // every eigenvalue is rational and proven: multiplicities from the
-            // polynomial, eigenspace dimensions from exact ranks
-            exact = true;
-            eigenvalues = proof
-                .eigenvalues
-                .iter()
-                .map(|r| {
-                    let re = Weight::to_f64(&r.value);
-                    CurveEigenvalue {
-                        re,
-                        im: 0.0,
-                        modulus: re.abs(),
-                        algebraic_multiplicity: r.algebraic,
-                        geometric_multiplicity: r.geometric,
-                        defective: r.geometric < r.algebraic,
-                        exact: Some(r.value.to_string()),
-                        recognised: recognise(re),
-                    }
-                })
-                .collect();
-        } else {
-            for r in &proof.eigenvalues {
-                let v = Weight::to_f64(&r.value);
-                if let Some(e) = eigenvalues
-                    .iter_mut()
-                    .find(|e| e.im == 0.0 && (e.re - v).abs() <= 1e-7 * v.abs().max(1.0) && e.exact.is_none())
-                {
-                    e.exact = Some(r.value.to_string());
+    let float = local_matrix(&mask, &window)?.relabel(label).with_kind(kind);
+    let exact_matrix = match &exact_mask {
+        Some(m) => Some(local_matrix(m, &window)?.relabel(label).with_kind(kind)),
+        None => None,
+    };
+    let rows = Assembled { float, exact: exact_matrix };
+    let params: BTreeMap<String, String> =
+        scheme.params().values.iter().map(|(k, v)| (k.clone(), v.text.clone())).collect();
+    let problem = Problem {
+        identity: Identity {
+            scheme: scheme.name().to_string(),
+            valence: 2,
+            params: params.clone(),
+            faces: String::new(),
+            centre: CentreKind::Vertex,
+            neighbourhood: kind,
+            minimal_size: minimal.len(),
+            analysis_size: analysis.len(),
+        },
+        labels: rows.float.labels.clone(),
+        period: 1,
+        sectors: 1,
+        method: Some(Method::Full),
+        exact: true,
+        // a window is a handful of points: every convergent is worth a try
+        candidates: Candidates::Convergents,
+        rows: &rows,
+    };
+    let spectrum = solve(problem)?.spectrum;
+    let summary = spectrum.exact_analysis.as_ref();
+    let exact = summary.is_some_and(|s| s.complete());
+    let mut eigenvalues: Vec<CurveEigenvalue> = match summary {
+        // every eigenvalue is rational and proven: multiplicities from the
+        // polynomial, eigenspace dimensions from exact ranks
+        Some(s) if exact => s
+            .rational_roots
+            .iter()
+            .map(|r| {
+                let re = Weight::to_f64(&r.rational);
+                let geometric = r.geometric_multiplicity.expect("the full method gives exact ranks");
+                CurveEigenvalue {
+                    re,
+                    im: 0.0,
+                    modulus: re.abs(),
+                    algebraic_multiplicity: r.algebraic_multiplicity,
+                    geometric_multiplicity: geometric,
+                    defective: geometric < r.algebraic_multiplicity,
+                    exact: Some(r.value.clone()),
+                    recognised: recognise(re),
                 }
-            }
-        }
-    }
+            })
+            .collect(),
+        _ => spectrum
+            .eigenvalues
+            .iter()
+            .map(|e| CurveEigenvalue {
+                re: e.re,
+                im: e.im,
+                modulus: e.modulus,
+                algebraic_multiplicity: e.algebraic_multiplicity,
+                geometric_multiplicity: e.geometric_multiplicity,
+                defective: e.defective,
+                exact: e.exact.clone(),
+                recognised: e.recognised.clone(),
+            })
+            .collect(),
+    };
     eigenvalues.sort_by(|a, b| crate::spectrum::eigenvalue_order(c64::new(a.re, a.im), c64::new(b.re, b.im)));
     Ok(CurveSpectrum {
         scheme: scheme.name().to_string(),
-        params: scheme.params().values.iter().map(|(k, v)| (k.clone(), v.text.clone())).collect(),
+        params,
         neighbourhood: kind,
-        matrix_size: n,
+        matrix_size: window.len(),
         minimal_size: minimal.len(),
         analysis_size: analysis.len(),
+        matrix: rows.float.dense(),
+        exact_matrix: rows
+            .exact
+            .as_ref()
+            .map(|m| m.dense().iter().map(|r| r.iter().map(|x| x.to_string()).collect()).collect()),
+        charpoly: summary.map(|s| s.poly.pretty()),
         window,
-        matrix: dense,
-        exact_matrix,
-        charpoly,
         exact,
         eigenvalues,
     })

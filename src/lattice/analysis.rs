@@ -1,9 +1,9 @@
 //! Spectra of lattice schemes, reported with the same types (and so the same
 //! stable JSON fields) as the mesh-based schemes: the window's matrix (the
 //! one local-matrix type, on lattice points) is relabelled with vertex
-//! labels, the float spectrum comes from the shared dense eigen-stage (`spectrum::decompose`, full method: asymmetric
-//! masks have no rotation symmetry), the exact confirmation from
-//! `spectrum::exact::confirm`, the verdict from `verdict::reif`.
+//! labels and handed to the one driver (`spectrum::driver::solve`), which
+//! every domain uses for the eigen-stage, the exact confirmation and the
+//! verdict.
 
 use super::{analysis_window, minimal_invariant_window, point_name, window_matrix, LatticeScheme, Window};
 use crate::matrix::LocalMatrix;
@@ -11,7 +11,9 @@ use crate::neighbourhood::{NeighbourhoodKind, VertexKind, VertexLabel};
 use crate::numeric::exact::{Poly, QMatrix};
 use crate::numeric::Rational;
 use crate::sdc::CentreKind;
-use crate::spectrum::{decompose, sort_eigenvalues, verdict, Method, Spectrum};
+use crate::spectrum::driver::{solve, Assembled, Identity, Problem};
+use crate::spectrum::exact::Candidates;
+use crate::spectrum::{Method, Spectrum};
 
 /// The control points of the limit surface over the cells touching the origin
 /// define the analysis window (radius 1 in level-0 lattice units).
@@ -64,8 +66,10 @@ pub fn to_qmatrix(dense: &[Vec<Rational>]) -> QMatrix {
     q
 }
 
-/// Spectrum of the scheme on its minimal or analysis window. Lattice weights
-/// are rational, so the exact confirmation always runs (full characteristic
+/// Spectrum of the scheme on its minimal or analysis window, by the one
+/// driver (`spectrum::driver`): the window has no rotation symmetry to use
+/// (asymmetric masks), so the whole matrix is analysed. Lattice weights are
+/// rational, so the exact confirmation always runs (full characteristic
 /// polynomial, exact ranks) unless `exact` is false.
 pub fn analyse(scheme: &dyn LatticeScheme, kind: NeighbourhoodKind, exact: bool) -> Result<LatticeAnalysis, String> {
     let minimal = minimal_invariant_window(scheme, &[(0, 0)])?;
@@ -74,32 +78,31 @@ pub fn analyse(scheme: &dyn LatticeScheme, kind: NeighbourhoodKind, exact: bool)
         NeighbourhoodKind::Minimal => minimal.clone(),
         NeighbourhoodKind::Analysis => analysis.clone(),
     };
-    let matrix = to_local::<f64>(scheme, &window, kind)?;
-    let exact_matrix = to_local::<Rational>(scheme, &window, kind)?;
-    let n = window.len();
-    let d = decompose(&matrix, 1, 1, Method::Full)?;
-    let mut eigenvalues = d.eigenvalues;
-    sort_eigenvalues(&mut eigenvalues);
-    // period == sectors selects the full characteristic polynomial in `confirm`
-    let exact_analysis = exact.then(|| crate::spectrum::exact::confirm(&exact_matrix, &mut eigenvalues, 1, 1));
-    let verdict = verdict::reif(&eigenvalues);
-    let spectrum = Spectrum {
-        scheme: scheme.name().to_string(),
-        valence: 4,
-        params: scheme.params().values.iter().map(|(k, v)| (k.clone(), v.text.clone())).collect(),
-        faces: "QQQQ".into(),
-        centre: CentreKind::Vertex,
-        neighbourhood: kind,
-        matrix_size: n,
-        minimal_size: minimal.len(),
-        analysis_size: analysis.len(),
-        method: Method::Full,
-        blocks: d.blocks,
-        eigenvalues,
-        verdict,
-        exact_analysis,
-        labels: matrix.labels.clone(),
-        synthesis: d.synthesis,
+    let rows = Assembled {
+        float: to_local::<f64>(scheme, &window, kind)?,
+        exact: Some(to_local::<Rational>(scheme, &window, kind)?),
     };
+    let problem = Problem {
+        identity: Identity {
+            scheme: scheme.name().to_string(),
+            valence: 4,
+            params: scheme.params().values.iter().map(|(k, v)| (k.clone(), v.text.clone())).collect(),
+            faces: "QQQQ".into(),
+            centre: CentreKind::Vertex,
+            neighbourhood: kind,
+            minimal_size: minimal.len(),
+            analysis_size: analysis.len(),
+        },
+        labels: rows.float.labels.clone(),
+        period: 1,
+        sectors: 1,
+        method: Some(Method::Full),
+        exact,
+        candidates: Candidates::Recognised,
+        rows: &rows,
+    };
+    let spectrum = solve(problem)?.spectrum;
+    let Assembled { float: matrix, exact: exact_matrix } = rows;
+    let exact_matrix = exact_matrix.expect("assembled above");
     Ok(LatticeAnalysis { window, minimal, analysis, matrix, exact_matrix, spectrum })
 }

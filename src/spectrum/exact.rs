@@ -13,7 +13,7 @@ use crate::dft::blocks::{block_zero_exact, block_zero_exact_from_rows};
 use crate::dft::Orbits;
 use crate::engine::exact as engine_exact;
 use crate::matrix::LocalMatrix;
-use crate::numeric::exact::{rational_roots, QMatrix};
+use crate::numeric::exact::{rational_roots, Poly, QMatrix};
 use crate::numeric::Rational;
 
 /// Largest matrix whose full characteristic polynomial is computed exactly.
@@ -22,6 +22,8 @@ pub const EXACT_FULL_MAX: usize = 80;
 #[derive(Clone, Debug, Serialize)]
 pub struct ExactRoot {
     pub value: String,
+    #[serde(skip)]
+    pub rational: Rational,
     pub algebraic_multiplicity: usize,
     /// exact nullity of S − λI (full method only)
     pub geometric_multiplicity: Option<usize>,
@@ -39,6 +41,30 @@ pub struct ExactSummary {
     pub remaining_degree: usize,
     /// every exact multiplicity equals the floating-point one
     pub agrees_with_float: bool,
+    /// the characteristic polynomial itself (printed in full by the curve
+    /// report, whatever its degree)
+    #[serde(skip)]
+    pub poly: Poly,
+}
+
+impl ExactSummary {
+    /// Every eigenvalue of S is one of the proven rationals, with its
+    /// multiplicities from the whole S (not from block 0 alone).
+    pub fn complete(&self) -> bool {
+        self.method == "full" && self.remaining_degree == 0
+    }
+}
+
+/// Which rationals are tried as eigenvalues.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Candidates {
+    /// the small-denominator reading of each float (`recognise`,
+    /// denominators up to 1024): cheap on the large matrices of meshes
+    Recognised,
+    /// every continued-fraction convergent of each real float (denominators
+    /// up to 10⁹): for the few-point windows of curves, where a parameter
+    /// such as 123/1000 makes large denominators
+    Convergents,
 }
 
 fn parse_ratio(s: &str) -> Option<Rational> {
@@ -50,12 +76,18 @@ pub fn to_qmatrix(m: &LocalMatrix<Rational>) -> QMatrix {
     m.to_qmatrix()
 }
 
-pub fn confirm(m: &LocalMatrix<Rational>, eigs: &mut [Eigenvalue], period: usize, n: usize) -> ExactSummary {
+pub fn confirm(
+    m: &LocalMatrix<Rational>,
+    eigs: &mut [Eigenvalue],
+    period: usize,
+    n: usize,
+    candidates: Candidates,
+) -> ExactSummary {
     if needs_full(m.size(), period, n) {
-        confirm_with("full", &to_qmatrix(m), true, eigs)
+        confirm_with("full", &to_qmatrix(m), true, eigs, candidates)
     } else {
         let orbits = Orbits::new(m, period, n);
-        confirm_with("block0", &block_zero_exact(m, &orbits), false, eigs)
+        confirm_with("block0", &block_zero_exact(m, &orbits), false, eigs, candidates)
     }
 }
 
@@ -68,15 +100,30 @@ pub fn needs_full(size: usize, period: usize, n: usize) -> bool {
 /// [`confirm`] for a rotation-symmetric S too large for the full method, from
 /// its representative rows alone (`rows[o]`: the row of orbit o's
 /// representative): block 0 needs nothing else.
-pub fn confirm_block0(rows: &[&[(usize, Rational)]], orbits: &Orbits, eigs: &mut [Eigenvalue]) -> ExactSummary {
-    confirm_with("block0", &block_zero_exact_from_rows(rows, orbits), false, eigs)
+pub fn confirm_block0(
+    rows: &[&[(usize, Rational)]],
+    orbits: &Orbits,
+    eigs: &mut [Eigenvalue],
+    candidates: Candidates,
+) -> ExactSummary {
+    confirm_with("block0", &block_zero_exact_from_rows(rows, orbits), false, eigs, candidates)
 }
 
 /// Test the float eigenvalues' rational readings against the exact
 /// characteristic polynomial of `mat` (all of S when `full`, else block 0).
-fn confirm_with(method: &str, mat: &QMatrix, full: bool, eigs: &mut [Eigenvalue]) -> ExactSummary {
-    let candidates: Vec<(usize, Rational)> =
-        eigs.iter().enumerate().filter_map(|(k, e)| Some((k, parse_ratio(e.recognised.as_deref()?)?))).collect();
+fn confirm_with(method: &str, mat: &QMatrix, full: bool, eigs: &mut [Eigenvalue], policy: Candidates) -> ExactSummary {
+    // (index of the float eigenvalue, a rational it may be)
+    let candidates: Vec<(usize, Rational)> = match policy {
+        Candidates::Recognised => {
+            eigs.iter().enumerate().filter_map(|(k, e)| Some((k, parse_ratio(e.recognised.as_deref()?)?))).collect()
+        }
+        Candidates::Convergents => eigs
+            .iter()
+            .enumerate()
+            .filter(|(_, e)| e.im == 0.0)
+            .flat_map(|(k, e)| engine_exact::candidates([e.re]).into_iter().map(move |c| (k, c)))
+            .collect(),
+    };
     let cand_values: Vec<Rational> = candidates.iter().map(|c| c.1.clone()).collect();
     // the whole S: the one exact confirmation every domain uses (roots and
     // exact ranks); block 0 alone: its rational roots only, since ranks of a
@@ -96,14 +143,26 @@ fn confirm_with(method: &str, mat: &QMatrix, full: bool, eigs: &mut [Eigenvalue]
     let mut out = Vec::new();
     for (r, alg, geo) in &roots {
         let text = r.to_string();
-        if let Some((k, _)) = candidates.iter().find(|c| &c.1 == r) {
-            let e = &mut eigs[*k];
+        // the float it came from: the closest of those proposing it
+        let rv = crate::numeric::Weight::to_f64(r);
+        let closest = candidates
+            .iter()
+            .filter(|c| &c.1 == r)
+            .map(|c| c.0)
+            .min_by(|&a, &b| (eigs[a].re - rv).abs().total_cmp(&(eigs[b].re - rv).abs()));
+        if let Some(k) = closest {
+            let e = &mut eigs[k];
             e.exact = Some(text.clone());
             if full && (e.algebraic_multiplicity != *alg || Some(e.geometric_multiplicity) != *geo) {
                 agrees = false;
             }
         }
-        out.push(ExactRoot { value: text, algebraic_multiplicity: *alg, geometric_multiplicity: *geo });
+        out.push(ExactRoot {
+            value: text,
+            rational: r.clone(),
+            algebraic_multiplicity: *alg,
+            geometric_multiplicity: *geo,
+        });
     }
     ExactSummary {
         method: method.to_string(),
@@ -112,5 +171,6 @@ fn confirm_with(method: &str, mat: &QMatrix, full: bool, eigs: &mut [Eigenvalue]
         rational_roots: out,
         remaining_degree,
         agrees_with_float: agrees,
+        poly,
     }
 }

@@ -3,6 +3,7 @@
 //! into distinct eigenvalues with multiplicities, eigenvectors mapped back to
 //! labelled vertices, exact confirmation where S is rational.
 
+pub mod driver;
 pub mod eigen;
 pub mod exact;
 pub mod stencils;
@@ -14,7 +15,6 @@ use faer::Mat;
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::dft::lazy_full_by_rotation;
 use crate::dft::{fourier_blocks_from_rows, omega_pow, Orbits};
 use crate::matrix::local::{assemble_rows, assemble_rows_f64, lazy_full_f64, set_labels};
 use crate::matrix::{assemble, FullMatrix, LocalMatrix};
@@ -217,82 +217,53 @@ pub struct Analysis {
 pub fn analyse(scheme: &dyn Scheme, config: &Configuration, opts: &Options) -> Result<Analysis, String> {
     let discovered = discover(scheme, config)?;
     let kind = opts.neighbourhood;
-    let labels = set_labels(&discovered, kind);
-    let size = labels.len();
     let n = config.valence();
-    // asymmetric rules have no rotation symmetry, whatever the configuration
-    let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { n };
-    let symmetric = period < n;
-    let method = opts.method.unwrap_or(if symmetric { Method::Dft } else { Method::Full });
-    if method == Method::Full && size > MAX_FULL_SIZE {
-        // refused before the O(size³) work, with the estimate
-        let minutes = (size as f64 / 1800.0).powi(3);
-        return Err(format!(
-            "the whole-matrix method needs a dense {size}×{size} eigenproblem, above the supported {MAX_FULL_SIZE}×{MAX_FULL_SIZE} \
-             (its cost grows as the cube of the size: about {minutes:.1} min here){}",
-            if symmetric { "; use --method dft" } else { "; this configuration has no rotation symmetry: use a smaller valence" }
-        ));
-    }
-    let orbits = Orbits::from_labels(&labels, period, n);
-    let (matrix, Decomposition { blocks: blocks_info, mut eigenvalues, synthesis }) = match method {
-        Method::Dft => {
-            // the representative rows are all the blocks need; the rest of S,
-            // if anyone asks, is their rotation
-            let rows =
-                assemble_rows_f64(scheme, &discovered, kind, &orbits.representative).map_err(|e| e.to_string())?;
-            let refs: Vec<&[(usize, f64)]> = rows.iter().map(Vec::as_slice).collect();
-            let decomposition = decompose_dft(&refs, orbits.clone())?;
-            (lazy_full_by_rotation(labels.clone(), kind, &orbits, rows), decomposition)
-        }
-        Method::Full => {
-            let matrix = lazy_full_f64(scheme, &discovered, kind).map_err(|e| e.to_string())?;
-            let decomposition = decompose(&matrix, period, n, Method::Full)?;
-            (matrix, decomposition)
-        }
+    let rows = MeshRows { scheme, discovered: &discovered, kind };
+    let problem = driver::Problem {
+        identity: driver::Identity {
+            scheme: scheme.name().to_string(),
+            valence: n,
+            params: scheme.params().values.iter().map(|(k, v)| (k.clone(), v.text.clone())).collect(),
+            faces: config.face_sequence(),
+            centre: config.centre,
+            neighbourhood: kind,
+            minimal_size: discovered.minimal.len(),
+            analysis_size: discovered.analysis.len(),
+        },
+        labels: set_labels(&discovered, kind),
+        // asymmetric rules have no rotation symmetry, whatever the configuration
+        period: if scheme.rotation_symmetric() { config.symmetry_period() } else { n },
+        sectors: n,
+        method: opts.method,
+        exact: opts.exact,
+        candidates: exact::Candidates::Recognised,
+        rows: &rows,
     };
-    sort_eigenvalues(&mut eigenvalues);
-    let (exact_matrix, exact_analysis) = if !opts.exact {
-        (None, None)
-    } else if exact::needs_full(size, period, n) {
-        match assemble::<Rational>(scheme, &discovered, kind) {
-            Ok(m) => {
-                let summary = exact::confirm(&m, &mut eigenvalues, period, n);
-                (Some(FullMatrix::ready(m)), Some(summary))
-            }
-            Err(_) => (None, None),
-        }
-    } else {
-        // block 0 needs the representative rows only; the rest of the exact
-        // S, if anyone asks, is their rotation
-        match assemble_rows::<Rational>(scheme, &discovered, kind, &orbits.representative) {
-            Ok(rows) => {
-                let refs: Vec<&[(usize, Rational)]> = rows.iter().map(Vec::as_slice).collect();
-                let summary = exact::confirm_block0(&refs, &orbits, &mut eigenvalues);
-                (Some(lazy_full_by_rotation(labels.clone(), kind, &orbits, rows)), Some(summary))
-            }
-            Err(_) => (None, None),
-        }
-    };
-    let verdict = verdict::reif(&eigenvalues);
-    let spectrum = Spectrum {
-        scheme: scheme.name().to_string(),
-        valence: n,
-        params: scheme.params().values.iter().map(|(k, v)| (k.clone(), v.text.clone())).collect(),
-        faces: config.face_sequence(),
-        centre: config.centre,
-        neighbourhood: opts.neighbourhood,
-        matrix_size: size,
-        minimal_size: discovered.minimal.len(),
-        analysis_size: discovered.analysis.len(),
-        method,
-        blocks: blocks_info,
-        eigenvalues,
-        verdict,
-        exact_analysis,
-        labels,
-        synthesis,
-    };
+    let driver::Solved { matrix, exact_matrix, spectrum } = driver::solve(problem)?;
     Ok(Analysis { discovered, matrix, exact_matrix, spectrum })
+}
+
+/// The rows of S on a mesh neighbourhood, assembled from the scheme's rules
+/// through the refinements discovery made.
+struct MeshRows<'a> {
+    scheme: &'a dyn Scheme,
+    discovered: &'a Discovered,
+    kind: NeighbourhoodKind,
+}
+
+impl driver::RowSource for MeshRows<'_> {
+    fn float_rows(&self, which: &[usize]) -> Result<driver::Rows<f64>, String> {
+        assemble_rows_f64(self.scheme, self.discovered, self.kind, which).map_err(|e| e.to_string())
+    }
+    fn float_matrix(&self) -> Result<FullMatrix<f64>, String> {
+        lazy_full_f64(self.scheme, self.discovered, self.kind).map_err(|e| e.to_string())
+    }
+    fn exact_rows(&self, which: &[usize]) -> Option<driver::Rows<Rational>> {
+        assemble_rows::<Rational>(self.scheme, self.discovered, self.kind, which).ok()
+    }
+    fn exact_matrix(&self) -> Option<LocalMatrix<Rational>> {
+        assemble::<Rational>(self.scheme, self.discovered, self.kind).ok()
+    }
 }
 
 /// Eigenvalues of a local matrix (unsorted distinct values with multiplicities,
