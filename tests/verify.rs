@@ -16,7 +16,10 @@ fn builtin_verdicts_are_the_recorded_ones() {
     for f in &files {
         for o in evaluate(f) {
             let expected = o.expected.unwrap_or_else(|| panic!("{} records no expected verdict", o.id));
-            assert_ne!(o.verdict, Verdict::Inconclusive, "{}: {}", o.id, o.detail);
+            // an undecidable statement is registered INCONCLUSIVE with its reason
+            if o.verdict == Verdict::Inconclusive {
+                assert_eq!(expected, Verdict::Inconclusive, "{}: {}", o.id, o.detail);
+            }
             assert_eq!(o.verdict, expected, "{}: stated {} / computed {} / {}", o.id, o.stated, o.computed, o.detail);
         }
     }

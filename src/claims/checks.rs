@@ -50,7 +50,7 @@ fn subject_params(s: &Subject, n: usize) -> Result<Vec<(String, String)>, String
 }
 
 /// The scheme (with parameters evaluated at valence n) and configuration.
-fn subject_config(s: &Subject, n: usize) -> Result<(Box<dyn schemes::Scheme>, Configuration), String> {
+pub(super) fn subject_config(s: &Subject, n: usize) -> Result<(Box<dyn schemes::Scheme>, Configuration), String> {
     let scheme = schemes::resolve(&s.scheme, &subject_params(s, n)?)?;
     let config = match s.faces_for(n) {
         Some(f) => Configuration::with_faces(scheme.as_ref(), n, f)?,
@@ -73,7 +73,7 @@ fn compute(s: &Subject, n: usize) -> Result<Spectrum, String> {
     Ok(analyse(scheme.as_ref(), &config, &Options { neighbourhood: kind, method: None, exact: false })?.spectrum)
 }
 
-fn env_for(s: &Subject, n: usize) -> Result<Env, String> {
+pub(super) fn env_for(s: &Subject, n: usize) -> Result<Env, String> {
     env_with(s, n, None)
 }
 
@@ -126,7 +126,7 @@ fn env_with(s: &Subject, n: usize, m: Option<usize>) -> Result<Env, String> {
 /// The value of a stated expression; a value that is not a finite number
 /// (0·10^400, an overflow) cannot decide a claim, so it is an error (the
 /// claim becomes INCONCLUSIVE).
-fn eval(text: &str, env: &Env) -> Result<Complex64, String> {
+pub(super) fn eval(text: &str, env: &Env) -> Result<Complex64, String> {
     let z = Expr::parse(text).map_err(|e| format!("'{text}': {e}"))?.eval(env).map_err(|e| format!("'{text}': {e}"))?;
     finite(z, text)
 }
@@ -595,6 +595,11 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
             })
         }
         Check::Malformed(m) => Err(m.clone()),
+        Check::Curvature { subject, class, c2, fourier, levels } => {
+            let (verdict, stated, computed, detail) =
+                super::curvature::run(subject, class, *c2, fourier.as_deref(), *levels)?;
+            Ok(Partial { verdict, stated, computed, detail })
+        }
         Check::Builtin { name, data } => {
             let (verdict, stated, computed, detail) = super::builtin::run(name, data.as_ref())?;
             Ok(Partial { verdict, stated, computed, detail })

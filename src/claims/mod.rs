@@ -10,6 +10,7 @@
 
 pub mod builtin;
 pub mod checks;
+pub mod curvature;
 
 use std::collections::BTreeMap;
 
@@ -238,6 +239,22 @@ pub enum Check {
         #[serde(default = "yes")]
         expect: bool,
     },
+    /// The second-order analysis (`subdlab curvature`): the curvature class
+    /// (one name or a list of admissible names: zero, bounded, unbounded,
+    /// not-applicable), optionally whether Reif's C² test passes (`c2`) and
+    /// the Fourier index set F(μ) (`fourier`, integers or expressions in n
+    /// such as "n-2"); `levels` refines the ring samples (default 3).
+    Curvature {
+        #[serde(flatten)]
+        subject: Subject,
+        class: curvature::ClassSpec,
+        #[serde(default)]
+        c2: Option<bool>,
+        #[serde(default)]
+        fourier: Option<Vec<curvature::FourierEntry>>,
+        #[serde(default)]
+        levels: Option<usize>,
+    },
     /// An algebraic identity between two expressions, exact where possible.
     Identity {
         lhs: String,
@@ -288,6 +305,7 @@ pub const CHECK_KEYS: &[(&str, &[&str])] = &[
     ("nonnegative-spectrum", &["expect"]),
     ("characteristic-map", &["expect", "levels", "resolution"]),
     ("spectral-c1", &["expect"]),
+    ("curvature", &["class", "c2", "fourier", "levels"]),
     ("identity", &["lhs", "rhs", "vars"]),
     ("matrix-eigenvalues", &["valences", "vars", "rows", "values"]),
     ("lattice-matrix", &["scheme", "window", "scale", "rows"]),

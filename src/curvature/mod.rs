@@ -77,6 +77,7 @@
 //! space is span{x², xy, y², 1}. The relative residual ‖ψ − fit‖/‖ψ‖ is
 //! reported; the fit passes below [`C2_TOL`].
 
+pub mod jordan;
 pub mod sampler;
 
 use std::cmp::Ordering;
