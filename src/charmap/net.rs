@@ -60,9 +60,13 @@ pub fn apply_linear(m: &Matrix2<f64>, p: [f64; 2]) -> [f64; 2] {
 }
 
 /// The level-0 net: `values[k]` sits on patch vertex `d.analysis[k]`.
-pub fn initial_points(d: &Discovered, values: &[[f64; 2]]) -> Result<Vec<Option<[f64; 2]>>, String> {
+pub fn initial_points(d: &Discovered, values: &[[f64; 2]]) -> Result<Vec<Option<[f64; 2]>>, Error> {
     if values.len() != d.analysis.len() {
-        return Err(format!("{} eigenvector entries for {} neighbourhood vertices", values.len(), d.analysis.len()));
+        return Err(Error::Message(format!(
+            "{} eigenvector entries for {} neighbourhood vertices",
+            values.len(),
+            d.analysis.len()
+        )));
     }
     let mut pts = vec![None; d.patch.num_vertices()];
     for (k, &v) in d.analysis.iter().enumerate() {
@@ -96,7 +100,7 @@ pub fn refine_net<T: Combine<f64> + Clone>(
     level0: Vec<Option<T>>,
     analysis_steps: usize,
 ) -> Result<Net<T>, Error> {
-    let mut last = Err(Error::from("no pruning margin tried"));
+    let mut last = Err(Error::Message("no pruning margin tried".into()));
     for margin in MARGINS {
         last = refine_with_margin(scheme, d, level0.clone(), analysis_steps, margin);
         // only a point left undetermined by the pruned margin is worth a
@@ -116,7 +120,7 @@ fn refine_with_margin<T: Combine<f64> + Clone>(
     margin: usize,
 ) -> Result<Net<T>, Error> {
     if analysis_steps == 0 {
-        return Err("the characteristic ring needs at least one analysis step".into());
+        return Err(Error::Input("the characteristic ring needs at least one analysis step".into()));
     }
     let steps = scheme.topology().steps_per_analysis();
     let centre0: HashSet<usize> = centre_set(d).into_iter().collect();
@@ -136,7 +140,10 @@ fn refine_with_margin<T: Combine<f64> + Clone>(
     }
     let centre1: HashSet<usize> = centre0
         .iter()
-        .map(|&v| d.successor(v).ok_or("a centre vertex has no successor after one analysis step"))
+        .map(|&v| {
+            d.successor(v)
+                .ok_or_else(|| Error::Message("a centre vertex has no successor after one analysis step".into()))
+        })
         .collect::<Result<_, _>>()?;
     net.inner = faces_touching(&net.mesh, &centre1);
     check_defined(&net)?;
@@ -144,11 +151,11 @@ fn refine_with_margin<T: Combine<f64> + Clone>(
     for _ in steps..analysis_steps * steps {
         let bound = net.mesh.num_faces() * 4;
         if bound > MAX_NET_FACES {
-            return Err(format!(
+            return Err(Error::Input(format!(
                 "refinement level {} would need about {bound} faces, above the supported {MAX_NET_FACES}; use fewer levels",
                 net.refinements + 1
             )
-            .into());
+            .into()));
         }
         let Step { refined: r, stencils } = step::<f64>(scheme, &net.mesh)?;
         let points = apply(&stencils, &net.points);
@@ -190,7 +197,7 @@ fn check_defined<T>(net: &Net<T>) -> Result<(), Error> {
         }
     }
     if !net.outer.iter().any(|&x| x) {
-        return Err("the first ring around the centre is empty".into());
+        return Err(Error::Message("the first ring around the centre is empty".into()));
     }
     Ok(())
 }
@@ -203,7 +210,7 @@ fn check_defined<T>(net: &Net<T>) -> Result<(), Error> {
 /// ring alone. A too-small margin shows up as an undefined first-ring vertex
 /// (`check_defined`), never as a silent error, and `refine_net` then retries
 /// with a wider one.
-fn prune<T: Clone>(net: Net<T>, margin: usize) -> Result<Net<T>, String> {
+fn prune<T: Clone>(net: Net<T>, margin: usize) -> Result<Net<T>, Error> {
     let mesh = &net.mesh;
     let mut near: HashSet<usize> = HashSet::new();
     for f in (0..mesh.num_faces()).filter(|&f| net.outer[f]) {
