@@ -154,8 +154,7 @@ fn refine_with_margin<T: Combine<f64> + Clone>(
             return Err(Error::Input(format!(
                 "refinement level {} would need about {bound} faces, above the supported {MAX_NET_FACES}; use fewer levels",
                 net.refinements + 1
-            )
-            .into()));
+            )));
         }
         let Step { refined: r, stencils } = step::<f64>(scheme, &net.mesh)?;
         let points = apply(&stencils, &net.points);

@@ -183,7 +183,7 @@ fn unknown(name: &str) -> Error {
 /// name a scheme.
 pub fn resolve(name_or_path: &str, overrides: &[(String, String)]) -> Result<Built, Error> {
     if is_file_argument(name_or_path) {
-        return Ok(files::load(Path::new(name_or_path), overrides)?);
+        return files::load(Path::new(name_or_path), overrides);
     }
     find(name_or_path).ok_or_else(|| unknown(name_or_path))?.build(overrides)
 }
