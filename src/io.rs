@@ -20,6 +20,8 @@ use std::fs::{self, File, OpenOptions};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
+use crate::error::{Error, Result};
+
 /// The tool's version (Cargo.toml).
 pub const TOOL_VERSION: &str = env!("CARGO_PKG_VERSION");
 /// The version of the JSON and report layouts: raised when a field changes
@@ -41,8 +43,8 @@ pub fn version_line() -> String {
 }
 
 /// Writes `contents` to `path` (see the module documentation).
-pub fn write_atomic(path: &Path, contents: &[u8]) -> Result<(), String> {
-    let fail = |why: &dyn std::fmt::Display| format!("cannot write {}: {why}", path.display());
+pub fn write_atomic(path: &Path, contents: &[u8]) -> Result<()> {
+    let fail = |why: &dyn std::fmt::Display| Error::Write { path: path.display().to_string(), reason: why.to_string() };
     match fs::symlink_metadata(path) {
         Ok(m) if m.file_type().is_symlink() => match fs::metadata(path) {
             Ok(t) if t.is_file() && !is_special_path(path) => {
@@ -236,18 +238,23 @@ mod cleanup {
 
 /// Writes text to standard output; a failed write (a full disk, a closed
 /// descriptor) is the one-line error "cannot write to standard output: ...".
-pub fn out(text: &str) -> Result<(), String> {
+pub fn out(text: &str) -> Result<()> {
     if text.is_empty() {
         return Ok(());
     }
     #[cfg(unix)]
     {
         if stdout_was_closed() {
-            return Err("cannot write to standard output: it is closed".into());
+            return Err(stdout_error("it is closed"));
         }
     }
     let mut o = std::io::stdout().lock();
-    o.write_all(text.as_bytes()).and_then(|_| o.flush()).map_err(|e| format!("cannot write to standard output: {e}"))
+    o.write_all(text.as_bytes()).and_then(|_| o.flush()).map_err(stdout_error)
+}
+
+/// "cannot write to standard output: `reason`".
+fn stdout_error(reason: impl std::fmt::Display) -> Error {
+    Error::Write { path: "to standard output".into(), reason: reason.to_string() }
 }
 
 /// Whether the process started with standard output closed (`>&-`). Rust's
@@ -276,10 +283,11 @@ fn stdout_was_closed() -> bool {
 /// The JSON text of a value, with the tool's version, the git commit (when
 /// known) and the schema version added to the top-level object (or to each
 /// object of a top-level list).
-pub fn json_text<T: serde::Serialize>(v: &T) -> Result<String, String> {
-    let mut value = serde_json::to_value(v).map_err(|e| e.to_string())?;
+pub fn json_text<T: serde::Serialize>(v: &T) -> Result<String> {
+    // a value serde cannot represent is a bug of the caller's types
+    let mut value = serde_json::to_value(v).map_err(|e| Error::Message(e.to_string()))?;
     stamp(&mut value);
-    serde_json::to_string_pretty(&value).map_err(|e| e.to_string())
+    serde_json::to_string_pretty(&value).map_err(|e| Error::Message(e.to_string()))
 }
 
 /// Adds `subdlab_version`, `git_commit` and `schema_version` to a JSON value.
@@ -296,7 +304,7 @@ pub fn stamp(value: &mut serde_json::Value) {
     }
 }
 
-pub fn print_json<T: serde::Serialize>(v: &T) -> Result<(), String> {
+pub fn print_json<T: serde::Serialize>(v: &T) -> Result<()> {
     out(&(json_text(v)? + "\n"))
 }
 

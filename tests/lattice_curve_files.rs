@@ -204,6 +204,8 @@ fn load_error(text: &str) -> String {
     match registry::resolve(path.to_str().unwrap(), &[]) {
         Ok(_) => panic!("should not load:\n{text}"),
         Err(e) => {
+            // a scheme file that does not load is a file error
+            assert!(matches!(e, subdlab::error::Error::File(_)), "{e:?}");
             let e = e.to_string();
             assert_eq!(e.lines().count(), 1, "{e}");
             assert!(e.starts_with(path.to_str().unwrap()), "{e}");
@@ -274,7 +276,7 @@ fn the_registry_routes_every_family() {
     unique.dedup();
     assert_eq!(unique.len(), names.len());
     // a curve scheme has no mesh rules; a lattice file refines oriented quad meshes
-    assert!(subdlab::schemes::resolve("four-point", &[]).err().unwrap().contains("curve scheme"));
+    assert!(subdlab::schemes::resolve("four-point", &[]).err().unwrap().to_string().contains("curve scheme"));
     let on_mesh = subdlab::schemes::resolve(repo("schemes/khan-mustafa.toml").to_str().unwrap(), &[]).unwrap();
     assert_eq!(on_mesh.fixed_valence(), Some(4));
     assert!(matches!(registry::resolve("cubic-bspline", &[]).unwrap(), Built::Curve(_)));

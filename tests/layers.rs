@@ -12,7 +12,8 @@ use std::path::{Path, PathBuf};
 const LAYERS: &[(&str, u32)] = &[
     // foundation
     ("error", 0),
-    ("io", 0),
+    // io reports failed writes as the typed error
+    ("io", 1),
     ("numeric", 1),
     ("mesh", 2),
     // scheme description (rules, stencils, host names, parameters)

@@ -135,6 +135,7 @@ fn random_and_mutated_meshes_never_panic_or_hang() {
         match result {
             Ok(Ok(())) => accepted += 1,
             Ok(Err(e)) => {
+                let e = e.to_string();
                 assert!(!e.is_empty() && !e.contains('\n'), "case {case}: error not one line: {e:?}\n{text}");
                 rejected += 1;
             }

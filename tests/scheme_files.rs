@@ -182,6 +182,8 @@ fn catmull_clark_polygon_file_is_the_built_in_on_any_faces() {
     // the quad-only file (no face-corner fields) refuses the pentagon
     let quads = file_scheme("schemes/catmull-clark.toml", &[]);
     let e = refine_mesh(quads.as_ref(), &pentagon, &pts, 1).unwrap_err();
+    assert!(matches!(e, subdlab::error::Error::Input(_)), "{e:?}");
+    let e = e.to_string();
     assert!(e.contains("a closed quad mesh"), "{e}");
     // negative control: 1/(4 n^2) on every corner, the quad value, is
     // rejected at load (affine at m = 4 only); without the affine check it
@@ -189,7 +191,7 @@ fn catmull_clark_polygon_file_is_the_built_in_on_any_faces() {
     // but moves the new points of the pentagon mesh
     let text = std::fs::read_to_string(path("schemes/catmull-clark-polygons.toml")).unwrap();
     let quad_weight = text.replace("face-corner = \"1 / (m n^2)\"", "face-corner = \"1 / (4 n^2)\"");
-    let e = UserSchemeDef::parse(&quad_weight, "x.toml").unwrap_err();
+    let e = UserSchemeDef::parse(&quad_weight, "x.toml").unwrap_err().to_string();
     assert!(e.contains("field vertex: the weights of the vertex rule sum to") && e.contains("m = 3"), "{e}");
     let loose = text_scheme(
         &quad_weight.replace("topology = \"primal-quad\"", "topology = \"primal-quad\"\naffine = false"),
@@ -227,7 +229,7 @@ fn mutated_polygon_files_never_panic() {
             }
         }
         let text: String = chars.into_iter().collect();
-        let result = std::panic::catch_unwind(|| -> Result<(), String> {
+        let result = std::panic::catch_unwind(|| -> Result<(), subdlab::error::Error> {
             let scheme = UserSchemeDef::parse(&text, "x.toml")?.build(&[])?;
             let config = Configuration::regular(&scheme, 5)?;
             discover(&scheme, &config)?;
@@ -268,6 +270,8 @@ fn face_corner_fields_are_checked_at_load() {
     ];
     for (bad, want) in cases {
         let e = UserSchemeDef::parse(&bad, "x.toml").err().unwrap_or_else(|| panic!("should fail: {want}"));
+        assert!(matches!(e, subdlab::error::Error::File(_)), "{want}: {e:?}");
+        let e = e.to_string();
         assert!(!e.contains('\n') && e.contains(want), "got '{e}', want '{want}'");
     }
     // m is still free as a sum's index and, in files without face-corner
@@ -399,7 +403,7 @@ fn four_three_quad_term_at_eons() {
     let text = std::fs::read_to_string(path("schemes/four-three.toml")).unwrap();
     let def =
         UserSchemeDef::parse(&text.replace("-eon_quad_term / (32 n)", "-eon_quad_term / (16 n)"), "x.toml").unwrap(); // t = 0 by default: the weights vanish
-    let e = def.build(&over(&[("eon_quad_term", "1")])).err().unwrap();
+    let e = def.build(&over(&[("eon_quad_term", "1")])).err().unwrap().to_string();
     assert!(e.contains("field vertex-eon: the per-quad weights of the vertex-eon rule sum to"), "{e}");
 }
 
@@ -745,7 +749,8 @@ fn errors_in_files_of_the_new_hosts_name_the_line_and_the_field() {
         ),
     ];
     for (text, want) in cases {
-        let e = UserSchemeDef::parse(&text, "x.toml").err().unwrap_or_else(|| panic!("should fail: {want}"));
+        let e =
+            UserSchemeDef::parse(&text, "x.toml").err().unwrap_or_else(|| panic!("should fail: {want}")).to_string();
         assert!(!e.contains('\n') && e.contains(want), "got '{e}', want '{want}'");
     }
     // on the command line: a clear one-line error and a non-zero exit
@@ -843,7 +848,7 @@ fn mutated_files_of_the_new_hosts_never_panic() {
             }
         }
         let text: String = chars.into_iter().collect();
-        let result = std::panic::catch_unwind(|| -> Result<(), String> {
+        let result = std::panic::catch_unwind(|| -> Result<(), subdlab::error::Error> {
             let scheme = UserSchemeDef::parse(&text, "x.toml")?.build(&[])?;
             let config = Configuration::regular(&scheme, 5)?;
             discover(&scheme, &config).map(|_| ())

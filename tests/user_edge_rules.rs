@@ -28,7 +28,7 @@ fn file_scheme(rel: &str) -> Box<dyn Scheme> {
 }
 
 fn parse(text: &str) -> Result<UserSchemeDef, String> {
-    UserSchemeDef::parse(text, "x.toml")
+    UserSchemeDef::parse(text, "x.toml").map_err(|e| e.to_string())
 }
 
 fn run(scheme: &dyn Scheme, n: usize, kind: NeighbourhoodKind, method: Option<Method>) -> Analysis {

@@ -30,7 +30,7 @@ fn file_scheme(rel: &str, overrides: &[(String, String)]) -> Box<dyn Scheme> {
     schemes::resolve(&path(rel), overrides).unwrap_or_else(|e| panic!("{rel}: {e}"))
 }
 
-fn parse(text: &str) -> Result<UserSchemeDef, String> {
+fn parse(text: &str) -> Result<UserSchemeDef, subdlab::error::Error> {
     UserSchemeDef::parse(text, "x.toml")
 }
 
@@ -159,8 +159,12 @@ fn parameters_take_defaults_and_overrides_like_built_in_parameters() {
             assert_eq!(compare_matrices(&file, builtin.as_ref(), n), 2, "a rational: exact at n = {n}");
         }
     }
-    assert!(def.build(&o("2")).err().unwrap().contains("out of range [0, 1]"));
-    assert!(def.build(&[("b".into(), "1".into())]).err().unwrap().contains("no parameter 'b'"));
+    let e = def.build(&o("2")).err().unwrap();
+    assert!(matches!(e, subdlab::error::Error::Input(_)), "{e:?}");
+    assert!(e.to_string().contains("out of range [0, 1]"));
+    let e = def.build(&[("b".into(), "1".into())]).err().unwrap();
+    assert!(matches!(e, subdlab::error::Error::Input(_)), "{e:?}");
+    assert!(e.to_string().contains("no parameter 'b'"));
 }
 
 #[test]
@@ -201,6 +205,9 @@ opposite = "1/8"
 fn error_of(from: &str, to: &str) -> String {
     assert!(LOOP.contains(from), "{from}");
     let e = parse(&LOOP.replacen(from, to, 1)).err().unwrap_or_else(|| panic!("{to} should be rejected"));
+    // a malformed scheme file is a file error, whatever part of it is wrong
+    assert!(matches!(e, subdlab::error::Error::File(_)), "{to}: {e:?}");
+    let e = e.to_string();
     assert!(!e.contains('\n'), "one line: {e}");
     e
 }
@@ -256,19 +263,19 @@ fn parse_errors_name_the_line_and_the_field() {
     .is_ok());
     // parameters: name, range, and use
     let with_param = |p: &str| LOOP.replacen("[vertex]", &format!("{p}\n[vertex]"), 1);
-    let e = parse(&with_param("[params.n]\ndefault = 1")).err().unwrap();
+    let e = parse(&with_param("[params.n]\ndefault = 1")).err().unwrap().to_string();
     assert!(e.contains("line 3, field params.n: 'n' is reserved"), "{e}");
-    let e = parse(&with_param("[params.w]\ndefault = 2\nmax = 1")).err().unwrap();
+    let e = parse(&with_param("[params.w]\ndefault = 2\nmax = 1")).err().unwrap().to_string();
     assert!(e.contains("field params.w: default 2 is not in [-inf, 1]"), "{e}");
-    let e = parse(&with_param("[params.w]\ndefault = \"x\"")).err().unwrap();
+    let e = parse(&with_param("[params.w]\ndefault = \"x\"")).err().unwrap().to_string();
     assert!(e.contains("line 4, field params.w.default: 'x' is not a number"), "{e}");
-    let e = parse(&with_param("[params.w]\ndefault = 1\nstep = 2")).err().unwrap();
+    let e = parse(&with_param("[params.w]\ndefault = 1\nstep = 2")).err().unwrap().to_string();
     assert!(e.contains("unknown field `step`"), "{e}");
     // caps on size
     let long = format!("1{}", " + 0".repeat(MAX_EXPR_CHARS));
     assert!(error_of("\"3/8\"", &format!("\"{long}\"")).contains("field edge.ends: expression longer than"));
     let big = format!("{LOOP}{}", "# padding\n".repeat(MAX_FILE_BYTES / 10));
-    assert!(parse(&big).err().unwrap().contains("larger than"));
+    assert!(parse(&big).err().unwrap().to_string().contains("larger than"));
     // deep nesting within the size cap: TOML arrays and inline tables, parentheses
     for deep in [format!("x = {}", "[".repeat(30_000)), format!("x = {}", "{a=".repeat(15_000))] {
         assert!(parse(&deep).is_err());
@@ -415,6 +422,6 @@ fn example_files_refine_meshes_as_the_built_in_schemes_do() {
     }
     // a primal-quad file has quad rules only, and says so
     let (m, p) = read_obj_file(std::path::Path::new(&path("meshes/octahedron.obj"))).unwrap();
-    let e = refine_mesh(file_scheme("schemes/catmull-clark.toml", &[]).as_ref(), &m, &p, 1).unwrap_err();
+    let e = refine_mesh(file_scheme("schemes/catmull-clark.toml", &[]).as_ref(), &m, &p, 1).unwrap_err().to_string();
     assert!(e.contains("a closed quad mesh (primal-quad scheme files have quad rules only)"), "{e}");
 }

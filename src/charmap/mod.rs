@@ -18,6 +18,7 @@ pub mod wedge;
 use nalgebra::{Matrix2, Vector2};
 use serde::Serialize;
 
+use crate::error::Error;
 use crate::neighbourhood::{Configuration, NeighbourhoodKind};
 use crate::sdc::Scheme;
 use crate::spectrum::{analyse, Analysis, Options};
@@ -46,21 +47,21 @@ pub struct CharMapOptions {
 
 impl CharMapOptions {
     /// The options for a check at `levels` and `resolution`, validated.
-    pub fn checked(levels: usize, resolution: usize) -> Result<Self, String> {
+    pub fn checked(levels: usize, resolution: usize) -> Result<Self, Error> {
         let opts = CharMapOptions { levels, resolution, display_levels: None };
         opts.check()?;
         Ok(opts)
     }
-    pub fn check(&self) -> Result<(), String> {
+    pub fn check(&self) -> Result<(), Error> {
         if self.levels == 0 || self.levels > MAX_LEVELS {
-            return Err(format!("levels must be between 1 and {MAX_LEVELS}, got {}", self.levels));
+            return Err(Error::Input(format!("levels must be between 1 and {MAX_LEVELS}, got {}", self.levels)));
         }
         if self.resolution < 16 || self.resolution > raster::MAX_RESOLUTION {
-            return Err(format!(
+            return Err(Error::Input(format!(
                 "resolution must be between 16 and {} pixels, got {}",
                 raster::MAX_RESOLUTION,
                 self.resolution
-            ));
+            )));
         }
         Ok(())
     }
@@ -122,7 +123,7 @@ pub fn characteristic_map(
     scheme: &dyn Scheme,
     config: &Configuration,
     opts: &CharMapOptions,
-) -> Result<CharMap, String> {
+) -> Result<CharMap, Error> {
     opts.check()?;
     let analysis =
         analyse(scheme, config, &Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false })?;
@@ -130,10 +131,10 @@ pub fn characteristic_map(
 }
 
 /// The check on a finished analysis (analysis neighbourhood).
-pub fn check_map(scheme: &dyn Scheme, analysis: &Analysis, opts: &CharMapOptions) -> Result<CharMap, String> {
+pub fn check_map(scheme: &dyn Scheme, analysis: &Analysis, opts: &CharMapOptions) -> Result<CharMap, Error> {
     let spec = &analysis.spectrum;
     if spec.neighbourhood != NeighbourhoodKind::Analysis {
-        return Err("the characteristic map needs the analysis neighbourhood".into());
+        return Err(Error::Input("the characteristic map needs the analysis neighbourhood".into()));
     }
     let pair = spectral::subdominant_pair(spec);
     let mut out = CharMap {
@@ -307,7 +308,7 @@ fn control_net(patch: &crate::mesh::PolyMesh, pts: &[Option<[f64; 2]>]) -> Vec<V
 }
 
 /// `run` for a configuration: the common call for the regular configuration.
-pub fn characteristic_map_of(scheme: &dyn Scheme, valence: usize, opts: &CharMapOptions) -> Result<CharMap, String> {
+pub fn characteristic_map_of(scheme: &dyn Scheme, valence: usize, opts: &CharMapOptions) -> Result<CharMap, Error> {
     let config = Configuration::regular(scheme, valence)?;
     characteristic_map(scheme, &config, opts)
 }

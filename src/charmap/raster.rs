@@ -7,6 +7,7 @@
 //! overlap of the map, not an artefact of rounding.
 
 use super::ring::{signed_area, Tri};
+use crate::error::Error;
 
 /// Largest resolution accepted (pixels per side): 2 · 8192² coverage counters
 /// are 256 MiB.
@@ -22,9 +23,11 @@ pub struct Grid {
 
 impl Grid {
     /// A square window around the given triangles (with a one-pixel margin).
-    pub fn around(tris: &[Tri], resolution: usize) -> Result<Grid, String> {
+    pub fn around(tris: &[Tri], resolution: usize) -> Result<Grid, Error> {
         if resolution == 0 || resolution > MAX_RESOLUTION {
-            return Err(format!("resolution must be between 1 and {MAX_RESOLUTION} pixels, got {resolution}"));
+            return Err(Error::Input(format!(
+                "resolution must be between 1 and {MAX_RESOLUTION} pixels, got {resolution}"
+            )));
         }
         let mut lo = [f64::INFINITY; 2];
         let mut hi = [f64::NEG_INFINITY; 2];
@@ -36,7 +39,7 @@ impl Grid {
         }
         let side = (hi[0] - lo[0]).max(hi[1] - lo[1]);
         if !side.is_finite() || side <= 0.0 {
-            return Err("the characteristic ring is degenerate (no extent to rasterise)".into());
+            return Err(Error::Numeric("the characteristic ring is degenerate (no extent to rasterise)".into()));
         }
         let pixel = side / (resolution as f64 - 2.0).max(1.0);
         let centre = [(lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0];
@@ -129,7 +132,7 @@ pub struct Rasters {
     pub inner: Vec<u16>,
 }
 
-pub fn rasterise_ring(ring: &[Tri], inner: &[Tri], resolution: usize) -> Result<(Coverage, Rasters), String> {
+pub fn rasterise_ring(ring: &[Tri], inner: &[Tri], resolution: usize) -> Result<(Coverage, Rasters), Error> {
     let all: Vec<Tri> = ring.iter().chain(inner).copied().collect();
     let grid = Grid::around(&all, resolution)?;
     let mut ring_cov = vec![0u16; resolution * resolution];

@@ -3,6 +3,7 @@
 //! the claim file, never from here.
 
 use super::Verdict;
+use crate::error::Error;
 use crate::neighbourhood::{build_patch, Configuration};
 use crate::numeric::exact::{q, QMatrix};
 use crate::numeric::Rational;
@@ -12,11 +13,11 @@ use crate::schemes;
 use crate::spectrum::{analyse, fmt_f, Options};
 use num_traits::Zero;
 
-type Result4 = Result<(Verdict, String, String, String), String>;
+type Result4 = Result<(Verdict, String, String, String), Error>;
 
 pub fn run(name: &str, data: Option<&toml::Value>) -> Result4 {
     match name {
-        "nonbox.vector-mask" => nonbox_vector_mask(data.ok_or("needs data.cells")?),
+        "nonbox.vector-mask" => nonbox_vector_mask(data.ok_or_else(|| Error::Claim("needs data.cells".into()))?),
         "nonbox.negative-eigenvalues" => nonbox_negative_eigenvalues(),
         "linluo.section6" => linluo_section6(),
         "lattice.fit-masks" => lattice_fit_masks(need(data)?),
@@ -32,7 +33,7 @@ pub fn run(name: &str, data: Option<&toml::Value>) -> Result4 {
         "matrix.nonnegative" => matrix_nonnegative(need(data)?),
         "curve.relation3" => curve_relation3(),
         "curve.c1-laurent" => curve_c1_laurent(need(data)?),
-        other => Err(format!("no built-in check named '{other}'")),
+        other => Err(Error::Claim(format!("no built-in check named '{other}'"))),
     }
 }
 
@@ -51,18 +52,21 @@ fn has_eigenvalue(m: &[[Rational; 2]; 2], lambda: &Rational) -> bool {
 /// equation; the generators have positive integrals). The rules of section
 /// 3.2.2 do (their total mask over one coarse cell is [[3, 1], [2, 2]]).
 fn nonbox_vector_mask(data: &toml::Value) -> Result4 {
-    let cells = data.get("cells").and_then(|c| c.as_array()).ok_or("data.cells: a list of [a11, a12, a21, a22]")?;
+    let cells = data
+        .get("cells")
+        .and_then(|c| c.as_array())
+        .ok_or_else(|| Error::Claim("data.cells: a list of [a11, a12, a21, a22]".into()))?;
     let mut sum = [[q(0, 1), q(0, 1)], [q(0, 1), q(0, 1)]];
     for c in cells {
         let v: Vec<Rational> = c
             .as_array()
-            .ok_or("each cell is a list")?
+            .ok_or_else(|| Error::Claim("each cell is a list".into()))?
             .iter()
             .map(|x| x.as_str().and_then(|s| crate::numeric::ParamValue::parse(s).ok()?.exact))
             .collect::<Option<_>>()
-            .ok_or("cell entries are exact numbers as strings")?;
+            .ok_or_else(|| Error::Claim("cell entries are exact numbers as strings".into()))?;
         if v.len() != 4 {
-            return Err("each cell has four entries".into());
+            return Err(Error::Claim("each cell has four entries".into()));
         }
         for k in 0..4 {
             sum[k / 2][k % 2] = &sum[k / 2][k % 2] + &v[k];
@@ -76,7 +80,7 @@ fn nonbox_vector_mask(data: &toml::Value) -> Result4 {
     // coarse cells [2, 4)² of sector 0 (fine chart coordinates [4, 8)²)
     let mut cells = Vec::new();
     let step = step_selected::<Rational>(scheme.as_ref(), &patch, |refined| {
-        let chart = refined.mesh.chart.as_ref().ok_or("no chart")?;
+        let chart = refined.mesh.chart.as_ref().ok_or_else(|| Error::Claim("no chart".into()))?;
         cells = (0..refined.vertex_origins.len())
             .filter(|&v| {
                 let (x, y) = chart.in_chart(chart.vertex_coords[v], 0);
@@ -90,7 +94,7 @@ fn nonbox_vector_mask(data: &toml::Value) -> Result4 {
     let mut t = [[q(0, 1), q(0, 1)], [q(0, 1), q(0, 1)]];
     for v in cells {
         let i = usize::from(!fcv1.contains(&v));
-        let st = step.stencils[v].as_ref().ok_or("rule not evaluable")?;
+        let st = step.stencils[v].as_ref().ok_or_else(|| Error::Claim("rule not evaluable".into()))?;
         for (u, w) in &st.terms {
             let j = usize::from(!fcv0.contains(u));
             t[i][j] = &t[i][j] + w;
@@ -171,44 +175,44 @@ fn linluo_section6() -> Result4 {
 
 // ---------------------------------------------------------------- data helpers
 
-fn need(data: Option<&toml::Value>) -> Result<&toml::Value, String> {
-    data.ok_or_else(|| "this check needs `data`".to_string())
+fn need(data: Option<&toml::Value>) -> Result<&toml::Value, Error> {
+    data.ok_or_else(|| Error::Claim("this check needs `data`".to_string()))
 }
 
-fn field<'a>(data: &'a toml::Value, key: &str) -> Result<&'a toml::Value, String> {
-    data.get(key).ok_or_else(|| format!("data.{key} is missing"))
+fn field<'a>(data: &'a toml::Value, key: &str) -> Result<&'a toml::Value, Error> {
+    data.get(key).ok_or_else(|| Error::Claim(format!("data.{key} is missing")))
 }
 
-fn text<'a>(data: &'a toml::Value, key: &str) -> Result<&'a str, String> {
-    field(data, key)?.as_str().ok_or_else(|| format!("data.{key} must be a string"))
+fn text<'a>(data: &'a toml::Value, key: &str) -> Result<&'a str, Error> {
+    field(data, key)?.as_str().ok_or_else(|| Error::Claim(format!("data.{key} must be a string")))
 }
 
-fn int(v: &toml::Value, what: &str) -> Result<i64, String> {
-    v.as_integer().ok_or_else(|| format!("{what} must be an integer"))
+fn int(v: &toml::Value, what: &str) -> Result<i64, Error> {
+    v.as_integer().ok_or_else(|| Error::Claim(format!("{what} must be an integer")))
 }
 
 /// An integer of the claim data within [lo, hi]: the data drive loops and
 /// allocations, so every size is bounded (and never wraps when negative).
-fn int_in(data: &toml::Value, key: &str, lo: i64, hi: i64) -> Result<i64, String> {
+fn int_in(data: &toml::Value, key: &str, lo: i64, hi: i64) -> Result<i64, Error> {
     let v = int(field(data, key)?, &format!("data.{key}"))?;
     if v < lo || v > hi {
-        return Err(format!("data.{key} = {v} is outside the supported range {lo}..{hi}"));
+        return Err(Error::Claim(format!("data.{key} = {v} is outside the supported range {lo}..{hi}")));
     }
     Ok(v)
 }
 
 /// A window [x0, x1, y0, y1] of at most `max_points` lattice points.
-fn small_window(data: &toml::Value, max_points: i64) -> Result<Vec<i64>, String> {
+fn small_window(data: &toml::Value, max_points: i64) -> Result<Vec<i64>, Error> {
     let w = ints(data, "window")?;
     if w.len() != 4 {
-        return Err("data.window is [x0, x1, y0, y1]".into());
+        return Err(Error::Claim("data.window is [x0, x1, y0, y1]".into()));
     }
     if w[0] > w[1] || w[2] > w[3] {
-        return Err(format!("data.window {w:?} is empty (it must have x0 <= x1 and y0 <= y1)"));
+        return Err(Error::Claim(format!("data.window {w:?} is empty (it must have x0 <= x1 and y0 <= y1)")));
     }
     let points = (w[1] as i128 - w[0] as i128 + 1) * (w[3] as i128 - w[2] as i128 + 1);
     if points > max_points as i128 {
-        return Err(format!("data.window {w:?} has {points} points; at most {max_points} are supported"));
+        return Err(Error::Claim(format!("data.window {w:?} has {points} points; at most {max_points} are supported")));
     }
     Ok(w)
 }
@@ -216,31 +220,33 @@ fn small_window(data: &toml::Value, max_points: i64) -> Result<Vec<i64>, String>
 /// Most points of the window of a strip or polynomial check.
 const MAX_DATA_WINDOW: i64 = 144;
 
-fn ints(data: &toml::Value, key: &str) -> Result<Vec<i64>, String> {
+fn ints(data: &toml::Value, key: &str) -> Result<Vec<i64>, Error> {
     field(data, key)?
         .as_array()
-        .ok_or_else(|| format!("data.{key} must be a list of integers"))?
+        .ok_or_else(|| Error::Claim(format!("data.{key} must be a list of integers")))?
         .iter()
         .map(|x| int(x, &format!("data.{key}")))
         .collect()
 }
 
-fn exact(s: &str) -> Result<Rational, String> {
+fn exact(s: &str) -> Result<Rational, Error> {
     crate::numeric::expr::Expr::parse(s)?
         .exact(&Default::default())
-        .ok_or_else(|| format!("'{s}' is not an exact rational"))
+        .ok_or_else(|| Error::Claim(format!("'{s}' is not an exact rational")))
 }
 
 /// Scheme parameters from a table of strings.
-fn params(data: &toml::Value, key: &str) -> Result<Vec<(String, String)>, String> {
+fn params(data: &toml::Value, key: &str) -> Result<Vec<(String, String)>, Error> {
     match data.get(key) {
         None => Ok(Vec::new()),
         Some(t) => t
             .as_table()
-            .ok_or_else(|| format!("data.{key} must be a table"))?
+            .ok_or_else(|| Error::Claim(format!("data.{key} must be a table")))?
             .iter()
             .map(|(k, v)| {
-                v.as_str().map(|s| (k.clone(), s.to_string())).ok_or_else(|| format!("data.{key}.{k}: a string"))
+                v.as_str()
+                    .map(|s| (k.clone(), s.to_string()))
+                    .ok_or_else(|| Error::Claim(format!("data.{key}.{k}: a string")))
             })
             .collect(),
     }
@@ -248,7 +254,7 @@ fn params(data: &toml::Value, key: &str) -> Result<Vec<(String, String)>, String
 
 /// The configuration with face sequence `faces` (its length is the valence;
 /// schemes without face sequences take the regular one of that valence).
-fn configuration(scheme: &dyn schemes::Scheme, faces: &str) -> Result<Configuration, String> {
+fn configuration(scheme: &dyn schemes::Scheme, faces: &str) -> Result<Configuration, Error> {
     if scheme.face_sequences() {
         Configuration::with_faces(scheme, faces.len(), faces)
     } else {
@@ -304,27 +310,31 @@ fn lattice_fit_masks(data: &toml::Value) -> Result4 {
     use crate::lattice::fit::{derive_masks, grid, least_squares};
     let monomials: Vec<(u32, u32)> = field(data, "monomials")?
         .as_array()
-        .ok_or("data.monomials: a list of [a, b] exponents")?
+        .ok_or_else(|| Error::Claim("data.monomials: a list of [a, b] exponents".into()))?
         .iter()
         .map(|m| {
-            let e = m.as_array().filter(|e| e.len() == 2).ok_or("each monomial is [a, b]")?;
+            let e =
+                m.as_array().filter(|e| e.len() == 2).ok_or_else(|| Error::Claim("each monomial is [a, b]".into()))?;
             let exponent = |v: &toml::Value| match int(v, "an exponent")? {
                 x @ 0..=6 => Ok(x as u32),
-                x => Err(format!("monomial exponent {x} is outside the supported range 0..6")),
+                x => Err(Error::Claim(format!("monomial exponent {x} is outside the supported range 0..6"))),
             };
             Ok((exponent(&e[0])?, exponent(&e[1])?))
         })
-        .collect::<Result<_, String>>()?;
+        .collect::<Result<_, Error>>()?;
     let (lo, hi) = (int_in(data, "lo", -4, 4)?, int_in(data, "hi", -4, 4)?);
     if lo >= hi {
-        return Err(format!("data.lo = {lo} must be below data.hi = {hi}"));
+        return Err(Error::Claim(format!("data.lo = {lo} must be below data.hi = {hi}")));
     }
     let den = int(field(data, "denominator")?, "data.denominator")?;
     if den == 0 {
-        return Err("data.denominator must not be 0".into());
+        return Err(Error::Claim("data.denominator must not be 0".into()));
     }
     let den = Rational::from_integer(den.into());
-    let rules = field(data, "rules")?.as_array().filter(|r| r.len() == 4).ok_or("data.rules: four masks")?;
+    let rules = field(data, "rules")?
+        .as_array()
+        .filter(|r| r.len() == 4)
+        .ok_or_else(|| Error::Claim("data.rules: four masks".into()))?;
     let size = (hi - lo + 1) as usize;
     let derived = derive_masks(&monomials, &grid(lo, hi), &q(1, 1))?;
     let samples: Vec<(Rational, Rational)> = grid(lo, hi)
@@ -335,9 +345,15 @@ fn lattice_fit_masks(data: &toml::Value) -> Result4 {
     let names = ["p_{2i,2j}", "p_{2i+1,2j}", "p_{2i,2j+1}", "p_{2i+1,2j+1}"];
     let mut diffs = Vec::new();
     for (k, &(a, b)) in [(0usize, 0usize), (1, 0), (0, 1), (1, 1)].iter().enumerate() {
-        let rows = rules[k].as_array().filter(|r| r.len() == size).ok_or("each mask is a square grid")?;
+        let rows = rules[k]
+            .as_array()
+            .filter(|r| r.len() == size)
+            .ok_or_else(|| Error::Claim("each mask is a square grid".into()))?;
         for (ri, row) in rows.iter().enumerate() {
-            let row = row.as_array().filter(|r| r.len() == size).ok_or("each mask is a square grid")?;
+            let row = row
+                .as_array()
+                .filter(|r| r.len() == size)
+                .ok_or_else(|| Error::Claim("each mask is a square grid".into()))?;
             for (si, x) in row.iter().enumerate() {
                 let printed = Rational::from_integer(int(x, "a mask entry")?.into()) / &den;
                 let (r, s) = (lo + ri as i64, lo + si as i64);
@@ -378,30 +394,30 @@ struct Strip {
 /// The scheme, the configuration of the node `faces` and the planar
 /// positions of its `spokes`: the setting of the lattice-window checks.
 type LatticeNode = (Box<dyn schemes::Scheme>, Configuration, Vec<[i64; 2]>);
-fn lattice_node(data: &toml::Value) -> Result<LatticeNode, String> {
+fn lattice_node(data: &toml::Value) -> Result<LatticeNode, Error> {
     let scheme = schemes::build(text(data, "scheme")?, &params(data, "params")?)?;
     let config = configuration(scheme.as_ref(), text(data, "faces")?)?;
     let spokes = field(data, "spokes")?
         .as_array()
-        .ok_or("data.spokes: a list of [x, y]")?
+        .ok_or_else(|| Error::Claim("data.spokes: a list of [x, y]".into()))?
         .iter()
         .map(|p| {
-            let v = p.as_array().filter(|v| v.len() == 2).ok_or("each spoke is [x, y]")?;
+            let v = p.as_array().filter(|v| v.len() == 2).ok_or_else(|| Error::Claim("each spoke is [x, y]".into()))?;
             Ok([int(&v[0], "a spoke")?, int(&v[1], "a spoke")?])
         })
-        .collect::<Result<_, String>>()?;
+        .collect::<Result<_, Error>>()?;
     Ok((scheme, config, spokes))
 }
 
 /// S (window to the same positions) and S⁺ (shifted by `shift`) on the window
 /// [x0, x1] × [y0, y1] of the planar lattice around the node `faces`.
-fn strip(data: &toml::Value) -> Result<Strip, String> {
+fn strip(data: &toml::Value) -> Result<Strip, Error> {
     use crate::spectrum::strip::window_matrices;
     let (scheme, config, spokes) = lattice_node(data)?;
     let w = small_window(data, MAX_DATA_WINDOW)?;
     let t = ints(data, "shift")?;
     if t.len() != 2 || t.iter().any(|x| x.abs() > 16) {
-        return Err("data.shift is [dx, dy] with |dx|, |dy| <= 16".into());
+        return Err(Error::Claim("data.shift is [dx, dy] with |dx|, |dy| <= 16".into()));
     }
     let window: Vec<[i64; 2]> = (w[2]..=w[3]).flat_map(|y| (w[0]..=w[1]).map(move |x| [x, y])).collect();
     let mut m = window_matrices(scheme.as_ref(), &config, &spokes, &window, &[[0, 0], [t[0], t[1]]])?;
@@ -409,9 +425,9 @@ fn strip(data: &toml::Value) -> Result<Strip, String> {
     let s = m.pop().expect("two matrices");
     let leading = field(data, "leading")?
         .as_array()
-        .ok_or("data.leading: eigenvalues as strings")?
+        .ok_or_else(|| Error::Claim("data.leading: eigenvalues as strings".into()))?
         .iter()
-        .map(|v| v.as_str().ok_or_else(|| "data.leading: strings".to_string()).and_then(exact))
+        .map(|v| v.as_str().ok_or_else(|| Error::Claim("data.leading: strings".to_string())).and_then(exact))
         .collect::<Result<_, _>>()?;
     let label = format!("L = [{}, {}] × [{}, {}] ({} points)", w[0], w[1], w[2], w[3], window.len());
     Ok(Strip { s, s_plus, leading, window: label })
@@ -424,7 +440,9 @@ fn strip_defective(data: &toml::Value) -> Result4 {
     let n = st.s.len();
     let (spec, irrational) = crate::spectrum::strip::rational_spectrum(&st.s)?;
     if irrational > 0 {
-        return Err(format!("{irrational} eigenvalues are not rational; geometric multiplicities not decided"));
+        return Err(Error::Claim(format!(
+            "{irrational} eigenvalues are not rational; geometric multiplicities not decided"
+        )));
     }
     let rank: usize = spec.iter().map(|e| e.2).sum();
     let defective: Vec<String> =
@@ -442,14 +460,14 @@ fn strip_defective(data: &toml::Value) -> Result4 {
     ))
 }
 
-fn eigenbasis(st: &Strip) -> Result<Vec<Vec<Rational>>, String> {
+fn eigenbasis(st: &Strip) -> Result<Vec<Vec<Rational>>, Error> {
     let basis = crate::spectrum::strip::exact_eigenvectors(&st.s, &st.leading);
     if basis.len() != st.leading.len() {
-        return Err(format!(
+        return Err(Error::Claim(format!(
             "the leading eigenvalues have {} independent eigenvectors, not {}",
             basis.len(),
             st.leading.len()
-        ));
+        )));
     }
     Ok(basis)
 }
@@ -510,7 +528,7 @@ fn strip_shifted_eigenvectors(data: &toml::Value) -> Result4 {
     let st = strip(data)?;
     let basis = eigenbasis(&st)?;
     let a = crate::spectrum::strip::action_on(&st.s_plus, &basis)
-        .ok_or("the leading eigenvectors are not invariant under S⁺")?;
+        .ok_or_else(|| Error::Claim("the leading eigenvectors are not invariant under S⁺".into()))?;
     let half = q(1, 2);
     let mut out = Vec::new();
     let mut all = true;
@@ -548,7 +566,7 @@ fn strip_jsr(data: &toml::Value) -> Result4 {
     let basis = eigenbasis(&st)?;
     let n = st.s.len();
     if crate::spectrum::strip::action_on(&st.s_plus, &basis).is_none() {
-        return Err("the leading eigenvectors are not invariant under S⁺: Q⁺ is not defined".into());
+        return Err(Error::Claim("the leading eigenvectors are not invariant under S⁺: Q⁺ is not defined".into()));
     }
     let length = int_in(data, "length", 1, 16)? as usize;
     let bound = crate::numeric::Weight::to_f64(&exact(text(data, "bound")?)?);
@@ -602,8 +620,8 @@ fn fourthree_lemma_3_4() -> Result4 {
             .max(((ones.transpose() * &ones)[(0, 0)] - nf).abs())
             .max(diff(&(&e * &ones), &ones))
             .max(diff(&(&e * &e), &e));
-        let rank = |m: &faer::Mat<f64>| -> Result<usize, String> {
-            Ok(m.singular_values().map_err(|e| format!("{e:?}"))?.iter().filter(|s| **s > 1e-9).count())
+        let rank = |m: &faer::Mat<f64>| -> Result<usize, Error> {
+            Ok(m.singular_values().map_err(|e| Error::Numeric(format!("{e:?}")))?.iter().filter(|s| **s > 1e-9).count())
         };
         ranks.push((n, rank(&c)?, rank(&ec)?));
     }
@@ -625,7 +643,7 @@ fn fourthree_lemma_3_4() -> Result4 {
 /// rules of steps 1..=`steps` (σ-blended, (4a') with share `eon_quad_term`).
 type Patch = (Box<dyn schemes::Scheme>, crate::mesh::PolyMesh, crate::mesh::PolyMesh, CompositeRows);
 
-fn fourthree_patch(data: &toml::Value, steps: usize) -> Result<Patch, String> {
+fn fourthree_patch(data: &toml::Value, steps: usize) -> Result<Patch, Error> {
     let scheme = schemes::build("four-three", &params(data, "params")?)?;
     let faces = text(data, "faces")?;
     let config = Configuration::with_faces(scheme.as_ref(), faces.len(), faces)?;
@@ -679,7 +697,7 @@ fn fourthree_convex_hull(data: &toml::Value) -> Result4 {
     let steps = int_in(data, "steps", 1, 4)? as usize;
     let (scheme, patch, fine, rows) = fourthree_patch(data, steps)?;
     // regular limit stencils: weights of the centre, its edge neighbours and (quads) its diagonal neighbours
-    let regular = |faces: &str| -> Result<(f64, f64, f64), String> {
+    let regular = |faces: &str| -> Result<(f64, f64, f64), Error> {
         let config = Configuration::with_faces(scheme.as_ref(), faces.len(), faces)?;
         let a = analyse(scheme.as_ref(), &config, &Options { exact: false, ..Options::default() })?;
         let l = limit_stencil(&a.spectrum)?;
@@ -691,10 +709,10 @@ fn fourthree_convex_hull(data: &toml::Value) -> Result4 {
                 (K::Edge, 1) => &mut e,
                 (K::Face, 1) => &mut d,
                 _ if w.abs() < 1e-12 => continue,
-                _ => return Err(format!("the regular limit stencil of {faces} reaches {}", lab.name)),
+                _ => return Err(Error::Claim(format!("the regular limit stencil of {faces} reaches {}", lab.name))),
             };
             if slot.is_some_and(|x| (x - w).abs() > 1e-12) {
-                return Err(format!("the regular limit stencil of {faces} is not symmetric"));
+                return Err(Error::Claim(format!("the regular limit stencil of {faces} is not symmetric")));
             }
             *slot = Some(*w);
         }
@@ -702,7 +720,7 @@ fn fourthree_convex_hull(data: &toml::Value) -> Result4 {
     };
     let quad = regular("QQQQ")?;
     let tri = regular("TTTTTT")?;
-    let chart = fine.chart.as_ref().ok_or("no chart")?;
+    let chart = fine.chart.as_ref().ok_or_else(|| Error::Claim("no chart".into()))?;
     let mut worst = SmallestWeight::new();
     let mut count = 0;
     'nodes: for u in 0..fine.num_vertices() {
@@ -753,15 +771,19 @@ fn fourthree_convex_hull(data: &toml::Value) -> Result4 {
 fn matrix_nonnegative(data: &toml::Value) -> Result4 {
     let name = text(data, "scheme")?;
     let valences = ints(data, "valences")?;
-    let sets = field(data, "params")?.as_array().ok_or("data.params: a list of tables")?;
+    let sets = field(data, "params")?.as_array().ok_or_else(|| Error::Claim("data.params: a list of tables".into()))?;
     let mut worst = SmallestWeight::new();
     let mut checked = 0;
     for set in sets {
         let p: Vec<(String, String)> = set
             .as_table()
-            .ok_or("data.params: tables")?
+            .ok_or_else(|| Error::Claim("data.params: tables".into()))?
             .iter()
-            .map(|(k, v)| v.as_str().map(|s| (k.clone(), s.to_string())).ok_or("parameter values are strings"))
+            .map(|(k, v)| {
+                v.as_str()
+                    .map(|s| (k.clone(), s.to_string()))
+                    .ok_or_else(|| Error::Claim("parameter values are strings".into()))
+            })
             .collect::<Result<_, _>>()?;
         let scheme = schemes::build(name, &p)?;
         for &n in &valences {
@@ -791,12 +813,13 @@ fn matrix_nonnegative(data: &toml::Value) -> Result4 {
 fn curve_relation3() -> Result4 {
     use crate::curves::{refine_closed, CurveWeight};
     use crate::schemes::curves::{self, relation::four_point_by_relation3};
-    let four = Rational::mask(curves::build("four-point", &[])?.as_ref()).map_err(|_| "inexact four-point mask")?;
+    let four = Rational::mask(curves::build("four-point", &[])?.as_ref())
+        .map_err(|_| Error::Claim("inexact four-point mask".into()))?;
     let n = 8;
     let mut diffs = 0;
     for k in 0..n {
         let e: Vec<Rational> = (0..n).map(|i| if i == k { q(1, 1) } else { q(0, 1) }).collect();
-        let lhs = four_point_by_relation3(&e).map_err(|_| "inexact B-spline mask")?;
+        let lhs = four_point_by_relation3(&e).map_err(|_| Error::Claim("inexact B-spline mask".into()))?;
         let rhs = refine_closed(&four, &e);
         diffs += lhs.iter().zip(&rhs).filter(|(a, b)| a != b).count();
     }
@@ -817,16 +840,16 @@ fn curve_c1_laurent(data: &toml::Value) -> Result4 {
     let name = text(data, "scheme")?;
     let param = text(data, "param")?;
     let max_steps = int_in(data, "max_steps", 1, 64)? as u32;
-    let values = field(data, "values")?.as_array().ok_or("data.values: strings")?;
+    let values = field(data, "values")?.as_array().ok_or_else(|| Error::Claim("data.values: strings".into()))?;
     if values.is_empty() || values.len() > 100 {
-        return Err("data.values: 1 to 100 parameter values".into());
+        return Err(Error::Claim("data.values: 1 to 100 parameter values".into()));
     }
     let mut out = Vec::new();
     let mut all = true;
     for v in values {
-        let v = v.as_str().ok_or("data.values: strings")?;
+        let v = v.as_str().ok_or_else(|| Error::Claim("data.values: strings".into()))?;
         let s = curves::build(name, &[(param.to_string(), v.to_string())])?;
-        let mask = Rational::mask(s.as_ref()).map_err(|_| "inexact mask")?;
+        let mask = Rational::mask(s.as_ref()).map_err(|_| Error::Claim("inexact mask".into()))?;
         match c1_test(&mask, max_steps) {
             Ok((Some(l), norms)) => out.push(format!("{param} = {v}: ‖S_b^{l}‖ = {}", norms.last().expect("one norm"))),
             Ok((None, norms)) => {
@@ -859,15 +882,15 @@ fn fourthree_node_counts(data: &toml::Value) -> Result4 {
     let (name, text_obj) = match text(data, "mesh")? {
         "house.obj" => ("house.obj", include_str!("../../meshes/house.obj")),
         "prism.obj" => ("prism.obj", include_str!("../../meshes/prism.obj")),
-        other => return Err(format!("no built-in mesh '{other}' (house.obj, prism.obj)")),
+        other => return Err(Error::Claim(format!("no built-in mesh '{other}' (house.obj, prism.obj)"))),
     };
     let obj = crate::mesh::obj::parse_obj(text_obj)?;
     let levels = int_in(data, "levels", 1, 5)? as usize;
     let scheme = schemes::build("four-three", &[])?;
-    let count = |m: &crate::mesh::PolyMesh| -> Result<[usize; 3], String> {
+    let count = |m: &crate::mesh::PolyMesh| -> Result<[usize; 3], Error> {
         let mut c = [0usize; 3];
         for v in 0..m.num_vertices() {
-            match classify(m, v).ok_or("a vertex is not classifiable")?.1 {
+            match classify(m, v).ok_or_else(|| Error::Claim("a vertex is not classifiable".into()))?.1 {
                 NodeType::Eon => c[0] += 1,
                 NodeType::Transition { .. } => c[1] += 1,
                 NodeType::RegularQuad | NodeType::RegularTri => c[2] += 1,

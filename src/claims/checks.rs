@@ -6,6 +6,7 @@ use std::collections::HashMap;
 use num_complex::Complex64;
 
 use super::{Check, Claim, Outcome, Subject, Verdict};
+use crate::error::Error;
 use crate::lattice;
 use crate::neighbourhood::{Configuration, NeighbourhoodKind, VertexKind};
 use crate::numeric::expr::{Env, Expr};
@@ -20,26 +21,26 @@ const TOL: f64 = 1e-9;
 
 #[derive(Default)]
 pub struct Cache {
-    spectra: HashMap<String, Result<std::rc::Rc<Spectrum>, String>>,
+    spectra: HashMap<String, Result<std::rc::Rc<Spectrum>, Error>>,
 }
 
 impl Cache {
-    fn spectrum(&mut self, s: &Subject, n: usize) -> Result<std::rc::Rc<Spectrum>, String> {
+    fn spectrum(&mut self, s: &Subject, n: usize) -> Result<std::rc::Rc<Spectrum>, Error> {
         let key = format!("{}|{:?}|{n}|{:?}|{:?}", s.scheme, s.params, s.neighbourhood, s.faces_for(n));
         self.spectra.entry(key).or_insert_with(|| compute(s, n).map(std::rc::Rc::new)).clone()
     }
 }
 
-fn kind_of(s: &Subject) -> Result<NeighbourhoodKind, String> {
+fn kind_of(s: &Subject) -> Result<NeighbourhoodKind, Error> {
     s.neighbourhood.as_deref().unwrap_or("analysis").parse()
 }
 
 /// The subject's parameters evaluated at valence n, as `name=value` overrides.
-fn subject_params(s: &Subject, n: usize) -> Result<Vec<(String, String)>, String> {
+fn subject_params(s: &Subject, n: usize) -> Result<Vec<(String, String)>, Error> {
     let base = crate::numeric::expr::env_int(&[("n", n as i64), ("k", n as i64)]);
     let mut params: Vec<(String, String)> = Vec::new();
     for (k, v) in &s.params {
-        let e = Expr::parse(v).map_err(|e| format!("parameter {k} = '{v}': {e}"))?;
+        let e = Expr::parse(v).map_err(|e| Error::Claim(format!("parameter {k} = '{v}': {e}")))?;
         let text = match e.exact(&base) {
             Some(q) => q.to_string(),
             None => format!("{:e}", e.eval(&base)?.re),
@@ -50,7 +51,7 @@ fn subject_params(s: &Subject, n: usize) -> Result<Vec<(String, String)>, String
 }
 
 /// The scheme (with parameters evaluated at valence n) and configuration.
-pub(super) fn subject_config(s: &Subject, n: usize) -> Result<(Box<dyn schemes::Scheme>, Configuration), String> {
+pub(super) fn subject_config(s: &Subject, n: usize) -> Result<(Box<dyn schemes::Scheme>, Configuration), Error> {
     let scheme = schemes::resolve(&s.scheme, &subject_params(s, n)?)?;
     let config = match s.faces_for(n) {
         Some(f) => Configuration::with_faces(scheme.as_ref(), n, f)?,
@@ -59,12 +60,12 @@ pub(super) fn subject_config(s: &Subject, n: usize) -> Result<(Box<dyn schemes::
     Ok((scheme, config))
 }
 
-fn compute(s: &Subject, n: usize) -> Result<Spectrum, String> {
+fn compute(s: &Subject, n: usize) -> Result<Spectrum, Error> {
     let kind = kind_of(s)?;
     // lattice schemes (built-in or files) are analysed on Z², not on a mesh
     if registry::family_of(&s.scheme) == Ok(Family::Lattice) {
         if n != 4 {
-            return Err(format!("{} is defined on the regular lattice only (valence 4)", s.scheme));
+            return Err(Error::Claim(format!("{} is defined on the regular lattice only (valence 4)", s.scheme)));
         }
         let scheme = registry::lattice(&s.scheme, &subject_params(s, n)?)?;
         return Ok(lattice::analysis::analyse(scheme.as_ref(), kind, false)?.spectrum);
@@ -73,12 +74,12 @@ fn compute(s: &Subject, n: usize) -> Result<Spectrum, String> {
     Ok(analyse(scheme.as_ref(), &config, &Options { neighbourhood: kind, method: None, exact: false })?.spectrum)
 }
 
-pub(super) fn env_for(s: &Subject, n: usize) -> Result<Env, String> {
+pub(super) fn env_for(s: &Subject, n: usize) -> Result<Env, Error> {
     env_with(s, n, None)
 }
 
 /// The environment of valence n, with the Fourier block index m when given.
-fn env_with(s: &Subject, n: usize, m: Option<usize>) -> Result<Env, String> {
+fn env_with(s: &Subject, n: usize, m: Option<usize>) -> Result<Env, Error> {
     let mut env = crate::numeric::expr::env_int(&[("n", n as i64), ("k", n as i64)]);
     if let Some(m) = m {
         env.insert("m".into(), ParamValue::from_ratio(m as i64, 1));
@@ -91,9 +92,9 @@ fn env_with(s: &Subject, n: usize, m: Option<usize>) -> Result<Env, String> {
     }
     let defs: Vec<(&String, &String)> = s.params.iter().chain(s.vars.iter()).collect();
     if let Some((name, _)) = defs.iter().find(|(k, _)| env.contains_key(k.as_str())) {
-        return Err(format!(
+        return Err(Error::Claim(format!(
             "'{name}' is given by the check (the valence n or k, the block m, quads, tris) and cannot be redefined in params or vars"
-        ));
+        )));
     }
     // definitions may refer to each other: evaluate in dependency order
     let mut pending = defs;
@@ -101,7 +102,7 @@ fn env_with(s: &Subject, n: usize, m: Option<usize>) -> Result<Env, String> {
         let before = pending.len();
         let mut later = Vec::new();
         for (k, v) in pending {
-            let e = Expr::parse(v).map_err(|e| format!("'{v}': {e}"))?;
+            let e = Expr::parse(v).map_err(|e| Error::Claim(format!("'{v}': {e}")))?;
             if e.variables().iter().any(|x| !env.contains_key(x)) {
                 later.push((k, v));
                 continue;
@@ -116,7 +117,7 @@ fn env_with(s: &Subject, n: usize, m: Option<usize>) -> Result<Env, String> {
         }
         if later.len() == before {
             let names: Vec<&str> = later.iter().map(|(k, _)| k.as_str()).collect();
-            return Err(format!("variables {} refer to unknown or circular names", names.join(", ")));
+            return Err(Error::Claim(format!("variables {} refer to unknown or circular names", names.join(", "))));
         }
         pending = later;
     }
@@ -126,16 +127,19 @@ fn env_with(s: &Subject, n: usize, m: Option<usize>) -> Result<Env, String> {
 /// The value of a stated expression; a value that is not a finite number
 /// (0·10^400, an overflow) cannot decide a claim, so it is an error (the
 /// claim becomes INCONCLUSIVE).
-pub(super) fn eval(text: &str, env: &Env) -> Result<Complex64, String> {
-    let z = Expr::parse(text).map_err(|e| format!("'{text}': {e}"))?.eval(env).map_err(|e| format!("'{text}': {e}"))?;
+pub(super) fn eval(text: &str, env: &Env) -> Result<Complex64, Error> {
+    let z = Expr::parse(text)
+        .map_err(|e| Error::Claim(format!("'{text}': {e}")))?
+        .eval(env)
+        .map_err(|e| Error::Claim(format!("'{text}': {e}")))?;
     finite(z, text)
 }
 
-fn finite(z: Complex64, text: &str) -> Result<Complex64, String> {
+fn finite(z: Complex64, text: &str) -> Result<Complex64, Error> {
     if z.re.is_finite() && z.im.is_finite() {
         Ok(z)
     } else {
-        Err(format!("'{text}' is not a finite number ({}): it cannot decide the claim", show(z)))
+        Err(Error::Claim(format!("'{text}' is not a finite number ({}): it cannot decide the claim", show(z))))
     }
 }
 
@@ -187,11 +191,11 @@ fn expanded(spec: &Spectrum) -> Vec<Complex64> {
 }
 
 /// Eigenvalues of Fourier block m (repeated by multiplicity).
-fn block_values(spec: &Spectrum, m: usize) -> Result<Vec<Complex64>, String> {
+fn block_values(spec: &Spectrum, m: usize) -> Result<Vec<Complex64>, Error> {
     let Synthesis::Dft { blocks, .. } = &spec.synthesis else {
-        return Err("the configuration was not decomposed into Fourier blocks".into());
+        return Err(Error::Claim("the configuration was not decomposed into Fourier blocks".into()));
     };
-    let b = blocks.get(m).ok_or_else(|| format!("there is no Fourier block {m}"))?;
+    let b = blocks.get(m).ok_or_else(|| Error::Claim(format!("there is no Fourier block {m}")))?;
     let mut v: Vec<Complex64> =
         eigen::block_eigen(b)?.into_iter().flat_map(|e| std::iter::repeat_n(e.value, e.algebraic)).collect();
     v.sort_by(|a, b| eigenvalue_order(*a, *b));
@@ -215,7 +219,7 @@ pub fn evaluate(paper: &str, claim: &Claim, cache: &mut Cache) -> Outcome {
     }
     let p = match run(&claim.check, cache) {
         Ok(p) => p,
-        Err(e) => inconclusive(e),
+        Err(e) => inconclusive(e.to_string()),
     };
     outcome(paper, claim, p)
 }
@@ -244,8 +248,8 @@ fn outcome(paper: &str, claim: &Claim, p: Partial) -> Outcome {
 /// Runs a per-valence comparison and reports the first valence where it fails.
 fn over_valences(
     subject: &Subject,
-    mut one: impl FnMut(usize) -> Result<(bool, String, String), String>,
-) -> Result<Partial, String> {
+    mut one: impl FnMut(usize) -> Result<(bool, String, String), Error>,
+) -> Result<Partial, Error> {
     let valences = subject.valence_list()?;
     let mut first = None;
     let (mut stated0, mut computed0) = (String::new(), String::new());
@@ -262,7 +266,7 @@ fn over_valences(
     let span = match (valences.first(), valences.last()) {
         (Some(a), Some(b)) if a != b => format!("valences {a}..{b} ({} checked)", valences.len()),
         (Some(a), _) => format!("valence {a}"),
-        _ => return Err("no valences given".into()),
+        _ => return Err(Error::Claim("no valences given".into())),
     };
     Ok(match first {
         None => Partial {
@@ -280,7 +284,7 @@ fn over_valences(
     })
 }
 
-fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
+fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
     match check {
         Check::Eigenvalues { subject, values, compare, block } => over_valences(subject, |n| {
             let spec = cache.spectrum(subject, n)?;
@@ -291,7 +295,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
                 Some(b) => {
                     let m = eval(b, &env_for(subject, n)?)?.re.round();
                     if !(0.0..n as f64).contains(&m) {
-                        return Err(format!("block '{b}' is {m} at n = {n}"));
+                        return Err(Error::Claim(format!("block '{b}' is {m} at n = {n}")));
                     }
                     vec![Some(m as usize)]
                 }
@@ -311,7 +315,11 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
                     "all" | "contains" => computed.clone(),
                     // only the computed copies of the stated values count
                     "count" => computed.iter().copied().filter(|w| stated.iter().any(|z| close(*z, *w))).collect(),
-                    other => return Err(format!("unknown comparison '{other}' (all, leading, contains, count)")),
+                    other => {
+                        return Err(Error::Claim(format!(
+                            "unknown comparison '{other}' (all, leading, contains, count)"
+                        )))
+                    }
                 };
                 let (missing, extra) = unmatched(&stated, &shown);
                 let ok = missing.is_empty() && (compare == "contains" || extra.is_empty());
@@ -333,7 +341,11 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
         Check::Subdominant { subject, value } => over_valences(subject, |n| {
             let spec = cache.spectrum(subject, n)?;
             let stated = eval(value, &env_for(subject, n)?)?;
-            let l1 = spec.eigenvalues.get(1).map(|e| Complex64::new(e.re, e.im)).ok_or("no subdominant eigenvalue")?;
+            let l1 = spec
+                .eigenvalues
+                .get(1)
+                .map(|e| Complex64::new(e.re, e.im))
+                .ok_or_else(|| Error::Claim("no subdominant eigenvalue".into()))?;
             let double = spec.eigenvalues[1].algebraic_multiplicity;
             Ok((close(stated, l1), show(stated), format!("{} (multiplicity {double})", show(l1))))
         }),
@@ -357,7 +369,11 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
                 .any(|v| ["lambda1", "lambda3", "size"].contains(&v.as_str()));
             if uses_spectrum && !subject.scheme.is_empty() {
                 let spec = cache.spectrum(subject, n)?;
-                let l1 = spec.eigenvalues.get(1).map(|e| e.re).ok_or("no subdominant eigenvalue")?;
+                let l1 = spec
+                    .eigenvalues
+                    .get(1)
+                    .map(|e| e.re)
+                    .ok_or_else(|| Error::Claim("no subdominant eigenvalue".into()))?;
                 let l3 = spec.eigenvalues.get(2).map(|e| e.modulus).unwrap_or(0.0);
                 env.insert("lambda1".into(), ParamValue::from_f64(l1));
                 env.insert("lambda3".into(), ParamValue::from_f64(l3));
@@ -365,7 +381,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
             }
             let (a, b) = (finite(l.eval(&env)?, lhs)?, finite(r.eval(&env)?, rhs)?);
             if a.im.abs() > 1e-12 || b.im.abs() > 1e-12 {
-                return Err(format!("'{lhs}' or '{rhs}' is not real at n = {n}"));
+                return Err(Error::Claim(format!("'{lhs}' or '{rhs}' is not real at n = {n}")));
             }
             let (a, b) = (a.re, b.re);
             let ok = match op.as_str() {
@@ -373,7 +389,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
                 "<=" => a <= b,
                 ">" => a > b,
                 ">=" => a >= b,
-                other => return Err(format!("unknown comparison '{other}' (<, <=, >, >=)")),
+                other => return Err(Error::Claim(format!("unknown comparison '{other}' (<, <=, >, >=)"))),
             };
             Ok((ok, format!("{lhs} {op} {rhs}"), format!("{} {op} {}: {ok}", fmt_f(a), fmt_f(b))))
         }),
@@ -548,18 +564,20 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
             let [i0, i1, j0, j1] = *window;
             check_window(*window)?;
             if rows.is_empty() {
-                return Err("no printed rows: nothing to compare".into());
+                return Err(Error::Claim("no printed rows: nothing to compare".into()));
             }
             let w = lattice::Window::rect(i0, i1, j0, j1);
             let assembled = lattice::local_matrix::<crate::numeric::Rational>(s.as_ref(), &w)?;
-            let scale = Expr::parse(scale)?.exact(&Env::new()).ok_or("the scale must be an exact rational")?;
+            let scale = Expr::parse(scale)?
+                .exact(&Env::new())
+                .ok_or_else(|| Error::Claim("the scale must be an exact rational".into()))?;
             let printed: Vec<Vec<crate::numeric::Rational>> = rows
                 .iter()
                 .map(|r| {
                     r.split_whitespace()
                         .map(|x| Expr::parse(x).ok().and_then(|e| e.exact(&Env::new())).map(|q| q * scale.clone()))
                         .collect::<Option<Vec<_>>>()
-                        .ok_or_else(|| format!("row '{r}' is not a list of numbers"))
+                        .ok_or_else(|| Error::Claim(format!("row '{r}' is not a list of numbers")))
                 })
                 .collect::<Result<_, _>>()?;
             if printed.len() != assembled.len() || printed.iter().any(|r| r.len() != assembled.len()) {
@@ -594,7 +612,8 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
                 },
             })
         }
-        Check::Malformed(m) => Err(m.clone()),
+        // the message names the claim file and line
+        Check::Malformed(m) => Err(Error::File(m.clone())),
         Check::Curvature { subject, class, c2, fourier, levels } => {
             let (verdict, stated, computed, detail) =
                 super::curvature::run(subject, class, *c2, fourier.as_deref(), *levels)?;
@@ -612,15 +631,17 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, String> {
 pub const MAX_WINDOW_POINTS: i64 = 1024;
 
 /// A window [i0, i1] × [j0, j1]: non-empty and at most [`MAX_WINDOW_POINTS`].
-pub fn check_window([i0, i1, j0, j1]: [i64; 4]) -> Result<(), String> {
+pub fn check_window([i0, i1, j0, j1]: [i64; 4]) -> Result<(), Error> {
     if i0 > i1 || j0 > j1 {
-        return Err(format!("the window [{i0}, {i1}, {j0}, {j1}] is empty (it must have i0 <= i1 and j0 <= j1)"));
+        return Err(Error::Claim(format!(
+            "the window [{i0}, {i1}, {j0}, {j1}] is empty (it must have i0 <= i1 and j0 <= j1)"
+        )));
     }
     let points = (i1 as i128 - i0 as i128 + 1) * (j1 as i128 - j0 as i128 + 1);
     if points > MAX_WINDOW_POINTS as i128 {
-        return Err(format!(
+        return Err(Error::Claim(format!(
             "the window [{i0}, {i1}, {j0}, {j1}] has {points} points; at most {MAX_WINDOW_POINTS} are supported"
-        ));
+        )));
     }
     Ok(())
 }
@@ -629,21 +650,21 @@ pub fn check_window([i0, i1, j0, j1]: [i64; 4]) -> Result<(), String> {
 pub const MAX_STATED_VALUES: usize = 100_000;
 
 /// Stated values; an entry "EXPR ; COUNT" stands for COUNT copies of EXPR.
-fn stated_values(values: &[String], env: &Env) -> Result<Vec<Complex64>, String> {
+fn stated_values(values: &[String], env: &Env) -> Result<Vec<Complex64>, Error> {
     let mut out = Vec::new();
     for v in values {
         let (e, count) = match v.split_once(';') {
             Some((e, c)) => {
                 let k = eval(c, env)?.re.round();
                 if !(0.0..=100_000.0).contains(&k) {
-                    return Err(format!("repeat count of '{v}' is {k}"));
+                    return Err(Error::Claim(format!("repeat count of '{v}' is {k}")));
                 }
                 (e, k as usize)
             }
             None => (v.as_str(), 1),
         };
         if out.len() + count > MAX_STATED_VALUES {
-            return Err(format!("more than {MAX_STATED_VALUES} stated values (counting repeats)"));
+            return Err(Error::Claim(format!("more than {MAX_STATED_VALUES} stated values (counting repeats)")));
         }
         let z = eval(e, env)?;
         out.extend(std::iter::repeat_n(z, count));

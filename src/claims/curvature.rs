@@ -10,6 +10,7 @@
 //! where S is rational, the exact nullities of S − λ²I and (S − λ²I)². When
 //! the routes disagree the claim is INCONCLUSIVE with both.
 
+use crate::error::Error;
 use serde::Deserialize;
 
 use super::checks::{env_for, eval, subject_config};
@@ -39,7 +40,7 @@ pub enum FourierEntry {
 const CLASSES: &[&str] = &["zero", "bounded", "unbounded", "not-applicable"];
 
 impl ClassSpec {
-    fn names(&self) -> Result<Vec<String>, String> {
+    fn names(&self) -> Result<Vec<String>, Error> {
         let v = match self {
             ClassSpec::One(s) => vec![s.clone()],
             ClassSpec::Any(v) => v.clone(),
@@ -49,7 +50,7 @@ impl ClassSpec {
         }
         for c in &v {
             if !CLASSES.contains(&c.as_str()) {
-                return Err(format!("class '{c}': the classes are {}", CLASSES.join(", ")));
+                return Err(Error::Claim(format!("class '{c}': the classes are {}", CLASSES.join(", "))));
             }
         }
         Ok(v)
@@ -59,14 +60,14 @@ impl ClassSpec {
 /// One valence: the analysis and the second routes.
 struct Computed {
     c: Curvature,
-    growth: Option<Result<GrowthTest, String>>,
+    growth: Option<Result<GrowthTest, Error>>,
     exact: Option<ExactJordan>,
 }
 
 /// The analysis of the subject at valence n (exact when λ and μ read as
 /// small rationals, as `subdlab curvature` does), with the second routes
 /// when |μ| = λ².
-fn compute(subject: &Subject, n: usize, levels: usize) -> Result<Computed, String> {
+fn compute(subject: &Subject, n: usize, levels: usize) -> Result<Computed, Error> {
     if subject.neighbourhood.as_deref().is_some_and(|k| k != "analysis") {
         return Err("the curvature check uses the analysis neighbourhood; leave 'neighbourhood' out".into());
     }
@@ -178,7 +179,7 @@ fn evidence(k: &Computed) -> (String, Option<bool>) {
 }
 
 /// A stated F(μ) at valence n, reduced mod the group order, sorted.
-fn stated_fourier(subject: &Subject, n: usize, entries: &[FourierEntry], g: usize) -> Result<Vec<usize>, String> {
+fn stated_fourier(subject: &Subject, n: usize, entries: &[FourierEntry], g: usize) -> Result<Vec<usize>, Error> {
     let env = env_for(subject, n)?;
     let mut out = Vec::new();
     for e in entries {
@@ -187,7 +188,7 @@ fn stated_fourier(subject: &Subject, n: usize, entries: &[FourierEntry], g: usiz
             FourierEntry::Expr(s) => {
                 let z = eval(s, &env)?;
                 if (z.re - z.re.round()).abs() > 1e-9 || z.im.abs() > 1e-9 {
-                    return Err(format!("fourier entry '{s}' is not an integer at n = {n}"));
+                    return Err(Error::Claim(format!("fourier entry '{s}' is not an integer at n = {n}")));
                 }
                 z.re.round() as i64
             }
@@ -205,7 +206,7 @@ pub fn run(
     c2: Option<bool>,
     fourier: Option<&[FourierEntry]>,
     levels: Option<usize>,
-) -> Result<(Verdict, String, String, String), String> {
+) -> Result<(Verdict, String, String, String), Error> {
     let classes = class.names()?;
     let levels = levels.unwrap_or(crate::curvature::DEFAULT_LEVELS);
     let valences = subject.valence_list()?;
@@ -221,10 +222,10 @@ pub fn run(
         let c = &k.c;
         let (ev, agree) = evidence(&k);
         if agree == Some(false) {
-            return Err(format!(
+            return Err(Error::Claim(format!(
                 "n = {n}: the routes to the Jordan structure at λ² disagree, so the class ({}) is not decided: {ev}",
                 c.class.name()
-            ));
+            )));
         }
         let mut stated = vec![format!("class {}", classes.join(" or "))];
         let mut computed = vec![format!("class {}", c.class.name())];
@@ -250,10 +251,10 @@ pub fn run(
         }
         if let Some(entries) = fourier {
             let Some(sh) = &c.shapes else {
-                return Err(format!(
+                return Err(Error::Claim(format!(
                     "n = {n}: F(μ) is not computed here (class {}; F(μ) needs a rotation-symmetric configuration and an eigenvalue μ with an eigenfunction on the ring)",
                     c.class.name()
-                ));
+                )));
             };
             let want = stated_fourier(subject, n, entries, sh.group_order)?;
             stated.push(format!("F(μ) = {want:?}"));

@@ -14,6 +14,7 @@ pub mod curvature;
 
 use std::collections::BTreeMap;
 
+use crate::error::Error;
 use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Debug, Deserialize)]
@@ -101,7 +102,7 @@ pub enum Valences {
 
 impl Subject {
     /// The valences to check: the listed ones and the lengths of `faces`.
-    pub fn valence_list(&self) -> Result<Vec<usize>, String> {
+    pub fn valence_list(&self) -> Result<Vec<usize>, Error> {
         let mut v = self.valences.expand()?;
         for f in &self.faces {
             if !v.contains(&f.len()) {
@@ -116,18 +117,19 @@ impl Subject {
 }
 
 impl Valences {
-    pub fn expand(&self) -> Result<Vec<usize>, String> {
+    pub fn expand(&self) -> Result<Vec<usize>, Error> {
         match self {
             Valences::List(v) => Ok(v.clone()),
             Valences::Range(s) => {
-                let (a, b) =
-                    s.split_once("..").ok_or_else(|| format!("valence range '{s}' is not of the form A..B"))?;
+                let (a, b) = s
+                    .split_once("..")
+                    .ok_or_else(|| Error::Claim(format!("valence range '{s}' is not of the form A..B")))?;
                 let (a, b): (usize, usize) = (
-                    a.trim().parse().map_err(|_| format!("bad valence range '{s}'"))?,
-                    b.trim().parse().map_err(|_| format!("bad valence range '{s}'"))?,
+                    a.trim().parse().map_err(|_| Error::Claim(format!("bad valence range '{s}'")))?,
+                    b.trim().parse().map_err(|_| Error::Claim(format!("bad valence range '{s}'")))?,
                 );
                 if a > b || b > crate::neighbourhood::configuration::MAX_VALENCE {
-                    return Err(format!("bad valence range '{s}'"));
+                    return Err(Error::Claim(format!("bad valence range '{s}'")));
                 }
                 Ok((a..=b).collect())
             }
@@ -378,7 +380,7 @@ pub const BUILTIN: &[(&str, &str)] = &[
 /// missing field, a value of the wrong type, a repeated id) becomes a claim
 /// whose check is [`Check::Malformed`], so the others are still evaluated.
 /// Errors name the file and the line.
-pub fn parse_file(name: &str, text: &str) -> Result<ClaimFile, String> {
+pub fn parse_file(name: &str, text: &str) -> Result<ClaimFile, Error> {
     let short = |e: &dyn std::fmt::Display| {
         let msg = e.to_string();
         // toml reports "TOML parse error at line L, column C" first; keep the message short
@@ -390,13 +392,14 @@ pub fn parse_file(name: &str, text: &str) -> Result<ClaimFile, String> {
             format!("{first}: {detail}")
         }
     };
-    let mut table: toml::Table = toml::from_str(text).map_err(|e| format!("{name}: {}", short(&e)))?;
+    let mut table: toml::Table = toml::from_str(text).map_err(|e| Error::File(format!("{name}: {}", short(&e))))?;
     let raw_claims = match table.remove("claim") {
         None => Vec::new(),
         Some(toml::Value::Array(a)) => a,
-        Some(_) => return Err(format!("{name}: 'claim' must be an array of tables ([[claim]])")),
+        Some(_) => return Err(Error::File(format!("{name}: 'claim' must be an array of tables ([[claim]])"))),
     };
-    let mut f: ClaimFile = toml::Value::Table(table).try_into().map_err(|e| format!("{name}: {}", short(&e)))?;
+    let mut f: ClaimFile =
+        toml::Value::Table(table).try_into().map_err(|e| Error::File(format!("{name}: {}", short(&e))))?;
     let headers = claim_header_lines(text);
     let mut seen = std::collections::HashSet::new();
     for (k, raw) in raw_claims.into_iter().enumerate() {
@@ -492,7 +495,7 @@ fn read_claim(file: &str, k: usize, header: Option<usize>, text: &str, raw: toml
     }
 }
 
-pub fn builtin_files() -> Result<Vec<ClaimFile>, String> {
+pub fn builtin_files() -> Result<Vec<ClaimFile>, Error> {
     BUILTIN.iter().map(|(name, text)| parse_file(name, text)).collect()
 }
 
@@ -500,7 +503,7 @@ pub fn builtin_files() -> Result<Vec<ClaimFile>, String> {
 /// own cache of analyses), on at most one worker per core. Workers have large
 /// stacks (deeply nested expressions recurse), and a claim whose evaluation
 /// fails unexpectedly gets an ERROR verdict instead of ending the run.
-pub fn evaluate_all(files: &[ClaimFile]) -> Result<Vec<Vec<Outcome>>, String> {
+pub fn evaluate_all(files: &[ClaimFile]) -> Result<Vec<Vec<Outcome>>, Error> {
     use std::sync::atomic::{AtomicUsize, Ordering};
     let workers = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1).min(files.len()).max(1);
     let next = AtomicUsize::new(0);
@@ -517,13 +520,13 @@ pub fn evaluate_all(files: &[ClaimFile]) -> Result<Vec<Vec<Outcome>>, String> {
             let h = std::thread::Builder::new()
                 .stack_size(EVALUATION_STACK)
                 .spawn_scoped(scope, work)
-                .map_err(|e| format!("cannot start a worker thread: {e}"))?;
+                .map_err(|e| Error::Message(format!("cannot start a worker thread: {e}")))?;
             handles.push(h);
         }
         for h in handles {
-            h.join().map_err(|_| "internal error while evaluating claims".to_string())?;
+            h.join().map_err(|_| Error::Message("internal error while evaluating claims".to_string()))?;
         }
-        Ok::<(), String>(())
+        Ok::<(), Error>(())
     })?;
     let results = results.into_inner().unwrap_or_else(|e| e.into_inner());
     Ok(results.into_iter().map(|o| o.unwrap_or_default()).collect())

@@ -6,6 +6,7 @@ use clap::{Args, Subcommand};
 
 use super::commands::parse_params;
 use crate::charmap::{characteristic_map, CharMap, CharMapOptions, DEFAULT_LEVELS, DEFAULT_RESOLUTION, MAX_LEVELS};
+use crate::error::Error;
 use crate::io::print_json;
 use crate::neighbourhood::configuration::check_valence;
 use crate::neighbourhood::Configuration;
@@ -69,31 +70,36 @@ pub enum PlotWhat {
     },
 }
 
-fn build_scheme(name: &str, params: &[String]) -> Result<Box<dyn Scheme>, String> {
+fn build_scheme(name: &str, params: &[String]) -> Result<Box<dyn Scheme>, Error> {
     schemes::resolve(name, &parse_params(params)?)
 }
 
 /// Fails early, before any computation, when the output cannot be written.
-pub(super) fn check_out(path: &Path) -> Result<(), String> {
+pub(super) fn check_out(path: &Path) -> Result<(), Error> {
     plot::format_of(path)?;
     let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
     if !dir.is_dir() {
-        return Err(format!("cannot write {}: directory {} does not exist", path.display(), dir.display()));
+        return Err(Error::Write {
+            path: path.display().to_string(),
+            reason: format!("directory {} does not exist", dir.display()),
+        });
     }
     Ok(())
 }
 
-pub fn charmap(a: &CharmapArgs) -> Result<(), String> {
+pub fn charmap(a: &CharmapArgs) -> Result<(), Error> {
     if a.levels == 0 || a.levels > MAX_LEVELS {
-        return Err(format!("--levels must be between 1 and {MAX_LEVELS}, got {}", a.levels));
+        return Err(Error::Input(format!("--levels must be between 1 and {MAX_LEVELS}, got {}", a.levels)));
     }
     if a.rings == 0 || a.rings > 12 {
-        return Err(format!("--rings must be between 1 and 12, got {}", a.rings));
+        return Err(Error::Input(format!("--rings must be between 1 and 12, got {}", a.rings)));
     }
     if let Some(out) = &a.out {
         check_out(out)?;
     } else if a.wedge {
-        return Err("--wedge selects the figure; give the figure file with --out FILE.svg|pdf|png".into());
+        return Err(Error::Input(
+            "--wedge selects the figure; give the figure file with --out FILE.svg|pdf|png".into(),
+        ));
     }
     let scheme = build_scheme(&a.scheme, &a.params)?;
     let config = Configuration::regular(scheme.as_ref(), a.valence)?;
@@ -105,7 +111,7 @@ pub fn charmap(a: &CharmapArgs) -> Result<(), String> {
     let map = characteristic_map(scheme.as_ref(), &config, &opts)?;
     if let Some(out) = &a.out {
         if map.ring.is_none() {
-            return Err(format!("no figure written: {}", map.explanation));
+            return Err(Error::Input(format!("no figure written: {}", map.explanation)));
         }
         plot::save(&RingFigure { map: &map, copies: a.rings, wedge: a.wedge }, out)?;
     }
@@ -147,29 +153,29 @@ fn table(m: &CharMap) -> String {
 }
 
 /// "3..40", "3-40" or "7" (inclusive).
-fn parse_range(s: &str) -> Result<(usize, usize), String> {
-    let bad = || format!("valence range '{s}' is not of the form A..B (e.g. 3..40)");
+fn parse_range(s: &str) -> Result<(usize, usize), Error> {
+    let bad = || Error::Input(format!("valence range '{s}' is not of the form A..B (e.g. 3..40)"));
     let (a, b) = match s.split_once("..").or_else(|| s.split_once('-')) {
         Some((a, b)) => (a.trim(), b.trim().trim_start_matches('=')),
         None => (s.trim(), s.trim()),
     };
     let (a, b): (usize, usize) = (a.parse().map_err(|_| bad())?, b.parse().map_err(|_| bad())?);
     if a > b {
-        return Err(format!("valence range '{s}' is empty"));
+        return Err(Error::Input(format!("valence range '{s}' is empty")));
     }
     check_valence(a)?;
     check_valence(b)?;
     if b - a + 1 > MAX_PLOT_VALENCES {
-        return Err(format!("at most {MAX_PLOT_VALENCES} valences per plot, got {}", b - a + 1));
+        return Err(Error::Input(format!("at most {MAX_PLOT_VALENCES} valences per plot, got {}", b - a + 1)));
     }
     Ok((a, b))
 }
 
-pub fn plot(what: &PlotWhat) -> Result<(), String> {
+pub fn plot(what: &PlotWhat) -> Result<(), Error> {
     match what {
         PlotWhat::Spectrum { scheme, valences, params, count, out } => {
             if *count == 0 || *count > 6 {
-                return Err(format!("--count must be between 1 and 6, got {count}"));
+                return Err(Error::Input(format!("--count must be between 1 and 6, got {count}")));
             }
             check_out(out)?;
             let (a, b) = parse_range(valences)?;

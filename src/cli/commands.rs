@@ -1,6 +1,7 @@
 //! The subcommands.
 
 use super::{AnalysisArgs, Command};
+use crate::error::Error;
 use crate::io::{print_json, write_atomic};
 use crate::matrix::export::{to_matrix_market, MatrixJson};
 use crate::neighbourhood::{Configuration, NeighbourhoodKind};
@@ -10,7 +11,7 @@ use crate::spectrum::{analyse, Analysis, Method, Options, Spectrum};
 
 /// Runs a command; Ok holds the exit status (0, or 1 from `verify` when a
 /// claim is not as required).
-pub fn dispatch(cmd: Command) -> Result<i32, String> {
+pub fn dispatch(cmd: Command) -> Result<i32, Error> {
     if let Command::Verify { paper, claims, json, junit, check_expected } = cmd {
         let opts = super::verify::VerifyOptions { json, junit, check_expected };
         return super::verify::run(paper, &claims, &opts);
@@ -18,7 +19,7 @@ pub fn dispatch(cmd: Command) -> Result<i32, String> {
     dispatch_other(cmd).map(|()| 0)
 }
 
-fn dispatch_other(cmd: Command) -> Result<(), String> {
+fn dispatch_other(cmd: Command) -> Result<(), Error> {
     // Lattice and curve schemes have no mesh configuration: the registry names
     // their family, and their analyses are routed first.
     if let Some(result) = super::lattice::dispatch(&cmd) {
@@ -90,7 +91,7 @@ fn dispatch_other(cmd: Command) -> Result<(), String> {
                     };
                     crate::io::json_text(&j)? + "\n"
                 }
-                other => return Err(format!("unknown matrix format '{other}'; use mtx or json")),
+                other => return Err(Error::Input(format!("unknown matrix format '{other}'; use mtx or json"))),
             };
             match output {
                 Some(p) => write_atomic(&p, text.as_bytes()),
@@ -103,11 +104,11 @@ fn dispatch_other(cmd: Command) -> Result<(), String> {
 pub(super) use crate::io::out as out_text;
 
 /// The matrix format: `--format` (mtx or json), or json for `--json`.
-pub(super) fn matrix_format(format: Option<&str>, json: bool) -> Result<&str, String> {
+pub(super) fn matrix_format(format: Option<&str>, json: bool) -> Result<&str, Error> {
     match (format, json) {
         (None, false) => Ok("mtx"),
         (None, true) | (Some("json"), _) => Ok("json"),
-        (Some(f), true) => Err(format!("--json asks for the json format, but --format is {f}")),
+        (Some(f), true) => Err(Error::Input(format!("--json asks for the json format, but --format is {f}"))),
         (Some(f), false) => Ok(f),
     }
 }
@@ -120,12 +121,12 @@ pub(super) fn kind_name(k: NeighbourhoodKind) -> &'static str {
     }
 }
 
-pub(super) fn parse_params(list: &[String]) -> Result<Vec<(String, String)>, String> {
+pub(super) fn parse_params(list: &[String]) -> Result<Vec<(String, String)>, Error> {
     list.iter()
         .map(|p| {
             p.split_once('=')
                 .map(|(k, v)| (k.trim().to_string(), v.trim().to_string()))
-                .ok_or_else(|| format!("parameter '{p}' is not of the form NAME=VALUE"))
+                .ok_or_else(|| Error::Input(format!("parameter '{p}' is not of the form NAME=VALUE")))
         })
         .collect()
 }
@@ -138,7 +139,7 @@ pub(super) fn scheme_and_configuration(
     params: &[String],
     valence: usize,
     faces: Option<&str>,
-) -> Result<(Box<dyn Scheme>, Configuration), String> {
+) -> Result<(Box<dyn Scheme>, Configuration), Error> {
     let scheme = schemes::resolve(scheme, &parse_params(params)?)?;
     let config = match faces {
         None => Configuration::regular(scheme.as_ref(), valence)?,
@@ -147,24 +148,24 @@ pub(super) fn scheme_and_configuration(
     Ok((scheme, config))
 }
 
-fn run_analysis(a: &AnalysisArgs) -> Result<(Box<dyn Scheme>, Analysis), String> {
+fn run_analysis(a: &AnalysisArgs) -> Result<(Box<dyn Scheme>, Analysis), Error> {
     let (scheme, config) = scheme_and_configuration(&a.scheme, &a.params, a.valence, a.faces.as_deref())?;
     let neighbourhood: NeighbourhoodKind = a.neighbourhood.parse()?;
     let method = match a.method.as_deref() {
         None => None,
         Some("dft") => Some(Method::Dft),
         Some("full") => Some(Method::Full),
-        Some(m) => return Err(format!("unknown method '{m}'; use dft or full")),
+        Some(m) => return Err(Error::Input(format!("unknown method '{m}'; use dft or full"))),
     };
     if method == Some(Method::Dft) && config.symmetry_period() == config.valence() {
-        return Err("this configuration has no rotation symmetry; use --method full".into());
+        return Err(Error::Input("this configuration has no rotation symmetry; use --method full".into()));
     }
     let opts = Options { neighbourhood, method, exact: !a.no_exact };
     let analysis = analyse(scheme.as_ref(), &config, &opts)?;
     Ok((scheme, analysis))
 }
 
-fn list_schemes(files: &[std::path::PathBuf], json: bool) -> Result<(), String> {
+fn list_schemes(files: &[std::path::PathBuf], json: bool) -> Result<(), Error> {
     #[derive(serde::Serialize)]
     struct Param {
         name: String,
@@ -225,7 +226,7 @@ fn list_schemes(files: &[std::path::PathBuf], json: bool) -> Result<(), String> 
                         .collect(),
                 })
             })
-            .collect::<Result<_, String>>()?
+            .collect::<Result<_, Error>>()?
     };
     if json {
         return print_json(&list);
@@ -369,25 +370,27 @@ pub(super) fn stencil_table(st: &crate::spectrum::stencils::Stencils) -> String 
     out
 }
 
-fn sweep(args: &super::SweepArgs) -> Result<(), String> {
+fn sweep(args: &super::SweepArgs) -> Result<(), Error> {
     use crate::sweep::{admissible, convergent, run_on, Grid};
     let (scheme, json, csv) = (args.scheme.as_str(), args.json, args.csv);
     if json && csv {
-        return Err("choose one of --json and --csv".into());
+        return Err(Error::Input("choose one of --json and --csv".into()));
     }
     if args.plot.is_some() && !args.params.iter().any(|p| p.contains(':')) {
-        return Err(
-            "--plot needs a swept parameter NAME=START:END:STEP (for valences alone use `plot spectrum`)".into()
-        );
+        return Err(Error::Input(
+            "--plot needs a swept parameter NAME=START:END:STEP (for valences alone use `plot spectrum`)".into(),
+        ));
     }
     if !args.bounds.is_empty() && args.plot.is_none() {
-        return Err("--bound is drawn on the figure; give --plot FILE.svg too".into());
+        return Err(Error::Input("--bound is drawn on the figure; give --plot FILE.svg too".into()));
     }
     if let Some(path) = &args.plot {
         crate::plot::format_of(path)?;
     }
     if !args.charmap && (args.levels.is_some() || args.resolution.is_some()) {
-        return Err("--levels and --resolution set the characteristic-map check; give --charmap too".into());
+        return Err(Error::Input(
+            "--levels and --resolution set the characteristic-map check; give --charmap too".into(),
+        ));
     }
     let mut grid =
         Grid::parse(scheme, &args.valences, args.faces.as_deref(), &parse_params(&args.params)?, args.charmap)?;
@@ -398,7 +401,7 @@ fn sweep(args: &super::SweepArgs) -> Result<(), String> {
     let bar = indicatif::ProgressBar::new(total as u64);
     bar.set_style(
         indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} points, eta {eta}")
-            .map_err(|e| e.to_string())?
+            .map_err(|e| Error::Message(e.to_string()))?
             .progress_chars("=> "),
     );
     let progress = |done: usize, _total: usize| bar.set_position(done as u64);

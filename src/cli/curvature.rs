@@ -8,6 +8,7 @@ use clap::Args;
 use super::charmap_commands::check_out;
 use super::commands::scheme_and_configuration;
 use crate::curvature::{curvature, Curvature, CurvatureOptions, DEFAULT_LEVELS, MAX_LEVELS};
+use crate::error::Error;
 use crate::io::print_json;
 use crate::plot::{self, curvature::CurvatureFigure, curvature::CurvatureFigureKind};
 
@@ -45,17 +46,17 @@ pub struct CurvatureArgs {
     pub json: bool,
 }
 
-pub fn run(a: &CurvatureArgs) -> Result<(), String> {
+pub fn run(a: &CurvatureArgs) -> Result<(), Error> {
     if a.levels == 0 || a.levels > MAX_LEVELS {
-        return Err(format!("--levels must be between 1 and {MAX_LEVELS}, got {}", a.levels));
+        return Err(Error::Input(format!("--levels must be between 1 and {MAX_LEVELS}, got {}", a.levels)));
     }
     if a.rings == 0 || a.rings > 8 {
-        return Err(format!("--rings must be between 1 and 8, got {}", a.rings));
+        return Err(Error::Input(format!("--rings must be between 1 and 8, got {}", a.rings)));
     }
     let kind = match a.figure.as_str() {
         "central-ring" => CurvatureFigureKind::CentralRing,
         "surface" => CurvatureFigureKind::Surface,
-        other => return Err(format!("unknown figure '{other}'; use central-ring or surface")),
+        other => return Err(Error::Input(format!("unknown figure '{other}'; use central-ring or surface"))),
     };
     if let Some(out) = &a.out {
         check_out(out)?;
@@ -70,7 +71,7 @@ pub fn run(a: &CurvatureArgs) -> Result<(), String> {
     let c = curvature(scheme.as_ref(), &config, &opts)?;
     if let Some(out) = &a.out {
         if c.figures.is_none() {
-            return Err(format!("no figure written: the curvature class is {}", c.class.name()));
+            return Err(Error::Input(format!("no figure written: the curvature class is {}", c.class.name())));
         }
         plot::save(&CurvatureFigure { c: &c, kind }, out)?;
     }

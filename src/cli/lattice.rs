@@ -8,6 +8,7 @@
 
 use super::commands::{out_text, parse_params};
 use super::{AnalysisArgs, Command};
+use crate::error::Error;
 use crate::io::{print_json, write_atomic};
 use crate::lattice::analysis::{analyse, LatticeAnalysis};
 use crate::lattice::{self, LatticeScheme};
@@ -18,7 +19,7 @@ use crate::spectrum::stencils::stencils;
 
 /// `None` when the command is not an analysis of a lattice or curve scheme
 /// (the mesh path runs, and reports unknown names and unreadable files).
-pub(super) fn dispatch(cmd: &Command) -> Option<Result<(), String>> {
+pub(super) fn dispatch(cmd: &Command) -> Option<Result<(), Error>> {
     let args = match cmd {
         Command::Spectrum(a) | Command::Stencils(a) => a,
         Command::Matrix { common, .. } => common,
@@ -34,27 +35,33 @@ pub(super) fn dispatch(cmd: &Command) -> Option<Result<(), String>> {
 
 /// A curve scheme under `spectrum`: its vertex has two neighbours, so the
 /// valence must be 2; the output is that of `subdlab curve`.
-fn curve(cmd: &Command, a: &AnalysisArgs) -> Result<(), String> {
+fn curve(cmd: &Command, a: &AnalysisArgs) -> Result<(), Error> {
     let name = &a.scheme;
     if !matches!(cmd, Command::Spectrum(_)) {
-        return Err(format!(
+        return Err(Error::Input(format!(
             "'{name}' is a curve scheme: use `subdlab spectrum` or `subdlab curve` (the JSON carries the matrix)"
-        ));
+        )));
     }
     if a.valence != 2 {
-        return Err(format!("'{name}' is a curve scheme: a curve vertex has two neighbours (use --valence 2)"));
+        return Err(Error::Input(format!(
+            "'{name}' is a curve scheme: a curve vertex has two neighbours (use --valence 2)"
+        )));
     }
     if a.faces.is_some() {
-        return Err(format!("scheme '{name}' takes no --faces: it is a curve scheme"));
+        return Err(Error::Input(format!("scheme '{name}' takes no --faces: it is a curve scheme")));
     }
     match a.method.as_deref() {
         None | Some("full") => {}
-        Some(m) => return Err(format!("'{name}' is a curve scheme: its matrix is analysed whole (got --method {m})")),
+        Some(m) => {
+            return Err(Error::Input(format!(
+                "'{name}' is a curve scheme: its matrix is analysed whole (got --method {m})"
+            )))
+        }
     }
     super::mesh_commands::curve(name, &a.params, &a.neighbourhood, a.json)
 }
 
-fn run(cmd: &Command, a: &AnalysisArgs) -> Result<(), String> {
+fn run(cmd: &Command, a: &AnalysisArgs) -> Result<(), Error> {
     let (built, analysis) = prepare(a)?;
     let scheme = built.as_ref();
     match cmd {
@@ -105,7 +112,7 @@ fn run(cmd: &Command, a: &AnalysisArgs) -> Result<(), String> {
                     };
                     crate::io::json_text(&j)? + "\n"
                 }
-                other => return Err(format!("unknown matrix format '{other}'; use mtx or json")),
+                other => return Err(Error::Input(format!("unknown matrix format '{other}'; use mtx or json"))),
             };
             match output {
                 Some(p) => write_atomic(p, text.as_bytes()),
@@ -118,19 +125,23 @@ fn run(cmd: &Command, a: &AnalysisArgs) -> Result<(), String> {
 
 /// Check the options that make sense on the lattice, build the scheme with
 /// its parameters, then analyse.
-fn prepare(a: &AnalysisArgs) -> Result<(Box<dyn LatticeScheme>, LatticeAnalysis), String> {
+fn prepare(a: &AnalysisArgs) -> Result<(Box<dyn LatticeScheme>, LatticeAnalysis), Error> {
     let name = a.scheme.as_str();
     if a.valence != 4 {
-        return Err(format!("{name} is defined on the regular quad lattice only (valence 4)"));
+        return Err(Error::Input(format!("{name} is defined on the regular quad lattice only (valence 4)")));
     }
     if a.faces.is_some() {
-        return Err(format!("scheme '{name}' takes no --faces: it lives on the regular quad lattice"));
+        return Err(Error::Input(format!("scheme '{name}' takes no --faces: it lives on the regular quad lattice")));
     }
     let scheme = registry::lattice(name, &parse_params(&a.params)?)?;
     match a.method.as_deref() {
         None | Some("full") => {}
-        Some("dft") => return Err(format!("{name} has asymmetric masks and no rotation symmetry; use --method full")),
-        Some(m) => return Err(format!("unknown method '{m}'; use dft or full")),
+        Some("dft") => {
+            return Err(Error::Input(format!(
+                "{name} has asymmetric masks and no rotation symmetry; use --method full"
+            )))
+        }
+        Some(m) => return Err(Error::Input(format!("unknown method '{m}'; use dft or full"))),
     }
     let kind: NeighbourhoodKind = a.neighbourhood.parse()?;
     let analysis = analyse(scheme.as_ref(), kind, !a.no_exact)?;

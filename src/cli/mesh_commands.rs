@@ -5,6 +5,7 @@ use std::path::Path;
 
 use super::commands::parse_params;
 use crate::curves::local::{curve_spectrum, CurveSpectrum};
+use crate::error::Error;
 use crate::io::{print_json, write_atomic};
 use crate::mesh::obj::{read_obj_file, write_obj};
 use crate::neighbourhood::NeighbourhoodKind;
@@ -26,23 +27,29 @@ pub fn refine(
     params: &[String],
     output: &Path,
     opts: &MeshOptions,
-) -> Result<(), String> {
+) -> Result<(), Error> {
     // check the cheap arguments before reading a possibly large file
     let scheme = schemes::resolve(scheme, &parse_params(params)?)?;
     if levels == 0 || levels > crate::refine::mesh::MAX_LEVELS {
-        return Err(format!("--levels must be between 1 and {}, got {levels}", crate::refine::mesh::MAX_LEVELS));
+        return Err(Error::Input(format!(
+            "--levels must be between 1 and {}, got {levels}",
+            crate::refine::mesh::MAX_LEVELS
+        )));
     }
     if !opts.fcv_scale.is_finite() {
-        return Err(format!("--fcv-scale must be a finite number, got {}", opts.fcv_scale));
+        return Err(Error::Input(format!("--fcv-scale must be a finite number, got {}", opts.fcv_scale)));
     }
     if !scheme.face_control() && (opts.four_directional || opts.fcv_scale != 1.0) {
-        return Err(format!(
+        return Err(Error::Input(format!(
             "{} has no face control vertices: --fcv-scale and --four-directional do not apply",
             scheme.name()
-        ));
+        )));
     }
     if opts.vertex_params.is_some() && scheme.vertex_param().is_none() {
-        return Err(format!("{} has no per-vertex parameter: --vertex-params does not apply", scheme.name()));
+        return Err(Error::Input(format!(
+            "{} has no per-vertex parameter: --vertex-params does not apply",
+            scheme.name()
+        )));
     }
     let (mut m, mut points) = read_obj_file(mesh)?;
     if let Some(path) = &opts.vertex_params {
@@ -53,10 +60,10 @@ pub fn refine(
     }
     if scheme.lattice_oriented() {
         // asymmetric masks need the lattice directions (i, j) on every quad
-        m.orient_lattice().map_err(|e| format!("{}: {} {e}", mesh.display(), scheme.name()))?;
+        m.orient_lattice().map_err(|e| e.map_message(|e| format!("{}: {} {e}", mesh.display(), scheme.name())))?;
     }
     let (mut refined, mut new_points) =
-        refine_mesh(scheme.as_ref(), &m, &points, levels).map_err(|e| format!("{}: {e}", mesh.display()))?;
+        refine_mesh(scheme.as_ref(), &m, &points, levels).map_err(|e| e.context(mesh.display()))?;
     if opts.four_directional {
         (refined, new_points) = four_directional(&refined, new_points)?;
     }
@@ -73,7 +80,7 @@ pub fn refine(
 }
 
 /// One value per line for each vertex, within the parameter's admissible range.
-fn read_vertex_params(path: &Path, scheme: &dyn crate::schemes::Scheme, count: usize) -> Result<Vec<f64>, String> {
+fn read_vertex_params(path: &Path, scheme: &dyn crate::schemes::Scheme, count: usize) -> Result<Vec<f64>, Error> {
     let spec = scheme.vertex_param().expect("checked by the caller");
     let name = spec.name;
     let text = super::verify::read_capped(path, 64 * 1024 * 1024, "file of per-vertex parameters")?;
@@ -83,15 +90,16 @@ fn read_vertex_params(path: &Path, scheme: &dyn crate::schemes::Scheme, count: u
         if t.is_empty() {
             continue;
         }
-        let v = crate::numeric::ParamValue::parse(t).map_err(|e| format!("{} line {}: {e}", path.display(), k + 1))?;
+        let v = crate::numeric::ParamValue::parse(t)
+            .map_err(|e| Error::File(format!("{} line {}: {e}", path.display(), k + 1)))?;
         if v.value < spec.min || v.value > spec.max {
-            return Err(format!(
+            return Err(Error::File(format!(
                 "{} line {}: {name} = {t} is out of range [{}, {}]",
                 path.display(),
                 k + 1,
                 spec.min,
                 spec.max
-            ));
+            )));
         }
         values.push(v.value);
         if values.len() > count {
@@ -99,12 +107,12 @@ fn read_vertex_params(path: &Path, scheme: &dyn crate::schemes::Scheme, count: u
         }
     }
     if values.len() != count {
-        return Err(format!("{}: {} values for {count} vertices", path.display(), values.len()));
+        return Err(Error::File(format!("{}: {} values for {count} vertices", path.display(), values.len())));
     }
     Ok(values)
 }
 
-pub fn curve(scheme: &str, params: &[String], neighbourhood: &str, json: bool) -> Result<(), String> {
+pub fn curve(scheme: &str, params: &[String], neighbourhood: &str, json: bool) -> Result<(), Error> {
     let scheme = crate::schemes::curves::build(scheme, &parse_params(params)?)?;
     let kind: NeighbourhoodKind = neighbourhood.parse()?;
     let spec = curve_spectrum(scheme.as_ref(), kind)?;

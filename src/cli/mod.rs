@@ -184,7 +184,7 @@ pub fn main() -> i32 {
     match commands::dispatch(cli.command) {
         Ok(code) => code,
         Err(e) => {
-            eprintln!("error: {}", crate::io::printable(&e));
+            eprintln!("error: {}", crate::io::printable(&e.to_string()));
             2
         }
     }
@@ -192,11 +192,12 @@ pub fn main() -> i32 {
 
 /// Runs the command line; usage errors and failures are the message (see
 /// [`main`] for the exit statuses the binary uses).
-pub fn run() -> Result<(), String> {
-    let cli = Cli::try_parse().map_err(|e| e.to_string())?;
+pub fn run() -> Result<(), crate::error::Error> {
+    use crate::error::Error;
+    let cli = Cli::try_parse().map_err(|e| Error::Input(e.to_string()))?;
     match commands::dispatch(cli.command)? {
         0 => Ok(()),
-        _ => Err("some claims are not as required".into()),
+        _ => Err(Error::Claim("some claims are not as required".into())),
     }
 }
 

@@ -4,6 +4,7 @@
 use std::path::{Path, PathBuf};
 
 use crate::claims::{self, ClaimFile, Outcome, Verdict};
+use crate::error::Error;
 use crate::io::{print_json, write_atomic};
 
 pub struct VerifyOptions {
@@ -18,15 +19,15 @@ pub struct VerifyOptions {
 pub const MAX_CLAIM_FILE: u64 = 16 * 1024 * 1024;
 
 /// Reads at most `limit` bytes of a text file; more is an error.
-pub(super) fn read_capped(path: &Path, limit: u64, what: &str) -> Result<String, String> {
+pub(super) fn read_capped(path: &Path, limit: u64, what: &str) -> Result<String, Error> {
     use std::io::Read;
-    let f = std::fs::File::open(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let f = std::fs::File::open(path).map_err(|e| Error::File(format!("{}: {e}", path.display())))?;
     let mut bytes = Vec::new();
-    f.take(limit + 1).read_to_end(&mut bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+    f.take(limit + 1).read_to_end(&mut bytes).map_err(|e| Error::File(format!("{}: {e}", path.display())))?;
     if bytes.len() as u64 > limit {
-        return Err(format!("{}: {what} larger than {} MiB", path.display(), limit >> 20));
+        return Err(Error::File(format!("{}: {what} larger than {} MiB", path.display(), limit >> 20)));
     }
-    String::from_utf8(bytes).map_err(|_| format!("{}: not UTF-8 text", path.display()))
+    String::from_utf8(bytes).map_err(|_| Error::File(format!("{}: not UTF-8 text", path.display())))
 }
 
 /// A file that could not be read or parsed: one ERROR outcome standing for it,
@@ -59,7 +60,7 @@ fn unreadable(path: &Path, message: String) -> (ClaimFile, Vec<Outcome>) {
 /// every claim passes, 1 when one is REFUTED or INCONCLUSIVE, or with
 /// `check_expected` differs from its recorded verdict); a malformed claim or
 /// an unreadable file is an error (exit 2) after everything was reported.
-pub fn run(paper: Option<String>, user: &[PathBuf], opts: &VerifyOptions) -> Result<i32, String> {
+pub fn run(paper: Option<String>, user: &[PathBuf], opts: &VerifyOptions) -> Result<i32, Error> {
     let builtin = user.is_empty();
     let mut results: Vec<(ClaimFile, Vec<Outcome>)> = Vec::new();
     let files: Vec<ClaimFile> = if builtin {
@@ -70,14 +71,16 @@ pub fn run(paper: Option<String>, user: &[PathBuf], opts: &VerifyOptions) -> Res
                 let known: Vec<String> = all.iter().map(|f| f.paper.clone()).collect();
                 let chosen: Vec<ClaimFile> = all.into_iter().filter(|f| &f.paper == p).collect();
                 if chosen.is_empty() {
-                    return Err(format!("unknown paper '{p}'; built-in papers: {}", known.join(", ")));
+                    return Err(Error::Input(format!("unknown paper '{p}'; built-in papers: {}", known.join(", "))));
                 }
                 chosen
             }
         }
     } else {
         if paper.is_some() {
-            return Err("--paper selects from the built-in registry; it does not combine with --claims".into());
+            return Err(Error::Input(
+                "--paper selects from the built-in registry; it does not combine with --claims".into(),
+            ));
         }
         let mut ok = Vec::new();
         for p in user {
@@ -85,7 +88,7 @@ pub fn run(paper: Option<String>, user: &[PathBuf], opts: &VerifyOptions) -> Res
                 .and_then(|text| claims::parse_file(&p.display().to_string(), &text));
             match parsed {
                 Ok(f) => ok.push(f),
-                Err(e) => results.push(unreadable(p, e)),
+                Err(e) => results.push(unreadable(p, e.to_string())),
             }
         }
         ok
@@ -115,7 +118,11 @@ pub fn run(paper: Option<String>, user: &[PathBuf], opts: &VerifyOptions) -> Res
     let all: Vec<&Outcome> = results.iter().flat_map(|(_, o)| o).collect();
     let errors: Vec<&&Outcome> = all.iter().filter(|o| o.verdict == Verdict::Error).collect();
     if let Some(first) = errors.first() {
-        return Err(format!("{} claim(s) or file(s) could not be read; first: {}", errors.len(), first.detail));
+        return Err(Error::Claim(format!(
+            "{} claim(s) or file(s) could not be read; first: {}",
+            errors.len(),
+            first.detail
+        )));
     }
     let failed = all.iter().filter(|o| !judge.passes(o)).count();
     if failed > 0 {

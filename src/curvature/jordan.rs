@@ -21,6 +21,7 @@
 //! - [`exact_jordan`]: where S is rational, the exact nullities of S − νI and
 //!   (S − νI)² (a Jordan block exactly when the second is larger).
 
+use crate::error::Error;
 use faer::c64;
 use serde::Serialize;
 
@@ -146,7 +147,7 @@ pub fn growth_test(
     lambda: f64,
     level: usize,
     levels: usize,
-) -> Result<GrowthTest, String> {
+) -> Result<GrowthTest, Error> {
     let nu = lambda * lambda;
     let spec = &analysis.spectrum;
     let dense = analysis.matrix.to_dense_f64();
@@ -159,22 +160,22 @@ pub fn growth_test(
     let mut left = Vec::new();
     for e in &above {
         if e.im.abs() > 1e-12 || e.defective {
-            return Err(format!(
+            return Err(Error::Numeric(format!(
                 "the eigenvalue {} above λ² is complex or defective: the growth test projects real, non-defective ones only",
                 crate::spectrum::fmt_f(e.modulus)
-            ));
+            )));
         }
         let shifted = &sm - nalgebra::DMatrix::<f64>::identity(s, s) * e.re;
         let r = null_space(&shifted, 1e-9);
         let l = null_space(&shifted.transpose(), 1e-9);
         if r.len() != e.algebraic_multiplicity || l.len() != e.algebraic_multiplicity {
-            return Err(format!(
+            return Err(Error::Numeric(format!(
                 "the null spaces of S − {}·I have dimensions {} and {}, not the multiplicity {}",
                 crate::spectrum::fmt_f(e.re),
                 r.len(),
                 l.len(),
                 e.algebraic_multiplicity
-            ));
+            )));
         }
         right.extend(r);
         left.extend(l);

@@ -89,6 +89,7 @@ use serde::Serialize;
 
 use crate::charmap::spectral::{subdominant_pair, SpectralStatus};
 use crate::charmap::{check_map, CharMapOptions};
+use crate::error::Error;
 use crate::neighbourhood::{Configuration, NeighbourhoodKind};
 use crate::numeric::Rational;
 use crate::sdc::Scheme;
@@ -308,7 +309,7 @@ pub struct SurfaceRows {
 
 /// Analyse `scheme` at `config` (analysis neighbourhood, exact confirmation
 /// on) and run the second-order analysis.
-pub fn curvature(scheme: &dyn Scheme, config: &Configuration, opts: &CurvatureOptions) -> Result<Curvature, String> {
+pub fn curvature(scheme: &dyn Scheme, config: &Configuration, opts: &CurvatureOptions) -> Result<Curvature, Error> {
     let options = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
     let analysis = analyse(scheme, config, &options)?;
     let c = curvature_of_analysis(scheme, &analysis, opts)?;
@@ -325,7 +326,7 @@ pub fn curvature(scheme: &dyn Scheme, config: &Configuration, opts: &CurvatureOp
 }
 
 /// The common call for the regular configuration.
-pub fn curvature_of(scheme: &dyn Scheme, valence: usize, opts: &CurvatureOptions) -> Result<Curvature, String> {
+pub fn curvature_of(scheme: &dyn Scheme, valence: usize, opts: &CurvatureOptions) -> Result<Curvature, Error> {
     let config = Configuration::regular(scheme, valence)?;
     curvature(scheme, &config, opts)
 }
@@ -335,13 +336,13 @@ pub fn curvature_of_analysis(
     scheme: &dyn Scheme,
     analysis: &Analysis,
     opts: &CurvatureOptions,
-) -> Result<Curvature, String> {
+) -> Result<Curvature, Error> {
     if opts.levels == 0 || opts.levels > MAX_LEVELS {
-        return Err(format!("levels must be between 1 and {MAX_LEVELS}, got {}", opts.levels));
+        return Err(Error::Input(format!("levels must be between 1 and {MAX_LEVELS}, got {}", opts.levels)));
     }
     let spec = &analysis.spectrum;
     if spec.neighbourhood != NeighbourhoodKind::Analysis {
-        return Err("the curvature analysis needs the analysis neighbourhood".into());
+        return Err(Error::Input("the curvature analysis needs the analysis neighbourhood".into()));
     }
     let mut out = Curvature {
         scheme: spec.scheme.clone(),
@@ -782,7 +783,7 @@ fn figure_data(
     mu: &EigenInfo,
     lambda: f64,
     surface_rings: usize,
-) -> Result<FigureData, String> {
+) -> Result<FigureData, Error> {
     let pts = sampler.points(pair);
     let tris_ids = sampler.ring_triangles();
     let corner = |v: usize| pts[v].unwrap_or([f64::NAN; 2]);

@@ -11,6 +11,7 @@
 use faer::c64;
 
 use crate::charmap::net::{facet_triangles, refine_net, Net};
+use crate::error::Error;
 use crate::neighbourhood::Discovered;
 use crate::refine::SparseRow;
 use crate::sdc::Scheme;
@@ -28,22 +29,24 @@ pub struct RingSampler {
 
 impl RingSampler {
     /// Refine unit rows `levels` analysis steps.
-    pub fn new(scheme: &dyn Scheme, d: &Discovered, levels: usize) -> Result<Self, String> {
+    pub fn new(scheme: &dyn Scheme, d: &Discovered, levels: usize) -> Result<Self, Error> {
         let mut level0 = vec![None; d.patch.num_vertices()];
         for (k, &v) in d.analysis.iter().enumerate() {
             level0[v] = Some(SparseRow::<f64>::unit(k));
         }
-        let net = refine_net(scheme, d, level0, levels).map_err(String::from)?;
+        let net = refine_net(scheme, d, level0, levels)?;
         let ring_faces: Vec<usize> = (0..net.mesh.num_faces()).filter(|&f| net.outer[f] && !net.inner[f]).collect();
         if ring_faces.is_empty() {
-            return Err("the characteristic ring is empty at this level".into());
+            return Err(Error::Numeric("the characteristic ring is empty at this level".into()));
         }
         let mut ring_vertices: Vec<usize> =
             ring_faces.iter().flat_map(|&f| net.mesh.face(f).iter().copied().chain(net.mesh.face_point(f))).collect();
         ring_vertices.sort_unstable();
         ring_vertices.dedup();
         if ring_vertices.iter().any(|&v| net.points[v].is_none()) {
-            return Err("a vertex of the characteristic ring is not determined by the neighbourhood".into());
+            return Err(Error::NotDetermined(
+                "a vertex of the characteristic ring is not determined by the neighbourhood".into(),
+            ));
         }
         Ok(RingSampler { net, ring_faces, ring_vertices, size: d.analysis.len() })
     }

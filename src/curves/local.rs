@@ -16,6 +16,7 @@
 //!   the level-L points over [−1, 1] (indices |k| ≤ 2^L), collected over L
 //!   until they stop growing.
 
+use crate::error::Error;
 use std::collections::{BTreeMap, BTreeSet};
 
 use faer::c64;
@@ -43,30 +44,30 @@ struct Deps<'a, W>(&'a CurveMask<W>);
 
 impl<W: Weight> Refinement for Deps<'_, W> {
     type Point = i64;
-    fn dependencies(&self, k: &i64) -> Result<Vec<i64>, String> {
+    fn dependencies(&self, k: &i64) -> Result<Vec<i64>, Error> {
         Ok(self.0.stencil(*k).into_iter().map(|t| t.0).collect())
     }
 }
 
-fn close<W: Weight>(mask: &CurveMask<W>, seed: BTreeSet<i64>) -> Result<BTreeSet<i64>, String> {
-    invariant_closure(&Deps(mask), seed, MAX_WINDOW).map_err(|e| e.to_string())
+fn close<W: Weight>(mask: &CurveMask<W>, seed: BTreeSet<i64>) -> Result<BTreeSet<i64>, Error> {
+    Ok(invariant_closure(&Deps(mask), seed, MAX_WINDOW)?)
 }
 
 /// The minimal invariant window: closure of the one-ring {−1, 0, 1}.
-pub fn minimal_window<W: Weight>(mask: &CurveMask<W>) -> Result<Vec<i64>, String> {
+pub fn minimal_window<W: Weight>(mask: &CurveMask<W>) -> Result<Vec<i64>, Error> {
     Ok(close(mask, [-1, 0, 1].into_iter().collect())?.into_iter().collect())
 }
 
 /// The old points that influence the limit curve over [−1, 1] (see module doc).
-pub fn influence_set<W: Weight>(mask: &CurveMask<W>) -> Result<BTreeSet<i64>, String> {
+pub fn influence_set<W: Weight>(mask: &CurveMask<W>) -> Result<BTreeSet<i64>, Error> {
     // the influence of level-L points lies within the mask's reach of [−1, 1];
     // once 2^L well exceeds that reach, further levels only repeat the pattern
     let levels = Levels::past_reach(mask.reach(), 1, MAX_INFLUENCE_LEVELS);
-    closure::influence_set(&Deps(mask), |l| (-(1i64 << l)..=1i64 << l).collect(), levels).map_err(|e| e.to_string())
+    Ok(closure::influence_set(&Deps(mask), |l| (-(1i64 << l)..=1i64 << l).collect(), levels)?)
 }
 
 /// The analysis window: closure of the influence set and the minimal window.
-pub fn analysis_window<W: Weight>(mask: &CurveMask<W>) -> Result<Vec<i64>, String> {
+pub fn analysis_window<W: Weight>(mask: &CurveMask<W>) -> Result<Vec<i64>, Error> {
     let mut seed = influence_set(mask)?;
     seed.extend(minimal_window(mask)?);
     Ok(close(mask, seed)?.into_iter().collect())
@@ -74,12 +75,12 @@ pub fn analysis_window<W: Weight>(mask: &CurveMask<W>) -> Result<Vec<i64>, Strin
 
 /// The local subdivision matrix on an invariant window of old point indices
 /// (the window is the matrix's labels).
-pub fn local_matrix<W: Weight>(mask: &CurveMask<W>, window: &[i64]) -> Result<LocalMatrix<i64, W>, String> {
+pub fn local_matrix<W: Weight>(mask: &CurveMask<W>, window: &[i64]) -> Result<LocalMatrix<i64, W>, Error> {
     assemble(&Deps(mask), window, |&k| Ok(mask.stencil(k))).map_err(|e| match e {
         ClosureError::NotInvariant { fine, needs } => {
-            format!("window is not invariant: point {fine} depends on {needs}")
+            Error::Input(format!("window is not invariant: point {fine} depends on {needs}"))
         }
-        e => e.to_string(),
+        e => e.into(),
     })
 }
 
@@ -136,7 +137,7 @@ fn label(k: usize, &i: &i64) -> VertexLabel {
 /// mesh and lattice domains use; when every weight is rational and every
 /// eigenvalue is a proven rational root, the eigenvalues reported are the
 /// exact ones, with multiplicities from the polynomial and exact ranks.
-pub fn curve_spectrum(scheme: &dyn CurveScheme, kind: NeighbourhoodKind) -> Result<CurveSpectrum, String> {
+pub fn curve_spectrum(scheme: &dyn CurveScheme, kind: NeighbourhoodKind) -> Result<CurveSpectrum, Error> {
     let mask = <f64 as CurveWeight>::mask(scheme).map_err(|_| "a weight is not representable".to_string())?;
     let exact_mask = <Rational as CurveWeight>::mask(scheme).ok();
     // windows from the exact mask when there is one, so that a weight that is

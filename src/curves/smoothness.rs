@@ -6,6 +6,7 @@
 //! Exact, over the rationals.
 
 use super::CurveMask;
+use crate::error::Error;
 use crate::numeric::Rational;
 use num_traits::{Signed, Zero};
 
@@ -72,11 +73,13 @@ pub fn power_norm(b: &[Rational], steps: u32) -> Rational {
 /// The C¹ test: `Err` when (1 + z)² does not divide a(z) (the scheme does not
 /// reproduce linear functions); otherwise the first L ≤ `max_steps` with
 /// ‖S_b^L‖_∞ < 1 (C¹ proven) and the norms for L = 1, 2, ....
-pub fn c1_test(mask: &CurveMask<Rational>, max_steps: u32) -> Result<(Option<u32>, Vec<Rational>), String> {
+pub fn c1_test(mask: &CurveMask<Rational>, max_steps: u32) -> Result<(Option<u32>, Vec<Rational>), Error> {
     let a = symbol(mask);
-    let a1 = divide_by_one_plus_z(&a).ok_or("(1 + z) does not divide the symbol: constants are not reproduced")?;
-    let a2 =
-        divide_by_one_plus_z(&a1).ok_or("(1 + z)² does not divide the symbol: linear functions are not reproduced")?;
+    let a1 = divide_by_one_plus_z(&a)
+        .ok_or_else(|| Error::Input("(1 + z) does not divide the symbol: constants are not reproduced".into()))?;
+    let a2 = divide_by_one_plus_z(&a1).ok_or_else(|| {
+        Error::Input("(1 + z)² does not divide the symbol: linear functions are not reproduced".into())
+    })?;
     let b: Vec<Rational> = a2.iter().map(|x| x * Rational::from_integer(2.into())).collect();
     let mut norms = Vec::new();
     for l in 1..=max_steps {

@@ -36,6 +36,7 @@ use std::collections::BTreeSet;
 use std::fmt;
 
 use super::local::LocalMatrix;
+use crate::error::Error;
 use crate::numeric::Weight;
 
 /// What the closure routines need of a stationary binary scheme.
@@ -44,19 +45,19 @@ pub trait Refinement {
     type Point: Clone + Ord + fmt::Debug;
 
     /// The coarse points that fine point `q` depends on (non-zero weights).
-    fn dependencies(&self, q: &Self::Point) -> Result<Vec<Self::Point>, String>;
+    fn dependencies(&self, q: &Self::Point) -> Result<Vec<Self::Point>, Error>;
 
     /// The fine point that stands for coarse point `p` after one step. On Z
     /// and Z² with the centre at the origin the dilation maps index q to the
     /// same index one level finer, hence the identity default. On a mesh
     /// patch it is a lookup that fails when the patch is too small.
-    fn successor(&self, p: &Self::Point) -> Result<Self::Point, String> {
+    fn successor(&self, p: &Self::Point) -> Result<Self::Point, Error> {
         Ok(p.clone())
     }
 }
 
 /// Why a window could not be found or used.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum ClosureError<P> {
     /// the closure grew past `limit` points: the masks are not local (a finite
     /// mask under binary dilation always closes; a malformed one must not loop)
@@ -66,7 +67,7 @@ pub enum ClosureError<P> {
     /// the window is not invariant: fine point `fine` needs coarse point `needs`
     NotInvariant { fine: P, needs: P },
     /// a dependency could not be evaluated
-    Dependency(String),
+    Dependency(Error),
 }
 
 impl<P: fmt::Debug> fmt::Display for ClosureError<P> {
@@ -82,6 +83,17 @@ impl<P: fmt::Debug> fmt::Display for ClosureError<P> {
                 write!(f, "the window is not invariant: fine point {fine:?} needs {needs:?}")
             }
             ClosureError::Dependency(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+/// A dependency's own error keeps its variant; a window that cannot be
+/// closed or is not invariant comes from the masks the caller gave.
+impl<P: fmt::Debug> From<ClosureError<P>> for Error {
+    fn from(e: ClosureError<P>) -> Error {
+        match e {
+            ClosureError::Dependency(e) => e,
+            other => Error::Input(other.to_string()),
         }
     }
 }
@@ -195,7 +207,7 @@ pub fn influence_set<R: Refinement>(
 pub fn assemble<R: Refinement, W: Weight>(
     scheme: &R,
     window: &[R::Point],
-    mut stencil: impl FnMut(&R::Point) -> Result<Vec<(R::Point, W)>, String>,
+    mut stencil: impl FnMut(&R::Point) -> Result<Vec<(R::Point, W)>, Error>,
 ) -> Result<LocalMatrix<R::Point, W>, ClosureError<R::Point>> {
     let index: std::collections::BTreeMap<&R::Point, usize> = window.iter().enumerate().map(|(k, p)| (p, k)).collect();
     let mut rows = Vec::with_capacity(window.len());
@@ -238,7 +250,7 @@ mod tests {
 
     impl Refinement for CubicBSpline {
         type Point = i64;
-        fn dependencies(&self, q: &i64) -> Result<Vec<i64>, String> {
+        fn dependencies(&self, q: &i64) -> Result<Vec<i64>, Error> {
             Ok(bspline_deps(*q))
         }
     }
@@ -249,7 +261,7 @@ mod tests {
 
     impl Refinement for Bicubic {
         type Point = (i64, i64);
-        fn dependencies(&self, q: &(i64, i64)) -> Result<Vec<(i64, i64)>, String> {
+        fn dependencies(&self, q: &(i64, i64)) -> Result<Vec<(i64, i64)>, Error> {
             let (a, b) = (bspline_deps(q.0), bspline_deps(q.1));
             Ok(a.iter().flat_map(|&i| b.iter().map(move |&j| (i, j))).collect())
         }
@@ -261,7 +273,7 @@ mod tests {
 
     impl Refinement for FourPoint {
         type Point = i64;
-        fn dependencies(&self, q: &i64) -> Result<Vec<i64>, String> {
+        fn dependencies(&self, q: &i64) -> Result<Vec<i64>, Error> {
             let i = q.div_euclid(2);
             Ok(if q.rem_euclid(2) == 0 { vec![i] } else { vec![i - 1, i, i + 1, i + 2] })
         }
@@ -323,7 +335,7 @@ mod tests {
         assert_eq!(invariance_defects(&CubicBSpline, &[-1, 0]).unwrap(), vec![(0, 1)]);
         assert!(invariance_defects(&CubicBSpline, &[-1, 0, 1]).unwrap().is_empty());
         // the 3×3 matrix on the one-ring, weights ×8: rows [4 4 0], [1 6 1], [0 4 4]
-        let weights = |q: &i64| -> Result<Vec<(i64, f64)>, String> {
+        let weights = |q: &i64| -> Result<Vec<(i64, f64)>, Error> {
             let i = q.div_euclid(2);
             Ok(if q.rem_euclid(2) == 0 {
                 vec![(i - 1, 1.0), (i, 6.0), (i + 1, 1.0)]
@@ -347,8 +359,11 @@ mod tests {
             assemble(&CubicBSpline, &[-1, 0], weights).unwrap_err(),
             ClosureError::NotInvariant { fine: 0, needs: 1 }
         );
-        let failing = |_: &i64| -> Result<Vec<(i64, f64)>, String> { Err("no rule".into()) };
-        assert_eq!(assemble(&CubicBSpline, &[0], failing).unwrap_err(), ClosureError::Dependency("no rule".into()));
+        let failing = |_: &i64| -> Result<Vec<(i64, f64)>, Error> { Err(Error::Input("no rule".into())) };
+        assert_eq!(
+            assemble(&CubicBSpline, &[0], failing).unwrap_err(),
+            ClosureError::Dependency(Error::Input("no rule".into()))
+        );
     }
 
     #[test]
@@ -357,7 +372,7 @@ mod tests {
         struct Drift;
         impl Refinement for Drift {
             type Point = i64;
-            fn dependencies(&self, q: &i64) -> Result<Vec<i64>, String> {
+            fn dependencies(&self, q: &i64) -> Result<Vec<i64>, Error> {
                 Ok(vec![q + 1])
             }
         }

@@ -6,6 +6,7 @@
 //! verdict.
 
 use super::{analysis_window, minimal_invariant_window, point_name, window_matrix, LatticeScheme, Window};
+use crate::error::Error;
 use crate::matrix::LocalMatrix;
 use crate::neighbourhood::{NeighbourhoodKind, VertexKind, VertexLabel};
 use crate::numeric::exact::{Poly, QMatrix};
@@ -46,12 +47,12 @@ pub fn to_local<W: super::LatticeWeight>(
     scheme: &dyn LatticeScheme,
     w: &Window,
     kind: NeighbourhoodKind,
-) -> Result<LocalMatrix<W>, String> {
+) -> Result<LocalMatrix<W>, Error> {
     Ok(window_matrix::<W>(scheme, w)?.relabel(|k, &p| label(k, p)).with_kind(kind))
 }
 
 /// Exact characteristic polynomial det(xI − S) of the matrix on a window.
-pub fn charpoly(scheme: &dyn LatticeScheme, w: &Window) -> Result<Poly, String> {
+pub fn charpoly(scheme: &dyn LatticeScheme, w: &Window) -> Result<Poly, Error> {
     Ok(window_matrix::<Rational>(scheme, w)?.to_qmatrix().charpoly())
 }
 
@@ -71,7 +72,7 @@ pub fn to_qmatrix(dense: &[Vec<Rational>]) -> QMatrix {
 /// (asymmetric masks), so the whole matrix is analysed. Lattice weights are
 /// rational, so the exact confirmation always runs (full characteristic
 /// polynomial, exact ranks) unless `exact` is false.
-pub fn analyse(scheme: &dyn LatticeScheme, kind: NeighbourhoodKind, exact: bool) -> Result<LatticeAnalysis, String> {
+pub fn analyse(scheme: &dyn LatticeScheme, kind: NeighbourhoodKind, exact: bool) -> Result<LatticeAnalysis, Error> {
     let minimal = minimal_invariant_window(scheme, &[(0, 0)])?;
     let analysis = analysis_window(scheme, ANALYSIS_RADIUS)?;
     let window = match kind {

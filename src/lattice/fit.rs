@@ -6,6 +6,7 @@
 //! samples it is the least-squares fit (normal equations), which is the only
 //! reading under which the printed Khan–Mustafa coefficients come out.
 
+use crate::error::Error;
 use crate::numeric::Rational;
 use num_traits::{One, Zero};
 
@@ -27,7 +28,7 @@ fn monomial_at(m: Monomial, x: &Rational, y: &Rational) -> Rational {
 
 /// Least-squares fit of span{monomials} to the sample positions. Error when
 /// the monomials are linearly dependent on the samples (the fit is not unique).
-pub fn least_squares(monomials: &[Monomial], samples: &[(Rational, Rational)]) -> Result<Fit, String> {
+pub fn least_squares(monomials: &[Monomial], samples: &[(Rational, Rational)]) -> Result<Fit, Error> {
     let (k, s) = (monomials.len(), samples.len());
     // V[s][k] = monomial k at sample s; solve (VᵀV) C = Vᵀ by Gauss–Jordan
     let v: Vec<Vec<Rational>> =
@@ -43,7 +44,7 @@ pub fn least_squares(monomials: &[Monomial], samples: &[(Rational, Rational)]) -
     for col in 0..k {
         let p = (col..k)
             .find(|&r| !a[r][col].is_zero())
-            .ok_or_else(|| format!("the {k} monomials are not independent on these {s} samples"))?;
+            .ok_or_else(|| Error::Numeric(format!("the {k} monomials are not independent on these {s} samples")))?;
         a.swap(col, p);
         let piv = a[col][col].clone();
         for x in a[col].iter_mut() {
@@ -101,7 +102,7 @@ pub fn derive_masks(
     monomials: &[Monomial],
     offsets: &[(i64, i64)],
     spacing: &Rational,
-) -> Result<[[DerivedMask; 2]; 2], String> {
+) -> Result<[[DerivedMask; 2]; 2], Error> {
     let samples: Vec<(Rational, Rational)> = offsets
         .iter()
         .map(|&(r, s)| (Rational::from_integer(r.into()) * spacing, Rational::from_integer(s.into()) * spacing))

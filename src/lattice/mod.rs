@@ -22,6 +22,7 @@ use std::collections::BTreeSet;
 
 use crate::engine::closure::{self, assemble, influence_set, invariant_closure, ClosureError, Levels, Refinement};
 use crate::engine::LocalMatrix;
+use crate::error::Error;
 use crate::numeric::{Rational, Weight};
 use crate::sdc::Params;
 
@@ -145,7 +146,7 @@ struct Deps<'a>(&'a dyn LatticeScheme);
 
 impl Refinement for Deps<'_> {
     type Point = Point;
-    fn dependencies(&self, q: &Point) -> Result<Vec<Point>, String> {
+    fn dependencies(&self, q: &Point) -> Result<Vec<Point>, Error> {
         Ok(dependencies(self.0, *q))
     }
 }
@@ -155,8 +156,10 @@ const MAX_WINDOW: usize = 100_000;
 /// Most levels followed when collecting the analysis window's influence set.
 const MAX_LEVELS: u32 = 9;
 
-fn named(scheme: &dyn LatticeScheme, e: ClosureError<Point>) -> String {
-    match e {
+/// A closure failure of the scheme's masks (not local, not invariant): the
+/// scheme asked for cannot be analysed.
+fn named(scheme: &dyn LatticeScheme, e: ClosureError<Point>) -> Error {
+    Error::Input(match e {
         ClosureError::NotInvariant { fine, needs } => format!(
             "{}: window is not invariant: fine point {} needs {}",
             scheme.name(),
@@ -164,7 +167,7 @@ fn named(scheme: &dyn LatticeScheme, e: ClosureError<Point>) -> String {
             point_name(needs)
         ),
         e => format!("{}: {e}", scheme.name()),
-    }
+    })
 }
 
 /// The smallest invariant window containing `seed` (`engine::closure`):
@@ -172,7 +175,7 @@ fn named(scheme: &dyn LatticeScheme, e: ClosureError<Point>) -> String {
 /// under "fine point q needs coarse point p" is exactly the smallest set whose
 /// refined points depend only on itself. An error, not a loop, when the masks
 /// are not local.
-pub fn minimal_invariant_window(scheme: &dyn LatticeScheme, seed: &[Point]) -> Result<Window, String> {
+pub fn minimal_invariant_window(scheme: &dyn LatticeScheme, seed: &[Point]) -> Result<Window, Error> {
     let set = invariant_closure(&Deps(scheme), seed.iter().copied(), MAX_WINDOW).map_err(|e| named(scheme, e))?;
     Ok(Window::from_set(set))
 }
@@ -188,24 +191,21 @@ pub fn invariance_defects(scheme: &dyn LatticeScheme, w: &Window) -> Vec<(Point,
 /// window's order (its points are the matrix's labels). Error (naming the
 /// first escaping dependency) when the window is not invariant, because the
 /// restriction would not be a subdivision matrix.
-pub fn window_matrix<W: LatticeWeight>(
-    scheme: &dyn LatticeScheme,
-    w: &Window,
-) -> Result<LocalMatrix<Point, W>, String> {
+pub fn window_matrix<W: LatticeWeight>(scheme: &dyn LatticeScheme, w: &Window) -> Result<LocalMatrix<Point, W>, Error> {
     assemble(&Deps(scheme), &w.points, |&q| Ok(stencil::<W>(scheme, q))).map_err(|e| match e {
-        ClosureError::NotInvariant { fine, needs } => format!(
+        ClosureError::NotInvariant { fine, needs } => Error::Input(format!(
             "{}: window of {} points is not invariant: fine point {} needs {}",
             scheme.name(),
             w.len(),
             point_name(fine),
             point_name(needs)
-        ),
+        )),
         e => named(scheme, e),
     })
 }
 
 /// [`window_matrix`] as dense rows (the form the papers print).
-pub fn local_matrix<W: LatticeWeight>(scheme: &dyn LatticeScheme, w: &Window) -> Result<Vec<Vec<W>>, String> {
+pub fn local_matrix<W: LatticeWeight>(scheme: &dyn LatticeScheme, w: &Window) -> Result<Vec<Vec<W>>, Error> {
     Ok(window_matrix(scheme, w)?.dense())
 }
 
@@ -224,7 +224,7 @@ fn reach(scheme: &dyn LatticeScheme) -> i64 {
 /// the fine points of level k inside the region pulled back to level 0, their
 /// union over k once it has settled (`engine::closure::influence_set`), with
 /// the origin, closed.
-pub fn analysis_window(scheme: &dyn LatticeScheme, radius: i64) -> Result<Window, String> {
+pub fn analysis_window(scheme: &dyn LatticeScheme, radius: i64) -> Result<Window, Error> {
     let square = |k: u32| {
         let r = radius << k;
         (-r..=r).flat_map(|i| (-r..=r).map(move |j| (i, j))).collect::<Vec<Point>>()

@@ -245,6 +245,18 @@ pub enum AssembleError {
     NotInvariant,
 }
 
+/// An irrational weight is a numeric limit of the exact path; a rule that
+/// cannot be evaluated, or a set that is not invariant, means the
+/// neighbourhood does not determine the rows.
+impl From<AssembleError> for crate::error::Error {
+    fn from(e: AssembleError) -> Self {
+        match e {
+            AssembleError::Inexact => crate::error::Error::Numeric(e.to_string()),
+            AssembleError::Missing | AssembleError::NotInvariant => crate::error::Error::NotDetermined(e.to_string()),
+        }
+    }
+}
+
 impl std::fmt::Display for AssembleError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(match self {

@@ -36,12 +36,13 @@ pub type ObjMesh = (PolyMesh, Vec<[f64; 3]>);
 /// Read an OBJ file from disk; errors (`Error::File`) name the file and,
 /// where it applies, the line.
 pub fn read_obj_file(path: &Path) -> Result<ObjMesh, Error> {
-    read_file(path).map_err(Error::File)
+    read_file(path)
 }
 
-fn read_file(path: &Path) -> Result<ObjMesh, String> {
-    let file = std::fs::File::open(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
-    let too_large = || format!("{}: file is larger than the supported {} bytes", path.display(), MAX_FILE_BYTES);
+fn read_file(path: &Path) -> Result<ObjMesh, Error> {
+    let file = std::fs::File::open(path).map_err(|e| Error::File(format!("cannot read {}: {e}", path.display())))?;
+    let too_large =
+        || Error::File(format!("{}: file is larger than the supported {} bytes", path.display(), MAX_FILE_BYTES));
     // a regular file says its size up front: refuse it before reading anything
     if file.metadata().is_ok_and(|m| m.is_file() && m.len() > MAX_FILE_BYTES) {
         return Err(too_large());
@@ -51,25 +52,25 @@ fn read_file(path: &Path) -> Result<ObjMesh, String> {
     // without ever holding more than the cap in memory
     file.take(MAX_FILE_BYTES + 1)
         .read_to_end(&mut bytes)
-        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+        .map_err(|e| Error::File(format!("cannot read {}: {e}", path.display())))?;
     if bytes.len() as u64 > MAX_FILE_BYTES {
         return Err(too_large());
     }
     let text = String::from_utf8(bytes).map_err(|e| {
         // report the line of the first invalid byte
         let line = 1 + e.as_bytes()[..e.utf8_error().valid_up_to()].iter().filter(|&&b| b == b'\n').count();
-        format!("{}: line {line}: not valid UTF-8 text", path.display())
+        Error::File(format!("{}: line {line}: not valid UTF-8 text", path.display()))
     })?;
-    parse_text(&text).map_err(|e| format!("{}: {e}", path.display()))
+    parse_text(&text).map_err(|e| e.context(path.display()))
 }
 
 /// Parse OBJ text. Errors (`Error::File`) are one line and start with
 /// `line N:` when a line is to blame.
 pub fn parse_obj(text: &str) -> Result<ObjMesh, Error> {
-    parse_text(text).map_err(Error::File)
+    parse_text(text)
 }
 
-fn parse_text(text: &str) -> Result<ObjMesh, String> {
+fn parse_text(text: &str) -> Result<ObjMesh, Error> {
     let mut points: Vec<[f64; 3]> = Vec::new();
     let mut vertex_line: Vec<usize> = Vec::new();
     let mut faces: Vec<Vec<usize>> = Vec::new();
@@ -77,7 +78,7 @@ fn parse_text(text: &str) -> Result<ObjMesh, String> {
     let mut corners = 0usize;
     for (k, raw) in text.lines().enumerate() {
         let line_no = k + 1;
-        let err = |msg: String| format!("line {line_no}: {msg}");
+        let err = |msg: String| Error::File(format!("line {line_no}: {msg}"));
         // a comment may follow a statement on the same line
         let content = raw.split('#').next().unwrap_or("");
         let mut tokens = content.split_whitespace();
@@ -157,10 +158,12 @@ fn parse_text(text: &str) -> Result<ObjMesh, String> {
         }
     }
     if faces.is_empty() {
-        return Err(if points.is_empty() { "empty mesh: no vertices and no faces".into() } else { "no faces".into() });
+        return Err(Error::File(
+            if points.is_empty() { "empty mesh: no vertices and no faces" } else { "no faces" }.into(),
+        ));
     }
     validate(&points, &vertex_line, &faces, &face_line)?;
-    let mesh = PolyMesh::new(points.len(), faces).map_err(|e| format!("invalid mesh: {e}"))?;
+    let mesh = PolyMesh::new(points.len(), faces).map_err(|e| Error::File(format!("invalid mesh: {e}")))?;
     Ok((mesh, points))
 }
 
@@ -172,32 +175,32 @@ fn validate(
     vertex_line: &[usize],
     faces: &[Vec<usize>],
     face_line: &[usize],
-) -> Result<(), String> {
+) -> Result<(), Error> {
     let nv = points.len();
     let mut half_edges: HashMap<(usize, usize), usize> = HashMap::with_capacity(faces.iter().map(|f| f.len()).sum());
     for (f, face) in faces.iter().enumerate() {
         let line = face_line[f];
         for &v in face {
             if v >= nv {
-                return Err(format!(
+                return Err(Error::File(format!(
                     "line {line}: face refers to vertex {}, but the file has only {nv} vertices",
                     v + 1
-                ));
+                )));
             }
         }
         for (k, &a) in face.iter().enumerate() {
             if face[k + 1..].contains(&a) {
-                return Err(format!("line {line}: face uses vertex {} twice", a + 1));
+                return Err(Error::File(format!("line {line}: face uses vertex {} twice", a + 1)));
             }
             let b = face[(k + 1) % face.len()];
             if let Some(&g) = half_edges.get(&(a, b)) {
-                return Err(format!(
+                return Err(Error::File(format!(
                     "line {line}: edge {}-{} is used in the same direction by the face on line {}: \
                      the mesh is non-manifold or inconsistently oriented",
                     a + 1,
                     b + 1,
                     face_line[g]
-                ));
+                )));
             }
             half_edges.insert((a, b), f);
         }
@@ -248,12 +251,12 @@ fn validate(
         }
         let roots: std::collections::HashSet<usize> = range.map(|c| find(&mut parent, c)).collect();
         if roots.len() > 1 {
-            return Err(format!(
+            return Err(Error::File(format!(
                 "line {}: vertex {} is non-manifold (its faces form {} separate fans)",
                 vertex_line[v],
                 v + 1,
                 roots.len()
-            ));
+            )));
         }
     }
     Ok(())

@@ -10,6 +10,7 @@ use std::hash::{BuildHasherDefault, Hasher};
 use std::sync::OnceLock;
 
 use super::lattice::Chart;
+use crate::error::Error;
 
 pub type VertexId = usize;
 pub type FaceId = usize;
@@ -267,13 +268,13 @@ impl PolyMesh {
 
     /// Attach face points (`points[f]`: the point of face f, if any; each a
     /// vertex of no face cycle).
-    pub fn with_face_points(mut self, points: Vec<Option<VertexId>>) -> Result<Self, String> {
+    pub fn with_face_points(mut self, points: Vec<Option<VertexId>>) -> Result<Self, Error> {
         if points.len() != self.faces.len() {
-            return Err(format!("{} face point entries for {} faces", points.len(), self.faces.len()));
+            return Err(Error::Input(format!("{} face point entries for {} faces", points.len(), self.faces.len())));
         }
         if let Some(&v) = points.iter().flatten().find(|&&v| v >= self.num_vertices || self.vertex_corner[v].is_some())
         {
-            return Err(format!("face point {v} is missing or is a corner of a face"));
+            return Err(Error::Input(format!("face point {v} is missing or is a corner of a face")));
         }
         self.every_face_has_point = !points.is_empty() && points.iter().all(Option::is_some);
         self.face_points = points;
@@ -291,29 +292,29 @@ impl PolyMesh {
     /// is +i, and directions carry across edges (a shared edge has opposite
     /// directions in its two faces). Fails unless every face is a quad, every
     /// vertex has valence 4 and the orientation is consistent (e.g. a torus grid).
-    pub fn orient_lattice(&mut self) -> Result<(), String> {
+    pub fn orient_lattice(&mut self) -> Result<(), Error> {
         if let Some(f) = self.faces.iter().position(|f| f.len() != 4) {
-            return Err(format!(
+            return Err(Error::Input(format!(
                 "a regular-lattice scheme needs quads only; face {} has {} vertices",
                 f + 1,
                 self.faces[f].len()
-            ));
+            )));
         }
         for v in 0..self.num_vertices {
             match self.valence(v) {
                 Some(4) => {}
                 Some(k) => {
-                    return Err(format!(
+                    return Err(Error::Input(format!(
                         "a regular-lattice scheme needs valence 4 everywhere; vertex {} has {k}",
                         v + 1
-                    ))
+                    )))
                 }
                 None => {
                     if self.vertex_corner[v].is_some() {
-                        return Err(format!(
+                        return Err(Error::Input(format!(
                             "a regular-lattice scheme needs a closed mesh; vertex {} is on the boundary",
                             v + 1
-                        ));
+                        )));
                     }
                 }
             }
@@ -339,11 +340,11 @@ impl PolyMesh {
                             stack.push(g);
                         }
                         Some(x) if x != dg => {
-                            return Err(format!(
+                            return Err(Error::Input(format!(
                                 "the quad mesh has no consistent lattice orientation (faces {} and {} disagree)",
                                 f + 1,
                                 g + 1
-                            ))
+                            )))
                         }
                         Some(_) => {}
                     }
@@ -357,7 +358,7 @@ impl PolyMesh {
     /// The sub-mesh of the faces `keep`, with every per-vertex and per-face
     /// attribute carried along (charts, face points, lattice directions,
     /// per-vertex parameters). Returns it and, for each new vertex, its old id.
-    pub fn restrict(&self, keep: &[FaceId]) -> Result<(PolyMesh, Vec<VertexId>), String> {
+    pub fn restrict(&self, keep: &[FaceId]) -> Result<(PolyMesh, Vec<VertexId>), Error> {
         let mut id = vec![usize::MAX; self.num_vertices];
         let mut old = Vec::new();
         let mut take = |v: usize| {
@@ -373,7 +374,7 @@ impl PolyMesh {
         } else {
             keep.iter().map(|&f| self.face_points[f].map(&mut take)).collect()
         };
-        let mut m = PolyMesh::new(old.len(), faces).map_err(|e| e.to_string())?;
+        let mut m = PolyMesh::new(old.len(), faces).map_err(|e| Error::Input(e.to_string()))?;
         if !points.is_empty() {
             m = m.with_face_points(points)?;
         }
@@ -392,9 +393,9 @@ impl PolyMesh {
     /// vertex of no kept face stays, isolated (no fan, so no rule can be
     /// evaluated at it). Unlike [`PolyMesh::restrict`] nothing is renumbered,
     /// so ids, chart coordinates and per-vertex data mean what they meant.
-    pub fn keep_faces(&self, keep: &[FaceId]) -> Result<PolyMesh, String> {
+    pub fn keep_faces(&self, keep: &[FaceId]) -> Result<PolyMesh, Error> {
         let faces: Vec<Vec<usize>> = keep.iter().map(|&f| self.faces[f].clone()).collect();
-        let mut m = PolyMesh::new(self.num_vertices, faces).map_err(|e| e.to_string())?;
+        let mut m = PolyMesh::new(self.num_vertices, faces).map_err(|e| Error::Input(e.to_string()))?;
         if !self.face_points.is_empty() {
             m = m.with_face_points(keep.iter().map(|&f| self.face_points[f]).collect())?;
         }

@@ -20,13 +20,13 @@ pub struct Configuration {
 
 impl Configuration {
     /// The scheme's regular configuration of valence n.
-    pub fn regular(scheme: &dyn Scheme, n: usize) -> Result<Self, String> {
+    pub fn regular(scheme: &dyn Scheme, n: usize) -> Result<Self, Error> {
         check_valence(n)?;
         if let Some(k) = scheme.fixed_valence().filter(|&k| k != n) {
-            return Err(format!(
+            return Err(Error::Input(format!(
                 "{} is defined on the regular lattice only (valence {k}), not at valence {n}",
                 scheme.name()
-            ));
+            )));
         }
         Ok(Configuration {
             centre: scheme.centre_kind(),
@@ -38,17 +38,17 @@ impl Configuration {
     /// The configuration with the given face sequence around the centre (one
     /// letter per sector, counter-clockwise: Q a quad, T a triangle), for schemes
     /// that accept face sequences (4-3 subdivision).
-    pub fn with_faces(scheme: &dyn Scheme, n: usize, faces: &str) -> Result<Self, String> {
+    pub fn with_faces(scheme: &dyn Scheme, n: usize, faces: &str) -> Result<Self, Error> {
         check_valence(n)?;
         if !scheme.face_sequences() {
-            return Err(format!(
+            return Err(Error::Input(format!(
                 "scheme '{}' takes no --faces: its configurations are all {}",
                 scheme.name(),
                 match scheme.sector_kind() {
                     SectorKind::Quad => "quads",
                     SectorKind::Tri => "triangles",
                 }
-            ));
+            )));
         }
         let sectors = faces
             .chars()
@@ -56,13 +56,17 @@ impl Configuration {
             .map(|(k, c)| match c {
                 'Q' => Ok(SectorKind::Quad),
                 'T' => Ok(SectorKind::Tri),
-                _ => {
-                    Err(format!("--faces '{faces}': character {} ('{c}') is neither Q (quad) nor T (triangle)", k + 1))
-                }
+                _ => Err(Error::Input(format!(
+                    "--faces '{faces}': character {} ('{c}') is neither Q (quad) nor T (triangle)",
+                    k + 1
+                ))),
             })
             .collect::<Result<Vec<_>, _>>()?;
         if sectors.len() != n {
-            return Err(format!("--faces '{faces}' has {} letters but the valence is {n}", sectors.len()));
+            return Err(Error::Input(format!(
+                "--faces '{faces}' has {} letters but the valence is {n}",
+                sectors.len()
+            )));
         }
         Ok(Configuration { centre: scheme.centre_kind(), sectors, face_control: scheme.face_control() })
     }

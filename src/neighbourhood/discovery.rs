@@ -21,6 +21,7 @@ use super::builder::build_patch;
 use super::configuration::Configuration;
 use super::labels::{canonical_order, label_vertices, VertexLabel};
 use crate::engine::closure::{invariant_closure, Refinement};
+use crate::error::Error;
 use crate::mesh::{IdMap, IdSet, LatticeCoord, PolyMesh};
 use crate::refine::{Combine, SparseRow};
 use crate::sdc::Topology;
@@ -35,12 +36,12 @@ pub enum NeighbourhoodKind {
 }
 
 impl std::str::FromStr for NeighbourhoodKind {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
+    type Err = Error;
+    fn from_str(s: &str) -> Result<Self, Error> {
         match s {
             "minimal" => Ok(NeighbourhoodKind::Minimal),
             "analysis" => Ok(NeighbourhoodKind::Analysis),
-            _ => Err(format!("unknown neighbourhood '{s}'; use minimal or analysis")),
+            _ => Err(Error::Input(format!("unknown neighbourhood '{s}'; use minimal or analysis"))),
         }
     }
 }
@@ -83,9 +84,11 @@ struct FullStep {
 }
 
 impl FullStep {
-    fn new(refinements: Vec<Refined>) -> Result<FullStep, String> {
-        let last = refinements.last().ok_or("an analysis step has at least one refinement")?;
-        let chart = last.mesh.chart.as_ref().ok_or("refined patch lost its lattice chart")?;
+    fn new(refinements: Vec<Refined>) -> Result<FullStep, Error> {
+        let last =
+            refinements.last().ok_or_else(|| Error::Message("an analysis step has at least one refinement".into()))?;
+        let chart =
+            last.mesh.chart.as_ref().ok_or_else(|| Error::Message("refined patch lost its lattice chart".into()))?;
         let step_at = chart.vertex_coords.iter().enumerate().map(|(i, c)| (*c, i)).collect();
         Ok(FullStep { refinements, step_at })
     }
@@ -200,8 +203,8 @@ const MAX_PATCH_RINGS: usize = 8;
 const PRUNE_MARGIN: usize = 4;
 const MAX_LEVELS: usize = 3;
 
-pub fn discover(scheme: &dyn Scheme, config: &Configuration) -> Result<Discovered, String> {
-    let mut last_err = String::new();
+pub fn discover(scheme: &dyn Scheme, config: &Configuration) -> Result<Discovered, Error> {
+    let mut last_err = Error::NotDetermined(String::new());
     for rings in first_patch_rings(scheme, config)..=MAX_PATCH_RINGS {
         let mut blame_pruning = false;
         match try_discover(scheme, config, rings, true, &mut blame_pruning) {
@@ -217,11 +220,15 @@ pub fn discover(scheme: &dyn Scheme, config: &Configuration) -> Result<Discovere
             }
         }
     }
-    Err(format!(
-        "could not find an invariant neighbourhood for {} (valence {}) within {MAX_PATCH_RINGS} rings: {last_err}",
-        scheme.name(),
-        config.valence()
-    ))
+    // the last attempt's variant: a rule reaching past every patch tried
+    // stays NotDetermined, a host refusing the patch stays Input
+    Err(last_err.map_message(|m| {
+        format!(
+            "could not find an invariant neighbourhood for {} (valence {}) within {MAX_PATCH_RINGS} rings: {m}",
+            scheme.name(),
+            config.valence()
+        )
+    }))
 }
 
 /// Valences above this are probed at about this valence first.
@@ -444,18 +451,18 @@ struct RepresentativeSteps<'a> {
 impl Refinement for RepresentativeSteps<'_> {
     type Point = usize;
 
-    fn successor(&self, v: &usize) -> Result<usize, String> {
+    fn successor(&self, v: &usize) -> Result<usize, Error> {
         let w = self.step_at.get(&self.coords[*v]).copied().ok_or_else(|| self.not_evaluable(*v))?;
         self.asked.borrow_mut().insert(w, *v);
         Ok(w)
     }
 
-    fn dependencies(&self, w: &usize) -> Result<Vec<usize>, String> {
+    fn dependencies(&self, w: &usize) -> Result<Vec<usize>, Error> {
         let mut composer = self.composer.borrow_mut();
         match composer.row(self.last, *w) {
             Some(row) => Ok(row.entries.iter().map(|e| self.rot0.rep(e.0)).collect()),
             None => Err(self.asked.borrow().get(w).map_or_else(
-                || format!("a refined vertex is not evaluable in a {}-ring patch", self.rings),
+                || Error::NotDetermined(format!("a refined vertex is not evaluable in a {}-ring patch", self.rings)),
                 |&v| self.not_evaluable(v),
             )),
         }
@@ -463,8 +470,8 @@ impl Refinement for RepresentativeSteps<'_> {
 }
 
 impl RepresentativeSteps<'_> {
-    fn not_evaluable(&self, v: usize) -> String {
-        format!("rule for {} not evaluable in a {}-ring patch", self.labels[v].name, self.rings)
+    fn not_evaluable(&self, v: usize) -> Error {
+        Error::NotDetermined(format!("rule for {} not evaluable in a {}-ring patch", self.labels[v].name, self.rings))
     }
 }
 
@@ -486,7 +493,7 @@ fn try_discover(
     rings: usize,
     prune: bool,
     blame_pruning: &mut bool,
-) -> Result<Discovered, String> {
+) -> Result<Discovered, Error> {
     let (patch, centre_set) = build_patch(config, rings);
     let labels = label_vertices(&patch, &centre_set, config.centre.is_face_centred());
     let topology = scheme.topology();
@@ -538,9 +545,11 @@ fn try_discover(
         last: steps - 1,
         asked: RefCell::new(IdMap::default()),
     };
-    let closure = |seed: &mut dyn Iterator<Item = usize>| -> Result<BTreeSet<usize>, String> {
+    let closure = |seed: &mut dyn Iterator<Item = usize>| -> Result<BTreeSet<usize>, Error> {
         let seed: Vec<usize> = seed.map(|v| rot0.rep(v)).collect();
-        invariant_closure(&orbits, seed, patch.num_vertices()).map_err(|e| e.to_string())
+        // a dependency that cannot be evaluated, or a closure that outgrows
+        // the patch: a larger patch may determine it
+        invariant_closure(&orbits, seed, patch.num_vertices()).map_err(|e| Error::NotDetermined(e.to_string()))
     };
 
     let blame_closure = |blame: &mut bool| {
@@ -636,7 +645,9 @@ fn try_discover(
                 let Some(support) = support else {
                     // the mesh this stencil is evaluated on was cut down
                     *blame_pruning |= (k >= 1 && relabel[k - 1].is_some()) || cut_by_window(k, v, refinements);
-                    return Err(format!("first-ring vertex after {r} steps not evaluable in a {rings}-ring patch"));
+                    return Err(Error::NotDetermined(format!(
+                        "first-ring vertex after {r} steps not evaluable in a {rings}-ring patch"
+                    )));
                 };
                 let below = if k == 0 { &rot0 } else { &rots[k - 1] };
                 marked_below.extend(support.into_iter().map(|u| below.rep(u)));
@@ -719,16 +730,13 @@ const WINDOW_SECTORS: usize = 16;
 /// touching rings 0 and 1.
 const DISC_RINGS: usize = 1;
 
-/// The sub-mesh of the faces within `WINDOW_SECTORS` sectors of the
-/// representatives' sectors `0..period`, and of the faces near the centre
-/// (within `DISC_RINGS` rings) in every sector. Only representatives are
-/// walked (see `Rotation`), so the rest of a valence-n mesh is never read,
-/// and cutting it makes every deeper refinement O(1) in size per sector
-/// outside the disc. None when that would keep more than half the faces.
-/// The faces of a window around the representatives' sectors: the sectors
-/// within `WINDOW_SECTORS` of theirs and a disc of `DISC_RINGS` rings around
-/// the centre in every sector; None when it would keep more than half of
-/// them (or the mesh has no usable symmetry).
+/// The faces within `WINDOW_SECTORS` sectors of the representatives'
+/// sectors `0..period`, and the faces near the centre (within `DISC_RINGS`
+/// rings) in every sector. Only representatives are walked (see `Rotation`),
+/// so the rest of a valence-n mesh is never read, and cutting it makes every
+/// deeper refinement O(1) in size per sector outside the disc. None when
+/// that would keep more than half the faces (or the mesh has no usable
+/// symmetry).
 fn window_faces(mesh: &PolyMesh, period: usize) -> Option<Vec<usize>> {
     let chart = mesh.chart.as_ref()?;
     let n = chart.sectors();
@@ -778,12 +786,7 @@ fn window_faces(mesh: &PolyMesh, period: usize) -> Option<Vec<usize>> {
 /// then costs more than it saves). Both cuts make one sub-mesh: building the
 /// mesh of a deep level is a large part of discovery at high valence.
 type Pruned = (PolyMesh, Vec<usize>, Vec<bool>);
-fn prune_around(
-    mesh: &PolyMesh,
-    region_faces: &[bool],
-    margin: usize,
-    period: usize,
-) -> Result<Option<Pruned>, String> {
+fn prune_around(mesh: &PolyMesh, region_faces: &[bool], margin: usize, period: usize) -> Result<Option<Pruned>, Error> {
     let mut keep = region_faces.to_vec();
     let mut near = vec![false; mesh.num_vertices()];
     for _ in 0..margin {

@@ -21,6 +21,7 @@ use num_complex::Complex64;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 use super::weight::{exact_cos_2pi, Rational};
+use crate::error::Error;
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum Expr {
@@ -59,7 +60,7 @@ enum Tok {
     Op(char),
 }
 
-fn tokenize(s: &str) -> Result<Vec<(usize, Tok)>, String> {
+fn tokenize(s: &str) -> Result<Vec<(usize, Tok)>, Error> {
     let chars: Vec<char> = s.chars().collect();
     let mut out = Vec::new();
     let mut k = 0;
@@ -97,7 +98,7 @@ fn tokenize(s: &str) -> Result<Vec<(usize, Tok)>, String> {
             out.push((k, Tok::Op(c)));
             k += 1;
         } else {
-            return Err(format!("unexpected character '{c}' at column {}", k + 1));
+            return Err(Error::Input(format!("unexpected character '{c}' at column {}", k + 1)));
         }
     }
     Ok(out)
@@ -126,7 +127,7 @@ impl Parser {
             false
         }
     }
-    fn sum(&mut self, depth: usize) -> Result<Expr, String> {
+    fn sum(&mut self, depth: usize) -> Result<Expr, Error> {
         let first = self.product(depth)?;
         let mut rest = Vec::new();
         loop {
@@ -138,7 +139,7 @@ impl Parser {
             rest.push((op, self.product(depth)?));
         }
     }
-    fn product(&mut self, depth: usize) -> Result<Expr, String> {
+    fn product(&mut self, depth: usize) -> Result<Expr, Error> {
         let first = self.unary(depth)?;
         let mut rest = Vec::new();
         loop {
@@ -154,9 +155,9 @@ impl Parser {
             rest.push((op, self.unary(depth)?));
         }
     }
-    fn unary(&mut self, depth: usize) -> Result<Expr, String> {
+    fn unary(&mut self, depth: usize) -> Result<Expr, Error> {
         if depth > MAX_DEPTH {
-            return Err(format!("expression nested too deeply (more than {MAX_DEPTH} levels)"));
+            return Err(Error::Input(format!("expression nested too deeply (more than {MAX_DEPTH} levels)")));
         }
         if self.eat('-') {
             return Ok(Expr::Neg(Box::new(self.unary(depth + 1)?)));
@@ -166,7 +167,7 @@ impl Parser {
         }
         self.power(depth)
     }
-    fn power(&mut self, depth: usize) -> Result<Expr, String> {
+    fn power(&mut self, depth: usize) -> Result<Expr, Error> {
         let base = self.atom(depth)?;
         if self.eat('^') {
             let exp = self.unary(depth + 1)?; // right-associative; allows 2^-1
@@ -174,12 +175,12 @@ impl Parser {
         }
         Ok(base)
     }
-    fn atom(&mut self, depth: usize) -> Result<Expr, String> {
+    fn atom(&mut self, depth: usize) -> Result<Expr, Error> {
         let col = self.col();
         match self.toks.get(self.pos).map(|t| t.1.clone()) {
             Some(Tok::Num(t)) => {
                 self.pos += 1;
-                let p = super::weight::ParamValue::parse(&t).map_err(|e| format!("column {col}: {e}"))?;
+                let p = super::weight::ParamValue::parse(&t).map_err(|e| Error::Input(format!("column {col}: {e}")))?;
                 Ok(Expr::Num(p.value, p.exact))
             }
             Some(Tok::Ident(name)) => {
@@ -190,11 +191,14 @@ impl Parser {
                 const FUNCTIONS: [&str; 6] = ["cos", "sin", "sqrt", "cbrt", "abs", "kronecker"];
                 if FUNCTIONS.contains(&name.as_str()) {
                     if !self.eat('(') {
-                        return Err(format!("'{name}' needs an argument in parentheses at column {}", self.col()));
+                        return Err(Error::Input(format!(
+                            "'{name}' needs an argument in parentheses at column {}",
+                            self.col()
+                        )));
                     }
                     let arg = self.sum(depth + 1)?;
                     if !self.eat(')') {
-                        return Err(format!("missing ')' at column {}", self.col()));
+                        return Err(Error::Input(format!("missing ')' at column {}", self.col())));
                     }
                     return Ok(Expr::Call(name, Box::new(arg)));
                 }
@@ -209,35 +213,44 @@ impl Parser {
                 self.pos += 1;
                 let e = self.sum(depth + 1)?;
                 if !self.eat(')') {
-                    return Err(format!("missing ')' at column {}", self.col()));
+                    return Err(Error::Input(format!("missing ')' at column {}", self.col())));
                 }
                 Ok(e)
             }
-            Some(Tok::Op(c)) => Err(format!("unexpected '{c}' at column {col}")),
-            None => Err(format!("unexpected end of expression at column {col}")),
+            Some(Tok::Op(c)) => Err(Error::Input(format!("unexpected '{c}' at column {col}"))),
+            None => Err(Error::Input(format!("unexpected end of expression at column {col}"))),
         }
     }
     /// The arguments of `sum`, after the name.
-    fn sum_call(&mut self, depth: usize) -> Result<Expr, String> {
+    fn sum_call(&mut self, depth: usize) -> Result<Expr, Error> {
         if !self.eat('(') {
-            return Err(format!("'sum' needs arguments {SUM_FORM} at column {}", self.col()));
+            return Err(Error::Input(format!("'sum' needs arguments {SUM_FORM} at column {}", self.col())));
         }
         let col = self.col();
         let var = match self.peek() {
             Some(Tok::Ident(v)) if BUILTIN_NAMES.contains(&v.as_str()) => {
-                return Err(format!("'{v}' cannot be a sum variable (column {col}); use a fresh name"));
+                return Err(Error::Input(format!("'{v}' cannot be a sum variable (column {col}); use a fresh name")));
             }
             Some(Tok::Ident(v)) if self.bound.contains(v) => {
-                return Err(format!("'{v}' is already bound by an enclosing sum (column {col}); use a fresh name"));
+                return Err(Error::Input(format!(
+                    "'{v}' is already bound by an enclosing sum (column {col}); use a fresh name"
+                )));
             }
             Some(Tok::Ident(v)) => v.clone(),
-            _ => return Err(format!("the first argument of sum must be a variable name, {SUM_FORM}, at column {col}")),
+            _ => {
+                return Err(Error::Input(format!(
+                    "the first argument of sum must be a variable name, {SUM_FORM}, at column {col}"
+                )))
+            }
         };
         self.pos += 1;
         let mut args = Vec::new();
         for what in ["from", "to", "expression"] {
             if !self.eat(',') {
-                return Err(format!("expected ',' before the {what} of {SUM_FORM} at column {}", self.col()));
+                return Err(Error::Input(format!(
+                    "expected ',' before the {what} of {SUM_FORM} at column {}",
+                    self.col()
+                )));
             }
             if what == "expression" {
                 self.bound.push(var.clone());
@@ -249,7 +262,7 @@ impl Parser {
             args.push(arg?);
         }
         if !self.eat(')') {
-            return Err(format!("missing ')' after {SUM_FORM} at column {}", self.col()));
+            return Err(Error::Input(format!("missing ')' after {SUM_FORM} at column {}", self.col())));
         }
         let body = args.pop().expect("three arguments");
         let to = args.pop().expect("three arguments");
@@ -268,14 +281,14 @@ fn chain(first: Expr, rest: Vec<(char, Expr)>) -> Expr {
 }
 
 /// Floating-point `x op y` for + - * / and ^.
-fn float_op(op: char, x: Complex64, y: Complex64) -> Result<Complex64, String> {
+fn float_op(op: char, x: Complex64, y: Complex64) -> Result<Complex64, Error> {
     Ok(match op {
         '+' => x + y,
         '-' => x - y,
         '*' => x * y,
         '/' => {
             if y.norm() == 0.0 {
-                return Err("division by zero".into());
+                return Err(Error::Input("division by zero".into()));
             }
             x / y
         }
@@ -334,10 +347,10 @@ fn exact_op(op: char, x: Rational, y: Rational) -> Option<Rational> {
 }
 
 /// An integer summation bound from its floating value.
-fn sum_bound(z: Complex64, what: &str) -> Result<i64, String> {
+fn sum_bound(z: Complex64, what: &str) -> Result<i64, Error> {
     let r = z.re.round();
     if z.im != 0.0 || !z.re.is_finite() || (z.re - r).abs() > 1e-9 * r.abs().max(1.0) || r.abs() > 1e15 {
-        return Err(format!("the {what} bound of a sum must be an integer, got {}", fmt_complex(z)));
+        return Err(Error::Input(format!("the {what} bound of a sum must be an integer, got {}", fmt_complex(z))));
     }
     Ok(r as i64)
 }
@@ -351,12 +364,12 @@ fn fmt_complex(z: Complex64) -> String {
 }
 
 /// Count a sum's `count` terms against the budget of one evaluation.
-fn spend(terms: &mut u64, count: i128) -> Result<(), String> {
+fn spend(terms: &mut u64, count: i128) -> Result<(), Error> {
     let total = *terms as i128 + count.max(0);
     if total > MAX_SUM_TERMS as i128 {
-        return Err(format!(
+        return Err(Error::Input(format!(
             "a sum of {count} terms; at most {MAX_SUM_TERMS} terms in all (nested sums count every term)"
-        ));
+        )));
     }
     *terms = total as u64;
     Ok(())
@@ -367,20 +380,20 @@ fn sum_index(k: i64) -> super::weight::ParamValue {
     super::weight::ParamValue { value: k as f64, exact: Some(Rational::from_integer(k.into())), text: String::new() }
 }
 
-fn shadow_error(var: &str) -> String {
-    format!("sum variable '{var}' is already a variable here; use a fresh name")
+fn shadow_error(var: &str) -> Error {
+    Error::Input(format!("sum variable '{var}' is already a variable here; use a fresh name"))
 }
 
 impl Expr {
-    pub fn parse(s: &str) -> Result<Expr, String> {
+    pub fn parse(s: &str) -> Result<Expr, Error> {
         if s.len() > 10_000 {
-            return Err("expression longer than 10000 characters".into());
+            return Err(Error::Input("expression longer than 10000 characters".into()));
         }
         let toks = tokenize(s)?;
         let mut p = Parser { toks, pos: 0, len: s.chars().count(), bound: Vec::new() };
         let e = p.sum(0)?;
         if p.pos != p.toks.len() {
-            return Err(format!("unexpected '{}' at column {}", token_text(&p.toks[p.pos].1), p.col()));
+            return Err(Error::Input(format!("unexpected '{}' at column {}", token_text(&p.toks[p.pos].1), p.col())));
         }
         Ok(e)
     }
@@ -423,17 +436,19 @@ impl Expr {
     }
 
     /// Floating-point (complex) value.
-    pub fn eval(&self, env: &Env) -> Result<Complex64, String> {
+    pub fn eval(&self, env: &Env) -> Result<Complex64, Error> {
         self.eval_counted(env, &mut 0)
     }
 
     /// `eval`, with the sum terms spent so far in this evaluation.
-    fn eval_counted(&self, env: &Env, terms: &mut u64) -> Result<Complex64, String> {
+    fn eval_counted(&self, env: &Env, terms: &mut u64) -> Result<Complex64, Error> {
         Ok(match self {
             Expr::Num(x, _) => Complex64::new(*x, 0.0),
             Expr::Pi => Complex64::new(std::f64::consts::PI, 0.0),
             Expr::I => Complex64::new(0.0, 1.0),
-            Expr::Var(v) => Complex64::new(env.get(v).ok_or_else(|| format!("unknown variable '{v}'"))?.value, 0.0),
+            Expr::Var(v) => {
+                Complex64::new(env.get(v).ok_or_else(|| Error::Input(format!("unknown variable '{v}'")))?.value, 0.0)
+            }
             Expr::Neg(a) => -a.eval_counted(env, terms)?,
             Expr::Bin(op, a, b) => float_op(*op, a.eval_counted(env, terms)?, b.eval_counted(env, terms)?)?,
             Expr::Chain(first, rest) => {
@@ -667,15 +682,15 @@ mod tests {
 
     #[test]
     fn errors_name_the_column() {
-        assert!(Expr::parse("1 + * 2").unwrap_err().contains("column 5"));
-        assert!(Expr::parse("cos(1").unwrap_err().contains("missing ')'"));
-        assert!(Expr::parse("cos 1").unwrap_err().contains("needs an argument"));
+        assert!(Expr::parse("1 + * 2").unwrap_err().to_string().contains("column 5"));
+        assert!(Expr::parse("cos(1").unwrap_err().to_string().contains("missing ')'"));
+        assert!(Expr::parse("cos 1").unwrap_err().to_string().contains("needs an argument"));
         // a variable before parentheses multiplies
         assert_eq!(Expr::parse("n (1 + n)").unwrap().eval(&env_int(&[("n", 3)])).unwrap().re, 12.0);
-        assert!(Expr::parse("1 $ 2").unwrap_err().contains("column 3"));
+        assert!(Expr::parse("1 $ 2").unwrap_err().to_string().contains("column 3"));
         assert!(Expr::parse("").is_err());
         assert!(Expr::parse(&"(".repeat(5000)).is_err());
-        assert!(Expr::parse("x").unwrap().eval(&Env::new()).unwrap_err().contains("unknown variable"));
+        assert!(Expr::parse("x").unwrap().eval(&Env::new()).unwrap_err().to_string().contains("unknown variable"));
     }
 
     #[test]
@@ -724,7 +739,7 @@ mod tests {
 
     #[test]
     fn sum_errors_are_clear() {
-        let err = |s: &str| Expr::parse(s).unwrap_err();
+        let err = |s: &str| Expr::parse(s).unwrap_err().to_string();
         assert!(err("sum(1, 2)").contains("the first argument of sum must be a variable name"));
         assert!(err("sum(m, 0, 2)").contains("expected ',' before the expression of sum(variable, from, to"));
         assert!(err("sum(m 0, 2, m)").contains("expected ',' before the from"));
@@ -739,7 +754,7 @@ mod tests {
         assert!(err("cos(1, 2)").contains("missing ')'"));
         // evaluation errors: bounds, shadowing, size
         let env = env_int(&[("n", 5), ("k", 4)]);
-        let run = |s: &str| Expr::parse(s).unwrap().eval(&env).unwrap_err();
+        let run = |s: &str| Expr::parse(s).unwrap().eval(&env).unwrap_err().to_string();
         assert!(run("sum(m, 0, n/2, m)").contains("the upper bound of a sum must be an integer, got 2.5"));
         assert!(run("sum(m, i, 2, m)").contains("the lower bound of a sum must be an integer"));
         assert!(run("sum(m, 0, 1e300, m)").contains("must be an integer"));

@@ -6,6 +6,7 @@
 //! Operations that leave the rationals (cos(2πk/n) for most n, square roots of
 //! non-squares) return `Err(Inexact)` for the exact type.
 
+use crate::error::Error;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -184,31 +185,38 @@ impl ParamValue {
 
     /// Parse "3/8", "-1", "0.375", "1e-3". Rejects NaN, infinities and anything
     /// else with a message that names the accepted forms.
-    pub fn parse(text: &str) -> Result<Self, String> {
+    pub fn parse(text: &str) -> Result<Self, Error> {
         let t = text.trim();
         if t.is_empty() {
-            return Err("empty parameter value".into());
+            return Err(Error::Input("empty parameter value".into()));
         }
         if let Some((p, q)) = t.split_once('/') {
-            let p: BigInt = p.trim().parse().map_err(|_| format!("'{t}' is not a number (use 3/8, 0.375 or 1e-3)"))?;
-            let q: BigInt = q.trim().parse().map_err(|_| format!("'{t}' is not a number (use 3/8, 0.375 or 1e-3)"))?;
+            let p: BigInt = p
+                .trim()
+                .parse()
+                .map_err(|_| Error::Input(format!("'{t}' is not a number (use 3/8, 0.375 or 1e-3)")))?;
+            let q: BigInt = q
+                .trim()
+                .parse()
+                .map_err(|_| Error::Input(format!("'{t}' is not a number (use 3/8, 0.375 or 1e-3)")))?;
             if q.is_zero() {
-                return Err(format!("'{t}' divides by zero"));
+                return Err(Error::Input(format!("'{t}' divides by zero")));
             }
             let r = Rational::new(p, q);
             // like decimals (60 digits), exact values stay small enough for the
             // exact analysis to finish
             if r.numer().bits() > MAX_FRACTION_BITS || r.denom().bits() > MAX_FRACTION_BITS {
-                return Err(format!(
+                return Err(Error::Input(format!(
                     "'{}': numerator and denominator (reduced) of at most {MAX_FRACTION_BITS} bits (about 120 digits) are supported",
                     if t.len() > 40 { format!("{}…", &t[..t.char_indices().nth(40).map_or(t.len(), |c| c.0)]) } else { t.to_string() }
-                ));
+                )));
             }
             return Ok(ParamValue { value: Weight::to_f64(&r), exact: Some(r), text: t.to_string() });
         }
-        let value: f64 = t.parse().map_err(|_| format!("'{t}' is not a number (use 3/8, 0.375 or 1e-3)"))?;
+        let value: f64 =
+            t.parse().map_err(|_| Error::Input(format!("'{t}' is not a number (use 3/8, 0.375 or 1e-3)")))?;
         if !value.is_finite() {
-            return Err(format!("'{t}' is not a finite number"));
+            return Err(Error::Input(format!("'{t}' is not a finite number")));
         }
         Ok(ParamValue { value, exact: decimal_to_rational(t), text: t.to_string() })
     }

@@ -8,6 +8,7 @@ use plotters::prelude::*;
 
 use super::{err, Figure, FONT};
 use crate::charmap::{wedge, CharMap};
+use crate::error::Error;
 
 pub struct RingFigure<'a> {
     pub map: &'a CharMap,
@@ -27,12 +28,16 @@ impl Figure for RingFigure<'_> {
     fn size(&self) -> (u32, u32) {
         (900, 900)
     }
-    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), String>
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Error>
     where
         DB::ErrorType: 'static,
     {
         let m = self.map;
-        let ring = m.display.as_ref().or(m.ring.as_ref()).ok_or("no characteristic ring to draw")?;
+        let ring = m
+            .display
+            .as_ref()
+            .or(m.ring.as_ref())
+            .ok_or_else(|| Error::Input("no characteristic ring to draw".into()))?;
         root.fill(&WHITE).map_err(err)?;
         let verdict = format!(
             "{}  ·  {}",
@@ -91,7 +96,7 @@ impl Figure for RingFigure<'_> {
             hi = (hi.0.max(p.0), hi.1.max(p.1));
         }
         if !(lo.0.is_finite() && hi.0.is_finite()) {
-            return Err("nothing to draw".into());
+            return Err(Error::Input("nothing to draw".into()));
         }
         let half = 0.52 * (hi.0 - lo.0).max(hi.1 - lo.1);
         let c = ((lo.0 + hi.0) / 2.0, (lo.1 + hi.1) / 2.0);

@@ -10,6 +10,7 @@ use plotters::prelude::*;
 
 use super::{err, Figure, FONT};
 use crate::curvature::Curvature;
+use crate::error::Error;
 
 /// Which second-order figure to draw.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -65,12 +66,15 @@ impl Figure for CurvatureFigure<'_> {
             }
         }
     }
-    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), String>
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Error>
     where
         DB::ErrorType: 'static,
     {
         let c = self.c;
-        let data = c.figures.as_ref().ok_or("no curvature figure data (the analysis stopped before the ring)")?;
+        let data = c
+            .figures
+            .as_ref()
+            .ok_or_else(|| Error::Input("no curvature figure data (the analysis stopped before the ring)".into()))?;
         root.fill(&WHITE).map_err(err)?;
         let mu = c.mu.as_ref().map_or("none".to_string(), |m| format!("{:.6}", m.modulus));
         let title = format!(
@@ -91,9 +95,10 @@ impl Figure for CurvatureFigure<'_> {
                 ))
                 .map_err(err)?;
                 if data.mu_functions.is_empty() {
-                    return Err("no μ-eigenfunction to draw".into());
+                    return Err(Error::Input("no μ-eigenfunction to draw".into()));
                 }
-                let (center, half) = window(data.triangles.iter().flatten().copied()).ok_or("nothing to draw")?;
+                let (center, half) = window(data.triangles.iter().flatten().copied())
+                    .ok_or_else(|| Error::Input("nothing to draw".into()))?;
                 let cols = data.mu_functions.len().min(3);
                 let rows = data.mu_functions.len().div_ceil(3);
                 let panels = rest.split_evenly((rows, cols));
@@ -125,7 +130,7 @@ impl Figure for CurvatureFigure<'_> {
                 ))
                 .map_err(err)?;
                 if data.surface.is_empty() {
-                    return Err("no limit-surface rings computed".into());
+                    return Err(Error::Input("no limit-surface rings computed".into()));
                 }
                 let rows = data.surface.len();
                 let cols = data.surface[0].rings.len().max(1);
@@ -136,8 +141,8 @@ impl Figure for CurvatureFigure<'_> {
                     label_rows[r].draw(&Text::new(s.input.clone(), (10, 150), (FONT, 16).into_font())).map_err(err)?;
                     for (k, ring) in s.rings.iter().enumerate() {
                         let area = &panels[r * cols + k];
-                        let (center, half) =
-                            window(ring.iter().flat_map(|(p, _)| p.iter().copied())).ok_or("nothing to draw")?;
+                        let (center, half) = window(ring.iter().flat_map(|(p, _)| p.iter().copied()))
+                            .ok_or_else(|| Error::Input("nothing to draw".into()))?;
                         let mut chart = ChartBuilder::on(area)
                             .margin(8)
                             .caption(format!("ring {k}"), (FONT, 15))

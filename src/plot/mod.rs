@@ -17,6 +17,7 @@ pub mod sweep;
 use std::path::Path;
 use std::sync::Once;
 
+use crate::error::Error;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -25,11 +26,11 @@ pub const FONT: &str = "sans-serif";
 static FONT_BYTES: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
 static REGISTER: Once = Once::new();
 
-fn register_font() -> Result<(), String> {
+fn register_font() -> Result<(), Error> {
     let mut result = Ok(());
     REGISTER.call_once(|| {
         if plotters::style::register_font(FONT, FontStyle::Normal, FONT_BYTES).is_err() {
-            result = Err("the embedded font could not be loaded".to_string());
+            result = Err(Error::Message("the embedded font could not be loaded".to_string()));
         }
     });
     result
@@ -43,34 +44,35 @@ pub enum Format {
 }
 
 /// The figure format from the file extension (`.svg`, `.pdf` or `.png`, any case).
-pub fn format_of(path: &Path) -> Result<Format, String> {
+pub fn format_of(path: &Path) -> Result<Format, Error> {
     match path.extension().and_then(|e| e.to_str()).map(|e| e.to_ascii_lowercase()).as_deref() {
         Some("svg") => Ok(Format::Svg),
         Some("pdf") => Ok(Format::Pdf),
         Some("png") => Ok(Format::Png),
-        Some(other) => {
-            Err(format!("unknown figure extension '.{other}' in {}; use .svg, .pdf or .png", path.display()))
-        }
-        None => Err(format!("{} has no extension; use .svg, .pdf or .png", path.display())),
+        Some(other) => Err(Error::Input(format!(
+            "unknown figure extension '.{other}' in {}; use .svg, .pdf or .png",
+            path.display()
+        ))),
+        None => Err(Error::Input(format!("{} has no extension; use .svg, .pdf or .png", path.display()))),
     }
 }
 
 /// A figure that can draw itself on any plotters backend.
 pub trait Figure {
     fn size(&self) -> (u32, u32);
-    fn draw<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> Result<(), String>
+    fn draw<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> Result<(), Error>
     where
         DB::ErrorType: 'static;
 }
 
 /// The SVG text of a figure.
-pub fn render_svg<F: Figure>(fig: &F) -> Result<String, String> {
+pub fn render_svg<F: Figure>(fig: &F) -> Result<String, Error> {
     register_font()?;
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, fig.size()).into_drawing_area();
         fig.draw(&root)?;
-        root.present().map_err(|e| format!("cannot draw the figure: {e}"))?;
+        root.present().map_err(|e| Error::Message(format!("cannot draw the figure: {e}")))?;
     }
     Ok(svg)
 }
@@ -80,12 +82,12 @@ const FONT_FAMILY: &str = "DejaVu Sans";
 
 /// The PDF of a figure: its SVG, parsed with the embedded font as the only
 /// font (every family the SVG names resolves to it), converted to PDF.
-pub fn render_pdf<F: Figure>(fig: &F) -> Result<Vec<u8>, String> {
+pub fn render_pdf<F: Figure>(fig: &F) -> Result<Vec<u8>, Error> {
     svg_to_pdf(&render_svg(fig)?)
 }
 
 /// An SVG text (as figures render it) to a PDF document of one page.
-pub fn svg_to_pdf(svg: &str) -> Result<Vec<u8>, String> {
+pub fn svg_to_pdf(svg: &str) -> Result<Vec<u8>, Error> {
     use svg2pdf::usvg;
     let mut options = usvg::Options { font_family: FONT_FAMILY.to_string(), ..usvg::Options::default() };
     {
@@ -95,13 +97,14 @@ pub fn svg_to_pdf(svg: &str) -> Result<Vec<u8>, String> {
         fonts.set_serif_family(FONT_FAMILY);
         fonts.set_monospace_family(FONT_FAMILY);
     }
-    let tree = usvg::Tree::from_str(svg, &options).map_err(|e| format!("cannot read the figure's SVG: {e}"))?;
+    let tree = usvg::Tree::from_str(svg, &options)
+        .map_err(|e| Error::Message(format!("cannot read the figure's SVG: {e}")))?;
     svg2pdf::to_pdf(&tree, svg2pdf::ConversionOptions::default(), svg2pdf::PageOptions::default())
-        .map_err(|e| format!("cannot convert the figure to PDF: {e}"))
+        .map_err(|e| Error::Message(format!("cannot convert the figure to PDF: {e}")))
 }
 
 /// Draw `fig` into `path` (format from the extension), atomically.
-pub fn save<F: Figure>(fig: &F, path: &Path) -> Result<(), String> {
+pub fn save<F: Figure>(fig: &F, path: &Path) -> Result<(), Error> {
     let format = format_of(path)?;
     register_font()?;
     let size = fig.size();
@@ -113,19 +116,20 @@ pub fn save<F: Figure>(fig: &F, path: &Path) -> Result<(), String> {
             let tmp = tempfile::Builder::new()
                 .suffix(".png")
                 .tempfile_in(dir)
-                .map_err(|e| format!("cannot write in {}: {e}", dir.display()))?;
+                .map_err(|e| Error::Write { path: format!("in {}", dir.display()), reason: e.to_string() })?;
             {
                 let root = BitMapBackend::new(tmp.path(), size).into_drawing_area();
                 fig.draw(&root)?;
-                root.present().map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+                root.present().map_err(|e| Error::Write { path: path.display().to_string(), reason: e.to_string() })?;
             }
-            tmp.persist(path).map_err(|e| format!("cannot replace {}: {}", path.display(), e.error))?;
+            // a failed rename: not the "cannot write" form, so an untyped message
+            tmp.persist(path).map_err(|e| Error::Message(format!("cannot replace {}: {}", path.display(), e.error)))?;
             Ok(())
         }
     }
 }
 
 /// A plotters error as one line.
-pub(crate) fn err<E: std::fmt::Display>(e: E) -> String {
-    format!("cannot draw the figure: {e}")
+pub(crate) fn err<E: std::fmt::Display>(e: E) -> Error {
+    Error::Message(format!("cannot draw the figure: {e}"))
 }

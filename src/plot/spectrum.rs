@@ -5,13 +5,14 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::{err, Figure, FONT};
+use crate::error::Error;
 
 /// The rows of the figure: for each valence, the moduli of the distinct
 /// eigenvalues after λ0 (regular configuration, analysis neighbourhood).
 pub fn leading_moduli(
     scheme: &dyn crate::schemes::Scheme,
     valences: std::ops::RangeInclusive<usize>,
-) -> Result<Vec<(usize, Vec<f64>)>, String> {
+) -> Result<Vec<(usize, Vec<f64>)>, Error> {
     use crate::neighbourhood::{Configuration, NeighbourhoodKind};
     use crate::spectrum::{analyse, Options};
     valences
@@ -52,14 +53,14 @@ impl Figure for SpectrumFigure {
     fn size(&self) -> (u32, u32) {
         (1000, 650)
     }
-    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), String>
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Error>
     where
         DB::ErrorType: 'static,
     {
         root.fill(&WHITE).map_err(err)?;
         let (n0, n1) = (
-            self.rows.first().map(|r| r.0).ok_or("no valences to plot")?,
-            self.rows.last().map(|r| r.0).ok_or("no valences to plot")?,
+            self.rows.first().map(|r| r.0).ok_or_else(|| Error::Input("no valences to plot".into()))?,
+            self.rows.last().map(|r| r.0).ok_or_else(|| Error::Input("no valences to plot".into()))?,
         );
         let x_range = if n1 > n0 { n0 as f64 - 0.5..n1 as f64 + 0.5 } else { n0 as f64 - 1.0..n0 as f64 + 1.0 };
         let mut chart = ChartBuilder::on(root)

@@ -8,6 +8,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::{err, Figure, FONT};
+use crate::error::Error;
 use crate::sweep::Point;
 
 /// What a grid point passed, in increasing order of strength.
@@ -64,7 +65,7 @@ pub struct Bound {
 
 impl Bound {
     /// The reference bounds `texts` (expressions in n) over the grid's valences.
-    pub fn all_of(grid: &crate::sweep::Grid, texts: &[String]) -> Result<Vec<Bound>, String> {
+    pub fn all_of(grid: &crate::sweep::Grid, texts: &[String]) -> Result<Vec<Bound>, Error> {
         texts.iter().map(|t| Ok(Bound { label: t.clone(), values: grid.bound(t)? })).collect()
     }
 }
@@ -81,17 +82,18 @@ pub struct SweepFigure {
 
 impl SweepFigure {
     /// The figure of a sweep's points; every point must carry a swept value.
-    pub fn new(scheme: &str, param: &str, points: &[Point], charmap: bool, bounds: Vec<Bound>) -> Result<Self, String> {
+    pub fn new(scheme: &str, param: &str, points: &[Point], charmap: bool, bounds: Vec<Bound>) -> Result<Self, Error> {
         let cells = points
             .iter()
             .map(|p| {
-                let text = p.param.as_deref().ok_or("the figure needs a swept parameter")?;
+                let text =
+                    p.param.as_deref().ok_or_else(|| Error::Input("the figure needs a swept parameter".into()))?;
                 let v = crate::numeric::ParamValue::parse(text)?.value;
                 Ok((p.valence, v, CellStatus::of(p)))
             })
-            .collect::<Result<Vec<_>, String>>()?;
+            .collect::<Result<Vec<_>, Error>>()?;
         if cells.is_empty() {
-            return Err("no sweep points to plot".into());
+            return Err(Error::Input("no sweep points to plot".into()));
         }
         Ok(SweepFigure { scheme: scheme.to_string(), param: param.to_string(), cells, charmap, bounds })
     }
@@ -129,7 +131,7 @@ impl Figure for SweepFigure {
     fn size(&self) -> (u32, u32) {
         (1100, 760)
     }
-    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), String>
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Error>
     where
         DB::ErrorType: 'static,
     {

@@ -9,6 +9,7 @@
 //! by name instead of being guessed.
 
 use super::{apply, step, Origin, Stencil, Step};
+use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::sdc::Scheme;
 use crate::sdc::{Topology, TriangleSplit};
@@ -26,18 +27,18 @@ pub fn refine_mesh(
     mesh: &PolyMesh,
     points: &[[f64; 3]],
     levels: usize,
-) -> Result<(PolyMesh, Vec<[f64; 3]>), String> {
+) -> Result<(PolyMesh, Vec<[f64; 3]>), Error> {
     if levels == 0 || levels > MAX_LEVELS {
-        return Err(format!("the number of levels must be between 1 and {MAX_LEVELS}, got {levels}"));
+        return Err(Error::Input(format!("the number of levels must be between 1 and {MAX_LEVELS}, got {levels}")));
     }
     if points.len() != mesh.num_vertices() {
-        return Err(format!("{} positions for {} vertices", points.len(), mesh.num_vertices()));
+        return Err(Error::Input(format!("{} positions for {} vertices", points.len(), mesh.num_vertices())));
     }
     // Doo–Sabin's corner rule would happily shrink an open mesh away from its
     // boundary; without boundary rules that is not the scheme, so every scheme
     // requires a closed mesh
     if let Some((a, b)) = mesh.edges().into_iter().find(|&(a, b)| !mesh.is_interior_edge(a, b)) {
-        return Err(format!(
+        return Err(Error::Input(format!(
             "{} needs {}: vertex {} is on the boundary (edge {}-{} has a face on one side only); \
              boundary rules are not implemented{}",
             scheme.name(),
@@ -46,24 +47,24 @@ pub fn refine_mesh(
             a + 1,
             b + 1,
             scheme.boundary_note().map(|n| format!(" ({n})")).unwrap_or_default()
-        ));
+        )));
     }
     // refuse before any work: the first level's size, then the host's growth per level
     let estimate = (1..levels)
         .fold(size_bound(scheme.topology(), mesh), |size, _| size.saturating_mul(growth_per_level(scheme.topology())));
     if estimate > MAX_REFINED_FACES {
-        return Err(format!(
+        return Err(Error::Input(format!(
             "{levels} level(s) would produce about {estimate} faces or vertices (estimated before refining), above the supported {MAX_REFINED_FACES}; use fewer levels"
-        ));
+        )));
     }
     let mut mesh = mesh.clone();
     let mut points: Vec<Option<[f64; 3]>> = points.iter().map(|p| Some(*p)).collect();
     for level in 1..=levels {
         let bound = size_bound(scheme.topology(), &mesh);
         if bound > MAX_REFINED_FACES {
-            return Err(format!(
+            return Err(Error::Input(format!(
                 "level {level} would produce {bound} faces or vertices, above the supported {MAX_REFINED_FACES}; use fewer levels"
-            ));
+            )));
         }
         // non-stationary schemes (4-3 blends in its eon rules over the first steps)
         let step_rules = scheme.at_level(level);
@@ -75,7 +76,9 @@ pub fn refine_mesh(
         }
         let new_points = apply(&stencils, &points);
         if new_points.iter().any(|p| p.is_none_or(|p| !p.iter().all(|x| x.is_finite()))) {
-            return Err(format!("level {level}: a refined position is not finite (coordinates too large?)"));
+            return Err(Error::Input(format!(
+                "level {level}: a refined position is not finite (coordinates too large?)"
+            )));
         }
         points = new_points;
         let mut next = refined.mesh;
@@ -87,7 +90,9 @@ pub fn refine_mesh(
             let old: Vec<Option<[f64; 1]>> = params.iter().map(|&a| Some([a])).collect();
             let new: Option<Vec<f64>> = apply(&rules, &old).into_iter().map(|a| a.map(|a| a[0])).collect();
             next.vertex_params =
-                Some(new.ok_or_else(|| format!("{}: no rule refines the per-vertex {name}", scheme.name()))?);
+                Some(new.ok_or_else(|| {
+                    Error::Input(format!("{}: no rule refines the per-vertex {name}", scheme.name()))
+                })?);
         }
         mesh = next;
     }
@@ -109,7 +114,7 @@ pub fn composite_weights(
     scheme: &dyn Scheme,
     mesh: &PolyMesh,
     levels: std::ops::RangeInclusive<usize>,
-) -> Result<(PolyMesh, CompositeRows), String> {
+) -> Result<(PolyMesh, CompositeRows), Error> {
     let mut mesh = mesh.clone();
     let mut rows: CompositeRows = (0..mesh.num_vertices()).map(|v| Some(super::SparseRow::unit(v))).collect();
     for level in levels {
@@ -163,7 +168,7 @@ fn size_bound(topology: Topology, mesh: &PolyMesh) -> usize {
 }
 
 /// Why the rule for `origin` does not apply, as one line.
-fn not_applicable(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin, level: usize) -> String {
+fn not_applicable(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin, level: usize) -> Error {
     let name = scheme.name();
     let at_level = if level == 1 { String::new() } else { format!(" (at refinement level {level})") };
     let sizes = |faces: &[usize]| faces.iter().map(|&f| mesh.face(f).len().to_string()).collect::<Vec<_>>().join(", ");
@@ -203,7 +208,7 @@ fn not_applicable(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin, level: u
         Some(_) => "; boundary rules are not implemented",
         None => "",
     };
-    format!("{name} needs {needs}{at_level}: {reason}{boundary_note}")
+    Error::Input(format!("{name} needs {needs}{at_level}: {reason}{boundary_note}"))
 }
 
 /// What a scheme needs of its input mesh, for error messages.
@@ -230,7 +235,7 @@ pub fn add_face_control_vertices(
     mesh: &PolyMesh,
     points: &[[f64; 3]],
     scale: f64,
-) -> Result<(PolyMesh, Vec<[f64; 3]>), String> {
+) -> Result<(PolyMesh, Vec<[f64; 3]>), Error> {
     if mesh.has_face_point_on_every_face() {
         return Ok((mesh.clone(), points.to_vec()));
     }
@@ -246,16 +251,18 @@ pub fn add_face_control_vertices(
         fcv.push(Some(pts.len()));
         pts.push([scale * c[0], scale * c[1], scale * c[2]]);
     }
-    let m = PolyMesh::new(pts.len(), mesh.faces().to_vec()).map_err(|e| e.to_string())?.with_face_points(fcv)?;
+    let m = PolyMesh::new(pts.len(), mesh.faces().to_vec())
+        .map_err(|e| Error::Input(e.to_string()))?
+        .with_face_points(fcv)?;
     Ok((m, pts))
 }
 
 /// The four-directional (quasi-four-directional, triangulated) form of a mesh
 /// with face control vertices: every face becomes a fan of triangles around
 /// its FCV (Huang, section 3.2.1: the two forms carry the same points).
-pub fn four_directional(mesh: &PolyMesh, points: Vec<[f64; 3]>) -> Result<(PolyMesh, Vec<[f64; 3]>), String> {
+pub fn four_directional(mesh: &PolyMesh, points: Vec<[f64; 3]>) -> Result<(PolyMesh, Vec<[f64; 3]>), Error> {
     if !mesh.has_face_point_on_every_face() {
-        return Err("the mesh has no face control vertices".into());
+        return Err(Error::Input("the mesh has no face control vertices".into()));
     }
     let mut faces = Vec::new();
     for (face, fcv) in mesh.faces().iter().zip(mesh.face_points.iter().flatten()) {
@@ -263,5 +270,5 @@ pub fn four_directional(mesh: &PolyMesh, points: Vec<[f64; 3]>) -> Result<(PolyM
             faces.push(vec![face[k], face[(k + 1) % face.len()], *fcv]);
         }
     }
-    Ok((PolyMesh::new(points.len(), faces).map_err(|e| e.to_string())?, points))
+    Ok((PolyMesh::new(points.len(), faces).map_err(|e| Error::Input(e.to_string()))?, points))
 }

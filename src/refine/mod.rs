@@ -15,6 +15,7 @@ pub use combine::{Combine, SparseRow};
 // re-exported because every consumer of a refinement step uses them.
 pub use crate::sdc::{Origin, RuleResult, Stencil};
 
+use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::numeric::{Inexact, Weight};
 use crate::sdc::{Scheme, SchemeWeight};
@@ -51,7 +52,7 @@ pub struct Step<W> {
 /// Refine `mesh` once with `rules` (a scheme, or its rules at one level for
 /// non-stationary schemes). Fails when the host cannot refine the mesh or a
 /// weight is not representable in `W` (irrational weights in exact arithmetic).
-pub fn step<W: SchemeWeight>(rules: &dyn Scheme, mesh: &PolyMesh) -> Result<Step<W>, String> {
+pub fn step<W: SchemeWeight>(rules: &dyn Scheme, mesh: &PolyMesh) -> Result<Step<W>, Error> {
     step_selected(rules, mesh, |refined| Ok((0..refined.vertex_origins.len()).collect()))
 }
 
@@ -63,8 +64,8 @@ pub fn step<W: SchemeWeight>(rules: &dyn Scheme, mesh: &PolyMesh) -> Result<Step
 pub fn step_selected<W: SchemeWeight>(
     rules: &dyn Scheme,
     mesh: &PolyMesh,
-    select: impl FnOnce(&Refined) -> Result<Vec<usize>, String>,
-) -> Result<Step<W>, String> {
+    select: impl FnOnce(&Refined) -> Result<Vec<usize>, Error>,
+) -> Result<Step<W>, Error> {
     let refined = connectivity(rules, mesh)?;
     let mut stencils: Vec<Option<Stencil<W>>> = vec![None; refined.vertex_origins.len()];
     let mut done = vec![false; stencils.len()];
@@ -73,7 +74,7 @@ pub fn step_selected<W: SchemeWeight>(
             continue;
         }
         stencils[v] = new_stencil(rules, mesh, &refined, v)
-            .map_err(|Inexact| format!("{}: a weight is not representable exactly", rules.name()))?;
+            .map_err(|Inexact| Error::Numeric(format!("{}: a weight is not representable exactly", rules.name())))?;
     }
     Ok(Step { refined, stencils })
 }
@@ -89,7 +90,7 @@ pub fn new_stencil<W: SchemeWeight>(rules: &dyn Scheme, mesh: &PolyMesh, refined
 /// The refined connectivity of one step without any stencil: for callers that
 /// evaluate stencils lazily, vertex by vertex ([`stencil_at`]), such as
 /// discovery, which needs those of orbit representatives only.
-pub fn connectivity(rules: &dyn Scheme, mesh: &PolyMesh) -> Result<Refined, String> {
+pub fn connectivity(rules: &dyn Scheme, mesh: &PolyMesh) -> Result<Refined, Error> {
     rules.topology().refine(mesh)
 }
 

@@ -11,6 +11,7 @@ use std::path::Path;
 
 use crate::charmap::{characteristic_map, CharMapOptions};
 use crate::claims::{self, ClaimFile, FigureSpec, Outcome, Verdict};
+use crate::error::Error;
 use crate::neighbourhood::Configuration;
 use crate::plot::{self, charmap::RingFigure, spectrum::SpectrumFigure};
 use crate::schemes;
@@ -18,7 +19,7 @@ use crate::schemes;
 /// Every file of the report, path relative to the report folder → contents.
 pub type Files = BTreeMap<String, Vec<u8>>;
 
-pub fn build() -> Result<Files, String> {
+pub fn build() -> Result<Files, Error> {
     let papers = claims::builtin_files()?;
     let outcomes = claims::evaluate_all(&papers)?;
     let mut files = Files::new();
@@ -51,7 +52,7 @@ fn cell(s: &str) -> String {
     s.replace('|', "\\|").replace('\n', " ")
 }
 
-fn paper_page(f: &ClaimFile, outcomes: &[Outcome]) -> Result<(String, Files), String> {
+fn paper_page(f: &ClaimFile, outcomes: &[Outcome]) -> Result<(String, Files), Error> {
     let mut page = format!("# {}\n\n[back to the index](index.md)\n\n", f.title);
     let mut files = Files::new();
     if !f.figures.is_empty() {
@@ -94,7 +95,7 @@ fn paper_page(f: &ClaimFile, outcomes: &[Outcome]) -> Result<(String, Files), St
 }
 
 /// The characteristic rings at the given valence and the spectrum plot.
-fn figures(spec: &FigureSpec) -> Result<(String, Files), String> {
+fn figures(spec: &FigureSpec) -> Result<(String, Files), Error> {
     let params: Vec<(String, String)> = spec.params.iter().map(|(k, v)| (k.clone(), v.clone())).collect();
     let scheme = schemes::build(&spec.scheme, &params)?;
     let tag = if params.is_empty() {
@@ -144,10 +145,12 @@ fn figures(spec: &FigureSpec) -> Result<(String, Files), String> {
 
 /// The admissible intervals of a swept parameter per valence, as `subdlab
 /// sweep --plot` draws them, with the spec's reference bounds.
-fn sweep_figure(spec: &crate::claims::SweepFigureSpec) -> Result<(String, Files), String> {
+fn sweep_figure(spec: &crate::claims::SweepFigureSpec) -> Result<(String, Files), Error> {
     use crate::sweep::{admissible, convergent, run, Grid};
-    let (name, range) =
-        spec.param.split_once('=').ok_or_else(|| format!("sweep param '{}' is not NAME=START:END:STEP", spec.param))?;
+    let (name, range) = spec
+        .param
+        .split_once('=')
+        .ok_or_else(|| Error::Claim(format!("sweep param '{}' is not NAME=START:END:STEP", spec.param)))?;
     let mut params: Vec<(String, String)> = spec.params.iter().map(|(k, v)| (k.clone(), v.clone())).collect();
     params.push((name.to_string(), range.to_string()));
     let mut grid = Grid::parse(&spec.scheme, &spec.valences, None, &params, spec.charmap)?;
@@ -181,16 +184,17 @@ fn sweep_figure(spec: &crate::claims::SweepFigureSpec) -> Result<(String, Files)
     Ok((md, files))
 }
 
-fn svg<F: plot::Figure>(fig: &F) -> Result<Vec<u8>, String> {
+fn svg<F: plot::Figure>(fig: &F) -> Result<Vec<u8>, Error> {
     plot::render_svg(fig).map(|s| s.into_bytes())
 }
 
 /// Write the report into `dir` (each file atomically).
-pub fn write(dir: &Path, files: &Files) -> Result<(), String> {
+pub fn write(dir: &Path, files: &Files) -> Result<(), Error> {
     for (name, bytes) in files {
         let path = dir.join(name);
         if let Some(parent) = path.parent() {
-            std::fs::create_dir_all(parent).map_err(|e| format!("cannot create {}: {e}", parent.display()))?;
+            std::fs::create_dir_all(parent)
+                .map_err(|e| Error::Message(format!("cannot create {}: {e}", parent.display())))?;
         }
         crate::io::write_atomic(&path, bytes)?;
     }

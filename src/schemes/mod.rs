@@ -28,6 +28,7 @@ pub mod user;
 
 // The scheme interface lives in the description layer below the engine
 // (`crate::sdc`); re-exported here because every scheme file implements it.
+use crate::error::Error;
 pub use crate::sdc::params;
 pub use crate::sdc::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeInfo, SchemeWeight};
 
@@ -53,20 +54,20 @@ pub fn known_names() -> Vec<&'static str> {
 /// The scheme as a mesh scheme: regular-lattice schemes refine meshes and give
 /// characteristic maps through their masks on oriented quad meshes; curve
 /// schemes have no mesh rules.
-fn on_mesh(built: registry::Built, name: &str) -> Result<Box<dyn Scheme>, String> {
+fn on_mesh(built: registry::Built, name: &str) -> Result<Box<dyn Scheme>, Error> {
     match built {
         registry::Built::Mesh(s) => Ok(s),
         registry::Built::Lattice(l) => Ok(Box::new(lattice_on_mesh::LatticeOnMesh::new(l))),
-        registry::Built::Curve(_) => {
-            Err(format!("'{name}' is a curve scheme: it has no mesh rules (analyse it with `subdlab curve {name}`)"))
-        }
+        registry::Built::Curve(_) => Err(Error::Input(format!(
+            "'{name}' is a curve scheme: it has no mesh rules (analyse it with `subdlab curve {name}`)"
+        ))),
     }
 }
 
 /// Build a scheme by name with `name=value` parameter overrides.
-pub fn build(name: &str, overrides: &[(String, String)]) -> Result<Box<dyn Scheme>, String> {
+pub fn build(name: &str, overrides: &[(String, String)]) -> Result<Box<dyn Scheme>, Error> {
     let entry = registry::find(name)
-        .ok_or_else(|| format!("unknown scheme '{name}'; known schemes: {}", known_names().join(", ")))?;
+        .ok_or_else(|| Error::Input(format!("unknown scheme '{name}'; known schemes: {}", known_names().join(", "))))?;
     on_mesh(entry.build(overrides)?, name)
 }
 
@@ -74,6 +75,6 @@ pub fn build(name: &str, overrides: &[(String, String)]) -> Result<Box<dyn Schem
 /// argument that ends in `.toml` or names an existing file is loaded as a
 /// file, anything else is a built-in name. The entry point for command-line
 /// arguments that need a mesh scheme.
-pub fn resolve(name_or_path: &str, overrides: &[(String, String)]) -> Result<Box<dyn Scheme>, String> {
+pub fn resolve(name_or_path: &str, overrides: &[(String, String)]) -> Result<Box<dyn Scheme>, Error> {
     on_mesh(registry::resolve(name_or_path, overrides)?, name_or_path)
 }

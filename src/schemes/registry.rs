@@ -169,7 +169,7 @@ pub fn is_file_argument(name_or_path: &str) -> bool {
 /// is only read as far as its `domain` key). `Err` for an unknown name.
 pub fn family_of(name_or_path: &str) -> Result<Family, Error> {
     if is_file_argument(name_or_path) {
-        return files::family(Path::new(name_or_path)).map_err(Error::File);
+        return files::family(Path::new(name_or_path));
     }
     find(name_or_path).map(|e| e.family()).ok_or_else(|| unknown(name_or_path))
 }
@@ -183,7 +183,7 @@ fn unknown(name: &str) -> Error {
 /// name a scheme.
 pub fn resolve(name_or_path: &str, overrides: &[(String, String)]) -> Result<Built, Error> {
     if is_file_argument(name_or_path) {
-        return Ok(files::load(Path::new(name_or_path), overrides)?);
+        return files::load(Path::new(name_or_path), overrides);
     }
     find(name_or_path).ok_or_else(|| unknown(name_or_path))?.build(overrides)
 }

@@ -41,7 +41,7 @@ impl Params {
         let mut values = Vec::new();
         for spec in specs.iter().filter(|s| !s.default.is_empty()) {
             // a default is part of the program: failing to parse it is a bug, not an input error
-            values.push((spec.name.to_string(), ParamValue::parse(spec.default).map_err(Error::Message)?));
+            values.push((spec.name.to_string(), ParamValue::parse(spec.default)?));
         }
         for (name, text) in overrides {
             let Some(spec) = specs.iter().find(|s| s.name == name) else {

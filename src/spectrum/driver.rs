@@ -21,6 +21,7 @@
 use super::exact::{self, ExactSummary};
 use super::{decompose, decompose_dft, sort_eigenvalues, verdict, Decomposition, Method, Spectrum, MAX_FULL_SIZE};
 use crate::dft::{lazy_full_by_rotation, Orbits};
+use crate::error::Error;
 use crate::matrix::{FullMatrix, LocalMatrix};
 use crate::neighbourhood::{NeighbourhoodKind, VertexLabel};
 use crate::numeric::Rational;
@@ -33,9 +34,9 @@ pub type Rows<W> = Vec<Vec<(usize, W)>>;
 /// its labels.
 pub trait RowSource {
     /// The rows `which` in floating point.
-    fn float_rows(&self, which: &[usize]) -> Result<Rows<f64>, String>;
+    fn float_rows(&self, which: &[usize]) -> Result<Rows<f64>, Error>;
     /// All of S in floating point (it may be assembled on first use).
-    fn float_matrix(&self) -> Result<FullMatrix<f64>, String>;
+    fn float_matrix(&self) -> Result<FullMatrix<f64>, Error>;
     /// The rows `which` exactly; None when a weight is not rational.
     fn exact_rows(&self, which: &[usize]) -> Option<Rows<Rational>>;
     /// All of S exactly; None when a weight is not rational.
@@ -50,10 +51,10 @@ pub struct Assembled {
 }
 
 impl RowSource for Assembled {
-    fn float_rows(&self, which: &[usize]) -> Result<Rows<f64>, String> {
+    fn float_rows(&self, which: &[usize]) -> Result<Rows<f64>, Error> {
         Ok(which.iter().map(|&k| self.float.rows[k].clone()).collect())
     }
-    fn float_matrix(&self) -> Result<FullMatrix<f64>, String> {
+    fn float_matrix(&self) -> Result<FullMatrix<f64>, Error> {
         Ok(FullMatrix::ready(self.float.clone()))
     }
     fn exact_rows(&self, which: &[usize]) -> Option<Rows<Rational>> {
@@ -107,7 +108,7 @@ pub struct Solved {
 }
 
 /// The driver: method, float eigen-stage, exact confirmation, verdict.
-pub fn solve(p: Problem) -> Result<Solved, String> {
+pub fn solve(p: Problem) -> Result<Solved, Error> {
     let size = p.labels.len();
     let (period, n) = (p.period, p.sectors);
     let symmetric = period < n;
@@ -115,11 +116,11 @@ pub fn solve(p: Problem) -> Result<Solved, String> {
     if method == Method::Full && size > MAX_FULL_SIZE {
         // refused before the O(size³) work, with the estimate
         let minutes = (size as f64 / 1800.0).powi(3);
-        return Err(format!(
+        return Err(Error::Input(format!(
             "the whole-matrix method needs a dense {size}×{size} eigenproblem, above the supported {MAX_FULL_SIZE}×{MAX_FULL_SIZE} \
              (its cost grows as the cube of the size: about {minutes:.1} min here){}",
             if symmetric { "; use --method dft" } else { "; this configuration has no rotation symmetry: use a smaller valence" }
-        ));
+        )));
     }
     let kind = p.identity.neighbourhood;
     let orbits = Orbits::from_labels(&p.labels, period, n);

@@ -12,6 +12,7 @@
 //! is accurate even when the members are not). A cluster whose vectors do not
 //! satisfy B x = λ̄ x was several distinct eigenvalues and is split again.
 
+use crate::error::Error;
 use faer::c64;
 use faer::Mat;
 
@@ -33,16 +34,16 @@ pub struct BlockEigen {
     pub right: Vec<Vec<c64>>,
 }
 
-pub fn block_eigen(b: &Mat<c64>) -> Result<Vec<BlockEigen>, String> {
+pub fn block_eigen(b: &Mat<c64>) -> Result<Vec<BlockEigen>, Error> {
     let n = b.nrows();
     if n == 0 {
         return Ok(Vec::new());
     }
     let finite = (0..n).all(|i| (0..n).all(|j| b[(i, j)].re.is_finite() && b[(i, j)].im.is_finite()));
     if !finite {
-        return Err("matrix has non-finite entries".into());
+        return Err(Error::Numeric("matrix has non-finite entries".into()));
     }
-    let evd = b.eigen().map_err(|e| format!("eigen-decomposition failed: {e:?}"))?;
+    let evd = b.eigen().map_err(|e| Error::Numeric(format!("eigen-decomposition failed: {e:?}")))?;
     let vals: Vec<c64> = (0..n).map(|k| evd.S().column_vector()[k]).collect();
     let vecs: Vec<Vec<c64>> = (0..n).map(|k| (0..n).map(|i| evd.U()[(i, k)]).collect()).collect();
     let norm = b.norm_l2().max(1e-300);
@@ -132,10 +133,10 @@ fn cluster(vals: &[c64], tol: f64) -> Vec<Vec<usize>> {
 }
 
 /// Right singular vectors of B − λI whose singular values are below tol.
-fn right_null_space(b: &Mat<c64>, lambda: c64, tol: f64) -> Result<Vec<Vec<c64>>, String> {
+fn right_null_space(b: &Mat<c64>, lambda: c64, tol: f64) -> Result<Vec<Vec<c64>>, Error> {
     let n = b.nrows();
     let shifted = Mat::<c64>::from_fn(n, n, |i, j| if i == j { b[(i, j)] - lambda } else { b[(i, j)] });
-    let svd = shifted.svd().map_err(|e| format!("SVD failed: {e:?}"))?;
+    let svd = shifted.svd().map_err(|e| Error::Numeric(format!("SVD failed: {e:?}")))?;
     let s = svd.S().column_vector();
     Ok((0..n).rev().filter(|&k| s[k].re < tol).map(|k| (0..n).map(|i| svd.V()[(i, k)]).collect()).collect())
 }
@@ -143,10 +144,10 @@ fn right_null_space(b: &Mat<c64>, lambda: c64, tol: f64) -> Result<Vec<Vec<c64>>
 /// `count` left eigenvectors of λ: vectors y with y^H (B − λI) ≈ 0, i.e. the
 /// null space of the adjoint, from the singular vectors of the smallest
 /// singular values.
-pub fn left_eigenvectors(b: &Mat<c64>, lambda: c64, count: usize) -> Result<Vec<Vec<c64>>, String> {
+pub fn left_eigenvectors(b: &Mat<c64>, lambda: c64, count: usize) -> Result<Vec<Vec<c64>>, Error> {
     let n = b.nrows();
     let shifted = Mat::<c64>::from_fn(n, n, |i, j| if i == j { b[(i, j)] - lambda } else { b[(i, j)] });
-    let svd = shifted.svd().map_err(|e| format!("SVD failed: {e:?}"))?;
+    let svd = shifted.svd().map_err(|e| Error::Numeric(format!("SVD failed: {e:?}")))?;
     let u = svd.U();
     Ok((0..count.min(n)).map(|t| (0..n).map(|i| u[(i, n - 1 - t)]).collect()).collect())
 }

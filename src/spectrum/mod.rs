@@ -10,6 +10,7 @@ pub mod stencils;
 pub mod strip;
 pub mod verdict;
 
+use crate::error::Error;
 use faer::c64;
 use faer::Mat;
 use rayon::prelude::*;
@@ -214,7 +215,7 @@ pub struct Analysis {
     pub spectrum: Spectrum,
 }
 
-pub fn analyse(scheme: &dyn Scheme, config: &Configuration, opts: &Options) -> Result<Analysis, String> {
+pub fn analyse(scheme: &dyn Scheme, config: &Configuration, opts: &Options) -> Result<Analysis, Error> {
     let discovered = discover(scheme, config)?;
     let kind = opts.neighbourhood;
     let n = config.valence();
@@ -252,11 +253,11 @@ struct MeshRows<'a> {
 }
 
 impl driver::RowSource for MeshRows<'_> {
-    fn float_rows(&self, which: &[usize]) -> Result<driver::Rows<f64>, String> {
-        assemble_rows_f64(self.scheme, self.discovered, self.kind, which).map_err(|e| e.to_string())
+    fn float_rows(&self, which: &[usize]) -> Result<driver::Rows<f64>, Error> {
+        Ok(assemble_rows_f64(self.scheme, self.discovered, self.kind, which)?)
     }
-    fn float_matrix(&self) -> Result<FullMatrix<f64>, String> {
-        lazy_full_f64(self.scheme, self.discovered, self.kind).map_err(|e| e.to_string())
+    fn float_matrix(&self) -> Result<FullMatrix<f64>, Error> {
+        Ok(lazy_full_f64(self.scheme, self.discovered, self.kind)?)
     }
     fn exact_rows(&self, which: &[usize]) -> Option<driver::Rows<Rational>> {
         assemble_rows::<Rational>(self.scheme, self.discovered, self.kind, which).ok()
@@ -276,7 +277,7 @@ pub struct Decomposition {
 
 /// The eigen-stage of the pipeline on its own (the benchmark times this):
 /// `period` is the configuration's rotation period, `n` its valence.
-pub fn decompose(matrix: &LocalMatrix<f64>, period: usize, n: usize, method: Method) -> Result<Decomposition, String> {
+pub fn decompose(matrix: &LocalMatrix<f64>, period: usize, n: usize, method: Method) -> Result<Decomposition, Error> {
     match method {
         Method::Dft => {
             let orbits = Orbits::new(matrix, period, n);
@@ -293,11 +294,11 @@ pub fn decompose(matrix: &LocalMatrix<f64>, period: usize, n: usize, method: Met
 
 /// The Fourier path from the representative rows (`rows[o]`: the row of S of
 /// orbit o's representative, over all columns).
-pub fn decompose_dft(rows: &[&[(usize, f64)]], orbits: Orbits) -> Result<Decomposition, String> {
+pub fn decompose_dft(rows: &[&[(usize, f64)]], orbits: Orbits) -> Result<Decomposition, Error> {
     let blocks = fourier_blocks_from_rows(rows, &orbits);
     // the blocks are independent eigenproblems: solved side by side, and
     // collected in block order, so the result does not depend on scheduling
-    let solved: Vec<Result<Vec<eigen::BlockEigen>, String>> =
+    let solved: Vec<Result<Vec<eigen::BlockEigen>, Error>> =
         blocks.par_iter().map(|b| eigen::block_eigen(&b.matrix)).collect();
     let mut all = Vec::new();
     for (b, eigen) in blocks.iter().zip(solved) {
@@ -426,7 +427,7 @@ pub fn eigenvalue_order(a: c64, b: c64) -> std::cmp::Ordering {
 }
 
 /// The regular configuration's spectrum with default options: the common call.
-pub fn spectrum_of(scheme: &dyn Scheme, valence: usize) -> Result<Spectrum, String> {
+pub fn spectrum_of(scheme: &dyn Scheme, valence: usize) -> Result<Spectrum, Error> {
     let config = Configuration::regular(scheme, valence)?;
     Ok(analyse(scheme, &config, &Options::default())?.spectrum)
 }

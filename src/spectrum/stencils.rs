@@ -11,6 +11,7 @@ use faer::c64;
 use serde::Serialize;
 
 use super::Spectrum;
+use crate::error::Error;
 
 #[derive(Clone, Debug, Serialize)]
 pub struct StencilWeight {
@@ -44,21 +45,21 @@ fn weights(spec: &Spectrum, w: &[f64]) -> Vec<StencilWeight> {
         .collect()
 }
 
-pub fn limit_stencil(spec: &Spectrum) -> Result<Vec<f64>, String> {
-    let e = spec.eigenvalues.first().ok_or("empty spectrum")?;
+pub fn limit_stencil(spec: &Spectrum) -> Result<Vec<f64>, Error> {
+    let e = spec.eigenvalues.first().ok_or_else(|| Error::Numeric("empty spectrum".into()))?;
     if (e.re - 1.0).abs() > 1e-9 || e.algebraic_multiplicity != 1 {
-        return Err(format!("no simple eigenvalue 1 (dominant is {}): no limit stencil", e.display()));
+        return Err(Error::Numeric(format!("no simple eigenvalue 1 (dominant is {}): no limit stencil", e.display())));
     }
     let l = &spec.left_vectors(e)[0];
     let sum: c64 = l.iter().sum();
     if sum.norm() < 1e-12 {
-        return Err("left eigenvector of 1 sums to zero".into());
+        return Err(Error::Numeric("left eigenvector of 1 sums to zero".into()));
     }
     Ok(l.iter().map(|z| (z / sum).re).collect())
 }
 
-pub fn tangent_stencils(spec: &Spectrum) -> Result<Vec<Vec<f64>>, String> {
-    let e = spec.eigenvalues.get(1).ok_or("no subdominant eigenvalue")?;
+pub fn tangent_stencils(spec: &Spectrum) -> Result<Vec<Vec<f64>>, Error> {
+    let e = spec.eigenvalues.get(1).ok_or_else(|| Error::Numeric("no subdominant eigenvalue".into()))?;
     let mut out: Vec<Vec<f64>> = Vec::new();
     {
         for l in &spec.left_vectors(e) {
@@ -114,7 +115,7 @@ fn independent(basis: &[Vec<f64>], v: &[f64]) -> bool {
     v.iter().map(|x| x * x).sum::<f64>().sqrt() >= 1e-10 && span_residual(basis, v) > 1e-6
 }
 
-pub fn stencils(spec: &Spectrum) -> Result<Stencils, String> {
+pub fn stencils(spec: &Spectrum) -> Result<Stencils, Error> {
     let limit = limit_stencil(spec)?;
     let tangent = tangent_stencils(spec)?;
     Ok(Stencils {

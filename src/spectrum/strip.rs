@@ -22,6 +22,7 @@ use faer::Mat;
 use num_traits::Zero;
 
 use crate::engine::closure::{assemble, ClosureError, Refinement};
+use crate::error::Error;
 use crate::neighbourhood::{build_patch, Configuration};
 use crate::numeric::Rational;
 use crate::refine::{step_selected, Step};
@@ -49,19 +50,22 @@ struct Shifted<'a> {
 
 impl Shifted<'_> {
     /// The stencil of the refined point at fine position `at`, over coarse positions.
-    fn stencil(&self, at: &[i64; 2]) -> Result<Vec<([i64; 2], Rational)>, String> {
-        let v = *self.fine.get(at).ok_or_else(|| format!("no refined point at {at:?}"))?;
-        let st = self.step.stencils[v].as_ref().ok_or_else(|| format!("no rule for the refined point at {at:?}"))?;
+    fn stencil(&self, at: &[i64; 2]) -> Result<Vec<([i64; 2], Rational)>, Error> {
+        // a point or rule missing on the patch: not determined by it
+        let v = *self.fine.get(at).ok_or_else(|| Error::NotDetermined(format!("no refined point at {at:?}")))?;
+        let st = self.step.stencils[v]
+            .as_ref()
+            .ok_or_else(|| Error::NotDetermined(format!("no rule for the refined point at {at:?}")))?;
         Ok(st.terms.iter().map(|(u, w)| (self.coarse[u], w.clone())).collect())
     }
 }
 
 impl Refinement for Shifted<'_> {
     type Point = [i64; 2];
-    fn dependencies(&self, q: &[i64; 2]) -> Result<Vec<[i64; 2]>, String> {
+    fn dependencies(&self, q: &[i64; 2]) -> Result<Vec<[i64; 2]>, Error> {
         Ok(self.stencil(q)?.into_iter().map(|(p, _)| p).collect())
     }
-    fn successor(&self, p: &[i64; 2]) -> Result<[i64; 2], String> {
+    fn successor(&self, p: &[i64; 2]) -> Result<[i64; 2], Error> {
         Ok([p[0] + self.shift[0], p[1] + self.shift[1]])
     }
 }
@@ -78,26 +82,30 @@ pub fn window_matrices(
     spokes: &[[i64; 2]],
     window: &[[i64; 2]],
     shifts: &[[i64; 2]],
-) -> Result<Vec<Vec<Vec<Rational>>>, String> {
+) -> Result<Vec<Vec<Vec<Rational>>>, Error> {
     if spokes.len() != config.valence() {
-        return Err(format!("{} spokes for valence {}", spokes.len(), config.valence()));
+        return Err(Error::Input(format!("{} spokes for valence {}", spokes.len(), config.valence())));
     }
     let reach = window.iter().chain(shifts).flat_map(|p| [p[0].abs(), p[1].abs()]).max().unwrap_or(0);
     let rings = (2 * reach + 4) as usize;
     let (patch, _) = build_patch(config, rings);
-    let chart = patch.chart.as_ref().ok_or("the patch has no lattice chart")?;
+    let chart = patch.chart.as_ref().ok_or_else(|| Error::Message("the patch has no lattice chart".into()))?;
     let coarse: HashMap<usize, [i64; 2]> =
         chart.vertex_coords.iter().enumerate().map(|(v, c)| (v, planar(spokes, c.sector, c.i, c.j))).collect();
     // the stencils of the refined points at the window's positions, shifted
     let mut fine: HashMap<[i64; 2], usize> = HashMap::new();
     let step = step_selected::<Rational>(scheme, &patch, |refined| {
-        let fine_chart = refined.mesh.chart.as_ref().ok_or("the refined patch has no lattice chart")?;
+        let fine_chart = refined
+            .mesh
+            .chart
+            .as_ref()
+            .ok_or_else(|| Error::Message("the refined patch has no lattice chart".into()))?;
         fine =
             fine_chart.vertex_coords.iter().enumerate().map(|(v, c)| (planar(spokes, c.sector, c.i, c.j), v)).collect();
         shifts
             .iter()
             .flat_map(|t| window.iter().map(move |p| [p[0] + t[0], p[1] + t[1]]))
-            .map(|at| fine.get(&at).copied().ok_or_else(|| format!("no refined point at {at:?}")))
+            .map(|at| fine.get(&at).copied().ok_or_else(|| Error::NotDetermined(format!("no refined point at {at:?}"))))
             .collect()
     })?;
     shifts
@@ -105,10 +113,11 @@ pub fn window_matrices(
         .map(|&shift| {
             let on_window = Shifted { step: &step, coarse: &coarse, fine: &fine, shift };
             let m = assemble(&on_window, window, |at| on_window.stencil(at)).map_err(|e| match e {
-                ClosureError::NotInvariant { fine: at, needs } => {
-                    format!("the refined point at {at:?} depends on {needs:?}, outside the window (not invariant)")
-                }
-                e => e.to_string(),
+                ClosureError::NotInvariant { fine: at, needs } => Error::Input(format!(
+                    "the refined point at {at:?} depends on {needs:?}, outside the window (not invariant)"
+                )),
+                // a stencil missing on the patch: not determined by it
+                e => Error::NotDetermined(e.to_string()),
             })?;
             Ok(m.dense())
         })
@@ -132,17 +141,17 @@ fn norm_inf(m: &Mat<f64>) -> f64 {
     (0..m.nrows()).map(|i| (0..m.ncols()).map(|j| m[(i, j)].abs()).sum::<f64>()).fold(0.0, f64::max)
 }
 
-fn spectral_radius(m: &Mat<f64>) -> Result<f64, String> {
-    let ev = m.eigenvalues().map_err(|e| format!("eigenvalues failed: {e:?}"))?;
+fn spectral_radius(m: &Mat<f64>) -> Result<f64, Error> {
+    let ev = m.eigenvalues().map_err(|e| Error::Numeric(format!("eigenvalues failed: {e:?}")))?;
     Ok(ev.iter().map(|z| z.norm()).fold(0.0, f64::max))
 }
 
 /// Upper bound ρ^[length] (the ∞-norm of every product of `length` factors)
 /// and lower bound (spectral radii of the products of at most `lower_length`
 /// factors) on the joint spectral radius of `mats`.
-pub fn jsr_bounds(mats: &[Mat<f64>], length: usize, lower_length: usize) -> Result<JsrBounds, String> {
+pub fn jsr_bounds(mats: &[Mat<f64>], length: usize, lower_length: usize) -> Result<JsrBounds, Error> {
     if mats.is_empty() || length == 0 {
-        return Err("no matrices or an empty product".into());
+        return Err(Error::Input("no matrices or an empty product".into()));
     }
     // depth-first over all words, reusing prefixes: P_k = A_{ε_k} P_{k−1}
     let mut upper: f64 = 0.0;
@@ -177,9 +186,9 @@ pub fn to_f64(m: &[Vec<Rational>]) -> Mat<f64> {
 
 /// An orthonormal basis of the orthogonal complement of the columns of `w`
 /// (n × k, independent columns), as the columns of an n × (n − k) matrix.
-pub fn orthogonal_complement(w: &Mat<f64>) -> Result<Mat<f64>, String> {
+pub fn orthogonal_complement(w: &Mat<f64>) -> Result<Mat<f64>, Error> {
     let (n, k) = (w.nrows(), w.ncols());
-    let svd = w.svd().map_err(|e| format!("svd failed: {e:?}"))?;
+    let svd = w.svd().map_err(|e| Error::Numeric(format!("svd failed: {e:?}")))?;
     let u = svd.U();
     Ok(Mat::from_fn(n, n - k, |i, j| u[(i, k + j)]))
 }
@@ -251,7 +260,7 @@ pub type RationalEigenvalue = (Rational, usize, usize);
 /// geometric multiplicity (candidates come from the floating-point spectrum
 /// and are confirmed exactly); the second value is the number of eigenvalues
 /// (with multiplicity) that are not rational.
-pub fn rational_spectrum(m: &[Vec<Rational>]) -> Result<(Vec<RationalEigenvalue>, usize), String> {
+pub fn rational_spectrum(m: &[Vec<Rational>]) -> Result<(Vec<RationalEigenvalue>, usize), Error> {
     use crate::numeric::exact::{q, rational_roots, QMatrix};
     let n = m.len();
     let mut qm = QMatrix::zeros(n);
@@ -260,7 +269,7 @@ pub fn rational_spectrum(m: &[Vec<Rational>]) -> Result<(Vec<RationalEigenvalue>
             qm.set(i, j, x.clone());
         }
     }
-    let ev = to_f64(m).eigenvalues().map_err(|e| format!("eigenvalues failed: {e:?}"))?;
+    let ev = to_f64(m).eigenvalues().map_err(|e| Error::Numeric(format!("eigenvalues failed: {e:?}")))?;
     let mut candidates = vec![q(0, 1)];
     for z in ev {
         if let Some((p, d)) = crate::numeric::recognise::small_rational(z.re, 4096, 1e-6) {

@@ -7,6 +7,7 @@
 use serde::Serialize;
 
 use crate::charmap::{check_map, CharMapOptions};
+use crate::error::Error;
 use crate::neighbourhood::{Configuration, NeighbourhoodKind};
 use crate::schemes;
 use crate::spectrum::{analyse, Options};
@@ -60,13 +61,13 @@ impl Grid {
         faces: Option<&str>,
         params: &[(String, String)],
         charmap: bool,
-    ) -> Result<Grid, String> {
+    ) -> Result<Grid, Error> {
         let mut param = None;
         let mut fixed = Vec::new();
         for (k, v) in params {
             if v.contains(':') {
                 if param.is_some() {
-                    return Err("only one parameter can be swept (NAME=START:END:STEP)".into());
+                    return Err(Error::Input("only one parameter can be swept (NAME=START:END:STEP)".into()));
                 }
                 param = Some((k.clone(), parse_range(v)?));
             } else {
@@ -76,7 +77,10 @@ impl Grid {
         let valences = parse_valences(valences)?;
         if let Some(f) = faces {
             if valences != [f.chars().count()] {
-                return Err(format!("--faces {f} fixes the valence to {}; use --valences {0}..{0}", f.chars().count()));
+                return Err(Error::Input(format!(
+                    "--faces {f} fixes the valence to {}; use --valences {0}..{0}",
+                    f.chars().count()
+                )));
             }
         }
         let faces = faces.map(str::to_string);
@@ -95,7 +99,7 @@ impl Grid {
     }
 
     /// The configuration of a point at valence n: regular, or the face sequence.
-    pub fn configuration(&self, scheme: &dyn schemes::Scheme, n: usize) -> Result<Configuration, String> {
+    pub fn configuration(&self, scheme: &dyn schemes::Scheme, n: usize) -> Result<Configuration, Error> {
         match &self.faces {
             Some(f) => Configuration::with_faces(scheme, n, f),
             None => Configuration::regular(scheme, n),
@@ -104,7 +108,7 @@ impl Grid {
 
     /// Levels and resolution of the characteristic-map check, validated;
     /// each left out keeps `subdlab charmap`'s default.
-    pub fn set_charmap_options(&mut self, levels: Option<usize>, resolution: Option<usize>) -> Result<(), String> {
+    pub fn set_charmap_options(&mut self, levels: Option<usize>, resolution: Option<usize>) -> Result<(), Error> {
         let d = CharMapOptions::default();
         self.charmap_options = CharMapOptions::checked(levels.unwrap_or(d.levels), resolution.unwrap_or(d.resolution))?;
         Ok(())
@@ -122,9 +126,9 @@ impl Grid {
     /// A reference bound `EXPR` in the valence `n` (alias `k`) and the fixed
     /// parameters, evaluated at every valence of the grid (for figures: e.g. a
     /// bound a paper states, drawn against the computed intervals).
-    pub fn bound(&self, text: &str) -> Result<Vec<(usize, f64)>, String> {
+    pub fn bound(&self, text: &str) -> Result<Vec<(usize, f64)>, Error> {
         use crate::numeric::{expr::Expr, ParamValue};
-        let expr = Expr::parse(text).map_err(|e| format!("bound '{text}': {e}"))?;
+        let expr = Expr::parse(text).map_err(|e| Error::Input(format!("bound '{text}': {e}")))?;
         let mut env = crate::numeric::expr::Env::new();
         for (k, v) in &self.fixed {
             env.insert(k.clone(), ParamValue::parse(v)?);
@@ -135,9 +139,9 @@ impl Grid {
                 for var in ["n", "k"] {
                     env.insert(var.into(), ParamValue::from_ratio(n as i64, 1));
                 }
-                let z = expr.eval(&env).map_err(|e| format!("bound '{text}' at n = {n}: {e}"))?;
+                let z = expr.eval(&env).map_err(|e| Error::Input(format!("bound '{text}' at n = {n}: {e}")))?;
                 if !z.re.is_finite() || z.im.abs() > 1e-12 * (1.0 + z.re.abs()) {
-                    return Err(format!("bound '{text}' is not a finite real number at n = {n}"));
+                    return Err(Error::Input(format!("bound '{text}' is not a finite real number at n = {n}")));
                 }
                 Ok((n, z.re))
             })
@@ -146,34 +150,36 @@ impl Grid {
 }
 
 /// `"a:b:step"` → the values a, a + step, ..., up to b (exact decimal text).
-pub fn parse_range(s: &str) -> Result<Vec<String>, String> {
+pub fn parse_range(s: &str) -> Result<Vec<String>, Error> {
     let parts: Vec<&str> = s.split(':').collect();
-    let [a, b, step] = parts[..] else { return Err(format!("'{s}' is not of the form START:END:STEP")) };
-    let p = |t: &str| crate::numeric::ParamValue::parse(t).map_err(|e| format!("'{s}': {e}"));
+    let [a, b, step] = parts[..] else { return Err(Error::Input(format!("'{s}' is not of the form START:END:STEP"))) };
+    let p = |t: &str| crate::numeric::ParamValue::parse(t).map_err(|e| Error::Input(format!("'{s}': {e}")));
     let (a, b, step) = (p(a)?, p(b)?, p(step)?);
     let (Some(qa), Some(qb), Some(qs)) = (a.exact, b.exact, step.exact) else {
-        return Err(format!("'{s}': use exact decimals or fractions"));
+        return Err(Error::Input(format!("'{s}': use exact decimals or fractions")));
     };
     if qs <= crate::numeric::exact::q(0, 1) || qb < qa {
-        return Err(format!("'{s}': need START <= END and STEP > 0"));
+        return Err(Error::Input(format!("'{s}': need START <= END and STEP > 0")));
     }
     let count = ((&qb - &qa) / &qs).floor();
-    let count: usize = num_traits::ToPrimitive::to_usize(&count.to_integer()).ok_or("too many values")?;
+    let count: usize =
+        num_traits::ToPrimitive::to_usize(&count.to_integer()).ok_or_else(|| Error::Input("too many values".into()))?;
     if count >= MAX_POINTS {
-        return Err(format!("'{s}' has more than {MAX_POINTS} values"));
+        return Err(Error::Input(format!("'{s}' has more than {MAX_POINTS} values")));
     }
     Ok((0..=count).map(|k| (qa.clone() + qs.clone() * crate::numeric::exact::q(k as i64, 1)).to_string()).collect())
 }
 
 /// `"3..100"` → 3, 4, ..., 100.
-pub fn parse_valences(s: &str) -> Result<Vec<usize>, String> {
-    let (a, b) = s.split_once("..").ok_or_else(|| format!("valence range '{s}' is not of the form A..B"))?;
+pub fn parse_valences(s: &str) -> Result<Vec<usize>, Error> {
+    let (a, b) =
+        s.split_once("..").ok_or_else(|| Error::Input(format!("valence range '{s}' is not of the form A..B")))?;
     let (a, b): (usize, usize) = (
-        a.trim().parse().map_err(|_| format!("bad valence range '{s}'"))?,
-        b.trim().parse().map_err(|_| format!("bad valence range '{s}'"))?,
+        a.trim().parse().map_err(|_| Error::Input(format!("bad valence range '{s}'")))?,
+        b.trim().parse().map_err(|_| Error::Input(format!("bad valence range '{s}'")))?,
     );
     if a > b {
-        return Err(format!("bad valence range '{s}'"));
+        return Err(Error::Input(format!("bad valence range '{s}'")));
     }
     crate::neighbourhood::configuration::check_valence(a)?;
     crate::neighbourhood::configuration::check_valence(b)?;
@@ -186,7 +192,7 @@ pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
     if let (Some((name, _)), Some(v)) = (&grid.param, value) {
         params.push((name.clone(), v.to_string()));
     }
-    let run = || -> Result<Point, String> {
+    let run = || -> Result<Point, Error> {
         let scheme = schemes::resolve(&grid.scheme, &params)?;
         let config = grid.configuration(scheme.as_ref(), n)?;
         let opts = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
@@ -224,18 +230,18 @@ pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
         convergent: false,
         c1_spectral: false,
         charmap: None,
-        error: Some(e),
+        error: Some(e.to_string()),
     })
 }
 
 /// Every point of the grid, in order, on all available cores.
-pub fn run(grid: &Grid, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Vec<Point>, String> {
+pub fn run(grid: &Grid, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Vec<Point>, Error> {
     run_on(grid, 0, progress)
 }
 
 /// Every point of the grid, in order, on `threads` worker threads (0: one per
 /// available core). The points do not depend on the thread count.
-pub fn run_on(grid: &Grid, threads: usize, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Vec<Point>, String> {
+pub fn run_on(grid: &Grid, threads: usize, progress: &(dyn Fn(usize, usize) + Sync)) -> Result<Vec<Point>, Error> {
     let values: Vec<Option<String>> = match &grid.param {
         Some((_, v)) => v.iter().cloned().map(Some).collect(),
         None => vec![None],
@@ -243,7 +249,7 @@ pub fn run_on(grid: &Grid, threads: usize, progress: &(dyn Fn(usize, usize) + Sy
     let tasks: Vec<(usize, Option<String>)> =
         grid.valences.iter().flat_map(|&n| values.iter().map(move |v| (n, v.clone()))).collect();
     if tasks.len() > MAX_POINTS {
-        return Err(format!("{} grid points, above the supported {MAX_POINTS}", tasks.len()));
+        return Err(Error::Input(format!("{} grid points, above the supported {MAX_POINTS}", tasks.len())));
     }
     let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
     let threads = if threads == 0 { cores } else { threads }.min(tasks.len().max(1));
@@ -271,7 +277,7 @@ pub fn run_on(grid: &Grid, threads: usize, progress: &(dyn Fn(usize, usize) + Sy
     for (k, p) in results.into_iter().flatten() {
         out[k] = Some(p);
     }
-    out.into_iter().map(|p| p.ok_or_else(|| "a sweep worker stopped".to_string())).collect()
+    out.into_iter().map(|p| p.ok_or_else(|| Error::Message("a sweep worker stopped".to_string()))).collect()
 }
 
 /// Maximal runs of consecutive swept values, per valence, where a test passes.

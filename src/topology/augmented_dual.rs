@@ -9,14 +9,15 @@
 //! refined F-face, which must be a lattice point.
 
 use super::{dual_split, Refined};
+use crate::error::Error;
 use crate::mesh::{LatticeCoord, PolyMesh};
 use crate::sdc::Origin;
 
-pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
+pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
     let base = dual_split::refine(mesh)?;
     // dual_split emits the F-face of old face f as new face f
     if (0..mesh.num_faces()).any(|f| base.face_parents.get(f) != Some(&Origin::Face(f))) {
-        return Err("dual split: F-faces are not first in face order".to_string());
+        return Err(Error::Input("dual split: F-faces are not first in face order".to_string()));
     }
     let mut origins = base.vertex_origins;
     let faces = base.mesh.faces().to_vec();
@@ -27,7 +28,8 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
             origins.push(Origin::Face(f));
         }
     }
-    let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| e.to_string())?.with_face_points(centres)?;
+    let mut new_mesh =
+        PolyMesh::new(origins.len(), faces).map_err(|e| Error::Input(e.to_string()))?.with_face_points(centres)?;
     if let (Some(old), Some(mut chart)) = (mesh.chart.as_ref(), base.mesh.chart) {
         let mut ok = true;
         for o in &origins[chart.vertex_coords.len()..] {

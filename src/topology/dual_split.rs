@@ -5,10 +5,11 @@
 use crate::mesh::IdMap;
 
 use super::{ChartBuilder, Refined};
+use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::sdc::Origin;
 
-pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
+pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
     let mut origins = Vec::new();
     let mut corner_id: IdMap<(usize, usize), usize> = IdMap::default(); // (face, old vertex) -> new
     for (f, face) in mesh.faces().iter().enumerate() {
@@ -45,7 +46,7 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
         faces.push(ids);
         parents.push(Origin::Vertex(v));
     }
-    let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| e.to_string())?;
+    let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| Error::Input(e.to_string()))?;
     if let Some(chart) = mesh.chart.as_ref().filter(|c| c.scale == 1) {
         let mut cb = ChartBuilder::new(chart);
         for o in &origins {

@@ -13,12 +13,13 @@
 use crate::mesh::IdMap;
 
 use super::{ChartBuilder, Refined};
+use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::sdc::Origin;
 
-pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
+pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
     if !mesh.has_face_point_on_every_face() {
-        return Err("this scheme needs a face control vertex on every face".into());
+        return Err(Error::Input("this scheme needs a face control vertex on every face".into()));
     }
     let fcv: Vec<usize> = mesh.face_points.iter().flatten().copied().collect();
     let is_fcv: crate::mesh::IdSet<usize> = fcv.iter().copied().collect();
@@ -59,7 +60,8 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
             origins.push(Origin::Corner { face: f, corner: k });
         }
     }
-    let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| e.to_string())?.with_face_points(new_fcv)?;
+    let mut new_mesh =
+        PolyMesh::new(origins.len(), faces).map_err(|e| Error::Input(e.to_string()))?.with_face_points(new_fcv)?;
     if let Some(chart) = mesh.chart.as_ref().filter(|c| c.scale == 2) {
         let mut cb = ChartBuilder::new(chart);
         let in_face = |f: usize| -> (usize, Vec<(i64, i64)>) {

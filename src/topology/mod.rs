@@ -12,12 +12,13 @@ pub mod primal_split;
 pub mod sqrt3_split;
 pub mod ternary_split;
 
+use crate::error::Error;
 use crate::mesh::{Chart, LatticeCoord, PolyMesh};
 use crate::sdc::Origin;
 pub use crate::sdc::{Topology, TriangleSplit};
 
 impl Topology {
-    pub fn refine(&self, mesh: &PolyMesh) -> Result<Refined, String> {
+    pub fn refine(&self, mesh: &PolyMesh) -> Result<Refined, Error> {
         match self {
             Topology::PrimalSplit(t) => primal_split::refine(mesh, *t),
             Topology::Dual => dual_split::refine(mesh),
@@ -76,8 +77,11 @@ impl<'a> ChartBuilder<'a> {
     }
     /// A new vertex at wa·A + wb·B on the old edge (a, b), in the chart of a
     /// face holding the edge (a midpoint is 1·A + 1·B in the doubled lattice).
-    pub fn push_on_edge(&mut self, mesh: &PolyMesh, a: usize, b: usize, wa: i64, wb: i64) -> Result<(), String> {
-        let (f, _) = mesh.half_edge(a, b).or_else(|| mesh.half_edge(b, a)).ok_or("dangling edge")?;
+    pub fn push_on_edge(&mut self, mesh: &PolyMesh, a: usize, b: usize, wa: i64, wb: i64) -> Result<(), Error> {
+        let (f, _) = mesh
+            .half_edge(a, b)
+            .or_else(|| mesh.half_edge(b, a))
+            .ok_or_else(|| Error::Input("dangling edge".into()))?;
         let s = self.face_chart(self.old.face_sector[f], a);
         let (pa, pb) =
             (self.old.in_chart(self.old.vertex_coords[a], s), self.old.in_chart(self.old.vertex_coords[b], s));

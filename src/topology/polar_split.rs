@@ -19,6 +19,7 @@
 use crate::mesh::IdMap;
 
 use super::{ChartBuilder, Refined};
+use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::sdc::Origin;
 
@@ -38,9 +39,9 @@ fn key(a: usize, b: usize) -> (usize, usize) {
 }
 
 /// Radial (true) or circumferential (false) for every edge.
-fn classify(mesh: &PolyMesh, pole: &[bool]) -> Result<IdMap<(usize, usize), bool>, String> {
+fn classify(mesh: &PolyMesh, pole: &[bool]) -> Result<IdMap<(usize, usize), bool>, Error> {
     let mut radial: IdMap<(usize, usize), bool> = IdMap::default();
-    let not_polar = |f: usize, why: &str| format!("not a polar net: face {} {why}", f + 1);
+    let not_polar = |f: usize, why: &str| Error::Input(format!("not a polar net: face {} {why}", f + 1));
     let set =
         |map: &mut IdMap<(usize, usize), bool>, a: usize, b: usize, r: bool, f: usize| match map.insert(key(a, b), r) {
             Some(old) if old != r => Err(not_polar(f, "has an edge that is both radial and circumferential")),
@@ -87,7 +88,7 @@ fn classify(mesh: &PolyMesh, pole: &[bool]) -> Result<IdMap<(usize, usize), bool
     Ok(radial)
 }
 
-pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
+pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
     let pole = poles(mesh);
     let radial = classify(mesh, &pole)?;
     let mut origins: Vec<Origin> = Vec::new();
@@ -130,7 +131,7 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
         faces.push(quad.into_iter().map(|o| id(o, &mut origins)).collect());
         parents.push(Origin::Edge(a, b));
     }
-    let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| e.to_string())?;
+    let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| Error::Input(e.to_string()))?;
     if let Some(chart) = mesh.chart.as_ref().filter(|c| c.scale == 1) {
         let mut cb = ChartBuilder::new(chart);
         for o in &origins {

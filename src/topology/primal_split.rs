@@ -4,10 +4,11 @@
 use crate::mesh::IdMap;
 
 use super::{ChartBuilder, Refined, TriangleSplit};
+use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::sdc::Origin;
 
-pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, String> {
+pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, Error> {
     let nv = mesh.num_vertices();
     let mut origins: Vec<Origin> = (0..nv).map(Origin::Vertex).collect();
     let mut edge_id: IdMap<(usize, usize), usize> = IdMap::default();
@@ -47,13 +48,13 @@ pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, String> {
             }
         }
     }
-    let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| e.to_string())?;
+    let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| Error::Input(e.to_string()))?;
     if let Some(dirs) = &mesh.lattice_dirs {
         // the child quad at corner k starts along the parent's edge k
         let mut child = Vec::with_capacity(new_mesh.num_faces());
         for (f, face) in mesh.faces().iter().enumerate() {
             if face_point[f].is_none() {
-                return Err("lattice directions need quads".into());
+                return Err(Error::Input("lattice directions need quads".into()));
             }
             child.extend((0..face.len()).map(|k| ((dirs[f] as usize + k) % 4) as u8));
         }

@@ -12,10 +12,11 @@
 //! -> (a + b + c)/3), so vertices two steps apart match by coordinates.
 
 use super::{ChartBuilder, Refined};
+use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::sdc::Origin;
 
-pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
+pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
     let nv = mesh.num_vertices();
     let mut origins: Vec<Origin> = (0..nv).map(Origin::Vertex).collect();
     let mut face_vertex = Vec::with_capacity(mesh.num_faces());
@@ -47,7 +48,7 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
             }
         }
     }
-    let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| e.to_string())?;
+    let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| Error::Input(e.to_string()))?;
     if let Some(chart) = &mesh.chart {
         let mut cb = ChartBuilder::new(chart);
         // from scale 1: multiply by 3; from scale 3: back to the new lattice's units

@@ -12,16 +12,17 @@
 use crate::mesh::IdMap;
 
 use super::{ChartBuilder, Refined};
+use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::sdc::Origin;
 
-pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
+pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
     if let Some(f) = (0..mesh.num_faces()).find(|&f| mesh.face(f).len() != 4) {
-        return Err(format!(
+        return Err(Error::Input(format!(
             "the ternary quad split needs a quad mesh: face {} has {} vertices (apply one catmull-clark step first)",
             f + 1,
             mesh.face(f).len()
-        ));
+        )));
     }
     let nv = mesh.num_vertices();
     let mut origins: Vec<Origin> = (0..nv).map(Origin::Vertex).collect();
@@ -57,7 +58,7 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, String> {
             }
         }
     }
-    let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| e.to_string())?;
+    let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| Error::Input(e.to_string()))?;
     if let Some(chart) = mesh.chart.as_ref().filter(|c| c.scale == 1) {
         let mut cb = ChartBuilder::new(chart);
         for o in &origins {

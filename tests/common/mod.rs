@@ -122,16 +122,17 @@ impl Rng {
 /// Counts one case of a fuzz test that mutates a file and loads (and runs)
 /// it: a load or run error must be one non-empty line, and a panic fails the
 /// test with the input that caused it.
-pub fn tally_fuzz_case(
+pub fn tally_fuzz_case<E: std::fmt::Display>(
     case: usize,
     text: &str,
-    result: std::thread::Result<Result<(), String>>,
+    result: std::thread::Result<Result<(), E>>,
     accepted: &mut usize,
     rejected: &mut usize,
 ) {
     match result {
         Ok(Ok(())) => *accepted += 1,
         Ok(Err(e)) => {
+            let e = e.to_string();
             assert!(!e.contains('\n') && !e.is_empty(), "case {case}: error not one line: {e:?}\n{text}");
             *rejected += 1;
         }

@@ -9,6 +9,7 @@ pub mod relation;
 pub mod unified;
 
 use crate::curves::CurveScheme;
+use crate::error::Error;
 use crate::schemes::registry::{self, Built, Family};
 
 /// The built-in curve schemes' names (listed with every other family in
@@ -19,18 +20,22 @@ pub fn known_names() -> Vec<&'static str> {
 
 /// Build a curve scheme from a built-in name or a curve scheme file
 /// (`domain = "curve"`) with `name=value` parameter overrides.
-pub fn build(name_or_path: &str, overrides: &[(String, String)]) -> Result<Box<dyn CurveScheme>, String> {
-    let unknown =
-        || format!("unknown curve scheme '{name_or_path}'; known curve schemes: {}", known_names().join(", "));
+pub fn build(name_or_path: &str, overrides: &[(String, String)]) -> Result<Box<dyn CurveScheme>, Error> {
+    let unknown = || {
+        Error::Input(format!(
+            "unknown curve scheme '{name_or_path}'; known curve schemes: {}",
+            known_names().join(", ")
+        ))
+    };
     if !registry::is_file_argument(name_or_path) && registry::find(name_or_path).is_none() {
         return Err(unknown());
     }
     match registry::resolve(name_or_path, overrides)? {
         Built::Curve(c) => Ok(c),
-        other => Err(format!(
+        other => Err(Error::Input(format!(
             "'{name_or_path}' is a {} scheme, not a curve scheme; known curve schemes: {}",
             other.family().name(),
             known_names().join(", ")
-        )),
+        ))),
     }
 }

@@ -29,6 +29,7 @@ use toml::Spanned;
 use super::MAX_FILE_BYTES;
 use super::{evaluate, intern, line_of, not_affine, offset_key, rule_terms, toml_error, Head, ParamDoc, Section, Term};
 use crate::curves::{CurveMask, CurveRules, CurveScheme};
+use crate::error::Error;
 use crate::numeric::{Inexact, Rational};
 use crate::schemes::Params;
 
@@ -74,15 +75,15 @@ pub struct CurveFileScheme {
 
 impl CurveFileDef {
     /// Parse a curve scheme file's text; `file` names it in error messages.
-    pub fn parse(text: &str, file: &str) -> Result<CurveFileDef, String> {
+    pub fn parse(text: &str, file: &str) -> Result<CurveFileDef, Error> {
         if text.len() > MAX_FILE_BYTES {
-            return Err(format!("{file}: larger than {MAX_FILE_BYTES} bytes; scheme files are short"));
+            return Err(Error::File(format!("{file}: larger than {MAX_FILE_BYTES} bytes; scheme files are short")));
         }
         let doc: CurveDoc = toml::from_str(text).map_err(|e| toml_error(e, text, file))?;
         let head = Head::parse(text, file, &doc.name, &doc.description, doc.affine, &doc.params)?;
-        let rule = |section: &'static str, table: &Option<Section>| -> Result<RuleDef, String> {
+        let rule = |section: &'static str, table: &Option<Section>| -> Result<RuleDef, Error> {
             let table = table.as_ref().ok_or_else(|| {
-                format!("{file}: missing section [{section}] (a curve scheme has an even and an odd rule)")
+                Error::File(format!("{file}: missing section [{section}] (a curve scheme has an even and an odd rule)"))
             })?;
             let (terms, scale) = rule_terms(&head, text, section, table, |k| offset_key(k, 1).map(|v| v[0]))?;
             Ok(RuleDef { section, line: line_of(text, table.span().start), terms, scale })
@@ -95,7 +96,7 @@ impl CurveFileDef {
 
     /// The scheme with `name=value` parameter overrides: every weight finite
     /// and real, each rule summing to 1 unless `affine = false`.
-    pub fn build(&self, overrides: &[(String, String)]) -> Result<CurveFileScheme, String> {
+    pub fn build(&self, overrides: &[(String, String)]) -> Result<CurveFileScheme, Error> {
         let (env, params) = self.head.values(overrides)?;
         let mut float = CurveMask { even: Vec::new(), odd: Vec::new() };
         let mut exact = Some(CurveMask { even: Vec::new(), odd: Vec::new() });

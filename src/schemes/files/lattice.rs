@@ -30,6 +30,7 @@ use super::{
     evaluate, field_error, intern, line_of, not_affine, offset_key, rule_terms, toml_error, Head, ParamDoc, Section,
     Term,
 };
+use crate::error::Error;
 use crate::lattice::{LatticeRules, LatticeScheme, Point};
 use crate::numeric::{Rational, Weight};
 use crate::schemes::Params;
@@ -87,18 +88,18 @@ pub struct LatticeFileScheme {
 
 impl LatticeFileDef {
     /// Parse a lattice scheme file's text; `file` names it in error messages.
-    pub fn parse(text: &str, file: &str) -> Result<LatticeFileDef, String> {
+    pub fn parse(text: &str, file: &str) -> Result<LatticeFileDef, Error> {
         if text.len() > MAX_FILE_BYTES {
-            return Err(format!("{file}: larger than {MAX_FILE_BYTES} bytes; scheme files are short"));
+            return Err(Error::File(format!("{file}: larger than {MAX_FILE_BYTES} bytes; scheme files are short")));
         }
         let doc: LatticeDoc = toml::from_str(text).map_err(|e| toml_error(e, text, file))?;
         let head = Head::parse(text, file, &doc.name, &doc.description, doc.affine, &doc.params)?;
         let tables = [[&doc.m00, &doc.m01], [&doc.m10, &doc.m11]];
-        let mask = |a: usize, b: usize| -> Result<MaskDef, String> {
+        let mask = |a: usize, b: usize| -> Result<MaskDef, Error> {
             let section = SECTIONS[a][b];
-            let table = tables[a][b]
-                .as_ref()
-                .ok_or_else(|| format!("{file}: missing section [{section}] (a lattice scheme has four masks)"))?;
+            let table = tables[a][b].as_ref().ok_or_else(|| {
+                Error::File(format!("{file}: missing section [{section}] (a lattice scheme has four masks)"))
+            })?;
             let (terms, scale) = rule_terms(&head, text, section, table, |k| offset_key(k, 2).map(|v| (v[0], v[1])))?;
             Ok(MaskDef { section, line: line_of(text, table.span().start), terms, scale })
         };
@@ -111,7 +112,7 @@ impl LatticeFileDef {
 
     /// The scheme with `name=value` parameter overrides: every weight a finite
     /// rational, each mask summing to 1 unless `affine = false`.
-    pub fn build(&self, overrides: &[(String, String)]) -> Result<LatticeFileScheme, String> {
+    pub fn build(&self, overrides: &[(String, String)]) -> Result<LatticeFileScheme, Error> {
         let (env, params) = self.head.values(overrides)?;
         let mut float: [[Vec<(Point, f64)>; 2]; 2] = Default::default();
         let mut exact: [[Vec<(Point, Rational)>; 2]; 2] = Default::default();

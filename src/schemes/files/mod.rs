@@ -28,6 +28,7 @@ use toml::Spanned;
 use super::registry::{Built, Family};
 use super::user::UserParam;
 use super::Params;
+use crate::error::Error;
 use crate::numeric::expr::{Env, Expr};
 use crate::numeric::{ParamValue, Rational, Weight};
 
@@ -48,24 +49,24 @@ const RESERVED: [&str; 11] = ["n", "j", "pi", "i", "cos", "sin", "sqrt", "cbrt",
 pub(crate) type Section = Spanned<BTreeMap<String, Spanned<toml::Value>>>;
 
 /// Read a scheme file of any family (size capped before reading it all).
-pub(crate) fn read_scheme_file(path: &Path) -> Result<String, String> {
+pub(crate) fn read_scheme_file(path: &Path) -> Result<String, Error> {
     use std::io::Read;
     let shown = path.display().to_string();
-    let file = std::fs::File::open(path).map_err(|e| format!("cannot read scheme file {shown}: {e}"))?;
+    let file = std::fs::File::open(path).map_err(|e| Error::File(format!("cannot read scheme file {shown}: {e}")))?;
     let mut bytes = Vec::new();
     file.take(MAX_FILE_BYTES as u64 + 1)
         .read_to_end(&mut bytes)
-        .map_err(|e| format!("cannot read scheme file {shown}: {e}"))?;
+        .map_err(|e| Error::File(format!("cannot read scheme file {shown}: {e}")))?;
     if bytes.len() > MAX_FILE_BYTES {
-        return Err(format!("{shown}: larger than {MAX_FILE_BYTES} bytes; scheme files are short"));
+        return Err(Error::File(format!("{shown}: larger than {MAX_FILE_BYTES} bytes; scheme files are short")));
     }
-    String::from_utf8(bytes).map_err(|_| format!("{shown}: not UTF-8 text"))
+    String::from_utf8(bytes).map_err(|_| Error::File(format!("{shown}: not UTF-8 text")))
 }
 
 /// The family a file's text declares. Text that is not TOML, or whose
 /// `domain` is not a string, goes to the mesh loader, whose parser reports the
 /// problem with its line.
-fn family_of_text(text: &str, file: &str) -> Result<Family, String> {
+fn family_of_text(text: &str, file: &str) -> Result<Family, Error> {
     /// Only the `domain` key; every other key is left to the family's loader.
     #[derive(Deserialize)]
     struct Peek {
@@ -75,22 +76,22 @@ fn family_of_text(text: &str, file: &str) -> Result<Family, String> {
     match domain.get_ref().as_str() {
         Some("lattice") => Ok(Family::Lattice),
         Some("curve") => Ok(Family::Curve),
-        other => Err(format!(
+        other => Err(Error::File(format!(
             "{file} line {}, field domain: {} is not a domain; use \"lattice\" or \"curve\" (mesh scheme files have \
              no domain key: they name a topology)",
             line_of(text, domain.span().start),
             other.map(|d| format!("'{d}'")).unwrap_or_else(|| "a non-string value".into())
-        )),
+        ))),
     }
 }
 
 /// The family of a scheme file, from its `domain` key.
-pub fn family(path: &Path) -> Result<Family, String> {
+pub fn family(path: &Path) -> Result<Family, Error> {
     family_of_text(&read_scheme_file(path)?, &path.display().to_string())
 }
 
 /// Load a scheme file of any family with `name=value` parameter overrides.
-pub fn load(path: &Path, overrides: &[(String, String)]) -> Result<Built, String> {
+pub fn load(path: &Path, overrides: &[(String, String)]) -> Result<Built, Error> {
     let text = read_scheme_file(path)?;
     let file = path.display().to_string();
     Ok(match family_of_text(&text, &file)? {
@@ -110,7 +111,7 @@ pub struct Described {
 }
 
 /// Parse a scheme file of any family for its name, description and parameters.
-pub fn describe(path: &Path) -> Result<Described, String> {
+pub fn describe(path: &Path) -> Result<Described, Error> {
     let text = read_scheme_file(path)?;
     let file = path.display().to_string();
     Ok(match family_of_text(&text, &file)? {
@@ -134,13 +135,13 @@ pub(crate) fn line_of(text: &str, offset: usize) -> usize {
 }
 
 /// "FILE line L, field F: message", the form of every scheme-file error.
-pub(crate) fn field_error(file: &str, line: usize, field: &str, msg: impl std::fmt::Display) -> String {
-    format!("{file} line {line}, field {field}: {msg}")
+pub(crate) fn field_error(file: &str, line: usize, field: &str, msg: impl std::fmt::Display) -> Error {
+    Error::File(format!("{file} line {line}, field {field}: {msg}"))
 }
 
 /// The error of an affine file whose rule (or mask) `section` does not sum
 /// to 1: every family words it alike.
-pub(crate) fn not_affine(head: &Head, line: usize, section: &str, what: &str, sum: impl std::fmt::Display) -> String {
+pub(crate) fn not_affine(head: &Head, line: usize, section: &str, what: &str, sum: impl std::fmt::Display) -> Error {
     field_error(
         &head.file,
         line,
@@ -150,12 +151,12 @@ pub(crate) fn not_affine(head: &Head, line: usize, section: &str, what: &str, su
 }
 
 /// The TOML parser's error as one line with the file and line.
-pub(crate) fn toml_error(e: toml::de::Error, text: &str, file: &str) -> String {
+pub(crate) fn toml_error(e: toml::de::Error, text: &str, file: &str) -> Error {
     let msg = e.message().trim().replace('\n', "; ");
-    match e.span() {
+    Error::File(match e.span() {
         Some(span) => format!("{file} line {}: {msg}", line_of(text, span.start)),
         None => format!("{file}: {msg}"),
-    }
+    })
 }
 
 /// A parameter table as written.
@@ -170,13 +171,13 @@ pub(crate) struct ParamDoc {
 
 /// A number in the file: strings are parsed as numbers (3/8, 0.375), TOML
 /// integers and floats taken as written.
-pub(crate) fn literal(v: &toml::Value) -> Result<ParamValue, String> {
+pub(crate) fn literal(v: &toml::Value) -> Result<ParamValue, Error> {
     match v {
         toml::Value::String(s) => ParamValue::parse(s),
         toml::Value::Integer(k) => Ok(ParamValue::from_ratio(*k, 1)),
         // the shortest decimal that round-trips, so 0.375 is exactly 3/8
         toml::Value::Float(x) => ParamValue::parse(&format!("{x}")),
-        other => Err(format!("expected a number, got a {}", other.type_str())),
+        other => Err(Error::File(format!("expected a number, got a {}", other.type_str()))),
     }
 }
 
@@ -187,11 +188,11 @@ pub(crate) fn parameter_table(
     params: &BTreeMap<String, Spanned<ParamDoc>>,
     text: &str,
     file: &str,
-) -> Result<Vec<UserParam>, String> {
+) -> Result<Vec<UserParam>, Error> {
     let at = |span: std::ops::Range<usize>| line_of(text, span.start);
     let err = |line: usize, field: &str, msg: &dyn std::fmt::Display| field_error(file, line, field, msg);
     if params.len() > MAX_PARAMS {
-        return Err(format!("{file}: more than {MAX_PARAMS} parameters"));
+        return Err(Error::File(format!("{file}: more than {MAX_PARAMS} parameters")));
     }
     let mut out = Vec::new();
     for (pname, p) in params {
@@ -209,7 +210,7 @@ pub(crate) fn parameter_table(
         let p = p.get_ref();
         let default =
             literal(p.default.get_ref()).map_err(|e| err(at(p.default.span()), &format!("{key}.default"), &e))?;
-        let bound = |b: &Option<Spanned<toml::Value>>, which: &str, none: f64| -> Result<f64, String> {
+        let bound = |b: &Option<Spanned<toml::Value>>, which: &str, none: f64| -> Result<f64, Error> {
             match b {
                 None => Ok(none),
                 Some(v) => {
@@ -235,7 +236,7 @@ pub(crate) fn parameter_table(
 /// A file's parameter values: the defaults, then `name=value` overrides,
 /// each checked against the parameter's range (mesh, lattice and curve files
 /// alike, with the built-ins' wording).
-pub(crate) fn parameter_env(scheme: &str, params: &[UserParam], overrides: &[(String, String)]) -> Result<Env, String> {
+pub(crate) fn parameter_env(scheme: &str, params: &[UserParam], overrides: &[(String, String)]) -> Result<Env, Error> {
     let mut env = Env::new();
     for p in params {
         env.insert(p.name.clone(), p.default.clone());
@@ -243,18 +244,18 @@ pub(crate) fn parameter_env(scheme: &str, params: &[UserParam], overrides: &[(St
     for (name, text) in overrides {
         let Some(p) = params.iter().find(|p| &p.name == name) else {
             let known: Vec<_> = params.iter().map(|p| p.name.as_str()).collect();
-            return Err(if known.is_empty() {
+            return Err(Error::Input(if known.is_empty() {
                 format!("scheme '{scheme}' has no parameters (got '{name}')")
             } else {
                 format!("scheme '{scheme}' has no parameter '{name}'; its parameters: {}", known.join(", "))
-            });
+            }));
         };
-        let v = ParamValue::parse(text).map_err(|e| format!("parameter {name}: {e}"))?;
+        let v = ParamValue::parse(text).map_err(|e| Error::Input(format!("parameter {name}: {e}")))?;
         if v.value < p.min || v.value > p.max {
-            return Err(format!(
+            return Err(Error::Input(format!(
                 "parameter {name}={text} is out of range [{}, {}] for scheme '{scheme}'",
                 p.min, p.max
-            ));
+            )));
         }
         env.insert(name.clone(), v);
     }
@@ -281,7 +282,7 @@ impl Head {
         description: &Option<Spanned<String>>,
         affine: Option<bool>,
         params: &BTreeMap<String, Spanned<ParamDoc>>,
-    ) -> Result<Head, String> {
+    ) -> Result<Head, Error> {
         let at = |span: std::ops::Range<usize>| line_of(text, span.start);
         let err = |line: usize, field: &str, msg: &dyn std::fmt::Display| field_error(file, line, field, msg);
         let shown = name.get_ref().trim().to_string();
@@ -315,7 +316,7 @@ impl Head {
     }
 
     /// Parameter values: the defaults, then `name=value` overrides (range-checked).
-    pub(crate) fn values(&self, overrides: &[(String, String)]) -> Result<(Env, Params), String> {
+    pub(crate) fn values(&self, overrides: &[(String, String)]) -> Result<(Env, Params), Error> {
         let env = parameter_env(&self.name, &self.params, overrides)?;
         let values = self.params.iter().map(|p| (p.name.clone(), env[&p.name].clone())).collect();
         Ok((env, Params { values }))
@@ -323,7 +324,7 @@ impl Head {
 
     /// A weight expression from a TOML value (string, integer or float), with
     /// no variables but the parameters.
-    pub(crate) fn expr(&self, value: &toml::Value, line: usize, field: &str) -> Result<Expr, String> {
+    pub(crate) fn expr(&self, value: &toml::Value, line: usize, field: &str) -> Result<Expr, Error> {
         let err = |msg: &dyn std::fmt::Display| field_error(&self.file, line, field, msg);
         let source = match value {
             toml::Value::String(s) => s.clone(),
@@ -364,9 +365,9 @@ pub(crate) struct Value {
 
 /// Evaluate a weight, `scale` times the term's expression. An error names the
 /// field when the value is not a finite real number.
-pub(crate) fn evaluate<O>(head: &Head, term: &Term<O>, scale: Option<&Term<()>>, env: &Env) -> Result<Value, String> {
+pub(crate) fn evaluate<O>(head: &Head, term: &Term<O>, scale: Option<&Term<()>>, env: &Env) -> Result<Value, Error> {
     let err = |t_line: usize, field: &str, msg: &dyn std::fmt::Display| field_error(&head.file, t_line, field, msg);
-    let one = |t_line: usize, field: &str, e: &Expr| -> Result<Value, String> {
+    let one = |t_line: usize, field: &str, e: &Expr| -> Result<Value, Error> {
         let z = e.eval(env).map_err(|m| err(t_line, field, &m))?;
         if !z.re.is_finite() || !z.im.is_finite() {
             return Err(err(t_line, field, &"the weight is not a finite number"));
@@ -411,18 +412,18 @@ pub(crate) fn intern(s: &str) -> &'static str {
 
 /// Parse an offset key: `dims` integers separated by commas, each within
 /// ±`MAX_OFFSET`.
-pub(crate) fn offset_key(key: &str, dims: usize) -> Result<Vec<i64>, String> {
+pub(crate) fn offset_key(key: &str, dims: usize) -> Result<Vec<i64>, Error> {
     let what = if dims == 1 { "an integer offset such as \"-1\"" } else { "an offset \"r,s\" such as \"-1,0\"" };
     let parts: Vec<&str> = key.split(',').map(str::trim).collect();
     if parts.len() != dims {
-        return Err(format!("'{key}' is not {what}"));
+        return Err(Error::File(format!("'{key}' is not {what}")));
     }
     parts
         .iter()
         .map(|p| {
-            let v: i64 = p.parse().map_err(|_| format!("'{key}' is not {what}"))?;
+            let v: i64 = p.parse().map_err(|_| Error::File(format!("'{key}' is not {what}")))?;
             if v.abs() > MAX_OFFSET {
-                return Err(format!("offset {v} is beyond ±{MAX_OFFSET}: masks are local"));
+                return Err(Error::File(format!("offset {v} is beyond ±{MAX_OFFSET}: masks are local")));
             }
             Ok(v)
         })
@@ -439,8 +440,8 @@ pub(crate) fn rule_terms<O: PartialEq + Copy + std::fmt::Debug>(
     text: &str,
     section: &str,
     table: &Section,
-    parse_offset: impl Fn(&str) -> Result<O, String>,
-) -> Result<RuleTerms<O>, String> {
+    parse_offset: impl Fn(&str) -> Result<O, Error>,
+) -> Result<RuleTerms<O>, Error> {
     let mut terms: Vec<Term<O>> = Vec::new();
     let mut scale = None;
     for (key, value) in table.get_ref() {
@@ -484,6 +485,8 @@ mod tests {
         assert_eq!(family_of_text("domain = \"curve\"\n", "f").unwrap(), Family::Curve);
         assert_eq!(family_of_text("domain = \"lattice\"\n", "f").unwrap(), Family::Lattice);
         let e = family_of_text("name = \"x\"\ndomain = \"torus\"\n", "f.toml").unwrap_err();
+        assert!(matches!(e, Error::File(_)), "{e:?}");
+        let e = e.to_string();
         assert!(e.starts_with("f.toml line 2, field domain:"), "{e}");
         // nested tables elsewhere in the file do not hide the key
         let nested = "domain = \"curve\"\n[params.w]\ndefault = \"1/16\"\n[odd]\n\"0\" = \"-w\"\n";
@@ -496,8 +499,8 @@ mod tests {
     fn offsets() {
         assert_eq!(offset_key("-1, 2", 2).unwrap(), vec![-1, 2]);
         assert_eq!(offset_key("3", 1).unwrap(), vec![3]);
-        assert!(offset_key("1", 2).unwrap_err().contains("not an offset"));
-        assert!(offset_key("x", 1).unwrap_err().contains("not an integer offset"));
-        assert!(offset_key("99", 1).unwrap_err().contains("beyond"));
+        assert!(offset_key("1", 2).unwrap_err().to_string().contains("not an offset"));
+        assert!(offset_key("x", 1).unwrap_err().to_string().contains("not an integer offset"));
+        assert!(offset_key("99", 1).unwrap_err().to_string().contains("beyond"));
     }
 }

@@ -16,6 +16,7 @@ use crate::schemes::files::{line_of, parameter_env, parameter_table, read_scheme
 use crate::sdc::slots::{Arity, Host, HostSpec, OriginKind, RuleSlots, Valence, HOSTS};
 
 // the caps every scheme file has (one place: `schemes::files`)
+use crate::error::Error;
 use crate::schemes::files::{MAX_DESCRIPTION_CHARS, MAX_NAME_CHARS};
 pub use crate::schemes::files::{MAX_EXPR_CHARS, MAX_FILE_BYTES};
 /// Most refinement steps an extraordinary edge rule may be blended over.
@@ -183,8 +184,8 @@ fn check_ns(rule: &RuleSlots) -> std::ops::RangeInclusive<i64> {
 }
 
 impl UserSchemeDef {
-    fn err(&self, line: usize, field: &str, msg: impl std::fmt::Display) -> String {
-        format!("{} line {line}, field {field}: {msg}", self.file)
+    fn err(&self, line: usize, field: &str, msg: impl std::fmt::Display) -> Error {
+        Error::File(format!("{} line {line}, field {field}: {msg}", self.file))
     }
 
     /// The refinement topology the file names (`primal-triangle`, ...).
@@ -193,13 +194,13 @@ impl UserSchemeDef {
     }
 
     /// Parse a scheme file's text; `file` names it in error messages.
-    pub fn parse(text: &str, file: &str) -> Result<UserSchemeDef, String> {
+    pub fn parse(text: &str, file: &str) -> Result<UserSchemeDef, Error> {
         if text.len() > MAX_FILE_BYTES {
-            return Err(format!("{file}: larger than {MAX_FILE_BYTES} bytes; scheme files are short"));
+            return Err(Error::File(format!("{file}: larger than {MAX_FILE_BYTES} bytes; scheme files are short")));
         }
         let doc: FileDoc = toml::from_str(text).map_err(|e| {
             let msg = e.message().trim().replace('\n', "; ");
-            match e.span() {
+            Error::File(match e.span() {
                 Some(span) => {
                     let line = line_of(text, span.start);
                     match key_at(text, line) {
@@ -208,20 +209,20 @@ impl UserSchemeDef {
                     }
                 }
                 None => format!("{file}: {msg}"),
-            }
+            })
         })?;
         let cx = Cx { text, file };
         if let Some(key) = &doc.unknown {
             let mut known: Vec<&str> = HEADER.to_vec();
             known.extend(all_sections());
-            return Err(format!(
+            return Err(Error::File(format!(
                 "{file} line {}: unknown field `{}`, expected one of {}",
                 cx.line(key.span()),
                 key.get_ref(),
                 known.join(", ")
-            ));
+            )));
         }
-        let Some(doc_name) = &doc.name else { return Err(format!("{file}: missing field `name`")) };
+        let Some(doc_name) = &doc.name else { return Err(Error::File(format!("{file}: missing field `name`"))) };
         let name = cx.name(doc_name)?;
         let description = match &doc.description {
             Some(d) if d.get_ref().chars().count() > MAX_DESCRIPTION_CHARS => {
@@ -234,7 +235,9 @@ impl UserSchemeDef {
             Some(d) => d.get_ref().replace('\n', " "),
             None => format!("user scheme from {file}"),
         };
-        let Some(doc_topology) = &doc.topology else { return Err(format!("{file}: missing field `topology`")) };
+        let Some(doc_topology) = &doc.topology else {
+            return Err(Error::File(format!("{file}: missing field `topology`")));
+        };
         let topo_name = doc_topology.get_ref().as_str();
         let Some(host) = Host::by_name(topo_name) else {
             let known: Vec<_> = HOSTS.iter().map(|h| h.spec().name).collect();
@@ -263,7 +266,7 @@ impl UserSchemeDef {
     }
 
     /// Parameter values: the defaults, then `name=value` overrides.
-    pub(super) fn env(&self, overrides: &[(String, String)]) -> Result<Env, String> {
+    pub(super) fn env(&self, overrides: &[(String, String)]) -> Result<Env, Error> {
         parameter_env(&self.name, &self.params, overrides)
     }
 
@@ -274,7 +277,7 @@ impl UserSchemeDef {
     /// on how the mesh is stored); with `affine`, every rule's weights sum to
     /// 1 (at a uniform valence n: a derived point counts as one point; with
     /// face-corner fields, at every uniform corner count m = 3..12).
-    pub(super) fn check(&self, params: &Env) -> Result<(), String> {
+    pub(super) fn check(&self, params: &Env) -> Result<(), Error> {
         for rule in &self.rules {
             // a rule with face-corner fields takes any polygons: checked at
             // every corner count m (quad-only families at m = 4 only), which
@@ -293,7 +296,7 @@ impl UserSchemeDef {
 
     /// One rule at valence n with faces of m corners (`polygons`: m is a
     /// variable of the rule, named in messages).
-    fn check_at(&self, rule: &RuleDef, params: &Env, n: i64, m: i64, polygons: bool) -> Result<(), String> {
+    fn check_at(&self, rule: &RuleDef, params: &Env, n: i64, m: i64, polygons: bool) -> Result<(), Error> {
         let at = if polygons { format!("n = {n}, m = {m}") } else { format!("n = {n}") };
         // per-quad families: their own sum, per quad
         let (mut sum, mut quad_sum) = (0.0, 0.0);
@@ -340,18 +343,18 @@ impl UserSchemeDef {
         }
         let section = rule.spec.name;
         if self.affine && quad_sum.abs() > 1e-12 {
-            return Err(format!(
+            return Err(Error::File(format!(
                 "{} line {}, field {section}: the per-quad weights of the {section} rule sum to {quad_sum} per quad \
                  at {at}, not 0 (the fan may have any number of quads; set affine = false to allow this)",
                 self.file, rule.line
-            ));
+            )));
         }
         if self.affine && (sum - 1.0).abs() > 1e-12 {
-            return Err(format!(
+            return Err(Error::File(format!(
                 "{} line {}, field {section}: the weights of the {section} rule sum to {sum} at {at}, not 1 (set \
                  affine = false to allow this)",
                 self.file, rule.line
-            ));
+            )));
         }
         Ok(())
     }
@@ -368,11 +371,11 @@ impl Cx<'_> {
         line_of(self.text, span.start)
     }
 
-    fn err(&self, line: usize, field: &str, msg: impl std::fmt::Display) -> String {
-        format!("{} line {line}, field {field}: {msg}", self.file)
+    fn err(&self, line: usize, field: &str, msg: impl std::fmt::Display) -> Error {
+        Error::File(format!("{} line {line}, field {field}: {msg}", self.file))
     }
 
-    fn name(&self, doc_name: &Spanned<String>) -> Result<String, String> {
+    fn name(&self, doc_name: &Spanned<String>) -> Result<String, Error> {
         let name = doc_name.get_ref().trim().to_string();
         let name_ok = !name.is_empty()
             && name.chars().count() <= MAX_NAME_CHARS
@@ -395,12 +398,12 @@ impl Cx<'_> {
         Ok(name)
     }
 
-    fn params(&self, doc: &FileDoc) -> Result<Vec<UserParam>, String> {
+    fn params(&self, doc: &FileDoc) -> Result<Vec<UserParam>, Error> {
         parameter_table(&doc.params, self.text, self.file)
     }
 
     /// The file's rule sections in the host's order, each field parsed.
-    fn rules(&self, doc: &FileDoc, spec: &HostSpec, params: &[UserParam]) -> Result<Vec<RuleDef>, String> {
+    fn rules(&self, doc: &FileDoc, spec: &HostSpec, params: &[UserParam]) -> Result<Vec<RuleDef>, Error> {
         // sections the host does not have
         for (section, table) in &doc.sections {
             if spec.rule(section).is_none() {
@@ -419,7 +422,10 @@ impl Cx<'_> {
                 if rule.optional {
                     continue;
                 }
-                return Err(format!("{}: missing section [{section}] (topology {})", self.file, spec.name));
+                return Err(Error::File(format!(
+                    "{}: missing section [{section}] (topology {})",
+                    self.file, spec.name
+                )));
             };
             let section_line = self.line(table.span());
             for (key, value) in table.get_ref() {
@@ -502,7 +508,7 @@ impl Cx<'_> {
         Ok(rules)
     }
 
-    fn blend_levels(&self, doc: &FileDoc, spec: &HostSpec, rules: &[RuleDef]) -> Result<Option<usize>, String> {
+    fn blend_levels(&self, doc: &FileDoc, spec: &HostSpec, rules: &[RuleDef]) -> Result<Option<usize>, Error> {
         let Some(b) = &doc.blend_levels else { return Ok(None) };
         let line = self.line(b.span());
         let k = *b.get_ref();
@@ -529,7 +535,7 @@ impl Cx<'_> {
         Ok(Some(k as usize))
     }
 
-    fn vertex_param(&self, doc: &FileDoc, host: Host, params: &[UserParam]) -> Result<Option<String>, String> {
+    fn vertex_param(&self, doc: &FileDoc, host: Host, params: &[UserParam]) -> Result<Option<String>, Error> {
         let Some(v) = &doc.vertex_param else { return Ok(None) };
         let line = self.line(v.span());
         let name = v.get_ref();
@@ -550,7 +556,7 @@ impl Cx<'_> {
 }
 
 /// Read and parse a scheme file (size capped before reading it all).
-pub fn load_def(path: &Path) -> Result<UserSchemeDef, String> {
+pub fn load_def(path: &Path) -> Result<UserSchemeDef, Error> {
     let shown = path.display().to_string();
     let text = read_scheme_file(path)?;
     UserSchemeDef::parse(&text, &shown)

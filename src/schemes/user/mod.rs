@@ -37,8 +37,9 @@ pub use file::{load_def, UserParam, UserSchemeDef, MAX_EXPR_CHARS, MAX_FILE_BYTE
 pub use rules::UserScheme;
 
 use super::Scheme;
+use crate::error::Error;
 
 /// Load a scheme file with `name=value` parameter overrides.
-pub fn load(path: &Path, overrides: &[(String, String)]) -> Result<Box<dyn Scheme>, String> {
+pub fn load(path: &Path, overrides: &[(String, String)]) -> Result<Box<dyn Scheme>, Error> {
     Ok(Box::new(load_def(path)?.build(overrides)?))
 }

@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use super::file::UserSchemeDef;
 use super::weights::WeightTable;
+use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::numeric::{Inexact, Weight};
 use crate::schemes::files::intern;
@@ -55,7 +56,7 @@ impl UserSchemeDef {
     }
 
     /// The scheme with the given parameter overrides, weights checked.
-    pub fn build(&self, overrides: &[(String, String)]) -> Result<UserScheme, String> {
+    pub fn build(&self, overrides: &[(String, String)]) -> Result<UserScheme, Error> {
         let env = self.env(overrides)?;
         self.check(&env)?;
         let values = self.params.iter().map(|p| (p.name.clone(), env[&p.name].clone())).collect();

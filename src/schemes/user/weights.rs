@@ -7,6 +7,7 @@ use std::any::TypeId;
 use std::collections::HashMap;
 use std::sync::Mutex;
 
+use crate::error::Error;
 use crate::numeric::expr::{Env, Expr};
 use crate::numeric::{Inexact, ParamValue, Weight};
 
@@ -27,13 +28,13 @@ fn with_nj(params: &Env, n: i64, j: i64, m: Option<i64>) -> Env {
 }
 
 /// A weight in floating point, with a reason when it is not a finite real.
-pub(super) fn eval_f64(expr: &Expr, params: &Env, n: i64, j: i64, m: Option<i64>) -> Result<f64, String> {
+pub(super) fn eval_f64(expr: &Expr, params: &Env, n: i64, j: i64, m: Option<i64>) -> Result<f64, Error> {
     let z = expr.eval(&with_nj(params, n, j, m))?;
     if !z.re.is_finite() || !z.im.is_finite() {
-        return Err("the weight is not a finite number".into());
+        return Err(Error::File("the weight is not a finite number".into()));
     }
     if z.im.abs() > 1e-12 * z.re.abs().max(1.0) {
-        return Err(format!("the weight is complex ({} + {}i)", z.re, z.im));
+        return Err(Error::File(format!("the weight is complex ({} + {}i)", z.re, z.im)));
     }
     Ok(z.re)
 }
