@@ -276,6 +276,24 @@ fn expensive_requests_are_refused_up_front_with_the_estimate() {
     let err = fails(&["spectrum", "catmull-clark", "-n", "300", "--method", "full"]);
     // the analysis neighbourhood of Catmull–Clark has 6n + 1 vertices
     assert!(err.contains("1801×1801"), "{err}");
+    // the characteristic map's net at valence 1000: TPS splits each quad
+    // into 9, so four levels are far above the face limit; the refusal comes
+    // after the first analysis step, with the estimate and the levels that fit
+    let err = fails(&["charmap", "tps", "-n", "1000", "--levels", "4"]);
+    let estimate: f64 = err
+        .split("about ")
+        .nth(1)
+        .and_then(|t| t.split(' ').next())
+        .and_then(|t| t.parse().ok())
+        .unwrap_or_else(|| panic!("no estimate in: {err}"));
+    assert!(estimate > 1_000_000.0, "{err}");
+    let fits: usize = err
+        .split("--levels ")
+        .nth(1)
+        .and_then(|t| t.split(' ').next())
+        .and_then(|t| t.parse().ok())
+        .unwrap_or_else(|| panic!("no level advice in: {err}"));
+    assert!((1..4).contains(&fits), "{err}");
     assert!(t0.elapsed().as_secs() < 20, "refusals must come before the work");
 }
 

@@ -60,9 +60,13 @@ pub fn apply_linear(m: &Matrix2<f64>, p: [f64; 2]) -> [f64; 2] {
 }
 
 /// The level-0 net: `values[k]` sits on patch vertex `d.analysis[k]`.
-pub fn initial_points(d: &Discovered, values: &[[f64; 2]]) -> Result<Vec<Option<[f64; 2]>>, String> {
+pub fn initial_points(d: &Discovered, values: &[[f64; 2]]) -> Result<Vec<Option<[f64; 2]>>, Error> {
     if values.len() != d.analysis.len() {
-        return Err(format!("{} eigenvector entries for {} neighbourhood vertices", values.len(), d.analysis.len()));
+        return Err(Error::Message(format!(
+            "{} eigenvector entries for {} neighbourhood vertices",
+            values.len(),
+            d.analysis.len()
+        )));
     }
     let mut pts = vec![None; d.patch.num_vertices()];
     for (k, &v) in d.analysis.iter().enumerate() {
@@ -96,7 +100,7 @@ pub fn refine_net<T: Combine<f64> + Clone>(
     level0: Vec<Option<T>>,
     analysis_steps: usize,
 ) -> Result<Net<T>, Error> {
-    let mut last = Err(Error::from("no pruning margin tried"));
+    let mut last = Err(Error::Message("no pruning margin tried".into()));
     for margin in MARGINS {
         last = refine_with_margin(scheme, d, level0.clone(), analysis_steps, margin);
         // only a point left undetermined by the pruned margin is worth a
@@ -116,7 +120,7 @@ fn refine_with_margin<T: Combine<f64> + Clone>(
     margin: usize,
 ) -> Result<Net<T>, Error> {
     if analysis_steps == 0 {
-        return Err("the characteristic ring needs at least one analysis step".into());
+        return Err(Error::Input("the characteristic ring needs at least one analysis step".into()));
     }
     let steps = scheme.topology().steps_per_analysis();
     let centre0: HashSet<usize> = centre_set(d).into_iter().collect();
@@ -136,19 +140,29 @@ fn refine_with_margin<T: Combine<f64> + Clone>(
     }
     let centre1: HashSet<usize> = centre0
         .iter()
-        .map(|&v| d.successor(v).ok_or("a centre vertex has no successor after one analysis step"))
+        .map(|&v| {
+            d.successor(v)
+                .ok_or_else(|| Error::Message("a centre vertex has no successor after one analysis step".into()))
+        })
         .collect::<Result<_, _>>()?;
     net.inner = faces_touching(&net.mesh, &centre1);
     check_defined(&net)?;
     net = prune(net, margin)?;
+    let region = net.outer.iter().filter(|&&o| o).count();
+    refuse_beyond_limit(
+        region,
+        net.mesh.num_faces() - region,
+        scheme.topology().faces_per_face(),
+        steps,
+        analysis_steps,
+    )?;
     for _ in steps..analysis_steps * steps {
         let bound = net.mesh.num_faces() * 4;
         if bound > MAX_NET_FACES {
-            return Err(format!(
+            return Err(Error::Input(format!(
                 "refinement level {} would need about {bound} faces, above the supported {MAX_NET_FACES}; use fewer levels",
                 net.refinements + 1
-            )
-            .into());
+            )));
         }
         let Step { refined: r, stencils } = step::<f64>(scheme, &net.mesh)?;
         let points = apply(&stencils, &net.points);
@@ -157,6 +171,46 @@ fn refine_with_margin<T: Combine<f64> + Clone>(
         net = prune(net, margin)?;
     }
     Ok(net)
+}
+
+/// Refuse up front a request whose last level would exceed
+/// [`MAX_NET_FACES`], rather than after computing every level below the
+/// limit (seconds and a gigabyte at valence 1000). Estimated from the pruned
+/// net after the first analysis step: the `region` faces (the first ring's
+/// descendants, an area) grow by the host's `factor` per refinement, the
+/// `margin` faces around them (a band of fixed width along the region's
+/// boundary, a length) by its square root, and the largest mesh is the last
+/// refinement of the net pruned so. Within a factor of 1.6 of the faces
+/// actually made for every built-in host (measured at n = 50..1000). The
+/// per-level check in the loop stays as the backstop.
+fn refuse_beyond_limit(
+    region: usize,
+    margin: usize,
+    factor: usize,
+    steps: usize,
+    analysis_steps: usize,
+) -> Result<(), Error> {
+    // the largest mesh is the last refinement of the previous level's pruned
+    // net, whole: every face of it times `factor`
+    let f = factor as f64;
+    let faces_at = |l: usize| {
+        let k = (l - 1) * steps;
+        if k == 0 {
+            return 0.0;
+        }
+        let pruned = region as f64 * f.powi(k as i32 - 1) + margin as f64 * f.sqrt().powi(k as i32 - 1);
+        pruned * f
+    };
+    let estimate = faces_at(analysis_steps);
+    if estimate <= MAX_NET_FACES as f64 {
+        return Ok(());
+    }
+    let fits = (1..analysis_steps).rev().find(|&l| faces_at(l) <= MAX_NET_FACES as f64).unwrap_or(1);
+    Err(Error::Input(format!(
+        "{analysis_steps} levels would need about {estimate:.0} faces at the last level (from {} after the first, \
+         about {factor}× per refinement), above the supported {MAX_NET_FACES} (about 1 KB each); use --levels {fits} or fewer",
+        region + margin
+    )))
 }
 
 fn descend<T>(old: &Net<T>, mesh: &PolyMesh, origins: &[Origin], parents: &[Origin], points: Vec<Option<T>>) -> Net<T> {
@@ -190,7 +244,7 @@ fn check_defined<T>(net: &Net<T>) -> Result<(), Error> {
         }
     }
     if !net.outer.iter().any(|&x| x) {
-        return Err("the first ring around the centre is empty".into());
+        return Err(Error::Message("the first ring around the centre is empty".into()));
     }
     Ok(())
 }
@@ -203,7 +257,7 @@ fn check_defined<T>(net: &Net<T>) -> Result<(), Error> {
 /// ring alone. A too-small margin shows up as an undefined first-ring vertex
 /// (`check_defined`), never as a silent error, and `refine_net` then retries
 /// with a wider one.
-fn prune<T: Clone>(net: Net<T>, margin: usize) -> Result<Net<T>, String> {
+fn prune<T: Clone>(net: Net<T>, margin: usize) -> Result<Net<T>, Error> {
     let mesh = &net.mesh;
     let mut near: HashSet<usize> = HashSet::new();
     for f in (0..mesh.num_faces()).filter(|&f| net.outer[f]) {
@@ -241,5 +295,29 @@ pub fn facet_triangles(mesh: &PolyMesh, f: usize) -> Vec<[usize; 3]> {
     match mesh.face_point(f) {
         Some(c) => (0..m).map(|k| [face[k], face[(k + 1) % m], c]).collect(),
         None => (1..m - 1).map(|k| [face[0], face[k], face[k + 1]]).collect(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_estimate_refuses_only_past_the_limit_and_names_the_levels_that_fit() {
+        // 100 000 region faces, no margin, 4 faces per face, one refinement
+        // per level: the last mesh of level l has 100 000·4^(l−1) faces, so
+        // level 2 (400 000) fits and level 3 (1 600 000) does not
+        assert!(refuse_beyond_limit(100_000, 0, 4, 1, 1).is_ok());
+        assert!(refuse_beyond_limit(100_000, 0, 4, 1, 2).is_ok());
+        let e = refuse_beyond_limit(100_000, 0, 4, 1, 3).unwrap_err();
+        assert!(matches!(e, Error::Input(_)));
+        let m = e.to_string();
+        assert!(m.contains("about 1600000 faces") && m.contains("--levels 2 or fewer"), "{m}");
+        // a margin band grows by the square root of the factor: 200 000
+        // margin faces are 400 000 after one refinement, and the last
+        // refinement of that whole net makes 1 600 000 (not 3 200 000)
+        let e = refuse_beyond_limit(0, 200_000, 4, 1, 3).unwrap_err().to_string();
+        assert!(e.contains("about 1600000 faces"), "{e}");
+        assert!(refuse_beyond_limit(0, 100_000, 4, 1, 3).is_ok());
     }
 }

@@ -48,4 +48,18 @@ impl Topology {
             | Topology::PolarSplit => 1,
         }
     }
+
+    /// How many faces one face becomes in one refinement, away from
+    /// extraordinary points and boundaries: what the cost of refining a net
+    /// grows by per level. Dual hosts make a face per old face, edge and
+    /// vertex (F + E + V = 4F on a closed quad net).
+    pub fn faces_per_face(&self) -> usize {
+        match self {
+            Topology::PrimalSplit(_) | Topology::Dual | Topology::FcvSplit | Topology::AugmentedDual => 4,
+            Topology::Sqrt3 => 3,
+            Topology::TernarySplit => 9,
+            // radial-only: each ring of faces becomes two
+            Topology::PolarSplit => 2,
+        }
+    }
 }
