@@ -88,3 +88,59 @@ fn an_unknown_figure_extension_is_a_one_line_error() {
     assert!(err.contains(".eps") && err.contains(".pdf"), "{err}");
     assert!(!file.exists(), "nothing written");
 }
+
+/// The texts of an SVG's `<text>` elements.
+fn svg_texts(svg: &str) -> Vec<String> {
+    svg.split("<text").skip(1).filter_map(|t| Some(t[t.find('>')? + 1..t.find("</text>")?].trim().to_string())).collect()
+}
+
+/// The most frequent `font-size` of an SVG (its tick labels).
+fn tick_font(svg: &str) -> f64 {
+    let mut counts = std::collections::BTreeMap::new();
+    for part in svg.split("font-size=\"").skip(1) {
+        *counts.entry(part.split('"').next().unwrap().to_string()).or_insert(0) += 1;
+    }
+    counts.into_iter().max_by_key(|c| c.1).expect("text in the figure").0.trim_end_matches("px").parse().unwrap()
+}
+
+#[test]
+fn ring_figure_title_size_font_legend_and_ticks() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("ring.svg");
+    let run = |extra: &[&str]| {
+        let mut args = vec!["charmap", "non-box", "-n", "5", "--out", file.to_str().unwrap()];
+        args.extend_from_slice(extra);
+        let out = subdlab(&args);
+        assert!(out.status.success(), "{extra:?}: {}", String::from_utf8_lossy(&out.stderr));
+        std::fs::read_to_string(&file).unwrap()
+    };
+    // the default: the scheme's own title, no verdict in the figure, a
+    // legend for the two colours and the control net, ticks without "-0"
+    let svg = run(&[]);
+    let texts = svg_texts(&svg);
+    assert!(texts.iter().any(|t| t.starts_with("non-box n = 5: characteristic rings")), "{texts:?}");
+    assert!(!texts.iter().any(|t| t.contains("regular") || t.contains("injective")), "no verdict: {texts:?}");
+    for entry in ["ring, copies scaled by", "copies scaled by λ₁, λ₁³", "control net"] {
+        assert!(texts.iter().any(|t| t.contains(entry)), "legend entry '{entry}' in {texts:?}");
+    }
+    let ticks: Vec<f64> = texts.iter().filter_map(|t| t.parse::<f64>().ok()).collect();
+    assert!(ticks.len() >= 8, "numeric tick labels: {texts:?}");
+    assert!(!texts.iter().any(|t| t == "-0" || t.starts_with("-0.0") && t.parse::<f64>() == Ok(0.0)), "{texts:?}");
+    assert!(texts.iter().any(|t| t == "0"), "a zero tick reads 0: {texts:?}");
+
+    // a title of the user's, a size, a larger font; and no title at all
+    let svg = run(&["--title", "Figure 3", "--width", "640", "--height", "480", "--font-size", "24"]);
+    assert_eq!(svg_size(&svg), (640, 480));
+    let texts = svg_texts(&svg);
+    assert!(texts.iter().any(|t| t == "Figure 3") && !texts.iter().any(|t| t.contains("characteristic rings")));
+    // the tick labels (the most frequent size) scale from the default 16 to 24
+    let (default_size, size) = (tick_font(&run(&[])), tick_font(&svg));
+    assert!((size / default_size - 1.5).abs() < 0.1, "tick font {default_size} -> {size}");
+    let svg = run(&["--title", ""]);
+    let texts = svg_texts(&svg);
+    assert!(!texts.iter().any(|t| t.contains("characteristic rings")), "{texts:?}");
+
+    // out of range: a one-line input error before any work
+    let err = fails(&["charmap", "non-box", "-n", "5", "--out", file.to_str().unwrap(), "--font-size", "200"]);
+    assert!(err.contains("--font-size must be between 6 and 72, got 200"), "{err}");
+}

@@ -44,9 +44,35 @@ pub struct CharmapArgs {
     /// rings drawn: the ring and its copies scaled by λ1, λ1², ... (1 to 12)
     #[arg(long, default_value_t = 4)]
     pub rings: usize,
+    #[command(flatten)]
+    pub figure: FigureArgs,
     /// machine-readable JSON output
     #[arg(long)]
     pub json: bool,
+}
+
+/// What a figure's reader sees besides the data: title, size, font.
+#[derive(Args, Debug, Clone, Default)]
+pub struct FigureArgs {
+    /// the figure's title (an empty text: no title); default: the scheme, valence and λ1
+    #[arg(long)]
+    pub title: Option<String>,
+    /// figure width in pixels (= points in PDF), 200 to 6000
+    #[arg(long)]
+    pub width: Option<u32>,
+    /// figure height in pixels (= points in PDF), 200 to 6000
+    #[arg(long)]
+    pub height: Option<u32>,
+    /// base font size (tick labels) in pixels, 6 to 72; other text scales with it
+    #[arg(long)]
+    pub font_size: Option<u32>,
+}
+
+impl FigureArgs {
+    pub fn style(&self) -> Result<plot::Style, Error> {
+        plot::Style { title: self.title.clone(), width: self.width, height: self.height, font_size: self.font_size }
+            .checked()
+    }
 }
 
 #[derive(Subcommand, Debug, Clone)]
@@ -101,6 +127,7 @@ pub fn charmap(a: &CharmapArgs) -> Result<(), Error> {
             "--wedge selects the figure; give the figure file with --out FILE.svg|pdf|png".into(),
         ));
     }
+    let style = a.figure.style()?;
     let scheme = build_scheme(&a.scheme, &a.params)?;
     let config = Configuration::regular(scheme.as_ref(), a.valence)?;
     let opts = CharMapOptions {
@@ -113,7 +140,7 @@ pub fn charmap(a: &CharmapArgs) -> Result<(), Error> {
         if map.ring.is_none() {
             return Err(Error::Input(format!("no figure written: {}", map.explanation)));
         }
-        plot::save(&RingFigure { map: &map, copies: a.rings, wedge: a.wedge }, out)?;
+        plot::save(&RingFigure { map: &map, copies: a.rings, wedge: a.wedge, style }, out)?;
     }
     if a.json {
         print_json(&map)

@@ -6,7 +6,7 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::{err, Figure, FONT};
+use super::{err, tick_label, Figure, Style, FONT};
 use crate::charmap::{wedge, CharMap};
 use crate::error::Error;
 
@@ -16,7 +16,11 @@ pub struct RingFigure<'a> {
     pub copies: usize,
     /// draw the normalised wedge of one sector instead of the rings
     pub wedge: bool,
+    pub style: Style,
 }
+
+/// Base font size of the figure (tick labels), which `Style::font_size` replaces.
+const BASE_FONT: u32 = 16;
 
 /// A polygon to paint: corners, colour index, whether to outline it.
 type Painted = (Vec<(f64, f64)>, usize, bool);
@@ -26,7 +30,7 @@ const LINES: [RGBColor; 2] = [RGBColor(33, 113, 181), RGBColor(217, 72, 1)];
 
 impl Figure for RingFigure<'_> {
     fn size(&self) -> (u32, u32) {
-        (900, 900)
+        self.style.size((900, 900))
     }
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Error>
     where
@@ -39,21 +43,24 @@ impl Figure for RingFigure<'_> {
             .or(m.ring.as_ref())
             .ok_or_else(|| Error::Input("no characteristic ring to draw".into()))?;
         root.fill(&WHITE).map_err(err)?;
-        let verdict = format!(
-            "{}  ·  {}",
-            if m.regular { "regular" } else { "NOT regular" },
-            if m.injective { "injective" } else { "NOT injective" }
-        );
-        let title = format!(
-            "{} n = {}: characteristic {}, λ1 = {:.6}",
+        // the verdict is not drawn: it belongs to the caption of the paper
+        // and to the command's table and JSON
+        let font = |own: u32| self.style.font(own, BASE_FONT);
+        let title = self.style.title(format!(
+            "{} n = {}: characteristic {}, λ₁ = {:.6}",
             m.scheme,
             m.valence,
             if self.wedge { "wedge (normalised)" } else { "rings" },
             m.lambda1
-        );
-        let (top, rest) = root.split_vertically(70);
-        top.draw(&Text::new(title, (20, 12), (FONT, 24).into_font())).map_err(err)?;
-        top.draw(&Text::new(verdict, (20, 42), (FONT, 18).into_font())).map_err(err)?;
+        ));
+        let rest = match title {
+            Some(title) => {
+                let (top, rest) = root.split_vertically(font(24) as i32 + 24);
+                top.draw(&Text::new(title, (20, 12), (FONT, font(24)).into_font())).map_err(err)?;
+                rest
+            }
+            None => root.clone(),
+        };
 
         // (polygon, colour, outlined). Copies are painted from the largest
         // down, each with the faces inside it: the next copy covers them, so
@@ -100,19 +107,30 @@ impl Figure for RingFigure<'_> {
         }
         let half = 0.52 * (hi.0 - lo.0).max(hi.1 - lo.1);
         let c = ((lo.0 + hi.0) / 2.0, (lo.1 + hi.1) / 2.0);
-        let mut chart = ChartBuilder::on(&rest)
-            .margin(20)
-            .x_label_area_size(45)
-            .y_label_area_size(60)
+        // equal scales: the plot area is a square (the larger side of the
+        // area is left as margin)
+        let (w, h) = rest.dim_in_pixel();
+        let (label_x, label_y) = (font(16) as i32 * 3, font(16) as i32 * 4);
+        let side = (w as i32 - label_y).min(h as i32 - label_x).max(1);
+        let (_, area) = rest.split_horizontally(((w as i32 - label_y - side) / 2).max(0));
+        let (area, _) = area.split_horizontally((side + label_y).min(w as i32));
+        let (area, _) = area.split_vertically((side + label_x).min(h as i32));
+        let mut chart = ChartBuilder::on(&area)
+            .margin(10)
+            .x_label_area_size(label_x)
+            .y_label_area_size(label_y)
             .build_cartesian_2d(c.0 - half..c.0 + half, c.1 - half..c.1 + half)
             .map_err(err)?;
+        let span = 2.0 * half;
         chart
             .configure_mesh()
             .disable_mesh()
             .x_desc("x")
             .y_desc("y")
-            .label_style((FONT, 16))
-            .axis_desc_style((FONT, 18))
+            .label_style((FONT, font(16)))
+            .axis_desc_style((FONT, font(18)))
+            .x_label_formatter(&|v| tick_label(*v, span))
+            .y_label_formatter(&|v| tick_label(*v, span))
             .draw()
             .map_err(err)?;
         let grey = RGBColor(150, 150, 150);
@@ -121,8 +139,29 @@ impl Figure for RingFigure<'_> {
             closed.push(f[0]);
             chart.draw_series(std::iter::once(PathElement::new(closed, grey.stroke_width(1)))).map_err(err)?;
         }
+        // one legend entry per colour: the ring (k even) and the copies
+        // between (k odd) alternate, so copy 0 is the ring itself
+        let mut labelled = [false; 2];
         for (p, k, outline) in &polys {
-            chart.draw_series(std::iter::once(Polygon::new(p.clone(), FILLS[*k].filled()))).map_err(err)?;
+            let series =
+                chart.draw_series(std::iter::once(Polygon::new(p.clone(), FILLS[*k].filled()))).map_err(err)?;
+            if !labelled[*k] && !self.wedge {
+                labelled[*k] = true;
+                let (fill, line) = (FILLS[*k], LINES[*k]);
+                series
+                    .label(match (*k, self.copies) {
+                        (0, 0 | 1) => "characteristic ring",
+                        (0, 2) => "characteristic ring",
+                        (0, _) => "ring, copies scaled by λ₁², λ₁⁴, …",
+                        (_, 2) => "copy scaled by λ₁",
+                        _ => "copies scaled by λ₁, λ₁³, …",
+                    })
+                    .legend(move |(x, y)| {
+                        EmptyElement::at((x, y))
+                            + Rectangle::new([(0, -6), (18, 6)], fill.filled())
+                            + Rectangle::new([(0, -6), (18, 6)], line.stroke_width(1))
+                    });
+            }
             if *outline {
                 let mut closed = p.clone();
                 closed.push(p[0]);
@@ -131,7 +170,19 @@ impl Figure for RingFigure<'_> {
         }
         if !self.wedge {
             let dots: Vec<(f64, f64)> = net.iter().flatten().copied().collect();
-            chart.draw_series(dots.into_iter().map(|p| Circle::new(p, 3, BLACK.filled()))).map_err(err)?;
+            chart
+                .draw_series(dots.into_iter().map(|p| Circle::new(p, 3, BLACK.filled())))
+                .map_err(err)?
+                .label("control net (subdominant eigenvectors)")
+                .legend(move |(x, y)| Circle::new((x + 9, y), 3, BLACK.filled()));
+            chart
+                .configure_series_labels()
+                .position(SeriesLabelPosition::UpperRight)
+                .label_font((FONT, font(14)))
+                .background_style(WHITE.mix(0.85))
+                .border_style(BLACK)
+                .draw()
+                .map_err(err)?;
         }
         Ok(())
     }

@@ -129,6 +129,71 @@ pub fn save<F: Figure>(fig: &F, path: &Path) -> Result<(), Error> {
     }
 }
 
+/// What a user may change in a figure: its title (`None`: the figure's
+/// own; an empty text: no title), its size in pixels (one pixel is one
+/// point in PDF), and the base font size the figure's text scales with.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Style {
+    pub title: Option<String>,
+    pub width: Option<u32>,
+    pub height: Option<u32>,
+    pub font_size: Option<u32>,
+}
+
+/// Sizes accepted for `Style`: a figure smaller than this has no room for
+/// its axes, a larger one is not a figure of a paper.
+pub const SIZE_RANGE: std::ops::RangeInclusive<u32> = 200..=6000;
+pub const FONT_RANGE: std::ops::RangeInclusive<u32> = 6..=72;
+
+impl Style {
+    /// Out-of-range sizes are input errors, named.
+    pub fn checked(self) -> Result<Style, Error> {
+        for (name, v, range) in [
+            ("--width", self.width, &SIZE_RANGE),
+            ("--height", self.height, &SIZE_RANGE),
+            ("--font-size", self.font_size, &FONT_RANGE),
+        ] {
+            if let Some(v) = v.filter(|v| !range.contains(v)) {
+                return Err(Error::Input(format!(
+                    "{name} must be between {} and {}, got {v}",
+                    range.start(),
+                    range.end()
+                )));
+            }
+        }
+        Ok(self)
+    }
+    /// The title to draw: the user's, none, or the figure's own.
+    pub fn title(&self, own: String) -> Option<String> {
+        match &self.title {
+            Some(t) if t.is_empty() => None,
+            Some(t) => Some(t.clone()),
+            None => Some(own),
+        }
+    }
+    pub fn size(&self, own: (u32, u32)) -> (u32, u32) {
+        (self.width.unwrap_or(own.0), self.height.unwrap_or(own.1))
+    }
+    /// A font size of the figure, `own` at its default base size `base`,
+    /// scaled to the user's base size.
+    pub fn font(&self, own: u32, base: u32) -> u32 {
+        self.font_size.map_or(own, |f| (own * f).div_ceil(base).max(1))
+    }
+}
+
+/// A tick label with as many decimals as a `span` of values needs, and no
+/// "-0" (a tick at a tiny negative value rounds to zero and reads "0").
+pub fn tick_label(v: f64, span: f64) -> String {
+    let decimals =
+        if span > 0.0 && span.is_finite() { (1.0 - span.log10().floor()).clamp(0.0, 8.0) as usize } else { 2 };
+    let s = format!("{v:.decimals$}");
+    if s.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
+        "0".to_string()
+    } else {
+        s
+    }
+}
+
 /// A plotters error as one line.
 pub(crate) fn err<E: std::fmt::Display>(e: E) -> Error {
     Error::Message(format!("cannot draw the figure: {e}"))

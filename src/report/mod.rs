@@ -122,7 +122,7 @@ fn figures(spec: &FigureSpec) -> Result<(String, Files), Error> {
     )?;
     if map.ring.is_some() {
         let name = format!("figures/{tag}-charmap-n{}.svg", spec.valence);
-        files.insert(name.clone(), svg(&RingFigure { map: &map, copies: 4, wedge: false })?);
+        files.insert(name.clone(), svg(&RingFigure { map: &map, copies: 4, wedge: false, style: Default::default() })?);
         writeln!(
             md,
             "![characteristic rings of {title} at valence {}]({name})\n\nCharacteristic rings of {title}, valence {}: {}, {} (λ1 = {}).\n",
