@@ -91,7 +91,10 @@ fn an_unknown_figure_extension_is_a_one_line_error() {
 
 /// The texts of an SVG's `<text>` elements.
 fn svg_texts(svg: &str) -> Vec<String> {
-    svg.split("<text").skip(1).filter_map(|t| Some(t[t.find('>')? + 1..t.find("</text>")?].trim().to_string())).collect()
+    svg.split("<text")
+        .skip(1)
+        .filter_map(|t| Some(t[t.find('>')? + 1..t.find("</text>")?].trim().to_string()))
+        .collect()
 }
 
 /// The most frequent `font-size` of an SVG (its tick labels).
@@ -143,4 +146,30 @@ fn ring_figure_title_size_font_legend_and_ticks() {
     // out of range: a one-line input error before any work
     let err = fails(&["charmap", "non-box", "-n", "5", "--out", file.to_str().unwrap(), "--font-size", "200"]);
     assert!(err.contains("--font-size must be between 6 and 72, got 200"), "{err}");
+}
+
+#[test]
+fn every_figure_command_takes_the_same_style_flags() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("f.svg");
+    let f = file.to_str().unwrap();
+    let style = ["--title", "My figure", "--width", "720", "--height", "540", "--font-size", "12"];
+    let commands: [Vec<&str>; 3] = [
+        vec!["charmap", "loop", "-n", "7", "--out", f],
+        vec!["plot", "spectrum", "loop", "--valences", "3..8", "--out", f],
+        vec!["curvature", "loop", "-n", "7", "--out", f],
+    ];
+    for args in commands {
+        let args: Vec<&str> = args.into_iter().chain(style).collect();
+        let out = subdlab(&args);
+        assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+        let svg = std::fs::read_to_string(&file).unwrap();
+        assert_eq!(svg_size(&svg), (720, 540), "{args:?}");
+        let texts = svg_texts(&svg);
+        assert!(texts.iter().any(|t| t == "My figure"), "{args:?}: {texts:?}");
+        // numeric labels never read "-0"
+        assert!(!texts.iter().any(|t| t.starts_with("-0") && t.parse::<f64>() == Ok(0.0)), "{args:?}: {texts:?}");
+        // the curvature class (a verdict) is not drawn
+        assert!(!texts.iter().any(|t| t.contains("unbounded") || t.contains("bounded")), "{args:?}: {texts:?}");
+    }
 }

@@ -54,7 +54,7 @@ pub struct CharmapArgs {
 /// What a figure's reader sees besides the data: title, size, font.
 #[derive(Args, Debug, Clone, Default)]
 pub struct FigureArgs {
-    /// the figure's title (an empty text: no title); default: the scheme, valence and λ1
+    /// the figure's title (an empty text: no title); default: names the scheme
     #[arg(long)]
     pub title: Option<String>,
     /// figure width in pixels (= points in PDF), 200 to 6000
@@ -93,6 +93,8 @@ pub enum PlotWhat {
         /// output figure (.svg, .pdf or .png)
         #[arg(short, long)]
         out: PathBuf,
+        #[command(flatten)]
+        figure: FigureArgs,
     },
 }
 
@@ -200,15 +202,16 @@ fn parse_range(s: &str) -> Result<(usize, usize), Error> {
 
 pub fn plot(what: &PlotWhat) -> Result<(), Error> {
     match what {
-        PlotWhat::Spectrum { scheme, valences, params, count, out } => {
+        PlotWhat::Spectrum { scheme, valences, params, count, out, figure } => {
             if *count == 0 || *count > 6 {
                 return Err(Error::Input(format!("--count must be between 1 and 6, got {count}")));
             }
+            let style = figure.style()?;
             check_out(out)?;
             let (a, b) = parse_range(valences)?;
             let s = build_scheme(scheme, params)?;
             let rows = crate::plot::spectrum::leading_moduli(s.as_ref(), a..=b)?;
-            plot::save(&SpectrumFigure { scheme: s.name().to_string(), rows, count: *count }, out)
+            plot::save(&SpectrumFigure { scheme: s.name().to_string(), rows, count: *count, style }, out)
         }
     }
 }

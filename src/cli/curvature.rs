@@ -44,6 +44,8 @@ pub struct CurvatureArgs {
     /// machine-readable JSON output (stable field names)
     #[arg(long)]
     pub json: bool,
+    #[command(flatten)]
+    pub style: super::charmap_commands::FigureArgs,
 }
 
 pub fn run(a: &CurvatureArgs) -> Result<(), Error> {
@@ -58,6 +60,7 @@ pub fn run(a: &CurvatureArgs) -> Result<(), Error> {
         "surface" => CurvatureFigureKind::Surface,
         other => return Err(Error::Input(format!("unknown figure '{other}'; use central-ring or surface"))),
     };
+    let style = a.style.style()?;
     if let Some(out) = &a.out {
         check_out(out)?;
     }
@@ -73,7 +76,7 @@ pub fn run(a: &CurvatureArgs) -> Result<(), Error> {
         if c.figures.is_none() {
             return Err(Error::Input(format!("no figure written: the curvature class is {}", c.class.name())));
         }
-        plot::save(&CurvatureFigure { c: &c, kind }, out)?;
+        plot::save(&CurvatureFigure { c: &c, kind, style }, out)?;
     }
     if a.json {
         print_json(&c)

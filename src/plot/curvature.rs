@@ -8,7 +8,7 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::{err, Figure, FONT};
+use super::{err, tick_label, Figure, Style, FONT};
 use crate::curvature::Curvature;
 use crate::error::Error;
 
@@ -22,7 +22,11 @@ pub enum CurvatureFigureKind {
 pub struct CurvatureFigure<'a> {
     pub c: &'a Curvature,
     pub kind: CurvatureFigureKind,
+    pub style: Style,
 }
+
+/// Base font size of the figure (the subtitle), which `Style::font_size` replaces.
+const BASE_FONT: u32 = 16;
 
 const NEG: (f64, f64, f64) = (33.0, 102.0, 172.0);
 const POS: (f64, f64, f64) = (178.0, 24.0, 43.0);
@@ -53,6 +57,18 @@ fn window(points: impl Iterator<Item = [f64; 2]>) -> Option<((f64, f64), f64)> {
 
 impl Figure for CurvatureFigure<'_> {
     fn size(&self) -> (u32, u32) {
+        self.style.size(self.own_size())
+    }
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Error>
+    where
+        DB::ErrorType: 'static,
+    {
+        self.draw_figure(root)
+    }
+}
+
+impl CurvatureFigure<'_> {
+    fn own_size(&self) -> (u32, u32) {
         match self.kind {
             CurvatureFigureKind::CentralRing => {
                 let panels = self.c.figures.as_ref().map_or(1, |f| f.mu_functions.len().max(1)) as u32;
@@ -66,32 +82,37 @@ impl Figure for CurvatureFigure<'_> {
             }
         }
     }
-    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Error>
+    fn draw_figure<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Error>
     where
         DB::ErrorType: 'static,
     {
         let c = self.c;
+        let font = |own: u32| self.style.font(own, BASE_FONT);
         let data = c
             .figures
             .as_ref()
             .ok_or_else(|| Error::Input("no curvature figure data (the analysis stopped before the ring)".into()))?;
         root.fill(&WHITE).map_err(err)?;
         let mu = c.mu.as_ref().map_or("none".to_string(), |m| format!("{:.6}", m.modulus));
-        let title = format!(
-            "{} n = {}: curvature {}, λ = {:.6}, |μ| = {mu}",
+        // the class (the verdict) is in the table and the JSON, not drawn
+        let title = self.style.title(format!(
+            "{} n = {}: λ = {:.6}, |μ| = {mu}",
             c.scheme,
             c.valence,
-            c.class.name(),
             c.lambda.unwrap_or(f64::NAN)
-        );
-        let (top, rest) = root.split_vertically(80);
-        top.draw(&Text::new(title, (20, 12), (FONT, 24).into_font())).map_err(err)?;
+        ));
+        let title_height = title.as_ref().map_or(0, |_| font(24) as i32 + 16);
+        let (top, rest) = root.split_vertically(title_height + font(16) as i32 + 30);
+        if let Some(title) = title {
+            top.draw(&Text::new(title, (20, 12), (FONT, font(24)).into_font())).map_err(err)?;
+        }
+        let subtitle_at = (20, title_height + 12);
         match self.kind {
             CurvatureFigureKind::CentralRing => {
                 top.draw(&Text::new(
                     "central ring: μ-eigenfunctions as heights over the characteristic ring (blue < 0 < red)",
-                    (20, 46),
-                    (FONT, 16).into_font(),
+                    subtitle_at,
+                    (FONT, font(16)).into_font(),
                 ))
                 .map_err(err)?;
                 if data.mu_functions.is_empty() {
@@ -106,12 +127,20 @@ impl Figure for CurvatureFigure<'_> {
                     let top = values.iter().flatten().map(|v| v.abs()).fold(0.0, f64::max).max(1e-300);
                     let mut chart = ChartBuilder::on(area)
                         .margin(10)
-                        .caption(label, (FONT, 15))
+                        .caption(label, (FONT, font(15)))
                         .x_label_area_size(25)
                         .y_label_area_size(40)
                         .build_cartesian_2d(center.0 - half..center.0 + half, center.1 - half..center.1 + half)
                         .map_err(err)?;
-                    chart.configure_mesh().disable_mesh().label_style((FONT, 12)).draw().map_err(err)?;
+                    let span = 2.0 * half;
+                    chart
+                        .configure_mesh()
+                        .disable_mesh()
+                        .label_style((FONT, font(12)))
+                        .x_label_formatter(&|v| tick_label(*v, span))
+                        .y_label_formatter(&|v| tick_label(*v, span))
+                        .draw()
+                        .map_err(err)?;
                     chart
                         .draw_series(data.triangles.iter().zip(values).map(|(t, v)| {
                             let mean = (v[0] + v[1] + v[2]) / (3.0 * top);
@@ -125,8 +154,8 @@ impl Figure for CurvatureFigure<'_> {
                 top.draw(&Text::new(
                     "limit surface from sampled quadratics, ring k (scaled by 1/λ^k): sign of Gaussian curvature \
                      (red > 0 elliptic, blue < 0 hyperbolic)",
-                    (20, 46),
-                    (FONT, 15).into_font(),
+                    subtitle_at,
+                    (FONT, font(15)).into_font(),
                 ))
                 .map_err(err)?;
                 if data.surface.is_empty() {
@@ -138,14 +167,16 @@ impl Figure for CurvatureFigure<'_> {
                 let label_rows = labels.split_evenly((rows, 1));
                 let panels = grid.split_evenly((rows, cols));
                 for (r, s) in data.surface.iter().enumerate() {
-                    label_rows[r].draw(&Text::new(s.input.clone(), (10, 150), (FONT, 16).into_font())).map_err(err)?;
+                    label_rows[r]
+                        .draw(&Text::new(s.input.clone(), (10, 150), (FONT, font(16)).into_font()))
+                        .map_err(err)?;
                     for (k, ring) in s.rings.iter().enumerate() {
                         let area = &panels[r * cols + k];
                         let (center, half) = window(ring.iter().flat_map(|(p, _)| p.iter().copied()))
                             .ok_or_else(|| Error::Input("nothing to draw".into()))?;
                         let mut chart = ChartBuilder::on(area)
                             .margin(8)
-                            .caption(format!("ring {k}"), (FONT, 15))
+                            .caption(format!("ring {k}"), (FONT, font(15)))
                             .build_cartesian_2d(center.0 - half..center.0 + half, center.1 - half..center.1 + half)
                             .map_err(err)?;
                         chart

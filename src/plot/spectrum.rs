@@ -4,7 +4,7 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::{err, Figure, FONT};
+use super::{err, Figure, Style, FONT};
 use crate::error::Error;
 
 /// The rows of the figure: for each valence, the moduli of the distinct
@@ -31,7 +31,11 @@ pub struct SpectrumFigure {
     pub rows: Vec<(usize, Vec<f64>)>,
     /// how many moduli per valence to draw
     pub count: usize,
+    pub style: Style,
 }
+
+/// Base font size of the figure (tick labels), which `Style::font_size` replaces.
+const BASE_FONT: u32 = 17;
 
 const COLOURS: [RGBColor; 6] = [
     RGBColor(31, 119, 180),
@@ -51,7 +55,7 @@ fn series_name(k: usize) -> String {
 
 impl Figure for SpectrumFigure {
     fn size(&self) -> (u32, u32) {
-        (1000, 650)
+        self.style.size((1000, 650))
     }
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Error>
     where
@@ -63,19 +67,23 @@ impl Figure for SpectrumFigure {
             self.rows.last().map(|r| r.0).ok_or_else(|| Error::Input("no valences to plot".into()))?,
         );
         let x_range = if n1 > n0 { n0 as f64 - 0.5..n1 as f64 + 0.5 } else { n0 as f64 - 1.0..n0 as f64 + 1.0 };
-        let mut chart = ChartBuilder::on(root)
-            .caption(format!("{}: leading eigenvalue moduli against valence", self.scheme), (FONT, 26))
+        let font = |own: u32| self.style.font(own, BASE_FONT);
+        let mut builder = ChartBuilder::on(root);
+        if let Some(title) = self.style.title(format!("{}: leading eigenvalue moduli against valence", self.scheme)) {
+            builder.caption(title, (FONT, font(26)));
+        }
+        let mut chart = builder
             .margin(20)
-            .x_label_area_size(55)
-            .y_label_area_size(70)
+            .x_label_area_size(font(17) * 3 + 4)
+            .y_label_area_size(font(17) * 4)
             .build_cartesian_2d(x_range, 0.0..1.05)
             .map_err(err)?;
         chart
             .configure_mesh()
             .x_desc("valence n")
             .y_desc("|λ|")
-            .label_style((FONT, 17))
-            .axis_desc_style((FONT, 20))
+            .label_style((FONT, font(17)))
+            .axis_desc_style((FONT, font(20)))
             .x_label_formatter(&|x| format!("{x:.0}"))
             .draw()
             .map_err(err)?;
@@ -98,7 +106,7 @@ impl Figure for SpectrumFigure {
         chart
             .configure_series_labels()
             .position(SeriesLabelPosition::LowerRight)
-            .label_font((FONT, 17))
+            .label_font((FONT, font(17)))
             .background_style(WHITE.mix(0.85))
             .border_style(BLACK)
             .draw()

@@ -138,7 +138,10 @@ fn figures(spec: &FigureSpec) -> Result<(String, Files), Error> {
     }
     let rows = crate::plot::spectrum::leading_moduli(scheme.as_ref(), 3..=spec.up_to)?;
     let name = format!("figures/{tag}-spectrum.svg");
-    files.insert(name.clone(), svg(&SpectrumFigure { scheme: title.clone(), rows, count: 3 })?);
+    files.insert(
+        name.clone(),
+        svg(&SpectrumFigure { scheme: title.clone(), rows, count: 3, style: Default::default() })?,
+    );
     writeln!(md, "![leading eigenvalues of {title}]({name})\n\nLeading eigenvalue moduli of {title} against the valence (3..{}).\n", spec.up_to).ok();
     Ok((md, files))
 }
