@@ -173,3 +173,32 @@ fn every_figure_command_takes_the_same_style_flags() {
         assert!(!texts.iter().any(|t| t.contains("unbounded") || t.contains("bounded")), "{args:?}: {texts:?}");
     }
 }
+
+/// The spectrum plot follows branches (Fourier block, rank in the block),
+/// not ranks overall: Loop's block k carries 3/8 + cos(2πk/n)/4 (the
+/// eigenvalue of its 1-ring rule's Fourier symbol), which is the largest of
+/// block k for 2k < n (the other values of the 2-ring blocks are 1/8 and
+/// below), so each branch is that closed form at every valence.
+#[test]
+fn spectrum_plot_branches_follow_fourier_blocks() {
+    use subdlab::plot::spectrum::{leading_moduli, Branch, SpectrumFigure};
+    let loop_scheme = subdlab::schemes::build("loop", &[]).unwrap();
+    let rows = leading_moduli(loop_scheme.as_ref(), 5..=12).unwrap();
+    let closed = |k: usize, n: usize| 0.375 + (2.0 * std::f64::consts::PI * k as f64 / n as f64).cos() / 4.0;
+    for (n, points) in &rows {
+        for k in [1usize, 2] {
+            let got = points.iter().find(|p| p.0 == Branch { block: k, rank: 0 }).map(|p| p.1);
+            assert!(
+                got.is_some_and(|g| approx::abs_diff_eq!(g, closed(k, *n), epsilon = 1e-10)),
+                "n = {n}, block {k}: {got:?} vs {}",
+                closed(k, *n)
+            );
+        }
+    }
+    let fig = SpectrumFigure { scheme: "loop".into(), rows, count: 2, style: Default::default() };
+    let drawn: Vec<Branch> = fig.branches().into_iter().map(|b| b.0).collect();
+    assert_eq!(drawn, vec![Branch { block: 1, rank: 0 }, Branch { block: 2, rank: 0 }]);
+    let svg = subdlab::plot::render_svg(&fig).unwrap();
+    let texts = svg_texts(&svg);
+    assert!(texts.iter().any(|t| t == "block 1 (λ1)") && texts.iter().any(|t| t == "block 2"), "{texts:?}");
+}
