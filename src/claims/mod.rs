@@ -23,6 +23,9 @@ pub struct ClaimFile {
     /// short paper key, e.g. "huang-nonbox"
     pub paper: String,
     pub title: String,
+    /// the full reference (authors, title, venue, year) the report cites
+    #[serde(default)]
+    pub citation: Option<String>,
     /// figures for the paper's report page (characteristic rings, spectra)
     #[serde(default, rename = "figure")]
     pub figures: Vec<FigureSpec>,

@@ -37,6 +37,7 @@ fn unreadable(path: &Path, message: String) -> (ClaimFile, Vec<Outcome>) {
     let file = ClaimFile {
         paper: name.clone(),
         title: "(unreadable claim file)".into(),
+        citation: None,
         figures: vec![],
         sweeps: vec![],
         claims: vec![],
