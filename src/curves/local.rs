@@ -31,7 +31,6 @@ use crate::numeric::{Rational, Weight};
 use crate::sdc::CentreKind;
 use crate::spectrum::driver::{solve, Assembled, Identity, Problem};
 use crate::spectrum::exact::Candidates;
-use crate::spectrum::Method;
 
 /// Guard against masks whose dependency closure does not stay local.
 const MAX_WINDOW: usize = 1000;
@@ -158,26 +157,18 @@ pub fn curve_spectrum(scheme: &dyn CurveScheme, kind: NeighbourhoodKind) -> Resu
     let rows = Assembled { float, exact: exact_matrix };
     let params: BTreeMap<String, String> =
         scheme.params().values.iter().map(|(k, v)| (k.clone(), v.text.clone())).collect();
-    let problem = Problem {
-        identity: Identity {
-            scheme: scheme.name().to_string(),
-            valence: 2,
-            params: params.clone(),
-            faces: String::new(),
-            centre: CentreKind::Vertex,
-            neighbourhood: kind,
-            minimal_size: minimal.len(),
-            analysis_size: analysis.len(),
-        },
-        labels: rows.float.labels.clone(),
-        period: 1,
-        sectors: 1,
-        method: Some(Method::Full),
-        exact: true,
-        // a window is a handful of points: every convergent is worth a try
-        candidates: Candidates::Convergents,
-        rows: &rows,
+    let identity = Identity {
+        scheme: scheme.name().to_string(),
+        valence: 2,
+        params: params.clone(),
+        faces: String::new(),
+        centre: CentreKind::Vertex,
+        neighbourhood: kind,
+        minimal_size: minimal.len(),
+        analysis_size: analysis.len(),
     };
+    // a window is a handful of points: every convergent is worth a try
+    let problem = Problem::window(identity, &rows, true, Candidates::Convergents);
     let spectrum = solve(problem)?.spectrum;
     let summary = spectrum.exact_analysis.as_ref();
     let exact = summary.is_some_and(|s| s.complete());

@@ -14,7 +14,7 @@ use crate::numeric::Rational;
 use crate::sdc::CentreKind;
 use crate::spectrum::driver::{solve, Assembled, Identity, Problem};
 use crate::spectrum::exact::Candidates;
-use crate::spectrum::{Method, Spectrum};
+use crate::spectrum::Spectrum;
 
 /// The control points of the limit surface over the cells touching the origin
 /// define the analysis window (radius 1 in level-0 lattice units).
@@ -83,25 +83,17 @@ pub fn analyse(scheme: &dyn LatticeScheme, kind: NeighbourhoodKind, exact: bool)
         float: to_local::<f64>(scheme, &window, kind)?,
         exact: Some(to_local::<Rational>(scheme, &window, kind)?),
     };
-    let problem = Problem {
-        identity: Identity {
-            scheme: scheme.name().to_string(),
-            valence: 4,
-            params: scheme.params().values.iter().map(|(k, v)| (k.clone(), v.text.clone())).collect(),
-            faces: "QQQQ".into(),
-            centre: CentreKind::Vertex,
-            neighbourhood: kind,
-            minimal_size: minimal.len(),
-            analysis_size: analysis.len(),
-        },
-        labels: rows.float.labels.clone(),
-        period: 1,
-        sectors: 1,
-        method: Some(Method::Full),
-        exact,
-        candidates: Candidates::Recognised,
-        rows: &rows,
+    let identity = Identity {
+        scheme: scheme.name().to_string(),
+        valence: 4,
+        params: scheme.params().values.iter().map(|(k, v)| (k.clone(), v.text.clone())).collect(),
+        faces: "QQQQ".into(),
+        centre: CentreKind::Vertex,
+        neighbourhood: kind,
+        minimal_size: minimal.len(),
+        analysis_size: analysis.len(),
     };
+    let problem = Problem::window(identity, &rows, exact, Candidates::Recognised);
     let spectrum = solve(problem)?.spectrum;
     let Assembled { float: matrix, exact: exact_matrix } = rows;
     let exact_matrix = exact_matrix.expect("assembled above");

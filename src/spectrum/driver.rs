@@ -97,6 +97,23 @@ pub struct Problem<'a> {
     pub rows: &'a dyn RowSource,
 }
 
+impl<'a> Problem<'a> {
+    /// A window of a lattice or a line: no rotation symmetry to use (the
+    /// masks may be asymmetric), so the whole matrix, labelled as assembled.
+    pub fn window(identity: Identity, rows: &'a Assembled, exact: bool, candidates: exact::Candidates) -> Self {
+        Problem {
+            identity,
+            labels: rows.float.labels.clone(),
+            period: 1,
+            sectors: 1,
+            method: Some(Method::Full),
+            exact,
+            candidates,
+            rows,
+        }
+    }
+}
+
 /// What the driver computed.
 pub struct Solved {
     /// S over the whole neighbourhood; with Fourier blocks only the
