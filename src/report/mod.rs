@@ -159,7 +159,7 @@ fn sweep_figure(spec: &crate::claims::SweepFigureSpec) -> Result<(String, Files)
     let bounds = plot::sweep::Bound::all_of(&grid, &spec.bounds)?;
     let points = run(&grid, &|_, _| {})?;
     let file = format!("figures/{}-sweep-{name}.svg", spec.scheme);
-    let fig = plot::sweep::SweepFigure::new(&spec.scheme, name, &points, spec.charmap, bounds)?;
+    let fig = plot::sweep::SweepFigure::new(&spec.scheme, Some(name), &points, spec.charmap, bounds)?;
     let mut files = Files::new();
     files.insert(file.clone(), svg(&fig)?);
     let mut md = format!(
