@@ -88,7 +88,7 @@ fn bad_plots_are_one_line_errors() {
     let dir = tempfile::tempdir().unwrap();
     let svg = dir.path().join("s.svg");
     let svg = svg.to_str().unwrap();
-    // no swept parameter, --bound without --plot, bad bound, bad extension, unwritable path
+    // no swept parameter (without --curvature), --bound without --plot, bad bound, bad extension, unwritable path
     fails(&["sweep", "loop", "--valences", "3..5", "--plot", svg]);
     fails(&["sweep", "non-box", "--valences", "3..5", "--param", "a=0:1:1/2", "--bound", "1/4"]);
     fails(&["sweep", "non-box", "--valences", "3..5", "--param", "a=0:1:1/2", "--plot", svg, "--bound", "1/("]);
@@ -237,4 +237,161 @@ fn charmap_points_equal_single_point_runs() {
     fails(&[&base[..], &["--levels", "3"]].concat());
     fails(&[&base[..], &["--charmap", "--levels", "0"]].concat());
     fails(&[&base[..], &["--charmap", "--resolution", "5"]].concat());
+}
+
+/// Loop's curvature class in closed form (derived in tests/curvature_loop.rs
+/// and rechecked here): λ = b(1), b(m) = 3/8 + cos(2πm/n)/4 the eigenvalue of
+/// Fourier block m on the 1-ring, λ² the second eigenvalue of block 0 (Loop's
+/// β), and 1/8 from ring 2. μ = max(b(2), 1/8, λ²) for n ≥ 4, μ = 1/8 for
+/// n = 3 (blocks 1 and 2 both carry λ = 1/4). So the class is bounded exactly
+/// when b(2) ≤ λ² and 1/8 ≤ λ², i.e. n = 4, 5, 6, and unbounded otherwise;
+/// the L_p limit is 2 ln λ / (2 ln λ − ln μ).
+fn loop_closed_form(n: usize) -> (&'static str, Option<f64>) {
+    let b = |m: usize| 3.0 / 8.0 + (2.0 * std::f64::consts::PI * m as f64 / n as f64).cos() / 4.0;
+    let lam = b(1);
+    let l2 = lam * lam;
+    let mu = if n == 3 { 0.125 } else { b(2).max(0.125).max(l2) };
+    if mu > l2 * (1.0 + 1e-9) {
+        ("unbounded", Some(2.0 * lam.ln() / (2.0 * lam.ln() - mu.ln())))
+    } else {
+        ("bounded", None)
+    }
+}
+
+#[test]
+fn loop_closed_form_switches_at_seven() {
+    let classes: Vec<&str> = (3..=12).map(|n| loop_closed_form(n).0).collect();
+    assert_eq!(classes[..5], ["unbounded", "bounded", "bounded", "bounded", "unbounded"]);
+    assert!(classes[4..].iter().all(|c| *c == "unbounded"));
+    // p* = 4 at n = 3: 2 ln(1/4) / (2 ln(1/4) − ln(1/8)) = −4 ln 2 / (−ln 2)
+    assert!((loop_closed_form(3).1.unwrap() - 4.0).abs() < 1e-12);
+}
+
+/// `--curvature` adds `curvature_class` and `lp_limit` to every point (JSON,
+/// and as the last CSV columns, after `error`): equal to the library's
+/// `curvature()` (with its exact stage) and to the closed form.
+#[test]
+fn curvature_columns_equal_single_point_runs_and_the_closed_form() {
+    use subdlab::curvature::{curvature_of, CurvatureOptions};
+    let v = json(&["sweep", "loop", "--valences", "3..10", "--curvature", "--json"]);
+    let out = subdlab(&["sweep", "loop", "--valences", "3..10", "--curvature", "--csv"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let csv = String::from_utf8(out.stdout).unwrap();
+    let mut lines = csv.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(
+        head,
+        [
+            "valence",
+            "",
+            "lambda0",
+            "lambda1",
+            "lambda2",
+            "lambda3",
+            "convergent",
+            "c1_spectral",
+            "charmap",
+            "error",
+            "curvature_class",
+            "lp_limit"
+        ]
+    );
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let scheme = subdlab::schemes::build("loop", &[]).unwrap();
+    let points = v["points"].as_array().unwrap();
+    assert_eq!(points.len(), 8);
+    for (p, row) in points.iter().zip(&rows) {
+        let n = p["valence"].as_u64().unwrap() as usize;
+        let single = curvature_of(scheme.as_ref(), n, &CurvatureOptions::default()).unwrap();
+        let (class, lp) = loop_closed_form(n);
+        assert_eq!(p["curvature_class"].as_str().unwrap(), single.class.name(), "n = {n}");
+        assert_eq!(p["curvature_class"].as_str().unwrap(), class, "n = {n}");
+        assert_eq!(row[10], class, "CSV, n = {n}");
+        match lp {
+            Some(x) => {
+                let json_lp = p["lp_limit"].as_f64().unwrap();
+                let csv_lp: f64 = row[11].parse().unwrap();
+                assert!((json_lp - x).abs() < 1e-6 * x, "n = {n}: {json_lp} against {x}");
+                // (serde_json's default float parser may be one ulp off)
+                assert!((csv_lp - json_lp).abs() <= 1e-14 * x, "n = {n}");
+                assert!((json_lp - single.lp_limit.unwrap()).abs() < 1e-9 * x, "n = {n}");
+            }
+            None => {
+                assert!(p["lp_limit"].is_null() && single.lp_limit.is_none(), "n = {n}");
+                assert_eq!(row[11], "", "n = {n}");
+            }
+        }
+    }
+    // Catmull–Clark too: zero at 3, bounded at 4, unbounded from 5 (README),
+    // each equal to the library's single-point analysis
+    let v = json(&["sweep", "catmull-clark", "--valences", "3..8", "--curvature", "--json"]);
+    let scheme = subdlab::schemes::build("catmull-clark", &[]).unwrap();
+    for p in v["points"].as_array().unwrap() {
+        let n = p["valence"].as_u64().unwrap() as usize;
+        let single = curvature_of(scheme.as_ref(), n, &CurvatureOptions::default()).unwrap();
+        assert_eq!(p["curvature_class"].as_str().unwrap(), single.class.name(), "n = {n}");
+    }
+    let classes: Vec<&str> =
+        v["points"].as_array().unwrap().iter().map(|p| p["curvature_class"].as_str().unwrap()).collect();
+    assert_eq!(classes, ["zero", "bounded", "unbounded", "unbounded", "unbounded", "unbounded"]);
+    // without --curvature the new fields are null / empty and the old ones unchanged
+    let plain = json(&["sweep", "loop", "--valences", "3..4", "--json"]);
+    for p in plain["points"].as_array().unwrap() {
+        assert!(p["curvature_class"].is_null() && p["lp_limit"].is_null());
+    }
+    let out = subdlab(&["sweep", "loop", "--valences", "3..4", "--csv"]);
+    let csv = String::from_utf8(out.stdout).unwrap();
+    assert!(csv.lines().skip(1).all(|l| l.ends_with(",,,") && l.split(',').count() == 12), "{csv}");
+}
+
+/// The figure colours every C¹ cell by its curvature class, with one legend
+/// swatch per class present; a sweep over valences alone draws one cell per
+/// valence.
+#[test]
+fn plot_cells_are_coloured_by_curvature_class() {
+    const ZERO: &str = "fill=\"#6BAED6\"";
+    const BOUNDED: &str = "fill=\"#238B45\"";
+    const UNBOUNDED: &str = "fill=\"#8064B4\"";
+    let dir = tempfile::tempdir().unwrap();
+    let svg = dir.path().join("sweep.svg");
+    let count = |text: &str, fill: &str| {
+        text.split("<rect").skip(1).filter(|r| r.split('>').next().unwrap().contains(fill)).count()
+    };
+    // Loop over valences: bounded at 4, 5, 6, unbounded at 3 and 7..10 (closed form)
+    let out = subdlab(&["sweep", "loop", "--valences", "3..10", "--curvature", "--plot", svg.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = std::fs::read_to_string(&svg).unwrap();
+    let bounded = (3..=10).filter(|&n| loop_closed_form(n).0 == "bounded").count();
+    assert_eq!(bounded, 3);
+    assert_eq!(count(&text, BOUNDED), bounded + 1, "bounded cells + legend swatch");
+    assert_eq!(count(&text, UNBOUNDED), 8 - bounded + 1, "unbounded cells + legend swatch");
+    assert_eq!(count(&text, ZERO), 0, "no zero class, no swatch");
+    assert!(text.contains("loop: curvature class per valence"));
+    assert!(text.contains("curvature class bounded") && text.contains("curvature class unbounded"));
+    assert!(!text.contains("curvature class zero"));
+    // a swept parameter: every cell's colour follows its JSON point
+    let out = subdlab(&[
+        "sweep",
+        "non-box",
+        "--valences",
+        "3..5",
+        "--param",
+        "a=0:1/2:1/10",
+        "--curvature",
+        "--json",
+        "--plot",
+        svg.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let text = std::fs::read_to_string(&svg).unwrap();
+    let points = v["points"].as_array().unwrap();
+    for (class, fill) in [("zero", ZERO), ("bounded", BOUNDED), ("unbounded", UNBOUNDED)] {
+        let cells = points.iter().filter(|p| p["c1_spectral"] == true && p["curvature_class"] == class).count();
+        assert_eq!(count(&text, fill), if cells > 0 { cells + 1 } else { 0 }, "{class}");
+    }
+    let failing = points.iter().filter(|p| p["c1_spectral"] == false && p["convergent"] == true).count();
+    assert!(failing > 0);
+    assert_eq!(count(&text, "fill=\"#F4BEBA\""), failing + 1, "failing cells keep their colour");
+    assert!(points.iter().all(|p| p["c1_spectral"] == true || p["curvature_class"] == "not-applicable"));
 }

@@ -376,9 +376,11 @@ fn sweep(args: &super::SweepArgs) -> Result<(), Error> {
     if json && csv {
         return Err(Error::Input("choose one of --json and --csv".into()));
     }
-    if args.plot.is_some() && !args.params.iter().any(|p| p.contains(':')) {
+    if args.plot.is_some() && !args.curvature && !args.params.iter().any(|p| p.contains(':')) {
         return Err(Error::Input(
-            "--plot needs a swept parameter NAME=START:END:STEP (for valences alone use `plot spectrum`)".into(),
+            "--plot needs a swept parameter NAME=START:END:STEP or --curvature (for valences alone use \
+             `plot spectrum`)"
+                .into(),
         ));
     }
     if !args.bounds.is_empty() && args.plot.is_none() {
@@ -395,6 +397,7 @@ fn sweep(args: &super::SweepArgs) -> Result<(), Error> {
     let mut grid =
         Grid::parse(scheme, &args.valences, args.faces.as_deref(), &parse_params(&args.params)?, args.charmap)?;
     grid.set_charmap_options(args.levels, args.resolution)?;
+    grid.curvature = args.curvature;
     let bounds = crate::plot::sweep::Bound::all_of(&grid, &args.bounds)?;
     let total = grid.len();
     // indicatif draws only when standard error is a terminal
@@ -409,7 +412,8 @@ fn sweep(args: &super::SweepArgs) -> Result<(), Error> {
     bar.finish_and_clear();
     let intervals = admissible(&points);
     let converging = convergent(&points);
-    if let (Some(path), Some((name, _))) = (&args.plot, &grid.param) {
+    if let Some(path) = &args.plot {
+        let name = grid.param.as_ref().map(|p| p.0.as_str());
         let fig = crate::plot::sweep::SweepFigure::new(scheme, name, &points, grid.charmap, bounds)?;
         crate::plot::save(&fig, path)?;
     }
@@ -432,23 +436,32 @@ fn sweep(args: &super::SweepArgs) -> Result<(), Error> {
         });
     }
     let name = grid.param.as_ref().map(|p| p.0.clone()).unwrap_or_default();
-    // one row of cells per point; CSV joins them, the table pads them
-    const WIDTHS: [usize; 9] = [7, 10, 14, 14, 14, 14, 5, 5, 8];
+    // one row of cells per point; CSV joins them (the error, then the
+    // columns added later, so the older columns keep their positions), the
+    // table pads them
+    const WIDTHS: [usize; 11] = [7, 10, 14, 14, 14, 14, 5, 5, 8, 14, 10];
     let mut text = String::new();
-    let mut print_row = |cells: &[String], error: &str| {
+    let mut print_row = |cells: &[String], error: &str, added: &[String]| {
         if csv {
-            text += &format!("{},{}\n", cells.join(","), error.replace(',', ";"));
+            text += &format!("{},{},{}\n", cells.join(","), error.replace(',', ";"), added.join(","));
         } else {
-            let padded: Vec<String> = cells.iter().zip(WIDTHS).map(|(c, w)| format!("{c:>w$}")).collect();
+            let all = cells.iter().chain(added);
+            let padded: Vec<String> = all.zip(WIDTHS).map(|(c, w)| format!("{c:>w$}")).collect();
             let note = if error.is_empty() { String::new() } else { format!("  ({error})") };
             text += &format!("{}{note}\n", padded.join(" "));
         }
     };
     if csv {
-        print_row(&[format!("valence,{name},lambda0,lambda1,lambda2,lambda3,convergent,c1_spectral,charmap")], "error");
+        print_row(
+            &[format!("valence,{name},lambda0,lambda1,lambda2,lambda3,convergent,c1_spectral,charmap")],
+            "error",
+            &["curvature_class,lp_limit".into()],
+        );
     } else {
         let head = ["valence", name.as_str(), "|λ0|", "|λ1|", "|λ2|", "|λ3|", "conv", "C1", "charmap"];
-        print_row(&head.map(String::from), "");
+        // the table shows the curvature columns only when they were computed
+        let added: &[String] = if grid.curvature { &["curvature".into(), "L_p: p <".into()] } else { &[] };
+        print_row(&head.map(String::from), "", added);
     }
     for p in &points {
         let l = |k: usize| p.lambda.get(k).map(|x| crate::spectrum::fmt_f(*x)).unwrap_or_default();
@@ -463,7 +476,16 @@ fn sweep(args: &super::SweepArgs) -> Result<(), Error> {
             p.c1_spectral.to_string(),
             p.charmap.map(|b| b.to_string()).unwrap_or_default(),
         ];
-        print_row(&cells, p.error.as_deref().unwrap_or_default());
+        // CSV: the L_p limit in full precision, empty for "every finite p" or
+        // not computed; the table reads "any" for every finite p
+        let lp = match (p.curvature_class, p.lp_limit) {
+            (_, Some(x)) if csv => format!("{x}"),
+            (_, Some(x)) => crate::spectrum::fmt_f(x),
+            (Some(c), None) if !csv && c != crate::curvature::CurvatureClass::NotApplicable => "any".into(),
+            _ => String::new(),
+        };
+        let added = [p.curvature_class.map(|c| c.name().to_string()).unwrap_or_default(), lp];
+        print_row(&cells, p.error.as_deref().unwrap_or_default(), if csv || grid.curvature { &added } else { &[] });
     }
     if !csv && grid.param.is_some() {
         for (what, list) in

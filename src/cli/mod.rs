@@ -214,6 +214,10 @@ pub struct SweepArgs {
     /// also check the characteristic map at every point that passes the spectral test
     #[arg(long)]
     pub charmap: bool,
+    /// also compute the curvature class and L_p limit at every point (as `subdlab curvature
+    /// --no-exact`; opt-in: about a curvature run per point, far more than the spectrum)
+    #[arg(long)]
+    pub curvature: bool,
     /// with --charmap: analysis steps of refinement (default as `subdlab charmap`: 4)
     #[arg(long)]
     pub levels: Option<usize>,
@@ -226,7 +230,8 @@ pub struct SweepArgs {
     /// comma-separated values, one row per point
     #[arg(long)]
     pub csv: bool,
-    /// draw the admissible intervals (valence x swept value) into FILE.svg, FILE.pdf or FILE.png
+    /// draw the admissible intervals (valence x swept value; with --curvature coloured by
+    /// curvature class, and also for valences alone) into FILE.svg, FILE.pdf or FILE.png
     #[arg(short = 'o', long = "out", visible_alias = "plot")]
     pub plot: Option<std::path::PathBuf>,
     /// a reference bound to draw on the plot, an expression in n (e.g. a paper's

@@ -277,3 +277,92 @@ pub fn growth_test(
 pub fn ring_size_c(sampler: &RingSampler, x: &[c64]) -> f64 {
     sampler.ring_values_c(x).iter().map(|z| z.norm()).fold(0.0, f64::max)
 }
+
+/// How the generalised eigenspace G of ν in one block shows on the ring.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RingStructure {
+    /// dimension of G found (at most the cap given)
+    pub dimension: usize,
+    /// largest ring size over the eigenvectors (the null space of N = B − νI)
+    pub eigenvector_ring: f64,
+    /// largest ring size over a basis of G (eigenvectors and generalised
+    /// eigenvectors): the eigenvalue shows in the surface when above the
+    /// vanishing tolerance
+    pub space_ring: f64,
+    /// largest ring size over N·G (every vector that S^m multiplies by a
+    /// positive power of m): a Jordan chain shows when above the tolerance
+    pub chain_ring: f64,
+    /// number of vectors N·w counted (0: no Jordan chain found at this
+    /// tolerance)
+    pub tops: usize,
+}
+
+/// The generalised eigenspace of ν in the square block `b`, orthonormal:
+/// K_1 = null(N), K_j = {w : N w ∈ K_(j−1)} (the null space of (I − QQ*)N,
+/// Q an orthonormal basis of K_(j−1)), until it stops growing or reaches
+/// `cap` (the algebraic multiplicity). Singular values below 1e-9·max(‖N‖, 1)
+/// count as zero (the spectrum's null-space tolerance). Computing the chain
+/// level by level avoids the powers N^k, whose small singular values blur.
+pub fn generalised_eigenspace(b: &faer::Mat<c64>, nu: c64, cap: usize) -> Vec<Vec<c64>> {
+    chain_levels(b, nu, cap).pop().unwrap_or_default()
+}
+
+/// Orthonormal bases of K_1 ⊂ K_2 ⊂ ... (see [`generalised_eigenspace`]).
+fn chain_levels(b: &faer::Mat<c64>, nu: c64, cap: usize) -> Vec<Vec<Vec<c64>>> {
+    let k = b.nrows();
+    let cap = cap.min(k);
+    let n = faer::Mat::<c64>::from_fn(k, k, |i, j| if i == j { b[(i, j)] - nu } else { b[(i, j)] });
+    let tol = 1e-9 * n.norm_l2().max(1.0);
+    let mut levels: Vec<Vec<Vec<c64>>> = Vec::new();
+    let empty = Vec::new();
+    loop {
+        let basis = levels.last().unwrap_or(&empty);
+        // (I − QQ*) N
+        let mut m = n.clone();
+        for q in basis {
+            for j in 0..k {
+                let dot = (0..k).fold(c64::new(0.0, 0.0), |a, i| a + q[i].conj() * n[(i, j)]);
+                for i in 0..k {
+                    m[(i, j)] -= q[i] * dot;
+                }
+            }
+        }
+        let Ok(svd) = m.svd() else { break };
+        let sv = svd.S().column_vector();
+        let mut next: Vec<Vec<c64>> =
+            (0..k).filter(|&c| sv[c].re < tol).map(|c| (0..k).map(|i| svd.V()[(i, c)]).collect()).collect();
+        if next.len() <= basis.len() {
+            break;
+        }
+        next.truncate(cap);
+        let full = next.len() >= cap;
+        levels.push(next);
+        if full {
+            break;
+        }
+    }
+    levels
+}
+
+/// The ring structure of ν in block `b`: `ring(x)` is the ring size of the
+/// block vector x relative to its largest entry (over the neighbourhood).
+/// Vectors N·w smaller than 1e-7·‖N‖ (rounding of N on the eigenvectors)
+/// are skipped.
+pub fn ring_structure(b: &faer::Mat<c64>, nu: c64, cap: usize, ring: &dyn Fn(&[c64]) -> f64) -> RingStructure {
+    let k = b.nrows();
+    let levels = chain_levels(b, nu, cap);
+    let empty = Vec::new();
+    let g = levels.last().unwrap_or(&empty);
+    let n = faer::Mat::<c64>::from_fn(k, k, |i, j| if i == j { b[(i, j)] - nu } else { b[(i, j)] });
+    let norm = n.norm_l2().max(1e-300);
+    let apply = |w: &[c64]| -> Vec<c64> {
+        (0..k).map(|i| (0..k).fold(c64::new(0.0, 0.0), |a, j| a + n[(i, j)] * w[j])).collect()
+    };
+    let size = |x: &[c64]| x.iter().map(|z| z.norm()).fold(0.0, f64::max);
+    let max_ring = |vs: &[Vec<c64>]| vs.iter().map(|w| ring(w)).fold(0.0, f64::max);
+    let eigenvector_ring = levels.first().map_or(0.0, |k1| max_ring(k1));
+    let space_ring = max_ring(g);
+    let tops: Vec<Vec<c64>> = g.iter().map(|w| apply(w)).filter(|t| size(t) > 1e-7 * norm).collect();
+    let chain_ring = max_ring(&tops);
+    RingStructure { dimension: g.len(), eigenvector_ring, space_ring, chain_ring, tops: tops.len() }
+}

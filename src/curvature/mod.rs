@@ -26,8 +26,13 @@
 //! diverges (|μ| > λ², or a Jordan block at λ², where κ_m ~ m). A Jordan
 //! chain S w2 = λ² w2 + w1 puts m λ^(2m−2) on the eigenvector w1 at its top,
 //! so it counts when w1's eigenfunction does not vanish on the ring
-//! (`EigenInfo::jordan_visible`: per block B, the tops are (B − λ²I) w for w
-//! in the null space of (B − λ²I)²).
+//! (`EigenInfo::jordan_visible`: per block B, with N = B − νI, the vectors
+//! N·w for w in the generalised eigenspace G of ν, which S^m multiplies by a
+//! positive power of m). G is also where an eigenvalue shows: when w1
+//! vanishes on the ring but w2 does not, the ring sees ν^m w2, so ν counts
+//! for μ (with no growth) although every eigenvector vanishes there. G is
+//! computed level by level ([`jordan::generalised_eigenspace`]): null(N),
+//! then the w with N w in it, and so on.
 //!
 //! # The L_p limit
 //!
@@ -192,13 +197,16 @@ pub struct EigenInfo {
     /// exact rational value (exact path), else null
     pub exact: Option<String>,
     /// largest refined value on the ring over the vector's largest entry,
-    /// maximised over its eigenvectors
+    /// maximised over its eigenvectors (and, when defective, a basis of its
+    /// generalised eigenspace)
     pub ring_size: f64,
-    /// the eigenfunctions vanish on the characteristic ring (excluded)
+    /// the eigenfunctions vanish on the characteristic ring (excluded); for
+    /// a defective eigenvalue, the generalised eigenfunctions too
     pub vanishes: bool,
-    /// for a defective eigenvalue: the eigenvectors at the top of its Jordan
-    /// chains (the ones multiplied by m in S^m) do not vanish on the ring, so
-    /// the chain shows in the surface; null when not defective
+    /// for a defective eigenvalue: some vector multiplied by a positive power
+    /// of m in S^m (N·w for w in the generalised eigenspace, N = S − νI; for
+    /// chains of length 2 the eigenvectors at the top) does not vanish on the
+    /// ring, so the chain shows in the surface; null when not defective
     pub jordan_visible: Option<bool>,
     #[serde(skip)]
     index: usize,
@@ -538,6 +546,21 @@ fn examine(spec: &Spectrum, sampler: &RingSampler, e: &Eigenvalue, index: usize,
             ring_blocks.push(block);
         }
     }
+    let jordan_visible = e.defective.then(|| {
+        // the whole generalised eigenspace: an eigenvalue whose eigenvectors
+        // all vanish on the ring still shows through a generalised
+        // eigenvector that does not (S^m w2 = ν^m w2 + m ν^(m−1) w1 with w1
+        // vanishing leaves ν^m w2 on the ring), and a chain shows when some
+        // N·w, w in the generalised eigenspace, does not vanish
+        let s = generalised_ring_structure(spec, sampler, e);
+        for (block, size) in s.blocks {
+            ring_size = ring_size.max(size);
+            if size > VANISH_TOL {
+                ring_blocks.push(block);
+            }
+        }
+        s.visible
+    });
     ring_blocks.sort_unstable();
     ring_blocks.dedup();
     EigenInfo {
@@ -553,52 +576,58 @@ fn examine(spec: &Spectrum, sampler: &RingSampler, e: &Eigenvalue, index: usize,
         exact: e.exact.clone(),
         ring_size,
         vanishes: ring_size <= VANISH_TOL,
-        jordan_visible: e.defective.then(|| jordan_visible(spec, sampler, e)),
+        jordan_visible,
         index,
     }
 }
 
-/// Whether some Jordan chain of `e` has a top eigenvector that does not vanish
-/// on the ring. Per block B: with N = B − νI, the chain tops are N·w for w in
-/// the null space of N² (singular values below a relative tolerance), w not
-/// in the null space of N.
-fn jordan_visible(spec: &Spectrum, sampler: &RingSampler, e: &Eigenvalue) -> bool {
+struct GeneralisedRing {
+    /// per block: the largest ring size over its generalised eigenspace
+    blocks: Vec<(usize, f64)>,
+    /// some Jordan chain has a vector multiplied by a power of m in S^m (N·w)
+    /// that does not vanish on the ring
+    visible: bool,
+}
+
+/// The ring structure of a defective eigenvalue's generalised eigenspace,
+/// block by block ([`jordan::ring_structure`]: the chain computed level by
+/// level, null(N), then w with N w in it, ...).
+fn generalised_ring_structure(spec: &Spectrum, sampler: &RingSampler, e: &Eigenvalue) -> GeneralisedRing {
     let nu = c64::new(e.re, e.im);
-    let mut tops = Vec::new();
+    let mut blocks = Vec::new();
+    let mut chain: f64 = 0.0;
+    let mut tops = 0;
     for &m in &e.blocks {
         let b = match &spec.synthesis {
             Synthesis::Dft { blocks, .. } => &blocks[m],
             Synthesis::Full { matrix } => matrix,
         };
-        let k = b.nrows();
-        let n = faer::Mat::<c64>::from_fn(k, k, |i, j| if i == j { b[(i, j)] - nu } else { b[(i, j)] });
-        let n2 = &n * &n;
-        let Ok(svd) = n2.svd() else { return true };
-        let sv = svd.S().column_vector();
-        let norm = n.norm_l2().max(1e-300);
-        let tol = 1e-9 * norm * norm.max(1.0);
-        let mut right = Vec::new();
-        for c in (0..k).filter(|&c| sv[c].re < tol) {
-            let w: Vec<c64> = (0..k).map(|i| svd.V()[(i, c)]).collect();
-            let top: Vec<c64> = (0..k).map(|i| (0..k).fold(c64::new(0.0, 0.0), |a, j| a + n[(i, j)] * w[j])).collect();
-            if top.iter().map(|z| z.norm()).fold(0.0, f64::max) > 1e-7 * norm {
-                right.push(top);
-            }
-        }
-        if !right.is_empty() {
-            tops.push(crate::spectrum::EigenVectors { block: m, right });
-        }
+        // a block vector over the neighbourhood, then its ring size
+        let ring = |x: &[c64]| -> f64 {
+            let probe = Eigenvalue {
+                vectors: vec![crate::spectrum::EigenVectors { block: m, right: vec![x.to_vec()] }],
+                ..e.clone()
+            };
+            spec.right_vectors(&probe)
+                .iter()
+                .map(|v| {
+                    let scale = v.iter().map(|z| z.norm()).fold(0.0, f64::max);
+                    if scale > 0.0 {
+                        jordan::ring_size_c(sampler, v) / scale
+                    } else {
+                        0.0
+                    }
+                })
+                .fold(0.0, f64::max)
+        };
+        let s = jordan::ring_structure(b, nu, e.algebraic_multiplicity, &ring);
+        blocks.push((m, s.space_ring));
+        chain = chain.max(s.chain_ring);
+        tops += s.tops;
     }
-    if tops.is_empty() {
-        // the floating-point structure says defective but no chain was found
-        // at this tolerance: keep the conservative reading
-        return true;
-    }
-    let probe = Eigenvalue { vectors: tops, ..e.clone() };
-    spec.right_vectors(&probe).iter().any(|x| {
-        let scale = x.iter().map(|z| z.norm()).fold(0.0, f64::max);
-        scale > 0.0 && sampler.ring_values_c(x).iter().map(|z| z.norm()).fold(0.0, f64::max) / scale > VANISH_TOL
-    })
+    // the floating-point structure says defective but no chain was found at
+    // this tolerance: keep the conservative reading (visible)
+    GeneralisedRing { blocks, visible: tops == 0 || chain > VANISH_TOL }
 }
 
 fn parse_rational(s: &str) -> Option<Rational> {

@@ -2,12 +2,16 @@
 //! per swept value, coloured by the strongest test the point passes, with
 //! optional reference bounds (curves in the valence, e.g. a paper's stated
 //! bound) drawn across the rows so the computed intervals can be compared
-//! with the stated ones at a glance.
+//! with the stated ones at a glance. When the sweep computed the curvature
+//! class (`subdlab sweep --curvature`), the cells that pass the first-order
+//! tests are coloured by their class instead (zero, bounded, unbounded), and
+//! a sweep over valences alone draws one cell per valence.
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::{err, Figure, FONT};
+use crate::curvature::CurvatureClass;
 use crate::error::Error;
 use crate::sweep::Point;
 
@@ -24,6 +28,12 @@ pub enum CellStatus {
     SpectralOnly,
     /// passes every computed test
     Admissible,
+    /// admissible, curvature class zero (a flat spot for generic data)
+    CurvatureZero,
+    /// admissible, curvature class bounded
+    CurvatureBounded,
+    /// admissible, curvature class unbounded
+    CurvatureUnbounded,
 }
 
 impl CellStatus {
@@ -33,7 +43,15 @@ impl CellStatus {
             (false, false, _) if !p.convergent => CellStatus::NotConvergent,
             (false, false, _) => CellStatus::NotSpectral,
             (false, true, Some(false)) => CellStatus::SpectralOnly,
-            (false, true, _) => CellStatus::Admissible,
+            (false, true, _) => match p.curvature_class {
+                None => CellStatus::Admissible,
+                Some(CurvatureClass::Zero) => CellStatus::CurvatureZero,
+                Some(CurvatureClass::Bounded) => CellStatus::CurvatureBounded,
+                Some(CurvatureClass::Unbounded) => CellStatus::CurvatureUnbounded,
+                // spectral C¹ but not applicable: the curvature analysis's own
+                // characteristic-map check failed
+                Some(CurvatureClass::NotApplicable) => CellStatus::SpectralOnly,
+            },
         }
     }
     fn colour(self) -> RGBColor {
@@ -43,6 +61,9 @@ impl CellStatus {
             CellStatus::NotSpectral => RGBColor(244, 190, 186),
             CellStatus::SpectralOnly => RGBColor(253, 208, 120),
             CellStatus::Admissible => RGBColor(102, 178, 102),
+            CellStatus::CurvatureZero => RGBColor(107, 174, 214),
+            CellStatus::CurvatureBounded => RGBColor(35, 139, 69),
+            CellStatus::CurvatureUnbounded => RGBColor(128, 100, 180),
         }
     }
     fn label(self, charmap: bool) -> &'static str {
@@ -53,6 +74,9 @@ impl CellStatus {
             CellStatus::SpectralOnly => "spectral C¹, characteristic map fails",
             CellStatus::Admissible if charmap => "spectral C¹ and injective characteristic map",
             CellStatus::Admissible => "spectral C¹",
+            CellStatus::CurvatureZero => "C¹, curvature class zero (|μ| < λ²: flat spot)",
+            CellStatus::CurvatureBounded => "C¹, curvature class bounded (|μ| = λ², no Jordan block)",
+            CellStatus::CurvatureUnbounded => "C¹, curvature class unbounded (|μ| > λ² or Jordan block at λ²)",
         }
     }
 }
@@ -72,30 +96,59 @@ impl Bound {
 
 pub struct SweepFigure {
     pub scheme: String,
-    pub param: String,
+    /// the swept parameter (None: valences only, one cell per valence)
+    pub param: Option<String>,
     /// (valence, swept value, status), the swept values in increasing order
     pub cells: Vec<(usize, f64, CellStatus)>,
     /// whether the characteristic map was part of the test
     pub charmap: bool,
     pub bounds: Vec<Bound>,
+    /// the cells are coloured by curvature class (the points carry one)
+    pub curvature: bool,
 }
 
 impl SweepFigure {
-    /// The figure of a sweep's points; every point must carry a swept value.
-    pub fn new(scheme: &str, param: &str, points: &[Point], charmap: bool, bounds: Vec<Bound>) -> Result<Self, Error> {
+    /// The figure of a sweep's points. With a swept parameter every point
+    /// must carry a swept value; without one (`param` None) only a sweep
+    /// with curvature classes is drawn, one cell per valence.
+    pub fn new(
+        scheme: &str,
+        param: Option<&str>,
+        points: &[Point],
+        charmap: bool,
+        bounds: Vec<Bound>,
+    ) -> Result<Self, Error> {
+        let curvature = points.iter().any(|p| p.curvature_class.is_some());
+        if param.is_none() && !curvature {
+            return Err(Error::Input("the figure needs a swept parameter (or curvature classes)".into()));
+        }
         let cells = points
             .iter()
             .map(|p| {
-                let text =
-                    p.param.as_deref().ok_or_else(|| Error::Input("the figure needs a swept parameter".into()))?;
-                let v = crate::numeric::ParamValue::parse(text)?.value;
+                let v = match param {
+                    Some(_) => {
+                        let text = p
+                            .param
+                            .as_deref()
+                            .ok_or_else(|| Error::Input("the figure needs a swept parameter".into()))?;
+                        crate::numeric::ParamValue::parse(text)?.value
+                    }
+                    None => 0.0,
+                };
                 Ok((p.valence, v, CellStatus::of(p)))
             })
             .collect::<Result<Vec<_>, Error>>()?;
         if cells.is_empty() {
             return Err(Error::Input("no sweep points to plot".into()));
         }
-        Ok(SweepFigure { scheme: scheme.to_string(), param: param.to_string(), cells, charmap, bounds })
+        Ok(SweepFigure {
+            scheme: scheme.to_string(),
+            param: param.map(str::to_string),
+            cells,
+            charmap,
+            bounds,
+            curvature,
+        })
     }
 
     /// The statuses that occur, strongest first.
@@ -144,8 +197,18 @@ impl Figure for SweepFigure {
         let h = self.half_step();
         let (x0, x1) = self.cells.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| (a.min(c.1), b.max(c.1)));
         let (n0, n1) = self.cells.iter().fold((usize::MAX, 0), |(a, b), c| (a.min(c.0), b.max(c.0)));
+        let caption = match (&self.param, self.curvature) {
+            (Some(p), false) => format!("{}: admissible {p} per valence", self.scheme),
+            (Some(p), true) => format!("{}: curvature class over {p} per valence", self.scheme),
+            (None, _) => format!("{}: curvature class per valence", self.scheme),
+        };
+        let x_desc = match &self.param {
+            Some(p) => format!("parameter {p}"),
+            None => "(no swept parameter)".to_string(),
+        };
+        let swept = self.param.is_some();
         let mut chart = ChartBuilder::on(&plot_area)
-            .caption(format!("{}: admissible {} per valence", self.scheme, self.param), (FONT, 26))
+            .caption(caption, (FONT, 26))
             .margin(20)
             .x_label_area_size(55)
             .y_label_area_size(70)
@@ -154,7 +217,9 @@ impl Figure for SweepFigure {
         chart
             .configure_mesh()
             .disable_mesh()
-            .x_desc(format!("parameter {}", self.param))
+            .x_desc(x_desc)
+            // the mesh's default (11) with a swept parameter; none without one
+            .x_labels(if swept { 11 } else { 0 })
             .y_desc("valence n")
             .label_style((FONT, 17))
             .axis_desc_style((FONT, 20))

@@ -1,6 +1,8 @@
 //! `subdlab report`: the reports/ folder — an index with a summary table per
 //! paper, and one Markdown page per paper with its claims table, the
-//! characteristic-ring and spectrum figures (SVG), and every refuted or
+//! characteristic-ring and spectrum figures (SVG), the second-order figures
+//! (central ring and limit-surface rings, once per scheme of the page, with
+//! the curvature class and its evidence), and every refuted or
 //! garbled statement with the evidence. The output is deterministic (no
 //! timestamps), so a test can regenerate it and fail when the committed
 //! reports are stale.
@@ -80,6 +82,23 @@ fn paper_page(f: &ClaimFile, outcomes: &[Outcome]) -> Result<(String, Files), Er
             files.extend(figs);
         }
     }
+    // second order: once per scheme (and parameters) of the page, at the
+    // valence of its first figure
+    let mut seen: Vec<(&str, &BTreeMap<String, String>)> = Vec::new();
+    let mut second = String::new();
+    for spec in &f.figures {
+        if seen.contains(&(spec.scheme.as_str(), &spec.params)) {
+            continue;
+        }
+        seen.push((spec.scheme.as_str(), &spec.params));
+        let (md, figs) = curvature_figures(spec)?;
+        second += &md;
+        files.extend(figs);
+    }
+    if !second.is_empty() {
+        page += "## Second order (curvature)\n\n";
+        page += &second;
+    }
     for spec in &f.sweeps {
         let (md, figs) = sweep_figure(spec)?;
         page += &md;
@@ -115,20 +134,7 @@ fn paper_page(f: &ClaimFile, outcomes: &[Outcome]) -> Result<(String, Files), Er
 fn figures(spec: &FigureSpec) -> Result<(String, Files), Error> {
     let params: Vec<(String, String)> = spec.params.iter().map(|(k, v)| (k.clone(), v.clone())).collect();
     let scheme = schemes::build(&spec.scheme, &params)?;
-    let tag = if params.is_empty() {
-        spec.scheme.clone()
-    } else {
-        format!(
-            "{}-{}",
-            spec.scheme,
-            params.iter().map(|(k, v)| format!("{k}{}", v.replace('/', "_"))).collect::<Vec<_>>().join("-")
-        )
-    };
-    let title = if params.is_empty() {
-        spec.scheme.clone()
-    } else {
-        format!("{} ({})", spec.scheme, params.iter().map(|(k, v)| format!("{k} = {v}")).collect::<Vec<_>>().join(", "))
-    };
+    let (tag, title) = tag_and_title(&spec.scheme, &params);
     let mut md = String::new();
     let mut files = Files::new();
     let config = Configuration::regular(scheme.as_ref(), spec.valence)?;
@@ -163,6 +169,102 @@ fn figures(spec: &FigureSpec) -> Result<(String, Files), Error> {
     Ok((md, files))
 }
 
+/// Rings of the limit-surface figure in the reports.
+const SURFACE_RINGS: usize = 3;
+
+/// The second-order figures of `subdlab curvature --figure central-ring` and
+/// `--figure surface` at the spec's valence, with the class and its evidence.
+fn curvature_figures(spec: &FigureSpec) -> Result<(String, Files), String> {
+    use crate::curvature::{curvature, CurvatureOptions, DEFAULT_LEVELS};
+    use crate::plot::curvature::{CurvatureFigure, CurvatureFigureKind};
+    let params: Vec<(String, String)> = spec.params.iter().map(|(k, v)| (k.clone(), v.clone())).collect();
+    let scheme = schemes::build(&spec.scheme, &params)?;
+    let (tag, title) = tag_and_title(&spec.scheme, &params);
+    let n = spec.valence;
+    let config = Configuration::regular(scheme.as_ref(), n)?;
+    let opts = CurvatureOptions { levels: DEFAULT_LEVELS, figures: true, surface_rings: SURFACE_RINGS, exact: true };
+    let c = curvature(scheme.as_ref(), &config, &opts)?;
+    let f = crate::spectrum::fmt_f;
+    let mut summary = format!("Curvature class **{}** (evidence: {}", c.class.name(), c.evidence.name());
+    if let (Some(l2), Some(m)) = (c.lambda_squared, &c.mu) {
+        write!(summary, "; λ² = {}, |μ| = {}, |μ|/λ² = {}", f(l2), f(m.modulus), f(m.modulus / l2)).ok();
+    }
+    summary += match (c.class, c.lp_limit) {
+        (_, Some(p)) => format!("; principal curvatures in L_p for p < {}", f(p)),
+        (crate::curvature::CurvatureClass::NotApplicable, None) => String::new(),
+        (_, None) => "; L_p for every finite p".into(),
+    }
+    .as_str();
+    if let Some(sh) = &c.shapes {
+        write!(
+            summary,
+            "; F(μ) = {:?}: elliptic shape {}, saddle {}",
+            sh.fourier_index,
+            if sh.elliptic_possible { "possible" } else { "impossible" },
+            if sh.saddle_possible { "possible" } else { "impossible" }
+        )
+        .ok();
+    }
+    summary += ")";
+    let command = |kind: &str| {
+        let p: String = params.iter().map(|(k, v)| format!(" --param {k}={v}")).collect();
+        let rings = if kind == "surface" { format!(" --rings {SURFACE_RINGS}") } else { String::new() };
+        format!("`subdlab curvature {}{p} -n {n} --figure {kind}{rings}`", spec.scheme)
+    };
+    let mut md = String::new();
+    let mut files = Files::new();
+    let Some(data) = &c.figures else {
+        // the analysis stopped before the ring: say why, draw nothing
+        let why = c.reasons.first().cloned().unwrap_or_default();
+        writeln!(md, "No second-order figure for {title} at valence {n}. {summary}: {}.\n", cell(&why)).ok();
+        return Ok((md, files));
+    };
+    if !data.mu_functions.is_empty() {
+        let name = format!("figures/{tag}-central-ring-n{n}.svg");
+        files.insert(name.clone(), svg(&CurvatureFigure { c: &c, kind: CurvatureFigureKind::CentralRing })?);
+        writeln!(
+            md,
+            "![central ring of {title} at valence {n}]({name})\n\nCentral ring of {title}, valence {n} ({}): \
+             each μ-eigenfunction (real and imaginary parts; one block of each conjugate pair) drawn as a height \
+             over the characteristic ring, blue < 0 < red; these are the functions that dominate the surface's \
+             deviation from its tangent plane. {summary}.\n",
+            command("central-ring")
+        )
+        .ok();
+    }
+    if !data.surface.is_empty() {
+        let name = format!("figures/{tag}-surface-n{n}.svg");
+        files.insert(name.clone(), svg(&CurvatureFigure { c: &c, kind: CurvatureFigureKind::Surface })?);
+        writeln!(
+            md,
+            "![limit-surface rings of {title} at valence {n}]({name})\n\nLimit-surface rings of {title}, valence {n} \
+             ({}): control points sampled from z = x² + y² (top) and z = x² − y² \
+             (bottom) over the characteristic map, refined with the scheme, rings 0..{} scaled by 1/λ^k, each face \
+             coloured by the sign of the discrete Gaussian curvature of the refined net (red > 0, blue < 0). \
+             {summary}.\n",
+            command("surface"),
+            SURFACE_RINGS - 1
+        )
+        .ok();
+    }
+    Ok((md, files))
+}
+
+/// File-name tag and display title of a scheme with parameters.
+fn tag_and_title(scheme: &str, params: &[(String, String)]) -> (String, String) {
+    if params.is_empty() {
+        return (scheme.to_string(), scheme.to_string());
+    }
+    let tag = format!(
+        "{}-{}",
+        scheme,
+        params.iter().map(|(k, v)| format!("{k}{}", v.replace('/', "_"))).collect::<Vec<_>>().join("-")
+    );
+    let title =
+        format!("{} ({})", scheme, params.iter().map(|(k, v)| format!("{k} = {v}")).collect::<Vec<_>>().join(", "));
+    (tag, title)
+}
+
 /// The admissible intervals of a swept parameter per valence, as `subdlab
 /// sweep --plot` draws them, with the spec's reference bounds.
 fn sweep_figure(spec: &crate::claims::SweepFigureSpec) -> Result<(String, Files), Error> {
@@ -179,7 +281,7 @@ fn sweep_figure(spec: &crate::claims::SweepFigureSpec) -> Result<(String, Files)
     let bounds = plot::sweep::Bound::all_of(&grid, &spec.bounds)?;
     let points = run(&grid, &|_, _| {})?;
     let file = format!("figures/{}-sweep-{name}.svg", spec.scheme);
-    let fig = plot::sweep::SweepFigure::new(&spec.scheme, name, &points, spec.charmap, bounds)?;
+    let fig = plot::sweep::SweepFigure::new(&spec.scheme, Some(name), &points, spec.charmap, bounds)?;
     let mut files = Files::new();
     files.insert(file.clone(), svg(&fig)?);
     let mut md = format!(

@@ -1,12 +1,14 @@
 //! Parameter and valence sweeps: the leading spectrum, the spectral verdict
 //! and (optionally) the characteristic-map verdict at every point of a grid,
 //! computed in parallel, identical to single-point runs (each point is an
-//! ordinary `spectrum::analyse`), and the admissible intervals of the swept
-//! parameter per valence.
+//! ordinary `spectrum::analyse`), optionally the curvature class and L_p
+//! limit of the second-order analysis (`Grid::curvature`, from the same
+//! analysis), and the admissible intervals of the swept parameter per valence.
 
 use serde::Serialize;
 
 use crate::charmap::{check_map, CharMapOptions};
+use crate::curvature::{curvature_of_analysis, CurvatureClass, CurvatureOptions};
 use crate::error::Error;
 use crate::neighbourhood::{Configuration, NeighbourhoodKind};
 use crate::schemes;
@@ -30,6 +32,10 @@ pub struct Grid {
     /// the face sequence around the centre (mixed-mesh schemes such as
     /// `four-three`, e.g. "QQTTT"); its length is the one valence of the grid
     pub faces: Option<String>,
+    /// also run the second-order analysis at every point (opt-in: it costs
+    /// about as much as a `subdlab curvature --no-exact` run per point, far
+    /// more than the spectrum alone)
+    pub curvature: bool,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -46,6 +52,12 @@ pub struct Point {
     pub charmap: Option<bool>,
     /// why the point could not be analysed, if it could not
     pub error: Option<String>,
+    /// the curvature class, exactly `subdlab curvature --no-exact` at this
+    /// point (when asked for: `Grid::curvature`)
+    pub curvature_class: Option<CurvatureClass>,
+    /// principal curvatures are in L_p for p < lp_limit (unbounded class
+    /// with |μ| > λ²); null: every finite p, or not computed
+    pub lp_limit: Option<f64>,
 }
 
 impl Grid {
@@ -85,7 +97,16 @@ impl Grid {
         }
         let faces = faces.map(str::to_string);
         let charmap_options = CharMapOptions::default();
-        let grid = Grid { scheme: scheme.to_string(), valences, param, fixed, charmap, charmap_options, faces };
+        let grid = Grid {
+            scheme: scheme.to_string(),
+            valences,
+            param,
+            fixed,
+            charmap,
+            charmap_options,
+            faces,
+            curvature: false,
+        };
         let mut first = grid.fixed.clone();
         if let Some((name, values)) = &grid.param {
             first.push((name.clone(), values[0].clone()));
@@ -213,6 +234,15 @@ pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
         } else {
             None
         };
+        // the second-order analysis of the same analysis, as `subdlab
+        // curvature --no-exact` computes it (no figures, no exact stage)
+        let (curvature_class, lp_limit) = if grid.curvature {
+            let opts = CurvatureOptions { exact: false, ..CurvatureOptions::default() };
+            let c = curvature_of_analysis(scheme.as_ref(), &analysis, &opts)?;
+            (Some(c.class), c.lp_limit)
+        } else {
+            (None, None)
+        };
         Ok(Point {
             valence: n,
             param: value.map(str::to_string),
@@ -221,6 +251,8 @@ pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
             c1_spectral: s.verdict.c1_spectral,
             charmap,
             error: None,
+            curvature_class,
+            lp_limit,
         })
     };
     run().unwrap_or_else(|e| Point {
@@ -231,6 +263,8 @@ pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
         c1_spectral: false,
         charmap: None,
         error: Some(e.to_string()),
+        curvature_class: None,
+        lp_limit: None,
     })
 }
 
