@@ -221,7 +221,10 @@ fn curvature_figures(spec: &FigureSpec) -> Result<(String, Files), String> {
     };
     if !data.mu_functions.is_empty() {
         let name = format!("figures/{tag}-central-ring-n{n}.svg");
-        files.insert(name.clone(), svg(&CurvatureFigure { c: &c, kind: CurvatureFigureKind::CentralRing })?);
+        files.insert(
+            name.clone(),
+            svg(&CurvatureFigure { c: &c, kind: CurvatureFigureKind::CentralRing, style: Default::default() })?,
+        );
         writeln!(
             md,
             "![central ring of {title} at valence {n}]({name})\n\nCentral ring of {title}, valence {n} ({}): \
@@ -234,7 +237,10 @@ fn curvature_figures(spec: &FigureSpec) -> Result<(String, Files), String> {
     }
     if !data.surface.is_empty() {
         let name = format!("figures/{tag}-surface-n{n}.svg");
-        files.insert(name.clone(), svg(&CurvatureFigure { c: &c, kind: CurvatureFigureKind::Surface })?);
+        files.insert(
+            name.clone(),
+            svg(&CurvatureFigure { c: &c, kind: CurvatureFigureKind::Surface, style: Default::default() })?,
+        );
         writeln!(
             md,
             "![limit-surface rings of {title} at valence {n}]({name})\n\nLimit-surface rings of {title}, valence {n} \
