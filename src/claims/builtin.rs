@@ -19,7 +19,7 @@ pub fn run(name: &str, data: Option<&toml::Value>) -> Result4 {
     match name {
         "nonbox.vector-mask" => nonbox_vector_mask(data.ok_or_else(|| Error::Claim("needs data.cells".into()))?),
         "nonbox.negative-eigenvalues" => nonbox_negative_eigenvalues(),
-        "linluo.section6" => linluo_section6(),
+        "linluo.section6" => linluo_section6(data),
         "lattice.fit-masks" => lattice_fit_masks(need(data)?),
         "strip.defective" => strip_defective(need(data)?),
         "strip.structure" => strip_structure(need(data)?),
@@ -138,38 +138,79 @@ fn nonbox_negative_eigenvalues() -> Result4 {
 /// Section 6: for C ∈ [0, 2], n > 3: λ0 = 1, λ1 = λ2 > λ3 = λ4; n = 3: λ0 = 1, λ1 = λ2 > λ3.
 /// Read generously: λ1 = λ2 real (Reif's condition, which the paper cites),
 /// |λ3| = |λ4| in modulus (a conjugate pair counts as equal).
-fn linluo_section6() -> Result4 {
+/// Lin–Luo section 6: "n > 3: λ0 = 1, λ1 = λ2 > λ3 = λ4; n = 3: λ0 = 1,
+/// λ1 = λ2 > λ3" for uniform α = C ∈ [0, 2]. `data.reading` (optional):
+/// "moduli" (default; the λ's ordered by modulus, "λ3 = λ4" as |λ3| = |λ4|)
+/// or "values" ("λ3 = λ4" as equal eigenvalues, a complex pair does not do).
+/// Each case is computed twice, by the Fourier blocks and by the whole
+/// matrix, and the verdict needs both routes to agree.
+fn linluo_section6(data: Option<&toml::Value>) -> Result4 {
+    let reading = match data.map(|d| text(d, "reading")).transpose()? {
+        None | Some("moduli") => "moduli",
+        Some("values") => "values",
+        Some(other) => return Err(Error::Claim(format!("data.reading = '{other}': use moduli or values"))),
+    };
     let mut failures = Vec::new();
+    let mut disagreements = Vec::new();
     let mut checked = 0;
     for alpha in ["0", "1/2", "1", "3/2", "2"] {
         for n in 3..=8usize {
             let s = schemes::build("unified-sqrt3", &[("alpha".into(), alpha.into())])?;
             let config = Configuration::regular(s.as_ref(), n)?;
-            let sp = analyse(s.as_ref(), &config, &Options { exact: false, ..Options::default() })?.spectrum;
-            let l: Vec<faer::c64> = sp
-                .eigenvalues
-                .iter()
-                .flat_map(|e| std::iter::repeat_n(faer::c64::new(e.re, e.im), e.algebraic_multiplicity))
-                .collect();
-            let eq = |a: faer::c64, b: faer::c64| (a - b).norm() < 1e-7;
-            let ok = eq(l[0], faer::c64::new(1.0, 0.0))
-                && l[1].im.abs() < 1e-9
-                && l[1].re > 0.0
-                && eq(l[1], l[2])
-                && l[2].norm() > l[3].norm() + 1e-7
-                && (n == 3 || (l[3].norm() - l[4].norm()).abs() < 1e-7);
+            let mut verdicts = Vec::new();
+            let mut lead = Vec::new();
+            for method in [crate::spectrum::Method::Dft, crate::spectrum::Method::Full] {
+                let opts = Options { exact: false, method: Some(method), ..Options::default() };
+                let sp = analyse(s.as_ref(), &config, &opts)?.spectrum;
+                let l: Vec<faer::c64> = sp
+                    .eigenvalues
+                    .iter()
+                    .flat_map(|e| std::iter::repeat_n(faer::c64::new(e.re, e.im), e.algebraic_multiplicity))
+                    .collect();
+                let eq = |a: faer::c64, b: faer::c64| (a - b).norm() < 1e-7;
+                let three_four = match reading {
+                    "moduli" => (l[3].norm() - l[4].norm()).abs() < 1e-7,
+                    _ => eq(l[3], l[4]),
+                };
+                let ok = eq(l[0], faer::c64::new(1.0, 0.0))
+                    && l[1].im.abs() < 1e-9
+                    && l[1].re > 0.0
+                    && eq(l[1], l[2])
+                    && l[2].norm() > l[3].norm() + 1e-7
+                    && (n == 3 || three_four);
+                verdicts.push(ok);
+                lead = l.iter().take(5).map(|z| super::checks::show(*z)).collect::<Vec<String>>();
+            }
             checked += 1;
-            if !ok {
-                let lead: Vec<String> = l.iter().take(5).map(|z| super::checks::show(*z)).collect();
+            if verdicts[0] != verdicts[1] {
+                disagreements.push(format!("alpha={alpha}, n={n}"));
+            }
+            if !verdicts[0] {
                 failures.push(format!("alpha={alpha}, n={n}: [{}]", lead.join(", ")));
             }
         }
     }
+    let stated = match reading {
+        "moduli" => "λ0 = 1, λ1 = λ2 (real) > |λ3| (= |λ4| for n > 3) for α ∈ [0, 2]",
+        _ => "λ0 = 1, λ1 = λ2 (real) > |λ3|, λ3 = λ4 as values for n > 3, for α ∈ [0, 2]",
+    };
+    let routes = "routes: Fourier blocks and the whole matrix (floating point, 1e-7)";
+    if !disagreements.is_empty() {
+        return Ok((
+            Verdict::Inconclusive,
+            stated.into(),
+            format!("the two routes disagree at {}", disagreements.join("; ")),
+            routes.into(),
+        ));
+    }
     Ok((
         if failures.is_empty() { Verdict::Holds } else { Verdict::Refuted },
-        "λ0 = 1, λ1 = λ2 (real) > |λ3| (= |λ4| for n > 3) for α ∈ [0, 2]".into(),
-        format!("{} of {checked} cases (α ∈ {{0, 1/2, 1, 3/2, 2}}, n = 3..8) fail", failures.len()),
-        failures.iter().take(8).cloned().collect::<Vec<_>>().join("; "),
+        stated.into(),
+        format!(
+            "{} of {checked} cases (α ∈ {{0, 1/2, 1, 3/2, 2}}, n = 3..8) fail, both routes agreeing",
+            failures.len()
+        ),
+        format!("{routes}; {}", failures.iter().take(8).cloned().collect::<Vec<_>>().join("; ")),
     ))
 }
 

@@ -25,13 +25,13 @@ pub struct Cache {
 }
 
 impl Cache {
-    fn spectrum(&mut self, s: &Subject, n: usize) -> Result<std::rc::Rc<Spectrum>, Error> {
+    pub(super) fn spectrum(&mut self, s: &Subject, n: usize) -> Result<std::rc::Rc<Spectrum>, Error> {
         let key = format!("{}|{:?}|{n}|{:?}|{:?}", s.scheme, s.params, s.neighbourhood, s.faces_for(n));
         self.spectra.entry(key).or_insert_with(|| compute(s, n).map(std::rc::Rc::new)).clone()
     }
 }
 
-fn kind_of(s: &Subject) -> Result<NeighbourhoodKind, Error> {
+pub(super) fn kind_of(s: &Subject) -> Result<NeighbourhoodKind, Error> {
     s.neighbourhood.as_deref().unwrap_or("analysis").parse()
 }
 
@@ -202,7 +202,7 @@ fn block_values(spec: &Spectrum, m: usize) -> Result<Vec<Complex64>, Error> {
     Ok(v)
 }
 
-struct Partial {
+pub(super) struct Partial {
     verdict: Verdict,
     stated: String,
     computed: String,
@@ -246,7 +246,7 @@ fn outcome(paper: &str, claim: &Claim, p: Partial) -> Outcome {
 }
 
 /// Runs a per-valence comparison and reports the first valence where it fails.
-fn over_valences(
+pub(super) fn over_valences(
     subject: &Subject,
     mut one: impl FnMut(usize) -> Result<(bool, String, String), Error>,
 ) -> Result<Partial, Error> {
@@ -286,7 +286,7 @@ fn over_valences(
 
 fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
     match check {
-        Check::Eigenvalues { subject, values, compare, block } => over_valences(subject, |n| {
+        Check::Eigenvalues { subject, values, compare, block, moduli } => over_valences(subject, |n| {
             let spec = cache.spectrum(subject, n)?;
             let blocks: Vec<Option<usize>> = match block.as_deref() {
                 None => vec![None],
@@ -310,6 +310,14 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                     None => expanded(&spec),
                 };
                 computed.sort_by(|a, b| eigenvalue_order(*a, *b));
+                if *moduli {
+                    // the other reading: only |λ| is compared
+                    for z in stated.iter_mut().chain(computed.iter_mut()) {
+                        *z = Complex64::new(z.norm(), 0.0);
+                    }
+                    stated.sort_by(|a, b| eigenvalue_order(*a, *b));
+                    computed.sort_by(|a, b| eigenvalue_order(*a, *b));
+                }
                 let shown: Vec<Complex64> = match compare.as_str() {
                     "leading" => computed.iter().take(stated.len()).copied().collect(),
                     "all" | "contains" => computed.clone(),
@@ -324,6 +332,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                 let (missing, extra) = unmatched(&stated, &shown);
                 let ok = missing.is_empty() && (compare == "contains" || extra.is_empty());
                 let tag = b.map(|m| format!("block {m}: ")).unwrap_or_default();
+                let tag = if *moduli { format!("{tag}moduli ") } else { tag };
                 let text = (format!("{tag}{}", show_list(&stated)), format!("{tag}{}", show_list(&shown)));
                 if !ok {
                     let why = format!(
@@ -358,6 +367,10 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                 format!("{stated}"),
                 format!("{} (minimal {}, analysis {})", spec.matrix_size, spec.minimal_size, spec.analysis_size),
             ))
+        }),
+        Check::InvariantSet { subject, rings, lattice_sum, kinds, value } => over_valences(subject, |n| {
+            let spec = cache.spectrum(subject, n)?;
+            super::invariant_set::one(subject, n, rings, lattice_sum.as_deref(), kinds.as_deref(), value, &spec)
         }),
         Check::Inequality { subject, lhs, op, rhs } => over_valences(subject, |n| {
             let mut env = env_for(subject, n)?;
@@ -452,7 +465,8 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
             let l = limit_stencil(&spec)?;
             let mut worst = (0.0f64, String::new());
             for (k, lab) in spec.labels.iter().enumerate() {
-                let want = match weights.get(&selector(lab.kind, lab.ring)) {
+                // a whole label name (`edge[r1,s2,0]`) before its kind and ring
+                let want = match weights.get(&lab.name).or_else(|| weights.get(&selector(lab.kind, lab.ring))) {
                     Some(e) => eval(e, &env)?.re,
                     None => 0.0,
                 };
@@ -460,6 +474,9 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                 if d > worst.0 {
                     worst = (d, format!("{}: computed {}, stated {}", lab.name, fmt_f(l[k]), fmt_f(want)));
                 }
+            }
+            if let Some(key) = weights.keys().find(|k| k.contains('[') && !spec.labels.iter().any(|l| &l.name == *k)) {
+                return Err(Error::Claim(format!("'{key}' names no vertex of the neighbourhood at n = {n}")));
             }
             let stated = weights.iter().map(|(k, v)| format!("{k} = {v}")).collect::<Vec<_>>().join(", ");
             let ok = worst.0 < 1e-9;

@@ -11,6 +11,7 @@
 pub mod builtin;
 pub mod checks;
 pub mod curvature;
+pub mod invariant_set;
 
 use std::collections::BTreeMap;
 
@@ -178,6 +179,10 @@ pub enum Check {
         compare: String,
         #[serde(default)]
         block: Option<String>,
+        /// compare moduli |λ| instead of values (the other reading of a
+        /// statement such as "λ3 = λ4" about eigenvalues ordered by modulus)
+        #[serde(default)]
+        moduli: bool,
     },
     /// The subdominant eigenvalue λ1 equals the expression.
     Subdominant {
@@ -189,6 +194,23 @@ pub enum Check {
     Size {
         #[serde(flatten)]
         subject: Subject,
+        value: String,
+    },
+    /// A stated vertex set "suffices" (or "is invariant"): the set built from
+    /// the vertex labels (every vertex of ring ≤ `rings`, optionally only
+    /// those with i + j ≤ `lattice_sum` in their sector's chart and of the
+    /// listed `kinds`) must have the stated size `value`, be invariant under
+    /// one analysis step, contain the `neighbourhood` (analysis by default:
+    /// what the analysis needs) and have the same leading eigenvalues as S
+    /// on it (every extra eigenvalue below λ1 in modulus).
+    InvariantSet {
+        #[serde(flatten)]
+        subject: Subject,
+        rings: String,
+        #[serde(default)]
+        lattice_sum: Option<String>,
+        #[serde(default)]
+        kinds: Option<Vec<String>>,
         value: String,
     },
     /// Limit stencil weights by vertex selector ("centre", "kind.ring", e.g.
@@ -301,9 +323,10 @@ fn yes() -> bool {
 /// The keys each check kind reads, besides the common ones
 /// ([`COMMON_KEYS`]); anything else in a claim is an error naming its line.
 pub const CHECK_KEYS: &[(&str, &[&str])] = &[
-    ("eigenvalues", &["values", "compare", "block"]),
+    ("eigenvalues", &["values", "compare", "block", "moduli"]),
     ("subdominant", &["value"]),
     ("size", &["value"]),
+    ("invariant-set", &["rings", "lattice_sum", "kinds", "value"]),
     ("limit-stencil", &["weights"]),
     ("tangent-stencils", &["cos", "sin"]),
     ("inequality", &["lhs", "op", "rhs"]),

@@ -68,6 +68,26 @@ pub fn assemble_rows<W: SchemeWeight>(
     restrict(set, raw)
 }
 
+/// The rows over one analysis step of the successors of the level-0
+/// vertices `vertices` (any vertices of the patch, not only a discovered
+/// neighbourhood's), over level-0 vertex ids and not restricted to any set:
+/// for checking whether a stated vertex set is invariant (its rows then
+/// depend on it alone) and for S on such a set. `Err(Missing)` when a rule
+/// cannot be evaluated on the patch (it is too small for the set).
+pub fn step_rows_of<W: SchemeWeight>(
+    scheme: &dyn Scheme,
+    d: &Discovered,
+    vertices: &[usize],
+) -> Result<Vec<Vec<(usize, W)>>, AssembleError> {
+    let targets: Vec<usize> =
+        vertices.iter().map(|&v| d.successor(v).ok_or(AssembleError::Missing)).collect::<Result<_, _>>()?;
+    step_rows::<W>(d.refinements().len(), &targets, |k, v| {
+        crate::refine::new_stencil::<W>(scheme, d.mesh_before(k), &d.refinements()[k], v)
+            .map_err(|Inexact| AssembleError::Inexact)?
+            .ok_or(AssembleError::Missing)
+    })
+}
+
 /// [`assemble_rows`] in f64 from what discovery computed: the rows it composed
 /// for the orbit representatives; any other row is composed from the float
 /// stencils (the same values the rules give, as discovery evaluated them with

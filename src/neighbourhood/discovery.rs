@@ -194,7 +194,7 @@ struct FloatStencils {
     all: std::sync::OnceLock<Arc<FloatStencilTable>>,
 }
 
-const MAX_PATCH_RINGS: usize = 8;
+pub const MAX_PATCH_RINGS: usize = 8;
 /// Face rings kept around the region when pruning refined meshes in the
 /// search for the analysis neighbourhood. Stencils reach at most two rings
 /// and a ring of a coarser level spans about two of the finer one, so the
@@ -204,8 +204,27 @@ const PRUNE_MARGIN: usize = 4;
 const MAX_LEVELS: usize = 3;
 
 pub fn discover(scheme: &dyn Scheme, config: &Configuration) -> Result<Discovered, Error> {
+    discover_from(scheme, config, first_patch_rings(scheme, config))
+}
+
+/// [`discover`] on a level-0 patch of at least `min_rings` rings (at most
+/// [`MAX_PATCH_RINGS`]): the same two neighbourhoods (they are closures under
+/// the rules, found on any patch large enough to evaluate them), with labels
+/// and one analysis step reaching further out, for callers that examine a
+/// stated vertex set larger than the analysis neighbourhood
+/// (`claims::invariant_set`).
+pub fn discover_with_rings(scheme: &dyn Scheme, config: &Configuration, min_rings: usize) -> Result<Discovered, Error> {
+    if min_rings > MAX_PATCH_RINGS {
+        return Err(Error::NotDetermined(format!(
+            "a patch of {min_rings} rings is more than the {MAX_PATCH_RINGS} supported"
+        )));
+    }
+    discover_from(scheme, config, first_patch_rings(scheme, config).max(min_rings))
+}
+
+fn discover_from(scheme: &dyn Scheme, config: &Configuration, start: usize) -> Result<Discovered, Error> {
     let mut last_err = Error::NotDetermined(String::new());
-    for rings in first_patch_rings(scheme, config)..=MAX_PATCH_RINGS {
+    for rings in start..=MAX_PATCH_RINGS {
         let mut blame_pruning = false;
         match try_discover(scheme, config, rings, true, &mut blame_pruning) {
             Ok(d) => return Ok(d),
