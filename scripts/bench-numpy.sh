@@ -27,7 +27,7 @@
 # NumPy (pinned below) goes into a virtual environment under target/
 # (bench-numpy-venv/, made once, remade when the pin or python3 changes; the
 # first run needs network access to PyPI), the matrices into target/bench-numpy/.
-# NumPy runs on one BLAS thread, as subdlab's eigen stage does.
+# NumPy runs on one BLAS thread; subdlab solves its Fourier blocks on every core (rayon).
 set -euo pipefail
 
 # the newest NumPy for CPython 3.11 (2.5 needs 3.12)
