@@ -208,15 +208,7 @@ fn validate(
     // An edge with more than two faces always repeats a direction (caught above).
     // A vertex is manifold when its faces form one fan: link two corners at v when
     // their faces share an edge at v, and count the connected groups.
-    let mut corner_start = vec![0usize; nv + 1];
-    for face in faces {
-        for &v in face {
-            corner_start[v + 1] += 1;
-        }
-    }
-    for v in 0..nv {
-        corner_start[v + 1] += corner_start[v];
-    }
+    let corner_start = super::polymesh::corner_offsets(nv, faces);
     let mut slot = corner_start.clone();
     let mut corner_face = vec![0usize; corner_start[nv]];
     for (f, face) in faces.iter().enumerate() {

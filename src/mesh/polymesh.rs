@@ -80,6 +80,22 @@ pub type IdBuild = BuildHasherDefault<IdHasher>;
 pub type IdMap<K, V> = HashMap<K, V, IdBuild>;
 pub type IdSet<K> = HashSet<K, IdBuild>;
 
+/// Where each vertex's corners start in a list of all face corners grouped
+/// by vertex (compressed rows): vertex v owns `offsets[v]..offsets[v + 1]`.
+/// Indices must be valid.
+pub(crate) fn corner_offsets(num_vertices: usize, faces: &[Vec<VertexId>]) -> Vec<usize> {
+    let mut offsets = vec![0usize; num_vertices + 1];
+    for face in faces {
+        for &v in face {
+            offsets[v + 1] += 1;
+        }
+    }
+    for v in 0..num_vertices {
+        offsets[v + 1] += offsets[v];
+    }
+    offsets
+}
+
 /// The half-edges of a mesh, grouped by start vertex (compressed rows):
 /// the half-edges leaving vertex a are `out[start[a]..start[a + 1]]`, sorted
 /// by end vertex. Built with two linear passes and a sort of each (short)
@@ -96,15 +112,7 @@ struct HalfEdges {
 impl HalfEdges {
     /// Every corner of `faces` as a half-edge (indices must be valid).
     fn new(num_vertices: usize, faces: &[Vec<VertexId>]) -> HalfEdges {
-        let mut start = vec![0usize; num_vertices + 1];
-        for face in faces {
-            for &a in face {
-                start[a + 1] += 1;
-            }
-        }
-        for v in 0..num_vertices {
-            start[v + 1] += start[v];
-        }
+        let start = corner_offsets(num_vertices, faces);
         let mut fill = start.clone();
         let mut out = vec![(0, 0, 0); start[num_vertices]];
         for (fi, face) in faces.iter().enumerate() {
