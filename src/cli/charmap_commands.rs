@@ -5,6 +5,7 @@ use std::path::{Path, PathBuf};
 use clap::{Args, Subcommand};
 
 use super::commands::parse_params;
+use super::FigureArgs;
 use crate::charmap::{characteristic_map, CharMap, CharMapOptions, DEFAULT_LEVELS, DEFAULT_RESOLUTION, MAX_LEVELS};
 use crate::error::Error;
 use crate::io::print_json;
@@ -49,30 +50,6 @@ pub struct CharmapArgs {
     /// machine-readable JSON output
     #[arg(long)]
     pub json: bool,
-}
-
-/// What a figure's reader sees besides the data: title, size, font.
-#[derive(Args, Debug, Clone, Default)]
-pub struct FigureArgs {
-    /// the figure's title (an empty text: no title); default: names the scheme
-    #[arg(long)]
-    pub title: Option<String>,
-    /// figure width in pixels (= points in PDF), 200 to 6000
-    #[arg(long)]
-    pub width: Option<u32>,
-    /// figure height in pixels (= points in PDF), 200 to 6000
-    #[arg(long)]
-    pub height: Option<u32>,
-    /// base font size (tick labels) in pixels, 6 to 72; other text scales with it
-    #[arg(long)]
-    pub font_size: Option<u32>,
-}
-
-impl FigureArgs {
-    pub fn style(&self) -> Result<plot::Style, Error> {
-        plot::Style { title: self.title.clone(), width: self.width, height: self.height, font_size: self.font_size }
-            .checked()
-    }
 }
 
 #[derive(Subcommand, Debug, Clone)]

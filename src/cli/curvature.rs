@@ -45,7 +45,7 @@ pub struct CurvatureArgs {
     #[arg(long)]
     pub json: bool,
     #[command(flatten)]
-    pub style: super::charmap_commands::FigureArgs,
+    pub style: super::FigureArgs,
 }
 
 pub fn run(a: &CurvatureArgs) -> Result<(), Error> {

@@ -127,6 +127,37 @@ pub enum Command {
     },
 }
 
+/// What a figure's reader sees besides the data (title, size, font): the
+/// style flags every figure command takes (`charmap`, `curvature`,
+/// `plot spectrum`).
+#[derive(Args, Debug, Clone, Default)]
+pub struct FigureArgs {
+    /// the figure's title (an empty text: no title); default: names the scheme
+    #[arg(long)]
+    pub title: Option<String>,
+    /// figure width in pixels (= points in PDF), 200 to 6000
+    #[arg(long)]
+    pub width: Option<u32>,
+    /// figure height in pixels (= points in PDF), 200 to 6000
+    #[arg(long)]
+    pub height: Option<u32>,
+    /// base font size (tick labels) in pixels, 6 to 72; other text scales with it
+    #[arg(long)]
+    pub font_size: Option<u32>,
+}
+
+impl FigureArgs {
+    pub fn style(&self) -> Result<crate::plot::Style, crate::error::Error> {
+        crate::plot::Style {
+            title: self.title.clone(),
+            width: self.width,
+            height: self.height,
+            font_size: self.font_size,
+        }
+        .checked()
+    }
+}
+
 #[derive(Args, Debug, Clone)]
 pub struct AnalysisArgs {
     /// scheme name (see `subdlab schemes`) or a scheme file (.toml, see schemes/)

@@ -6,7 +6,7 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::{err, tick_label, Figure, Style, FONT};
+use super::{err, square_window, tick_label, Figure, Style, FONT};
 use crate::charmap::{wedge, CharMap};
 use crate::error::Error;
 
@@ -97,16 +97,9 @@ impl Figure for RingFigure<'_> {
             m.control_net.iter().map(|f| f.iter().map(|p| (p[0], p[1])).collect()).collect()
         };
         // equal scales on both axes: a square window around everything drawn
-        let (mut lo, mut hi) = ((f64::INFINITY, f64::INFINITY), (f64::NEG_INFINITY, f64::NEG_INFINITY));
-        for p in polys.iter().flat_map(|(p, _, _)| p.iter()).chain(net.iter().flatten()) {
-            lo = (lo.0.min(p.0), lo.1.min(p.1));
-            hi = (hi.0.max(p.0), hi.1.max(p.1));
-        }
-        if !(lo.0.is_finite() && hi.0.is_finite()) {
-            return Err(Error::Input("nothing to draw".into()));
-        }
-        let half = 0.52 * (hi.0 - lo.0).max(hi.1 - lo.1);
-        let c = ((lo.0 + hi.0) / 2.0, (lo.1 + hi.1) / 2.0);
+        let (c, half) =
+            square_window(polys.iter().flat_map(|(p, _, _)| p.iter()).chain(net.iter().flatten()).map(|p| [p.0, p.1]))
+                .ok_or_else(|| Error::Input("nothing to draw".into()))?;
         // equal scales: the plot area is a square (the larger side of the
         // area is left as margin)
         let (w, h) = rest.dim_in_pixel();

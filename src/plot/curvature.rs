@@ -8,7 +8,7 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::{err, tick_label, Figure, Style, FONT};
+use super::{err, square_window as window, tick_label, Figure, Style, FONT};
 use crate::curvature::Curvature;
 use crate::error::Error;
 
@@ -37,22 +37,6 @@ fn diverging(t: f64) -> RGBColor {
     let (c, a) = if t < 0.0 { (NEG, -t) } else { (POS, t) };
     let mix = |x: f64| (255.0 + (x - 255.0) * a).round() as u8;
     RGBColor(mix(c.0), mix(c.1), mix(c.2))
-}
-
-/// A square window around the points (equal scales on both axes).
-fn window(points: impl Iterator<Item = [f64; 2]>) -> Option<((f64, f64), f64)> {
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for p in points.filter(|p| p[0].is_finite() && p[1].is_finite()) {
-        for k in 0..2 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
-    if !lo[0].is_finite() {
-        return None;
-    }
-    let half = 0.52 * (hi[0] - lo[0]).max(hi[1] - lo[1]).max(1e-300);
-    Some((((lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0), half))
 }
 
 impl Figure for CurvatureFigure<'_> {

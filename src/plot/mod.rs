@@ -194,6 +194,23 @@ pub fn tick_label(v: f64, span: f64) -> String {
     }
 }
 
+/// A square window around the finite points, as (centre, half side), with
+/// a 4 % margin: equal scales on both axes for plane figures.
+pub(crate) fn square_window(points: impl Iterator<Item = [f64; 2]>) -> Option<((f64, f64), f64)> {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in points.filter(|p| p[0].is_finite() && p[1].is_finite()) {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    if !lo[0].is_finite() {
+        return None;
+    }
+    let half = 0.52 * (hi[0] - lo[0]).max(hi[1] - lo[1]).max(1e-300);
+    Some((((lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0), half))
+}
+
 /// A plotters error as one line.
 pub(crate) fn err<E: std::fmt::Display>(e: E) -> Error {
     Error::Message(format!("cannot draw the figure: {e}"))
