@@ -581,6 +581,40 @@ fn examine(spec: &Spectrum, sampler: &RingSampler, e: &Eigenvalue, index: usize,
     }
 }
 
+/// The vectors the central-ring figure draws for `e`, with their block and a
+/// label prefix: the eigenvectors, and for a defective eigenvalue whose
+/// eigenvectors of some block all vanish on the ring, a basis of that block's
+/// generalised eigenspace (S^m w = ν^m w + m ν^(m−1) N w + ..., so with N w
+/// vanishing on the ring the ring shows ν^m w).
+fn figure_vectors(spec: &Spectrum, sampler: &RingSampler, e: &Eigenvalue) -> Vec<(usize, Vec<c64>, &'static str)> {
+    let visible = |x: &[c64]| {
+        let scale = x.iter().map(|z| z.norm()).fold(0.0, f64::max);
+        scale > 0.0 && jordan::ring_size_c(sampler, x) / scale > VANISH_TOL
+    };
+    let mut out: Vec<(usize, Vec<c64>, &'static str)> =
+        vectors_with_blocks(spec, e).into_iter().map(|(m, x)| (m, x, "")).collect();
+    if !e.defective {
+        return out;
+    }
+    let nu = c64::new(e.re, e.im);
+    for &m in &e.blocks {
+        if out.iter().any(|(b, x, _)| *b == m && visible(x)) {
+            continue;
+        }
+        for w in jordan::generalised_eigenspace(spec.synthesis.block(m), nu, e.algebraic_multiplicity) {
+            out.extend(on_neighbourhood(spec, e, m, &w).into_iter().map(|x| (m, x, "generalised, ")));
+        }
+    }
+    out
+}
+
+/// A vector of block `m` synthesised over the whole neighbourhood.
+fn on_neighbourhood(spec: &Spectrum, e: &Eigenvalue, m: usize, x: &[c64]) -> Vec<Vec<c64>> {
+    let probe =
+        Eigenvalue { vectors: vec![crate::spectrum::EigenVectors { block: m, right: vec![x.to_vec()] }], ..e.clone() };
+    spec.right_vectors(&probe)
+}
+
 struct GeneralisedRing {
     /// per block: the largest ring size over its generalised eigenspace
     blocks: Vec<(usize, f64)>,
@@ -598,17 +632,10 @@ fn generalised_ring_structure(spec: &Spectrum, sampler: &RingSampler, e: &Eigenv
     let mut chain: f64 = 0.0;
     let mut tops = 0;
     for &m in &e.blocks {
-        let b = match &spec.synthesis {
-            Synthesis::Dft { blocks, .. } => &blocks[m],
-            Synthesis::Full { matrix } => matrix,
-        };
+        let b = spec.synthesis.block(m);
         // a block vector over the neighbourhood, then its ring size
         let ring = |x: &[c64]| -> f64 {
-            let probe = Eigenvalue {
-                vectors: vec![crate::spectrum::EigenVectors { block: m, right: vec![x.to_vec()] }],
-                ..e.clone()
-            };
-            spec.right_vectors(&probe)
+            on_neighbourhood(spec, e, m, x)
                 .iter()
                 .map(|v| {
                     let scale = v.iter().map(|z| z.norm()).fold(0.0, f64::max);
@@ -817,10 +844,14 @@ fn figure_data(
     let tris_ids = sampler.ring_triangles();
     let corner = |v: usize| pts[v].unwrap_or([f64::NAN; 2]);
     let triangles: Vec<[[f64; 2]; 3]> = tris_ids.iter().map(|t| [corner(t[0]), corner(t[1]), corner(t[2])]).collect();
-    // μ-eigenfunctions: every vector of every non-vanishing eigenvalue of modulus |μ|, real parts (and imaginary parts)
+    // μ-eigenfunctions: every vector of every non-vanishing eigenvalue of
+    // modulus |μ|, real parts (and imaginary parts); where a defective
+    // eigenvalue's eigenvectors of a block all vanish on the ring, the
+    // generalised eigenvectors of that block, which then carry what the ring
+    // shows (see `examine`)
     let mut mu_functions = Vec::new();
     for e in spec.eigenvalues.iter().filter(|e| (e.modulus - mu.modulus).abs() <= EIG_TOL * mu.modulus.max(1e-300)) {
-        for (block, x) in vectors_with_blocks(spec, e) {
+        for (block, x, kind) in figure_vectors(spec, sampler, e) {
             // a block m > g/2 whose conjugate block g − m is drawn repeats its functions
             if let Synthesis::Dft { orbits, .. } = &spec.synthesis {
                 let g = orbits.group_order;
@@ -840,7 +871,7 @@ fn figure_data(
                 if size <= VANISH_TOL * scale.max(1e-300) {
                     continue;
                 }
-                let label = format!("μ = {}, block {block}, {part}", fmt_c(e.re, e.im));
+                let label = format!("μ = {}, block {block}, {kind}{part}", fmt_c(e.re, e.im));
                 let per: Vec<[f64; 3]> = tris_ids
                     .iter()
                     .map(|t| [vals[t[0]].unwrap_or(0.0), vals[t[1]].unwrap_or(0.0), vals[t[2]].unwrap_or(0.0)])
@@ -934,4 +965,65 @@ fn ring_signs(sampler: &RingSampler, data: &[[f64; 3]], scale: f64) -> Vec<(Vec<
             (poly, sign)
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::spectrum::EigenVectors;
+    use faer::linalg::solvers::SolveLstsq;
+
+    /// Doo–Sabin at n = 5 has a defective eigenvalue at |μ| = λ² = 1/4 (its
+    /// block 0 carries the regular biquadratic's 1/4 with a Jordan chain, see
+    /// the README's curvature section). Hiding every eigenvector of that
+    /// eigenvalue, as if all vanished on the ring, must make the central-ring
+    /// figure draw the generalised eigenvectors of each of its blocks: a space
+    /// of the algebraic multiplicity's size per block, containing the hidden
+    /// eigenvectors (S − νI maps it into itself) and showing on the ring.
+    #[test]
+    fn hidden_eigenvectors_fall_back_to_the_generalised_eigenspace() {
+        let scheme = crate::schemes::build("doo-sabin", &[]).unwrap();
+        let config = Configuration::regular(scheme.as_ref(), 5).unwrap();
+        let options = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
+        let analysis = analyse(scheme.as_ref(), &config, &options).unwrap();
+        let spec = &analysis.spectrum;
+        let sampler = RingSampler::new(scheme.as_ref(), &analysis.discovered, 3).unwrap();
+        let e = spec.eigenvalues.iter().find(|e| e.defective).expect("a defective eigenvalue");
+        // every eigenvector present is drawn, nothing generalised
+        let drawn = figure_vectors(spec, &sampler, e);
+        assert!(!drawn.is_empty() && drawn.iter().all(|(_, _, kind)| kind.is_empty()));
+        // the same eigenvalue with its eigenvectors hidden
+        let hidden = Eigenvalue {
+            vectors: e.blocks.iter().map(|&m| EigenVectors { block: m, right: Vec::new() }).collect(),
+            ..e.clone()
+        };
+        let fallback = figure_vectors(spec, &sampler, &hidden);
+        for &m in &e.blocks {
+            let space: Vec<&Vec<c64>> = fallback.iter().filter(|(b, _, _)| *b == m).map(|(_, x, _)| x).collect();
+            assert!(fallback.iter().filter(|(b, _, _)| *b == m).all(|(_, _, kind)| *kind == "generalised, "));
+            // the block's algebraic multiplicity of ν, counted from its
+            // eigenvalues (a Jordan chain of length k spreads the computed
+            // eigenvalues by about eps^(1/k) around ν)
+            let nu = c64::new(e.re, e.im);
+            let block_eigenvalues = spec.synthesis.block(m).eigenvalues().unwrap();
+            let algebraic = block_eigenvalues.iter().filter(|z| (**z - nu).norm() < 1e-5).count();
+            assert_eq!(space.len(), algebraic, "block {m}: generalised eigenspace of dimension {algebraic}");
+            assert!(space.iter().any(|x| jordan::ring_size_c(&sampler, x) > VANISH_TOL));
+            // each hidden eigenvector of block m lies in the span: the
+            // residual of its least-squares projection is rounding
+            for (_, x, _) in drawn.iter().filter(|(b, _, _)| *b == m) {
+                let a = faer::Mat::<c64>::from_fn(x.len(), space.len(), |i, j| space[j][i]);
+                let rhs = faer::Mat::<c64>::from_fn(x.len(), 1, |i, _| x[i]);
+                let qr = a.qr();
+                let coef = qr.solve_lstsq(&rhs);
+                let fit = &a * &coef;
+                let residual = (0..x.len()).map(|i| (fit[(i, 0)] - x[i]).norm()).fold(0.0, f64::max);
+                let size = x.iter().map(|z| z.norm()).fold(0.0, f64::max);
+                assert!(
+                    residual < 1e-8 * size,
+                    "block {m}: eigenvector outside the generalised eigenspace ({residual:e})"
+                );
+            }
+        }
+    }
 }

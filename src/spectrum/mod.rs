@@ -80,7 +80,8 @@ pub enum Synthesis {
 }
 
 impl Synthesis {
-    fn block(&self, m: usize) -> &Mat<c64> {
+    /// Fourier block `m`, or the whole matrix when there is no symmetry.
+    pub fn block(&self, m: usize) -> &Mat<c64> {
         match self {
             Synthesis::Dft { blocks, .. } => &blocks[m],
             Synthesis::Full { matrix } => matrix,
