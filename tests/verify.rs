@@ -138,3 +138,43 @@ value = "sum(t, 1, n, 1/2) / n"
     assert_eq!(verdicts, [("roots-of-unity", "HOLDS"), ("squares", "REFUTED"), ("cc.lambda1", "HOLDS")], "{v}");
     assert!(v[0]["claims"][0]["detail"].as_str().unwrap().contains("exact"), "{v}");
 }
+
+/// A claim about rules built from the statement itself is marked, in the
+/// table, the JSON (per claim and in the summary) and the JUnit report, so it
+/// is never read as an independent confirmation; the registry marks the
+/// three claims whose rules were built from the checked statement (TPS's
+/// adjustable rules rebuilt from eq. (22), PGS's w1 set from eq. (9)).
+#[test]
+fn verdicts_by_construction_are_marked_everywhere() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("built.toml");
+    let note = "the weights were chosen to give this λ1";
+    std::fs::write(&p, USER_FILE.replace("value = ", &format!("by_construction = \"{note}\"\nvalue = "))).unwrap();
+    let out = subdlab(&["verify", "--claims", p.to_str().unwrap(), "--json"]);
+    assert!(out.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v[0]["claims"][0]["verdict"], "HOLDS");
+    assert_eq!(v[0]["claims"][0]["by_construction"], note);
+    assert_eq!(v[0]["summary"]["by_construction"], 1);
+    let text = String::from_utf8(subdlab(&["verify", "--claims", p.to_str().unwrap()]).stdout).unwrap();
+    assert!(text.contains("HOLDS (by construction)") && text.contains(note), "{text}");
+    assert!(text.contains("1 HOLDS, 0 REFUTED, 0 INCONCLUSIVE; 1 of them by construction"), "{text}");
+    let junit = dir.path().join("j.xml");
+    subdlab(&["verify", "--claims", p.to_str().unwrap(), "--junit", junit.to_str().unwrap()]);
+    let xml = std::fs::read_to_string(&junit).unwrap();
+    assert!(xml.contains("HOLDS (by construction) as recorded") && xml.contains(note), "{xml}");
+    // without the note: a plain HOLDS, no summary field
+    let plain = dir.path().join("plain.toml");
+    std::fs::write(&plain, USER_FILE).unwrap();
+    let v: serde_json::Value =
+        serde_json::from_slice(&subdlab(&["verify", "--claims", plain.to_str().unwrap(), "--json"]).stdout).unwrap();
+    assert!(v[0]["claims"][0]["by_construction"].is_null() && v[0]["summary"].get("by_construction").is_none());
+    // the registry's marked claims
+    let mut marked: Vec<String> = builtin_files()
+        .unwrap()
+        .iter()
+        .flat_map(|f| f.claims.iter().filter(|c| c.by_construction.is_some()).map(|c| c.id.clone()))
+        .collect();
+    marked.sort();
+    assert_eq!(marked, ["pgs.subdominant", "tps.adjustable-c1", "tps.adjustable-subdominant"]);
+}

@@ -239,6 +239,7 @@ fn outcome(paper: &str, claim: &Claim, p: Partial) -> Outcome {
         convention: claim.convention.clone(),
         verdict: p.verdict,
         expected: claim.expected,
+        by_construction: claim.by_construction.clone(),
         stated: p.stated,
         computed: p.computed,
         detail: p.detail,

@@ -92,6 +92,12 @@ pub struct Claim {
     /// papers; a change means the tool's computation changed)
     #[serde(default)]
     pub expected: Option<Verdict>,
+    /// set where subdlab's rules were themselves built from the statement (a
+    /// reconstruction the paper does not print, or a weight prescribed by the
+    /// stated formula): says what was built from it and what the verdict
+    /// still tests, so the verdict is never read as an independent check
+    #[serde(default)]
+    pub by_construction: Option<String>,
     #[serde(flatten)]
     pub check: Check,
 }
@@ -340,7 +346,7 @@ pub const CHECK_KEYS: &[(&str, &[&str])] = &[
     ("builtin", &["name", "data"]),
 ];
 /// Keys of every claim.
-pub const COMMON_KEYS: &[&str] = &["id", "location", "statement", "convention", "expected", "check"];
+pub const COMMON_KEYS: &[&str] = &["id", "location", "statement", "convention", "expected", "by_construction", "check"];
 /// Keys of the checks that analyse a scheme (all but identity,
 /// matrix-eigenvalues, lattice-matrix and builtin).
 pub const SUBJECT_KEYS: &[&str] = &["scheme", "valences", "faces", "params", "neighbourhood", "vars"];
@@ -361,6 +367,17 @@ pub enum Verdict {
     Inconclusive,
     /// the claim itself could not be read (a malformed claim of a file)
     Error,
+}
+
+impl Outcome {
+    /// The verdict as shown to a reader: "HOLDS (by construction)" where
+    /// the claim carries a `by_construction` note.
+    pub fn shown_verdict(&self) -> String {
+        match &self.by_construction {
+            Some(_) => format!("{} (by construction)", self.verdict),
+            None => self.verdict.to_string(),
+        }
+    }
 }
 
 impl std::fmt::Display for Verdict {
@@ -384,6 +401,9 @@ pub struct Outcome {
     pub verdict: Verdict,
     /// the verdict the claim file expects, if it records one
     pub expected: Option<Verdict>,
+    /// the claim's `by_construction` note: the verdict is about subdlab's
+    /// construction from the statement, not an independent confirmation
+    pub by_construction: Option<String>,
     /// the stated value(s) as evaluated
     pub stated: String,
     /// the computed value(s)
@@ -480,6 +500,7 @@ fn read_claim(file: &str, k: usize, header: Option<usize>, text: &str, raw: toml
         statement: get("statement").unwrap_or_default(),
         convention: get("convention"),
         expected: raw.get("expected").and_then(|v| v.clone().try_into().ok()),
+        by_construction: get("by_construction"),
         check: Check::Malformed(message),
     };
     let Some(table) = raw.as_table() else {

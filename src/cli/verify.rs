@@ -50,6 +50,7 @@ fn unreadable(path: &Path, message: String) -> (ClaimFile, Vec<Outcome>) {
         convention: None,
         verdict: Verdict::Error,
         expected: None,
+        by_construction: None,
         stated: String::new(),
         computed: String::new(),
         detail: message,
@@ -166,6 +167,11 @@ pub struct Summary {
     /// so existing summaries keep their exact shape)
     #[serde(skip_serializing_if = "is_zero")]
     pub error: usize,
+    /// verdicts (of any kind) marked `by construction`: about subdlab's
+    /// construction from the statement, so no independent confirmation
+    /// (left out of the JSON when 0)
+    #[serde(skip_serializing_if = "is_zero")]
+    pub by_construction: usize,
 }
 
 fn is_zero(x: &usize) -> bool {
@@ -181,6 +187,7 @@ pub fn summary(o: &[Outcome]) -> Summary {
             Verdict::Inconclusive => s.inconclusive += 1,
             Verdict::Error => s.error += 1,
         }
+        s.by_construction += usize::from(x.by_construction.is_some());
     }
     s
 }
@@ -189,6 +196,9 @@ fn counts(s: &Summary) -> String {
     let mut t = format!("{} HOLDS, {} REFUTED, {} INCONCLUSIVE", s.holds, s.refuted, s.inconclusive);
     if s.error > 0 {
         t += &format!(", {} ERROR", s.error);
+    }
+    if s.by_construction > 0 {
+        t += &format!("; {} of them by construction", s.by_construction);
     }
     t
 }
@@ -216,12 +226,11 @@ fn table(results: &[(ClaimFile, Vec<Outcome>)], judge: &Judge) -> String {
             if judge.check_expected && !judge.passes(o) {
                 differ += 1;
             }
-            out += &format!(
-                "  {:<12} {:<34} {}{changed}\n",
-                o.verdict.to_string(),
-                printable(&o.id),
-                printable(&o.location)
-            );
+            out +=
+                &format!("  {:<12} {:<34} {}{changed}\n", o.shown_verdict(), printable(&o.id), printable(&o.location));
+            if let Some(note) = &o.by_construction {
+                out += &format!("               by construction: {}\n", printable(note));
+            }
             if o.verdict != Verdict::Holds {
                 if !o.statement.is_empty() {
                     out += &format!("               statement: {}\n", printable(&o.statement));
@@ -239,6 +248,7 @@ fn table(results: &[(ClaimFile, Vec<Outcome>)], judge: &Judge) -> String {
         total.refuted += s.refuted;
         total.inconclusive += s.inconclusive;
         total.error += s.error;
+        total.by_construction += s.by_construction;
     }
     let n = total.holds + total.refuted + total.inconclusive + total.error;
     out += &format!("\n{n} claims: {}\n", counts(&total));
@@ -289,17 +299,21 @@ fn junit_xml(results: &[(ClaimFile, Vec<Outcome>)], judge: &Judge) -> String {
         );
         for o in outcomes {
             x += &format!("    <testcase classname=\"{}\" name=\"{}\"", xml_escape(&f.paper), xml_escape(&o.id));
-            let body = format!("{}\nstated: {}\ncomputed: {}\n{}", o.statement, o.stated, o.computed, o.detail);
+            let mut body = format!("{}\nstated: {}\ncomputed: {}\n{}", o.statement, o.stated, o.computed, o.detail);
+            if let Some(note) = &o.by_construction {
+                body += &format!("\nby construction: {note}");
+            }
             let required = judge.required(o);
             if o.verdict == Verdict::Error {
                 x += &format!(">\n      <error message=\"ERROR\">{}</error>\n    </testcase>\n", xml_escape(&body));
-            } else if judge.passes(o) && o.verdict == Verdict::Holds {
+            } else if judge.passes(o) && o.verdict == Verdict::Holds && o.by_construction.is_none() {
                 x += "/>\n";
             } else if judge.passes(o) {
-                // an expected refutation (or undecided claim) passes, with its evidence
+                // an expected refutation (or undecided claim, or a verdict by
+                // construction) passes, with its evidence
                 x += &format!(
                     ">\n      <system-out>{} as recorded\n{}</system-out>\n    </testcase>\n",
-                    o.verdict,
+                    o.shown_verdict(),
                     xml_escape(&body)
                 );
             } else {

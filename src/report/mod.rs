@@ -40,19 +40,23 @@ pub fn build() -> Result<Files, Error> {
               contradicts a theorem is confirmed by a second, independent route, named in the evidence); \
               **INCONCLUSIVE** — the computation cannot decide it, and the page says why. Each verdict says \
               what kind of evidence it rests on: exact rational arithmetic, floating point with a tolerance, or a \
-              rasterisation at a resolution.\n\n";
-    index += "| paper | claims | HOLDS | REFUTED | INCONCLUSIVE |\n|---|---:|---:|---:|---:|\n";
+              rasterisation at a resolution. A verdict marked **by construction** concerns a statement that \
+              subdlab's rules were themselves built from (a reconstruction the paper does not print, or a weight \
+              the stated formula prescribes): it shows the construction is consistent, and the page says what \
+              it still tests; it is never an independent confirmation.\n\n";
+    index += "| paper | claims | HOLDS | REFUTED | INCONCLUSIVE | of them by construction |\n|---|---:|---:|---:|---:|---:|\n";
     for (f, o) in papers.iter().zip(&outcomes) {
         let count = |v: Verdict| o.iter().filter(|x| x.verdict == v).count();
         writeln!(
             index,
-            "| [{}]({}.md) | {} | {} | {} | {} |",
+            "| [{}]({}.md) | {} | {} | {} | {} | {} |",
             f.title,
             f.paper,
             o.len(),
             count(Verdict::Holds),
             count(Verdict::Refuted),
-            count(Verdict::Inconclusive)
+            count(Verdict::Inconclusive),
+            o.iter().filter(|x| x.by_construction.is_some()).count()
         )
         .ok();
         let (page, figures) = paper_page(f, o)?;
@@ -106,7 +110,15 @@ fn paper_page(f: &ClaimFile, outcomes: &[Outcome]) -> Result<(String, Files), Er
     }
     page += "## Claims\n\n| verdict | id | location | statement |\n|---|---|---|---|\n";
     for o in outcomes {
-        writeln!(page, "| {} | `{}` | {} | {} |", o.verdict, o.id, cell(&o.location), cell(&o.statement)).ok();
+        writeln!(page, "| {} | `{}` | {} | {} |", o.shown_verdict(), o.id, cell(&o.location), cell(&o.statement)).ok();
+    }
+    let built: Vec<&Outcome> = outcomes.iter().filter(|o| o.by_construction.is_some()).collect();
+    if !built.is_empty() {
+        page += "\n## Verdicts by construction\n\n";
+        for o in built {
+            writeln!(page, "- `{}` — {}: {}", o.id, o.verdict, cell(o.by_construction.as_deref().unwrap_or_default()))
+                .ok();
+        }
     }
     let bad: Vec<&Outcome> = outcomes.iter().filter(|o| o.verdict != Verdict::Holds).collect();
     page += "\n## Refuted, garbled or undecided statements\n\n";
