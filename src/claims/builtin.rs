@@ -826,7 +826,7 @@ fn matrix_nonnegative(data: &toml::Value) -> Result4 {
                     .ok_or_else(|| Error::Claim("parameter values are strings".into()))
             })
             .collect::<Result<_, _>>()?;
-        let scheme = schemes::build(name, &p)?;
+        let scheme = schemes::resolve(name, &p)?;
         for &n in &valences {
             let config = Configuration::regular(scheme.as_ref(), n as usize)?;
             let a = analyse(scheme.as_ref(), &config, &Options { exact: false, ..Options::default() })?;

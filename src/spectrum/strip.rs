@@ -281,3 +281,54 @@ pub fn rational_spectrum(m: &[Vec<Rational>]) -> Result<(Vec<RationalEigenvalue>
     let out = roots.into_iter().map(|(r, alg)| (r.clone(), alg, n - qm.shifted(&r).rank())).collect();
     Ok((out, n - found))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Commuting diagonal matrices: every product is diag(Π a, Π b), so the
+    /// joint spectral radius is the largest entry, 3/4 here, reached by the
+    /// word of B alone; both bounds must be exactly that (the ∞-norm of a
+    /// diagonal matrix is its largest entry).
+    #[test]
+    fn diagonal_pair_has_the_largest_entry_as_joint_spectral_radius() {
+        let a = Mat::from_fn(2, 2, |i, j| {
+            if i != j {
+                0.0
+            } else if i == 0 {
+                0.5
+            } else {
+                0.25
+            }
+        });
+        let b = Mat::from_fn(2, 2, |i, j| {
+            if i != j {
+                0.0
+            } else if i == 0 {
+                1.0 / 3.0
+            } else {
+                0.75
+            }
+        });
+        let bounds = jsr_bounds(&[a, b], 6, 3).unwrap();
+        assert!((bounds.upper - 0.75).abs() < 1e-12 && (bounds.lower - 0.75).abs() < 1e-12, "{bounds:?}");
+        assert!(bounds.lower_word.iter().all(|&k| k == 1));
+    }
+
+    /// A = [[1, 1], [0, 1]], B = [[1, 0], [1, 1]]: each has spectral radius 1,
+    /// but AB = [[2, 1], [1, 1]] has ρ = (3 + √5)/2 = φ², so the joint
+    /// spectral radius is at least φ (and equals it, a classical example).
+    /// The lower bound over words of length ≤ 2 is φ; the upper bound of any
+    /// length is at least the true value.
+    #[test]
+    fn shear_pair_has_the_golden_ratio() {
+        let a = Mat::from_fn(2, 2, |i, j| if i == 0 || j == 1 { 1.0 } else { 0.0 });
+        let b = Mat::from_fn(2, 2, |i, j| if i == 1 || j == 0 { 1.0 } else { 0.0 });
+        let phi = (1.0 + 5f64.sqrt()) / 2.0;
+        let bounds = jsr_bounds(&[a, b], 8, 2).unwrap();
+        assert!((bounds.lower - phi).abs() < 1e-12, "{bounds:?}");
+        assert_eq!(bounds.lower_word.len(), 2);
+        assert!(bounds.upper >= phi - 1e-12 && bounds.upper < 2.0, "{bounds:?}");
+        assert!(jsr_bounds(&[], 3, 1).is_err());
+    }
+}
