@@ -71,3 +71,34 @@ fn rows_of_s_sum_to_one() {
         }
     }
 }
+
+/// The same agreement above valence 12, at primes and composites (13, 17,
+/// 24, 31), for the schemes of every refinement host with one symmetric
+/// configuration. Defective clusters (Doo–Sabin's 1/4, non-box's repeated
+/// eigenvalues) split by about √eps on the whole-matrix path, so the match
+/// tolerance is 1e-6 here.
+#[test]
+fn union_of_block_spectra_equals_full_spectrum_above_valence_12() {
+    for scheme in ["catmull-clark", "loop", "doo-sabin", "non-box", "sqrt3", "polar-bi2", "tps"] {
+        for n in [13, 17, 24, 31] {
+            let dft = run(scheme, n, NeighbourhoodKind::Analysis, Some(Method::Dft), false);
+            let full = run(scheme, n, NeighbourhoodKind::Analysis, Some(Method::Full), false);
+            let total: usize = dft.spectrum.blocks.iter().map(|b| b.size).sum();
+            assert_eq!(total, full.spectrum.matrix_size, "{scheme} n={n}: block sizes add up");
+            let (a, b) = (expanded(&dft), expanded(&full));
+            assert_eq!(a.len(), b.len(), "{scheme} n={n}");
+            let mut unused = b.clone();
+            for x in &a {
+                let k = unused
+                    .iter()
+                    .position(|y| ((x.0 - y.0).powi(2) + (x.1 - y.1).powi(2)).sqrt() < 1e-6)
+                    .unwrap_or_else(|| panic!("{scheme} n={n}: {x:?} from the blocks is not in the full spectrum"));
+                unused.remove(k);
+            }
+            // the verdict and the subdominant eigenvalue agree too
+            assert_eq!(dft.spectrum.verdict.c1_spectral, full.spectrum.verdict.c1_spectral, "{scheme} n={n}");
+            let (l1, l2) = (dft.spectrum.verdict.subdominant.unwrap(), full.spectrum.verdict.subdominant.unwrap());
+            assert!((l1 - l2).abs() < 1e-9, "{scheme} n={n}: λ1 {l1} vs {l2}");
+        }
+    }
+}

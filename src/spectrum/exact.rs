@@ -39,7 +39,10 @@ pub struct ExactSummary {
     pub rational_roots: Vec<ExactRoot>,
     /// degree of the factor left after removing the rational roots
     pub remaining_degree: usize,
-    /// every exact multiplicity equals the floating-point one
+    /// "full": every exact multiplicity equals the floating-point one;
+    /// "block0": every rational root of block 0 is a floating-point
+    /// eigenvalue found in block 0, with at least block 0's algebraic
+    /// multiplicity
     pub agrees_with_float: bool,
     /// the characteristic polynomial itself (printed in full by the curve
     /// report, whatever its degree)
@@ -150,12 +153,22 @@ fn confirm_with(method: &str, mat: &QMatrix, full: bool, eigs: &mut [Eigenvalue]
             .filter(|c| &c.1 == r)
             .map(|c| c.0)
             .min_by(|&a, &b| (eigs[a].re - rv).abs().total_cmp(&(eigs[b].re - rv).abs()));
-        if let Some(k) = closest {
-            let e = &mut eigs[k];
-            e.exact = Some(text.clone());
-            if full && (e.algebraic_multiplicity != *alg || Some(e.geometric_multiplicity) != *geo) {
-                agrees = false;
+        match closest {
+            Some(k) => {
+                let e = &mut eigs[k];
+                e.exact = Some(text.clone());
+                // the whole S: the same multiplicities; block 0 alone: the
+                // float analysis must also find the root in block 0, at least
+                // as often as block 0's characteristic polynomial has it
+                // (other blocks may add copies)
+                let differs = if full {
+                    e.algebraic_multiplicity != *alg || Some(e.geometric_multiplicity) != *geo
+                } else {
+                    !e.blocks.contains(&0) || e.algebraic_multiplicity < *alg
+                };
+                agrees &= !differs;
             }
+            None => agrees = false,
         }
         out.push(ExactRoot {
             value: text,
