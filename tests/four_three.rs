@@ -96,6 +96,11 @@ fn global(s: usize, i: i64, j: i64, rot: fn(i64, i64) -> (i64, i64)) -> (i64, i6
 /// old vertex at coarse position q is a(p_k − 2q) for a box-spline scheme.
 fn assert_s_is_box_spline(faces: &str, dirs: &[(i64, i64)], rot: fn(i64, i64) -> (i64, i64)) {
     let (mask, den) = box_mask(dirs);
+    assert_s_is_mask(faces, &mask, den, rot);
+}
+
+/// Row k of S (new vertex at fine position p_k) against a(p_k − 2q)/den.
+fn assert_s_is_mask(faces: &str, mask: &HashMap<(i64, i64), i64>, den: i64, rot: fn(i64, i64) -> (i64, i64)) {
     let a = analyse_faces(faces, None, NeighbourhoodKind::Analysis, true);
     let s = a.exact_matrix.as_ref().expect("regular rules are rational");
     let pos: Vec<(i64, i64)> = s.labels.iter().map(|l| global(l.sector, l.i, l.j, rot)).collect();
@@ -233,6 +238,8 @@ fn lemma_3_4_projection_identities() {
         assert!(close(&mat_mul(&ec, &ec), &ec) && close(&mat_mul(&c, &c), &c) && close(&mat_mul(&e, &e), &e));
         assert!(c.iter().all(|row| row.iter().sum::<f64>().abs() < 1e-13), "Ce = 0");
     }
+    // the registry decides the lemma with its own code (exact matrices, ranks)
+    assert_registry_verdict("ps.lemma3.4", subdlab::claims::Verdict::Holds);
 }
 
 /// Lemma 3.5: det(M − λ) = (λ − 1)(λ − ½)²(λ − ¼)^{n−3}(λ − (½ − α)) with α
@@ -259,6 +266,10 @@ fn lemma_3_5_eigenvalues_of_m() {
             }
         }
     }
+    // the registry reads α both ways: as the matrix's α (root c − ½, derived
+    // above) the lemma holds, as the figure's centre weight (root ½ − c) not
+    assert_registry_verdict("ps.lemma3.5-alphaM", subdlab::claims::Verdict::Holds);
+    assert_registry_verdict("ps.lemma3.5-centre-weight", subdlab::claims::Verdict::Refuted);
 }
 
 /// Lemma 3.5 in exact arithmetic on the M the program assembled (n = 3, 4, 6,
@@ -480,6 +491,8 @@ fn remark_after_lemma_3_5_perturbed_m() {
             assert!(!power_sums((1.0 - eps) / 4.0), "n={n} ε={eps}: the printed (1 − ε)/4");
         }
     }
+    // the registry's check (the printed matrix's own eigenvalues) agrees
+    assert_registry_verdict("ps.remark-perturbed-M", subdlab::claims::Verdict::Refuted);
 }
 
 /// Sizes. Minimal invariant set: the eon rule and (4b) use only the eon and its
@@ -902,6 +915,8 @@ fn factored_stencils_of_section_3() {
     // (numerators over 4) * (numerators over 4) = numerators over 16 = den4
     assert_eq!(den4, 16);
     assert_eq!(mul(&bilinear, &four_neighbours), a4);
+    // the factored form is the rule the program applies on all-quad regions
+    assert_s_is_mask("QQQQ", &mul(&bilinear, &four_neighbours), 16, |i, j| (-j, i));
     let cc_smooth: HashMap<(i64, i64), i64> =
         (-1..=1).flat_map(|x: i64| (-1..=1).map(move |y: i64| ((x, y), (2 - x.abs()) * (2 - y.abs())))).collect();
     let (bicubic, den_cc) = box_mask(&[(1, 0), (-1, 0), (1, 0), (-1, 0), (0, 1), (0, -1), (0, 1), (0, -1)]);
@@ -964,6 +979,8 @@ fn lemma_3_2_ridges() {
         let printed = al * (2.0 - a / 2.0) - 2.0 * ga;
         assert!((first + printed).abs() < 1e-12 && first.abs() > 1e-3);
     }
+    // the registry's identity claim on the printed algebra: the sign slip
+    assert_registry_verdict("ps.lemma3.2-proof", subdlab::claims::Verdict::Refuted);
 }
 
 /// Lemma 3.3's matrices on L = [−3, 3] × [−3, 4] (the paper's grid: quads on

@@ -165,6 +165,8 @@ fn alpha_of_eq_8_makes_eq_3_a_convex_combination() {
         let (_, _, _, alpha) = weights(n);
         assert!(alpha > 0.0 && alpha < 1.0, "n = {n}: α = {alpha}");
     }
+    assert_registry_verdict("pgs.alpha-convex-lower", subdlab::claims::Verdict::Holds);
+    assert_registry_verdict("pgs.alpha-convex-upper", subdlab::claims::Verdict::Holds);
 }
 
 #[test]

@@ -43,6 +43,8 @@ fn eq_15_gives_the_prescribed_gamma_hat_and_beta_one_half() {
             assert!((gamma_hat(k, n) - want).abs() < 1e-13, "n = {n}, k = {k}");
         }
     }
+    assert_registry_verdict("polar.gamma", subdlab::claims::Verdict::Holds);
+    assert_registry_verdict("polar.beta", subdlab::claims::Verdict::Holds);
 }
 
 #[test]

@@ -214,6 +214,7 @@ fn eq_22_at_one_third_is_the_tps_subdominant_eigenvalue() {
         let c = cos2pi(1, n);
         assert!((eq_22(1.0 / 3.0, c) - paper_subdominant(c)).abs() < 1e-14, "n = {n}");
     }
+    assert_registry_verdict("tps.adjustable-e-third", subdlab::claims::Verdict::Holds);
 }
 
 #[test]

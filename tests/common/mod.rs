@@ -152,3 +152,24 @@ pub fn class_from_closed_forms(mu: f64, lambda_squared: f64) -> subdlab::curvatu
         CurvatureClass::Zero
     }
 }
+
+/// The outcome the built-in registry computes for claim `id`, evaluated on
+/// its own (the claim's own check code: builtin, identity, matrix-eigenvalues,
+/// ...). Tests that derive a paper statement by hand use it to pin the
+/// registry's verdict by that independent derivation.
+pub fn registry_outcome(id: &str) -> subdlab::claims::Outcome {
+    for file in subdlab::claims::builtin_files().unwrap() {
+        if let Some(claim) = file.claims.iter().find(|c| c.id == id) {
+            let alone = subdlab::claims::ClaimFile { claims: vec![claim.clone()], ..file.clone() };
+            return subdlab::claims::evaluate(&alone).pop().unwrap();
+        }
+    }
+    panic!("no registry claim '{id}'")
+}
+
+/// Asserts the registry's verdict on `id` is `want`, the verdict the calling
+/// test derived by hand.
+pub fn assert_registry_verdict(id: &str, want: subdlab::claims::Verdict) {
+    let o = registry_outcome(id);
+    assert_eq!(o.verdict, want, "{id}: the registry says {} ({}), the hand derivation {want}", o.verdict, o.detail);
+}
