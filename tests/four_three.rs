@@ -1086,3 +1086,40 @@ fn lemma_3_8_convex_hull_fails_in_the_limit() {
     assert!(checked > 1000, "{checked} limit points");
     assert!(min < -1e-4, "most negative limit weight {min}");
 }
+
+/// Lemma 3.5's circulant step. C = (2/n)[cos(2π(i − j)/n)] = (1/n)(ω^{i−j} +
+/// ω^{−(i−j)}) has the eigenvalue 1 on each of the Fourier modes j = 1 and
+/// j = −1 (= n − 1) and 0 on the others, so (1 − 4λ)I + C has 2 − 4λ at
+/// j = ±1 (both; not 3 − 4λ at j = −1 as printed) and 1 − 4λ else; at
+/// λ = 1/2 it is 0 twice and −1 n − 2 times: rank n − 2, not n − 1. Checked
+/// here on the matrix by its action on the Fourier vectors, then the
+/// registry's verdict.
+#[test]
+fn lemma_3_5_circulant_step_is_refuted() {
+    for n in 3..=9usize {
+        let lam = 0.5;
+        let m: Vec<Vec<f64>> = (0..n)
+            .map(|i| {
+                (0..n)
+                    .map(|j| {
+                        f64::from(u8::from(i == j)) * (1.0 - 4.0 * lam) + 2.0 / n as f64 * cos2pi((i + n - j) % n, n)
+                    })
+                    .collect()
+            })
+            .collect();
+        for mode in 0..n {
+            let want = if mode == 1 || mode == n - 1 { 2.0 - 4.0 * lam } else { 1.0 - 4.0 * lam };
+            // real and imaginary parts of the Fourier vector ω^{mode·j}
+            for v in [
+                (0..n).map(|j| cos2pi(mode * j % n, n)).collect::<Vec<f64>>(),
+                (0..n).map(|j| sin2pi(mode * j % n, n)).collect(),
+            ] {
+                for i in 0..n {
+                    let mv: f64 = (0..n).map(|j| m[i][j] * v[j]).sum();
+                    assert!((mv - want * v[i]).abs() < 1e-12, "n = {n}, mode {mode}");
+                }
+            }
+        }
+    }
+    assert_registry_verdict("ps.lemma3.5-circulant", subdlab::claims::Verdict::Refuted);
+}

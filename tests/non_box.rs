@@ -119,3 +119,35 @@ fn g1_bound_of_section_4_is_where_the_block_zero_eigenvalue_overtakes() {
         }
     }
 }
+
+/// The two transcription refutations, decided from the printed data alone
+/// (read here from the claim file, independently of the matrix-eigenvalue
+/// code): B(0) is printed with 11 rows of 11 entries but only 9 eigenvalues
+/// are listed (an 11 × 11 matrix has 11, counted with multiplicity), and B(m)
+/// is printed with a row count that differs from its row length, so it is not
+/// square and has no eigenvalues to compare. The registry must refute both.
+#[test]
+fn printed_b0_and_bm_are_refuted_by_their_shapes() {
+    let file = subdlab::claims::builtin_files().unwrap().into_iter().find(|f| f.paper == "huang-nonbox").unwrap();
+    let text = subdlab::claims::BUILTIN.iter().find(|(p, _)| *p == "huang-nonbox").unwrap().1;
+    let table: toml::Value = toml::from_str(text).unwrap();
+    let claim = |id: &str| -> toml::Value {
+        table["claim"].as_array().unwrap().iter().find(|c| c["id"].as_str() == Some(id)).unwrap().clone()
+    };
+    let b0 = claim("nonbox.B0-eigenvalues-printed");
+    let rows = b0["rows"].as_array().unwrap();
+    assert!(rows.iter().all(|r| r.as_array().unwrap().len() == rows.len()), "B(0) is printed square");
+    let listed: usize = b0["values"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_str().unwrap().split(';').nth(1).map_or(1, |c| c.trim().parse::<usize>().unwrap()))
+        .sum();
+    assert_eq!((rows.len(), listed), (11, 9));
+    let bm = claim("nonbox.Bm-shape");
+    let rows = bm["rows"].as_array().unwrap();
+    assert!(rows.iter().any(|r| r.as_array().unwrap().len() != rows.len()), "B(m) is not printed square");
+    assert!(file.claims.iter().any(|c| c.id == "nonbox.Bm-shape"));
+    assert_registry_verdict("nonbox.B0-eigenvalues-printed", subdlab::claims::Verdict::Refuted);
+    assert_registry_verdict("nonbox.Bm-shape", subdlab::claims::Verdict::Refuted);
+}
