@@ -1,0 +1,214 @@
+//! The certified matrix: rows of S in interval arithmetic, their Fourier
+//! blocks as interval matrices, and the two structural facts the spectral
+//! proof uses, checked on the same rows.
+//!
+//! The rows come from the scheme's own rules evaluated with `Interval`
+//! weights (`matrix::local::assemble_rows`): every weight, cos(2πk/n)
+//! included, is enclosed, and so is every sum and product of the stencil
+//! composition. So the interval rows enclose the rows of the true S, not of a
+//! rounded one. The Fourier blocks B_m[a][b] = Σ_τ S[(0,a),(τ,b)] ω^{mτ} (the
+//! formula of `dft::blocks`, on the same orbits) are then enclosed with
+//! ω^k = cos(2πk/g) + i sin(2πk/g) enclosed as well.
+
+use super::complex::{CInterval, CIntervalMatrix};
+use crate::dft::Orbits;
+use crate::neighbourhood::VertexLabel;
+use crate::numeric::interval::cos_sin_2pi;
+use crate::numeric::{Interval, Rational};
+use serde::Serialize;
+use std::collections::HashMap;
+
+/// Rows of S with interval entries, by matrix index, each over all columns.
+pub type IntervalRows = Vec<Vec<(usize, Interval)>>;
+
+/// How a structural identity of S was checked.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case", tag = "status", content = "detail")]
+pub enum Check {
+    /// every entry involved is an exact rational and the identity holds exactly
+    Exact,
+    /// the identity holds to interval overlap: the entries involved are
+    /// irrational (cosines of 2π/n), so equality is an identity of the rules'
+    /// formulas that enclosures can confirm only to their width
+    Overlap,
+    /// the identity is proven false, or cannot be stated (the witness)
+    Fails(String),
+}
+
+impl Check {
+    fn and(self, other: Check) -> Check {
+        match (self, other) {
+            (Check::Fails(a), _) => Check::Fails(a),
+            (_, Check::Fails(b)) => Check::Fails(b),
+            (Check::Overlap, _) | (_, Check::Overlap) => Check::Overlap,
+            _ => Check::Exact,
+        }
+    }
+    pub fn holds(&self) -> bool {
+        !matches!(self, Check::Fails(_))
+    }
+}
+
+/// Compare two enclosed numbers that should be equal.
+fn equal(a: &Interval, b: &Interval) -> Check {
+    if a.is_point() && a == b {
+        Check::Exact
+    } else if a.overlaps(b) {
+        Check::Overlap
+    } else {
+        Check::Fails(format!("[{:e}, {:e}] ≠ [{:e}, {:e}]", a.lo, a.hi, b.lo, b.hi))
+    }
+}
+
+/// Affine invariance: every row of S sums to 1, so the vector of ones is an
+/// eigenvector of eigenvalue 1 (checked on the given rows: with rotation
+/// symmetry the representative rows are all the rows up to rotation).
+pub fn row_sums(rows: &IntervalRows, labels: &[VertexLabel], which: &[usize]) -> Check {
+    let one = Interval::point(1.0);
+    let mut all = Check::Exact;
+    for (row, &k) in rows.iter().zip(which) {
+        let sum = row.iter().fold(Interval::point(0.0), |s, (_, w)| s + *w);
+        let c = match equal(&sum, &one) {
+            Check::Fails(_) => Check::Fails(format!(
+                "the row of {} sums to [{:.17e}, {:.17e}], not 1",
+                labels[k].name, sum.lo, sum.hi
+            )),
+            c => c,
+        };
+        all = all.and(c);
+        if !all.holds() {
+            break;
+        }
+    }
+    all
+}
+
+/// The reflection of the neighbourhood across the spoke between sector n − 1
+/// and sector 0: sector s ↦ n − 1 − s with the chart coordinates (i, j)
+/// swapped, a point that lands on the next spoke (i = 0) relabelled in the
+/// sector that owns that spoke. `None` when a reflected point is not in the
+/// neighbourhood (the configuration has no such mirror).
+pub fn mirror_map(labels: &[VertexLabel], sectors: usize) -> Option<Vec<usize>> {
+    let n = sectors as i64;
+    let key = |l: &VertexLabel| (if l.i == 0 && l.j == 0 { 0 } else { l.sector as i64 }, l.i, l.j, l.ring);
+    let index: HashMap<(i64, i64, i64, usize), usize> = labels.iter().enumerate().map(|(k, l)| (key(l), k)).collect();
+    labels
+        .iter()
+        .map(|l| {
+            if l.i == 0 && l.j == 0 {
+                return index.get(&key(l)).copied();
+            }
+            let (s, i, j) = (n - 1 - l.sector as i64, l.j, l.i);
+            let (s, i, j) = if i == 0 && j > 0 { ((s + 1).rem_euclid(n), j, 0) } else { (s, i, j) };
+            index.get(&(s, i, j, l.ring)).copied()
+        })
+        .collect()
+}
+
+/// Mirror symmetry of S: S[Q(r), Q(c)] = S[r, c] for the reflection Q, which
+/// with the rotation P satisfies QPQ = P⁻¹. Then Q maps Fourier block m onto
+/// block −m, so the spectrum of B_m equals that of B_{−m} = conj(B_m): each
+/// block's spectrum is closed under conjugation. Checked on the
+/// representative rows `rows` (orbit o's row at `rows[o]`), every other row
+/// being a rotation of one of them.
+pub fn mirror_symmetry(rows: &IntervalRows, orbits: &Orbits, labels: &[VertexLabel], sectors: usize) -> Check {
+    let Some(q) = mirror_map(labels, sectors) else {
+        return Check::Fails("the neighbourhood has no mirror image of itself across a spoke".into());
+    };
+    let g = orbits.group_order;
+    let mut index = vec![vec![usize::MAX; g]; orbits.num_orbits()];
+    for (k, &(o, t)) in orbits.member.iter().enumerate() {
+        index[o][t] = k;
+    }
+    let lookup: Vec<HashMap<usize, Interval>> = rows.iter().map(|r| r.iter().copied().collect()).collect();
+    // S[(t1, o1), c] = S[(0, o1), c rotated back by t1]
+    let entry = |row: usize, col: usize| -> Option<Interval> {
+        let (o1, t1) = orbits.member[row];
+        let (o2, t2) = orbits.member[col];
+        let c = if orbits.fixed[o2] { col } else { index[o2][(t2 + g - t1) % g] };
+        if c == usize::MAX {
+            return None;
+        }
+        Some(lookup[o1].get(&c).copied().unwrap_or(Interval::point(0.0)))
+    };
+    let mut all = Check::Exact;
+    for (o, row) in rows.iter().enumerate() {
+        let r = orbits.representative[o];
+        let mirrored_row = q[r];
+        let mirrored_len = lookup[orbits.member[mirrored_row].0].len();
+        if mirrored_len != row.len() {
+            return Check::Fails(format!(
+                "the rows of {} and of its mirror image {} have different supports",
+                labels[r].name, labels[mirrored_row].name
+            ));
+        }
+        for (col, w) in row {
+            let Some(m) = entry(mirrored_row, q[*col]) else {
+                return Check::Fails(format!("no mirror image of {} in the neighbourhood", labels[*col].name));
+            };
+            all = all.and(match equal(w, &m) {
+                Check::Fails(why) => Check::Fails(format!(
+                    "S[{}, {}] and its mirror image S[{}, {}] differ: {why}",
+                    labels[r].name, labels[*col].name, labels[mirrored_row].name, labels[q[*col]].name
+                )),
+                c => c,
+            });
+            if !all.holds() {
+                return all;
+            }
+        }
+    }
+    all
+}
+
+/// The interval Fourier blocks of S from its representative rows (`rows[o]`:
+/// the row of orbit o's representative), in block order.
+pub fn fourier_blocks(rows: &IntervalRows, orbits: &Orbits) -> Vec<(usize, CIntervalMatrix)> {
+    let g = orbits.group_order;
+    let powers: Vec<CInterval> = (0..g)
+        .map(|k| {
+            let (c, s) = cos_sin_2pi(k as i64, g as i64);
+            CInterval::new(c, s)
+        })
+        .collect();
+    (0..g)
+        .map(|m| {
+            let list = orbits.block_orbits(m);
+            let mut pos = vec![usize::MAX; orbits.num_orbits()];
+            for (k, &o) in list.iter().enumerate() {
+                pos[o] = k;
+            }
+            let mut b = CIntervalMatrix::zeros(list.len());
+            for (ra, &a) in list.iter().enumerate() {
+                for (col, w) in &rows[a] {
+                    let (ob, tau) = orbits.member[*col];
+                    // a fixed point's column outside block 0 sums to zero
+                    if pos[ob] == usize::MAX {
+                        continue;
+                    }
+                    let term = powers[(m * tau) % g].scale(*w);
+                    let e = b.at(ra, pos[ob]);
+                    *e = *e + term;
+                }
+            }
+            (m, b)
+        })
+        .collect()
+}
+
+/// The whole interval matrix (no rotation symmetry), as one real block.
+pub fn whole_matrix(rows: &IntervalRows) -> CIntervalMatrix {
+    let mut b = CIntervalMatrix::zeros(rows.len());
+    for (i, row) in rows.iter().enumerate() {
+        for (col, w) in row {
+            let e = b.at(i, *col);
+            *e = *e + CInterval::real(*w);
+        }
+    }
+    b
+}
+
+/// An exact rational from a point interval (for display of exact entries).
+pub fn exact_entry(w: &Interval) -> Option<Rational> {
+    w.exact_value()
+}
