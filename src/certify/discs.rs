@@ -160,7 +160,9 @@ pub fn enclose(a: &CIntervalMatrix) -> Result<Enclosure, String> {
     }
     let eps = epsilon.hi;
     if !(eps < 1.0) {
-        return Err(format!("the eigenvectors of the midpoint are too ill-conditioned to verify (‖I − RV‖∞ ≤ {eps:.3e} is not below 1)"));
+        return Err(format!(
+            "the eigenvectors of the midpoint are too ill-conditioned to verify (‖I − RV‖∞ ≤ {eps:.3e} is not below 1)"
+        ));
     }
     let m_norm = (0..k)
         .map(|i| (0..k).fold(Interval::point(0.0), |s, j| s + Interval::point(m.get(i, j).mag())).hi)
@@ -205,8 +207,7 @@ pub fn components(discs: Vec<Disc>) -> Vec<Component> {
         let root = find(&mut parent, i);
         groups.entry(root).or_default().push(*d);
     }
-    let mut out: Vec<Component> =
-        groups.into_values().map(|discs| Component { count: discs.len(), discs }).collect();
+    let mut out: Vec<Component> = groups.into_values().map(|discs| Component { count: discs.len(), discs }).collect();
     out.sort_by(|a, b| b.max_modulus().total_cmp(&a.max_modulus()));
     out
 }

@@ -21,6 +21,11 @@ use std::collections::HashMap;
 /// Rows of S with interval entries, by matrix index, each over all columns.
 pub type IntervalRows = Vec<Vec<(usize, Interval)>>;
 
+/// The same rows exactly, where every weight of the row is rational (the
+/// structural identities are then checked exactly, whatever the intervals'
+/// widths): `None` for a row with an irrational weight.
+pub type ExactRows = Vec<Option<Vec<(usize, Rational)>>>;
+
 /// How a structural identity of S was checked.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(rename_all = "snake_case", tag = "status", content = "detail")]
@@ -63,16 +68,22 @@ fn equal(a: &Interval, b: &Interval) -> Check {
 /// Affine invariance: every row of S sums to 1, so the vector of ones is an
 /// eigenvector of eigenvalue 1 (checked on the given rows: with rotation
 /// symmetry the representative rows are all the rows up to rotation).
-pub fn row_sums(rows: &IntervalRows, labels: &[VertexLabel], which: &[usize]) -> Check {
+pub fn row_sums(rows: &IntervalRows, exact: &ExactRows, labels: &[VertexLabel], which: &[usize]) -> Check {
     let one = Interval::point(1.0);
     let mut all = Check::Exact;
-    for (row, &k) in rows.iter().zip(which) {
+    for ((row, exact_row), &k) in rows.iter().zip(exact).zip(which) {
+        if let Some(e) = exact_row {
+            let sum = e.iter().fold(Rational::from_integer(0.into()), |s, (_, w)| s + w);
+            if sum != Rational::from_integer(1.into()) {
+                return Check::Fails(format!("the row of {} sums to {sum}, not 1", labels[k].name));
+            }
+            continue;
+        }
         let sum = row.iter().fold(Interval::point(0.0), |s, (_, w)| s + *w);
         let c = match equal(&sum, &one) {
-            Check::Fails(_) => Check::Fails(format!(
-                "the row of {} sums to [{:.17e}, {:.17e}], not 1",
-                labels[k].name, sum.lo, sum.hi
-            )),
+            Check::Fails(_) => {
+                Check::Fails(format!("the row of {} sums to [{:.17e}, {:.17e}], not 1", labels[k].name, sum.lo, sum.hi))
+            }
             c => c,
         };
         all = all.and(c);
@@ -105,13 +116,21 @@ pub fn mirror_map(labels: &[VertexLabel], sectors: usize) -> Option<Vec<usize>> 
         .collect()
 }
 
-/// Mirror symmetry of S: S[Q(r), Q(c)] = S[r, c] for the reflection Q, which
-/// with the rotation P satisfies QPQ = P⁻¹. Then Q maps Fourier block m onto
-/// block −m, so the spectrum of B_m equals that of B_{−m} = conj(B_m): each
-/// block's spectrum is closed under conjugation. Checked on the
-/// representative rows `rows` (orbit o's row at `rows[o]`), every other row
-/// being a rotation of one of them.
-pub fn mirror_symmetry(rows: &IntervalRows, orbits: &Orbits, labels: &[VertexLabel], sectors: usize) -> Check {
+/// Mirror symmetry of S away from the fixed points: S[Q(r), Q(c)] = S[r, c]
+/// for the reflection Q and every point r, c off the centre, where Q with
+/// the rotation P satisfies QPQ = P⁻¹. Then Q maps Fourier block m onto block
+/// −m, and those blocks (m ≠ 0) involve no fixed point, so the spectrum of
+/// B_m equals that of B_{−m} = conj(B_m): closed under conjugation. Checked
+/// on the representative rows `rows` (orbit o's row at `rows[o]`), every
+/// other row being a rotation of one of them; exactly where both rows are
+/// rational.
+pub fn mirror_symmetry(
+    rows: &IntervalRows,
+    exact: &ExactRows,
+    orbits: &Orbits,
+    labels: &[VertexLabel],
+    sectors: usize,
+) -> Check {
     let Some(q) = mirror_map(labels, sectors) else {
         return Check::Fails("the neighbourhood has no mirror image of itself across a spoke".into());
     };
@@ -120,32 +139,47 @@ pub fn mirror_symmetry(rows: &IntervalRows, orbits: &Orbits, labels: &[VertexLab
     for (k, &(o, t)) in orbits.member.iter().enumerate() {
         index[o][t] = k;
     }
-    let lookup: Vec<HashMap<usize, Interval>> = rows.iter().map(|r| r.iter().copied().collect()).collect();
-    // S[(t1, o1), c] = S[(0, o1), c rotated back by t1]
-    let entry = |row: usize, col: usize| -> Option<Interval> {
+    let off_centre = |col: &usize| !orbits.fixed[orbits.member[*col].0];
+    let lookup: Vec<HashMap<usize, Interval>> =
+        rows.iter().map(|r| r.iter().filter(|e| off_centre(&e.0)).copied().collect()).collect();
+    let exact_lookup: Vec<Option<HashMap<usize, Rational>>> =
+        exact.iter().map(|r| r.as_ref().map(|r| r.iter().filter(|e| off_centre(&e.0)).cloned().collect())).collect();
+    // S[(t1, o1), c] = S[(0, o1), c rotated back by t1]: (orbit, column)
+    let rotate_back = |row: usize, col: usize| -> Option<(usize, usize)> {
         let (o1, t1) = orbits.member[row];
         let (o2, t2) = orbits.member[col];
-        let c = if orbits.fixed[o2] { col } else { index[o2][(t2 + g - t1) % g] };
-        if c == usize::MAX {
-            return None;
-        }
-        Some(lookup[o1].get(&c).copied().unwrap_or(Interval::point(0.0)))
+        let c = index[o2][(t2 + g - t1) % g];
+        (c != usize::MAX).then_some((o1, c))
     };
     let mut all = Check::Exact;
     for (o, row) in rows.iter().enumerate() {
         let r = orbits.representative[o];
+        if orbits.fixed[o] {
+            continue;
+        }
         let mirrored_row = q[r];
         let mirrored_len = lookup[orbits.member[mirrored_row].0].len();
-        if mirrored_len != row.len() {
+        if mirrored_len != lookup[o].len() {
             return Check::Fails(format!(
                 "the rows of {} and of its mirror image {} have different supports",
                 labels[r].name, labels[mirrored_row].name
             ));
         }
-        for (col, w) in row {
-            let Some(m) = entry(mirrored_row, q[*col]) else {
+        for (col, w) in row.iter().filter(|e| off_centre(&e.0)) {
+            let Some((o1, c)) = rotate_back(mirrored_row, q[*col]) else {
                 return Check::Fails(format!("no mirror image of {} in the neighbourhood", labels[*col].name));
             };
+            if let (Some(a), Some(b)) = (&exact_lookup[o], &exact_lookup[o1]) {
+                let zero = Rational::from_integer(0.into());
+                if a.get(col).unwrap_or(&zero) != b.get(&c).unwrap_or(&zero) {
+                    return Check::Fails(format!(
+                        "S[{}, {}] and its mirror image S[{}, {}] differ",
+                        labels[r].name, labels[*col].name, labels[mirrored_row].name, labels[q[*col]].name
+                    ));
+                }
+                continue;
+            }
+            let m = lookup[o1].get(&c).copied().unwrap_or(Interval::point(0.0));
             all = all.and(match equal(w, &m) {
                 Check::Fails(why) => Check::Fails(format!(
                     "S[{}, {}] and its mirror image S[{}, {}] differ: {why}",
@@ -206,9 +240,4 @@ pub fn whole_matrix(rows: &IntervalRows) -> CIntervalMatrix {
         }
     }
     b
-}
-
-/// An exact rational from a point interval (for display of exact entries).
-pub fn exact_entry(w: &Interval) -> Option<Rational> {
-    w.exact_value()
 }

@@ -25,11 +25,11 @@
 //! prove); the verdict says which.
 
 use super::discs::{enclose, Component, Disc};
-use super::matrix::{fourier_blocks, mirror_symmetry, row_sums, whole_matrix, Check, IntervalRows};
+use super::matrix::{fourier_blocks, mirror_symmetry, row_sums, whole_matrix, Check, ExactRows, IntervalRows};
 use crate::dft::Orbits;
 use crate::error::Error;
 use crate::matrix::local::{assemble_rows, AssembleError};
-use crate::numeric::Interval;
+use crate::numeric::{Interval, Rational};
 use crate::sdc::Scheme;
 use crate::spectrum::{Analysis, Method};
 use faer::c64;
@@ -118,6 +118,9 @@ pub struct Premises {
 pub struct SpectrumCertificate {
     #[serde(flatten)]
     pub verdict: Verdict,
+    /// true when a PROVED verdict uses a premise confirmed only to interval
+    /// overlap (see `premises`): proved given that identity of the formulas
+    pub conditional: bool,
     /// what the verdict covers (one sentence)
     pub statement: String,
     pub premises: Option<Premises>,
@@ -147,6 +150,7 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
     let orbits = Orbits::from_labels(labels, period, n);
     let not_proved = |why: String| SpectrumCertificate {
         verdict: Verdict::NotProved(why),
+        conditional: false,
         statement: STATEMENT.into(),
         premises: None,
         margins: Margins::default(),
@@ -177,10 +181,20 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
         }
         Err(e) => return Err(Error::Numeric(format!("the interval rows of S could not be assembled: {e:?}"))),
     };
-    let row_check = row_sums(&rows, labels, &which);
+    // the same rows exactly where they are rational, one by one (the centre's
+    // row may hold cos(2π/n) while the others are rational)
+    let exact: ExactRows = which
+        .iter()
+        .map(|&k| {
+            assemble_rows::<Rational>(scheme, &analysis.discovered, s.neighbourhood, &[k])
+                .ok()
+                .and_then(|mut r| r.pop())
+        })
+        .collect();
+    let row_check = row_sums(&rows, &exact, labels, &which);
     let (blocks, mirror) = match s.method {
         Method::Dft => {
-            let mirror = mirror_symmetry(&rows, &orbits, labels, n);
+            let mirror = mirror_symmetry(&rows, &exact, &orbits, labels, n);
             (fourier_blocks(&rows, &orbits), mirror)
         }
         Method::Full => (
@@ -199,13 +213,16 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
                 components: e.components,
                 failure: None,
             },
-            Err(why) => BlockEnclosure { block: *m, size: b.size, epsilon: None, components: Vec::new(), failure: Some(why) },
+            Err(why) => {
+                BlockEnclosure { block: *m, size: b.size, epsilon: None, components: Vec::new(), failure: Some(why) }
+            }
         })
         .collect();
     let exact = row_check == Check::Exact && mirror == Check::Exact;
     let premises = Premises { row_sums_one: row_check, mirror_symmetry: mirror, exact };
     let mut cert = decide(&enclosures, &premises, orbits.group_order, s.method);
     cert.margins.max_entry_width = max_entry_width;
+    cert.conditional = cert.verdict == Verdict::Proved && !exact;
     cert.premises = Some(premises);
     cert.blocks = enclosures;
     Ok(cert)
@@ -219,6 +236,7 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
     };
     let finish = |verdict: Verdict, margins: Margins, witness: Option<Witness>| SpectrumCertificate {
         verdict,
+        conditional: false,
         statement: STATEMENT.into(),
         premises: None,
         margins,
@@ -243,7 +261,11 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
         );
     }
     if !premises.row_sums_one.holds() {
-        return finish(Verdict::NotProved(format!("1 is not known to be an eigenvalue: {:?}", premises.row_sums_one)), margins, None);
+        return finish(
+            Verdict::NotProved(format!("1 is not known to be an eigenvalue: {:?}", premises.row_sums_one)),
+            margins,
+            None,
+        );
     }
     // (a) λ0: the one component of block 0 that may hold 1
     let block0 = &blocks[0].components;
@@ -284,8 +306,10 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
     // subdominant eigenvalues are not the pair from blocks 1 and g − 1
     let others: Vec<(usize, &Component)> =
         all.iter().copied().filter(|(m, c)| !is_lambda0(*m, c) && !is_lambda1(*m, c)).collect();
-    if let Some((m, c)) =
-        others.iter().filter(|(m, _)| *m != 1 && *m != g - 1).max_by(|a, b| a.1.min_modulus().total_cmp(&b.1.min_modulus()))
+    if let Some((m, c)) = others
+        .iter()
+        .filter(|(m, _)| *m != 1 && *m != g - 1)
+        .max_by(|a, b| a.1.min_modulus().total_cmp(&b.1.min_modulus()))
     {
         if c.min_modulus() > block1_max {
             return finish(
@@ -325,8 +349,7 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
     // whose component's mirror image meets no other component is real
     let self_conjugate = |m: usize, c: &Component| {
         let mirror = Component { discs: c.discs.iter().map(|d| Disc { im: -d.im, ..*d }).collect(), count: c.count };
-        c.meets_real_axis()
-            && blocks[m].components.iter().filter(|o| !std::ptr::eq(*o, c)).all(|o| o.disjoint(&mirror))
+        c.meets_real_axis() && blocks[m].components.iter().filter(|o| !std::ptr::eq(*o, c)).all(|o| o.disjoint(&mirror))
     };
     let (lo1, hi1) = c1.real_range();
     let real_enclosure = RealEnclosure { lo: lo1.max(lambda1_mod.0), hi: hi1.min(lambda1_mod.1) };
@@ -348,7 +371,9 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
                 c1.discs[0].re, c1.discs[0].im, c1.discs[0].radius
             ))
         } else {
-            Verdict::NotProved("the leading eigenvalue of block 1 is not real, and not separated from the others".into())
+            Verdict::NotProved(
+                "the leading eigenvalue of block 1 is not real, and not separated from the others".into(),
+            )
         };
         return finish(verdict, margins, Some(Witness { block: 1, component: c1.clone() }));
     }
@@ -378,12 +403,18 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
         let (m, c) = others.iter().max_by(|a, b| a.1.max_modulus().total_cmp(&b.1.max_modulus())).copied().unwrap();
         return finish(
             Verdict::NotProved(format!(
-                "an eigenvalue enclosure of block {m} ({} eigenvalue(s), modulus in [{:.9}, {:.9}]) reaches λ1 ≥ {:.9}: \
-                 equal or nearly equal moduli cannot be separated",
+                "an eigenvalue enclosure of block {m} ({} eigenvalue(s), modulus in [{:.9}, {:.9}], disc radius up to \
+                 {:.3e}) reaches λ1 ≥ {:.9}: the enclosures cannot separate them ({})",
                 c.count,
                 c.min_modulus(),
                 c.max_modulus(),
-                lambda1_mod.0
+                c.max_radius(),
+                lambda1_mod.0,
+                if c.max_radius() < 1e-6 {
+                    "equal or nearly equal moduli"
+                } else {
+                    "the enclosure is wide: defective or ill-conditioned eigenvalues in that block"
+                }
             )),
             margins,
             Some(Witness { block: m, component: c.clone() }),

@@ -68,10 +68,9 @@ fn run(cmd: &Command, a: &AnalysisArgs) -> Result<(), Error> {
     let (built, analysis) = prepare(a)?;
     let scheme = built.as_ref();
     match cmd {
-        Command::Spectrum { certify: true, .. } => Err(Error::Input(format!(
-            "--certify covers mesh schemes only; '{}' is a lattice scheme",
-            a.scheme
-        ))),
+        Command::Spectrum { certify: true, .. } => {
+            Err(Error::Input(format!("--certify covers mesh schemes only; '{}' is a lattice scheme", a.scheme)))
+        }
         Command::Spectrum { .. } => {
             if a.json {
                 print_json(&analysis.spectrum)

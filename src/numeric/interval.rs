@@ -234,8 +234,12 @@ impl Mul for Interval {
         if !self.is_finite() || !o.is_finite() {
             return Interval::ENTIRE;
         }
-        let products =
-            [mul_bounds(self.lo, o.lo), mul_bounds(self.lo, o.hi), mul_bounds(self.hi, o.lo), mul_bounds(self.hi, o.hi)];
+        let products = [
+            mul_bounds(self.lo, o.lo),
+            mul_bounds(self.lo, o.hi),
+            mul_bounds(self.hi, o.lo),
+            mul_bounds(self.hi, o.hi),
+        ];
         let lo = products.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
         let hi = products.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
         Interval::new(lo, hi)
@@ -249,8 +253,12 @@ impl Div for Interval {
         if !self.is_finite() || !o.is_finite() || (o.lo <= 0.0 && o.hi >= 0.0) {
             return Interval::ENTIRE;
         }
-        let quotients =
-            [div_bounds(self.lo, o.lo), div_bounds(self.lo, o.hi), div_bounds(self.hi, o.lo), div_bounds(self.hi, o.hi)];
+        let quotients = [
+            div_bounds(self.lo, o.lo),
+            div_bounds(self.lo, o.hi),
+            div_bounds(self.hi, o.lo),
+            div_bounds(self.hi, o.hi),
+        ];
         let lo = quotients.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
         let hi = quotients.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
         Interval::new(lo, hi)
@@ -477,7 +485,9 @@ mod tests {
         // cos(2π/7) is the root of 8x³ + 4x² − 4x − 1 in (0.6, 0.7)
         let c = cos_sin_2pi(1, 7).0;
         let p = |x: Interval| {
-            Interval::point(8.0) * x * x * x + Interval::point(4.0) * x * x - Interval::point(4.0) * x - Interval::point(1.0)
+            Interval::point(8.0) * x * x * x + Interval::point(4.0) * x * x
+                - Interval::point(4.0) * x
+                - Interval::point(1.0)
         };
         assert!(p(c).contains(0.0));
         assert!(p(Interval::point(c.lo - 1e-12)).hi < 0.0 && p(Interval::point(c.hi + 1e-12)).lo > 0.0);
