@@ -135,9 +135,19 @@ pub fn mirror_symmetry(
         return Check::Fails("the neighbourhood has no mirror image of itself across a spoke".into());
     };
     let g = orbits.group_order;
-    let mut index = vec![vec![usize::MAX; g]; orbits.num_orbits()];
-    for (k, &(o, t)) in orbits.member.iter().enumerate() {
-        index[o][t] = k;
+    let index = orbit_index(orbits);
+    // Q must be an involution with QPQ = P⁻¹ (P: one step of the rotation)
+    let rotate = |k: usize, steps: usize| {
+        let (o, t) = orbits.member[k];
+        if orbits.fixed[o] {
+            k
+        } else {
+            index[o][(t + steps) % g]
+        }
+    };
+    let reflection = (0..q.len()).all(|k| q[q[k]] == k && q[rotate(q[k], 1)] == rotate(k, g - 1));
+    if !reflection {
+        return Check::Fails("the mirror image of the labels is not a reflection of the rotation group".into());
     }
     let off_centre = |col: &usize| !orbits.fixed[orbits.member[*col].0];
     let lookup: Vec<HashMap<usize, Interval>> =
@@ -193,6 +203,59 @@ pub fn mirror_symmetry(
         }
     }
     all
+}
+
+/// Matrix index of (orbit, position): `index[o][t]` (fixed points at t = 0).
+fn orbit_index(orbits: &Orbits) -> Vec<Vec<usize>> {
+    let mut index = vec![vec![usize::MAX; orbits.group_order]; orbits.num_orbits()];
+    for (k, &(o, t)) in orbits.member.iter().enumerate() {
+        index[o][t] = k;
+    }
+    index
+}
+
+/// Rotation symmetry of S, PS = SP, which the Fourier blocks rest on: every
+/// row (t, a) of S (`all[k]` for matrix index k, all rows) is the row of its
+/// representative (0, a) with every column moved on by t, and a fixed point's
+/// row is invariant under the rotation. Checked exactly where the rows
+/// involved are rational (`exact[k]`), else on the intervals.
+pub fn rotation_symmetry(all: &IntervalRows, exact: &ExactRows, orbits: &Orbits, labels: &[VertexLabel]) -> Check {
+    let g = orbits.group_order;
+    let index = orbit_index(orbits);
+    let moved = |col: usize, t: usize| {
+        let (o, tau) = orbits.member[col];
+        if orbits.fixed[o] {
+            col
+        } else {
+            index[o][(tau + t) % g]
+        }
+    };
+    fn sorted<W: Clone>(row: impl Iterator<Item = (usize, W)>) -> Vec<(usize, W)> {
+        let mut v: Vec<(usize, W)> = row.collect();
+        v.sort_by_key(|e| e.0);
+        v
+    }
+    let mut status = Check::Exact;
+    for (k, &(o, t)) in orbits.member.iter().enumerate() {
+        // the row that row k must equal: the representative's moved on by t,
+        // or for a fixed point its own row moved on by one step
+        let (source, steps) = if orbits.fixed[o] { (k, 1) } else { (orbits.representative[o], t) };
+        let fails =
+            || Check::Fails(format!("the row of {} is not the rotated row of {}", labels[k].name, labels[source].name));
+        if let (Some(target), Some(from)) = (&exact[k], &exact[source]) {
+            if sorted(from.iter().map(|(c, w)| (moved(*c, steps), w.clone()))) != sorted(target.iter().cloned()) {
+                return fails();
+            }
+            continue;
+        }
+        let rotated = sorted(all[source].iter().map(|(c, w)| (moved(*c, steps), *w)));
+        let row = sorted(all[k].iter().copied());
+        if rotated.len() != row.len() || rotated.iter().zip(&row).any(|(a, b)| a.0 != b.0 || !a.1.overlaps(&b.1)) {
+            return fails();
+        }
+        status = status.and(Check::Overlap);
+    }
+    status
 }
 
 /// The interval Fourier blocks of S from its representative rows (`rows[o]`:

@@ -10,10 +10,14 @@
 //! (c) every other eigenvalue is smaller in modulus than λ1, with a proven gap.
 //!
 //! What the enclosures prove directly: the number of eigenvalues of each
-//! block in each disc component, and bounds of their moduli. Two facts are
+//! block in each disc component, and bounds of their moduli. Three facts are
 //! equalities, which no enclosure can prove, and come from the structure of
-//! S instead (`matrix::row_sums`, `matrix::mirror_symmetry`):
+//! S instead (`matrix::rotation_symmetry`, `matrix::row_sums`,
+//! `matrix::mirror_symmetry`):
 //!
+//! - the Fourier blocks are S in another basis: S commutes with the rotation
+//!   (checked on every row of S, not only the representatives' the blocks
+//!   are built from);
 //! - 1 is an eigenvalue (of block 0): every row of S sums to 1;
 //! - λ1 is real: S commutes with a reflection of the neighbourhood, so the
 //!   spectrum of every block is closed under conjugation, and a simple
@@ -25,7 +29,9 @@
 //! prove); the verdict says which.
 
 use super::discs::{enclose, Component, Disc};
-use super::matrix::{fourier_blocks, mirror_symmetry, row_sums, whole_matrix, Check, ExactRows, IntervalRows};
+use super::matrix::{
+    fourier_blocks, mirror_symmetry, rotation_symmetry, row_sums, whole_matrix, Check, ExactRows, IntervalRows,
+};
 use crate::dft::Orbits;
 use crate::error::Error;
 use crate::matrix::local::{assemble_rows, AssembleError};
@@ -109,6 +115,9 @@ pub struct Premises {
     pub row_sums_one: Check,
     /// S commutes with a reflection (block spectra closed under conjugation)
     pub mirror_symmetry: Check,
+    /// S commutes with the rotation (the Fourier blocks are S in another
+    /// basis: checked on every row, not only the representatives')
+    pub rotation_symmetry: Check,
     /// both checked exactly: the proof uses no identity confirmed only to
     /// interval overlap
     pub exact: bool,
@@ -192,14 +201,16 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
         })
         .collect();
     let row_check = row_sums(&rows, &exact, labels, &which);
-    let (blocks, mirror) = match s.method {
+    let (blocks, mirror, rotation) = match s.method {
         Method::Dft => {
             let mirror = mirror_symmetry(&rows, &exact, &orbits, labels, n);
-            (fourier_blocks(&rows, &orbits), mirror)
+            let rotation = rotation_premise(scheme, analysis, &orbits, &exact)?;
+            (fourier_blocks(&rows, &orbits), mirror, rotation)
         }
         Method::Full => (
             vec![(0, whole_matrix(&rows))],
             Check::Fails("no rotation symmetry: the subdominant pair is not split by Fourier blocks".into()),
+            Check::Exact,
         ),
     };
     let max_entry_width = blocks.iter().map(|(_, b)| b.max_width()).fold(0.0, f64::max);
@@ -218,14 +229,45 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
             }
         })
         .collect();
-    let exact = row_check == Check::Exact && mirror == Check::Exact;
-    let premises = Premises { row_sums_one: row_check, mirror_symmetry: mirror, exact };
+    if !rotation.holds() {
+        return Ok(not_proved(format!("the Fourier blocks need S to commute with the rotation: {rotation:?}")));
+    }
+    let exact = row_check == Check::Exact && mirror == Check::Exact && rotation == Check::Exact;
+    let premises = Premises { row_sums_one: row_check, mirror_symmetry: mirror, rotation_symmetry: rotation, exact };
     let mut cert = decide(&enclosures, &premises, orbits.group_order, s.method);
     cert.margins.max_entry_width = max_entry_width;
     cert.conditional = cert.verdict == Verdict::Proved && !exact;
     cert.premises = Some(premises);
     cert.blocks = enclosures;
     Ok(cert)
+}
+
+/// PS = SP on every row: the interval rows of all points, and their exact
+/// rows where rational (off-centre rows in one assembly, the fixed points'
+/// from `exact`, which holds the representatives' rows in orbit order).
+fn rotation_premise(
+    scheme: &dyn Scheme,
+    analysis: &Analysis,
+    orbits: &Orbits,
+    exact_reps: &ExactRows,
+) -> Result<Check, Error> {
+    let s = &analysis.spectrum;
+    let everyone: Vec<usize> = (0..s.labels.len()).collect();
+    let all = assemble_rows::<Interval>(scheme, &analysis.discovered, s.neighbourhood, &everyone)
+        .map_err(|e| Error::Numeric(format!("the interval rows of S could not be assembled: {e:?}")))?;
+    let off_centre: Vec<usize> = everyone.iter().copied().filter(|&k| !orbits.fixed[orbits.member[k].0]).collect();
+    let mut exact: ExactRows = vec![None; everyone.len()];
+    if let Ok(rows) = assemble_rows::<Rational>(scheme, &analysis.discovered, s.neighbourhood, &off_centre) {
+        for (k, row) in off_centre.iter().zip(rows) {
+            exact[*k] = Some(row);
+        }
+    }
+    for (o, &r) in orbits.representative.iter().enumerate() {
+        if orbits.fixed[o] {
+            exact[r] = exact_reps[o].clone();
+        }
+    }
+    Ok(rotation_symmetry(&all, &exact, orbits, &s.labels))
 }
 
 /// The verdict from the block enclosures and the premises.
