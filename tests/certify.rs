@@ -110,6 +110,8 @@ fn doo_sabin_is_proved_for_valences_3_to_50_with_one_half_enclosed() {
         let what = format!("doo-sabin n = {n}");
         assert_proved(&c, &what);
         assert!(lambda1(&c).contains(0.5), "{what}: λ1 ∈ {:?}", lambda1(&c));
+        // the ring-0 weights (3 + 2cos(2πj/n))/(4n) are rational exactly when cos(2π/n) is
+        assert_eq!(c.conditional, !matches!(n, 3 | 4 | 6), "{what}");
     }
 }
 
