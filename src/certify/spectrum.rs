@@ -179,17 +179,26 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
             (0..labels.len()).collect()
         }
     };
-    let rows: IntervalRows = match assemble_rows::<Interval>(scheme, &analysis.discovered, s.neighbourhood, &which) {
-        Ok(r) => r,
-        Err(AssembleError::Inexact) => {
-            return Ok(not_proved(
-                "numerical only: a weight has no enclosure (a parameter or scheme-file expression known only in \
+    let rows: IntervalRows =
+        match assemble_rows::<Interval>(scheme, &analysis.discovered, s.neighbourhood, &which) {
+            Ok(r) => r,
+            Err(AssembleError::Inexact) => {
+                return Ok(not_proved(
+                    "numerical only: a weight has no enclosure (a parameter or scheme-file expression known only in \
                  floating point; give it as a fraction, or as rationals and cosines of rational multiples of π)"
+                        .into(),
+                ))
+            }
+            // a weight enclosing 0 on a point outside the neighbourhood (the
+            // true weight is 0 when the float path finds the set invariant, but
+            // its enclosure cannot show it)
+            Err(AssembleError::NotInvariant) => return Ok(not_proved(
+                "the invariance of the neighbourhood is not proved: a weight on a point outside it is enclosed by an \
+                 interval that holds 0 but is not 0"
                     .into(),
-            ))
-        }
-        Err(e) => return Err(Error::Numeric(format!("the interval rows of S could not be assembled: {e:?}"))),
-    };
+            )),
+            Err(e) => return Err(Error::Numeric(format!("the interval rows of S could not be assembled: {e:?}"))),
+        };
     // the same rows exactly where they are rational, one by one (the centre's
     // row may hold cos(2π/n) while the others are rational)
     let exact: ExactRows = which
@@ -253,8 +262,15 @@ fn rotation_premise(
 ) -> Result<Check, Error> {
     let s = &analysis.spectrum;
     let everyone: Vec<usize> = (0..s.labels.len()).collect();
-    let all = assemble_rows::<Interval>(scheme, &analysis.discovered, s.neighbourhood, &everyone)
-        .map_err(|e| Error::Numeric(format!("the interval rows of S could not be assembled: {e:?}")))?;
+    let all = match assemble_rows::<Interval>(scheme, &analysis.discovered, s.neighbourhood, &everyone) {
+        Ok(rows) => rows,
+        Err(AssembleError::NotInvariant) => {
+            return Ok(Check::Fails(
+                "a row's enclosure reaches outside the neighbourhood (a weight enclosing 0)".into(),
+            ))
+        }
+        Err(e) => return Err(Error::Numeric(format!("the interval rows of S could not be assembled: {e:?}"))),
+    };
     let off_centre: Vec<usize> = everyone.iter().copied().filter(|&k| !orbits.fixed[orbits.member[k].0]).collect();
     let mut exact: ExactRows = vec![None; everyone.len()];
     if let Ok(rows) = assemble_rows::<Rational>(scheme, &analysis.discovered, s.neighbourhood, &off_centre) {
