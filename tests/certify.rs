@@ -185,3 +185,22 @@ fn certify_refuses_lattice_and_curve_schemes_in_one_line() {
         assert!(err.contains("--certify covers mesh schemes only"), "{err}");
     }
 }
+
+#[test]
+fn the_chiral_loop_variant_is_disproved_and_its_mirror_premise_fails() {
+    // by design block 1 carries 1/2 + i/8 at valence 4 (schemes/loop-chiral-edge.toml)
+    let c = file("schemes/loop-chiral-edge.toml", 4);
+    match &c.verdict {
+        Verdict::Disproved(why) => assert!(why.contains("not real"), "{why}"),
+        v => panic!("{v:?}"),
+    }
+    let w = c.witness.as_ref().unwrap();
+    assert_eq!(w.block, 1);
+    assert!(w.component.may_hold(faer::c64::new(0.5, 0.125)));
+    assert!(!w.component.meets_real_axis());
+    // the negative control of the mirror check: this S has no mirror symmetry
+    let p = c.premises.as_ref().unwrap();
+    assert!(matches!(p.mirror_symmetry, Check::Fails(_)), "{:?}", p.mirror_symmetry);
+    assert_eq!(p.rotation_symmetry, Check::Exact);
+    assert_eq!(p.row_sums_one, Check::Exact);
+}

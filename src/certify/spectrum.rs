@@ -411,16 +411,6 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
     };
     let (lo1, hi1) = c1.real_range();
     let real_enclosure = RealEnclosure { lo: lo1.max(lambda1_mod.0), hi: hi1.min(lambda1_mod.1) };
-    if !premises.mirror_symmetry.holds() {
-        return finish(
-            Verdict::NotProved(format!(
-                "realness of λ1 is an equality that needs the mirror symmetry of S: {:?}",
-                premises.mirror_symmetry
-            )),
-            margins,
-            None,
-        );
-    }
     if !c1.meets_real_axis() {
         let verdict = if gap > 0.0 {
             Verdict::Disproved(format!(
@@ -434,6 +424,16 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
             )
         };
         return finish(verdict, margins, Some(Witness { block: 1, component: c1.clone() }));
+    }
+    if !premises.mirror_symmetry.holds() {
+        return finish(
+            Verdict::NotProved(format!(
+                "realness of λ1 is an equality that needs the mirror symmetry of S: {:?}",
+                premises.mirror_symmetry
+            )),
+            margins,
+            None,
+        );
     }
     if !self_conjugate(1, c1) {
         return finish(
