@@ -18,7 +18,8 @@
 //! 6. analyses on top of a spectrum: [`charmap`] (characteristic maps), and
 //!    the other domains, [`lattice`] (Z² masks) and [`curves`] (Z masks);
 //!    on top of the characteristic map, [`curvature`] (second order: the
-//!    curvature class, F(μ), Reif's C² test);
+//!    curvature class, F(μ), Reif's C² test); [`certify`] (rigorous
+//!    eigenvalue enclosures and the certified spectral verdict);
 //! 7. the scheme catalogue, [`schemes`]: one file per built-in scheme and the
 //!    scheme-file loader; nothing below imports it;
 //! 8. [`claims`] (paper statements as data) and [`sweep`];
@@ -51,6 +52,8 @@ pub mod curves;
 pub mod curvature;
 // regular-lattice schemes with explicit (i, j) coordinates (Khan–Mustafa)
 pub mod lattice;
+// certified verdicts: interval enclosures of the spectrum
+pub mod certify;
 
 pub mod schemes;
 

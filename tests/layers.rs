@@ -33,6 +33,8 @@ const LAYERS: &[(&str, u32)] = &[
     ("curves", 10),
     // second-order analysis: on top of the characteristic map
     ("curvature", 11),
+    // certified verdicts: interval enclosures on top of the spectrum's driver
+    ("certify", 11),
     // the scheme catalogue: nothing below may import it
     ("schemes", 12),
     ("claims", 13),

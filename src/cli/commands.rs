@@ -44,7 +44,7 @@ fn dispatch_other(cmd: Command) -> Result<(), Error> {
         Command::Charmap(a) => super::charmap_commands::charmap(&a),
         Command::Curvature(a) => super::curvature::run(&a),
         Command::Plot { what } => super::charmap_commands::plot(&what),
-        Command::Spectrum(a) => {
+        Command::Spectrum { common: a, certify: false } => {
             let (_, analysis) = run_analysis(&a)?;
             if a.json {
                 print_json(&analysis.spectrum)
@@ -52,6 +52,7 @@ fn dispatch_other(cmd: Command) -> Result<(), Error> {
                 out_text(&spectrum_table(&analysis.spectrum))
             }
         }
+        Command::Spectrum { common: a, certify: true } => certified_spectrum(&a),
         Command::Stencils(a) => {
             let (_, analysis) = run_analysis(&a)?;
             let st = stencils(&analysis.spectrum)?;
@@ -163,6 +164,73 @@ fn run_analysis(a: &AnalysisArgs) -> Result<(Box<dyn Scheme>, Analysis), Error> 
     let opts = Options { neighbourhood, method, exact: !a.no_exact };
     let analysis = analyse(scheme.as_ref(), &config, &opts)?;
     Ok((scheme, analysis))
+}
+
+/// `spectrum --certify`: the floating-point spectrum and, beside it, the
+/// certificate (`certify::spectrum`) from the same discovery and labels.
+fn certified_spectrum(a: &AnalysisArgs) -> Result<(), Error> {
+    let (scheme, analysis) = run_analysis(a)?;
+    let config = &analysis.discovered.config;
+    let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { config.valence() };
+    let certificate = crate::certify::certify_spectrum(scheme.as_ref(), &analysis, period)?;
+    if a.json {
+        #[derive(serde::Serialize)]
+        struct Certified<'a> {
+            #[serde(flatten)]
+            spectrum: &'a Spectrum,
+            certificate: &'a crate::certify::SpectrumCertificate,
+        }
+        print_json(&Certified { spectrum: &analysis.spectrum, certificate: &certificate })
+    } else {
+        out_text(&format!("{}\n{}", spectrum_table(&analysis.spectrum), certificate_table(&certificate)))
+    }
+}
+
+/// The certificate as text: the verdict, the premises and the margins.
+pub(super) fn certificate_table(c: &crate::certify::SpectrumCertificate) -> String {
+    use crate::certify::matrix::Check;
+    let mut out = format!(
+        "certified spectral C1 conditions: {}{}\n",
+        c.verdict.display(),
+        if c.conditional { ", given the premises marked 'identity' below" } else { "" }
+    );
+    out += &format!("  statement: {}\n", c.statement);
+    if let Some(p) = &c.premises {
+        let show = |x: &Check| match x {
+            Check::Exact => "exact".to_string(),
+            Check::Overlap => "identity of the rules' formulas, confirmed to interval overlap only".to_string(),
+            Check::Fails(w) => format!("fails: {w}"),
+        };
+        out += &format!("  premise row sums = 1: {}\n", show(&p.row_sums_one));
+        out += &format!("  premise mirror symmetry: {}\n", show(&p.mirror_symmetry));
+        out += &format!("  premise rotation symmetry: {}\n", show(&p.rotation_symmetry));
+    }
+    let m = &c.margins;
+    let f = |x: Option<f64>| x.map_or("-".to_string(), |v| format!("{v:.12e}"));
+    if let Some(l) = m.lambda0 {
+        out += &format!("  λ0 ∈ [{:.15}, {:.15}]\n", l.lo, l.hi);
+    }
+    if let Some(l) = m.lambda1 {
+        out += &format!("  λ1 ∈ [{:.15}, {:.15}]\n", l.lo, l.hi);
+    }
+    out += &format!(
+        "  max |other eigenvalue| ≤ {}; gap λ1 − max|other| ≥ {}\n  largest disc radius {:.3e} (λ0, λ1: {}); widest block entry {:.3e}\n",
+        f(m.others_max_modulus),
+        f(m.gap_lower_bound),
+        m.max_radius,
+        f(m.lambda_radius),
+        m.max_entry_width
+    );
+    if let Some(w) = &c.witness {
+        out += &format!(
+            "  witness: block {}, {} eigenvalue(s) with modulus in [{:.12}, {:.12}]\n",
+            w.block,
+            w.component.count,
+            w.component.min_modulus(),
+            w.component.max_modulus()
+        );
+    }
+    out
 }
 
 fn list_schemes(files: &[std::path::PathBuf], json: bool) -> Result<(), Error> {

@@ -21,7 +21,7 @@ use crate::spectrum::stencils::stencils;
 /// (the mesh path runs, and reports unknown names and unreadable files).
 pub(super) fn dispatch(cmd: &Command) -> Option<Result<(), Error>> {
     let args = match cmd {
-        Command::Spectrum(a) | Command::Stencils(a) => a,
+        Command::Spectrum { common: a, .. } | Command::Stencils(a) => a,
         Command::Matrix { common, .. } => common,
         // only the analysis commands are routed by family here
         _ => return None,
@@ -37,10 +37,13 @@ pub(super) fn dispatch(cmd: &Command) -> Option<Result<(), Error>> {
 /// valence must be 2; the output is that of `subdlab curve`.
 fn curve(cmd: &Command, a: &AnalysisArgs) -> Result<(), Error> {
     let name = &a.scheme;
-    if !matches!(cmd, Command::Spectrum(_)) {
+    if !matches!(cmd, Command::Spectrum { .. }) {
         return Err(Error::Input(format!(
             "'{name}' is a curve scheme: use `subdlab spectrum` or `subdlab curve` (the JSON carries the matrix)"
         )));
+    }
+    if matches!(cmd, Command::Spectrum { certify: true, .. }) {
+        return Err(Error::Input(format!("--certify covers mesh schemes only; '{name}' is a curve scheme")));
     }
     if a.valence != 2 {
         return Err(Error::Input(format!(
@@ -65,7 +68,10 @@ fn run(cmd: &Command, a: &AnalysisArgs) -> Result<(), Error> {
     let (built, analysis) = prepare(a)?;
     let scheme = built.as_ref();
     match cmd {
-        Command::Spectrum(_) => {
+        Command::Spectrum { certify: true, .. } => {
+            Err(Error::Input(format!("--certify covers mesh schemes only; '{}' is a lattice scheme", a.scheme)))
+        }
+        Command::Spectrum { .. } => {
             if a.json {
                 print_json(&analysis.spectrum)
             } else {

@@ -59,7 +59,14 @@ pub enum Command {
         json: bool,
     },
     /// Spectrum of the local subdivision matrix with multiplicities and the Reif verdict
-    Spectrum(AnalysisArgs),
+    Spectrum {
+        #[command(flatten)]
+        common: AnalysisArgs,
+        /// prove the spectral C¹ conditions with interval enclosures of every
+        /// Fourier block (PROVED / DISPROVED / NOT PROVED, with the margins)
+        #[arg(long)]
+        certify: bool,
+    },
     /// Limit and tangent stencils (left eigenvectors) on labelled vertices
     Stencils(AnalysisArgs),
     /// Export the local subdivision matrix

@@ -3,7 +3,9 @@
 
 pub mod exact;
 pub mod expr;
+pub mod interval;
 pub mod recognise;
 pub mod weight;
 
+pub use interval::Interval;
 pub use weight::{Inexact, ParamValue, Rational, Weight};

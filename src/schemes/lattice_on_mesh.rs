@@ -12,7 +12,7 @@
 use super::{Caps, CentreKind, Params, Rules, Scheme, SchemeInfo};
 use crate::lattice::{LatticeScheme, LatticeWeight};
 use crate::mesh::{PolyMesh, SectorKind};
-use crate::numeric::Rational;
+use crate::numeric::{Interval, Rational};
 use crate::sdc::{Origin, RuleResult, Stencil};
 use crate::sdc::{Topology, TriangleSplit};
 
@@ -144,6 +144,15 @@ impl Rules<f64> for LatticeOnMesh {
 impl Rules<Rational> for LatticeOnMesh {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<Rational> {
         self.rule::<Rational>(mesh, origin)
+    }
+}
+
+/// Lattice masks are exact rationals or floats: enclosures exist for the
+/// rational ones only (the lattice family has no interval rules of its own).
+impl Rules<Interval> for LatticeOnMesh {
+    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<Interval> {
+        let exact = self.rule::<Rational>(mesh, origin)?;
+        Ok(exact.map(|s| Stencil { terms: s.terms.iter().map(|(v, w)| (*v, Interval::rational(w))).collect() }))
     }
 }
 

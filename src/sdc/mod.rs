@@ -20,7 +20,7 @@ pub use params::{ParamSpec, Params};
 pub use stencil::{Origin, RuleResult, Stencil};
 
 use crate::mesh::{PolyMesh, SectorKind};
-use crate::numeric::{Rational, Weight};
+use crate::numeric::{Interval, Rational, Weight};
 
 /// The rules of a scheme for one weight type.
 pub trait Rules<W: Weight> {
@@ -128,7 +128,7 @@ impl Caps {
 /// A subdivision scheme: rules for both weight types, its description, its
 /// parameter values, and the two behaviours some schemes add (a per-vertex
 /// parameter rule, different rules at the first levels of a real mesh).
-pub trait Scheme: Rules<f64> + Rules<Rational> + Send + Sync {
+pub trait Scheme: Rules<f64> + Rules<Rational> + Rules<Interval> + Send + Sync {
     fn info(&self) -> &SchemeInfo;
     fn params(&self) -> &Params;
     /// How the per-vertex parameter of a new vertex derives from the old ones
@@ -208,5 +208,12 @@ impl SchemeWeight for f64 {
 impl SchemeWeight for Rational {
     fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
         Rules::<Rational>::stencil(scheme, mesh, origin)
+    }
+}
+
+/// Enclosures of the weights, for the certified path (`certify`).
+impl SchemeWeight for Interval {
+    fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
+        Rules::<Interval>::stencil(scheme, mesh, origin)
     }
 }

@@ -1,0 +1,482 @@
+//! The certified spectral verdict: from the interval Fourier blocks of S,
+//! rigorous eigenvalue enclosures per block, and from them a proof (or a
+//! disproof, or the precise reason for neither) of the spectral part of
+//! Reif's C¹ criterion:
+//!
+//! (a) λ0 = 1 is a simple eigenvalue;
+//! (b) the subdominant eigenvalue λ1 is real and positive, one simple
+//!     eigenvalue of block 1 and one of block g − 1 (so a semisimple double
+//!     eigenvalue of S: its two eigenvectors lie in different blocks);
+//! (c) every other eigenvalue is smaller in modulus than λ1, with a proven gap.
+//!
+//! What the enclosures prove directly: the number of eigenvalues of each
+//! block in each disc component, and bounds of their moduli. Three facts are
+//! equalities, which no enclosure can prove, and come from the structure of
+//! S instead (`matrix::rotation_symmetry`, `matrix::row_sums`,
+//! `matrix::mirror_symmetry`):
+//!
+//! - the Fourier blocks are S in another basis: S commutes with the rotation
+//!   (checked on every row of S, not only the representatives' the blocks
+//!   are built from);
+//! - 1 is an eigenvalue (of block 0): every row of S sums to 1;
+//! - λ1 is real: S commutes with a reflection of the neighbourhood, so the
+//!   spectrum of every block is closed under conjugation, and a simple
+//!   eigenvalue whose disc component is its own mirror image is real.
+//!
+//! Each is checked exactly when the entries involved are rational, else to
+//! interval overlap (then it is an identity of the rules' formulas, such as
+//! (1 − nβ) + n·β = 1, that the certificate confirms to ~1e-16 but cannot
+//! prove); the verdict says which.
+
+use super::discs::{enclose, Component, Disc};
+use super::matrix::{
+    fourier_blocks, mirror_symmetry, rotation_symmetry, row_sums, whole_matrix, Check, ExactRows, IntervalRows,
+};
+use crate::dft::Orbits;
+use crate::error::Error;
+use crate::matrix::local::{assemble_rows, AssembleError};
+use crate::numeric::{Interval, Rational};
+use crate::sdc::Scheme;
+use crate::spectrum::{Analysis, Method};
+use faer::c64;
+use rayon::prelude::*;
+use serde::Serialize;
+
+/// Largest whole matrix (no rotation symmetry) enclosed: interval matrix
+/// products cost about 100 times the floating-point ones.
+pub const MAX_CERTIFIED_FULL_SIZE: usize = 400;
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case", tag = "verdict", content = "reason")]
+pub enum Verdict {
+    Proved,
+    Disproved(String),
+    NotProved(String),
+}
+
+impl Verdict {
+    pub fn word(&self) -> &'static str {
+        match self {
+            Verdict::Proved => "PROVED",
+            Verdict::Disproved(_) => "DISPROVED",
+            Verdict::NotProved(_) => "NOT PROVED",
+        }
+    }
+    pub fn display(&self) -> String {
+        match self {
+            Verdict::Proved => "PROVED".into(),
+            Verdict::Disproved(r) => format!("DISPROVED ({r})"),
+            Verdict::NotProved(r) => format!("NOT PROVED ({r})"),
+        }
+    }
+}
+
+/// The enclosure of one block's eigenvalues.
+#[derive(Clone, Debug, Serialize)]
+pub struct BlockEnclosure {
+    pub block: usize,
+    pub size: usize,
+    /// ε ≥ ‖I − RV‖∞ of the verification (null when it failed)
+    pub epsilon: Option<f64>,
+    pub components: Vec<Component>,
+    /// why there is no enclosure, when there is none
+    pub failure: Option<String>,
+}
+
+/// An enclosure of a real eigenvalue: lo ≤ λ ≤ hi.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct RealEnclosure {
+    pub lo: f64,
+    pub hi: f64,
+}
+
+/// The proof's margins.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Margins {
+    /// enclosure of λ0 (holds 1 when proved)
+    pub lambda0: Option<RealEnclosure>,
+    /// enclosure of λ1 (real when proved)
+    pub lambda1: Option<RealEnclosure>,
+    /// upper bound of the modulus of every other eigenvalue
+    pub others_max_modulus: Option<f64>,
+    /// lower bound of λ1 − max |other eigenvalue| (positive when proved)
+    pub gap_lower_bound: Option<f64>,
+    /// the largest radius of the discs of λ0 and λ1, and of any disc
+    pub lambda_radius: Option<f64>,
+    pub max_radius: f64,
+    /// the largest width of an entry of the interval blocks
+    pub max_entry_width: f64,
+}
+
+/// Structural facts used by the proof, and how each was checked.
+#[derive(Clone, Debug, Serialize)]
+pub struct Premises {
+    /// every row of S sums to 1 (1 is an eigenvalue)
+    pub row_sums_one: Check,
+    /// S commutes with a reflection (block spectra closed under conjugation)
+    pub mirror_symmetry: Check,
+    /// S commutes with the rotation (the Fourier blocks are S in another
+    /// basis: checked on every row, not only the representatives')
+    pub rotation_symmetry: Check,
+    /// both checked exactly: the proof uses no identity confirmed only to
+    /// interval overlap
+    pub exact: bool,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct SpectrumCertificate {
+    #[serde(flatten)]
+    pub verdict: Verdict,
+    /// true when a PROVED verdict uses a premise confirmed only to interval
+    /// overlap (see `premises`): proved given that identity of the formulas
+    pub conditional: bool,
+    /// what the verdict covers (one sentence)
+    pub statement: String,
+    pub premises: Option<Premises>,
+    pub margins: Margins,
+    /// the enclosure that decides a disproof: the block and its component
+    pub witness: Option<Witness>,
+    pub blocks: Vec<BlockEnclosure>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct Witness {
+    pub block: usize,
+    pub component: Component,
+}
+
+const STATEMENT: &str = "for the true local subdivision matrix S (every weight enclosed, cos(2πk/n) included): \
+     λ0 = 1 simple; λ1 real, positive, simple in block 1 and in block g−1 (semisimple, geometric multiplicity 2); \
+     every other eigenvalue of modulus below λ1";
+
+/// Certify the spectrum of an analysis that the driver made (its discovery,
+/// labels and method are reused; `period` is the configuration's rotation
+/// period in sectors).
+pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize) -> Result<SpectrumCertificate, Error> {
+    let s = &analysis.spectrum;
+    let n = s.valence;
+    let labels = &s.labels;
+    let orbits = Orbits::from_labels(labels, period, n);
+    let not_proved = |why: String| SpectrumCertificate {
+        verdict: Verdict::NotProved(why),
+        conditional: false,
+        statement: STATEMENT.into(),
+        premises: None,
+        margins: Margins::default(),
+        witness: None,
+        blocks: Vec::new(),
+    };
+    let which: Vec<usize> = match s.method {
+        Method::Dft => orbits.representative.clone(),
+        Method::Full => {
+            if labels.len() > MAX_CERTIFIED_FULL_SIZE {
+                return Ok(not_proved(format!(
+                    "the configuration has no rotation symmetry and its {} points exceed the {MAX_CERTIFIED_FULL_SIZE} \
+                     that the whole-matrix enclosure supports",
+                    labels.len()
+                )));
+            }
+            (0..labels.len()).collect()
+        }
+    };
+    let rows: IntervalRows =
+        match assemble_rows::<Interval>(scheme, &analysis.discovered, s.neighbourhood, &which) {
+            Ok(r) => r,
+            Err(AssembleError::Inexact) => {
+                return Ok(not_proved(
+                    "numerical only: a weight has no enclosure (a parameter or scheme-file expression known only in \
+                 floating point; give it as a fraction, or as rationals and cosines of rational multiples of π)"
+                        .into(),
+                ))
+            }
+            // a weight enclosing 0 on a point outside the neighbourhood (the
+            // true weight is 0 when the float path finds the set invariant, but
+            // its enclosure cannot show it)
+            Err(AssembleError::NotInvariant) => return Ok(not_proved(
+                "the invariance of the neighbourhood is not proved: a weight on a point outside it is enclosed by an \
+                 interval that holds 0 but is not 0"
+                    .into(),
+            )),
+            Err(e) => return Err(Error::Numeric(format!("the interval rows of S could not be assembled: {e:?}"))),
+        };
+    // the same rows exactly where they are rational, one by one (the centre's
+    // row may hold cos(2π/n) while the others are rational)
+    let exact: ExactRows = which
+        .iter()
+        .map(|&k| {
+            assemble_rows::<Rational>(scheme, &analysis.discovered, s.neighbourhood, &[k])
+                .ok()
+                .and_then(|mut r| r.pop())
+        })
+        .collect();
+    let row_check = row_sums(&rows, &exact, labels, &which);
+    let (blocks, mirror, rotation) = match s.method {
+        Method::Dft => {
+            let mirror = mirror_symmetry(&rows, &exact, &orbits, labels, n);
+            let rotation = rotation_premise(scheme, analysis, &orbits, &exact)?;
+            (fourier_blocks(&rows, &orbits), mirror, rotation)
+        }
+        Method::Full => (
+            vec![(0, whole_matrix(&rows))],
+            Check::Fails("no rotation symmetry: the subdominant pair is not split by Fourier blocks".into()),
+            Check::Exact,
+        ),
+    };
+    let max_entry_width = blocks.iter().map(|(_, b)| b.max_width()).fold(0.0, f64::max);
+    let enclosures: Vec<BlockEnclosure> = blocks
+        .par_iter()
+        .map(|(m, b)| match enclose(b) {
+            Ok(e) => BlockEnclosure {
+                block: *m,
+                size: b.size,
+                epsilon: Some(e.epsilon),
+                components: e.components,
+                failure: None,
+            },
+            Err(why) => {
+                BlockEnclosure { block: *m, size: b.size, epsilon: None, components: Vec::new(), failure: Some(why) }
+            }
+        })
+        .collect();
+    if !rotation.holds() {
+        return Ok(not_proved(format!("the Fourier blocks need S to commute with the rotation: {rotation:?}")));
+    }
+    let exact = row_check == Check::Exact && mirror == Check::Exact && rotation == Check::Exact;
+    let premises = Premises { row_sums_one: row_check, mirror_symmetry: mirror, rotation_symmetry: rotation, exact };
+    let mut cert = decide(&enclosures, &premises, orbits.group_order, s.method);
+    cert.margins.max_entry_width = max_entry_width;
+    cert.conditional = cert.verdict == Verdict::Proved && !exact;
+    cert.premises = Some(premises);
+    cert.blocks = enclosures;
+    Ok(cert)
+}
+
+/// PS = SP on every row: the interval rows of all points, and their exact
+/// rows where rational (off-centre rows in one assembly, the fixed points'
+/// from `exact`, which holds the representatives' rows in orbit order).
+fn rotation_premise(
+    scheme: &dyn Scheme,
+    analysis: &Analysis,
+    orbits: &Orbits,
+    exact_reps: &ExactRows,
+) -> Result<Check, Error> {
+    let s = &analysis.spectrum;
+    let everyone: Vec<usize> = (0..s.labels.len()).collect();
+    let all = match assemble_rows::<Interval>(scheme, &analysis.discovered, s.neighbourhood, &everyone) {
+        Ok(rows) => rows,
+        Err(AssembleError::NotInvariant) => {
+            return Ok(Check::Fails(
+                "a row's enclosure reaches outside the neighbourhood (a weight enclosing 0)".into(),
+            ))
+        }
+        Err(e) => return Err(Error::Numeric(format!("the interval rows of S could not be assembled: {e:?}"))),
+    };
+    let off_centre: Vec<usize> = everyone.iter().copied().filter(|&k| !orbits.fixed[orbits.member[k].0]).collect();
+    let mut exact: ExactRows = vec![None; everyone.len()];
+    if let Ok(rows) = assemble_rows::<Rational>(scheme, &analysis.discovered, s.neighbourhood, &off_centre) {
+        for (k, row) in off_centre.iter().zip(rows) {
+            exact[*k] = Some(row);
+        }
+    }
+    for (o, &r) in orbits.representative.iter().enumerate() {
+        if orbits.fixed[o] {
+            exact[r] = exact_reps[o].clone();
+        }
+    }
+    Ok(rotation_symmetry(&all, &exact, orbits, &s.labels))
+}
+
+/// The verdict from the block enclosures and the premises.
+fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Method) -> SpectrumCertificate {
+    let mut margins = Margins {
+        max_radius: blocks.iter().flat_map(|b| &b.components).map(Component::max_radius).fold(0.0, f64::max),
+        ..Margins::default()
+    };
+    let finish = |verdict: Verdict, margins: Margins, witness: Option<Witness>| SpectrumCertificate {
+        verdict,
+        conditional: false,
+        statement: STATEMENT.into(),
+        premises: None,
+        margins,
+        witness,
+        blocks: Vec::new(),
+    };
+    let all: Vec<(usize, &Component)> =
+        blocks.iter().flat_map(|b| b.components.iter().map(move |c| (b.block, c))).collect();
+    // an eigenvalue outside the unit disc disproves convergence, whatever else
+    if let Some((m, c)) = all.iter().find(|(_, c)| c.min_modulus() > 1.0) {
+        return finish(
+            Verdict::Disproved(format!("block {m} has an eigenvalue of modulus ≥ {:.6} > 1", c.min_modulus())),
+            margins,
+            Some(Witness { block: *m, component: (*c).clone() }),
+        );
+    }
+    if let Some(b) = blocks.iter().find(|b| b.failure.is_some()) {
+        return finish(
+            Verdict::NotProved(format!("block {}: {}", b.block, b.failure.as_deref().unwrap_or_default())),
+            margins,
+            None,
+        );
+    }
+    if !premises.row_sums_one.holds() {
+        return finish(
+            Verdict::NotProved(format!("1 is not known to be an eigenvalue: {:?}", premises.row_sums_one)),
+            margins,
+            None,
+        );
+    }
+    // (a) λ0: the one component of block 0 that may hold 1
+    let block0 = &blocks[0].components;
+    let holding_one: Vec<&Component> = block0.iter().filter(|c| c.may_hold(c64::new(1.0, 0.0))).collect();
+    let [c0] = holding_one.as_slice() else {
+        return finish(Verdict::NotProved("no single component of block 0 holds 1".into()), margins, None);
+    };
+    let (lo0, hi0) = c0.real_range();
+    margins.lambda0 = Some(RealEnclosure { lo: lo0, hi: hi0 });
+    if c0.count != 1 {
+        return finish(
+            Verdict::NotProved(format!(
+                "the enclosure of λ0 = 1 holds {} eigenvalues of block 0: simplicity is not separated",
+                c0.count
+            )),
+            margins,
+            None,
+        );
+    }
+    if method == Method::Full || g < 3 {
+        let why = if method == Method::Full {
+            "no rotation symmetry: λ1 is a double eigenvalue of one matrix, whose realness and semisimplicity \
+             enclosures cannot prove"
+        } else {
+            "the rotation group has fewer than 3 elements: blocks 1 and g − 1 coincide"
+        };
+        return finish(Verdict::NotProved(why.into()), margins, None);
+    }
+    // (b) λ1: the leading component of block 1 and of block g − 1
+    let lead = |m: usize| blocks[m].components.first();
+    let (Some(c1), Some(c1c)) = (lead(1), lead(g - 1)) else {
+        return finish(Verdict::NotProved("block 1 is empty".into()), margins, None);
+    };
+    let block1_max = c1.max_modulus().max(c1c.max_modulus());
+    let is_lambda1 = |m: usize, c: &Component| (m == 1 && std::ptr::eq(c, c1)) || (m == g - 1 && std::ptr::eq(c, c1c));
+    let is_lambda0 = |m: usize, c: &Component| m == 0 && std::ptr::eq(c, *c0);
+    // a component elsewhere proven larger than anything in block 1: the
+    // subdominant eigenvalues are not the pair from blocks 1 and g − 1
+    let others: Vec<(usize, &Component)> =
+        all.iter().copied().filter(|(m, c)| !is_lambda0(*m, c) && !is_lambda1(*m, c)).collect();
+    if let Some((m, c)) = others
+        .iter()
+        .filter(|(m, _)| *m != 1 && *m != g - 1)
+        .max_by(|a, b| a.1.min_modulus().total_cmp(&b.1.min_modulus()))
+    {
+        if c.min_modulus() > block1_max {
+            return finish(
+                Verdict::Disproved(format!(
+                    "block {m} has {} eigenvalue(s) of modulus ≥ {:.9}, above every eigenvalue of block 1 (≤ {:.9}): \
+                     the subdominant eigenvalue is not the pair from blocks 1 and {}",
+                    c.count,
+                    c.min_modulus(),
+                    block1_max,
+                    g - 1
+                )),
+                margins,
+                Some(Witness { block: *m, component: (*c).clone() }),
+            );
+        }
+    }
+    if c1.count != 1 || c1c.count != 1 {
+        return finish(
+            Verdict::NotProved(format!(
+                "the leading enclosure of block 1 holds {} eigenvalues (block {}: {}): they are not separated",
+                c1.count,
+                g - 1,
+                c1c.count
+            )),
+            margins,
+            None,
+        );
+    }
+    let lambda1_mod = (c1.min_modulus(), c1.max_modulus());
+    margins.lambda_radius = Some(c0.max_radius().max(c1.max_radius()).max(c1c.max_radius()));
+    // (c) every other eigenvalue below λ1 in modulus
+    let rest = others.iter().map(|(_, c)| c.max_modulus()).fold(0.0, f64::max);
+    margins.others_max_modulus = Some(rest);
+    let gap = (Interval::point(lambda1_mod.0) - Interval::point(rest)).lo;
+    margins.gap_lower_bound = Some(gap);
+    // realness: a simple eigenvalue of a conjugation-closed block spectrum
+    // whose component's mirror image meets no other component is real
+    let self_conjugate = |m: usize, c: &Component| {
+        let mirror = Component { discs: c.discs.iter().map(|d| Disc { im: -d.im, ..*d }).collect(), count: c.count };
+        c.meets_real_axis() && blocks[m].components.iter().filter(|o| !std::ptr::eq(*o, c)).all(|o| o.disjoint(&mirror))
+    };
+    let (lo1, hi1) = c1.real_range();
+    let real_enclosure = RealEnclosure { lo: lo1.max(lambda1_mod.0), hi: hi1.min(lambda1_mod.1) };
+    if !c1.meets_real_axis() {
+        let verdict = if gap > 0.0 {
+            Verdict::Disproved(format!(
+                "the subdominant eigenvalue of block 1 is not real: its disc about {:.9}{:+.9}i of radius {:.2e} \
+                 misses the real axis",
+                c1.discs[0].re, c1.discs[0].im, c1.discs[0].radius
+            ))
+        } else {
+            Verdict::NotProved(
+                "the leading eigenvalue of block 1 is not real, and not separated from the others".into(),
+            )
+        };
+        return finish(verdict, margins, Some(Witness { block: 1, component: c1.clone() }));
+    }
+    if !premises.mirror_symmetry.holds() {
+        return finish(
+            Verdict::NotProved(format!(
+                "realness of λ1 is an equality that needs the mirror symmetry of S: {:?}",
+                premises.mirror_symmetry
+            )),
+            margins,
+            None,
+        );
+    }
+    if !self_conjugate(1, c1) {
+        return finish(
+            Verdict::NotProved("the mirror image of λ1's enclosure meets another enclosure of block 1".into()),
+            margins,
+            None,
+        );
+    }
+    margins.lambda1 = Some(real_enclosure);
+    if real_enclosure.hi < 0.0 {
+        return finish(
+            Verdict::Disproved(format!("λ1 is negative: λ1 ≤ {:.9}", real_enclosure.hi)),
+            margins,
+            Some(Witness { block: 1, component: c1.clone() }),
+        );
+    }
+    if real_enclosure.lo <= 0.0 {
+        return finish(Verdict::NotProved("λ1's enclosure holds 0: its sign is not decided".into()), margins, None);
+    }
+    if !(real_enclosure.hi < lo0) {
+        return finish(Verdict::NotProved("λ1 is not separated from λ0 = 1".into()), margins, None);
+    }
+    if gap <= 0.0 {
+        // name the enclosure that reaches λ1
+        let (m, c) = others.iter().max_by(|a, b| a.1.max_modulus().total_cmp(&b.1.max_modulus())).copied().unwrap();
+        return finish(
+            Verdict::NotProved(format!(
+                "an eigenvalue enclosure of block {m} ({} eigenvalue(s), modulus in [{:.9}, {:.9}], disc radius up to \
+                 {:.3e}) reaches λ1 ≥ {:.9}: the enclosures cannot separate them ({})",
+                c.count,
+                c.min_modulus(),
+                c.max_modulus(),
+                c.max_radius(),
+                lambda1_mod.0,
+                if c.max_radius() < 1e-6 {
+                    "equal or nearly equal moduli"
+                } else {
+                    "the enclosure is wide: defective or ill-conditioned eigenvalues in that block"
+                }
+            )),
+            margins,
+            Some(Witness { block: m, component: c.clone() }),
+        );
+    }
+    finish(Verdict::Proved, margins, None)
+}

@@ -1,0 +1,206 @@
+//! Certified spectral verdicts (`spectrum --certify`, `certify::spectrum`).
+//!
+//! Expected values come from the literature and from the schemes' designs,
+//! never from program output:
+//! - Catmull–Clark: λ1 = (5 + c + cos(π/n)·√(18 + 2c))/16, c = cos(2π/n)
+//!   (the largest eigenvalue of Fourier block 1; Doo & Sabin 1978, Ball &
+//!   Storry 1988); every weight is rational, so the premises are exact;
+//! - Loop: λ1 = 3/8 + cos(2π/n)/4 (block 1 of the edge rule; Loop 1987); the
+//!   rows off the centre are rational at every valence (3/8, 1/8 and the
+//!   regular vertex's β(6) = 1/16), the centre's only at n ∈ {3, 4, 6};
+//! - Doo–Sabin: λ1 = 1/2 at every valence (Doo & Sabin 1978);
+//! - `schemes/loop-block2-dominant.toml`: by design block 2 carries 1/2 and
+//!   block 1 at most 1/4 at valence 4.
+//!
+//! The closed forms are enclosed from the C library's cos and sqrt, widened
+//! by a few ulps (a route independent of the certificate's own Taylor
+//! enclosures of cos(2πk/n)).
+
+mod common;
+use common::subdlab;
+use subdlab::certify::matrix::Check;
+use subdlab::certify::{certify_spectrum, SpectrumCertificate, Verdict};
+use subdlab::neighbourhood::Configuration;
+use subdlab::numeric::Interval;
+use subdlab::schemes::{self, Scheme};
+use subdlab::spectrum::{analyse, Options};
+
+use std::f64::consts::PI;
+
+fn certificate_of(scheme: &dyn Scheme, n: usize) -> SpectrumCertificate {
+    let config = Configuration::regular(scheme, n).unwrap();
+    let analysis = analyse(scheme, &config, &Options::default()).unwrap();
+    certify_spectrum(scheme, &analysis, config.symmetry_period()).unwrap()
+}
+
+fn builtin(name: &str, n: usize) -> SpectrumCertificate {
+    certificate_of(schemes::build(name, &[]).unwrap().as_ref(), n)
+}
+
+fn file(rel: &str, n: usize) -> SpectrumCertificate {
+    let path = format!("{}/{rel}", env!("CARGO_MANIFEST_DIR"));
+    certificate_of(schemes::resolve(&path, &[]).unwrap().as_ref(), n)
+}
+
+/// A value from the C library (cos, sqrt: within an ulp or two), widened by 4 ulps.
+fn libm(x: f64) -> Interval {
+    let (mut lo, mut hi) = (x, x);
+    for _ in 0..4 {
+        lo = lo.next_down();
+        hi = hi.next_up();
+    }
+    Interval::new(lo, hi)
+}
+
+fn lambda1(c: &SpectrumCertificate) -> Interval {
+    let l = c.margins.lambda1.expect("a proved certificate encloses λ1");
+    Interval::new(l.lo, l.hi)
+}
+
+fn assert_proved(c: &SpectrumCertificate, what: &str) {
+    assert_eq!(c.verdict, Verdict::Proved, "{what}: {:?}", c.verdict);
+    let gap = c.margins.gap_lower_bound.unwrap();
+    assert!(gap > 0.0, "{what}: gap {gap}");
+    let l0 = c.margins.lambda0.unwrap();
+    assert!(l0.lo <= 1.0 && 1.0 <= l0.hi, "{what}: λ0 enclosure misses 1");
+    assert!(lambda1(c).hi < l0.lo, "{what}: λ1 not below λ0");
+}
+
+#[test]
+fn catmull_clark_is_proved_for_valences_3_to_50_with_the_closed_form_enclosed() {
+    for n in 3..=50 {
+        let c = builtin("catmull-clark", n);
+        let what = format!("catmull-clark n = {n}");
+        assert_proved(&c, &what);
+        let cos2 = libm((2.0 * PI / n as f64).cos());
+        let cos1 = libm((PI / n as f64).cos());
+        let root = Interval::point(18.0) + Interval::point(2.0) * cos2;
+        let root = libm(root.mid()).hull(&root.sqrt());
+        let closed = (Interval::point(5.0) + cos2 + cos1 * root) / Interval::point(16.0);
+        assert!(lambda1(&c).overlaps(&closed), "{what}: λ1 ∈ {:?}, closed form {:?}", lambda1(&c), closed);
+        assert!(lambda1(&c).width() < 1e-12, "{what}: λ1 enclosure too wide");
+        // every weight is rational: both premises hold exactly
+        let p = c.premises.as_ref().unwrap();
+        assert!(p.exact && !c.conditional, "{what}: {p:?}");
+    }
+}
+
+#[test]
+fn loop_is_proved_for_valences_3_to_50_with_the_closed_form_enclosed() {
+    for n in 3..=50 {
+        let c = builtin("loop", n);
+        let what = format!("loop n = {n}");
+        assert_proved(&c, &what);
+        let closed = Interval::ratio(3, 8) + libm((2.0 * PI / n as f64).cos()) / Interval::point(4.0);
+        assert!(lambda1(&c).overlaps(&closed), "{what}: λ1 ∈ {:?}, closed form {:?}", lambda1(&c), closed);
+        let p = c.premises.as_ref().unwrap();
+        // off the centre every row is rational: the mirror symmetry is exact
+        assert_eq!(p.mirror_symmetry, Check::Exact, "{what}");
+        // the centre's row (1 − nβ, β) is rational exactly when cos(2π/n) is
+        let rational = matches!(n, 3 | 4 | 6);
+        assert_eq!(p.row_sums_one == Check::Exact, rational, "{what}: {:?}", p.row_sums_one);
+        assert_eq!(c.conditional, !rational, "{what}");
+    }
+}
+
+#[test]
+fn doo_sabin_is_proved_for_valences_3_to_50_with_one_half_enclosed() {
+    for n in 3..=50 {
+        let c = builtin("doo-sabin", n);
+        let what = format!("doo-sabin n = {n}");
+        assert_proved(&c, &what);
+        assert!(lambda1(&c).contains(0.5), "{what}: λ1 ∈ {:?}", lambda1(&c));
+        // the ring-0 weights (3 + 2cos(2πj/n))/(4n) are rational exactly when cos(2π/n) is
+        assert_eq!(c.conditional, !matches!(n, 3 | 4 | 6), "{what}");
+    }
+}
+
+#[test]
+fn the_block_2_dominant_loop_variant_is_disproved_with_its_witness() {
+    let c = file("schemes/loop-block2-dominant.toml", 4);
+    assert!(matches!(c.verdict, Verdict::Disproved(_)), "{:?}", c.verdict);
+    let w = c.witness.as_ref().expect("a disproof names its witness");
+    assert_eq!(w.block, 2);
+    // the witness encloses the designed 1/2, and beats everything in block 1 (≤ 1/4 by design)
+    assert!(w.component.may_hold(faer::c64::new(0.5, 0.0)));
+    assert!(w.component.min_modulus() > 0.25);
+    let block1 = c.blocks.iter().find(|b| b.block == 1).unwrap();
+    let block1_max = block1.components.iter().map(|k| k.max_modulus()).fold(0.0, f64::max);
+    assert!(block1_max < w.component.min_modulus());
+    assert!(block1.components.iter().any(|k| k.may_hold(faer::c64::new(0.25, 0.0))));
+}
+
+#[test]
+fn float_only_weights_are_not_proved_and_say_why() {
+    // at valence 5 the designed edge weights hold cos(2πjm/5): the file's
+    // expressions evaluate in floating point only
+    for rel in ["schemes/loop-block2-dominant.toml", "schemes/loop-fourier-edge.toml"] {
+        let c = file(rel, 5);
+        match &c.verdict {
+            Verdict::NotProved(why) => assert!(why.starts_with("numerical only"), "{rel}: {why}"),
+            v => panic!("{rel}: {v:?}"),
+        }
+    }
+}
+
+#[test]
+fn a_configuration_without_rotation_symmetry_is_not_proved_with_the_reason() {
+    let out = subdlab(&["spectrum", "four-three", "-n", "5", "--faces", "QQTTT", "--certify", "--json"]);
+    assert!(out.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let cert = &v["certificate"];
+    assert_eq!(cert["verdict"], "not_proved");
+    assert!(cert["reason"].as_str().unwrap().contains("no rotation symmetry"));
+}
+
+#[test]
+fn json_carries_the_verdict_and_margins() {
+    let out = subdlab(&["spectrum", "catmull-clark", "-n", "5", "--certify", "--json"]);
+    assert!(out.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    // the usual spectrum fields stay, the certificate comes beside them
+    assert_eq!(v["scheme"], "catmull-clark");
+    let cert = &v["certificate"];
+    assert_eq!(cert["verdict"], "proved");
+    assert_eq!(cert["conditional"], false);
+    assert_eq!(cert["premises"]["row_sums_one"]["status"], "exact");
+    let m = &cert["margins"];
+    let (lo, hi) = (m["lambda1"]["lo"].as_f64().unwrap(), m["lambda1"]["hi"].as_f64().unwrap());
+    // Catmull–Clark at n = 5: (5 + cos 72° + cos 36° √(18 + 2 cos 72°))/16 = 0.5499883545...
+    assert!(lo <= 0.549_988_354_52 && 0.549_988_354_51 <= hi);
+    assert!(m["gap_lower_bound"].as_f64().unwrap() > 0.0);
+    assert_eq!(cert["blocks"].as_array().unwrap().len(), 5);
+}
+
+#[test]
+fn certify_refuses_lattice_and_curve_schemes_in_one_line() {
+    for args in [
+        &["spectrum", "khan-mustafa", "-n", "4", "--certify"][..],
+        &["spectrum", "four-point", "-n", "2", "--certify"][..],
+    ] {
+        let out = subdlab(args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(err.trim().lines().count(), 1, "{err}");
+        assert!(err.contains("--certify covers mesh schemes only"), "{err}");
+    }
+}
+
+#[test]
+fn the_chiral_loop_variant_is_disproved_and_its_mirror_premise_fails() {
+    // by design block 1 carries 1/2 + i/8 at valence 4 (schemes/loop-chiral-edge.toml)
+    let c = file("schemes/loop-chiral-edge.toml", 4);
+    match &c.verdict {
+        Verdict::Disproved(why) => assert!(why.contains("not real"), "{why}"),
+        v => panic!("{v:?}"),
+    }
+    let w = c.witness.as_ref().unwrap();
+    assert_eq!(w.block, 1);
+    assert!(w.component.may_hold(faer::c64::new(0.5, 0.125)));
+    assert!(!w.component.meets_real_axis());
+    // the negative control of the mirror check: this S has no mirror symmetry
+    let p = c.premises.as_ref().unwrap();
+    assert!(matches!(p.mirror_symmetry, Check::Fails(_)), "{:?}", p.mirror_symmetry);
+    assert_eq!(p.rotation_symmetry, Check::Exact);
+    assert_eq!(p.row_sums_one, Check::Exact);
+}
