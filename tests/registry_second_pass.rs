@@ -392,3 +392,81 @@ fn section_6_at_alpha_four_fifths_fails_by_a_second_method_and_neighbourhood() {
         assert!(!a.spectrum.verdict.c1_spectral, "{kind:?}/{method:?}");
     }
 }
+
+// ---------------------------------------------------------------- figures 5 and 15, rule (4b), PGS's b and d
+
+#[test]
+fn figure_5_factored_steps_compose_to_the_unfactored_rules() {
+    // Compose on a lattice: bilinear refinement of a unit impulse at the coarse
+    // origin, then a 3×3 smoothing stencil on the fine grid; the fine value at
+    // a fine node is the weight of the coarse origin in that node's rule.
+    let bilinear = |x: i64, y: i64| -> Rational {
+        // the hat function of the coarse origin on the fine grid
+        let h = |t: i64| if t.abs() >= 2 { q(0, 1) } else { q(2 - t.abs(), 2) };
+        h(x) * h(y)
+    };
+    let smooth = |st: &[[Rational; 3]; 3], x: i64, y: i64| -> Rational {
+        let mut s = Rational::zero();
+        for (a, row) in st.iter().enumerate() {
+            for (b, w) in row.iter().enumerate() {
+                s += w.clone() * bilinear(x + a as i64 - 1, y + b as i64 - 1);
+            }
+        }
+        s
+    };
+    let z = q(0, 1);
+    let a4 = [[z.clone(), q(1, 4), z.clone()], [q(1, 4), z.clone(), q(1, 4)], [z.clone(), q(1, 4), z.clone()]];
+    // the weight of the coarse origin in: the new node at the origin (1a: 4/8),
+    // at the neighbour (2, 0) (1a: 1/8), in the edge point (1, 0) (1b: 6/16),
+    // in the edge point (1, 2) (1b: 1/16), in the face point (1, 1) (1/4)
+    assert_eq!(smooth(&a4, 0, 0), q(4, 8));
+    assert_eq!(smooth(&a4, 2, 0), q(1, 8));
+    assert_eq!(smooth(&a4, 2, 2), q(0, 1));
+    assert_eq!(smooth(&a4, 1, 0), q(6, 16));
+    assert_eq!(smooth(&a4, 1, 2), q(1, 16));
+    assert_eq!(smooth(&a4, 1, 1), q(1, 4));
+    // Catmull–Clark's regular vertex rule: 9/16, 3/32 (edge), 1/64 (diagonal)
+    let cc = [[q(1, 16), q(2, 16), q(1, 16)], [q(2, 16), q(4, 16), q(2, 16)], [q(1, 16), q(2, 16), q(1, 16)]];
+    assert_eq!(smooth(&cc, 0, 0), q(9, 16));
+    assert_eq!(smooth(&cc, 2, 0), q(3, 32));
+    assert_eq!(smooth(&cc, 2, 2), q(1, 64));
+    verdict("peters-shiue", "ps.fig5-factored", Verdict::Holds);
+}
+
+#[test]
+fn rule_4b_weights_sum_to_four() {
+    // Σ_j β_j = 1 + (2/n) Σ_j cos(2πj/n) = 1 (the n-th roots of unity sum to
+    // zero), so 2 + 1 + Σ β_j = 4 at every n.
+    for n in 3..=16usize {
+        let s: f64 = (0..n).map(|j| (2.0 * std::f64::consts::PI * j as f64 / n as f64).cos()).sum();
+        assert!(s.abs() < 1e-12, "n = {n}");
+    }
+    verdict("peters-shiue", "ps.rule4b-normalisation", Verdict::Holds);
+}
+
+#[test]
+fn pgs_b_and_d_rules_are_the_chaikin_tensor_product() {
+    let chaikin = [q(3, 4), q(1, 4)];
+    let printed = [[q(9, 16), q(3, 16)], [q(3, 16), q(1, 16)]];
+    for a in 0..2 {
+        for b in 0..2 {
+            assert_eq!(printed[a][b], chaikin[a].clone() * chaikin[b].clone());
+        }
+    }
+    verdict("karciauskas-peters", "pgs.rules-bd-binary", Verdict::Holds);
+}
+
+#[test]
+fn figure_15_regular_nodes_have_linear_characteristic_maps() {
+    // The part derived here: at the regular nodes among figure 15's eons
+    // (QQQQ, A_4; TTTTTT, A_3) the rules reproduce linear functions, so the
+    // lattice coordinates themselves are the subdominant pair (eigenvalue 1/2)
+    // and the characteristic map is the identity of the lattice: injective.
+    // (1a) at the origin on x: (4·0 + 1 − 1 + 0 + 0)/8 = 0 = x/2 there;
+    // (1b) on the edge (0,0)–(1,0): (6(0 + 1) + (0 + 1 + 0 + 1))/16 = 1/2 = x at (1/2, 0);
+    // (3a) at the origin: (10·0 + Σ six neighbours' x = 0)/16 = 0;
+    // (3b) on the edge (0,0)–(1,0) with apexes (1,1), (0,−1): (3(0 + 1) + 1 + 0)/8 = 1/2.
+    assert_eq!((q(6, 1) * q(1, 1) + q(2, 1)) / q(16, 1), q(1, 2));
+    assert_eq!((q(3, 1) * q(1, 1) + q(1, 1)) / q(8, 1), q(1, 2));
+    verdict("peters-shiue", "ps.fig15-charmap", Verdict::Holds);
+}
