@@ -470,3 +470,63 @@ fn figure_15_regular_nodes_have_linear_characteristic_maps() {
     assert_eq!((q(3, 1) * q(1, 1) + q(1, 1)) / q(8, 1), q(1, 2));
     verdict("peters-shiue", "ps.fig15-charmap", Verdict::Holds);
 }
+
+// ---------------------------------------------------------------- claims/COVERAGE.md
+
+#[test]
+fn coverage_lists_every_claim_and_names_no_unknown_one() {
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/claims/COVERAGE.md")).unwrap();
+    let ids: std::collections::BTreeSet<String> =
+        builtin_files().unwrap().into_iter().flat_map(|f| f.claims.into_iter().map(|c| c.id)).collect();
+    // every `code` span that looks like a claim id (letters, digits, '.', '-', with a '.')
+    let spans: std::collections::BTreeSet<String> = text
+        .split('`')
+        .skip(1)
+        .step_by(2)
+        .filter(|t| t.contains('.') && t.chars().all(|c| c.is_ascii_alphanumeric() || c == '.' || c == '-'))
+        .map(String::from)
+        .collect();
+    let builtin_names = ["fourthree.", "curve.", "strip.", "window.", "lattice.", "matrix."];
+    for id in &ids {
+        assert!(spans.contains(id), "claims/COVERAGE.md does not list {id}");
+    }
+    for s in &spans {
+        assert!(
+            ids.contains(s) || builtin_names.iter().any(|b| s.starts_with(b)),
+            "claims/COVERAGE.md names {s}, which is no claim"
+        );
+    }
+}
+
+#[test]
+fn the_new_builtins_refuse_bad_data_without_panicking() {
+    let cases = [
+        ("fourthree.step-two-bound", r#"{ faces = [], rings = 4, bound = "0" }"#),
+        ("fourthree.step-two-bound", r#"{ faces = ["QQQQQ"], rings = 40, bound = "0" }"#),
+        ("fourthree.step-two-bound", r#"{ faces = ["QQQQQ"], rings = 4, bound = "1/(" }"#),
+        ("fourthree.step-two-bound", r#"{ faces = ["TTTTT"], rings = 4, bound = "0" }"#),
+        ("fourthree.ripple-free-unique", r#"{ directions = [[2, 0]], profiles = [[1]], stated = ["0", "1/4", "0"] }"#),
+        (
+            "fourthree.ripple-free-unique",
+            r#"{ directions = [[1, 0]], profiles = [[9999999]], stated = ["0", "1/4", "0"] }"#,
+        ),
+        ("fourthree.ripple-free-unique", r#"{ directions = [[1, 0]], profiles = [[1]], stated = ["0", "1/4"] }"#),
+        ("fourthree.ripple-free-unique", r#"{ directions = [], profiles = [[1]], stated = ["0", "1/4", "0"] }"#),
+    ];
+    let mut text = String::from("paper = \"bad\"\ntitle = \"bad\"\n");
+    for (k, (name, data)) in cases.iter().enumerate() {
+        text += &format!(
+            "[[claim]]\nid = \"c{k}\"\nlocation = \"x\"\nstatement = \"x\"\ncheck = \"builtin\"\nname = \"{name}\"\ndata = {data}\n"
+        );
+    }
+    let file = subdlab::claims::parse_file("bad.toml", &text).unwrap();
+    for o in evaluate(&file) {
+        assert_eq!(o.verdict, Verdict::Inconclusive, "{}: {} / {}", o.id, o.computed, o.detail);
+    }
+    // and the readings that are not unique: the axis directions alone leave a
+    // two-parameter family (every symmetric stencil keeps axis-aligned ridges)
+    let text = "paper = \"p\"\ntitle = \"p\"\n[[claim]]\nid = \"axis\"\nlocation = \"x\"\nstatement = \"x\"\ncheck = \"builtin\"\nname = \"fourthree.ripple-free-unique\"\ndata = { directions = [[1, 0], [0, 1]], profiles = [[0, 3, 7, -2, 5]], stated = [\"0\", \"1/4\", \"0\"] }\n";
+    let o = evaluate(&subdlab::claims::parse_file("p.toml", text).unwrap()).pop().unwrap();
+    assert_eq!(o.verdict, Verdict::Refuted, "{}", o.computed);
+    assert!(o.computed.contains("2-parameter family"), "{}", o.computed);
+}
