@@ -530,3 +530,21 @@ fn the_new_builtins_refuse_bad_data_without_panicking() {
     assert_eq!(o.verdict, Verdict::Refuted, "{}", o.computed);
     assert!(o.computed.contains("2-parameter family"), "{}", o.computed);
 }
+
+#[test]
+fn the_checkerboard_is_in_the_kernel_of_the_a4_rules_and_not_of_catmull_clark() {
+    // By hand on c = (−1)^(x + y): (1a) (4c + Σ 4 neighbours (−c))/8 = 0; (1b)
+    // (6(c − c) + the four other corners, two c and two −c)/16 = 0; the face
+    // point (c − c + c − c)/4 = 0. Catmull–Clark's regular vertex rule gives
+    // (36 c − 4·6 c + 4·c)/64 = c/4 ≠ 0: its B-splines are independent.
+    let c = q(1, 1);
+    let neg = -c.clone();
+    assert!(((q(4, 1) * c.clone() + q(4, 1) * neg.clone()) / q(8, 1)).is_zero());
+    assert!(((q(6, 1) * (c.clone() + neg.clone()) + q(2, 1) * c.clone() + q(2, 1) * neg.clone()) / q(16, 1)).is_zero());
+    assert_eq!((q(36, 1) * c.clone() + q(24, 1) * neg + q(4, 1) * c.clone()) / q(64, 1), q(1, 4));
+    verdict("peters-shiue", "ps.A4-zero-sequence", Verdict::Holds);
+    let text = "paper = \"p\"\ntitle = \"p\"\n[[claim]]\nid = \"cc\"\nlocation = \"x\"\nstatement = \"x\"\ncheck = \"builtin\"\nname = \"window.checkerboard-kernel\"\ndata = { scheme = \"catmull-clark\", faces = \"QQQQ\", spokes = [[1, 0], [0, 1], [-1, 0], [0, -1]], window = [-4, 4, -4, 4] }\n";
+    let o = evaluate(&subdlab::claims::parse_file("p.toml", text).unwrap()).pop().unwrap();
+    assert_eq!(o.verdict, Verdict::Refuted, "{}", o.computed);
+    assert!(o.computed.contains("1/4 at"), "the vertex rule's c/4: {}", o.computed);
+}

@@ -26,6 +26,7 @@ pub fn run(name: &str, data: Option<&toml::Value>) -> Result4 {
         "strip.shifted-eigenvectors" => strip_shifted_eigenvectors(need(data)?),
         "strip.jsr" => strip_jsr(need(data)?),
         "window.polynomials" => window_polynomials(need(data)?),
+        "window.checkerboard-kernel" => window_checkerboard_kernel(need(data)?),
         "fourthree.lemma3.4" => fourthree_lemma_3_4(),
         "fourthree.step-two-weights" => fourthree_step_two(need(data)?),
         "fourthree.convex-hull" => fourthree_convex_hull(need(data)?),
@@ -1216,4 +1217,47 @@ fn ints_of(v: &toml::Value, what: &str) -> Result<Vec<i64>, Error> {
         .iter()
         .map(|x| int(x, what))
         .collect()
+}
+
+/// Section 3.1 of the 4-3 paper: the ±1 checkerboard coefficient sequence
+/// "generates the zero function" (the A_4 box splines are linearly
+/// dependent). One step of the node's rules on a lattice window maps the
+/// samples (−1)^(x + y) to zero exactly; then every later net is zero, and so
+/// is the limit.
+fn window_checkerboard_kernel(data: &toml::Value) -> Result4 {
+    use crate::spectrum::strip::window_matrices;
+    let (scheme, config, spokes) = lattice_node(data)?;
+    let w = small_window(data, MAX_DATA_WINDOW)?;
+    let window: Vec<[i64; 2]> = (w[2]..=w[3]).flat_map(|y| (w[0]..=w[1]).map(move |x| [x, y])).collect();
+    let s = window_matrices(scheme.as_ref(), &config, &spokes, &window, &[[0, 0]])?.pop().expect("one matrix");
+    let c: Vec<Rational> =
+        window.iter().map(|p| if (p[0] + p[1]).rem_euclid(2) == 0 { q(1, 1) } else { q(-1, 1) }).collect();
+    let image: Vec<Rational> =
+        s.iter().map(|row| row.iter().zip(&c).fold(q(0, 1), |a, (x, y)| a + x.clone() * y.clone())).collect();
+    let nonzero: Vec<String> = window
+        .iter()
+        .zip(&image)
+        .filter(|(_, v)| !v.is_zero())
+        .take(4)
+        .map(|(p, v)| format!("{v} at ({}, {})", p[0], p[1]))
+        .collect();
+    let count = image.iter().filter(|v| !v.is_zero()).count();
+    Ok((
+        verdict(count == 0),
+        "one step maps the checkerboard (−1)^(x + y) to zero (it generates the zero function)".into(),
+        if count == 0 {
+            "zero at every refined point of the window".into()
+        } else {
+            format!("{count} refined points non-zero, e.g. {}", nonzero.join(", "))
+        },
+        format!(
+            "exact, {} on the window [{}, {}] × [{}, {}] ({} points)",
+            text(data, "faces")?,
+            w[0],
+            w[1],
+            w[2],
+            w[3],
+            window.len()
+        ),
+    ))
 }
