@@ -26,10 +26,13 @@ pub fn run(name: &str, data: Option<&toml::Value>) -> Result4 {
         "strip.shifted-eigenvectors" => strip_shifted_eigenvectors(need(data)?),
         "strip.jsr" => strip_jsr(need(data)?),
         "window.polynomials" => window_polynomials(need(data)?),
+        "window.checkerboard-kernel" => window_checkerboard_kernel(need(data)?),
         "fourthree.lemma3.4" => fourthree_lemma_3_4(),
         "fourthree.step-two-weights" => fourthree_step_two(need(data)?),
         "fourthree.convex-hull" => fourthree_convex_hull(need(data)?),
         "fourthree.node-counts" => fourthree_node_counts(need(data)?),
+        "fourthree.step-two-bound" => fourthree_step_two_bound(need(data)?),
+        "fourthree.ripple-free-unique" => fourthree_ripple_free_unique(need(data)?),
         "matrix.nonnegative" => matrix_nonnegative(need(data)?),
         "curve.relation3" => curve_relation3(),
         "curve.c1-laurent" => curve_c1_laurent(need(data)?),
@@ -1001,6 +1004,252 @@ fn window_polynomials(data: &toml::Value) -> Result4 {
             if holds { "kept" } else { "not kept" },
             next.map(|d| d.to_string()).unwrap_or_else(|| format!("above {}", degree + 3))
         ),
+        format!(
+            "exact, {} on the window [{}, {}] × [{}, {}] ({} points)",
+            text(data, "faces")?,
+            w[0],
+            w[1],
+            w[2],
+            w[3],
+            window.len()
+        ),
+    ))
+}
+
+// ---------------------------------------------------------------- 4-3: second pass over the statements
+
+/// Lemma 3.8, after its proof: without rule (4a'), "the contribution of a node
+/// w_i to a node v_0 after two subdivision steps is bounded below by −1/(64n)".
+/// For every eon in `faces` (a list of face sequences): the smallest composite
+/// weight of an old quad diagonal w_i ((1, 1) in a quad sector's chart) in a
+/// new direct neighbour of the eon after the σ-blended steps 1 and 2, against
+/// `bound`, an expression in n (the valence).
+fn fourthree_step_two_bound(data: &toml::Value) -> Result4 {
+    use crate::mesh::SectorKind;
+    let list = field(data, "faces")?
+        .as_array()
+        .ok_or_else(|| Error::Claim("data.faces must be a list of face sequences".into()))?;
+    if list.is_empty() || list.len() > 16 {
+        return Err(Error::Claim("data.faces: 1 to 16 face sequences".into()));
+    }
+    let bound = crate::numeric::expr::Expr::parse(text(data, "bound")?)?;
+    let (mut holds, mut computed, mut detail) = (true, Vec::new(), Vec::new());
+    for f in list {
+        let faces = f.as_str().ok_or_else(|| Error::Claim("data.faces: strings such as \"QQQQQ\"".into()))?;
+        let mut one = data.clone();
+        if let Some(t) = one.as_table_mut() {
+            t.insert("faces".into(), toml::Value::String(faces.into()));
+        }
+        let (_, patch, fine, rows) = fourthree_patch(&one, 2)?;
+        let n = faces.len() as i64;
+        let mut env = crate::numeric::expr::Env::new();
+        env.insert("n".into(), crate::numeric::weight::ParamValue::from_ratio(n, 1));
+        let b = bound.eval(&env)?.re;
+        let (pc, fc) = match (patch.chart.as_ref(), fine.chart.as_ref()) {
+            (Some(p), Some(f)) => (p, f),
+            _ => return Err(Error::Claim("no lattice chart".into())),
+        };
+        let is_w = |u: usize| {
+            let c = pc.vertex_coords[u];
+            c.i == 1 && c.j == 1 && pc.sector_kinds[c.sector] == SectorKind::Quad
+        };
+        let mut worst = SmallestWeight::new();
+        let mut pairs = 0;
+        for (v, r) in rows.iter().enumerate() {
+            let c = fc.vertex_coords[v];
+            if c.i + c.j != 1 || c.i < 0 || c.j < 0 {
+                continue;
+            }
+            for (u, w) in r.iter().flat_map(|r| r.entries.iter()).filter(|(u, _)| is_w(*u)) {
+                pairs += 1;
+                worst.offer(*w, || format!("w = {} in v = {}", coord(&patch, *u), coord(&fine, v)));
+            }
+        }
+        if pairs == 0 {
+            return Err(Error::Claim(format!("{faces}: no quad diagonal reaches a direct neighbour of the eon")));
+        }
+        let ok = worst.value >= b - 1e-15;
+        holds &= ok;
+        computed.push(format!("{faces}: {} ({}) vs bound {}", fmt_f(worst.value), worst.at, fmt_f(b)));
+        detail.push(format!("{faces}: {pairs} (w_i, v_0) pairs"));
+    }
+    Ok((
+        verdict(holds),
+        format!("every contribution of a w_i to a v_0 after two steps is ≥ {}", text(data, "bound")?),
+        computed.join("; "),
+        format!(
+            "composite weights of the σ-blended steps 1 (regular rules) and 2 (half (4b)), composed exactly as a mesh refinement does; {}",
+            detail.join(", ")
+        ),
+    ))
+}
+
+/// Lemma 3.2: the factored step (bilinear refinement, then one symmetric 3×3
+/// smoothing stencil [γ β γ; β α β; γ β γ], α + 4β + 4γ = 1) is ripple-free
+/// in direction d when every net with zero first differences along d (a ridge
+/// r(d⊥·x) with any profile) is refined to a net that is again constant along
+/// d. Each ridge gives, for every fine node x of a window, the linear equation
+/// "smoothed(x + d) − smoothed(x) = 0" in (α, β, γ), exactly. The solution set
+/// over every direction of `directions` (with `profiles` integer ridge
+/// profiles) against the `stated` stencil [α, β, γ]: HOLDS when the stated
+/// stencil is the only solution.
+fn fourthree_ripple_free_unique(data: &toml::Value) -> Result4 {
+    let dirs = field(data, "directions")?
+        .as_array()
+        .ok_or_else(|| Error::Claim("data.directions: a list of [dx, dy]".into()))?;
+    if dirs.is_empty() || dirs.len() > 8 {
+        return Err(Error::Claim("data.directions: 1 to 8 directions".into()));
+    }
+    let profiles = field(data, "profiles")?
+        .as_array()
+        .ok_or_else(|| Error::Claim("data.profiles: a list of integer lists".into()))?;
+    if profiles.is_empty() || profiles.len() > 8 {
+        return Err(Error::Claim("data.profiles: 1 to 8 profiles".into()));
+    }
+    let stated: Vec<Rational> = field(data, "stated")?
+        .as_array()
+        .filter(|a| a.len() == 3)
+        .ok_or_else(|| Error::Claim("data.stated: [α, β, γ]".into()))?
+        .iter()
+        .map(|x| x.as_str().ok_or_else(|| Error::Claim("data.stated: strings".into())).and_then(exact))
+        .collect::<Result<_, _>>()?;
+    const R: i64 = 6; // coarse window [-R, R]², fine equations on [-2R + 4, 2R - 4]²
+    let mut eqs: Vec<[Rational; 4]> = vec![[q(1, 1), q(4, 1), q(4, 1), q(1, 1)]]; // α + 4β + 4γ = 1
+    for d in dirs {
+        let d = ints_of(d, "data.directions")?;
+        if d.len() != 2 || d.iter().any(|x| x.abs() > 1) || d == [0, 0] {
+            return Err(Error::Claim(format!("data.directions: {d:?} is not a unit lattice direction")));
+        }
+        for prof in profiles {
+            let prof = ints_of(prof, "data.profiles")?;
+            if prof.is_empty() || prof.len() > 64 || prof.iter().any(|x| x.abs() > 1_000_000) {
+                return Err(Error::Claim("data.profiles: 1 to 64 integers of modulus ≤ 10⁶".into()));
+            }
+            // the coarse ridge: constant along d, the profile across it (repeated)
+            let m = prof.len() as i64;
+            let coarse = |i: i64, j: i64| -> Rational {
+                let t = d[1] * i - d[0] * j; // constant along (d[0], d[1])
+                Rational::from_integer(prof[t.rem_euclid(m) as usize].into())
+            };
+            // bilinear refinement
+            let fine = |x: i64, y: i64| -> Rational {
+                let (i, j) = (x.div_euclid(2), y.div_euclid(2));
+                match (x.rem_euclid(2), y.rem_euclid(2)) {
+                    (0, 0) => coarse(i, j),
+                    (1, 0) => (coarse(i, j) + coarse(i + 1, j)) / q(2, 1),
+                    (0, 1) => (coarse(i, j) + coarse(i, j + 1)) / q(2, 1),
+                    _ => (coarse(i, j) + coarse(i + 1, j) + coarse(i, j + 1) + coarse(i + 1, j + 1)) / q(4, 1),
+                }
+            };
+            // smoothing as a linear form in (α, β, γ)
+            let smooth = |x: i64, y: i64| -> [Rational; 3] {
+                let e = fine(x + 1, y) + fine(x - 1, y) + fine(x, y + 1) + fine(x, y - 1);
+                let c = fine(x + 1, y + 1) + fine(x - 1, y - 1) + fine(x - 1, y + 1) + fine(x + 1, y - 1);
+                [fine(x, y), e, c]
+            };
+            for x in -2 * R + 4..=2 * R - 4 {
+                for y in -2 * R + 4..=2 * R - 4 {
+                    let (a, b) = (smooth(x + d[0], y + d[1]), smooth(x, y));
+                    eqs.push([
+                        a[0].clone() - b[0].clone(),
+                        a[1].clone() - b[1].clone(),
+                        a[2].clone() - b[2].clone(),
+                        q(0, 1),
+                    ]);
+                }
+            }
+        }
+    }
+    // reduced row echelon form of the augmented system
+    let mut rows = eqs;
+    let mut pivots = Vec::new();
+    let mut r = 0;
+    for c in 0..3 {
+        let Some(p) = (r..rows.len()).find(|&i| !rows[i][c].is_zero()) else { continue };
+        rows.swap(r, p);
+        let lead = rows[r][c].clone();
+        for k in 0..4 {
+            rows[r][k] = rows[r][k].clone() / lead.clone();
+        }
+        for i in 0..rows.len() {
+            if i != r && !rows[i][c].is_zero() {
+                let f = rows[i][c].clone();
+                for k in 0..4 {
+                    let t = f.clone() * rows[r][k].clone();
+                    rows[i][k] -= t;
+                }
+            }
+        }
+        pivots.push(c);
+        r += 1;
+    }
+    let consistent = rows[r..].iter().all(|row| row[3].is_zero());
+    let names = ["α", "β", "γ"];
+    let computed = if !consistent {
+        "no symmetric 3×3 stencil is ripple-free in these directions".to_string()
+    } else if pivots.len() == 3 {
+        format!("the only solution: α = {}, β = {}, γ = {}", rows[0][3], rows[1][3], rows[2][3])
+    } else {
+        let free: Vec<&str> = (0..3).filter(|c| !pivots.contains(c)).map(|c| names[c]).collect();
+        format!("a {}-parameter family of solutions (free: {})", 3 - pivots.len(), free.join(", "))
+    };
+    let unique_as_stated = consistent && pivots.len() == 3 && (0..3).all(|k| rows[k][3] == stated[k]);
+    Ok((
+        verdict(unique_as_stated),
+        format!(
+            "the only symmetric 3×3 smoothing stencil after bilinear refinement that is ripple-free in every listed direction is α = {}, β = {}, γ = {}",
+            stated[0], stated[1], stated[2]
+        ),
+        computed,
+        format!(
+            "exact linear system in (α, β, γ): {} directions × {} ridge profiles, one equation per fine node of [{}, {}]², plus α + 4β + 4γ = 1",
+            dirs.len(),
+            profiles.len(),
+            -2 * R + 4,
+            2 * R - 4
+        ),
+    ))
+}
+
+fn ints_of(v: &toml::Value, what: &str) -> Result<Vec<i64>, Error> {
+    v.as_array()
+        .ok_or_else(|| Error::Claim(format!("{what}: a list of integers")))?
+        .iter()
+        .map(|x| int(x, what))
+        .collect()
+}
+
+/// Section 3.1 of the 4-3 paper: the ±1 checkerboard coefficient sequence
+/// "generates the zero function" (the A_4 box splines are linearly
+/// dependent). One step of the node's rules on a lattice window maps the
+/// samples (−1)^(x + y) to zero exactly; then every later net is zero, and so
+/// is the limit.
+fn window_checkerboard_kernel(data: &toml::Value) -> Result4 {
+    use crate::spectrum::strip::window_matrices;
+    let (scheme, config, spokes) = lattice_node(data)?;
+    let w = small_window(data, MAX_DATA_WINDOW)?;
+    let window: Vec<[i64; 2]> = (w[2]..=w[3]).flat_map(|y| (w[0]..=w[1]).map(move |x| [x, y])).collect();
+    let s = window_matrices(scheme.as_ref(), &config, &spokes, &window, &[[0, 0]])?.pop().expect("one matrix");
+    let c: Vec<Rational> =
+        window.iter().map(|p| if (p[0] + p[1]).rem_euclid(2) == 0 { q(1, 1) } else { q(-1, 1) }).collect();
+    let image: Vec<Rational> =
+        s.iter().map(|row| row.iter().zip(&c).fold(q(0, 1), |a, (x, y)| a + x.clone() * y.clone())).collect();
+    let nonzero: Vec<String> = window
+        .iter()
+        .zip(&image)
+        .filter(|(_, v)| !v.is_zero())
+        .take(4)
+        .map(|(p, v)| format!("{v} at ({}, {})", p[0], p[1]))
+        .collect();
+    let count = image.iter().filter(|v| !v.is_zero()).count();
+    Ok((
+        verdict(count == 0),
+        "one step maps the checkerboard (−1)^(x + y) to zero (it generates the zero function)".into(),
+        if count == 0 {
+            "zero at every refined point of the window".into()
+        } else {
+            format!("{count} refined points non-zero, e.g. {}", nonzero.join(", "))
+        },
         format!(
             "exact, {} on the window [{}, {}] × [{}, {}] ({} points)",
             text(data, "faces")?,
