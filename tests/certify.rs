@@ -204,3 +204,35 @@ fn the_chiral_loop_variant_is_disproved_and_its_mirror_premise_fails() {
     assert_eq!(p.rotation_symmetry, Check::Exact);
     assert_eq!(p.row_sums_one, Check::Exact);
 }
+
+/// `certified = true` on a `spectral-c1` claim: the claim asks for a proof.
+/// Catmull–Clark's rows are rational (its weights need no cosine), so the
+/// premises are exact and the certificate proves Reif's conditions (its
+/// blocks' closed forms, above): HOLDS. Loop at n = 5 has weights with
+/// cos(2π/5), irrational, so its row-sum identity is confirmed only to
+/// interval overlap: no unconditional proof, INCONCLUSIVE with that reason;
+/// at n = 3, 4, 6 the cosines are rational and it HOLDS. The block-2-dominant
+/// Loop variant is disproved: a claim that it is C¹ is REFUTED, and the
+/// opposite claim (`expect = false`) HOLDS.
+#[test]
+fn claims_can_demand_a_certified_verdict() {
+    use subdlab::claims::{evaluate, parse_file, Verdict};
+    let run = |body: &str| {
+        let text = format!(
+            "paper = \"t\"\ntitle = \"t\"\n\n[[claim]]\nid = \"c\"\nlocation = \"-\"\nstatement = \"-\"\ncheck = \"spectral-c1\"\ncertified = true\n{body}"
+        );
+        evaluate(&parse_file("t.toml", &text).unwrap()).pop().unwrap()
+    };
+    let o = run("scheme = \"catmull-clark\"\nvalences = \"3..8\"");
+    assert_eq!(o.verdict, Verdict::Holds, "{}", o.detail);
+    assert!(o.computed.contains("certified PROVED"), "{}", o.computed);
+    assert_eq!(run("scheme = \"loop\"\nvalences = [3, 4, 6]").verdict, Verdict::Holds);
+    let o = run("scheme = \"loop\"\nvalences = [5]");
+    assert_eq!(o.verdict, Verdict::Inconclusive, "{}", o.detail);
+    assert!(o.detail.contains("no unconditional proof"), "{}", o.detail);
+    let wrong = format!("{}/schemes/loop-block2-dominant.toml", env!("CARGO_MANIFEST_DIR"));
+    let o = run(&format!("scheme = \"{wrong}\"\nvalences = [4]"));
+    assert_eq!(o.verdict, Verdict::Refuted, "{}", o.detail);
+    assert!(o.computed.contains("DISPROVED"), "{}", o.computed);
+    assert_eq!(run(&format!("scheme = \"{wrong}\"\nvalences = [4]\nexpect = false")).verdict, Verdict::Holds);
+}

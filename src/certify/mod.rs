@@ -21,4 +21,4 @@ pub mod discs;
 pub mod matrix;
 pub mod spectrum;
 
-pub use spectrum::{certify_spectrum, SpectrumCertificate, Verdict};
+pub use spectrum::{certify_analysis, certify_spectrum, SpectrumCertificate, Verdict};

@@ -149,6 +149,14 @@ const STATEMENT: &str = "for the true local subdivision matrix S (every weight e
      λ0 = 1 simple; λ1 real, positive, simple in block 1 and in block g−1 (semisimple, geometric multiplicity 2); \
      every other eigenvalue of modulus below λ1";
 
+/// [`certify_spectrum`] with the configuration's own rotation period (the
+/// valence when the scheme's rules are not rotation symmetric).
+pub fn certify_analysis(scheme: &dyn Scheme, analysis: &Analysis) -> Result<SpectrumCertificate, Error> {
+    let config = &analysis.discovered.config;
+    let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { config.valence() };
+    certify_spectrum(scheme, analysis, period)
+}
+
 /// Certify the spectrum of an analysis that the driver made (its discovery,
 /// labels and method are reused; `period` is the configuration's rotation
 /// period in sectors).

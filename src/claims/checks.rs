@@ -446,7 +446,33 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                 what,
             ))
         }),
-        Check::SpectralC1 { subject, expect } => over_valences(subject, |n| {
+        Check::SpectralC1 { subject, expect, certified: true } => over_valences(subject, |n| {
+            let (scheme, config) = subject_config(subject, n)?;
+            let options = crate::spectrum::Options { neighbourhood: kind_of(subject)?, method: None, exact: false };
+            let analysis = crate::spectrum::analyse(scheme.as_ref(), &config, &options)?;
+            let c = crate::certify::certify_analysis(scheme.as_ref(), &analysis)?;
+            let got = match &c.verdict {
+                crate::certify::Verdict::Proved if !c.conditional => true,
+                crate::certify::Verdict::Disproved(_) => false,
+                // a proof resting on identities checked only to interval
+                // overlap, or no proof: the claim asked for one
+                crate::certify::Verdict::Proved => {
+                    return Err(Error::Claim(format!(
+                        "n = {n}: certified PROVED only given the premises the enclosures confirm to interval overlap (not exactly): no unconditional proof"
+                    )))
+                }
+                crate::certify::Verdict::NotProved(why) => {
+                    return Err(Error::Claim(format!("n = {n}: certificate NOT PROVED ({why})")))
+                }
+            };
+            let gap = c.margins.gap_lower_bound.map(|g| format!(", gap ≥ {g:.6e}")).unwrap_or_default();
+            Ok((
+                got == *expect,
+                if *expect { "proved".into() } else { "disproved".into() },
+                format!("certified {}{gap}", c.verdict.display()),
+            ))
+        }),
+        Check::SpectralC1 { subject, expect, .. } => over_valences(subject, |n| {
             let spec = cache.spectrum(subject, n)?;
             let got = spec.verdict.c1_spectral;
             let why = spec.verdict.reasons.iter().find(|r| r.contains("not") || r.contains("defective")).cloned();

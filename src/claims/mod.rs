@@ -271,6 +271,11 @@ pub enum Check {
         subject: Subject,
         #[serde(default = "yes")]
         expect: bool,
+        /// decide by the certified spectrum (`spectrum --certify`):
+        /// PROVED (unconditionally) or DISPROVED decide, anything else is
+        /// INCONCLUSIVE with the certificate's reason
+        #[serde(default)]
+        certified: bool,
     },
     /// The second-order analysis (`subdlab curvature`): the curvature class
     /// (one name or a list of admissible names: zero, bounded, unbounded,
@@ -338,7 +343,7 @@ pub const CHECK_KEYS: &[(&str, &[&str])] = &[
     ("inequality", &["lhs", "op", "rhs"]),
     ("nonnegative-spectrum", &["expect"]),
     ("characteristic-map", &["expect", "levels", "resolution"]),
-    ("spectral-c1", &["expect"]),
+    ("spectral-c1", &["expect", "certified"]),
     ("curvature", &["class", "c2", "fourier", "levels"]),
     ("identity", &["lhs", "rhs", "vars"]),
     ("matrix-eigenvalues", &["valences", "vars", "rows", "values"]),

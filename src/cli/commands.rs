@@ -170,9 +170,7 @@ fn run_analysis(a: &AnalysisArgs) -> Result<(Box<dyn Scheme>, Analysis), Error> 
 /// certificate (`certify::spectrum`) from the same discovery and labels.
 fn certified_spectrum(a: &AnalysisArgs) -> Result<(), Error> {
     let (scheme, analysis) = run_analysis(a)?;
-    let config = &analysis.discovered.config;
-    let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { config.valence() };
-    let certificate = crate::certify::certify_spectrum(scheme.as_ref(), &analysis, period)?;
+    let certificate = crate::certify::certify_analysis(scheme.as_ref(), &analysis)?;
     if a.json {
         #[derive(serde::Serialize)]
         struct Certified<'a> {
