@@ -256,3 +256,21 @@ fn nonnegative_weights_builtin() {
     );
     assert!(o.computed.contains("-0.0625"), "{}", o.computed);
 }
+
+/// `window.box-spline`: the four-direction box spline ±e1, ±e2, e1 + e2,
+/// −e1 + e2 has 6 directions on 4 lines, at most 2 on one: degree 6 − 2 = 4
+/// and C^(6 − 2 − 2) = C² (de Boor–Höllig–Riemenschneider). A false
+/// smoothness (C³) and a false degree are refuted; Catmull–Clark's rules are
+/// not that box spline's (its vertex weight is 36/64, the A_4 mask's 8/16).
+#[test]
+fn box_spline_mask_degree_and_smoothness() {
+    let body = |scheme: &str, degree: u32, smoothness: u32| {
+        format!(
+            "check = \"builtin\"\nname = \"window.box-spline\"\ndata = {{ scheme = \"{scheme}\", faces = \"QQQQ\", spokes = [[1, 0], [0, 1], [-1, 0], [0, -1]], window = [-4, 4, -4, 4], directions = [[1, 0], [-1, 0], [0, 1], [0, -1], [1, 1], [-1, 1]], degree = {degree}, smoothness = {smoothness} }}"
+        )
+    };
+    holds(&body("four-three", 4, 2));
+    refuted(&body("four-three", 4, 3), "C^2");
+    refuted(&body("four-three", 5, 2), "degree 4");
+    refuted(&body("catmull-clark", 4, 2), "weights differ from the mask");
+}

@@ -26,6 +26,7 @@ pub fn run(name: &str, data: Option<&toml::Value>) -> Result4 {
         "strip.shifted-eigenvectors" => strip_shifted_eigenvectors(need(data)?),
         "strip.jsr" => strip_jsr(need(data)?),
         "window.polynomials" => window_polynomials(need(data)?),
+        "window.box-spline" => window_box_spline(need(data)?),
         "window.checkerboard-kernel" => window_checkerboard_kernel(need(data)?),
         "fourthree.lemma3.4" => fourthree_lemma_3_4(),
         "fourthree.step-two-weights" => fourthree_step_two(need(data)?),
@@ -1259,5 +1260,91 @@ fn window_checkerboard_kernel(data: &toml::Value) -> Result4 {
             w[3],
             window.len()
         ),
+    ))
+}
+
+/// The rules on a regular window are subdivision of the box spline with the
+/// given `directions` (chart coordinates), and that box spline has the stated
+/// `degree` and smoothness C^`smoothness`. The mask is the box spline's own:
+/// symbol 4 Π_ξ (1 + z^ξ)/2, centred (primal); row p of S (fine position p)
+/// must hold mask(p − 2q) on the coarse point q, exactly. Degree and
+/// smoothness follow from the directions alone (de Boor–Höllig–Riemenschneider,
+/// *Box Splines*, ch. I): m directions in the plane give degree m − 2, and the
+/// box spline is C^(r−2) where r is the fewest directions whose removal leaves
+/// a set that does not span the plane (all but the most populous line).
+fn window_box_spline(data: &toml::Value) -> Result4 {
+    use crate::spectrum::strip::window_matrices;
+    use std::collections::HashMap;
+    let (scheme, config, spokes) = lattice_node(data)?;
+    let w = small_window(data, MAX_DATA_WINDOW)?;
+    let directions: Vec<[i64; 2]> = field(data, "directions")?
+        .as_array()
+        .ok_or_else(|| Error::Claim("data.directions: a list of [x, y]".into()))?
+        .iter()
+        .map(|d| match ints_of(d, "data.directions")?.as_slice() {
+            [x, y] if (x.abs() <= 4 && y.abs() <= 4) && (*x, *y) != (0, 0) => Ok([*x, *y]),
+            _ => Err(Error::Claim("data.directions: non-zero [x, y] with entries in -4..4".into())),
+        })
+        .collect::<Result<_, _>>()?;
+    if !(3..=12).contains(&directions.len()) {
+        return Err(Error::Claim("data.directions: 3 to 12 directions".into()));
+    }
+    let stated_degree = int_in(data, "degree", 0, 20)?;
+    let stated_smoothness = int_in(data, "smoothness", -1, 20)?;
+    // the mask: coefficients of Π (1 + z^ξ), centred, over 2^m / 4
+    let mut poly: HashMap<[i64; 2], i64> = HashMap::from([([0, 0], 1)]);
+    for d in &directions {
+        let mut next = poly.clone();
+        for (p, c) in &poly {
+            *next.entry([p[0] + d[0], p[1] + d[1]]).or_insert(0) += c;
+        }
+        poly = next;
+    }
+    let sum = directions.iter().fold([0, 0], |a, d| [a[0] + d[0], a[1] + d[1]]);
+    if sum[0] % 2 != 0 || sum[1] % 2 != 0 {
+        return Err(Error::Claim("the directions sum to an odd vector: not a primal box spline".into()));
+    }
+    let den = (1i64 << directions.len()) / 4;
+    let mask = |p: [i64; 2]| q(*poly.get(&[p[0] + sum[0] / 2, p[1] + sum[1] / 2]).unwrap_or(&0), den);
+    let window: Vec<[i64; 2]> = (w[2]..=w[3]).flat_map(|y| (w[0]..=w[1]).map(move |x| [x, y])).collect();
+    let s = window_matrices(scheme.as_ref(), &config, &spokes, &window, &[[0, 0]])?.pop().expect("one matrix");
+    let mut differ = Vec::new();
+    for (r, p) in window.iter().enumerate() {
+        for (c, qq) in window.iter().enumerate() {
+            let want = mask([p[0] - 2 * qq[0], p[1] - 2 * qq[1]]);
+            if s[r][c] != want {
+                differ.push(format!("fine {p:?} on coarse {qq:?}: rules {}, mask {want}", s[r][c]));
+            }
+        }
+    }
+    // smoothness: directions grouped by the line they span
+    let mut lines: Vec<([i64; 2], usize)> = Vec::new();
+    for d in &directions {
+        match lines.iter_mut().find(|(l, _)| l[0] * d[1] - l[1] * d[0] == 0) {
+            Some((_, k)) => *k += 1,
+            None => lines.push((*d, 1)),
+        }
+    }
+    let most = lines.iter().map(|l| l.1).max().unwrap_or(0);
+    let (degree, smoothness) = (directions.len() as i64 - 2, (directions.len() - most) as i64 - 2);
+    let holds = differ.is_empty() && degree == stated_degree && smoothness == stated_smoothness;
+    Ok((
+        verdict(holds),
+        format!("the rules are the box spline of {directions:?}: degree {stated_degree}, C^{stated_smoothness}"),
+        format!(
+            "{}; degree {degree}, C^{smoothness} ({} directions on {} lines, at most {most} on one)",
+            if differ.is_empty() {
+                "every weight is the box-spline mask's".to_string()
+            } else {
+                format!(
+                    "{} weights differ from the mask: {}",
+                    differ.len(),
+                    differ.iter().take(3).cloned().collect::<Vec<_>>().join("; ")
+                )
+            },
+            directions.len(),
+            lines.len()
+        ),
+        format!("exact, {} on the window [{}, {}] × [{}, {}]", text(data, "faces")?, w[0], w[1], w[2], w[3]),
     ))
 }
