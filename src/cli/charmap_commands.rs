@@ -11,11 +11,13 @@ use crate::error::Error;
 use crate::io::print_json;
 use crate::neighbourhood::configuration::check_valence;
 use crate::neighbourhood::Configuration;
-use crate::plot::{self, charmap::RingFigure, spectrum::SpectrumFigure};
+use crate::plot::{self, charmap::RingFigure, spectrum::SpectrumFigure, sweep::Bound};
 use crate::schemes::{self, Scheme};
 
 /// Most valences in one spectrum plot (each is a full analysis).
 const MAX_PLOT_VALENCES: usize = 200;
+/// Most curves in one comparison figure: the colours that stay distinct in print.
+const MAX_COMPARED: usize = crate::plot::lines::COLOURS.len();
 /// Largest analysis level drawn in a figure: finer facets only blacken the
 /// picture and inflate the SVG.
 const FIGURE_LEVELS: usize = 3;
@@ -45,6 +47,9 @@ pub struct CharmapArgs {
     /// rings drawn: the ring and its copies scaled by λ1, λ1², ... (1 to 12)
     #[arg(long, default_value_t = 4)]
     pub rings: usize,
+    /// colour the rings' faces by sector (sector 0 starts on the positive x-axis)
+    #[arg(long)]
+    pub sectors: bool,
     #[command(flatten)]
     pub figure: FigureArgs,
     /// machine-readable JSON output
@@ -67,11 +72,40 @@ pub enum PlotWhat {
         /// how many distinct moduli after λ0 = 1 to draw (1 to 6)
         #[arg(long, default_value_t = 3)]
         count: usize,
+        /// a reference curve drawn dashed, an expression in n and the scheme's
+        /// --param values (as `sweep --bound`), e.g. "3/8 + cos(2 pi/n)/4"; repeatable
+        #[arg(long = "reference")]
+        references: Vec<String>,
         /// output figure (.svg, .pdf or .png)
         #[arg(short, long)]
         out: PathBuf,
         #[command(flatten)]
         figure: FigureArgs,
+    },
+    /// One quantity of the leading spectrum against valence, one curve per scheme or parameter value
+    Compare {
+        /// a curve: scheme name or file, with fixed parameters after a colon,
+        /// e.g. catmull-clark, non-box:a=1/2 or unified-sqrt3:alpha=0; repeatable (1 to 6)
+        #[arg(long = "curve", visible_alias = "scheme", required = true)]
+        curves: Vec<String>,
+        /// valence range A..B (inclusive)
+        #[arg(long, default_value = "3..16")]
+        valences: String,
+        /// lambdaK (|λK|) or lambdaJ/lambdaK, K and J from 0 to 3, moduli counted with
+        /// multiplicity as `sweep` lists them (lambda1 = lambda2 for a double subdominant pair)
+        #[arg(long, default_value = "lambda1")]
+        quantity: String,
+        /// a reference curve drawn dashed, an expression in n; repeatable
+        #[arg(long = "reference")]
+        references: Vec<String>,
+        /// output figure (.svg, .pdf or .png)
+        #[arg(short, long)]
+        out: PathBuf,
+        #[command(flatten)]
+        figure: FigureArgs,
+        /// worker threads (0, the default: one per available core)
+        #[arg(long, default_value_t = 0, hide_default_value = true, value_parser = clap::value_parser!(u16).range(0..=1024))]
+        threads: u16,
     },
 }
 
@@ -101,10 +135,15 @@ pub fn charmap(a: &CharmapArgs) -> Result<(), Error> {
     }
     if let Some(out) = &a.out {
         check_out(out)?;
-    } else if a.wedge {
+    } else if a.wedge || a.sectors || a.figure.is_set() {
         return Err(Error::Input(
-            "--wedge selects the figure; give the figure file with --out FILE.svg|pdf|png".into(),
+            "--wedge, --sectors and the style flags shape the figure; give the figure file with --out \
+             FILE.svg|pdf|png"
+                .into(),
         ));
+    }
+    if a.wedge && a.sectors {
+        return Err(Error::Input("--sectors colours the rings' sectors; the wedge is one sector".into()));
     }
     let style = a.figure.style()?;
     let scheme = build_scheme(&a.scheme, &a.params)?;
@@ -119,7 +158,7 @@ pub fn charmap(a: &CharmapArgs) -> Result<(), Error> {
         if map.ring.is_none() {
             return Err(Error::Input(format!("no figure written: {}", map.explanation)));
         }
-        plot::save(&RingFigure { map: &map, copies: a.rings, wedge: a.wedge, style }, out)?;
+        plot::save(&RingFigure { map: &map, copies: a.rings, wedge: a.wedge, sectors: a.sectors, style }, out)?;
     }
     if a.json {
         print_json(&map)
@@ -179,16 +218,35 @@ fn parse_range(s: &str) -> Result<(usize, usize), Error> {
 
 pub fn plot(what: &PlotWhat) -> Result<(), Error> {
     match what {
-        PlotWhat::Spectrum { scheme, valences, params, count, out, figure } => {
+        PlotWhat::Spectrum { scheme, valences, params, count, references, out, figure } => {
             if *count == 0 || *count > 6 {
                 return Err(Error::Input(format!("--count must be between 1 and 6, got {count}")));
             }
             let style = figure.style()?;
             check_out(out)?;
             let (a, b) = parse_range(valences)?;
+            let valences: Vec<usize> = (a..=b).collect();
+            let references = Bound::over(references, &parse_params(params)?, &valences)?;
             let s = build_scheme(scheme, params)?;
             let rows = crate::plot::spectrum::leading_moduli(s.as_ref(), a..=b)?;
-            plot::save(&SpectrumFigure { scheme: s.name().to_string(), rows, count: *count, style }, out)
+            let fig = SpectrumFigure { scheme: s.name().to_string(), rows, count: *count, references, style };
+            plot::save(&fig, out)
+        }
+        PlotWhat::Compare { curves, valences, quantity, references, out, figure, threads } => {
+            use crate::plot::compare::{compare_lines, CompareFigure, CurveSpec, Quantity};
+            if curves.len() > MAX_COMPARED {
+                return Err(Error::Input(format!("at most {MAX_COMPARED} curves per figure, got {}", curves.len())));
+            }
+            let style = figure.style()?;
+            check_out(out)?;
+            let quantity = Quantity::parse(quantity)?;
+            let specs: Vec<CurveSpec> = curves.iter().map(|c| CurveSpec::parse(c)).collect::<Result<_, _>>()?;
+            let (a, b) = parse_range(valences)?;
+            let range: Vec<usize> = (a..=b).collect();
+            let references = Bound::over(references, &[], &range)?;
+            // the sweep's own reading of the range (A..B)
+            let lines = compare_lines(&specs, &format!("{a}..{b}"), quantity, *threads as usize)?;
+            plot::save(&CompareFigure { quantity, lines, references, valences: (a, b), style }, out)
         }
     }
 }

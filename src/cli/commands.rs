@@ -452,9 +452,13 @@ fn sweep(args: &super::SweepArgs) -> Result<(), Error> {
     if !args.bounds.is_empty() && args.plot.is_none() {
         return Err(Error::Input("--bound is drawn on the figure; give --plot FILE.svg too".into()));
     }
-    if let Some(path) = &args.plot {
-        crate::plot::format_of(path)?;
+    if args.figure.is_set() && args.plot.is_none() {
+        return Err(Error::Input("the style flags shape the figure; give --plot FILE.svg|pdf|png too".into()));
     }
+    if let Some(path) = &args.plot {
+        super::charmap_commands::check_out(path)?;
+    }
+    let style = args.figure.style()?;
     if !args.charmap && (args.levels.is_some() || args.resolution.is_some()) {
         return Err(Error::Input(
             "--levels and --resolution set the characteristic-map check; give --charmap too".into(),
@@ -480,7 +484,8 @@ fn sweep(args: &super::SweepArgs) -> Result<(), Error> {
     let converging = convergent(&points);
     if let Some(path) = &args.plot {
         let name = grid.param.as_ref().map(|p| p.0.as_str());
-        let fig = crate::plot::sweep::SweepFigure::new(scheme, name, &points, grid.charmap, bounds)?;
+        let mut fig = crate::plot::sweep::SweepFigure::new(scheme, name, &points, grid.charmap, bounds)?;
+        fig.style = style;
         crate::plot::save(&fig, path)?;
     }
     if json {

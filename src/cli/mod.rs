@@ -127,39 +127,52 @@ pub enum Command {
     Charmap(charmap_commands::CharmapArgs),
     /// Second order at the centre: curvature class, L_p limit, F(μ) and shapes, Reif's C² test
     Curvature(curvature::CurvatureArgs),
-    /// Figures (SVG or PNG by the file extension)
+    /// Figures (SVG, PDF or PNG by the file extension)
     Plot {
         #[command(subcommand)]
         what: charmap_commands::PlotWhat,
     },
 }
 
-/// What a figure's reader sees besides the data (title, size, font): the
-/// style flags every figure command takes (`charmap`, `curvature`,
-/// `plot spectrum`).
+/// What a figure's reader sees besides the data (title, size, font,
+/// resolution): the style flags every figure command takes (`charmap`,
+/// `curvature`, `plot spectrum`, `plot compare`, `sweep --plot`).
 #[derive(Args, Debug, Clone, Default)]
 pub struct FigureArgs {
     /// the figure's title (an empty text: no title); default: names the scheme
     #[arg(long)]
     pub title: Option<String>,
-    /// figure width in pixels (= points in PDF), 200 to 6000
+    /// figure width in points (SVG user units, PDF points), 200 to 6000
     #[arg(long)]
     pub width: Option<u32>,
-    /// figure height in pixels (= points in PDF), 200 to 6000
+    /// figure height in points (SVG user units, PDF points), 200 to 6000
     #[arg(long)]
     pub height: Option<u32>,
-    /// base font size (tick labels) in pixels, 6 to 72; other text scales with it
+    /// base font size (tick labels) in points, 6 to 72; other text scales with it
     #[arg(long)]
     pub font_size: Option<u32>,
+    /// PNG resolution in dots per inch, 36 to 1200 (default 150): the PNG has
+    /// width × dpi / 72 pixels; SVG and PDF are vector and ignore it
+    #[arg(long)]
+    pub dpi: Option<f64>,
 }
 
 impl FigureArgs {
+    /// Whether any style flag was given (they need a figure to shape).
+    pub fn is_set(&self) -> bool {
+        self.title.is_some()
+            || self.width.is_some()
+            || self.height.is_some()
+            || self.font_size.is_some()
+            || self.dpi.is_some()
+    }
     pub fn style(&self) -> Result<crate::plot::Style, crate::error::Error> {
         crate::plot::Style {
             title: self.title.clone(),
             width: self.width,
             height: self.height,
             font_size: self.font_size,
+            dpi: self.dpi,
         }
         .checked()
     }
@@ -280,6 +293,8 @@ pub struct SweepArgs {
     /// its length is the valence
     #[arg(long)]
     pub faces: Option<String>,
+    #[command(flatten)]
+    pub figure: FigureArgs,
     /// worker threads (0, the default: one per available core)
     #[arg(long, default_value_t = 0, hide_default_value = true, value_parser = clap::value_parser!(u16).range(0..=1024))]
     pub threads: u16,

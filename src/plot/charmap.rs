@@ -1,7 +1,9 @@
 //! Characteristic-ring figures: the ring and its copies scaled by λ1, λ1², …
 //! nested around the centre, over the control net of the subdominant
 //! eigenvectors (the way papers draw characteristic rings), or the normalised
-//! wedge of one sector for large valences.
+//! wedge of one sector for large valences. With `sectors` the ring's faces
+//! are coloured by the sector [2πk/n, 2π(k+1)/n) their centroid lies in (the
+//! map is normalised so that sector 0 starts on the positive x-axis).
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -16,7 +18,39 @@ pub struct RingFigure<'a> {
     pub copies: usize,
     /// draw the normalised wedge of one sector instead of the rings
     pub wedge: bool,
+    /// colour faces by the sector they lie in (rings only: the wedge is one sector)
+    pub sectors: bool,
     pub style: Style,
+}
+
+/// Colours of the sectors, in turn around the centre.
+pub const SECTOR_COLOURS: [RGBColor; 5] = [
+    RGBColor(141, 211, 199),
+    RGBColor(255, 255, 179),
+    RGBColor(190, 186, 218),
+    RGBColor(251, 128, 114),
+    RGBColor(128, 177, 211),
+];
+
+/// The colour (index into [`SECTOR_COLOURS`]) of sector k of n: the
+/// colours in turn, and where the last sector would take the colour of
+/// sector 0, its neighbour across the positive x-axis, one of neither of its
+/// neighbours, so neighbouring sectors always differ.
+pub fn sector_colour(k: usize, n: usize) -> usize {
+    let m = SECTOR_COLOURS.len();
+    if k + 1 == n && n > m && k % m == 0 {
+        2
+    } else {
+        k % m
+    }
+}
+
+/// The sector [2πk/n, 2π(k+1)/n) of a polygon's vertex centroid.
+pub fn sector_of(poly: &[(f64, f64)], n: usize) -> usize {
+    let k = poly.len() as f64;
+    let (x, y) = poly.iter().fold((0.0, 0.0), |a, p| (a.0 + p.0 / k, a.1 + p.1 / k));
+    let turn = y.atan2(x).rem_euclid(2.0 * std::f64::consts::PI) / (2.0 * std::f64::consts::PI);
+    ((turn * n as f64).floor() as usize).min(n - 1)
 }
 
 /// Base font size of the figure (tick labels), which `Style::font_size` replaces.
@@ -31,6 +65,9 @@ const LINES: [RGBColor; 2] = [RGBColor(33, 113, 181), RGBColor(217, 72, 1)];
 impl Figure for RingFigure<'_> {
     fn size(&self) -> (u32, u32) {
         self.style.size((900, 900))
+    }
+    fn dpi(&self) -> Option<f64> {
+        self.style.dpi
     }
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Error>
     where
@@ -135,25 +172,49 @@ impl Figure for RingFigure<'_> {
         // one legend entry per colour: the ring (k even) and the copies
         // between (k odd) alternate, so copy 0 is the ring itself
         let mut labelled = [false; 2];
+        let mut sector_labelled = vec![false; SECTOR_COLOURS.len()];
         for (p, k, outline) in &polys {
-            let series =
-                chart.draw_series(std::iter::once(Polygon::new(p.clone(), FILLS[*k].filled()))).map_err(err)?;
-            if !labelled[*k] && !self.wedge {
-                labelled[*k] = true;
-                let (fill, line) = (FILLS[*k], LINES[*k]);
-                series
-                    .label(match (*k, self.copies) {
-                        (0, 0 | 1) => "characteristic ring",
-                        (0, 2) => "characteristic ring",
-                        (0, _) => "ring, copies scaled by λ₁², λ₁⁴, …",
-                        (_, 2) => "copy scaled by λ₁",
+            if self.sectors && !self.wedge {
+                let sector = sector_of(p, m.valence);
+                let colour = sector_colour(sector, m.valence);
+                let fill = SECTOR_COLOURS[colour];
+                let series = chart.draw_series(std::iter::once(Polygon::new(p.clone(), fill.filled()))).map_err(err)?;
+                // one entry per sector while each has its own colour, else
+                // one for the scheme (sector 0 names where the turn starts)
+                let entry = if m.valence <= SECTOR_COLOURS.len() {
+                    Some(format!("sector {sector}"))
+                } else if sector == 0 {
+                    Some("sector 0 (from the x-axis), then each in turn".to_string())
+                } else {
+                    None
+                };
+                if let Some(name) = entry.filter(|_| !sector_labelled[colour]) {
+                    sector_labelled[colour] = true;
+                    series.label(name).legend(move |(x, y)| {
+                        EmptyElement::at((x, y))
+                            + Rectangle::new([(0, -6), (18, 6)], fill.filled())
+                            + Rectangle::new([(0, -6), (18, 6)], BLACK.stroke_width(1))
+                    });
+                }
+            } else {
+                let series =
+                    chart.draw_series(std::iter::once(Polygon::new(p.clone(), FILLS[*k].filled()))).map_err(err)?;
+                if !labelled[*k] {
+                    labelled[*k] = true;
+                    let (fill, line) = (FILLS[*k], LINES[*k]);
+                    let name = match (self.wedge, *k, self.copies) {
+                        (true, _, _) => "sector 0 of the ring, angles stretched by n/4",
+                        (false, 0, 0..=2) => "characteristic ring",
+                        (false, 0, _) => "ring, copies scaled by λ₁², λ₁⁴, …",
+                        (false, _, 2) => "copy scaled by λ₁",
                         _ => "copies scaled by λ₁, λ₁³, …",
-                    })
-                    .legend(move |(x, y)| {
+                    };
+                    series.label(name).legend(move |(x, y)| {
                         EmptyElement::at((x, y))
                             + Rectangle::new([(0, -6), (18, 6)], fill.filled())
                             + Rectangle::new([(0, -6), (18, 6)], line.stroke_width(1))
                     });
+                }
             }
             if *outline {
                 let mut closed = p.clone();
@@ -168,6 +229,8 @@ impl Figure for RingFigure<'_> {
                 .map_err(err)?
                 .label("control net (subdominant eigenvectors)")
                 .legend(move |(x, y)| Circle::new((x + 9, y), 3, BLACK.filled()));
+        }
+        {
             chart
                 .configure_series_labels()
                 .position(SeriesLabelPosition::UpperRight)

@@ -43,6 +43,9 @@ impl Figure for CurvatureFigure<'_> {
     fn size(&self) -> (u32, u32) {
         self.style.size(self.own_size())
     }
+    fn dpi(&self) -> Option<f64> {
+        self.style.dpi
+    }
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Error>
     where
         DB::ErrorType: 'static,

@@ -1,16 +1,20 @@
 //! Figures: SVG and PDF for papers (vector, text as the embedded font's
-//! glyphs), PNG for quick looks.
+//! glyphs), PNG at a chosen resolution.
 //!
 //! Text is laid out with an embedded font (DejaVu Sans, `assets/fonts/`,
 //! licence next to it) registered with plotters' ab_glyph backend, so no
 //! system font is needed: without a registered font the PNG backend panics at
 //! the first label. PDF is the SVG converted in-process (usvg + svg2pdf) with
 //! the same font, which the PDF embeds (subset), so neither a system font nor
-//! an external converter is needed; one SVG pixel is one PDF point. Files are
-//! written atomically (temporary file in the target's directory, then rename).
+//! an external converter is needed; one SVG pixel is one PDF point. PNG is
+//! the same SVG rasterised (resvg) at `Style::dpi`, so a PNG looks like the
+//! PDF at that resolution: a figure's size is in points, and the PNG has
+//! size × dpi / 72 pixels. Files are written atomically (`io::write_atomic`).
 
 pub mod charmap;
+pub mod compare;
 pub mod curvature;
+pub mod lines;
 pub mod spectrum;
 pub mod sweep;
 
@@ -59,7 +63,12 @@ pub fn format_of(path: &Path) -> Result<Format, Error> {
 
 /// A figure that can draw itself on any plotters backend.
 pub trait Figure {
+    /// width and height in points
     fn size(&self) -> (u32, u32);
+    /// the resolution of the figure as a PNG (None: [`DEFAULT_DPI`])
+    fn dpi(&self) -> Option<f64> {
+        None
+    }
     fn draw<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> Result<(), Error>
     where
         DB::ErrorType: 'static;
@@ -86,8 +95,9 @@ pub fn render_pdf<F: Figure>(fig: &F) -> Result<Vec<u8>, Error> {
     svg_to_pdf(&render_svg(fig)?)
 }
 
-/// An SVG text (as figures render it) to a PDF document of one page.
-pub fn svg_to_pdf(svg: &str) -> Result<Vec<u8>, Error> {
+/// An SVG text (as figures render it) as usvg's tree, with the embedded font
+/// as the only font: the one reading of the SVG that PDF and PNG share.
+fn svg_tree(svg: &str) -> Result<svg2pdf::usvg::Tree, Error> {
     use svg2pdf::usvg;
     let mut options = usvg::Options { font_family: FONT_FAMILY.to_string(), ..usvg::Options::default() };
     {
@@ -97,48 +107,78 @@ pub fn svg_to_pdf(svg: &str) -> Result<Vec<u8>, Error> {
         fonts.set_serif_family(FONT_FAMILY);
         fonts.set_monospace_family(FONT_FAMILY);
     }
-    let tree = usvg::Tree::from_str(svg, &options)
-        .map_err(|e| Error::Message(format!("cannot read the figure's SVG: {e}")))?;
+    usvg::Tree::from_str(svg, &options).map_err(|e| Error::Message(format!("cannot read the figure's SVG: {e}")))
+}
+
+/// An SVG text (as figures render it) to a PDF document of one page.
+pub fn svg_to_pdf(svg: &str) -> Result<Vec<u8>, Error> {
+    let tree = svg_tree(svg)?;
     svg2pdf::to_pdf(&tree, svg2pdf::ConversionOptions::default(), svg2pdf::PageOptions::default())
         .map_err(|e| Error::Message(format!("cannot convert the figure to PDF: {e}")))
 }
 
-/// Draw `fig` into `path` (format from the extension), atomically.
-pub fn save<F: Figure>(fig: &F, path: &Path) -> Result<(), Error> {
-    let format = format_of(path)?;
-    register_font()?;
-    let size = fig.size();
-    match format {
-        Format::Svg => crate::io::write_atomic(path, render_svg(fig)?.as_bytes()),
-        Format::Pdf => crate::io::write_atomic(path, &render_pdf(fig)?),
-        Format::Png => {
-            let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-            let tmp = tempfile::Builder::new()
-                .suffix(".png")
-                .tempfile_in(dir)
-                .map_err(|e| Error::Write { path: format!("in {}", dir.display()), reason: e.to_string() })?;
-            {
-                let root = BitMapBackend::new(tmp.path(), size).into_drawing_area();
-                fig.draw(&root)?;
-                root.present().map_err(|e| Error::Write { path: path.display().to_string(), reason: e.to_string() })?;
-            }
-            // a failed rename: not the "cannot write" form, so an untyped message
-            tmp.persist(path).map_err(|e| Error::Message(format!("cannot replace {}: {}", path.display(), e.error)))?;
-            Ok(())
-        }
+/// Most pixels of a PNG (a bound on memory: four bytes each).
+pub const MAX_PNG_PIXELS: u64 = 100_000_000;
+
+/// The pixel size of a figure of `size` points at `dpi` dots per inch (a
+/// point is 1/72 inch), refused above [`MAX_PNG_PIXELS`].
+pub fn png_size(size: (u32, u32), dpi: f64) -> Result<(u32, u32), Error> {
+    let px = |pt: u32| ((pt as f64) * dpi / 72.0).round().max(1.0);
+    let (w, h) = (px(size.0), px(size.1));
+    if w * h > MAX_PNG_PIXELS as f64 {
+        return Err(Error::Input(format!(
+            "a {} × {} pt figure at {dpi} dpi is {w} × {h} pixels, above {} million; lower --dpi or the size",
+            size.0,
+            size.1,
+            MAX_PNG_PIXELS / 1_000_000
+        )));
     }
+    Ok((w as u32, h as u32))
+}
+
+/// The PNG of a figure: its SVG rasterised at `dpi` (the figure's own
+/// sizes are points), on white.
+pub fn render_png<F: Figure>(fig: &F, dpi: f64) -> Result<Vec<u8>, Error> {
+    let (w, h) = png_size(fig.size(), dpi)?;
+    let tree = svg_tree(&render_svg(fig)?)?;
+    let mut pixmap = resvg::tiny_skia::Pixmap::new(w, h)
+        .ok_or_else(|| Error::Input(format!("cannot make a {w} × {h} pixel image")))?;
+    pixmap.fill(resvg::tiny_skia::Color::WHITE);
+    let (sx, sy) = (w as f32 / tree.size().width(), h as f32 / tree.size().height());
+    resvg::render(&tree, resvg::tiny_skia::Transform::from_scale(sx, sy), &mut pixmap.as_mut());
+    pixmap.encode_png().map_err(|e| Error::Message(format!("cannot encode the PNG: {e}")))
+}
+
+/// Draw `fig` into `path` (format from the extension), atomically; a PNG
+/// at the figure's resolution.
+pub fn save<F: Figure>(fig: &F, path: &Path) -> Result<(), Error> {
+    let bytes = match format_of(path)? {
+        Format::Svg => render_svg(fig)?.into_bytes(),
+        Format::Pdf => render_pdf(fig)?,
+        Format::Png => render_png(fig, fig.dpi().unwrap_or(DEFAULT_DPI))?,
+    };
+    crate::io::write_atomic(path, &bytes)
 }
 
 /// What a user may change in a figure: its title (`None`: the figure's
-/// own; an empty text: no title), its size in pixels (one pixel is one
-/// point in PDF), and the base font size the figure's text scales with.
+/// own; an empty text: no title), its size in points (SVG user units, PDF
+/// points), the base font size the figure's text scales with (points), and
+/// the resolution of a PNG.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Style {
     pub title: Option<String>,
     pub width: Option<u32>,
     pub height: Option<u32>,
     pub font_size: Option<u32>,
+    /// dots per inch of a PNG (None: [`DEFAULT_DPI`]); SVG and PDF are vector
+    pub dpi: Option<f64>,
 }
+
+/// The PNG resolution when none is given: sharp on screen and in print drafts.
+pub const DEFAULT_DPI: f64 = 150.0;
+/// Resolutions accepted for PNG: below 36 dpi text is unreadable, above
+/// 1200 no printer resolves the difference.
+pub const DPI_RANGE: std::ops::RangeInclusive<f64> = 36.0..=1200.0;
 
 /// Sizes accepted for `Style`: a figure smaller than this has no room for
 /// its axes, a larger one is not a figure of a paper.
@@ -160,6 +200,14 @@ impl Style {
                     range.end()
                 )));
             }
+        }
+        if let Some(dpi) = self.dpi.filter(|d| !DPI_RANGE.contains(d)) {
+            // NaN is in no range, so it lands here too
+            return Err(Error::Input(format!(
+                "--dpi must be between {} and {}, got {dpi}",
+                DPI_RANGE.start(),
+                DPI_RANGE.end()
+            )));
         }
         Ok(self)
     }

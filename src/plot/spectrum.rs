@@ -4,11 +4,15 @@
 //! block's distinct moduli, so curves follow eigenvalues through crossings
 //! instead of jumping where the k-th largest changes hands (the papers plot
 //! λ against n the same way). λ0 = 1 is left out: it would squeeze the rest.
+//! Reference curves (expressions in n, e.g. a closed form a paper states)
+//! are drawn dashed over the branches.
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::{err, Figure, Style, FONT};
+use super::lines::{Line, ValenceChart};
+use super::sweep::Bound;
+use super::{Figure, Style};
 use crate::error::Error;
 
 /// A curve of the figure: Fourier block min(k, n − k) and rank (0 = largest
@@ -74,6 +78,8 @@ pub struct SpectrumFigure {
     pub rows: Vec<Row>,
     /// how many branches to draw: those reaching the largest moduli
     pub count: usize,
+    /// reference curves over the same valences, drawn dashed
+    pub references: Vec<Bound>,
     pub style: Style,
 }
 
@@ -95,73 +101,41 @@ impl SpectrumFigure {
     }
 }
 
-/// Base font size of the figure (tick labels), which `Style::font_size` replaces.
-const BASE_FONT: u32 = 17;
-
-const COLOURS: [RGBColor; 6] = [
-    RGBColor(31, 119, 180),
-    RGBColor(255, 127, 14),
-    RGBColor(44, 160, 44),
-    RGBColor(214, 39, 40),
-    RGBColor(148, 103, 189),
-    RGBColor(140, 86, 75),
-];
-
 impl Figure for SpectrumFigure {
     fn size(&self) -> (u32, u32) {
-        self.style.size((1000, 650))
+        self.style.size(super::lines::SIZE)
+    }
+    fn dpi(&self) -> Option<f64> {
+        self.style.dpi
     }
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Error>
     where
         DB::ErrorType: 'static,
     {
-        root.fill(&WHITE).map_err(err)?;
         let (n0, n1) = (
             self.rows.first().map(|r| r.0).ok_or_else(|| Error::Input("no valences to plot".into()))?,
             self.rows.last().map(|r| r.0).ok_or_else(|| Error::Input("no valences to plot".into()))?,
         );
-        let x_range = if n1 > n0 { n0 as f64 - 0.5..n1 as f64 + 0.5 } else { n0 as f64 - 1.0..n0 as f64 + 1.0 };
-        let branches = self.branches();
-        let top = branches.iter().flat_map(|b| b.1.iter().map(|p| p.1)).fold(0.0, f64::max);
-        let font = |own: u32| self.style.font(own, BASE_FONT);
-        let mut builder = ChartBuilder::on(root);
-        if let Some(title) = self.style.title(format!("{}: leading eigenvalue moduli against valence", self.scheme)) {
-            builder.caption(title, (FONT, font(26)));
+        let lines: Vec<Line> = self
+            .branches()
+            .into_iter()
+            .map(|(branch, points)| Line {
+                label: if branch == (Branch { block: 1, rank: 0 }) {
+                    "block 1 (λ1)".to_string()
+                } else {
+                    branch.name()
+                },
+                points,
+            })
+            .collect();
+        ValenceChart {
+            title: format!("{}: leading eigenvalue moduli against valence", self.scheme),
+            y_desc: "|λ|",
+            lines: &lines,
+            references: &self.references,
+            style: &self.style,
+            valences: (n0, n1),
         }
-        let mut chart = builder
-            .margin(20)
-            .x_label_area_size(font(17) * 3 + 4)
-            .y_label_area_size(font(17) * 4)
-            .build_cartesian_2d(x_range, 0.0..(1.12 * top).max(1e-3))
-            .map_err(err)?;
-        chart
-            .configure_mesh()
-            .x_desc("valence n")
-            .y_desc("|λ|")
-            .label_style((FONT, font(17)))
-            .axis_desc_style((FONT, font(20)))
-            .x_label_formatter(&|x| format!("{x:.0}"))
-            .draw()
-            .map_err(err)?;
-        for (k, (branch, pts)) in branches.into_iter().enumerate() {
-            let colour = COLOURS[k % COLOURS.len()];
-            let name =
-                if branch == (Branch { block: 1, rank: 0 }) { "block 1 (λ1)".to_string() } else { branch.name() };
-            chart
-                .draw_series(LineSeries::new(pts.clone(), colour.stroke_width(2)))
-                .map_err(err)?
-                .label(name)
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2)));
-            chart.draw_series(pts.into_iter().map(|p| Circle::new(p, 3, colour.filled()))).map_err(err)?;
-        }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::LowerRight)
-            .label_font((FONT, font(17)))
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .draw()
-            .map_err(err)?;
-        Ok(())
+        .draw(root)
     }
 }

@@ -10,7 +10,7 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::{err, Figure, FONT};
+use super::{err, Figure, Style, FONT};
 use crate::curvature::CurvatureClass;
 use crate::error::Error;
 use crate::sweep::Point;
@@ -90,7 +90,16 @@ pub struct Bound {
 impl Bound {
     /// The reference bounds `texts` (expressions in n) over the grid's valences.
     pub fn all_of(grid: &crate::sweep::Grid, texts: &[String]) -> Result<Vec<Bound>, Error> {
-        texts.iter().map(|t| Ok(Bound { label: t.clone(), values: grid.bound(t)? })).collect()
+        Self::over(texts, &grid.fixed, &grid.valences)
+    }
+    /// The reference curves `texts` (expressions in n and `params`) at `valences`.
+    pub fn over(texts: &[String], params: &[(String, String)], valences: &[usize]) -> Result<Vec<Bound>, Error> {
+        texts
+            .iter()
+            .map(|t| {
+                Ok(Bound { label: t.clone(), values: crate::sweep::expression_over_valences(t, params, valences)? })
+            })
+            .collect()
     }
 }
 
@@ -105,6 +114,7 @@ pub struct SweepFigure {
     pub bounds: Vec<Bound>,
     /// the cells are coloured by curvature class (the points carry one)
     pub curvature: bool,
+    pub style: Style,
 }
 
 impl SweepFigure {
@@ -148,6 +158,7 @@ impl SweepFigure {
             charmap,
             bounds,
             curvature,
+            style: Style::default(),
         })
     }
 
@@ -180,9 +191,15 @@ impl SweepFigure {
 const BOUND_COLOURS: [RGBColor; 4] =
     [RGBColor(0, 0, 0), RGBColor(31, 80, 200), RGBColor(160, 30, 160), RGBColor(120, 70, 20)];
 
+/// Base font size of the figure (tick labels), which `Style::font_size` replaces.
+const BASE_FONT: u32 = 17;
+
 impl Figure for SweepFigure {
     fn size(&self) -> (u32, u32) {
-        (1100, 760)
+        self.style.size((1100, 760))
+    }
+    fn dpi(&self) -> Option<f64> {
+        self.style.dpi
     }
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Error>
     where
@@ -192,8 +209,11 @@ impl Figure for SweepFigure {
         // the legend gets its own strip under the chart so it never hides cells
         let statuses = self.statuses();
         let legend_rows = statuses.len().max(self.bounds.len()) as u32;
+        let font = |own: u32| self.style.font(own, BASE_FONT);
+        let row_height = font(17) + 9;
         let (w, h_px) = self.size();
-        let (plot_area, legend_area) = root.split_vertically(h_px - 30 - 26 * legend_rows);
+        let legend_height = (30 + row_height * legend_rows).min(h_px / 2);
+        let (plot_area, legend_area) = root.split_vertically(h_px - legend_height);
         let h = self.half_step();
         let (x0, x1) = self.cells.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| (a.min(c.1), b.max(c.1)));
         let (n0, n1) = self.cells.iter().fold((usize::MAX, 0), |(a, b), c| (a.min(c.0), b.max(c.0)));
@@ -207,11 +227,14 @@ impl Figure for SweepFigure {
             None => "(no swept parameter)".to_string(),
         };
         let swept = self.param.is_some();
-        let mut chart = ChartBuilder::on(&plot_area)
-            .caption(caption, (FONT, 26))
+        let mut builder = ChartBuilder::on(&plot_area);
+        if let Some(title) = self.style.title(caption) {
+            builder.caption(title, (FONT, font(26)));
+        }
+        let mut chart = builder
             .margin(20)
-            .x_label_area_size(55)
-            .y_label_area_size(70)
+            .x_label_area_size(font(17) * 3 + 4)
+            .y_label_area_size(font(17) * 4)
             .build_cartesian_2d(x0 - h..x1 + h, n0 as f64 - 0.5..n1 as f64 + 0.5)
             .map_err(err)?;
         chart
@@ -221,8 +244,9 @@ impl Figure for SweepFigure {
             // the mesh's default (11) with a swept parameter; none without one
             .x_labels(if swept { 11 } else { 0 })
             .y_desc("valence n")
-            .label_style((FONT, 17))
-            .axis_desc_style((FONT, 20))
+            .label_style((FONT, font(17)))
+            .axis_desc_style((FONT, font(20)))
+            .x_label_formatter(&|x| super::tick_label(*x, x1 - x0))
             .y_label_formatter(&|y| format!("{y:.0}"))
             .draw()
             .map_err(err)?;
@@ -245,22 +269,25 @@ impl Figure for SweepFigure {
             chart.draw_series(std::iter::once(PathElement::new(path, colour.stroke_width(2)))).map_err(err)?;
         }
         // legend: statuses in the left column, reference bounds in the right
-        let text = TextStyle::from((FONT, 17).into_font()).color(&BLACK);
-        let row_y = |k: usize| 10 + 26 * k as i32;
+        let text = TextStyle::from((FONT, font(17)).into_font()).color(&BLACK);
+        let (row, size) = (row_height as i32, font(17) as i32);
+        let row_y = |k: usize| 10 + row * k as i32;
         for (k, status) in statuses.iter().enumerate() {
             let y = row_y(k);
-            legend_area.draw(&Rectangle::new([(90, y), (110, y + 16)], status.colour().filled())).map_err(err)?;
-            legend_area.draw(&Text::new(status.label(self.charmap), (120, y), text.clone())).map_err(err)?;
+            legend_area
+                .draw(&Rectangle::new([(90, y), (90 + size, y + size)], status.colour().filled()))
+                .map_err(err)?;
+            legend_area.draw(&Text::new(status.label(self.charmap), (100 + size, y), text.clone())).map_err(err)?;
         }
         let x_col = w as i32 / 2 + 40;
         for (k, bound) in self.bounds.iter().enumerate() {
-            let y = row_y(k) + 8;
+            let y = row_y(k) + size / 2;
             let colour = BOUND_COLOURS[k % BOUND_COLOURS.len()];
             legend_area
                 .draw(&PathElement::new(vec![(x_col, y), (x_col + 24, y)], colour.stroke_width(3)))
                 .map_err(err)?;
             legend_area
-                .draw(&Text::new(format!("bound {}", bound.label), (x_col + 32, y - 8), text.clone()))
+                .draw(&Text::new(format!("bound {}", bound.label), (x_col + 32, y - size / 2), text.clone()))
                 .map_err(err)?;
         }
         Ok(())

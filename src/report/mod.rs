@@ -157,7 +157,10 @@ fn figures(spec: &FigureSpec) -> Result<(String, Files), Error> {
     )?;
     if map.ring.is_some() {
         let name = format!("figures/{tag}-charmap-n{}.svg", spec.valence);
-        files.insert(name.clone(), svg(&RingFigure { map: &map, copies: 4, wedge: false, style: Default::default() })?);
+        files.insert(
+            name.clone(),
+            svg(&RingFigure { map: &map, copies: 4, wedge: false, sectors: false, style: Default::default() })?,
+        );
         writeln!(
             md,
             "![characteristic rings of {title} at valence {}]({name})\n\nCharacteristic rings of {title}, valence {}: {}, {} (λ1 = {}).\n",
@@ -175,7 +178,13 @@ fn figures(spec: &FigureSpec) -> Result<(String, Files), Error> {
     let name = format!("figures/{tag}-spectrum.svg");
     files.insert(
         name.clone(),
-        svg(&SpectrumFigure { scheme: title.clone(), rows, count: 3, style: Default::default() })?,
+        svg(&SpectrumFigure {
+            scheme: title.clone(),
+            rows,
+            count: 3,
+            references: Vec::new(),
+            style: Default::default(),
+        })?,
     );
     writeln!(md, "![leading eigenvalues of {title}]({name})\n\nLeading eigenvalue moduli of {title} against the valence (3..{}).\n", spec.up_to).ok();
     Ok((md, files))

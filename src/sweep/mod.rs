@@ -148,26 +148,38 @@ impl Grid {
     /// parameters, evaluated at every valence of the grid (for figures: e.g. a
     /// bound a paper states, drawn against the computed intervals).
     pub fn bound(&self, text: &str) -> Result<Vec<(usize, f64)>, Error> {
-        use crate::numeric::{expr::Expr, ParamValue};
-        let expr = Expr::parse(text).map_err(|e| Error::Input(format!("bound '{text}': {e}")))?;
-        let mut env = crate::numeric::expr::Env::new();
-        for (k, v) in &self.fixed {
-            env.insert(k.clone(), ParamValue::parse(v)?);
-        }
-        self.valences
-            .iter()
-            .map(|&n| {
-                for var in ["n", "k"] {
-                    env.insert(var.into(), ParamValue::from_ratio(n as i64, 1));
-                }
-                let z = expr.eval(&env).map_err(|e| Error::Input(format!("bound '{text}' at n = {n}: {e}")))?;
-                if !z.re.is_finite() || z.im.abs() > 1e-12 * (1.0 + z.re.abs()) {
-                    return Err(Error::Input(format!("bound '{text}' is not a finite real number at n = {n}")));
-                }
-                Ok((n, z.re))
-            })
-            .collect()
+        expression_over_valences(text, &self.fixed, &self.valences)
     }
+}
+
+/// An expression `EXPR` in the valence `n` (alias `k`) and the parameters
+/// `params`, evaluated at each of `valences`: the one reading of a reference
+/// curve (`sweep --bound`, `plot spectrum --reference`, `plot compare
+/// --reference`). Each value must be a finite real number.
+pub fn expression_over_valences(
+    text: &str,
+    params: &[(String, String)],
+    valences: &[usize],
+) -> Result<Vec<(usize, f64)>, Error> {
+    use crate::numeric::{expr::Expr, ParamValue};
+    let expr = Expr::parse(text).map_err(|e| Error::Input(format!("reference '{text}': {e}")))?;
+    let mut env = crate::numeric::expr::Env::new();
+    for (k, v) in params {
+        env.insert(k.clone(), ParamValue::parse(v)?);
+    }
+    valences
+        .iter()
+        .map(|&n| {
+            for var in ["n", "k"] {
+                env.insert(var.into(), ParamValue::from_ratio(n as i64, 1));
+            }
+            let z = expr.eval(&env).map_err(|e| Error::Input(format!("reference '{text}' at n = {n}: {e}")))?;
+            if !z.re.is_finite() || z.im.abs() > 1e-12 * (1.0 + z.re.abs()) {
+                return Err(Error::Input(format!("reference '{text}' is not a finite real number at n = {n}")));
+            }
+            Ok((n, z.re))
+        })
+        .collect()
 }
 
 /// `"a:b:step"` → the values a, a + step, ..., up to b (exact decimal text).
