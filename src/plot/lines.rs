@@ -41,9 +41,9 @@ pub const COLOURS: [RGBColor; 6] = [
     RGBColor(140, 86, 75),
 ];
 
-/// Colours of the reference curves: greys and black, so they read as
-/// references next to the coloured data.
-pub const REFERENCE_COLOURS: [RGBColor; 3] = [RGBColor(0, 0, 0), RGBColor(100, 100, 100), RGBColor(150, 150, 150)];
+/// Colours of the reference curves: greys, so they read as references next
+/// to the coloured data and apart from the black axes.
+pub const REFERENCE_COLOURS: [RGBColor; 3] = [RGBColor(50, 50, 50), RGBColor(115, 115, 115), RGBColor(165, 165, 165)];
 
 /// The default figure size in points.
 pub const SIZE: (u32, u32) = (1000, 650);
