@@ -4,6 +4,7 @@
 #
 #   scripts/notebooks.sh                                  # every notebooks/*.ipynb
 #   scripts/notebooks.sh notebooks/validate-new-weights.ipynb
+#   scripts/notebooks.sh --publish                        # also render into reports/notebooks/
 #
 # The notebooks drive the subdlab CLI: the binary is $SUBDLAB when set (the
 # test tests/notebooks.rs passes the one cargo built), else the release build,
@@ -15,6 +16,8 @@
 #                         (made once, remade when requirements.txt or python3 changes;
 #                         needs network access to PyPI that first time)
 #   notebooks-executed/   executed copies of the notebooks, with their outputs
+#   notebooks-rendered/   each executed notebook as Markdown with its figures (what
+#                         reports/notebooks/ must hold; --publish writes there instead)
 #   notebook-figures/     figures the notebooks write ($SUBDLAB_NOTEBOOK_FIGURES overrides)
 #   notebook-work/        scheme and claim files the notebooks write
 # Other settings: $PYTHON (default python3) makes the environment;
@@ -23,6 +26,11 @@ set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 python="${PYTHON:-python3}"
+
+if [ "${1:-}" = "--publish" ]; then
+  shift
+  export SUBDLAB_NOTEBOOKS_RENDERED="$repo/reports/notebooks"
+fi
 
 die() {
   echo "scripts/notebooks.sh: $*" >&2

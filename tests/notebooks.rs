@@ -4,7 +4,10 @@
 //! python3 and network access to PyPI). Then every executed copy must have run
 //! every code cell, contain no error output, and end with its summary line
 //! `notebook NAME: N checks passed` with N > 0; the committed notebooks must
-//! carry no outputs.
+//! carry no outputs. What a reader browsing the repository sees instead is
+//! `reports/notebooks/`: each notebook rendered as Markdown with its outputs
+//! and figures, which must be byte for byte what this run rendered
+//! (`scripts/notebooks.sh --publish` rewrites it).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -97,6 +100,7 @@ fn notebooks_execute_and_pass_their_checks() {
     for nb in &all {
         let _ = std::fs::remove_file(executed_dir.join(nb.file_name().unwrap()));
     }
+    let _ = std::fs::remove_dir_all(target.join("notebooks-rendered"));
 
     let start = Instant::now();
     let out = Command::new("bash")
@@ -104,6 +108,7 @@ fn notebooks_execute_and_pass_their_checks() {
         .current_dir(repo)
         .env("SUBDLAB", env!("CARGO_BIN_EXE_subdlab"))
         .env("SUBDLAB_TARGET_DIR", &target)
+        .env_remove("SUBDLAB_NOTEBOOKS_RENDERED")
         .output()
         .expect("bash runs scripts/notebooks.sh");
     let stdout = String::from_utf8_lossy(&out.stdout);
@@ -136,4 +141,41 @@ fn notebooks_execute_and_pass_their_checks() {
         });
         assert!(n > 0, "{name}: no checks ran");
     }
+
+    // the published rendering is what this run rendered
+    let rendered = target.join("notebooks-rendered");
+    let published = repo.join("reports/notebooks");
+    let (now, committed) = (tree(&rendered), tree(&published));
+    let mut stale = Vec::new();
+    for (name, bytes) in &now {
+        match committed.get(name) {
+            Some(old) if old == bytes => {}
+            Some(_) => stale.push(format!("{name} differs")),
+            None => stale.push(format!("{name} is missing")),
+        }
+    }
+    stale.extend(committed.keys().filter(|k| !now.contains_key(*k)).map(|k| format!("{k} is not rendered any more")));
+    for path in &all {
+        let name = format!("{}.md", path.file_stem().unwrap().to_string_lossy());
+        assert!(now.contains_key(&name), "{name} was not rendered");
+    }
+    assert!(stale.is_empty(), "reports/notebooks is stale (run scripts/notebooks.sh --publish): {stale:?}");
+}
+
+/// Every file under `dir` (relative path → bytes), sorted.
+fn tree(dir: &Path) -> std::collections::BTreeMap<String, Vec<u8>> {
+    let mut out = std::collections::BTreeMap::new();
+    let mut todo = vec![dir.to_path_buf()];
+    while let Some(d) = todo.pop() {
+        for e in std::fs::read_dir(&d).into_iter().flatten().flatten() {
+            let p = e.path();
+            if p.is_dir() {
+                todo.push(p);
+            } else {
+                let rel = p.strip_prefix(dir).unwrap().to_string_lossy().replace('\\', "/");
+                out.insert(rel, std::fs::read(&p).unwrap());
+            }
+        }
+    }
+    out
 }

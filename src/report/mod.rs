@@ -3,9 +3,11 @@
 //! characteristic-ring and spectrum figures (SVG), the second-order figures
 //! (central ring and limit-surface rings, once per scheme of the page, with
 //! the curvature class and its evidence), and every refuted or
-//! garbled statement with the evidence. The output is deterministic (no
-//! timestamps), so a test can regenerate it and fail when the committed
-//! reports are stale.
+//! garbled statement with the evidence. The output is deterministic except
+//! for one line of the index, the date it was generated (UTC; the date of
+//! `SOURCE_DATE_EPOCH` when that is set, the reproducible-builds convention),
+//! so a test can regenerate it and fail when the committed reports are stale
+//! (`tests/reports.rs` compares every byte but that line).
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -35,6 +37,7 @@ pub fn build() -> Result<Files, Error> {
         crate::io::SCHEMA_VERSION
     )
     .ok();
+    writeln!(index, "{GENERATED_ON}{} (UTC).\n", generation_date()?).ok();
     index += "Verdicts: **HOLDS** — the statement, as the paper states it, agrees with what subdlab computed; \
               **REFUTED** — it disagrees, and the page gives the stated and computed values (a computation that \
               contradicts a theorem is confirmed by a second, independent route, named in the evidence); \
@@ -69,6 +72,41 @@ pub fn build() -> Result<Files, Error> {
     }
     files.insert("index.md".into(), index.into_bytes());
     Ok(files)
+}
+
+/// The start of the index's one line that is not reproducible: the date.
+pub const GENERATED_ON: &str = "Generated on ";
+
+/// The date of the report: that of `SOURCE_DATE_EPOCH` (seconds since
+/// 1970-01-01 UTC) when set, else today's (UTC).
+fn generation_date() -> Result<String, Error> {
+    let seconds = match std::env::var("SOURCE_DATE_EPOCH") {
+        Ok(text) => text.trim().parse::<i64>().map_err(|_| {
+            Error::Input(format!("SOURCE_DATE_EPOCH must be whole seconds since 1970-01-01, got '{text}'"))
+        })?,
+        Err(_) => std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_err(|e| Error::Message(format!("the system clock is before 1970: {e}")))?
+            .as_secs() as i64,
+    };
+    Ok(date_of(seconds))
+}
+
+/// The UTC calendar date (YYYY-MM-DD) of `seconds` since 1970-01-01 in the
+/// proleptic Gregorian calendar (days counted in 400-year eras of 146097
+/// days, years starting on 1 March so the leap day ends a year).
+pub fn date_of(seconds: i64) -> String {
+    let days = seconds.div_euclid(86_400);
+    let z = days + 719_468; // days since 0000-03-01
+    let era = z.div_euclid(146_097);
+    let day_of_era = z.rem_euclid(146_097);
+    let year_of_era = (day_of_era - day_of_era / 1460 + day_of_era / 36_524 - day_of_era / 146_096) / 365;
+    let day_of_year = day_of_era - (365 * year_of_era + year_of_era / 4 - year_of_era / 100);
+    let month_from_march = (5 * day_of_year + 2) / 153;
+    let day = day_of_year - (153 * month_from_march + 2) / 5 + 1;
+    let month = if month_from_march < 10 { month_from_march + 3 } else { month_from_march - 9 };
+    let year = year_of_era + era * 400 + i64::from(month <= 2);
+    format!("{year:04}-{month:02}-{day:02}")
 }
 
 fn cell(s: &str) -> String {
