@@ -118,8 +118,15 @@ fn paper_page(f: &ClaimFile, outcomes: &[Outcome]) -> Result<(String, Files), Er
     let mut files = Files::new();
     if !f.figures.is_empty() {
         page += "## Figures\n\n";
+        // the spectrum plot depends on the scheme and its parameters only:
+        // drawn for the first figure of each, so no page shows it twice
+        let mut spectra: Vec<(&str, &BTreeMap<String, String>)> = Vec::new();
         for spec in &f.figures {
-            let (md, figs) = figures(spec)?;
+            let first = !spectra.contains(&(spec.scheme.as_str(), &spec.params));
+            if first {
+                spectra.push((spec.scheme.as_str(), &spec.params));
+            }
+            let (md, figs) = figures(spec, first)?;
             page += &md;
             files.extend(figs);
         }
@@ -180,8 +187,9 @@ fn paper_page(f: &ClaimFile, outcomes: &[Outcome]) -> Result<(String, Files), Er
     Ok((page, files))
 }
 
-/// The characteristic rings at the given valence and the spectrum plot.
-fn figures(spec: &FigureSpec) -> Result<(String, Files), Error> {
+/// The characteristic rings at the given valence and, with `spectrum`, the
+/// spectrum plot.
+fn figures(spec: &FigureSpec, spectrum: bool) -> Result<(String, Files), Error> {
     let params: Vec<(String, String)> = spec.params.iter().map(|(k, v)| (k.clone(), v.clone())).collect();
     let scheme = schemes::build(&spec.scheme, &params)?;
     let (tag, title) = tag_and_title(&spec.scheme, &params);
@@ -211,6 +219,9 @@ fn figures(spec: &FigureSpec) -> Result<(String, Files), Error> {
         .ok();
     } else {
         writeln!(md, "No characteristic ring for {title} at valence {}: {}.\n", spec.valence, map.explanation).ok();
+    }
+    if !spectrum {
+        return Ok((md, files));
     }
     let rows = crate::plot::spectrum::leading_moduli(scheme.as_ref(), 3..=spec.up_to)?;
     let name = format!("figures/{tag}-spectrum.svg");
