@@ -156,10 +156,13 @@ fn every_figure_command_takes_the_same_style_flags() {
     let file = dir.path().join("f.svg");
     let f = file.to_str().unwrap();
     let style = ["--title", "My figure", "--width", "720", "--height", "540", "--font-size", "12"];
-    let commands: [Vec<&str>; 3] = [
+    let commands: [Vec<&str>; 6] = [
         vec!["charmap", "loop", "-n", "7", "--out", f],
+        vec!["charmap", "loop", "-n", "7", "--wedge", "--out", f],
         vec!["plot", "spectrum", "loop", "--valences", "3..8", "--out", f],
+        vec!["plot", "compare", "--curve", "loop", "--valences", "3..8", "--out", f],
         vec!["curvature", "loop", "-n", "7", "--out", f],
+        vec!["sweep", "loop", "--valences", "3..5", "--curvature", "--plot", f],
     ];
     for args in commands {
         let args: Vec<&str> = args.into_iter().chain(style).collect();

@@ -38,7 +38,7 @@ pub const SECTOR_COLOURS: [RGBColor; 5] = [
 /// neighbours, so neighbouring sectors always differ.
 pub fn sector_colour(k: usize, n: usize) -> usize {
     let m = SECTOR_COLOURS.len();
-    if k + 1 == n && n > m && k % m == 0 {
+    if k + 1 == n && n > m && k.is_multiple_of(m) {
         2
     } else {
         k % m
