@@ -162,7 +162,7 @@ fn every_figure_command_takes_the_same_style_flags() {
         vec!["plot", "spectrum", "loop", "--valences", "3..8", "--out", f],
         vec!["plot", "compare", "--curve", "loop", "--valences", "3..8", "--out", f],
         vec!["curvature", "loop", "-n", "7", "--out", f],
-        vec!["sweep", "loop", "--valences", "3..5", "--curvature", "--plot", f],
+        vec!["sweep", "non-box", "--valences", "3..5", "--param", "a=0:1:1/4", "--plot", f],
     ];
     for args in commands {
         let args: Vec<&str> = args.into_iter().chain(style).collect();

@@ -247,7 +247,8 @@ impl Figure for SweepFigure {
             .label_style((FONT, font(17)))
             .axis_desc_style((FONT, font(20)))
             .x_label_formatter(&|x| super::tick_label(*x, x1 - x0))
-            .y_label_formatter(&|y| format!("{y:.0}"))
+            // rows are whole valences: a tick between two rows has no label
+            .y_label_formatter(&|y| if (y - y.round()).abs() < 1e-9 { format!("{y:.0}") } else { String::new() })
             .draw()
             .map_err(err)?;
         // rows get thinner with many valences; keep a hairline gap between them
