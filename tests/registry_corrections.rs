@@ -2,8 +2,10 @@
 //! derivation independent of the claim machinery: hand-built matrices in
 //! exact rationals, closed-form counts, tensor products of univariate rules.
 
+mod common;
+
 use num_traits::{One, Zero};
-use subdlab::claims::{builtin_files, evaluate, Outcome, Verdict};
+use subdlab::claims::{evaluate, Outcome, Verdict};
 use subdlab::numeric::Rational;
 
 fn q(a: i64, b: i64) -> Rational {
@@ -11,11 +13,9 @@ fn q(a: i64, b: i64) -> Rational {
 }
 
 fn registry(paper: &str, id: &str) -> Outcome {
-    let files = builtin_files().unwrap();
-    let mut f = files.into_iter().find(|f| f.paper == paper).unwrap();
-    f.claims.retain(|c| c.id == id);
-    assert_eq!(f.claims.len(), 1, "{id}");
-    evaluate(&f).pop().unwrap()
+    let o = common::registry_outcome(id);
+    assert_eq!(o.paper, paper, "{id}");
+    o
 }
 
 fn verdict(paper: &str, id: &str, want: Verdict) -> Outcome {

@@ -4,6 +4,8 @@
 //! the comments, tensor products of univariate rules, and (for the one
 //! floating-point refutation) a second method and a second neighbourhood.
 
+mod common;
+
 use num_traits::{One, Zero};
 use subdlab::claims::{builtin_files, evaluate, Outcome, Verdict};
 use subdlab::neighbourhood::{Configuration, NeighbourhoodKind};
@@ -16,11 +18,9 @@ fn q(a: i64, b: i64) -> Rational {
 }
 
 fn registry(paper: &str, id: &str) -> Outcome {
-    let files = builtin_files().unwrap();
-    let mut f = files.into_iter().find(|f| f.paper == paper).unwrap();
-    f.claims.retain(|c| c.id == id);
-    assert_eq!(f.claims.len(), 1, "{id}");
-    evaluate(&f).pop().unwrap()
+    let o = common::registry_outcome(id);
+    assert_eq!(o.paper, paper, "{id}");
+    o
 }
 
 fn verdict(paper: &str, id: &str, want: Verdict) -> Outcome {

@@ -1005,15 +1005,7 @@ fn window_polynomials(data: &toml::Value) -> Result4 {
             if holds { "kept" } else { "not kept" },
             next.map(|d| d.to_string()).unwrap_or_else(|| format!("above {}", degree + 3))
         ),
-        format!(
-            "exact, {} on the window [{}, {}] × [{}, {}] ({} points)",
-            text(data, "faces")?,
-            w[0],
-            w[1],
-            w[2],
-            w[3],
-            window.len()
-        ),
+        window_evidence(data, &w, window.len())?,
     ))
 }
 
@@ -1251,15 +1243,19 @@ fn window_checkerboard_kernel(data: &toml::Value) -> Result4 {
         } else {
             format!("{count} refined points non-zero, e.g. {}", nonzero.join(", "))
         },
-        format!(
-            "exact, {} on the window [{}, {}] × [{}, {}] ({} points)",
-            text(data, "faces")?,
-            w[0],
-            w[1],
-            w[2],
-            w[3],
-            window.len()
-        ),
+        window_evidence(data, &w, window.len())?,
+    ))
+}
+
+/// The evidence line of the window checks: exact, the configuration and the window.
+fn window_evidence(data: &toml::Value, w: &[i64], points: usize) -> Result<String, Error> {
+    Ok(format!(
+        "exact, {} on the window [{}, {}] × [{}, {}] ({points} points)",
+        text(data, "faces")?,
+        w[0],
+        w[1],
+        w[2],
+        w[3]
     ))
 }
 
@@ -1345,6 +1341,6 @@ fn window_box_spline(data: &toml::Value) -> Result4 {
             directions.len(),
             lines.len()
         ),
-        format!("exact, {} on the window [{}, {}] × [{}, {}]", text(data, "faces")?, w[0], w[1], w[2], w[3]),
+        window_evidence(data, &w, window.len())?,
     ))
 }
