@@ -3,14 +3,11 @@
 //! exact rationals, closed-form counts, tensor products of univariate rules.
 
 mod common;
+use common::exact::{algebraic, q};
 
 use num_traits::{One, Zero};
 use subdlab::claims::{evaluate, Outcome, Verdict};
 use subdlab::numeric::Rational;
-
-fn q(a: i64, b: i64) -> Rational {
-    Rational::new(a.into(), b.into())
-}
 
 fn registry(paper: &str, id: &str) -> Outcome {
     let o = common::registry_outcome(id);
@@ -22,47 +19,6 @@ fn verdict(paper: &str, id: &str, want: Verdict) -> Outcome {
     let o = registry(paper, id);
     assert_eq!(o.verdict, want, "{id}: {} / {} / {}", o.stated, o.computed, o.detail);
     o
-}
-
-/// Rank over the rationals (Gaussian elimination).
-fn rank(mut a: Vec<Vec<Rational>>) -> usize {
-    let (rows, cols) = (a.len(), a.first().map_or(0, |r| r.len()));
-    let mut r = 0;
-    for c in 0..cols {
-        let Some(p) = (r..rows).find(|&i| !a[i][c].is_zero()) else { continue };
-        a.swap(r, p);
-        for i in 0..rows {
-            if i != r && !a[i][c].is_zero() {
-                let f = a[i][c].clone() / a[r][c].clone();
-                for j in c..cols {
-                    let t = f.clone() * a[r][j].clone();
-                    a[i][j] -= t;
-                }
-            }
-        }
-        r += 1;
-    }
-    r
-}
-
-fn mul(a: &[Vec<Rational>], b: &[Vec<Rational>]) -> Vec<Vec<Rational>> {
-    let n = a.len();
-    (0..n)
-        .map(|i| (0..n).map(|j| (0..n).fold(Rational::zero(), |s, k| s + a[i][k].clone() * b[k][j].clone())).collect())
-        .collect()
-}
-
-/// Algebraic multiplicity of λ: the nullity of (A − λI)^size.
-fn algebraic(a: &[Vec<Rational>], lambda: &Rational) -> usize {
-    let n = a.len();
-    let shifted: Vec<Vec<Rational>> = (0..n)
-        .map(|i| (0..n).map(|j| a[i][j].clone() - if i == j { lambda.clone() } else { Rational::zero() }).collect())
-        .collect();
-    let mut p = shifted.clone();
-    for _ in 1..n {
-        p = mul(&p, &shifted);
-    }
-    n - rank(p)
 }
 
 /// Lemma 3.5's M at n = 4 (cos(2π(i − j)/4) ∈ {1, 0, −1, 0}: rational), in

@@ -5,6 +5,7 @@
 //! floating-point refutation) a second method and a second neighbourhood.
 
 mod common;
+use common::exact::{algebraic, q, rank, shifted, Mat};
 
 use num_traits::{One, Zero};
 use subdlab::claims::{builtin_files, evaluate, Outcome, Verdict};
@@ -12,10 +13,6 @@ use subdlab::neighbourhood::{Configuration, NeighbourhoodKind};
 use subdlab::numeric::Rational;
 use subdlab::schemes;
 use subdlab::spectrum::{analyse, Method, Options};
-
-fn q(a: i64, b: i64) -> Rational {
-    Rational::new(a.into(), b.into())
-}
 
 fn registry(paper: &str, id: &str) -> Outcome {
     let o = common::registry_outcome(id);
@@ -28,53 +25,6 @@ fn verdict(paper: &str, id: &str, want: Verdict) -> Outcome {
     assert_eq!(o.verdict, want, "{id}: {} / {} / {}", o.stated, o.computed, o.detail);
     assert_eq!(o.expected, Some(want), "{id}: the registry records the verdict found here");
     o
-}
-
-type Mat = Vec<Vec<Rational>>;
-
-/// Rank over the rationals (Gaussian elimination).
-fn rank(mut a: Mat) -> usize {
-    let (rows, cols) = (a.len(), a.first().map_or(0, |r| r.len()));
-    let mut r = 0;
-    for c in 0..cols {
-        let Some(p) = (r..rows).find(|&i| !a[i][c].is_zero()) else { continue };
-        a.swap(r, p);
-        for i in 0..rows {
-            if i != r && !a[i][c].is_zero() {
-                let f = a[i][c].clone() / a[r][c].clone();
-                for j in c..cols {
-                    let t = f.clone() * a[r][j].clone();
-                    a[i][j] -= t;
-                }
-            }
-        }
-        r += 1;
-    }
-    r
-}
-
-fn mul(a: &Mat, b: &Mat) -> Mat {
-    let n = a.len();
-    (0..n)
-        .map(|i| (0..n).map(|j| (0..n).fold(Rational::zero(), |s, k| s + a[i][k].clone() * b[k][j].clone())).collect())
-        .collect()
-}
-
-fn shifted(a: &Mat, lambda: &Rational) -> Mat {
-    let n = a.len();
-    (0..n)
-        .map(|i| (0..n).map(|j| a[i][j].clone() - if i == j { lambda.clone() } else { Rational::zero() }).collect())
-        .collect()
-}
-
-/// Algebraic multiplicity of λ: the nullity of (A − λI)^size.
-fn algebraic(a: &Mat, lambda: &Rational) -> usize {
-    let s = shifted(a, lambda);
-    let mut p = s.clone();
-    for _ in 1..a.len() {
-        p = mul(&p, &s);
-    }
-    a.len() - rank(p)
 }
 
 // ---------------------------------------------------------------- 4-3 transition node

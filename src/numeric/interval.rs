@@ -234,15 +234,7 @@ impl Mul for Interval {
         if !self.is_finite() || !o.is_finite() {
             return Interval::ENTIRE;
         }
-        let products = [
-            mul_bounds(self.lo, o.lo),
-            mul_bounds(self.lo, o.hi),
-            mul_bounds(self.hi, o.lo),
-            mul_bounds(self.hi, o.hi),
-        ];
-        let lo = products.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
-        let hi = products.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
-        Interval::new(lo, hi)
+        corner_hull(self, o, mul_bounds)
     }
 }
 
@@ -253,16 +245,18 @@ impl Div for Interval {
         if !self.is_finite() || !o.is_finite() || (o.lo <= 0.0 && o.hi >= 0.0) {
             return Interval::ENTIRE;
         }
-        let quotients = [
-            div_bounds(self.lo, o.lo),
-            div_bounds(self.lo, o.hi),
-            div_bounds(self.hi, o.lo),
-            div_bounds(self.hi, o.hi),
-        ];
-        let lo = quotients.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
-        let hi = quotients.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
-        Interval::new(lo, hi)
+        corner_hull(self, o, div_bounds)
     }
+}
+
+/// The hull of `op` (rounded outward: each call gives a (lower, upper)
+/// bracket) over the four corners of a × b: products and quotients of
+/// intervals take their extremes at the endpoints.
+fn corner_hull(a: Interval, b: Interval, op: fn(f64, f64) -> (f64, f64)) -> Interval {
+    let corners = [op(a.lo, b.lo), op(a.lo, b.hi), op(a.hi, b.lo), op(a.hi, b.hi)];
+    let lo = corners.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
+    let hi = corners.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
+    Interval::new(lo, hi)
 }
 
 /// Terms of the Taylor series of cos and sin on [0, π/4]: the 2·TERMS-th

@@ -1,6 +1,8 @@
 //! Shared helpers for the integration tests (closed forms live in each test).
 #![allow(dead_code)]
 
+pub mod exact;
+
 use subdlab::neighbourhood::{Configuration, NeighbourhoodKind};
 use subdlab::schemes::{self, Scheme};
 use subdlab::spectrum::{analyse, Analysis, Method, Options};

@@ -1,0 +1,57 @@
+//! Exact rational matrices for the tests' hand derivations: an oracle written
+//! independently of `subdlab::numeric::exact` (plain Gaussian elimination).
+
+use num_traits::Zero;
+use subdlab::numeric::Rational;
+
+pub type Mat = Vec<Vec<Rational>>;
+
+pub fn q(a: i64, b: i64) -> Rational {
+    Rational::new(a.into(), b.into())
+}
+
+/// Rank over the rationals (Gaussian elimination).
+pub fn rank(mut a: Mat) -> usize {
+    let (rows, cols) = (a.len(), a.first().map_or(0, |r| r.len()));
+    let mut r = 0;
+    for c in 0..cols {
+        let Some(p) = (r..rows).find(|&i| !a[i][c].is_zero()) else { continue };
+        a.swap(r, p);
+        for i in 0..rows {
+            if i != r && !a[i][c].is_zero() {
+                let f = a[i][c].clone() / a[r][c].clone();
+                for j in c..cols {
+                    let t = f.clone() * a[r][j].clone();
+                    a[i][j] -= t;
+                }
+            }
+        }
+        r += 1;
+    }
+    r
+}
+
+pub fn mul(a: &[Vec<Rational>], b: &[Vec<Rational>]) -> Mat {
+    let n = a.len();
+    (0..n)
+        .map(|i| (0..n).map(|j| (0..n).fold(Rational::zero(), |s, k| s + a[i][k].clone() * b[k][j].clone())).collect())
+        .collect()
+}
+
+/// A − λI.
+pub fn shifted(a: &[Vec<Rational>], lambda: &Rational) -> Mat {
+    let n = a.len();
+    (0..n)
+        .map(|i| (0..n).map(|j| a[i][j].clone() - if i == j { lambda.clone() } else { Rational::zero() }).collect())
+        .collect()
+}
+
+/// Algebraic multiplicity of λ: the nullity of (A − λI)^size.
+pub fn algebraic(a: &[Vec<Rational>], lambda: &Rational) -> usize {
+    let s = shifted(a, lambda);
+    let mut p = s.clone();
+    for _ in 1..a.len() {
+        p = mul(&p, &s);
+    }
+    a.len() - rank(p)
+}
