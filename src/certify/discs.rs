@@ -115,9 +115,23 @@ pub struct Enclosure {
 
 /// `Err` says why there is no enclosure (ε ≥ 1, non-finite entries).
 pub fn enclose(a: &CIntervalMatrix) -> Result<Enclosure, String> {
+    let d = diagonalise(a)?;
+    Ok(Enclosure { components: components(d.discs), epsilon: d.epsilon })
+}
+
+/// The verified approximate diagonalisation behind [`enclose`]: the float
+/// eigenvectors V of the midpoint, the Gershgorin disc of each row of
+/// V⁻¹AV (for every A in the interval matrix) and ε.
+struct Diagonalisation {
+    v: Mat<c64>,
+    discs: Vec<Disc>,
+    epsilon: f64,
+}
+
+fn diagonalise(a: &CIntervalMatrix) -> Result<Diagonalisation, String> {
     let k = a.size;
     if k == 0 {
-        return Ok(Enclosure { components: Vec::new(), epsilon: 0.0 });
+        return Ok(Diagonalisation { v: Mat::zeros(0, 0), discs: Vec::new(), epsilon: 0.0 });
     }
     if !a.entries.iter().all(CInterval::is_finite) {
         return Err("an entry of the matrix has no finite enclosure".into());
@@ -178,7 +192,57 @@ pub fn enclose(a: &CIntervalMatrix) -> Result<Enclosure, String> {
             Disc { re: c.re, im: c.im, radius: radius.hi }
         })
         .collect();
-    Ok(Enclosure { components: components(discs), epsilon: eps })
+    Ok(Diagonalisation { v, discs, epsilon: eps })
+}
+
+/// An enclosure of an eigenvector of every matrix in `a` for its eigenvalue
+/// near `near`, which must be alone in its Gershgorin disc.
+///
+/// With C = V⁻¹AV, the disc i nearest `near` and rᵢ the row radii (each
+/// bounding |Cⱼⱼ − cⱼ| + Σ_{k≠j} |Cⱼₖ|): the eigenvalue μ of C in disc i has
+/// |cⱼ − μ| ≥ Dⱼ := |cⱼ − cᵢ| − rᵢ for j ≠ i, and an eigenvector y of C
+/// satisfies |cⱼ − μ|·|yⱼ| ≤ rⱼ‖y‖∞. If every qⱼ = rⱼ/Dⱼ is below 1, the
+/// largest entry of y can only be yᵢ (else |y_p| ≤ q_p|y_p| forces y = 0), so
+/// with yᵢ = 1 every |yⱼ| ≤ qⱼ, and x = V·y is the eigenvector of A:
+/// xₗ ∈ Vₗᵢ + Σ_{j≠i} |Vₗⱼ|·qⱼ·(unit disc). Returns x (a rectangle per
+/// entry) and max qⱼ.
+pub fn eigenvector(a: &CIntervalMatrix, near: c64) -> Result<(Vec<CInterval>, f64), String> {
+    let d = diagonalise(a)?;
+    let k = a.size;
+    let i = (0..k)
+        .min_by(|&p, &q| (d.discs[p].centre() - near).norm().total_cmp(&(d.discs[q].centre() - near).norm()))
+        .ok_or("an empty matrix has no eigenvector")?;
+    let di = d.discs[i];
+    let mut q = vec![0.0; k];
+    for j in (0..k).filter(|&j| j != i) {
+        let gap = (CInterval::point(d.discs[j].centre()) - CInterval::point(di.centre())).mig();
+        let lower = (Interval::point(gap) - Interval::point(di.radius)).lo;
+        if !(lower > 0.0) {
+            return Err(format!(
+                "the eigenvalue near {near} is not isolated: its disc (radius {:.2e}) meets the disc about {}",
+                di.radius,
+                d.discs[j].centre()
+            ));
+        }
+        q[j] = (Interval::point(d.discs[j].radius) / Interval::point(lower)).hi;
+        if !(q[j] < 1.0) {
+            return Err(format!(
+                "the eigenvector near {near} is not enclosed: the disc about {} is too wide for its distance",
+                d.discs[j].centre()
+            ));
+        }
+    }
+    let x = (0..k)
+        .map(|l| {
+            let mut s = Interval::point(0.0);
+            for j in (0..k).filter(|&j| j != i) {
+                s = s + Interval::point(CInterval::point(d.v[(l, j)]).mag()) * Interval::point(q[j]);
+            }
+            let r = Interval::symmetric(s.hi);
+            CInterval::point(d.v[(l, i)]) + CInterval::new(r, r)
+        })
+        .collect();
+    Ok((x, q.iter().copied().fold(0.0, f64::max)))
 }
 
 /// Connected components of the union of discs (discs not proven disjoint

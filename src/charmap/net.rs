@@ -24,7 +24,7 @@ use crate::neighbourhood::Discovered;
 
 use crate::error::Error;
 use crate::refine::{apply, step, Combine, Step};
-use crate::sdc::{Origin, Scheme};
+use crate::sdc::{Origin, Scheme, SchemeWeight};
 
 /// Largest number of faces of a refined net: peak memory is about 1 KB per
 /// face (connectivity hash maps and the tracked region entities), so this
@@ -42,6 +42,11 @@ pub struct Net<T = [f64; 2]> {
     pub outer: Vec<bool>,
     /// descendants of the first ring after one analysis step
     pub inner: Vec<bool>,
+    /// descendants of the first ring after two analysis steps (all false
+    /// before the second step, or without a lattice chart): `inner` minus
+    /// `inner2` is the ring scaled by λ1, a fundamental annulus whose faces'
+    /// one-rings stay inside the first ring
+    pub inner2: Vec<bool>,
     /// refinements applied to the patch
     pub refinements: usize,
 }
@@ -100,9 +105,47 @@ pub fn refine_net<T: Combine<f64> + Clone>(
     level0: Vec<Option<T>>,
     analysis_steps: usize,
 ) -> Result<Net<T>, Error> {
+    // the first analysis step reuses discovery's float stencils
+    let first = |k: usize, points: &[Option<T>]| Ok(apply(&d.float_stencils(scheme)[k], points));
+    refine_net_in::<f64, T>(scheme, d, level0, analysis_steps, &first)
+}
+
+/// [`refine_net`] with weights of type `W` (e.g. outward-rounded intervals
+/// for the certified characteristic map): the rules are evaluated in `W` at
+/// every step, the first analysis step on discovery's refinements.
+pub fn refine_net_exactly_as<W: SchemeWeight, T: Combine<W> + Clone>(
+    scheme: &dyn Scheme,
+    d: &Discovered,
+    level0: Vec<Option<T>>,
+    analysis_steps: usize,
+) -> Result<Net<T>, Error> {
+    let first = |k: usize, points: &[Option<T>]| -> Result<Vec<Option<T>>, Error> {
+        let r = &d.refinements()[k];
+        let before = d.mesh_before(k);
+        let stencils = (0..r.vertex_origins.len())
+            .map(|v| {
+                crate::refine::new_stencil::<W>(scheme, before, r, v).map_err(|_| {
+                    Error::Numeric(format!("{}: a weight has no enclosure in this arithmetic", scheme.name()))
+                })
+            })
+            .collect::<Result<Vec<_>, Error>>()?;
+        Ok(apply(&stencils, points))
+    };
+    refine_net_in::<W, T>(scheme, d, level0, analysis_steps, &first)
+}
+
+type FirstStep<'a, T> = dyn Fn(usize, &[Option<T>]) -> Result<Vec<Option<T>>, Error> + 'a;
+
+fn refine_net_in<W: SchemeWeight, T: Combine<W> + Clone>(
+    scheme: &dyn Scheme,
+    d: &Discovered,
+    level0: Vec<Option<T>>,
+    analysis_steps: usize,
+    first: &FirstStep<T>,
+) -> Result<Net<T>, Error> {
     let mut last = Err(Error::Message("no pruning margin tried".into()));
     for margin in MARGINS {
-        last = refine_with_margin(scheme, d, level0.clone(), analysis_steps, margin);
+        last = refine_with_margin::<W, T>(scheme, d, level0.clone(), analysis_steps, margin, first);
         // only a point left undetermined by the pruned margin is worth a
         // wider margin; every other failure is final
         if !matches!(last, Err(Error::NotDetermined(_))) {
@@ -112,12 +155,13 @@ pub fn refine_net<T: Combine<f64> + Clone>(
     last
 }
 
-fn refine_with_margin<T: Combine<f64> + Clone>(
+fn refine_with_margin<W: SchemeWeight, T: Combine<W> + Clone>(
     scheme: &dyn Scheme,
     d: &Discovered,
     level0: Vec<Option<T>>,
     analysis_steps: usize,
     margin: usize,
+    first: &FirstStep<T>,
 ) -> Result<Net<T>, Error> {
     if analysis_steps == 0 {
         return Err(Error::Input("the characteristic ring needs at least one analysis step".into()));
@@ -127,6 +171,7 @@ fn refine_with_margin<T: Combine<f64> + Clone>(
     let mut net = Net {
         outer: faces_touching(&d.patch, &centre0),
         inner: vec![false; d.patch.num_faces()],
+        inner2: vec![false; d.patch.num_faces()],
         mesh: d.patch.clone(),
         points: level0,
         refinements: 0,
@@ -135,7 +180,7 @@ fn refine_with_margin<T: Combine<f64> + Clone>(
     // the successor map (lattice charts) refers to
     for k in 0..steps {
         let r = &d.refinements()[k];
-        let points = apply(&d.float_stencils(scheme)[k], &net.points);
+        let points = first(k, &net.points)?;
         net = descend(&net, &r.mesh, &r.vertex_origins, &r.face_parents, points);
     }
     let centre1: HashSet<usize> = centre0
@@ -146,6 +191,11 @@ fn refine_with_margin<T: Combine<f64> + Clone>(
         })
         .collect::<Result<_, _>>()?;
     net.inner = faces_touching(&net.mesh, &centre1);
+    // the centre after k analysis steps is the set of vertices at the centre's
+    // lattice coordinates (each level's chart counts in its own units), as
+    // `Discovered::successor` finds it after one step
+    let centre_coords: Option<HashSet<_>> =
+        d.patch.chart.as_ref().map(|c| centre0.iter().map(|&v| c.vertex_coords[v]).collect());
     check_defined(&net)?;
     net = prune(net, margin)?;
     let region = net.outer.iter().filter(|&&o| o).count();
@@ -164,9 +214,18 @@ fn refine_with_margin<T: Combine<f64> + Clone>(
                 net.refinements + 1
             )));
         }
-        let Step { refined: r, stencils } = step::<f64>(scheme, &net.mesh)?;
+        let Step { refined: r, stencils } = step::<W>(scheme, &net.mesh)?;
         let points = apply(&stencils, &net.points);
         net = descend(&net, &r.mesh, &r.vertex_origins, &r.face_parents, points);
+        if net.refinements == 2 * steps {
+            if let (Some(coords), Some(chart)) = (&centre_coords, net.mesh.chart.as_ref().filter(|c| c.scale == 1)) {
+                let centre2: HashSet<usize> =
+                    (0..net.mesh.num_vertices()).filter(|&v| coords.contains(&chart.vertex_coords[v])).collect();
+                if centre2.len() == centre0.len() {
+                    net.inner2 = faces_touching(&net.mesh, &centre2);
+                }
+            }
+        }
         check_defined(&net)?;
         net = prune(net, margin)?;
     }
@@ -222,6 +281,7 @@ fn descend<T>(old: &Net<T>, mesh: &PolyMesh, origins: &[Origin], parents: &[Orig
     Net {
         outer: carry(&old.outer),
         inner: carry(&old.inner),
+        inner2: carry(&old.inner2),
         mesh: mesh.clone(),
         points,
         refinements: old.refinements + 1,
@@ -280,6 +340,7 @@ fn prune<T: Clone>(net: Net<T>, margin: usize) -> Result<Net<T>, Error> {
     Ok(Net {
         outer: keep.iter().map(|&f| net.outer[f]).collect(),
         inner: keep.iter().map(|&f| net.inner[f]).collect(),
+        inner2: keep.iter().map(|&f| net.inner2[f]).collect(),
         mesh: new_mesh,
         points,
         refinements: net.refinements,

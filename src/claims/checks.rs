@@ -422,30 +422,64 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                 if got { "no negative eigenvalue".into() } else { format!("negative: {}", show_list(&negative)) },
             ))
         }),
-        Check::CharacteristicMap { subject, expect, levels, resolution } => over_valences(subject, |n| {
+        Check::CharacteristicMap { subject, expect, levels, certified: true, .. } => over_valences(subject, |n| {
             let (scheme, config) = subject_config(subject, n)?;
-            let opts = crate::charmap::CharMapOptions {
-                levels: levels.unwrap_or(3),
-                resolution: resolution.unwrap_or(256),
-                display_levels: None,
+            let options =
+                crate::spectrum::Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
+            let analysis = crate::spectrum::analyse(scheme.as_ref(), &config, &options)?;
+            let most = levels.unwrap_or(crate::certify::charmap::DEFAULT_MAX_LEVELS).max(2);
+            let c = crate::certify::certify_charmap(scheme.as_ref(), &analysis, most)?;
+            use crate::certify::Verdict;
+            let got = match (&c.regularity, &c.injectivity) {
+                (Verdict::Disproved(_), _) | (_, Verdict::Disproved(_)) => false,
+                (Verdict::Proved, Verdict::Proved) if !c.conditional_geometry() => true,
+                (Verdict::Proved, Verdict::Proved) => {
+                    return Err(Error::Claim(format!(
+                        "n = {n}: the certified map is PROVED only given the rotation premise confirmed to interval overlap (not exactly): no unconditional proof"
+                    )))
+                }
+                (Verdict::NotProved(why), _) | (_, Verdict::NotProved(why)) => {
+                    return Err(Error::Claim(format!("n = {n}: certificate NOT PROVED ({why})")))
+                }
             };
-            let m = crate::charmap::characteristic_map(scheme.as_ref(), &config, &opts)?;
-            let good = m.regular && m.injective;
-            let what = format!(
-                "{}, {} (winding {}, overlap pixels {}, min Jacobian ratio {})",
-                if m.regular { "regular" } else { "not regular" },
-                if m.injective { "injective" } else { "not injective" },
-                m.winding_number.map(|w| w.to_string()).unwrap_or_else(|| "-".into()),
-                m.overlap_pixels.map(|w| w.to_string()).unwrap_or_else(|| "-".into()),
-                m.min_jacobian_ratio.map(fmt_f).unwrap_or_else(|| "-".into()),
-            );
-            let what = if m.reasons.is_empty() { what } else { format!("{what}: {}", m.explanation) };
+            let bound = c.min_jacobian_lower_bound.map(|b| format!(", Jacobian ≥ {b:.4e}")).unwrap_or_default();
             Ok((
-                good == *expect,
-                if *expect { "regular and injective".into() } else { "not regular and injective".into() },
-                what,
+                got == *expect,
+                if *expect { "proved regular and injective".into() } else { "disproved".into() },
+                format!(
+                    "certified regularity {}, injectivity {} (winding {}{bound})",
+                    c.regularity.display(),
+                    c.injectivity.display(),
+                    c.winding_number.map(|w| w.to_string()).unwrap_or_else(|| "-".into())
+                ),
             ))
         }),
+        Check::CharacteristicMap { subject, expect, levels, resolution, certified: false } => {
+            over_valences(subject, |n| {
+                let (scheme, config) = subject_config(subject, n)?;
+                let opts = crate::charmap::CharMapOptions {
+                    levels: levels.unwrap_or(3),
+                    resolution: resolution.unwrap_or(256),
+                    display_levels: None,
+                };
+                let m = crate::charmap::characteristic_map(scheme.as_ref(), &config, &opts)?;
+                let good = m.regular && m.injective;
+                let what = format!(
+                    "{}, {} (winding {}, overlap pixels {}, min Jacobian ratio {})",
+                    if m.regular { "regular" } else { "not regular" },
+                    if m.injective { "injective" } else { "not injective" },
+                    m.winding_number.map(|w| w.to_string()).unwrap_or_else(|| "-".into()),
+                    m.overlap_pixels.map(|w| w.to_string()).unwrap_or_else(|| "-".into()),
+                    m.min_jacobian_ratio.map(fmt_f).unwrap_or_else(|| "-".into()),
+                );
+                let what = if m.reasons.is_empty() { what } else { format!("{what}: {}", m.explanation) };
+                Ok((
+                    good == *expect,
+                    if *expect { "regular and injective".into() } else { "not regular and injective".into() },
+                    what,
+                ))
+            })
+        }
         Check::SpectralC1 { subject, expect, certified: true } => over_valences(subject, |n| {
             let (scheme, config) = subject_config(subject, n)?;
             let options = crate::spectrum::Options { neighbourhood: kind_of(subject)?, method: None, exact: false };

@@ -264,6 +264,11 @@ pub enum Check {
         levels: Option<usize>,
         #[serde(default)]
         resolution: Option<usize>,
+        /// decide by the certified map (`charmap --certify`): regularity and
+        /// injectivity both PROVED (unconditionally), or one DISPROVED,
+        /// decide; anything else is INCONCLUSIVE with the certificate's reason
+        #[serde(default)]
+        certified: bool,
     },
     /// The spectral C^1 test (Reif) passes (`expect = true`, the default) or fails.
     SpectralC1 {
@@ -342,7 +347,7 @@ pub const CHECK_KEYS: &[(&str, &[&str])] = &[
     ("tangent-stencils", &["cos", "sin"]),
     ("inequality", &["lhs", "op", "rhs"]),
     ("nonnegative-spectrum", &["expect"]),
-    ("characteristic-map", &["expect", "levels", "resolution"]),
+    ("characteristic-map", &["expect", "levels", "resolution", "certified"]),
     ("spectral-c1", &["expect", "certified"]),
     ("curvature", &["class", "c2", "fourier", "levels"]),
     ("identity", &["lhs", "rhs", "vars"]),

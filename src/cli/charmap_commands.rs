@@ -6,13 +6,14 @@ use clap::{Args, Subcommand};
 
 use super::commands::parse_params;
 use super::FigureArgs;
-use crate::charmap::{characteristic_map, CharMap, CharMapOptions, DEFAULT_LEVELS, DEFAULT_RESOLUTION, MAX_LEVELS};
+use crate::charmap::{check_map, CharMap, CharMapOptions, DEFAULT_LEVELS, DEFAULT_RESOLUTION, MAX_LEVELS};
 use crate::error::Error;
 use crate::io::print_json;
 use crate::neighbourhood::configuration::check_valence;
-use crate::neighbourhood::Configuration;
+use crate::neighbourhood::{Configuration, NeighbourhoodKind};
 use crate::plot::{self, charmap::RingFigure, spectrum::SpectrumFigure, sweep::Bound};
 use crate::schemes::{self, Scheme};
+use crate::spectrum::{analyse, Options};
 
 /// Most valences in one spectrum plot (each is a full analysis).
 const MAX_PLOT_VALENCES: usize = 200;
@@ -52,6 +53,13 @@ pub struct CharmapArgs {
     pub sectors: bool,
     #[command(flatten)]
     pub figure: FigureArgs,
+    /// also prove (or disprove) Reif's criterion: certified spectrum,
+    /// Jacobian bounds of the ring's box-spline patches, certified winding number
+    #[arg(long)]
+    pub certify: bool,
+    /// most analysis steps of refinement the certificate tries (2 to 6)
+    #[arg(long, default_value_t = crate::certify::charmap::DEFAULT_MAX_LEVELS, requires = "certify")]
+    pub certify_levels: usize,
     /// machine-readable JSON output
     #[arg(long)]
     pub json: bool,
@@ -153,18 +161,80 @@ pub fn charmap(a: &CharmapArgs) -> Result<(), Error> {
         resolution: a.resolution,
         display_levels: a.out.as_ref().map(|_| a.levels.min(FIGURE_LEVELS)),
     };
-    let map = characteristic_map(scheme.as_ref(), &config, &opts)?;
+    if a.certify && !(2..=crate::certify::charmap::MAX_LEVELS).contains(&a.certify_levels) {
+        return Err(Error::Input(format!(
+            "--certify-levels must be between 2 and {}, got {}",
+            crate::certify::charmap::MAX_LEVELS,
+            a.certify_levels
+        )));
+    }
+    opts.check()?;
+    let analysis = analyse(
+        scheme.as_ref(),
+        &config,
+        &Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false },
+    )?;
+    let map = check_map(scheme.as_ref(), &analysis, &opts)?;
+    let certificate = if a.certify {
+        Some(crate::certify::certify_charmap(scheme.as_ref(), &analysis, a.certify_levels)?)
+    } else {
+        None
+    };
     if let Some(out) = &a.out {
         if map.ring.is_none() {
             return Err(Error::Input(format!("no figure written: {}", map.explanation)));
         }
         plot::save(&RingFigure { map: &map, copies: a.rings, wedge: a.wedge, sectors: a.sectors, style }, out)?;
     }
-    if a.json {
-        print_json(&map)
-    } else {
-        crate::io::out(&table(&map))
+    match (a.json, &certificate) {
+        (true, None) => print_json(&map),
+        (true, Some(c)) => {
+            #[derive(serde::Serialize)]
+            struct Certified<'a> {
+                #[serde(flatten)]
+                map: &'a CharMap,
+                certificate: &'a crate::certify::CharMapCertificate,
+            }
+            print_json(&Certified { map: &map, certificate: c })
+        }
+        (false, None) => crate::io::out(&table(&map)),
+        (false, Some(c)) => crate::io::out(&format!("{}\n{}", table(&map), certificate_table(c))),
     }
+}
+
+/// The characteristic-map certificate as text: the three verdicts and the
+/// margins of the proof.
+fn certificate_table(c: &crate::certify::CharMapCertificate) -> String {
+    let mut out = format!(
+        "certified C1 (Reif's criterion): {}{}\n",
+        c.c1.display(),
+        if c.conditional { ", given the spectral premises confirmed to interval overlap only" } else { "" }
+    );
+    out += &format!("  spectrum:    {}\n", c.spectrum.verdict.display());
+    out += &format!("  regularity:  {}\n", c.regularity.display());
+    out += &format!("  injectivity: {}\n", c.injectivity.display());
+    if let Some(p) = c.regular_part {
+        out += &format!("  regular part: {} ({} rules compared exactly)\n", p.describe(), c.rules_checked);
+    }
+    if let Some(l) = c.levels {
+        out += &format!(
+            "  ring faces at {l} levels: {} ({} Jacobian > 0, {} Jacobian < 0, {} undecided)\n",
+            c.ring_faces, c.positive_faces, c.negative_faces, c.undecided_faces
+        );
+    }
+    let f = |x: Option<f64>| x.map_or("-".to_string(), |v| format!("{v:.6e}"));
+    out += &format!(
+        "  smallest Jacobian lower bound {} (ring in the unit disc, level-0 parameters), over the largest upper bound {}; eigenvector enclosure radius {}; \
+         widest net point {}\n",
+        f(c.min_jacobian_lower_bound),
+        f(c.min_jacobian_ratio),
+        f(c.eigenvector_radius),
+        f(c.max_point_width)
+    );
+    if let Some(w) = c.winding_number {
+        out += &format!("  winding number {w} (certified)\n");
+    }
+    out
 }
 
 fn table(m: &CharMap) -> String {

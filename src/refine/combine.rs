@@ -18,6 +18,20 @@ impl<const D: usize> Combine<f64> for [f64; D] {
     }
 }
 
+/// Outward-rounded interval points: every sum and product encloses the exact
+/// one, so a refined net of enclosures encloses the refined exact net.
+impl<const D: usize> Combine<crate::numeric::Interval> for [crate::numeric::Interval; D] {
+    fn combine(terms: &[(crate::numeric::Interval, &Self)]) -> Self {
+        let mut out = [crate::numeric::Interval::point(0.0); D];
+        for (w, p) in terms {
+            for k in 0..D {
+                out[k] = out[k] + *w * p[k];
+            }
+        }
+        out
+    }
+}
+
 /// A sparse row of weights over some index set (for instance the vertices of
 /// an earlier level): refining rows composes subdivision steps.
 #[derive(Clone, Debug, PartialEq)]

@@ -1,0 +1,807 @@
+//! The certified characteristic-map verdict: a proof (or disproof, or the
+//! reason for neither) that the characteristic map is regular and injective,
+//! the geometric half of Reif's C¹ criterion.
+//!
+//! 1. **Eigenvectors.** The subdominant eigenvector of its Fourier block m
+//!    (1 for a proper pair) is enclosed rigorously (`discs::eigenvector`, from
+//!    the interval block that the spectral certificate encloses), and spread
+//!    over the neighbourhood by the rotation: x₍ₜ,ₐ₎ = ω^(mt)·zₐ. Its real and imaginary parts are the
+//!    two coordinate functions; any complex multiple gives the same map up to
+//!    a linear change of coordinates, which keeps regularity and injectivity.
+//! 2. **Net.** The level-0 net of enclosures is refined with the scheme's
+//!    own rules evaluated in interval arithmetic (`net::refine_net_exactly_as`),
+//!    so the refined net of enclosures holds the true refined net.
+//! 3. **Regular part.** Over a face of the ring whose one-ring of faces is a
+//!    regular grid (valence 4 quads, or valence 6 triangles), the limit of
+//!    the scheme is a box spline of the window's control points *if* the rules
+//!    at regular vertices, edges and faces are the box spline's. That is
+//!    checked exactly (rational stencils) on every regular entity the ring's
+//!    windows hold, against the masks of three box splines: the bicubic
+//!    B-spline (primal quad rules: Catmull–Clark's regular part), the
+//!    biquadratic B-spline (dual corner rules: Doo–Sabin and the bi-2
+//!    schemes), and the three-direction quartic box spline (Loop). Rules are
+//!    local functions of the combinatorics inside their slots (every host's
+//!    are), so rules that match on these entities match at every later level
+//!    of the ring's regular region.
+//! 4. **Jacobian.** A box spline's derivative along one of its directions e
+//!    is a box spline of the e-differences of the control points, with
+//!    non-negative basis functions summing to one, and both points of each
+//!    difference lie in the window. So over the face ∂ᵤx ∈ conv(U) and
+//!    ∂ᵥx ∈ conv(V) (U, V: the window's edge vectors along the two lattice
+//!    directions), and det(∂ᵤx, ∂ᵥx) = Σ αᵢβⱼ·det(uᵢ, vⱼ) with αᵢ, βⱼ ≥ 0
+//!    summing to one lies between the smallest and the largest det(uᵢ, vⱼ).
+//!    All positive: the Jacobian is positive on the face; all negative:
+//!    negative. Otherwise the face is inconclusive, and the whole net is
+//!    refined once more (up to a level limit).
+//! 5. **Regularity.** The ring faces at level L cover D_L minus λ·D_L (outer
+//!    minus inner region), whose scaled copies cover the punctured
+//!    neighbourhood, so one sign on every ring face proves regularity. A face
+//!    proved positive and another proved negative disprove it (and with it
+//!    injectivity: an injective C¹ map of a connected domain keeps its
+//!    orientation).
+//! 6. **Winding number.** The inner boundary of the ring is a closed chain of
+//!    face sides; the image of each lies in the convex hull of the adjacent
+//!    ring face's window. When each hull lies in an open half-plane through
+//!    the origin, its angles form an interval of width below π, and lifting
+//!    the intervals along the chain gives the winding number exactly.
+//!    Peters–Reif: a regular characteristic map is injective if and only if
+//!    its winding number is ±1.
+
+use std::collections::{HashMap, HashSet};
+
+use serde::Serialize;
+
+use super::complex::CInterval;
+use super::discs::eigenvector;
+use super::matrix::{fourier_blocks, IntervalRows};
+use super::spectrum::{certify_analysis, SpectrumCertificate, Verdict};
+use crate::charmap::net::{self, Net};
+use crate::dft::Orbits;
+use crate::error::Error;
+use crate::matrix::local::{assemble_rows, AssembleError};
+use crate::mesh::PolyMesh;
+use crate::numeric::{Interval, Rational, Weight};
+use crate::refine::{connectivity, stencil_at, Origin};
+use crate::sdc::Scheme;
+use crate::spectrum::{Analysis, Method};
+
+/// Analysis steps of refinement tried in turn until every ring face is
+/// decided (the first level whose ring faces all have regular windows is 2).
+pub const DEFAULT_MAX_LEVELS: usize = 4;
+pub const MAX_LEVELS: usize = 6;
+
+pub type Point = [Interval; 2];
+
+/// The box splines whose masks the certificate recognises.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum RegularPart {
+    /// primal quad rules: vertex 9/16, 3/32, 1/64; edge 3/8, 1/16; face 1/4
+    BicubicBSpline,
+    /// dual quad rules: corner 9/16, 3/16, 3/16, 1/16
+    BiquadraticBSpline,
+    /// triangle rules: vertex 5/8, 1/16; edge 3/8, 3/8, 1/8, 1/8
+    ThreeDirectionQuarticBoxSpline,
+    /// ternary quad rules, the tensor products of the univariate ternary
+    /// quadratic mask (1, 3, 6, 7, 6, 3, 1)/9: vertex (1, 7, 1)²/81, edge
+    /// (6, 3) ⊗ (1, 7, 1)/81, interior (6, 3)²/81
+    BiquadraticBSplineTernary,
+}
+
+impl RegularPart {
+    pub fn describe(self) -> &'static str {
+        match self {
+            RegularPart::BicubicBSpline => "bicubic B-spline",
+            RegularPart::BiquadraticBSpline => "biquadratic B-spline",
+            RegularPart::ThreeDirectionQuarticBoxSpline => "three-direction quartic box spline",
+            RegularPart::BiquadraticBSplineTernary => "biquadratic B-spline (ternary refinement)",
+        }
+    }
+}
+
+/// Everything `charmap --certify` proves. Field names are stable API.
+#[derive(Clone, Debug, Serialize)]
+pub struct CharMapCertificate {
+    pub scheme: String,
+    pub valence: usize,
+    /// the spectral half (λ0, λ1, the gap)
+    pub spectrum: SpectrumCertificate,
+    /// the Jacobian of the characteristic map has one sign
+    pub regularity: Verdict,
+    /// the characteristic map is injective
+    pub injectivity: Verdict,
+    /// Reif's criterion as a whole: spectrum, regularity and injectivity
+    pub c1: Verdict,
+    /// proved only given premises confirmed to interval overlap (see the
+    /// spectral certificate)
+    pub conditional: bool,
+    /// regularity and injectivity rest on S commuting with the rotation (the
+    /// eigenvector is spread over the sectors by it), and that premise was
+    /// confirmed to interval overlap only
+    pub geometry_conditional: bool,
+    /// the box spline the regular rules were matched with
+    pub regular_part: Option<RegularPart>,
+    /// regular entities whose rational stencils were compared with its masks
+    pub rules_checked: usize,
+    /// analysis steps of refinement of the decisive net
+    pub levels: Option<usize>,
+    pub ring_faces: usize,
+    pub positive_faces: usize,
+    pub negative_faces: usize,
+    pub undecided_faces: usize,
+    /// smallest lower bound of the Jacobian over the ring (orientation made
+    /// positive), in level-0 parameter units, for the map scaled so that the
+    /// ring lies in the unit disc
+    pub min_jacobian_lower_bound: Option<f64>,
+    /// the same over the largest upper bound of the Jacobian over the ring
+    pub min_jacobian_ratio: Option<f64>,
+    /// the largest |yⱼ| of the eigenvector enclosure (0 for an exact vector)
+    pub eigenvector_radius: Option<f64>,
+    pub max_point_width: Option<f64>,
+    pub winding_number: Option<i64>,
+    pub reasons: Vec<String>,
+}
+
+/// Certify the characteristic map of an analysis (analysis neighbourhood).
+pub fn certify_charmap(
+    scheme: &dyn Scheme,
+    analysis: &Analysis,
+    max_levels: usize,
+) -> Result<CharMapCertificate, Error> {
+    if !(2..=MAX_LEVELS).contains(&max_levels) {
+        return Err(Error::Input(format!("certification levels must be between 2 and {MAX_LEVELS}, got {max_levels}")));
+    }
+    let spectrum = certify_analysis(scheme, analysis)?;
+    let s = &analysis.spectrum;
+    let mut cert = CharMapCertificate {
+        scheme: s.scheme.clone(),
+        valence: s.valence,
+        conditional: spectrum.conditional,
+        geometry_conditional: false,
+        spectrum,
+        regularity: Verdict::NotProved(String::new()),
+        injectivity: Verdict::NotProved(String::new()),
+        c1: Verdict::NotProved(String::new()),
+        regular_part: None,
+        rules_checked: 0,
+        levels: None,
+        ring_faces: 0,
+        positive_faces: 0,
+        negative_faces: 0,
+        undecided_faces: 0,
+        min_jacobian_lower_bound: None,
+        min_jacobian_ratio: None,
+        eigenvector_radius: None,
+        max_point_width: None,
+        winding_number: None,
+        reasons: Vec::new(),
+    };
+    let geometric = geometric_half(scheme, analysis, max_levels, &mut cert);
+    let (regularity, injectivity) = match geometric {
+        Ok(v) => v,
+        Err(why) => (Verdict::NotProved(why.clone()), Verdict::NotProved(why)),
+    };
+    use super::matrix::Check;
+    let rotation = cert.spectrum.premises.as_ref().map(|p| p.rotation_symmetry.clone());
+    let (regularity, injectivity) = match rotation {
+        Some(Check::Exact) => (regularity, injectivity),
+        Some(Check::Overlap) => {
+            cert.geometry_conditional = true;
+            (regularity, injectivity)
+        }
+        // the blocks are not S in another basis: nothing about its eigenvectors follows
+        _ => {
+            let why = "the rotation symmetry of S, which spreads the block eigenvector over the sectors, is not \
+                       established"
+                .to_string();
+            (Verdict::NotProved(why.clone()), Verdict::NotProved(why))
+        }
+    };
+    cert.regularity = regularity;
+    cert.injectivity = injectivity;
+    cert.c1 = combine(&cert.spectrum.verdict, &cert.regularity, &cert.injectivity);
+    cert.conditional = cert.c1 == Verdict::Proved && cert.spectrum.conditional;
+    Ok(cert)
+}
+
+impl CharMapCertificate {
+    /// Whether the geometric verdicts rest on a premise confirmed to
+    /// interval overlap only.
+    pub fn conditional_geometry(&self) -> bool {
+        self.geometry_conditional
+    }
+}
+
+/// Reif's criterion from its three parts: proved when all are, disproved
+/// when one is.
+fn combine(spectrum: &Verdict, regularity: &Verdict, injectivity: &Verdict) -> Verdict {
+    let parts = [("spectrum", spectrum), ("regularity", regularity), ("injectivity", injectivity)];
+    if let Some((what, Verdict::Disproved(why))) = parts.iter().find(|(_, v)| matches!(v, Verdict::Disproved(_))) {
+        return Verdict::Disproved(format!("{what}: {why}"));
+    }
+    if let Some((what, Verdict::NotProved(why))) = parts.iter().find(|(_, v)| matches!(v, Verdict::NotProved(_))) {
+        return Verdict::NotProved(format!("{what}: {why}"));
+    }
+    Verdict::Proved
+}
+
+/// Regularity and injectivity, or the reason neither can be decided.
+fn geometric_half(
+    scheme: &dyn Scheme,
+    analysis: &Analysis,
+    max_levels: usize,
+    cert: &mut CharMapCertificate,
+) -> Result<(Verdict, Verdict), String> {
+    let level0 = certified_net(scheme, analysis, cert)?;
+    let d = &analysis.discovered;
+    let mut last_reason = String::new();
+    for levels in 2..=max_levels {
+        let net = net::refine_net_exactly_as::<Interval, Point>(scheme, d, level0.clone(), levels)
+            .map_err(|e| format!("the interval net could not be refined {levels} levels: {e}"))?;
+        // two fundamental annuli: the ring, and the ring scaled by λ1 (whose
+        // faces' one-rings stay inside the first ring, as a dual scheme's
+        // outermost faces' do not)
+        let vf = net.mesh.vertex_faces();
+        let faces = |keep: &dyn Fn(usize) -> bool| (0..net.mesh.num_faces()).filter(|&f| keep(f)).collect::<Vec<_>>();
+        let annuli = [
+            (faces(&|f| net.outer[f] && !net.inner[f]), faces(&|f| net.outer[f] && net.inner[f])),
+            (faces(&|f| net.inner[f] && !net.inner2[f]), faces(&|f| net.inner2[f])),
+        ];
+        let mut chosen = None;
+        for (ring, inside) in annuli.iter().filter(|(_, inside)| !inside.is_empty()) {
+            match ring.iter().map(|&f| Window::around(&net, &vf, f)).collect::<Result<Vec<_>, String>>() {
+                Ok(w) => {
+                    chosen = Some((ring, inside, w));
+                    break;
+                }
+                Err(why) => last_reason = format!("at {levels} levels: {why}"),
+            }
+        }
+        let Some((ring, inside, windows)) = chosen else { continue };
+        let part = check_rules(scheme, &net.mesh, ring, &windows)?;
+        cert.regular_part = Some(part.0);
+        cert.rules_checked = part.1;
+        let bounds: Vec<(Interval, bool)> = windows.iter().map(Window::jacobian_bounds).collect();
+        let positive = bounds.iter().filter(|b| b.0.lo > 0.0).count();
+        let negative = bounds.iter().filter(|b| b.0.hi < 0.0).count();
+        let undecided = ring.len() - positive - negative;
+        cert.levels = Some(levels);
+        cert.ring_faces = ring.len();
+        cert.positive_faces = positive;
+        cert.negative_faces = negative;
+        cert.undecided_faces = undecided;
+        cert.max_point_width =
+            Some(net.points.iter().flatten().map(|p| p[0].width().max(p[1].width())).fold(0.0, f64::max));
+        if positive > 0 && negative > 0 {
+            let why = format!(
+                "at {levels} levels the Jacobian is proved positive on {positive} ring faces and negative on \
+                 {negative}: it changes sign"
+            );
+            cert.reasons.push(why.clone());
+            return Ok((Verdict::Disproved(why.clone()), Verdict::Disproved(format!("not regular ({why})"))));
+        }
+        if undecided > 0 {
+            last_reason = format!(
+                "at {levels} levels the Jacobian's sign is undecided on {undecided} of {} ring faces",
+                ring.len()
+            );
+            continue;
+        }
+        let sign = if negative > 0 { -1.0 } else { 1.0 };
+        record_margins(cert, &net, &bounds, sign, scheme.topology().faces_per_face());
+        let regular = format!(
+            "the Jacobian is proved {} on all {} ring faces at {levels} levels ({} rules)",
+            if sign > 0.0 { "positive" } else { "negative" },
+            ring.len(),
+            part.0.describe()
+        );
+        let regular = if std::ptr::eq(ring, &annuli[1].0) {
+            format!("{regular}; the annulus is the ring scaled by λ1 (the ring's outer faces' one-rings leave the neighbourhood)")
+        } else {
+            regular
+        };
+        cert.reasons.push(regular);
+        let injective = match winding_number(&net, ring, inside, &windows) {
+            Ok(w) if w == sign as i64 => {
+                cert.winding_number = Some(w);
+                cert.reasons.push(format!("the annulus's inner boundary winds {w} time around the centre"));
+                Verdict::Proved
+            }
+            Ok(w) => {
+                cert.winding_number = Some(w);
+                Verdict::Disproved(format!(
+                    "the map is regular but its winding number is {w}: it covers the neighbourhood of the centre {} \
+                     times",
+                    w.abs()
+                ))
+            }
+            // a finer net has smaller windows, whose hulls may then clear the centre
+            Err(why) if levels < max_levels => {
+                cert.reasons.pop();
+                last_reason = format!("at {levels} levels the winding number is not certified: {why}");
+                continue;
+            }
+            Err(why) => Verdict::NotProved(format!("the winding number is not certified: {why}")),
+        };
+        return Ok((Verdict::Proved, injective));
+    }
+    Err(last_reason)
+}
+
+fn record_margins(
+    cert: &mut CharMapCertificate,
+    net: &Net<Point>,
+    bounds: &[(Interval, bool)],
+    sign: f64,
+    area_factor: usize,
+) {
+    let lower = bounds.iter().map(|b| if sign > 0.0 { b.0.lo } else { -b.0.hi }).fold(f64::INFINITY, f64::min);
+    let upper = bounds.iter().map(|b| if sign > 0.0 { b.0.hi } else { -b.0.lo }).fold(0.0, f64::max);
+    // the ring's points lie within radius R; each refinement divides a face's
+    // parameter area by the host's faces per face (4 dyadic, 9 ternary), and
+    // the Jacobian in level-0 parameters multiplies by as much
+    let radius = net
+        .outer
+        .iter()
+        .enumerate()
+        .filter(|(_, &o)| o)
+        .flat_map(|(f, _)| net.mesh.face(f).iter())
+        .filter_map(|&v| net.points[v])
+        .map(|p| p[0].mag().hypot(p[1].mag()))
+        .fold(0.0, f64::max);
+    if radius > 0.0 {
+        let scale = (area_factor as f64).powi(net.refinements as i32) / (radius * radius);
+        cert.min_jacobian_lower_bound = Some((lower * scale * (1.0 - 1e-12)).max(0.0));
+    }
+    if upper > 0.0 {
+        cert.min_jacobian_ratio = Some(lower / upper);
+    }
+}
+
+/// The level-0 net of enclosures of the subdominant pair.
+fn certified_net(
+    scheme: &dyn Scheme,
+    analysis: &Analysis,
+    cert: &mut CharMapCertificate,
+) -> Result<Vec<Option<Point>>, String> {
+    let s = &analysis.spectrum;
+    if s.method != Method::Dft {
+        return Err("the certified map needs the Fourier blocks of a rotation-symmetric configuration".into());
+    }
+    let config = &analysis.discovered.config;
+    let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { config.valence() };
+    let orbits = Orbits::from_labels(&s.labels, period, s.valence);
+    let g = orbits.group_order;
+    if g < 3 {
+        return Err(format!("the rotation group has order {g}: blocks 1 and g − 1 do not split a pair"));
+    }
+    let l1 = s.eigenvalues.get(1).ok_or("the spectrum has no subdominant eigenvalue")?;
+    let rows: IntervalRows =
+        assemble_rows::<Interval>(scheme, &analysis.discovered, s.neighbourhood, &orbits.representative).map_err(
+            |e| match e {
+                AssembleError::Inexact => "numerical only: a weight has no enclosure".to_string(),
+                other => format!("the interval rows of S could not be assembled: {other:?}"),
+            },
+        )?;
+    // the map of the pair from blocks m and g − m winds m times around the
+    // centre: build it from the block the float spectrum puts λ1 in, so
+    // that a wrong-block pair is disproved by its winding number
+    let m = l1.blocks.iter().copied().filter(|&m| m >= 1 && 2 * m < g).min().ok_or_else(|| {
+        format!(
+            "λ1 is not from a pair of conjugate Fourier blocks m and {g} − m (blocks {:?}): no planar map to certify",
+            l1.blocks
+        )
+    })?;
+    let block = fourier_blocks(&rows, &orbits)
+        .into_iter()
+        .find(|(b, _)| *b == m)
+        .map(|(_, b)| b)
+        .ok_or("the Fourier block of λ1 is missing")?;
+    let (z, radius) = eigenvector(&block, faer::c64::new(l1.re, l1.im))
+        .map_err(|why| format!("the subdominant eigenvector of block {m} is not enclosed: {why}"))?;
+    cert.eigenvector_radius = Some(radius);
+    let list = orbits.block_orbits(m);
+    let mut pos = vec![usize::MAX; orbits.num_orbits()];
+    for (k, &o) in list.iter().enumerate() {
+        pos[o] = k;
+    }
+    let powers: Vec<CInterval> = (0..g)
+        .map(|t| {
+            let (c, s) = crate::numeric::interval::cos_sin_2pi(t as i64, g as i64);
+            CInterval::new(c, s)
+        })
+        .collect();
+    // x₍ₜ,ₐ₎ = ω^(mt)·zₐ: block m of S in the basis Σₜ ω^(mt) e₍ₜ,ₐ₎ (`fourier_blocks`)
+    let values: Vec<Point> = orbits
+        .member
+        .iter()
+        .map(|&(o, t)| {
+            if orbits.fixed[o] {
+                [Interval::point(0.0); 2]
+            } else {
+                let x = powers[(m * t) % g] * z[pos[o]];
+                [x.re, x.im]
+            }
+        })
+        .collect();
+    let d = &analysis.discovered;
+    let mut pts = vec![None; d.patch.num_vertices()];
+    for (k, &v) in d.analysis.iter().enumerate() {
+        pts[v] = Some(values[k]);
+    }
+    Ok(pts)
+}
+
+/// A ring face with its one-ring of faces laid out on the lattice: the
+/// corners of the face get (0,0), (1,0), (1,1), (0,1) (triangles: (0,0),
+/// (1,0), (0,1)), and every window vertex its lattice position.
+struct Window {
+    face: usize,
+    faces: Vec<usize>,
+    /// edge vectors along (1, 0) and along (0, 1)
+    along_u: Vec<Point>,
+    along_v: Vec<Point>,
+    /// every window point, for hulls
+    points: Vec<Point>,
+}
+
+impl Window {
+    fn around(net: &Net<Point>, vf: &[Vec<usize>], f: usize) -> Result<Window, String> {
+        let mesh = &net.mesh;
+        let face = mesh.face(f);
+        let m = face.len();
+        if mesh.face_point(f).is_some() {
+            return Err("the ring's faces carry face control vertices, not a box-spline net".into());
+        }
+        let (valence, corners): (usize, &[(i32, i32)]) = match m {
+            4 => (4, &[(0, 0), (1, 0), (1, 1), (0, 1)]),
+            3 => (6, &[(0, 0), (1, 0), (0, 1)]),
+            _ => return Err(format!("a ring face has {m} sides")),
+        };
+        for &c in face {
+            if vf[c].len() != valence || vf[c].iter().any(|&g| mesh.face(g).len() != m) {
+                return Err("a ring face has a corner that is not regular".into());
+            }
+        }
+        let mut faces: Vec<usize> = face.iter().flat_map(|&c| vf[c].iter().copied()).collect();
+        faces.sort_unstable();
+        faces.dedup();
+        let expected = if m == 4 { 9 } else { 13 };
+        if faces.len() != expected {
+            return Err("a ring face's one-ring of faces is not a regular grid".into());
+        }
+        // the next edge of a face turns by 90° (quads) or 120° (triangles,
+        // in lattice coordinates whose third direction is (−1, 1))
+        let turn = |(x, y): (i32, i32)| if m == 4 { (-y, x) } else { (-x - y, x) };
+        let mut coords: HashMap<usize, (i32, i32)> = face.iter().copied().zip(corners.iter().copied()).collect();
+        let mut placed: HashSet<usize> = HashSet::from([f]);
+        let conflict = || "a ring face's one-ring of faces does not lie on one lattice".to_string();
+        while placed.len() < faces.len() {
+            let mut progress = false;
+            let pending: Vec<usize> = faces.iter().copied().filter(|g| !placed.contains(g)).collect();
+            for g in pending {
+                let gf = mesh.face(g);
+                let Some(k) = (0..m).find(|&k| coords.contains_key(&gf[k]) && coords.contains_key(&gf[(k + 1) % m]))
+                else {
+                    continue;
+                };
+                let (a, b) = (coords[&gf[k]], coords[&gf[(k + 1) % m]]);
+                let e = (b.0 - a.0, b.1 - a.1);
+                let t = turn(e);
+                let mut next = vec![(gf[(k + 2) % m], (b.0 + t.0, b.1 + t.1))];
+                if m == 4 {
+                    next.push((gf[(k + 3) % m], (a.0 + t.0, a.1 + t.1)));
+                }
+                for (v, c) in next {
+                    if *coords.entry(v).or_insert(c) != c {
+                        return Err(conflict());
+                    }
+                }
+                placed.insert(g);
+                progress = true;
+            }
+            if !progress {
+                return Err(conflict());
+            }
+        }
+        let distinct: HashSet<(i32, i32)> = coords.values().copied().collect();
+        if distinct.len() != coords.len() || coords.len() != if m == 4 { 16 } else { 12 } {
+            return Err(conflict());
+        }
+        let p = |v: usize| net.points[v].ok_or_else(|| "a window point is not determined".to_string());
+        let (mut along_u, mut along_v) = (Vec::new(), Vec::new());
+        for &g in &faces {
+            let gf = mesh.face(g);
+            for k in 0..m {
+                let (a, b) = (gf[k], gf[(k + 1) % m]);
+                let (ca, cb) = (coords[&a], coords[&b]);
+                let diff = |from: Point, to: Point| [to[0] - from[0], to[1] - from[1]];
+                match (cb.0 - ca.0, cb.1 - ca.1) {
+                    (1, 0) => along_u.push(diff(p(a)?, p(b)?)),
+                    (-1, 0) => along_u.push(diff(p(b)?, p(a)?)),
+                    (0, 1) => along_v.push(diff(p(a)?, p(b)?)),
+                    (0, -1) => along_v.push(diff(p(b)?, p(a)?)),
+                    _ => {}
+                }
+            }
+        }
+        let points = coords.keys().map(|&v| p(v)).collect::<Result<Vec<_>, String>>()?;
+        Ok(Window { face: f, faces, along_u, along_v, points })
+    }
+
+    /// An enclosure of the range of det(uᵢ, vⱼ) over the window's edge
+    /// vectors (the Jacobian over the face lies in it); the flag says whether
+    /// every pair was finite.
+    fn jacobian_bounds(&self) -> (Interval, bool) {
+        let mut lo = f64::INFINITY;
+        let mut hi = f64::NEG_INFINITY;
+        for u in &self.along_u {
+            for v in &self.along_v {
+                let det = u[0] * v[1] - u[1] * v[0];
+                lo = lo.min(det.lo);
+                hi = hi.max(det.hi);
+            }
+        }
+        let finite = lo.is_finite() && hi.is_finite();
+        (if finite { Interval::new(lo, hi) } else { Interval::new(f64::NEG_INFINITY, f64::INFINITY) }, finite)
+    }
+}
+
+/// Check the rules at every regular entity the windows hold against one
+/// box spline's masks, exactly. Returns the box spline and the number of
+/// stencils compared.
+fn check_rules(
+    scheme: &dyn Scheme,
+    mesh: &PolyMesh,
+    ring: &[usize],
+    windows: &[Window],
+) -> Result<(RegularPart, usize), String> {
+    let mut corners: HashSet<usize> = HashSet::new();
+    let mut faces: HashSet<usize> = HashSet::new();
+    for w in windows {
+        corners.extend(mesh.face(w.face).iter().copied());
+        faces.extend(w.faces.iter().copied());
+    }
+    debug_assert_eq!(ring.len(), windows.len());
+    let refined = connectivity(scheme, mesh).map_err(|e| format!("the net could not be refined: {e}"))?;
+    let vf = mesh.vertex_faces();
+    let ternary = scheme.topology().faces_per_face() == 9;
+    let mut part: Option<RegularPart> = None;
+    let mut checked = 0;
+    for &origin in &refined.vertex_origins {
+        let (kind, expected) = match origin {
+            Origin::Vertex(v) if corners.contains(&v) => vertex_mask(mesh, &vf, v, ternary)?,
+            Origin::Edge(a, b) if corners.contains(&a) || corners.contains(&b) => edge_mask(mesh, &vf, a, b, ternary)?,
+            Origin::Face(g) if faces.contains(&g) => {
+                let gf = mesh.face(g);
+                if gf.len() != 4 {
+                    return Err("a face rule on triangles is not a box-spline rule this certificate knows".into());
+                }
+                (RegularPart::BicubicBSpline, gf.iter().map(|&v| (v, Rational::ratio(1, 4))).collect())
+            }
+            Origin::Corner { face: g, corner: k } if faces.contains(&g) => {
+                let gf = mesh.face(g);
+                if gf.len() != 4 {
+                    return Err("a corner rule of a non-quad is not a box-spline rule this certificate knows".into());
+                }
+                // dual: (3, 1)²/16 over the face; ternary: the interior
+                // point near corner k, (6, 3)²/81
+                let (kind, mask, denominator) = if ternary {
+                    (RegularPart::BiquadraticBSplineTernary, [(0, 36), (1, 18), (2, 9), (3, 18)], 81)
+                } else {
+                    (RegularPart::BiquadraticBSpline, [(0, 9), (1, 3), (2, 1), (3, 3)], 16)
+                };
+                (kind, mask.iter().map(|&(s, w)| (gf[(k + s) % 4], Rational::ratio(w, denominator))).collect())
+            }
+            _ => continue,
+        };
+        if *part.get_or_insert(kind) != kind {
+            return Err("the rules over the ring mix box splines".into());
+        }
+        let stencil = stencil_at::<Rational>(scheme, mesh, origin)
+            .map_err(|_| "a rule over the ring has an irrational weight".to_string())?
+            .ok_or("a rule over the ring cannot be evaluated on the net")?;
+        let mut got: HashMap<usize, Rational> = HashMap::new();
+        for (v, w) in stencil.terms {
+            *got.entry(v).or_insert_with(<Rational as Weight>::zero) += w;
+        }
+        got.retain(|_, w| !Weight::is_zero(w));
+        if got != expected {
+            return Err(format!(
+                "numerical only: the rules over the ring are not the {}'s (at {origin:?} the stencil differs from its \
+                 mask), so the ring is not a box spline of its net",
+                kind.describe()
+            ));
+        }
+        checked += 1;
+    }
+    part.map(|p| (p, checked)).ok_or_else(|| "no rule over the ring was recognised".to_string())
+}
+
+/// The mask at a regular vertex: bicubic (valence-4 quads), ternary
+/// biquadratic, or Loop's (valence-6 triangles).
+fn vertex_mask(
+    mesh: &PolyMesh,
+    vf: &[Vec<usize>],
+    v: usize,
+    ternary: bool,
+) -> Result<(RegularPart, HashMap<usize, Rational>), String> {
+    let around = &vf[v];
+    let m = mesh.face(around[0]).len();
+    let mut mask: HashMap<usize, Rational> = HashMap::new();
+    let mut neighbours: HashSet<usize> = HashSet::new();
+    let mut diagonal: HashSet<usize> = HashSet::new();
+    for &g in around {
+        let gf = mesh.face(g);
+        let k = gf.iter().position(|&x| x == v).ok_or("a vertex's face does not hold it")?;
+        neighbours.insert(gf[(k + 1) % gf.len()]);
+        neighbours.insert(gf[(k + gf.len() - 1) % gf.len()]);
+        if gf.len() == 4 {
+            diagonal.insert(gf[(k + 2) % 4]);
+        }
+    }
+    let (kind, centre, edge, diag) = match (m, around.len()) {
+        (4, 4) if ternary => (RegularPart::BiquadraticBSplineTernary, (49, 81), (7, 81), (1, 81)),
+        (4, 4) => (RegularPart::BicubicBSpline, (9, 16), (3, 32), (1, 64)),
+        (3, 6) => (RegularPart::ThreeDirectionQuarticBoxSpline, (5, 8), (1, 16), (0, 1)),
+        _ => return Err("a vertex over the ring is not regular".into()),
+    };
+    mask.insert(v, Rational::ratio(centre.0, centre.1));
+    for n in neighbours {
+        mask.insert(n, Rational::ratio(edge.0, edge.1));
+    }
+    for n in diagonal {
+        mask.insert(n, Rational::ratio(diag.0, diag.1));
+    }
+    Ok((kind, mask))
+}
+
+/// The mask at an edge between regular faces (ternary: the new vertex on
+/// a–b near a).
+fn edge_mask(
+    mesh: &PolyMesh,
+    vf: &[Vec<usize>],
+    a: usize,
+    b: usize,
+    ternary: bool,
+) -> Result<(RegularPart, HashMap<usize, Rational>), String> {
+    let sides: Vec<usize> = vf[a].iter().copied().filter(|g| mesh.face(*g).contains(&b)).collect();
+    if sides.len() != 2 {
+        return Err("an edge over the ring does not have two faces".into());
+    }
+    let m = mesh.face(sides[0]).len();
+    if sides.iter().any(|&g| mesh.face(g).len() != m) {
+        return Err("an edge over the ring lies between a quad and a triangle".into());
+    }
+    if ternary && m == 4 {
+        // along the edge (6, 3)/9, across it (1, 7, 1)/9
+        let mut mask: HashMap<usize, Rational> = HashMap::new();
+        mask.insert(a, Rational::ratio(42, 81));
+        mask.insert(b, Rational::ratio(21, 81));
+        for g in sides {
+            let gf = mesh.face(g);
+            let k = gf.iter().position(|&x| x == a).ok_or("an edge's face does not hold it")?;
+            // the corner of g next to a that is not b, and the one next to b
+            let (next, prev) = (gf[(k + 1) % 4], gf[(k + 3) % 4]);
+            let beside_a = if next == b { prev } else { next };
+            let beside_b = gf[(k + 2) % 4];
+            mask.insert(beside_a, Rational::ratio(6, 81));
+            mask.insert(beside_b, Rational::ratio(3, 81));
+        }
+        return Ok((RegularPart::BiquadraticBSplineTernary, mask));
+    }
+    let (kind, end, other) = match m {
+        4 => (RegularPart::BicubicBSpline, (3, 8), (1, 16)),
+        3 => (RegularPart::ThreeDirectionQuarticBoxSpline, (3, 8), (1, 8)),
+        _ => return Err("an edge over the ring borders a face that is neither a quad nor a triangle".into()),
+    };
+    let mut mask: HashMap<usize, Rational> = HashMap::new();
+    mask.insert(a, Rational::ratio(end.0, end.1));
+    mask.insert(b, Rational::ratio(end.0, end.1));
+    for g in sides {
+        for &x in mesh.face(g).iter().filter(|&&x| x != a && x != b) {
+            mask.insert(x, Rational::ratio(other.0, other.1));
+        }
+    }
+    Ok((kind, mask))
+}
+
+/// The winding number of the annulus's inner boundary (the boundary of the
+/// faces `inside` it) around the centre, from
+/// the angular ranges of the hulls of the adjacent ring faces' windows.
+fn winding_number(net: &Net<Point>, ring: &[usize], inside: &[usize], windows: &[Window]) -> Result<i64, String> {
+    let mesh = &net.mesh;
+    let mut half: HashSet<(usize, usize)> = HashSet::new();
+    for &f in inside {
+        let face = mesh.face(f);
+        for k in 0..face.len() {
+            half.insert((face[k], face[(k + 1) % face.len()]));
+        }
+    }
+    // directed boundary edges of the inner region, in face orientation
+    let mut next: HashMap<usize, usize> = HashMap::new();
+    for &(a, b) in &half {
+        if !half.contains(&(b, a)) && next.insert(a, b).is_some() {
+            return Err("the inner boundary is not a simple chain".into());
+        }
+    }
+    let ring_of_half: HashMap<(usize, usize), usize> = ring
+        .iter()
+        .enumerate()
+        .flat_map(|(i, &f)| {
+            let face = mesh.face(f);
+            (0..face.len()).map(move |k| ((face[k], face[(k + 1) % face.len()]), i))
+        })
+        .collect();
+    let start = *next.keys().min().ok_or("the inner region has no boundary")?;
+    let mut cones: Vec<(f64, f64)> = Vec::new();
+    let mut a = start;
+    loop {
+        let b = next[&a];
+        // the ring face on the other side holds the edge as (b, a)
+        let &w = ring_of_half.get(&(b, a)).ok_or("an inner boundary edge has no ring face beside it")?;
+        cones.push(angular_range(&windows[w].points)?);
+        a = b;
+        if a == start {
+            break;
+        }
+        if cones.len() > next.len() {
+            return Err("the inner boundary is not one closed chain".into());
+        }
+    }
+    if cones.len() != next.len() {
+        return Err("the inner boundary has more than one component".into());
+    }
+    // lift each range next to the previous one; the arcs share their
+    // endpoints, so consecutive ranges meet, and being narrower than π each,
+    // they meet for exactly one shift by a multiple of 2π
+    let tau = 2.0 * std::f64::consts::PI;
+    let lift = |prev: (f64, f64), c: (f64, f64)| -> Result<(f64, f64), String> {
+        let mid_gap = (prev.0 + prev.1 - c.0 - c.1) / 2.0;
+        let k = (mid_gap / tau).round();
+        let shifted = (c.0 + k * tau, c.1 + k * tau);
+        if shifted.0 <= prev.1 && prev.0 <= shifted.1 {
+            Ok(shifted)
+        } else {
+            Err("two consecutive boundary arcs have disjoint angular ranges".into())
+        }
+    };
+    let mut prev = cones[0];
+    for &c in &cones[1..] {
+        prev = lift(prev, c)?;
+    }
+    let closing = lift(prev, cones[0])?;
+    Ok(((closing.0 - cones[0].0) / tau).round() as i64)
+}
+
+/// The angles of a set of enclosed points as an interval of width below π,
+/// when they lie in an open half-plane through the origin.
+fn angular_range(points: &[Point]) -> Result<(f64, f64), String> {
+    let (mut dx, mut dy) = (0.0, 0.0);
+    for p in points {
+        dx += p[0].mid();
+        dy += p[1].mid();
+    }
+    let (cx, cy) = (Interval::point(dx), Interval::point(dy));
+    let base = dy.atan2(dx);
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for p in points {
+        for x in [p[0].lo, p[0].hi] {
+            for y in [p[1].lo, p[1].hi] {
+                let (px, py) = (Interval::point(x), Interval::point(y));
+                let dot = cx * px + cy * py;
+                if !(dot.lo > 0.0) {
+                    return Err("the hull of a boundary arc's window is not in a half-plane through the centre".into());
+                }
+                let cross = cx * py - cy * px;
+                let angle = cross.mid().atan2(dot.mid());
+                lo = lo.min(angle);
+                hi = hi.max(angle);
+            }
+        }
+    }
+    // atan2 is not correctly rounded, and the cross product was rounded to
+    // its midpoint: widen by far more than either error
+    let pad = 1e-9;
+    Ok((base + lo - pad, base + hi + pad))
+}

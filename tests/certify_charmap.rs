@@ -1,0 +1,147 @@
+//! Certified characteristic maps (`charmap --certify`, `certify::charmap`).
+//!
+//! What the certificate must prove comes from the literature, never from
+//! program output:
+//! - Catmull–Clark, Doo–Sabin and Loop are C¹ at every valence (Peters & Reif
+//!   1998 and 1997, Zorin 2000; Umlauf 2000): their characteristic maps are
+//!   regular and injective, with winding number 1;
+//! - at the regular valence (4 for quads, 6 for triangles) a box-spline
+//!   scheme's characteristic map is linear (linear precision), so the
+//!   Jacobian is constant and its smallest lower bound over the ring equals
+//!   its largest upper bound, up to the enclosures' widths;
+//! - the regular rules of Kobbelt's sqrt(3) and of 4-3 subdivision are not
+//!   the bicubic, biquadratic or three-direction box spline's, and non-box
+//!   subdivision carries face control vertices: no box-spline proof applies;
+//! - `schemes/loop-block2-dominant.toml` is built (its comment says how) so
+//!   that at valence 4 the subdominant 1/2 sits in block 2.
+
+mod common;
+use common::subdlab;
+use rayon::prelude::*;
+use subdlab::certify::charmap::RegularPart;
+use subdlab::certify::matrix::Check;
+use subdlab::certify::{certify_charmap, CharMapCertificate, Verdict};
+use subdlab::neighbourhood::Configuration;
+use subdlab::schemes::{self, Scheme};
+use subdlab::spectrum::{analyse, Options};
+
+fn certificate(scheme: &dyn Scheme, n: usize) -> CharMapCertificate {
+    let config = Configuration::regular(scheme, n).unwrap();
+    let analysis = analyse(scheme, &config, &Options::default()).unwrap();
+    certify_charmap(scheme, &analysis, 4).unwrap()
+}
+
+fn builtin(name: &str, n: usize) -> CharMapCertificate {
+    certificate(schemes::build(name, &[]).unwrap().as_ref(), n)
+}
+
+fn assert_proved(c: &CharMapCertificate, part: RegularPart) {
+    let who = format!("{} n = {}", c.scheme, c.valence);
+    assert_eq!(c.regularity, Verdict::Proved, "{who}: {:?}", c.regularity);
+    assert_eq!(c.injectivity, Verdict::Proved, "{who}: {:?}", c.injectivity);
+    assert_eq!(c.regular_part, Some(part), "{who}");
+    assert_eq!(c.winding_number, Some(1), "{who}");
+    assert_eq!((c.negative_faces, c.undecided_faces), (0, 0), "{who}");
+    assert!(c.positive_faces == c.ring_faces && c.ring_faces > 0, "{who}");
+    assert!(c.min_jacobian_lower_bound.unwrap() > 0.0, "{who}");
+    assert!(c.rules_checked > 0, "{who}");
+    // the eigenvector and net enclosures are tight: far below the margins
+    assert!(c.eigenvector_radius.unwrap() < 1e-10 && c.max_point_width.unwrap() < 1e-9, "{who}");
+    // conditional exactly when S's rotation symmetry is confirmed only to
+    // interval overlap
+    let rotation = &c.spectrum.premises.as_ref().expect("premises checked").rotation_symmetry;
+    assert_eq!(c.geometry_conditional, *rotation != Check::Exact, "{who}");
+}
+
+#[test]
+fn catmull_clark_loop_and_doo_sabin_are_proved_for_every_valence_3_to_50() {
+    let cases: Vec<(&str, RegularPart, usize)> = [
+        ("catmull-clark", RegularPart::BicubicBSpline),
+        ("loop", RegularPart::ThreeDirectionQuarticBoxSpline),
+        ("doo-sabin", RegularPart::BiquadraticBSpline),
+    ]
+    .into_iter()
+    .flat_map(|(s, p)| (3..=50).map(move |n| (s, p, n)))
+    .collect();
+    cases.par_iter().for_each(|&(s, part, n)| {
+        let c = builtin(s, n);
+        assert_proved(&c, part);
+        // the spectral half is proved too (unconditionally where every row
+        // is rational); so Reif's criterion as a whole
+        assert_eq!(c.spectrum.verdict, Verdict::Proved, "{s} n = {n}");
+        assert_eq!(c.c1, Verdict::Proved, "{s} n = {n}");
+        assert_eq!(c.conditional, c.spectrum.conditional, "{s} n = {n}");
+    });
+}
+
+#[test]
+fn the_bi2_schemes_are_proved_for_valences_3_to_24() {
+    let cases: Vec<(&str, RegularPart, usize)> =
+        [("pgs", RegularPart::BiquadraticBSpline), ("tps", RegularPart::BiquadraticBSplineTernary)]
+            .into_iter()
+            .flat_map(|(s, p)| (3..=24).map(move |n| (s, p, n)))
+            .collect();
+    cases.par_iter().for_each(|&(s, part, n)| assert_proved(&builtin(s, n), part));
+}
+
+#[test]
+fn at_the_regular_valence_the_jacobian_is_constant() {
+    for (s, n) in [("catmull-clark", 4), ("doo-sabin", 4), ("loop", 6), ("tps", 4)] {
+        let c = builtin(s, n);
+        let ratio = c.min_jacobian_ratio.unwrap();
+        assert!((ratio - 1.0).abs() < 1e-9, "{s}: smallest lower bound over largest upper bound {ratio}");
+    }
+}
+
+#[test]
+fn schemes_without_a_box_spline_regular_part_are_not_proved_and_say_why() {
+    for (s, n, why) in [
+        ("sqrt3", 5, "numerical only: the rules over the ring are not"),
+        ("four-three", 5, "numerical only: the rules over the ring are not"),
+        ("non-box", 5, "face control vertices"),
+    ] {
+        let c = builtin(s, n);
+        match &c.regularity {
+            Verdict::NotProved(r) => assert!(r.contains(why), "{s}: {r}"),
+            other => panic!("{s}: expected NOT PROVED, got {other:?}"),
+        }
+        assert!(matches!(c.c1, Verdict::NotProved(_)), "{s}: {:?}", c.c1);
+    }
+}
+
+#[test]
+fn a_block_2_dominant_variant_is_disproved_by_its_spectrum() {
+    let scheme =
+        schemes::resolve(&format!("{}/schemes/loop-block2-dominant.toml", env!("CARGO_MANIFEST_DIR")), &[]).unwrap();
+    let c = certificate(scheme.as_ref(), 4);
+    assert!(matches!(c.spectrum.verdict, Verdict::Disproved(_)), "{:?}", c.spectrum.verdict);
+    match &c.c1 {
+        Verdict::Disproved(why) => assert!(why.starts_with("spectrum: block 2"), "{why}"),
+        other => panic!("expected DISPROVED, got {other:?}"),
+    }
+    // block 2 is its own conjugate at n = 4: no planar map to certify
+    assert!(matches!(&c.regularity, Verdict::NotProved(r) if r.contains("conjugate Fourier blocks")));
+}
+
+#[test]
+fn the_cli_prints_the_certificate_in_json_and_text() {
+    let out = subdlab(&["charmap", "catmull-clark", "-n", "7", "--certify", "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let c = &v["certificate"];
+    assert_eq!(c["c1"]["verdict"], "proved");
+    assert_eq!(c["regularity"]["verdict"], "proved");
+    assert_eq!(c["injectivity"]["verdict"], "proved");
+    assert_eq!(c["regular_part"], "bicubic-b-spline");
+    assert_eq!(c["winding_number"], 1);
+    assert!(c["min_jacobian_lower_bound"].as_f64().unwrap() > 0.0);
+    assert!(c["spectrum"]["margins"]["gap_lower_bound"].as_f64().unwrap() > 0.0);
+    // the numerical verdicts stay beside the certificate
+    assert_eq!(v["regular"], true);
+    let text = subdlab(&["charmap", "doo-sabin", "-n", "5", "--certify"]);
+    let text = String::from_utf8_lossy(&text.stdout);
+    assert!(text.contains("certified C1 (Reif's criterion): PROVED"), "{text}");
+    assert!(text.contains("regular part: biquadratic B-spline"), "{text}");
+    let bad = common::fails(&["charmap", "loop", "-n", "5", "--certify", "--certify-levels", "9"]);
+    assert!(bad.contains("--certify-levels must be between 2 and 6"), "{bad}");
+}
