@@ -123,6 +123,55 @@ fn a_block_2_dominant_variant_is_disproved_by_its_spectrum() {
     assert!(matches!(&c.regularity, Verdict::NotProved(r) if r.contains("conjugate Fourier blocks")));
 }
 
+fn twisted_scheme(t: &str) -> Box<dyn Scheme> {
+    schemes::resolve(
+        &format!("{}/schemes/catmull-clark-twisted-edge.toml", env!("CARGO_MANIFEST_DIR")),
+        &[("t".to_string(), t.to_string())],
+    )
+    .unwrap()
+}
+
+fn twisted(t: &str, n: usize, levels: usize) -> CharMapCertificate {
+    let scheme = twisted_scheme(t);
+    let config = Configuration::regular(scheme.as_ref(), n).unwrap();
+    let analysis = analyse(scheme.as_ref(), &config, &Options::default()).unwrap();
+    certify_charmap(scheme.as_ref(), &analysis, levels).unwrap()
+}
+
+#[test]
+fn a_wrong_block_map_is_proved_regular_and_disproved_injective_by_its_winding_number() {
+    // the map of a pair from Fourier blocks m and n − m turns every sector by
+    // m sectors, so it winds m times around the centre; here m = 3
+    let c = twisted("1/8", 7, 4);
+    assert!(matches!(&c.spectrum.verdict, Verdict::Disproved(w) if w.contains("block 4")), "{:?}", c.spectrum.verdict);
+    assert_eq!(c.regularity, Verdict::Proved);
+    assert_eq!(c.winding_number, Some(3));
+    assert!(matches!(&c.injectivity, Verdict::Disproved(w) if w.contains("winding number is 3")), "{:?}", c.injectivity);
+    assert!(matches!(c.c1, Verdict::Disproved(_)));
+}
+
+#[test]
+fn a_thin_ring_that_the_raster_rejects_at_the_defaults_is_proved_injective() {
+    use subdlab::charmap::{check_map, CharMapOptions};
+    let scheme = twisted_scheme("-1/4");
+    let config = Configuration::regular(scheme.as_ref(), 7).unwrap();
+    let analysis = analyse(scheme.as_ref(), &config, &Options::default()).unwrap();
+    // undecided faces at 4 levels: NOT PROVED, never a guess
+    let c = certify_charmap(scheme.as_ref(), &analysis, 4).unwrap();
+    assert!(matches!(&c.regularity, Verdict::NotProved(w) if w.contains("undecided")), "{:?}", c.regularity);
+    // 6 levels decide every face
+    let c = certify_charmap(scheme.as_ref(), &analysis, 6).unwrap();
+    assert_proved(&c, RegularPart::BicubicBSpline);
+    assert_eq!(c.c1, Verdict::Proved);
+    // the numerical check at its defaults reports an overlap with the scaled
+    // copy (the piecewise-linear ring at level 4 is off by more than the
+    // ring's width allows); refined, it agrees with the proof
+    let coarse = check_map(scheme.as_ref(), &analysis, &CharMapOptions::checked(4, 512).unwrap()).unwrap();
+    assert!(coarse.regular && !coarse.injective && coarse.copy_overlap_pixels.unwrap() > 0);
+    let fine = check_map(scheme.as_ref(), &analysis, &CharMapOptions::checked(6, 1024).unwrap()).unwrap();
+    assert!(fine.regular && fine.injective, "{:?}", fine.reasons);
+}
+
 #[test]
 fn the_cli_prints_the_certificate_in_json_and_text() {
     let out = subdlab(&["charmap", "catmull-clark", "-n", "7", "--certify", "--json"]);
