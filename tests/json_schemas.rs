@@ -164,6 +164,41 @@ fn charmap_json() {
     check("charmap (no map)", &v, &fields);
     assert_eq!(v["spectral_status"], "not-real-positive");
     assert!(v["winding_number"].is_null() && v["ring_area"].is_null());
+    // --certify: the same fields and the certificate
+    let v = json(&["charmap", "loop", "-n", "5", "--certify", "--json"]);
+    check("charmap --certify", &v, VERSIONED);
+    check("charmap --certify", &v, &fields);
+    let c = &v["certificate"];
+    check(
+        "charmap.certificate",
+        c,
+        &[
+            ("scheme", "s"),
+            ("valence", "i"),
+            ("spectrum", "o"),
+            ("regularity", "o"),
+            ("injectivity", "o"),
+            ("c1", "o"),
+            ("conditional", "b"),
+            ("geometry_conditional", "b"),
+            ("regular_part", "s?"),
+            ("rules_checked", "i"),
+            ("levels", "i?"),
+            ("ring_faces", "i"),
+            ("positive_faces", "i"),
+            ("negative_faces", "i"),
+            ("undecided_faces", "i"),
+            ("min_jacobian_lower_bound", "f?"),
+            ("min_jacobian_ratio", "f?"),
+            ("eigenvector_radius", "f?"),
+            ("max_point_width", "f?"),
+            ("winding_number", "i?"),
+            ("reasons", "a"),
+        ],
+    );
+    for part in ["regularity", "injectivity", "c1"] {
+        check(&format!("charmap.certificate.{part}"), &c[part], &[("verdict", "s")]);
+    }
 }
 
 #[test]
