@@ -8,8 +8,8 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::time::Duration;
-use subdlab::certify::charmap::DEFAULT_MAX_LEVELS;
 use subdlab::certify::certify_charmap;
+use subdlab::certify::charmap::DEFAULT_MAX_LEVELS;
 use subdlab::neighbourhood::Configuration;
 use subdlab::schemes;
 use subdlab::spectrum::{analyse, Options};

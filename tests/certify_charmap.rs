@@ -146,7 +146,11 @@ fn a_wrong_block_map_is_proved_regular_and_disproved_injective_by_its_winding_nu
     assert!(matches!(&c.spectrum.verdict, Verdict::Disproved(w) if w.contains("block 4")), "{:?}", c.spectrum.verdict);
     assert_eq!(c.regularity, Verdict::Proved);
     assert_eq!(c.winding_number, Some(3));
-    assert!(matches!(&c.injectivity, Verdict::Disproved(w) if w.contains("winding number is 3")), "{:?}", c.injectivity);
+    assert!(
+        matches!(&c.injectivity, Verdict::Disproved(w) if w.contains("winding number is 3")),
+        "{:?}",
+        c.injectivity
+    );
     assert!(matches!(c.c1, Verdict::Disproved(_)));
 }
 
