@@ -193,6 +193,7 @@ fn charmap_json() {
             ("eigenvector_radius", "f?"),
             ("max_point_width", "f?"),
             ("winding_number", "i?"),
+            ("fold_witness", "o?"),
             ("reasons", "a"),
         ],
     );

@@ -139,7 +139,23 @@ pub struct CharMapCertificate {
     pub eigenvector_radius: Option<f64>,
     pub max_point_width: Option<f64>,
     pub winding_number: Option<i64>,
+    /// when regularity is disproved: a ring face where the Jacobian is
+    /// proved negative and one where it is proved positive
+    pub fold_witness: Option<FoldWitness>,
     pub reasons: Vec<String>,
+}
+
+/// Two ring faces with Jacobians of proved opposite signs.
+#[derive(Clone, Debug, Serialize)]
+pub struct FoldWitness {
+    /// the image of the negative face's centre (the average of its corners'
+    /// enclosure midpoints; a location, not part of the proof)
+    pub negative_at: [f64; 2],
+    /// the Jacobian's upper bound there (below 0), in net units
+    pub negative_upper_bound: f64,
+    pub positive_at: [f64; 2],
+    /// the Jacobian's lower bound there (above 0), in net units
+    pub positive_lower_bound: f64,
 }
 
 /// Certify the characteristic map of an analysis (analysis neighbourhood).
@@ -174,6 +190,7 @@ pub fn certify_charmap(
         eigenvector_radius: None,
         max_point_width: None,
         winding_number: None,
+        fold_witness: None,
         reasons: Vec::new(),
     };
     let geometric = geometric_half(scheme, analysis, max_levels, &mut cert);
@@ -273,6 +290,33 @@ fn geometric_half(
         cert.max_point_width =
             Some(net.points.iter().flatten().map(|p| p[0].width().max(p[1].width())).fold(0.0, f64::max));
         if positive > 0 && negative > 0 {
+            let centre = |f: usize| {
+                let face = net.mesh.face(f);
+                let mut c = [0.0; 2];
+                for &v in face {
+                    let p = net.points[v].expect("window corners are defined");
+                    c[0] += p[0].mid() / face.len() as f64;
+                    c[1] += p[1].mid() / face.len() as f64;
+                }
+                c
+            };
+            let most = |better: &dyn Fn(&Interval, &Interval) -> bool| {
+                let mut best: Option<usize> = None;
+                for (i, b) in bounds.iter().enumerate() {
+                    if best.is_none_or(|j| better(&b.0, &bounds[j].0)) {
+                        best = Some(i);
+                    }
+                }
+                best.expect("some face decided")
+            };
+            let neg = most(&|a, b| a.hi < b.hi);
+            let pos = most(&|a, b| a.lo > b.lo);
+            cert.fold_witness = Some(FoldWitness {
+                negative_at: centre(ring[neg]),
+                negative_upper_bound: bounds[neg].0.hi,
+                positive_at: centre(ring[pos]),
+                positive_lower_bound: bounds[pos].0.lo,
+            });
             let why = format!(
                 "at {levels} levels the Jacobian is proved positive on {positive} ring faces and negative on \
                  {negative}: it changes sign"

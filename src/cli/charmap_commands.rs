@@ -234,6 +234,17 @@ fn certificate_table(c: &crate::certify::CharMapCertificate) -> String {
     if let Some(w) = c.winding_number {
         out += &format!("  winding number {w} (certified)\n");
     }
+    if let Some(w) = &c.fold_witness {
+        out += &format!(
+            "  witness: Jacobian ≤ {:.3e} < 0 on the ring face at ({:.4}, {:.4}), ≥ {:.3e} > 0 on the one at ({:.4}, {:.4})\n",
+            w.negative_upper_bound,
+            w.negative_at[0],
+            w.negative_at[1],
+            w.positive_lower_bound,
+            w.positive_at[0],
+            w.positive_at[1]
+        );
+    }
     out
 }
 
