@@ -7,8 +7,11 @@
 //!   Storry 1988); every weight is rational, so the premises are exact;
 //! - Loop: λ1 = 3/8 + cos(2π/n)/4 (block 1 of the edge rule; Loop 1987); the
 //!   rows off the centre are rational at every valence (3/8, 1/8 and the
-//!   regular vertex's β(6) = 1/16), the centre's only at n ∈ {3, 4, 6};
-//! - Doo–Sabin: λ1 = 1/2 at every valence (Doo & Sabin 1978);
+//!   regular vertex's β(6) = 1/16), the centre's only at n ∈ {3, 4, 6}, and
+//!   elsewhere in Q(ζ_n), where cos(2π/n) = (ζ_n + ζ_n^{−1})/2 is exact: the
+//!   premises are exact at every valence;
+//! - Doo–Sabin: λ1 = 1/2 at every valence (Doo & Sabin 1978); its ring-0
+//!   weights (3 + 2cos(2πj/n))/(4n) lie in Q(ζ_n) (in Q at n ∈ {3, 4, 6});
 //! - `schemes/loop-block2-dominant.toml`: by design block 2 carries 1/2 and
 //!   block 1 at most 1/4 at valence 4.
 //!
@@ -93,14 +96,20 @@ fn loop_is_proved_for_valences_3_to_50_with_the_closed_form_enclosed() {
         assert_proved(&c, &what);
         let closed = Interval::ratio(3, 8) + libm((2.0 * PI / n as f64).cos()) / Interval::point(4.0);
         assert!(lambda1(&c).overlaps(&closed), "{what}: λ1 ∈ {:?}, closed form {:?}", lambda1(&c), closed);
-        let p = c.premises.as_ref().unwrap();
-        // off the centre every row is rational: the mirror symmetry is exact
-        assert_eq!(p.mirror_symmetry, Check::Exact, "{what}");
-        // the centre's row (1 − nβ, β) is rational exactly when cos(2π/n) is
-        let rational = matches!(n, 3 | 4 | 6);
-        assert_eq!(p.row_sums_one == Check::Exact, rational, "{what}: {:?}", p.row_sums_one);
-        assert_eq!(c.conditional, !rational, "{what}");
+        assert_exact_in_the_cyclotomic_field(&c, n, &what);
     }
+}
+
+/// Every premise exact and the proof unconditional, in Q where cos(2π/n) is
+/// rational (n ∈ {3, 4, 6}), else in Q(ζ_n).
+fn assert_exact_in_the_cyclotomic_field(c: &SpectrumCertificate, n: usize, what: &str) {
+    let p = c.premises.as_ref().unwrap();
+    for check in [&p.row_sums_one, &p.mirror_symmetry, &p.rotation_symmetry] {
+        assert_eq!(*check, Check::Exact, "{what}: {p:?}");
+    }
+    assert!(p.exact && !c.conditional, "{what}");
+    let field = if matches!(n, 3 | 4 | 6) { "Q".to_string() } else { format!("Q(ζ_{n})") };
+    assert_eq!(p.field.as_deref(), Some(field.as_str()), "{what}");
 }
 
 #[test]
@@ -110,8 +119,8 @@ fn doo_sabin_is_proved_for_valences_3_to_50_with_one_half_enclosed() {
         let what = format!("doo-sabin n = {n}");
         assert_proved(&c, &what);
         assert!(lambda1(&c).contains(0.5), "{what}: λ1 ∈ {:?}", lambda1(&c));
-        // the ring-0 weights (3 + 2cos(2πj/n))/(4n) are rational exactly when cos(2π/n) is
-        assert_eq!(c.conditional, !matches!(n, 3 | 4 | 6), "{what}");
+        // the ring-0 weights (3 + 2cos(2πj/n))/(4n) are exact in Q(ζ_n)
+        assert_exact_in_the_cyclotomic_field(&c, n, &what);
     }
 }
 
@@ -130,17 +139,48 @@ fn the_block_2_dominant_loop_variant_is_disproved_with_its_witness() {
     assert!(block1.components.iter().any(|k| k.may_hold(faer::c64::new(0.25, 0.0))));
 }
 
+/// A Loop scheme file whose β uses √2 in place of cos(2π/n): a weight known
+/// in floating point only (neither rational nor in a cyclotomic field as the
+/// expression evaluator sees it).
+fn float_only_loop(dir: &std::path::Path) -> String {
+    let path = dir.join("loop-root-two.toml");
+    std::fs::write(
+        &path,
+        "name = \"loop-root-two\"\ntopology = \"primal-triangle\"\n\n[vertex]\n\
+         centre = \"3/8 + (3/8 + sqrt(2) / 8)^2\"\nedge = \"(5/8 - (3/8 + sqrt(2) / 8)^2) / n\"\n\n\
+         [edge]\nends = \"3/8\"\nopposite = \"1/8\"\n",
+    )
+    .unwrap();
+    path.to_str().unwrap().to_string()
+}
+
 #[test]
 fn float_only_weights_are_not_proved_and_say_why() {
-    // at valence 5 the designed edge weights hold cos(2πjm/5): the file's
-    // expressions evaluate in floating point only
-    for rel in ["schemes/loop-block2-dominant.toml", "schemes/loop-fourier-edge.toml"] {
-        let c = file(rel, 5);
-        match &c.verdict {
-            Verdict::NotProved(why) => assert!(why.starts_with("numerical only"), "{rel}: {why}"),
-            v => panic!("{rel}: {v:?}"),
-        }
+    let dir = tempfile::tempdir().unwrap();
+    let path = float_only_loop(dir.path());
+    let c = certificate_of(schemes::resolve(&path, &[]).unwrap().as_ref(), 5);
+    match &c.verdict {
+        Verdict::NotProved(why) => assert!(why.starts_with("numerical only"), "{why}"),
+        v => panic!("{v:?}"),
     }
+}
+
+#[test]
+fn fourier_designed_files_are_decided_where_their_weights_hold_irrational_cosines() {
+    // at valence 5 the designed edge weights Σ_m μ(m) cos(2πjm/5)/5 are
+    // elements of Q(ζ_5): enclosed, and the premises exact
+    let c = file("schemes/loop-fourier-edge.toml", 5);
+    assert_proved(&c, "loop-fourier-edge n = 5");
+    // μ(1) = 1/2 by design
+    assert!(lambda1(&c).contains(0.5), "{:?}", lambda1(&c));
+    assert_exact_in_the_cyclotomic_field(&c, 5, "loop-fourier-edge n = 5");
+    // block 2 (and its conjugate block 3) carries 1/2 by design, block 1 1/4
+    let c = file("schemes/loop-block2-dominant.toml", 5);
+    assert!(matches!(c.verdict, Verdict::Disproved(_)), "{:?}", c.verdict);
+    let w = c.witness.as_ref().unwrap();
+    assert!(w.block == 2 || w.block == 3, "{}", w.block);
+    assert!(w.component.may_hold(faer::c64::new(0.5, 0.0)));
+    assert!(c.premises.as_ref().unwrap().exact);
 }
 
 #[test]
@@ -208,10 +248,10 @@ fn the_chiral_loop_variant_is_disproved_and_its_mirror_premise_fails() {
 /// `certified = true` on a `spectral-c1` claim: the claim asks for a proof.
 /// Catmull–Clark's rows are rational (its weights need no cosine), so the
 /// premises are exact and the certificate proves Reif's conditions (its
-/// blocks' closed forms, above): HOLDS. Loop at n = 5 has weights with
-/// cos(2π/5), irrational, so its row-sum identity is confirmed only to
-/// interval overlap: no unconditional proof, INCONCLUSIVE with that reason;
-/// at n = 3, 4, 6 the cosines are rational and it HOLDS. The block-2-dominant
+/// blocks' closed forms, above): HOLDS. Loop's rows at n = 5 hold cos(2π/5),
+/// exact in Q(ζ_5): HOLDS too, as at n = 3, 4, 6 where they are rational. A
+/// Loop file whose β holds √2 has a weight known in floating point only: no
+/// proof, INCONCLUSIVE with the certificate's reason. The block-2-dominant
 /// Loop variant is disproved: a claim that it is C¹ is REFUTED, and the
 /// opposite claim (`expect = false`) HOLDS.
 #[test]
@@ -227,9 +267,12 @@ fn claims_can_demand_a_certified_verdict() {
     assert_eq!(o.verdict, Verdict::Holds, "{}", o.detail);
     assert!(o.computed.contains("certified PROVED"), "{}", o.computed);
     assert_eq!(run("scheme = \"loop\"\nvalences = [3, 4, 6]").verdict, Verdict::Holds);
-    let o = run("scheme = \"loop\"\nvalences = [5]");
+    let o = run("scheme = \"loop\"\nvalences = [5, 7]");
+    assert_eq!(o.verdict, Verdict::Holds, "{}", o.detail);
+    let dir = tempfile::tempdir().unwrap();
+    let o = run(&format!("scheme = \"{}\"\nvalences = [5]", float_only_loop(dir.path())));
     assert_eq!(o.verdict, Verdict::Inconclusive, "{}", o.detail);
-    assert!(o.detail.contains("no unconditional proof"), "{}", o.detail);
+    assert!(o.detail.contains("NOT PROVED (numerical only"), "{}", o.detail);
     let wrong = format!("{}/schemes/loop-block2-dominant.toml", env!("CARGO_MANIFEST_DIR"));
     let o = run(&format!("scheme = \"{wrong}\"\nvalences = [4]"));
     assert_eq!(o.verdict, Verdict::Refuted, "{}", o.detail);

@@ -64,8 +64,8 @@ fn ring_of(size: usize, seen: &'static [usize]) -> impl Fn(&[c64]) -> f64 {
         let mut y = vec![c64::new(0.0, 0.0); k];
         for i in (0..k).rev() {
             let mut v = x[i];
-            for l in i + 1..k {
-                v -= c64::new(0.25, 0.0) * y[l];
+            for &yl in &y[i + 1..k] {
+                v -= c64::new(0.25, 0.0) * yl;
             }
             y[i] = v;
         }

@@ -214,9 +214,9 @@ fn eon_rows_of_s_are_the_matrix_m_followed_by_zeros() {
                 let want = closed_form_m(n, f(&ratio(cw)));
                 let s = a.matrix.to_dense_f64();
                 for (r, &i) in idx.iter().enumerate() {
-                    for col in 0..s.len() {
+                    for (col, &got) in s[i].iter().enumerate() {
                         let w = idx.iter().position(|&c| c == col).map(|c| want[r][c]).unwrap_or(0.0);
-                        assert!((s[i][col] - w).abs() < 1e-14, "{faces} c={cw}: S[{i}][{col}] = {} vs {w}", s[i][col]);
+                        assert!((got - w).abs() < 1e-14, "{faces} c={cw}: S[{i}][{col}] = {got} vs {w}");
                     }
                 }
             }

@@ -42,9 +42,9 @@ fn printed_cells() -> Vec<[[i64; 2]; 2]> {
 
 fn eigen_2x2_has(m: [[Rational; 2]; 2], lambda: &Rational) -> bool {
     let mut a = QMatrix::zeros(2);
-    for i in 0..2 {
-        for j in 0..2 {
-            a.set(i, j, m[i][j].clone());
+    for (i, row) in m.iter().enumerate() {
+        for (j, x) in row.iter().enumerate() {
+            a.set(i, j, x.clone());
         }
     }
     a.charpoly().eval(lambda) == q(0, 1)

@@ -33,9 +33,11 @@ fn m_matrix(c: Rational) -> Vec<Vec<Rational>> {
     };
     let mut m = vec![vec![Rational::zero(); 5]; 5];
     m[0][0] = Rational::one() - al.clone();
-    for j in 1..5 {
-        m[0][j] = al.clone() / Rational::from_integer(n.into());
-        m[j][0] = q(1, 2);
+    for row in m.iter_mut().skip(1) {
+        row[0] = q(1, 2);
+    }
+    for x in m[0].iter_mut().skip(1) {
+        *x = al.clone() / Rational::from_integer(n.into());
     }
     for i in 0..4 {
         for j in 0..4 {
@@ -133,12 +135,13 @@ fn transition_node_limit_stencil_by_hand() {
         for x in a[c].iter_mut() {
             *x = x.clone() / piv.clone();
         }
-        for i in 0..8 {
-            if i != c && !a[i][c].is_zero() {
-                let fct = a[i][c].clone();
-                for j in 0..9 {
-                    let t = fct.clone() * a[c][j].clone();
-                    a[i][j] -= t;
+        let pivot = a[c].clone();
+        for (i, row) in a.iter_mut().enumerate().take(8) {
+            if i != c && !row[c].is_zero() {
+                let fct = row[c].clone();
+                for (x, p) in row.iter_mut().zip(&pivot).take(9) {
+                    let t = fct.clone() * p.clone();
+                    *x -= t;
                 }
             }
         }

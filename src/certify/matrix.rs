@@ -1,6 +1,7 @@
 //! The certified matrix: rows of S in interval arithmetic, their Fourier
-//! blocks as interval matrices, and the two structural facts the spectral
-//! proof uses, checked on the same rows.
+//! blocks as interval matrices, and the structural facts the spectral proof
+//! uses, checked on the same rows, exactly where the rows are exact (in Q, or
+//! in a cyclotomic field Q(ζ_N) where they hold cos(2πk/n)).
 //!
 //! The rows come from the scheme's own rules evaluated with `Interval`
 //! weights (`matrix::local::assemble_rows`): every weight, cos(2πk/n)
@@ -14,34 +15,40 @@ use super::complex::{CInterval, CIntervalMatrix};
 use crate::dft::Orbits;
 use crate::neighbourhood::VertexLabel;
 use crate::numeric::interval::cos_sin_2pi;
-use crate::numeric::{Interval, Rational};
+use crate::numeric::{Cyclotomic, Interval, Weight};
 use serde::Serialize;
 use std::collections::HashMap;
 
 /// Rows of S with interval entries, by matrix index, each over all columns.
 pub type IntervalRows = Vec<Vec<(usize, Interval)>>;
 
-/// The same rows exactly, where every weight of the row is rational (the
-/// structural identities are then checked exactly, whatever the intervals'
-/// widths): `None` for a row with an irrational weight.
-pub type ExactRows = Vec<Option<Vec<(usize, Rational)>>>;
+/// The same rows exactly (the structural identities are then checked
+/// exactly, whatever the intervals' widths): rational rows, and rows whose
+/// weights hold cos(2πk/n), as elements of a cyclotomic field (a rational
+/// row's entries are elements of Q = Q(ζ_1)). `None` for a row with a weight
+/// known in floating point only (a float parameter or expression).
+pub type ExactRows = Vec<Option<Vec<(usize, Cyclotomic)>>>;
 
 /// How a structural identity of S was checked.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(rename_all = "snake_case", tag = "status", content = "detail")]
 pub enum Check {
-    /// every entry involved is an exact rational and the identity holds exactly
+    /// every entry involved is exact (rational, or an element of a
+    /// cyclotomic field) and the identity holds exactly
     Exact,
-    /// the identity holds to interval overlap: the entries involved are
-    /// irrational (cosines of 2π/n), so equality is an identity of the rules'
-    /// formulas that enclosures can confirm only to their width
+    /// the identity holds to interval overlap: an entry involved is known in
+    /// floating point only (or its exact rows are beyond the certificate's
+    /// work bound, `spectrum::MAX_EXACT_ORBIT_WORK`), so equality is an
+    /// identity of the rules' formulas that enclosures can confirm only to
+    /// their width
     Overlap,
     /// the identity is proven false, or cannot be stated (the witness)
     Fails(String),
 }
 
 impl Check {
-    fn and(self, other: Check) -> Check {
+    /// Both hold: the weaker status of the two (a failure wins).
+    pub fn and(self, other: Check) -> Check {
         match (self, other) {
             (Check::Fails(a), _) => Check::Fails(a),
             (_, Check::Fails(b)) => Check::Fails(b),
@@ -73,8 +80,8 @@ pub fn row_sums(rows: &IntervalRows, exact: &ExactRows, labels: &[VertexLabel], 
     let mut all = Check::Exact;
     for ((row, exact_row), &k) in rows.iter().zip(exact).zip(which) {
         if let Some(e) = exact_row {
-            let sum = e.iter().fold(Rational::from_integer(0.into()), |s, (_, w)| s + w);
-            if sum != Rational::from_integer(1.into()) {
+            let sum = e.iter().fold(Cyclotomic::zero(), |s, (_, w)| s + w.clone());
+            if sum != Cyclotomic::one() {
                 return Check::Fails(format!("the row of {} sums to {sum}, not 1", labels[k].name));
             }
             continue;
@@ -123,7 +130,7 @@ pub fn mirror_map(labels: &[VertexLabel], sectors: usize) -> Option<Vec<usize>> 
 /// B_m equals that of B_{−m} = conj(B_m): closed under conjugation. Checked
 /// on the representative rows `rows` (orbit o's row at `rows[o]`), every
 /// other row being a rotation of one of them; exactly where both rows are
-/// rational.
+/// exact.
 pub fn mirror_symmetry(
     rows: &IntervalRows,
     exact: &ExactRows,
@@ -152,7 +159,7 @@ pub fn mirror_symmetry(
     let off_centre = |col: &usize| !orbits.fixed[orbits.member[*col].0];
     let lookup: Vec<HashMap<usize, Interval>> =
         rows.iter().map(|r| r.iter().filter(|e| off_centre(&e.0)).copied().collect()).collect();
-    let exact_lookup: Vec<Option<HashMap<usize, Rational>>> =
+    let exact_lookup: Vec<Option<HashMap<usize, Cyclotomic>>> =
         exact.iter().map(|r| r.as_ref().map(|r| r.iter().filter(|e| off_centre(&e.0)).cloned().collect())).collect();
     // S[(t1, o1), c] = S[(0, o1), c rotated back by t1]: (orbit, column)
     let rotate_back = |row: usize, col: usize| -> Option<(usize, usize)> {
@@ -180,7 +187,7 @@ pub fn mirror_symmetry(
                 return Check::Fails(format!("no mirror image of {} in the neighbourhood", labels[*col].name));
             };
             if let (Some(a), Some(b)) = (&exact_lookup[o], &exact_lookup[o1]) {
-                let zero = Rational::from_integer(0.into());
+                let zero = Cyclotomic::zero();
                 if a.get(col).unwrap_or(&zero) != b.get(&c).unwrap_or(&zero) {
                     return Check::Fails(format!(
                         "S[{}, {}] and its mirror image S[{}, {}] differ",
@@ -217,9 +224,16 @@ fn orbit_index(orbits: &Orbits) -> Vec<Vec<usize>> {
 /// Rotation symmetry of S, PS = SP, which the Fourier blocks rest on: every
 /// row (t, a) of S (`all[k]` for matrix index k, all rows) is the row of its
 /// representative (0, a) with every column moved on by t, and a fixed point's
-/// row is invariant under the rotation. Checked exactly where the rows
-/// involved are rational (`exact[k]`), else on the intervals.
-pub fn rotation_symmetry(all: &IntervalRows, exact: &ExactRows, orbits: &Orbits, labels: &[VertexLabel]) -> Check {
+/// row is invariant under the rotation. Checked on the rows `which` (matrix
+/// indices), exactly where the rows involved are exact (`exact[k]`, indexed
+/// by matrix index; rows not at hand are `None`), else on the intervals.
+pub fn rotation_symmetry(
+    all: &IntervalRows,
+    exact: &ExactRows,
+    which: &[usize],
+    orbits: &Orbits,
+    labels: &[VertexLabel],
+) -> Check {
     let g = orbits.group_order;
     let index = orbit_index(orbits);
     let moved = |col: usize, t: usize| {
@@ -236,7 +250,8 @@ pub fn rotation_symmetry(all: &IntervalRows, exact: &ExactRows, orbits: &Orbits,
         v
     }
     let mut status = Check::Exact;
-    for (k, &(o, t)) in orbits.member.iter().enumerate() {
+    for &k in which {
+        let (o, t) = orbits.member[k];
         // the row that row k must equal: the representative's moved on by t,
         // or for a fixed point its own row moved on by one step
         let (source, steps) = if orbits.fixed[o] { (k, 1) } else { (orbits.representative[o], t) };

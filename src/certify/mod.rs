@@ -6,7 +6,9 @@
 //!   real interval with outward rounding is `numeric::Interval`, a weight
 //!   type, so the rules themselves evaluate in it;
 //! - [`matrix`]: interval rows of S from the rules, their Fourier blocks, and
-//!   the structural identities the proof uses (row sums 1, mirror symmetry);
+//!   the structural identities the proof uses (row sums 1, rotation and
+//!   mirror symmetry), checked exactly on the rows in Q or in a cyclotomic
+//!   field Q(ζ_N) (`numeric::cyclotomic`);
 //! - [`discs`]: eigenvalue enclosures of an interval matrix (Gershgorin discs
 //!   after a verified approximate diagonalisation), with counts per component;
 //! - [`spectrum`]: the spectral verdict (λ0 = 1 simple, λ1 real positive from

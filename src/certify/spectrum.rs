@@ -23,10 +23,15 @@
 //!   spectrum of every block is closed under conjugation, and a simple
 //!   eigenvalue whose disc component is its own mirror image is real.
 //!
-//! Each is checked exactly when the entries involved are rational, else to
-//! interval overlap (then it is an identity of the rules' formulas, such as
-//! (1 − nβ) + n·β = 1, that the certificate confirms to ~1e-16 but cannot
-//! prove); the verdict says which.
+//! Each is checked exactly when the rows involved are exact: rational rows in
+//! Q, rows whose weights hold cos(2πk/n) (Loop's β, the Doo–Sabin weights) in
+//! the cyclotomic field Q(ζ_N) (`numeric::cyclotomic`), assembled by the same
+//! rules. Only where a weight is known in floating point alone (a float
+//! parameter, a scheme-file expression outside the exact evaluator) is an
+//! identity confirmed to interval overlap only (then it is an identity of
+//! the rules' formulas, such as (1 − nβ) + n·β = 1, that the certificate
+//! confirms to ~1e-16 but cannot prove); the verdict says which, and names
+//! the field of the exact checks.
 
 use super::discs::{enclose, Component, Disc};
 use super::matrix::{
@@ -35,7 +40,7 @@ use super::matrix::{
 use crate::dft::Orbits;
 use crate::error::Error;
 use crate::matrix::local::{assemble_rows, AssembleError};
-use crate::numeric::{Interval, Rational};
+use crate::numeric::{Cyclotomic, Interval, Rational};
 use crate::sdc::Scheme;
 use crate::spectrum::{Analysis, Method};
 use faer::c64;
@@ -118,9 +123,14 @@ pub struct Premises {
     /// S commutes with the rotation (the Fourier blocks are S in another
     /// basis: checked on every row, not only the representatives')
     pub rotation_symmetry: Check,
-    /// both checked exactly: the proof uses no identity confirmed only to
-    /// interval overlap
+    /// all three checked exactly: the proof uses no identity confirmed only
+    /// to interval overlap
     pub exact: bool,
+    /// the field the exact checks were made in: "Q" when every exact row is
+    /// rational, else "Q(ζ_N)" (ζ_N = e^{2πi/N}, N the lcm of the orders of
+    /// the entries: rows holding cos(2πk/n) for n | N); null when no row is
+    /// exact
+    pub field: Option<String>,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -207,27 +217,22 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
             )),
             Err(e) => return Err(Error::Numeric(format!("the interval rows of S could not be assembled: {e:?}"))),
         };
-    // the same rows exactly where they are rational, one by one (the centre's
-    // row may hold cos(2π/n) while the others are rational)
-    let exact: ExactRows = which
-        .iter()
-        .map(|&k| {
-            assemble_rows::<Rational>(scheme, &analysis.discovered, s.neighbourhood, &[k])
-                .ok()
-                .and_then(|mut r| r.pop())
-        })
-        .collect();
+    // the same rows exactly, one by one (the centre's row may hold
+    // cos(2π/n) while the others are rational)
+    let exact: ExactRows =
+        which.iter().map(|&k| exact_rows(scheme, analysis, &[k]).and_then(|mut r| r.pop())).collect();
     let row_check = row_sums(&rows, &exact, labels, &which);
-    let (blocks, mirror, rotation) = match s.method {
+    let (blocks, mirror, rotation, order) = match s.method {
         Method::Dft => {
             let mirror = mirror_symmetry(&rows, &exact, &orbits, labels, n);
-            let rotation = rotation_premise(scheme, analysis, &orbits, &exact)?;
-            (fourier_blocks(&rows, &orbits), mirror, rotation)
+            let (rotation, order) = rotation_premise(scheme, analysis, &orbits, &exact)?;
+            (fourier_blocks(&rows, &orbits), mirror, rotation, order)
         }
         Method::Full => (
             vec![(0, whole_matrix(&rows))],
             Check::Fails("no rotation symmetry: the subdominant pair is not split by Fourier blocks".into()),
             Check::Exact,
+            field_order(None, exact.iter()),
         ),
     };
     let max_entry_width = blocks.iter().map(|(_, b)| b.max_width()).fold(0.0, f64::max);
@@ -249,8 +254,10 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
     if !rotation.holds() {
         return Ok(not_proved(format!("the Fourier blocks need S to commute with the rotation: {rotation:?}")));
     }
+    let field = order.map(|n| if n == 1 { "Q".to_string() } else { format!("Q(ζ_{n})") });
     let exact = row_check == Check::Exact && mirror == Check::Exact && rotation == Check::Exact;
-    let premises = Premises { row_sums_one: row_check, mirror_symmetry: mirror, rotation_symmetry: rotation, exact };
+    let premises =
+        Premises { row_sums_one: row_check, mirror_symmetry: mirror, rotation_symmetry: rotation, exact, field };
     let mut cert = decide(&enclosures, &premises, orbits.group_order, s.method);
     cert.margins.max_entry_width = max_entry_width;
     cert.conditional = cert.verdict == Verdict::Proved && !exact;
@@ -259,39 +266,151 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
     Ok(cert)
 }
 
+/// Rows `which` of S exactly: in Q when every weight is rational, else in a
+/// cyclotomic field Q(ζ_N) (weights holding cos(2πk/n)); `None` when a weight
+/// is known in floating point only or is undefined (a quotient by zero, a
+/// field beyond `cyclotomic::MAX_ORDER`), or the rows cannot be assembled.
+/// Rational rows are assembled as rationals first: cheaper, and the rows of
+/// most points are rational even where the centre's are not.
+fn exact_rows(scheme: &dyn Scheme, analysis: &Analysis, which: &[usize]) -> Option<Vec<Vec<(usize, Cyclotomic)>>> {
+    let (d, kind) = (&analysis.discovered, analysis.spectrum.neighbourhood);
+    match assemble_rows::<Rational>(scheme, d, kind, which) {
+        Ok(rows) => {
+            return Some(
+                rows.into_iter()
+                    .map(|r| r.into_iter().map(|(c, w)| (c, Cyclotomic::from_rational(&w))).collect())
+                    .collect(),
+            )
+        }
+        Err(AssembleError::Inexact) => {}
+        Err(_) => return None,
+    }
+    let rows = assemble_rows::<Cyclotomic>(scheme, d, kind, which).ok()?;
+    rows.iter().all(|r| r.iter().all(|(_, w)| w.is_defined())).then_some(rows)
+}
+
+/// N of the smallest cyclotomic field Q(ζ_N) holding every entry of the
+/// exact rows (1: all rational), with `order` the N of rows seen before;
+/// `None` when no row is exact.
+fn field_order<'a>(
+    order: Option<u64>,
+    rows: impl Iterator<Item = &'a Option<Vec<(usize, Cyclotomic)>>>,
+) -> Option<u64> {
+    let mut order = order;
+    for row in rows.flatten() {
+        let mut l = order.unwrap_or(1);
+        for (_, w) in row {
+            let n = w.order().unwrap_or(1) as u64;
+            l = l / crate::numeric::weight::gcd(l as i64, n as i64) as u64 * n;
+        }
+        order = Some(l);
+    }
+    order
+}
+
+/// The work an orbit's exact rotation check may take: its members times the
+/// entries of its representative's row times N of their field (a bound of
+/// the coefficients of each entry). Past it (Doo–Sabin's ring 0, whose rows
+/// are dense, near valence 200) the orbit's rows are compared on their
+/// enclosures, and the premise says so: the cost of the exact rows grows
+/// with the square of the valence times the field's degree.
+pub const MAX_EXACT_ORBIT_WORK: u64 = 1 << 23;
+
+/// Rows of an orbit assembled exactly at a time (the rows are compared and
+/// dropped: memory stays bounded however large the orbit).
+const EXACT_CHUNK: usize = 64;
+
 /// PS = SP on every row: the interval rows of all points, and their exact
-/// rows where rational (off-centre rows in one assembly, the fixed points'
-/// from `exact`, which holds the representatives' rows in orbit order).
+/// rows where they are exact: all off-centre rows in one rational assembly
+/// when they are rational, else orbit by orbit, rational or cyclotomic (in
+/// chunks, within [`MAX_EXACT_ORBIT_WORK`]); each row is compared with the
+/// representative's (`exact_reps`, in orbit order) rotated. Also returns N of
+/// the field of the exact rows compared (`None`: none was exact).
 fn rotation_premise(
     scheme: &dyn Scheme,
     analysis: &Analysis,
     orbits: &Orbits,
     exact_reps: &ExactRows,
-) -> Result<Check, Error> {
+) -> Result<(Check, Option<u64>), Error> {
     let s = &analysis.spectrum;
-    let everyone: Vec<usize> = (0..s.labels.len()).collect();
+    let labels = &s.labels;
+    let everyone: Vec<usize> = (0..labels.len()).collect();
     let all = match assemble_rows::<Interval>(scheme, &analysis.discovered, s.neighbourhood, &everyone) {
         Ok(rows) => rows,
         Err(AssembleError::NotInvariant) => {
-            return Ok(Check::Fails(
-                "a row's enclosure reaches outside the neighbourhood (a weight enclosing 0)".into(),
+            return Ok((
+                Check::Fails("a row's enclosure reaches outside the neighbourhood (a weight enclosing 0)".into()),
+                None,
             ))
         }
         Err(e) => return Err(Error::Numeric(format!("the interval rows of S could not be assembled: {e:?}"))),
     };
-    let off_centre: Vec<usize> = everyone.iter().copied().filter(|&k| !orbits.fixed[orbits.member[k].0]).collect();
+    // the representatives' exact rows stay at hand: every row is compared with one
     let mut exact: ExactRows = vec![None; everyone.len()];
-    if let Ok(rows) = assemble_rows::<Rational>(scheme, &analysis.discovered, s.neighbourhood, &off_centre) {
-        for (k, row) in off_centre.iter().zip(rows) {
-            exact[*k] = Some(row);
-        }
-    }
     for (o, &r) in orbits.representative.iter().enumerate() {
-        if orbits.fixed[o] {
-            exact[r] = exact_reps[o].clone();
+        exact[r] = exact_reps[o].clone();
+    }
+    let mut order = field_order(None, exact_reps.iter());
+    let is_rep = |k: usize| orbits.representative[orbits.member[k].0] == k;
+    let (fixed, moving): (Vec<usize>, Vec<usize>) = everyone.iter().partition(|&&k| orbits.fixed[orbits.member[k].0]);
+    let mut check = rotation_symmetry(&all, &exact, &fixed, orbits, labels);
+    // the common case: every row off the centre rational, in one assembly
+    let others: Vec<usize> = moving.iter().copied().filter(|&k| !is_rep(k)).collect();
+    if let Ok(rows) = assemble_rows::<Rational>(scheme, &analysis.discovered, s.neighbourhood, &others) {
+        for (k, row) in others.iter().zip(rows) {
+            exact[*k] = Some(row.into_iter().map(|(c, w)| (c, Cyclotomic::from_rational(&w))).collect());
+        }
+        order = field_order(order, others.iter().map(|&k| &exact[k]));
+        return Ok((check.and(rotation_symmetry(&all, &exact, &moving, orbits, labels)), order));
+    }
+    for o in (0..orbits.num_orbits()).filter(|&o| !orbits.fixed[o]) {
+        if !check.holds() {
+            break;
+        }
+        let rep = orbits.representative[o];
+        let members: Vec<usize> = others.iter().copied().filter(|&k| orbits.member[k].0 == o).collect();
+        check = check.and(rotation_symmetry(&all, &exact, &[rep], orbits, labels));
+        let rational = assemble_rows::<Rational>(scheme, &analysis.discovered, s.neighbourhood, &members);
+        let chunks: Vec<&[usize]> = match (&rational, &exact_reps[o]) {
+            (Ok(_), _) => vec![&members[..]],
+            // nothing to compare exactly with, or too much work: on the enclosures
+            (Err(_), None) => Vec::new(),
+            (Err(_), Some(row)) => {
+                let n = row.iter().map(|(_, w)| w.order().unwrap_or(1) as u64).max().unwrap_or(1);
+                let work = (members.len() as u64).saturating_mul(row.len() as u64).saturating_mul(n);
+                if work <= MAX_EXACT_ORBIT_WORK {
+                    members.chunks(EXACT_CHUNK).collect()
+                } else {
+                    Vec::new()
+                }
+            }
+        };
+        if chunks.is_empty() {
+            check = check.and(rotation_symmetry(&all, &exact, &members, orbits, labels));
+            continue;
+        }
+        let mut rational = rational.ok();
+        for chunk in chunks {
+            let rows = match rational.take() {
+                Some(rows) => Some(
+                    rows.into_iter()
+                        .map(|r| r.into_iter().map(|(c, w)| (c, Cyclotomic::from_rational(&w))).collect())
+                        .collect(),
+                ),
+                None => exact_rows(scheme, analysis, chunk),
+            };
+            for (k, row) in chunk.iter().zip(rows.into_iter().flatten()) {
+                exact[*k] = Some(row);
+            }
+            order = field_order(order, chunk.iter().map(|&k| &exact[k]));
+            check = check.and(rotation_symmetry(&all, &exact, chunk, orbits, labels));
+            chunk.iter().for_each(|&k| exact[k] = None);
+            if !check.holds() {
+                break;
+            }
         }
     }
-    Ok(rotation_symmetry(&all, &exact, orbits, &s.labels))
+    Ok((check, order))
 }
 
 /// The verdict from the block enclosures and the premises.
@@ -461,7 +580,8 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
     if real_enclosure.lo <= 0.0 {
         return finish(Verdict::NotProved("λ1's enclosure holds 0: its sign is not decided".into()), margins, None);
     }
-    if !(real_enclosure.hi < lo0) {
+    // not below (NaN included)
+    if real_enclosure.hi.partial_cmp(&lo0) != Some(std::cmp::Ordering::Less) {
         return finish(Verdict::NotProved("λ1 is not separated from λ0 = 1".into()), margins, None);
     }
     if gap <= 0.0 {

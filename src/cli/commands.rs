@@ -194,8 +194,9 @@ pub(super) fn certificate_table(c: &crate::certify::SpectrumCertificate) -> Stri
     );
     out += &format!("  statement: {}\n", c.statement);
     if let Some(p) = &c.premises {
+        let field = p.field.as_deref().unwrap_or("Q");
         let show = |x: &Check| match x {
-            Check::Exact => "exact".to_string(),
+            Check::Exact => format!("exact, in {field}"),
             Check::Overlap => "identity of the rules' formulas, confirmed to interval overlap only".to_string(),
             Check::Fails(w) => format!("fails: {w}"),
         };

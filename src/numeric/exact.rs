@@ -414,9 +414,9 @@ mod tests {
         // [[2,1,0],[1,3,1],[0,1,4]] : trace 9, det 2*(12-1) - 1*(4) = 18
         let vals = [[2, 1, 0], [1, 3, 1], [0, 1, 4]];
         let mut a = QMatrix::zeros(3);
-        for i in 0..3 {
-            for j in 0..3 {
-                a.set(i, j, q(vals[i][j], 1));
+        for (i, row) in vals.iter().enumerate() {
+            for (j, &v) in row.iter().enumerate() {
+                a.set(i, j, q(v, 1));
             }
         }
         let p = a.charpoly();

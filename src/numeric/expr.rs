@@ -2,7 +2,8 @@
 //! floating point (complex, so that printed eigenvalues such as
 //! −1/16 ± √5/48 i can be written down) and exactly (rationals; cos and sin of
 //! rational multiples of π where the value is rational; square roots of
-//! rational squares).
+//! rational squares), and exactly in cyclotomic fields (`Expr::cyclotomic`:
+//! cos and sin of rational multiples of π whatever their value).
 //!
 //! Grammar: sums and differences of products and quotients of powers of unary
 //! terms; `^` binds tighter than unary minus (−2^2 = −4), and is
@@ -20,6 +21,7 @@ use std::collections::BTreeMap;
 use num_complex::Complex64;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
+use super::cyclotomic::Cyclotomic;
 use super::weight::{exact_cos_2pi, Rational};
 use crate::error::Error;
 
@@ -346,6 +348,54 @@ fn exact_op(op: char, x: Rational, y: Rational) -> Option<Rational> {
     (!too_big(&r)).then_some(r)
 }
 
+/// `x op y` in a cyclotomic field for + - * / and ^ (integer exponents up to
+/// 256 in modulus), None when undefined or larger than [`MAX_EXACT_BITS`].
+fn cyclotomic_op(op: char, x: Cyclotomic, y: Cyclotomic) -> Option<Cyclotomic> {
+    use super::weight::Weight;
+    let r = match op {
+        '+' => x + y,
+        '-' => x - y,
+        '*' => x * y,
+        '/' => {
+            if y.is_zero() {
+                return None;
+            }
+            x / y
+        }
+        _ => {
+            let e = y.to_rational()?;
+            if !e.is_integer() || e.abs() > Rational::from_integer(256.into()) {
+                return None;
+            }
+            let k = e.to_integer().to_i32()?;
+            let base = if k < 0 {
+                if x.is_zero() {
+                    return None;
+                }
+                x.inverse()
+            } else {
+                x
+            };
+            // square and multiply, each step bounded like every operation
+            let (mut acc, mut square, mut k) = (Cyclotomic::one(), base, k.unsigned_abs());
+            while k > 0 {
+                if k & 1 == 1 {
+                    acc = acc * square.clone();
+                }
+                k >>= 1;
+                if k > 0 {
+                    square = square.clone() * square;
+                }
+                if acc.bits() > MAX_EXACT_BITS || square.bits() > MAX_EXACT_BITS {
+                    return None;
+                }
+            }
+            acc
+        }
+    };
+    (r.is_defined() && r.bits() <= MAX_EXACT_BITS).then_some(r)
+}
+
 /// An integer summation bound from its floating value.
 fn sum_bound(z: Complex64, what: &str) -> Result<i64, Error> {
     let r = z.re.round();
@@ -562,6 +612,88 @@ impl Expr {
         })
     }
 
+    /// Exact value in a cyclotomic field Q(ζ_N), when this evaluator can
+    /// prove one: rationals, cos and sin of rational multiples of π (in
+    /// Q(ζ_N), N ≤ `cyclotomic::MAX_ORDER`), `i`, the field operations,
+    /// integer powers, `kronecker` (decided exactly), sums, and `sqrt`/`abs`
+    /// of rationals. None otherwise (π itself, `cbrt`, square roots of
+    /// non-squares, elements larger than [`MAX_EXACT_BITS`]). What
+    /// [`Expr::exact`] proves rational has the same value here.
+    pub fn cyclotomic(&self, env: &Env) -> Option<Cyclotomic> {
+        self.cyclotomic_counted(env, &mut 0)
+    }
+
+    fn cyclotomic_counted(&self, env: &Env, terms: &mut u64) -> Option<Cyclotomic> {
+        let rational = |q: Rational| Some(Cyclotomic::from_rational(&q));
+        let value = match self {
+            Expr::Num(_, q) => rational(q.clone()?)?,
+            Expr::Var(v) => rational(env.get(v)?.exact.clone()?)?,
+            Expr::I => Cyclotomic::root_of_unity(1, 4).ok()?,
+            Expr::Pi => return None,
+            Expr::Neg(a) => -a.cyclotomic_counted(env, terms)?,
+            Expr::Bin(op, a, b) => {
+                cyclotomic_op(*op, a.cyclotomic_counted(env, terms)?, b.cyclotomic_counted(env, terms)?)?
+            }
+            Expr::Chain(first, rest) => {
+                let mut x = first.cyclotomic_counted(env, terms)?;
+                for (op, e) in rest {
+                    x = cyclotomic_op(*op, x, e.cyclotomic_counted(env, terms)?)?;
+                }
+                x
+            }
+            Expr::Call(f, a) => match f.as_str() {
+                "cos" | "sin" => {
+                    let q = a.pi_multiple(env, terms)?;
+                    let (num, den) = (q.numer().to_i64()?, q.denom().to_i64()?);
+                    // cos(qπ) = cos(2π · num / (2 den)); sin(x) = cos(x − π/2)
+                    let (k, n) = if f == "cos" {
+                        (num, den.checked_mul(2)?)
+                    } else {
+                        (num.checked_mul(2)?.checked_sub(den)?, den.checked_mul(4)?)
+                    };
+                    <Cyclotomic as super::weight::Weight>::cos_2pi(k, n).ok()?
+                }
+                "sqrt" | "abs" => {
+                    let x = a.cyclotomic_counted(env, terms)?.to_rational()?;
+                    if f == "abs" {
+                        Cyclotomic::from_rational(&x.abs())
+                    } else {
+                        use super::weight::Weight;
+                        Cyclotomic::from_rational(&x.sqrt().ok()?)
+                    }
+                }
+                "kronecker" => {
+                    let x = a.cyclotomic_counted(env, terms)?;
+                    Cyclotomic::from_rational(&if super::weight::Weight::is_zero(&x) {
+                        Rational::one()
+                    } else {
+                        Rational::zero()
+                    })
+                }
+                _ => return None,
+            },
+            Expr::Sum(var, from, to, summand) => {
+                let (lo, hi) = (from.exact_counted(env, terms)?, to.exact_counted(env, terms)?);
+                if !lo.is_integer() || !hi.is_integer() || env.contains_key(var) {
+                    return None;
+                }
+                let (lo, hi) = (lo.to_integer().to_i64()?, hi.to_integer().to_i64()?);
+                spend(terms, hi as i128 - lo as i128 + 1).ok()?;
+                let mut inner = env.clone();
+                let mut total = <Cyclotomic as super::weight::Weight>::zero();
+                for k in lo..=hi {
+                    inner.insert(var.clone(), sum_index(k));
+                    total = total + summand.cyclotomic_counted(&inner, terms)?;
+                    if total.bits() > MAX_EXACT_BITS {
+                        return None;
+                    }
+                }
+                total
+            }
+        };
+        (value.is_defined() && value.bits() <= MAX_EXACT_BITS).then_some(value)
+    }
+
     /// q such that the expression is q·π (for exact trigonometry).
     fn pi_multiple(&self, env: &Env, terms: &mut u64) -> Option<Rational> {
         match self {
@@ -724,6 +856,47 @@ mod tests {
         assert_eq!(ex("sum(a, 1, 3, sum(b, 1, a, 1))"), Some(q(6, 1)));
         // bounds are expressions in the free variables; n/2 at n = 6 is 3
         assert_eq!(ex("sum(m, 1, n/2, 1)"), Some(q(3, 1)));
+    }
+
+    #[test]
+    fn cyclotomic_evaluation_is_exact_where_cosines_are_irrational() {
+        use crate::numeric::{Cyclotomic, Weight};
+        let at = |n: i64, j: i64| env_int(&[("n", n), ("j", j)]);
+        let cy = |s: &str, n: i64, j: i64| Expr::parse(s).unwrap().cyclotomic(&at(n, j));
+        let rational = |p: i64, d: i64| Some(Cyclotomic::ratio(p, d));
+        // Σ_{m=0}^{n-1} cos(2π m j / n) = n δ_{j,0} (mod n), now exact at n = 5 too
+        for j in 0..5 {
+            assert_eq!(
+                cy("sum(m, 0, n-1, cos(2 pi j m / n))", 5, j),
+                rational(if j == 0 { 5 } else { 0 }, 1),
+                "j = {j}"
+            );
+        }
+        // Loop's β at n = 5, as the file writes it and as the rule computes it
+        let beta = cy("(5/8 - (3/8 + cos(2 pi / n) / 4)^2) / n", 5, 0).unwrap();
+        let t = Cyclotomic::ratio(3, 8) + Cyclotomic::cos_2pi(1, 5).unwrap() * Cyclotomic::ratio(1, 4);
+        assert_eq!(beta, (Cyclotomic::ratio(5, 8) - t.clone() * t) / Cyclotomic::int(5));
+        // sin through cos, i, kronecker decided exactly: cos 72° + cos 144° = −1/2
+        assert_eq!(cy("sin(pi / 6)", 5, 0), rational(1, 2));
+        assert_eq!(cy("sin(2 pi / 5)^2 + cos(2 pi / 5)^2", 5, 0), rational(1, 1));
+        assert_eq!(cy("i^2", 5, 0), rational(-1, 1));
+        assert_eq!(cy("kronecker(cos(2 pi / 5) + cos(4 pi / 5) + 1/2)", 5, 0), rational(1, 1));
+        assert_eq!(cy("kronecker(cos(2 pi / 5) + cos(4 pi / 5))", 5, 0), rational(0, 1));
+        // negative powers through the inverse: (2cos 72°)⁻¹ = 2cos 72° + 1 (the golden ratio)
+        let inv = cy("(2 cos(2 pi / 5))^-1", 5, 0).unwrap();
+        assert_eq!(Some(inv.clone()), cy("2 cos(2 pi / 5) + 1", 5, 0));
+        assert!((inv.to_f64() - 0.5 / (0.4 * std::f64::consts::PI).cos()).abs() < 1e-14);
+        // what it cannot prove: π, cube roots, roots of non-squares, division by zero
+        for s in ["pi", "cbrt(2)", "sqrt(2)", "sqrt(cos(2 pi / 5))", "1 / (cos(2 pi / 5) + cos(4 pi / 5) + 1/2)"] {
+            assert_eq!(cy(s, 5, 0), None, "{s}");
+        }
+        // whatever `exact` proves rational has the same value
+        for s in ["3/8 + (3/8 + cos(2 pi / n) / 4)^2", "kronecker(j)/4 + (3 + 2 cos(2 pi j / n)) / (4 n)"] {
+            for (n, j) in [(3, 1), (4, 2), (6, 5)] {
+                let e = Expr::parse(s).unwrap();
+                assert_eq!(e.cyclotomic(&at(n, j)), e.exact(&at(n, j)).map(|q| Cyclotomic::from_rational(&q)), "{s}");
+            }
+        }
     }
 
     #[test]

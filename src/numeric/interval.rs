@@ -17,6 +17,7 @@
 //! requires `Rules<Interval>`), so the certified matrix is assembled by the
 //! same rule code as the floating-point one.
 
+use super::cyclotomic::Cyclotomic;
 use super::weight::{gcd, Inexact, ParamValue, Rational, Weight};
 use num_bigint::BigInt;
 use num_traits::ToPrimitive;
@@ -359,6 +360,18 @@ impl Weight for Interval {
     fn is_zero(&self) -> bool {
         self.lo == 0.0 && self.hi == 0.0
     }
+    const CYCLOTOMIC: bool = true;
+    /// The enclosure of a real element Σ c_i ζ_N^i of a cyclotomic field:
+    /// Σ c_i cos(2πi/N), each coefficient and cosine enclosed. Realness is
+    /// decided exactly; a non-real (or undefined) element has no enclosure.
+    fn from_cyclotomic(c: &Cyclotomic) -> Result<Self, Inexact> {
+        if !c.is_real() {
+            return Err(Inexact);
+        }
+        let n = c.order().ok_or(Inexact)? as i64;
+        Ok(c.coefficients()
+            .fold(Interval::point(0.0), |s, (i, q)| s + Interval::rational(&q) * cos_sin_2pi(i as i64, n).0))
+    }
 }
 
 impl Interval {
@@ -423,9 +436,11 @@ mod tests {
     #[test]
     fn square_roots_enclose_known_roots() {
         let r2 = Interval::point(2.0).sqrt();
-        // r2² ∋ 2, and r2 separates 1.41421356237309504 from its neighbours
+        // r2² ∋ 2, and r2 holds √2 = 1.41421356237309504..., which lies
+        // between the double SQRT_2 (above it) and the double below that
         assert!(r2.square().contains(2.0));
-        assert!(r2.lo < 1.414_213_562_373_095_1 && r2.hi > 1.414_213_562_373_095);
+        let s2 = std::f64::consts::SQRT_2;
+        assert!(r2.lo < s2 && r2.hi > s2.next_down());
         assert!(Interval::ratio(1, 4).sqrt().contains(0.5));
     }
 
@@ -458,6 +473,25 @@ mod tests {
         assert!(cos_sin_2pi(2, 3).0.is_exactly(&q(-1, 2)));
         assert!(cos_sin_2pi(1, 4).0.is_exactly(&q(0, 1)));
         assert!(cos_sin_2pi(3, 4).1.contains(-1.0));
+    }
+
+    #[test]
+    fn cyclotomic_elements_are_enclosed() {
+        // cos(2π/5) = (√5 − 1)/4 from its exact element; Loop's β at n = 7
+        let c = Cyclotomic::cos_2pi(1, 5).unwrap();
+        let enclosed = Interval::from_cyclotomic(&c).unwrap();
+        let s5 = Interval::point(5.0).sqrt();
+        assert!(enclosed.overlaps(&((s5 - Interval::point(1.0)) / Interval::point(4.0))));
+        assert!(enclosed.width() < 1e-14);
+        let beta = |x: f64| (5.0 / 8.0 - (3.0 / 8.0 + x / 4.0).powi(2)) / 7.0;
+        let t = Cyclotomic::ratio(3, 8) + Cyclotomic::cos_2pi(1, 7).unwrap() * Cyclotomic::ratio(1, 4);
+        let b = (Cyclotomic::ratio(5, 8) - t.clone() * t) / Cyclotomic::int(7);
+        let e = Interval::from_cyclotomic(&b).unwrap();
+        assert!((e.mid() - beta((2.0 * std::f64::consts::PI / 7.0).cos())).abs() < 1e-15 && e.width() < 1e-15);
+        // rationals stay points; non-real and undefined elements have no enclosure
+        assert!(Interval::from_cyclotomic(&Cyclotomic::ratio(3, 8)).unwrap().is_exactly(&q(3, 8)));
+        assert!(Interval::from_cyclotomic(&Cyclotomic::root_of_unity(1, 5).unwrap()).is_err());
+        assert!(Interval::from_cyclotomic(&(c / Cyclotomic::zero())).is_err());
     }
 
     #[test]

@@ -4,8 +4,13 @@
 //! stencils for numerics and exact rational stencils whenever the weights are
 //! rational (for instance valence 4 or 6, or any valence for Catmull–Clark).
 //! Operations that leave the rationals (cos(2πk/n) for most n, square roots of
-//! non-squares) return `Err(Inexact)` for the exact type.
+//! non-squares) return `Err(Inexact)` for the exact type. Two more weight
+//! types serve the certificate: outward-rounded intervals
+//! (`numeric::interval`) and exact elements of cyclotomic fields
+//! (`numeric::cyclotomic`, where cos(2πk/n) is exact and only square roots of
+//! non-squares are `Err(Inexact)`).
 
+use super::cyclotomic::Cyclotomic;
 use crate::error::Error;
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -43,6 +48,15 @@ pub trait Weight:
     fn param(p: &ParamValue) -> Result<Self, Inexact>;
     fn to_f64(&self) -> f64;
     fn is_zero(&self) -> bool;
+    /// Whether a scheme file's weight that is not rational is evaluated
+    /// exactly in a cyclotomic field for this type (and handed over by
+    /// [`Weight::from_cyclotomic`]): true for `Cyclotomic` and for
+    /// `Interval`, which encloses the exact value. f64 evaluates such weights
+    /// in floating point; the rationals take rational weights only.
+    const CYCLOTOMIC: bool = false;
+    /// The weight of an exact element of a cyclotomic field;
+    /// `Err(Inexact)` when this type cannot represent it.
+    fn from_cyclotomic(c: &Cyclotomic) -> Result<Self, Inexact>;
 }
 
 impl Weight for f64 {
@@ -94,6 +108,10 @@ impl Weight for f64 {
     fn is_zero(&self) -> bool {
         *self == 0.0
     }
+    fn from_cyclotomic(c: &Cyclotomic) -> Result<Self, Inexact> {
+        let (re, im) = c.to_complex();
+        (re.is_finite() && im.abs() <= 1e-12 * re.abs().max(1.0)).then_some(re).ok_or(Inexact)
+    }
 }
 
 impl Weight for Rational {
@@ -128,6 +146,9 @@ impl Weight for Rational {
     }
     fn is_zero(&self) -> bool {
         Zero::is_zero(self)
+    }
+    fn from_cyclotomic(c: &Cyclotomic) -> Result<Self, Inexact> {
+        c.to_rational().ok_or(Inexact)
     }
 }
 

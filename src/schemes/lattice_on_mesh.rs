@@ -12,7 +12,7 @@
 use super::{Caps, CentreKind, Params, Rules, Scheme, SchemeInfo};
 use crate::lattice::{LatticeScheme, LatticeWeight};
 use crate::mesh::{PolyMesh, SectorKind};
-use crate::numeric::{Interval, Rational};
+use crate::numeric::{Cyclotomic, Interval, Rational};
 use crate::sdc::{Origin, RuleResult, Stencil};
 use crate::sdc::{Topology, TriangleSplit};
 
@@ -153,6 +153,14 @@ impl Rules<Interval> for LatticeOnMesh {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<Interval> {
         let exact = self.rule::<Rational>(mesh, origin)?;
         Ok(exact.map(|s| Stencil { terms: s.terms.iter().map(|(v, w)| (*v, Interval::rational(w))).collect() }))
+    }
+}
+
+/// The rational masks as elements of Q (the certificate's exact premises).
+impl Rules<Cyclotomic> for LatticeOnMesh {
+    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<Cyclotomic> {
+        let exact = self.rule::<Rational>(mesh, origin)?;
+        Ok(exact.map(|s| Stencil { terms: s.terms.iter().map(|(v, w)| (*v, Cyclotomic::from_rational(w))).collect() }))
     }
 }
 

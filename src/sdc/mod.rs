@@ -20,7 +20,7 @@ pub use params::{ParamSpec, Params};
 pub use stencil::{Origin, RuleResult, Stencil};
 
 use crate::mesh::{PolyMesh, SectorKind};
-use crate::numeric::{Interval, Rational, Weight};
+use crate::numeric::{Cyclotomic, Interval, Rational, Weight};
 
 /// The rules of a scheme for one weight type.
 pub trait Rules<W: Weight> {
@@ -125,10 +125,11 @@ impl Caps {
     };
 }
 
-/// A subdivision scheme: rules for both weight types, its description, its
+/// A subdivision scheme: rules for every weight type (f64, exact rationals,
+/// intervals, exact cyclotomic numbers), its description, its
 /// parameter values, and the two behaviours some schemes add (a per-vertex
 /// parameter rule, different rules at the first levels of a real mesh).
-pub trait Scheme: Rules<f64> + Rules<Rational> + Rules<Interval> + Send + Sync {
+pub trait Scheme: Rules<f64> + Rules<Rational> + Rules<Interval> + Rules<Cyclotomic> + Send + Sync {
     fn info(&self) -> &SchemeInfo;
     fn params(&self) -> &Params;
     /// How the per-vertex parameter of a new vertex derives from the old ones
@@ -215,5 +216,12 @@ impl SchemeWeight for Rational {
 impl SchemeWeight for Interval {
     fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
         Rules::<Interval>::stencil(scheme, mesh, origin)
+    }
+}
+
+/// Exact weights with cos(2πk/n), for the certificate's exact premises.
+impl SchemeWeight for Cyclotomic {
+    fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
+        Rules::<Cyclotomic>::stencil(scheme, mesh, origin)
     }
 }

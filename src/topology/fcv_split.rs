@@ -25,9 +25,9 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
     let is_fcv: crate::mesh::IdSet<usize> = fcv.iter().copied().collect();
     let mut origins: Vec<Origin> = Vec::new();
     let mut vertex_id = vec![usize::MAX; mesh.num_vertices()];
-    for v in 0..mesh.num_vertices() {
+    for (v, id) in vertex_id.iter_mut().enumerate() {
         if !is_fcv.contains(&v) {
-            vertex_id[v] = origins.len();
+            *id = origins.len();
             origins.push(Origin::Vertex(v));
         }
     }

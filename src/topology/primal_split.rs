@@ -33,14 +33,14 @@ pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, Error> {
         let e = |k: usize| edge_id[&(face[k % m], face[(k + 1) % m])];
         match face_point[f] {
             Some(c) => {
-                for k in 0..m {
-                    faces.push(vec![face[k], e(k), c, e(k + m - 1)]);
+                for (k, &v) in face.iter().enumerate() {
+                    faces.push(vec![v, e(k), c, e(k + m - 1)]);
                     parents.push(Origin::Face(f));
                 }
             }
             None => {
-                for k in 0..3 {
-                    faces.push(vec![face[k], e(k), e(k + 2)]);
+                for (k, &v) in face.iter().enumerate().take(3) {
+                    faces.push(vec![v, e(k), e(k + 2)]);
                     parents.push(Origin::Face(f));
                 }
                 faces.push(vec![e(0), e(1), e(2)]);

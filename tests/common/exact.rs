@@ -17,12 +17,13 @@ pub fn rank(mut a: Mat) -> usize {
     for c in 0..cols {
         let Some(p) = (r..rows).find(|&i| !a[i][c].is_zero()) else { continue };
         a.swap(r, p);
-        for i in 0..rows {
-            if i != r && !a[i][c].is_zero() {
-                let f = a[i][c].clone() / a[r][c].clone();
-                for j in c..cols {
-                    let t = f.clone() * a[r][j].clone();
-                    a[i][j] -= t;
+        let pivot = a[r].clone();
+        for (i, row) in a.iter_mut().enumerate() {
+            if i != r && !row[c].is_zero() {
+                let f = row[c].clone() / pivot[c].clone();
+                for (x, p) in row[c..].iter_mut().zip(&pivot[c..]) {
+                    let t = f.clone() * p.clone();
+                    *x -= t;
                 }
             }
         }

@@ -1,7 +1,9 @@
 //! Weight evaluation: a field's expression at (n, j), in the arithmetic the
-//! caller asks for (floats, or exact rationals where the weight is
-//! rational), cached because refinement asks for the same weight at every
-//! vertex and a Fourier-sum weight costs n terms.
+//! caller asks for (floats; exact rationals where the weight is rational;
+//! for the weight types that take them, `Weight::CYCLOTOMIC`, exact elements
+//! of a cyclotomic field where it holds cos(2πk/n)), cached because
+//! refinement asks for the same weight at every vertex and a Fourier-sum
+//! weight costs n terms.
 
 use std::any::TypeId;
 use std::collections::HashMap;
@@ -9,7 +11,7 @@ use std::sync::Mutex;
 
 use crate::error::Error;
 use crate::numeric::expr::{Env, Expr};
-use crate::numeric::{Inexact, ParamValue, Weight};
+use crate::numeric::{Cyclotomic, Inexact, ParamValue, Weight};
 
 /// Entries the weight cache holds before it starts afresh (a sweep over many
 /// valences must not grow it without bound).
@@ -39,8 +41,26 @@ pub(super) fn eval_f64(expr: &Expr, params: &Env, n: i64, j: i64, m: Option<i64>
     Ok(z.re)
 }
 
-/// (field, n, j, m, float, per-vertex parameter value's bits) -> the weight.
-type Cache = HashMap<(usize, i64, i64, Option<i64>, bool, Option<u64>), Result<ParamValue, Inexact>>;
+/// The arithmetic a weight is evaluated in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+enum Arithmetic {
+    Float,
+    /// rational weights only
+    Rational,
+    /// rational weights, else exact in a cyclotomic field
+    Cyclotomic,
+}
+
+/// A weight as evaluated: a number (float, or exact rational), or an exact
+/// element of a cyclotomic field that is not rational.
+#[derive(Clone, Debug)]
+enum Evaluated {
+    Number(ParamValue),
+    Field(Cyclotomic),
+}
+
+/// (field, n, j, m, arithmetic, per-vertex parameter value's bits) -> the weight.
+type Cache = HashMap<(usize, i64, i64, Option<i64>, Arithmetic, Option<u64>), Result<Evaluated, Inexact>>;
 
 /// The weight fields of a built scheme with their parameter values.
 pub(super) struct WeightTable {
@@ -79,15 +99,20 @@ impl WeightTable {
         if vertex.is_some() && !float {
             return Err(Inexact);
         }
+        let arithmetic = match (float, W::CYCLOTOMIC) {
+            (true, _) => Arithmetic::Float,
+            (false, true) => Arithmetic::Cyclotomic,
+            (false, false) => Arithmetic::Rational,
+        };
         let j = if self.uses_j[k] { j } else { 0 };
         // m is a variable of face-corner fields only (a face-corner slot always has one)
         let m = if self.face_corner[k] { Some(m.ok_or(Inexact)?) } else { None };
-        let id = (k, n, j, m, float, vertex.map(|v| v.1.to_bits()));
+        let id = (k, n, j, m, arithmetic, vertex.map(|v| v.1.to_bits()));
         let cached = self.cache.lock().unwrap_or_else(|e| e.into_inner()).get(&id).cloned();
         let value = match cached {
             Some(v) => v,
             None => {
-                let v = self.evaluate(k, n, j, m, float, vertex);
+                let v = self.evaluate(k, n, j, m, arithmetic, vertex);
                 let mut cache = self.cache.lock().unwrap_or_else(|e| e.into_inner());
                 if cache.len() >= CACHE_ENTRIES {
                     cache.clear();
@@ -96,7 +121,10 @@ impl WeightTable {
                 v
             }
         };
-        W::param(&value?)
+        match value? {
+            Evaluated::Number(p) => W::param(&p),
+            Evaluated::Field(c) => W::from_cyclotomic(&c),
+        }
     }
 
     fn evaluate(
@@ -105,9 +133,9 @@ impl WeightTable {
         n: i64,
         j: i64,
         m: Option<i64>,
-        float: bool,
+        arithmetic: Arithmetic,
         vertex: Option<(&str, f64)>,
-    ) -> Result<ParamValue, Inexact> {
+    ) -> Result<Evaluated, Inexact> {
         let mut env = with_nj(&self.env, n, j, m);
         if let Some((name, value)) = vertex {
             env.insert(name.to_string(), ParamValue::from_f64(value));
@@ -116,16 +144,22 @@ impl WeightTable {
         // zero (as with the built-ins' exact cosines), not 6e-17, and the
         // stencil's support is the built-in's
         if let Some(q) = self.exprs[k].exact(&env) {
-            return Ok(ParamValue { value: q.to_f64(), exact: Some(q), text: String::new() });
+            return Ok(Evaluated::Number(ParamValue { value: q.to_f64(), exact: Some(q), text: String::new() }));
         }
-        Ok(if float {
-            let z = self.exprs[k].eval(&env).map_err(|_| Inexact)?;
-            if !z.re.is_finite() || z.im.abs() > 1e-12 * z.re.abs().max(1.0) {
-                return Err(Inexact);
+        match arithmetic {
+            Arithmetic::Float => {
+                let z = self.exprs[k].eval(&env).map_err(|_| Inexact)?;
+                if !z.re.is_finite() || z.im.abs() > 1e-12 * z.re.abs().max(1.0) {
+                    return Err(Inexact);
+                }
+                Ok(Evaluated::Number(ParamValue { value: z.re, exact: None, text: String::new() }))
             }
-            ParamValue { value: z.re, exact: None, text: String::new() }
-        } else {
-            return Err(Inexact);
-        })
+            Arithmetic::Rational => Err(Inexact),
+            // a weight is a real number: an exact value with an imaginary
+            // part (however small) is no weight
+            Arithmetic::Cyclotomic => {
+                self.exprs[k].cyclotomic(&env).filter(Cyclotomic::is_real).map(Evaluated::Field).ok_or(Inexact)
+            }
+        }
     }
 }
