@@ -1,34 +1,53 @@
-//! `certify_spectrum`: the certified spectral verdict alone (interval rows of
-//! S from the rules, interval Fourier blocks, their verified enclosures, the
-//! premises and the verdict), after the floating-point analysis it reuses
-//! (made once outside the timed loop), for Catmull–Clark, Loop and Doo–Sabin
-//! at n = 3..200. `scripts/bench-certify.sh` runs it and prints the table of
-//! the README ("Certified verdicts").
+//! The certified verdicts alone, after the floating-point analysis they
+//! reuse (made once outside the timed loop), for Catmull–Clark, Loop and
+//! Doo–Sabin:
+//! - `certify_spectrum` (interval rows of S from the rules, interval Fourier
+//!   blocks, their verified enclosures, the premises and the verdict) at
+//!   n = 3..200;
+//! - `certify_charmap` (the spectral certificate, the enclosed block
+//!   eigenvector, the interval net refined with the rules, the exact check of
+//!   the regular rules, the Jacobian bounds per ring face and the certified
+//!   winding number) at n = 3..50.
+//!
+//! `scripts/bench-certify.sh` runs both and prints the README's tables
+//! ("Certified verdicts", "Certified characteristic maps").
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::time::Duration;
-use subdlab::certify::certify_spectrum;
+use subdlab::certify::charmap::DEFAULT_MAX_LEVELS;
+use subdlab::certify::{certify_charmap, certify_spectrum};
 use subdlab::neighbourhood::Configuration;
-use subdlab::schemes;
-use subdlab::spectrum::{analyse, Options};
+use subdlab::schemes::{self, Scheme};
+use subdlab::spectrum::{analyse, Analysis, Options};
 
-const VALENCES: [usize; 7] = [3, 5, 10, 25, 50, 100, 200];
+const SCHEMES: [&str; 3] = ["catmull-clark", "loop", "doo-sabin"];
 
-fn certify(c: &mut Criterion) {
-    let mut group = c.benchmark_group("certify_spectrum");
+/// Time `run` on the analysis of every scheme at every valence, in a group.
+fn bench_group(c: &mut Criterion, group: &str, valences: &[usize], run: fn(&dyn Scheme, &Analysis)) {
+    let mut group = c.benchmark_group(group);
     group.sample_size(10).warm_up_time(Duration::from_millis(300)).measurement_time(Duration::from_secs(2));
-    for name in ["catmull-clark", "loop", "doo-sabin"] {
+    for name in SCHEMES {
         let scheme = schemes::build(name, &[]).unwrap();
-        for n in VALENCES {
+        for &n in valences {
             let config = Configuration::regular(scheme.as_ref(), n).unwrap();
             let analysis = analyse(scheme.as_ref(), &config, &Options::default()).unwrap();
-            group.bench_with_input(BenchmarkId::new(name, n), &analysis, |b, a| {
-                b.iter(|| certify_spectrum(scheme.as_ref(), a, 1).unwrap().verdict)
-            });
+            group.bench_with_input(BenchmarkId::new(name, n), &analysis, |b, a| b.iter(|| run(scheme.as_ref(), a)));
         }
     }
     group.finish();
 }
 
-criterion_group!(benches, certify);
+fn spectrum(c: &mut Criterion) {
+    bench_group(c, "certify_spectrum", &[3, 5, 10, 25, 50, 100, 200], |s, a| {
+        std::hint::black_box(certify_spectrum(s, a, 1).unwrap().verdict);
+    });
+}
+
+fn charmap(c: &mut Criterion) {
+    bench_group(c, "certify_charmap", &[3, 5, 10, 25, 50], |s, a| {
+        std::hint::black_box(certify_charmap(s, a, DEFAULT_MAX_LEVELS).unwrap().c1);
+    });
+}
+
+criterion_group!(benches, spectrum, charmap);
 criterion_main!(benches);

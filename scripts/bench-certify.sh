@@ -1,19 +1,26 @@
 #!/usr/bin/env bash
-# Runs the certified-spectrum benchmark (benches/certify.rs) and prints the
-# time of `certify_spectrum` per scheme and valence, and the time per block.
+# Runs the certified-verdict benchmarks (benches/certify.rs) and prints, per
+# group (certify_spectrum, certify_charmap), the mean time per scheme and
+# valence as the README's tables. Criterion arguments pass through, e.g.
+# `scripts/bench-certify.sh certify_charmap` runs one group.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo bench --bench certify -- "$@" >&2
 python3 - <<'PY'
 import json, os
-root = "target/criterion/certify_spectrum"
 schemes = ["catmull-clark", "loop", "doo-sabin"]
-ns = sorted(int(d) for d in os.listdir(os.path.join(root, schemes[0])) if d.isdigit())
-def mean(s, n):
-    with open(os.path.join(root, s, str(n), "new", "estimates.json")) as f:
-        return json.load(f)["mean"]["point_estimate"] * 1e-9
-print("| n | " + " | ".join(schemes) + " |")
-print("|---:|" + "---:|" * len(schemes))
-for n in ns:
-    print(f"| {n} | " + " | ".join(f"{mean(s, n) * 1e3:.2f} ms" for s in schemes) + " |")
+for group in ["certify_spectrum", "certify_charmap"]:
+    root = os.path.join("target/criterion", group)
+    if not os.path.isdir(os.path.join(root, schemes[0])):
+        continue
+    ns = sorted(int(d) for d in os.listdir(os.path.join(root, schemes[0])) if d.isdigit())
+    def mean(s, n):
+        with open(os.path.join(root, s, str(n), "new", "estimates.json")) as f:
+            return json.load(f)["mean"]["point_estimate"] * 1e-9
+    print(f"{group}\n")
+    print("| n | " + " | ".join(schemes) + " |")
+    print("|---:|" + "---:|" * len(schemes))
+    for n in ns:
+        print(f"| {n} | " + " | ".join(f"{mean(s, n) * 1e3:.2f} ms" for s in schemes) + " |")
+    print()
 PY
