@@ -2,7 +2,8 @@
 //! against the verdicts each claim file records (each of them derived and
 //! tested independently elsewhere: tests/non_box*.rs, khan_mustafa.rs,
 //! lin_luo_statements.rs, curves.rs, four_three.rs, pgs.rs, tps.rs,
-//! polar_bi2.rs; the identity claims carry their own derivation), and
+//! polar_bi2.rs, registry_independent.rs; the identity claims carry their
+//! own derivation), and
 //! users' own claim files drive the exit status.
 
 mod common;

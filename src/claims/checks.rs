@@ -96,6 +96,13 @@ fn env_with(s: &Subject, n: usize, m: Option<usize>) -> Result<Env, Error> {
             "'{name}' is given by the check (the valence n or k, the block m, quads, tris) and cannot be redefined in params or vars"
         )));
     }
+    define(env, defs)
+}
+
+/// `env` with the definitions `defs` (expressions in the names already in
+/// `env` and in each other) added, evaluated in dependency order: exactly
+/// where rational, else in floating point.
+fn define(mut env: Env, defs: Vec<(&String, &String)>) -> Result<Env, Error> {
     // definitions may refer to each other: evaluate in dependency order
     let mut pending = defs;
     while !pending.is_empty() {
@@ -283,6 +290,18 @@ pub(super) fn over_valences(
             detail: format!("first disagreement at n = {n} ({span})"),
         },
     })
+}
+
+/// `lhs = rhs` in `env`: exactly where both sides are rational, else in
+/// floating point (relative 1e-12); the two values as shown, and whether the
+/// comparison was exact.
+fn identity_at(l: &Expr, r: &Expr, lhs: &str, rhs: &str, env: &Env) -> Result<(bool, String, bool), Error> {
+    if let (Some(a), Some(b)) = (l.exact(env), r.exact(env)) {
+        return Ok((a == b, format!("{a} vs {b}"), true));
+    }
+    let (a, b) = (finite(l.eval(env)?, lhs)?, finite(r.eval(env)?, rhs)?);
+    let ok = (a - b).norm() <= 1e-12 * a.norm().max(b.norm()).max(1.0);
+    Ok((ok, format!("{} vs {}", show(a), show(b)), false))
 }
 
 fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
@@ -563,29 +582,43 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                 format!("{} tangent stencils, {}", t.len(), if ok { "same span" } else { "different span" }),
             ))
         }),
-        Check::Identity { lhs, rhs, vars } => {
-            let mut env = Env::new();
-            for (k, v) in vars {
-                env.insert(k.clone(), ParamValue::parse(v)?);
-            }
+        Check::Identity { lhs, rhs, vars, valences } => {
             let (l, r) = (Expr::parse(lhs)?, Expr::parse(rhs)?);
-            if let (Some(a), Some(b)) = (l.exact(&env), r.exact(&env)) {
-                let ok = a == b;
+            let Some(valences) = valences else {
+                let env = define(Env::new(), vars.iter().collect())?;
+                let (ok, computed, exact) = identity_at(&l, &r, lhs, rhs, &env)?;
                 return Ok(Partial {
                     verdict: if ok { Verdict::Holds } else { Verdict::Refuted },
                     stated: format!("{lhs} = {rhs}"),
-                    computed: format!("{a} vs {b}"),
-                    detail: "exact rational arithmetic".into(),
+                    computed,
+                    detail: if exact { "exact rational arithmetic" } else { "floating point (relative 1e-12)" }.into(),
                 });
-            }
-            let (a, b) = (finite(l.eval(&env)?, lhs)?, finite(r.eval(&env)?, rhs)?);
-            let ok = (a - b).norm() <= 1e-12 * a.norm().max(b.norm()).max(1.0);
-            Ok(Partial {
-                verdict: if ok { Verdict::Holds } else { Verdict::Refuted },
-                stated: format!("{lhs} = {rhs}"),
-                computed: format!("{} vs {}", show(a), show(b)),
-                detail: "floating point (relative 1e-12)".into(),
-            })
+            };
+            // a statement in n: the identity at every listed valence, with
+            // n (alias k) defined and the vars expressions in n
+            let subject = Subject {
+                scheme: String::new(),
+                valences: valences.clone(),
+                faces: Vec::new(),
+                params: Default::default(),
+                neighbourhood: None,
+                vars: vars.clone(),
+            };
+            let mut modes = (0, 0);
+            let mut p = over_valences(&subject, |n| {
+                let (ok, computed, exact) = identity_at(&l, &r, lhs, rhs, &env_for(&subject, n)?)?;
+                if exact {
+                    modes.0 += 1;
+                } else {
+                    modes.1 += 1;
+                }
+                Ok((ok, format!("{lhs} = {rhs}"), computed))
+            })?;
+            p.detail = format!(
+                "{}; {} valences in exact rational arithmetic, {} in floating point (relative 1e-12)",
+                p.detail, modes.0, modes.1
+            );
+            Ok(p)
         }
         Check::MatrixEigenvalues { valences, vars, rows, values } => {
             let subject = Subject {

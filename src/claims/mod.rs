@@ -299,11 +299,16 @@ pub enum Check {
         levels: Option<usize>,
     },
     /// An algebraic identity between two expressions, exact where possible.
+    /// `vars` are expressions in each other; with `valences` (a statement in
+    /// n) the identity must hold at every listed valence, with `n` (alias
+    /// `k`) defined and `vars` expressions in n as well.
     Identity {
         lhs: String,
         rhs: String,
         #[serde(default)]
         vars: BTreeMap<String, String>,
+        #[serde(default)]
+        valences: Option<Valences>,
     },
     /// The eigenvalues of a matrix printed in the paper (entries are
     /// expressions in n and `vars`) against the eigenvalues the paper states
@@ -350,7 +355,7 @@ pub const CHECK_KEYS: &[(&str, &[&str])] = &[
     ("characteristic-map", &["expect", "levels", "resolution", "certified"]),
     ("spectral-c1", &["expect", "certified"]),
     ("curvature", &["class", "c2", "fourier", "levels"]),
-    ("identity", &["lhs", "rhs", "vars"]),
+    ("identity", &["lhs", "rhs", "vars", "valences"]),
     ("matrix-eigenvalues", &["valences", "vars", "rows", "values"]),
     ("lattice-matrix", &["scheme", "window", "scale", "rows"]),
     ("builtin", &["name", "data"]),

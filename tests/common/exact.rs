@@ -56,3 +56,42 @@ pub fn algebraic(a: &[Vec<Rational>], lambda: &Rational) -> usize {
     }
     a.len() - rank(p)
 }
+
+/// A basis of the null space {x : A x = 0} over the rationals (reduced row
+/// echelon form; one basis vector per free column).
+pub fn null_space(a: &[Vec<Rational>]) -> Vec<Vec<Rational>> {
+    let mut m: Mat = a.to_vec();
+    let (rows, cols) = (m.len(), m.first().map_or(0, |r| r.len()));
+    let mut pivots = Vec::new();
+    let mut r = 0;
+    for c in 0..cols {
+        let Some(p) = (r..rows).find(|&i| !m[i][c].is_zero()) else { continue };
+        m.swap(r, p);
+        let inv = Rational::from_integer(1.into()) / m[r][c].clone();
+        for x in &mut m[r][c..] {
+            *x = x.clone() * inv.clone();
+        }
+        let pivot = m[r].clone();
+        for (i, row) in m.iter_mut().enumerate() {
+            if i != r && !row[c].is_zero() {
+                let f = row[c].clone();
+                for (x, p) in row[c..].iter_mut().zip(&pivot[c..]) {
+                    *x -= f.clone() * p.clone();
+                }
+            }
+        }
+        pivots.push(c);
+        r += 1;
+    }
+    (0..cols)
+        .filter(|c| !pivots.contains(c))
+        .map(|free| {
+            let mut x = vec![Rational::zero(); cols];
+            x[free] = Rational::from_integer(1.into());
+            for (k, &p) in pivots.iter().enumerate() {
+                x[p] = -m[k][free].clone();
+            }
+            x
+        })
+        .collect()
+}
