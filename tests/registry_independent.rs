@@ -622,8 +622,11 @@ const FOLDED: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/schemes/catmull-clark
 /// (its far side's midpoint is (e_j + e_{j+1})/2), every control quad around
 /// V is a dart. End to end the CLI says the spectrum is fine and the map is
 /// not regular; independently (nalgebra's eigenvectors, the test's own signed
-/// areas) the first ring's control net has the dart and the refined ring has
-/// triangles of both orientations: a fold, not a reflection.
+/// areas) the first ring's control net has the dart, the refined ring has
+/// triangles of both orientations, and the limit map's exact Jacobian at the
+/// ring's regular vertices (`limit_jacobians_at_regular_ring_vertices`) takes
+/// both signs: a fold of the limit map, not a reflection nor an artefact of
+/// the piecewise linear net.
 #[test]
 fn folded_ring_scheme_file_has_a_valid_spectrum_and_a_folded_map() {
     for n in ["3", "5", "8"] {
@@ -666,10 +669,26 @@ fn folded_ring_scheme_file_has_a_valid_spectrum_and_a_folded_map() {
         let dart = signed_area(&[e0, f, e1]);
         assert!(outer * dart < 0.0, "triangle (e_{j}, f_{j}, e_(j + 1)) turns the other way: a dart");
     }
+    // the refined net (piecewise linear) folds ...
     let facts = ring_facts(scheme.as_ref(), &d, &pair.values, 3);
     let (negative, positive) = facts.ring_signs;
     assert!(negative > 0 && positive > negative, "{negative} folded triangles of {}", negative + positive);
     assert!(facts.min_ratio < 0.0);
+    // ... and so does the limit map: its exact Jacobian at the ring's regular
+    // vertices takes both signs, at every level (Catmull–Clark itself, the
+    // control: positive everywhere)
+    for levels in [3, 4] {
+        let j = limit_jacobians_at_regular_ring_vertices(scheme.as_ref(), &d, &pair.values, levels);
+        let negative = j.iter().filter(|x| **x < 0.0).count();
+        assert!(negative > 0 && j.len() - negative > negative, "level {levels}: {negative} of {} negative", j.len());
+    }
+    let cc = schemes::build("catmull-clark", &[]).unwrap();
+    let d = discover(cc.as_ref(), &Configuration::regular(cc.as_ref(), n).unwrap()).unwrap();
+    let c = common::cos2pi(1, n);
+    let lambda = (5.0 + c + (std::f64::consts::PI / n as f64).cos() * (18.0 + 2.0 * c).sqrt()) / 16.0;
+    let pair = subdominant_by_nalgebra(cc.as_ref(), &d, lambda, "catmull-clark");
+    let j = limit_jacobians_at_regular_ring_vertices(cc.as_ref(), &d, &pair.values, 4);
+    assert!(!j.is_empty() && j.iter().all(|x| *x > 0.0), "Catmull–Clark's limit Jacobians are positive");
 }
 
 // ---------------------------------------------------------------------------
@@ -1015,4 +1034,49 @@ rhs = "4"
     assert!(o[1].detail.contains("first disagreement at n = 7"), "{}", o[1].detail);
     assert!(o[1].computed.contains("n=7: 1 vs 0"), "{}", o[1].computed);
     assert_eq!(o[2].verdict, Verdict::Inconclusive, "{}", o[2].detail);
+}
+
+/// Exact Jacobians of the limit map at the regular (valence-4) vertices of
+/// the refined ring of a Catmull–Clark-type net: the limit surface near such
+/// a vertex is the bicubic B-spline of its 3 × 3 neighbourhood, whose
+/// derivatives at the vertex are (1/6)(1, 4, 1) ⊗ (−1/2, 0, 1/2) applied to
+/// the neighbours: with e_0..e_3 the edge neighbours counter-clockwise and
+/// f_i the corner between e_i and e_{i+1},
+/// ∂u = (e_0 − e_2)/3 + (f_0 + f_3 − f_1 − f_2)/12, ∂v = (e_1 − e_3)/3 + (f_0 + f_1 − f_2 − f_3)/12.
+fn limit_jacobians_at_regular_ring_vertices(
+    scheme: &dyn Scheme,
+    d: &Discovered,
+    values: &[[f64; 2]],
+    levels: usize,
+) -> Vec<f64> {
+    let fine = net::refine_net(scheme, d, net::initial_points(d, values).unwrap(), levels).unwrap();
+    let mesh = &fine.mesh;
+    let faces = mesh.faces();
+    let ring: HashSet<usize> =
+        (0..faces.len()).filter(|&f| fine.outer[f] && !fine.inner[f]).flat_map(|f| faces[f].clone()).collect();
+    let orientation = (0..faces.len())
+        .filter(|&f| fine.outer[f])
+        .map(|f| signed_area(&faces[f].iter().map(|&v| fine.points[v].unwrap()).collect::<Vec<_>>()))
+        .sum::<f64>()
+        .signum();
+    let mut out = Vec::new();
+    for &v in &ring {
+        let Some(fan) = mesh.vertex_fan(v) else { continue };
+        if fan.len() != 4 || fan.iter().any(|f| f.len() != 4) {
+            continue;
+        }
+        let p = |u: usize| fine.points[u];
+        let (Some(e), Some(f)) = (
+            fan.iter().map(|f| p(f[1])).collect::<Option<Vec<_>>>(),
+            fan.iter().map(|f| p(f[2])).collect::<Option<Vec<_>>>(),
+        ) else {
+            continue;
+        };
+        let du: [f64; 2] =
+            std::array::from_fn(|c| (e[0][c] - e[2][c]) / 3.0 + (f[0][c] + f[3][c] - f[1][c] - f[2][c]) / 12.0);
+        let dv: [f64; 2] =
+            std::array::from_fn(|c| (e[1][c] - e[3][c]) / 3.0 + (f[0][c] + f[1][c] - f[2][c] - f[3][c]) / 12.0);
+        out.push(orientation * (du[0] * dv[1] - du[1] * dv[0]));
+    }
+    out
 }
