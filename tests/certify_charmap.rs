@@ -178,6 +178,32 @@ fn a_thin_ring_that_the_raster_rejects_at_the_defaults_is_proved_injective() {
 }
 
 #[test]
+fn a_folded_map_with_a_valid_spectrum_is_disproved_with_a_witness() {
+    // schemes/catmull-clark-folded-ring.toml: λ1 = 31/32 from blocks 1 and
+    // n − 1 by design (its comment derives it), control quads around the
+    // centre that are darts, and a limit Jacobian of both signs
+    // (tests/registry_independent.rs evaluates it exactly)
+    let scheme =
+        schemes::resolve(&format!("{}/schemes/catmull-clark-folded-ring.toml", env!("CARGO_MANIFEST_DIR")), &[])
+            .unwrap();
+    for n in [3, 5, 6] {
+        let config = Configuration::regular(scheme.as_ref(), n).unwrap();
+        let analysis = analyse(scheme.as_ref(), &config, &Options::default()).unwrap();
+        let c = certify_charmap(scheme.as_ref(), &analysis, 5).unwrap();
+        assert_eq!(c.spectrum.verdict, Verdict::Proved, "n = {n}: the spectrum is valid");
+        assert!(
+            matches!(&c.regularity, Verdict::Disproved(w) if w.contains("changes sign")),
+            "n = {n}: {:?}",
+            c.regularity
+        );
+        assert!(matches!(c.injectivity, Verdict::Disproved(_)) && matches!(c.c1, Verdict::Disproved(_)), "n = {n}");
+        let w = c.fold_witness.as_ref().expect("a witness");
+        assert!(w.negative_upper_bound < 0.0 && w.positive_lower_bound > 0.0, "n = {n}: {w:?}");
+        assert!(c.negative_faces > 0 && c.positive_faces > 0, "n = {n}");
+    }
+}
+
+#[test]
 fn the_cli_prints_the_certificate_in_json_and_text() {
     let out = subdlab(&["charmap", "catmull-clark", "-n", "7", "--certify", "--json"]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));

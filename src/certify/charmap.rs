@@ -67,7 +67,7 @@ use crate::spectrum::{Analysis, Method};
 
 /// Analysis steps of refinement tried in turn until every ring face is
 /// decided (the first level whose ring faces all have regular windows is 2).
-pub const DEFAULT_MAX_LEVELS: usize = 4;
+pub const DEFAULT_MAX_LEVELS: usize = 5;
 pub const MAX_LEVELS: usize = 6;
 
 pub type Point = [Interval; 2];
