@@ -1,11 +1,11 @@
 //! Evaluation of the claim checks. Analyses are cached per scheme, parameters,
 //! valence and neighbourhood, since many claims look at the same spectrum.
 
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap};
 
 use num_complex::Complex64;
 
-use super::{Check, Claim, Outcome, Subject, Verdict};
+use super::{Check, Claim, Outcome, Subject, Valences, Verdict};
 use crate::error::Error;
 use crate::lattice;
 use crate::neighbourhood::{Configuration, NeighbourhoodKind, VertexKind};
@@ -596,14 +596,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
             };
             // a statement in n: the identity at every listed valence, with
             // n (alias k) defined and the vars expressions in n
-            let subject = Subject {
-                scheme: String::new(),
-                valences: valences.clone(),
-                faces: Vec::new(),
-                params: Default::default(),
-                neighbourhood: None,
-                vars: vars.clone(),
-            };
+            let subject = valences_only(valences, vars);
             let mut modes = (0, 0);
             let mut p = over_valences(&subject, |n| {
                 let (ok, computed, exact) = identity_at(&l, &r, lhs, rhs, &env_for(&subject, n)?)?;
@@ -621,14 +614,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
             Ok(p)
         }
         Check::MatrixEigenvalues { valences, vars, rows, values } => {
-            let subject = Subject {
-                scheme: String::new(),
-                valences: valences.clone(),
-                faces: Vec::new(),
-                params: Default::default(),
-                neighbourhood: None,
-                vars: vars.clone(),
-            };
+            let subject = valences_only(valences, vars);
             over_valences(&subject, |n| {
                 let env = env_for(&subject, n)?;
                 let cols = rows.first().map(|r| r.len()).unwrap_or(0);
@@ -793,4 +779,17 @@ fn selector(kind: VertexKind, ring: usize) -> String {
 
 fn in_span(basis: &[Vec<f64>], v: &[f64]) -> bool {
     v.iter().any(|x| *x != 0.0) && crate::spectrum::stencils::span_residual(basis, v) < 1e-8
+}
+
+/// A subject with valences and variables only: the statements in n that
+/// analyse no scheme (identities, typed matrices) range over it.
+fn valences_only(valences: &Valences, vars: &BTreeMap<String, String>) -> Subject {
+    Subject {
+        scheme: String::new(),
+        valences: valences.clone(),
+        faces: Vec::new(),
+        params: Default::default(),
+        neighbourhood: None,
+        vars: vars.clone(),
+    }
 }
