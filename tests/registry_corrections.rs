@@ -9,14 +9,8 @@ use num_traits::{One, Zero};
 use subdlab::claims::{evaluate, Outcome, Verdict};
 use subdlab::numeric::Rational;
 
-fn registry(paper: &str, id: &str) -> Outcome {
-    let o = common::registry_outcome(id);
-    assert_eq!(o.paper, paper, "{id}");
-    o
-}
-
 fn verdict(paper: &str, id: &str, want: Verdict) -> Outcome {
-    let o = registry(paper, id);
+    let o = common::registry_outcome_in(paper, id);
     assert_eq!(o.verdict, want, "{id}: {} / {} / {}", o.stated, o.computed, o.detail);
     o
 }

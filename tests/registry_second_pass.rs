@@ -14,14 +14,8 @@ use subdlab::numeric::Rational;
 use subdlab::schemes;
 use subdlab::spectrum::{analyse, Method, Options};
 
-fn registry(paper: &str, id: &str) -> Outcome {
-    let o = common::registry_outcome(id);
-    assert_eq!(o.paper, paper, "{id}");
-    o
-}
-
 fn verdict(paper: &str, id: &str, want: Verdict) -> Outcome {
-    let o = registry(paper, id);
+    let o = common::registry_outcome_in(paper, id);
     assert_eq!(o.verdict, want, "{id}: {} / {} / {}", o.stated, o.computed, o.detail);
     assert_eq!(o.expected, Some(want), "{id}: the registry records the verdict found here");
     o

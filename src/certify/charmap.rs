@@ -221,14 +221,6 @@ pub fn certify_charmap(
     Ok(cert)
 }
 
-impl CharMapCertificate {
-    /// Whether the geometric verdicts rest on a premise confirmed to
-    /// interval overlap only.
-    pub fn conditional_geometry(&self) -> bool {
-        self.geometry_conditional
-    }
-}
-
 /// Reif's criterion from its three parts: proved when all are, disproved
 /// when one is.
 fn combine(spectrum: &Verdict, regularity: &Verdict, injectivity: &Verdict) -> Verdict {
@@ -275,12 +267,12 @@ fn geometric_half(
             }
         }
         let Some((ring, inside, windows)) = chosen else { continue };
-        let part = check_rules(scheme, &net.mesh, ring, &windows)?;
+        let part = check_rules(scheme, &net.mesh, &windows)?;
         cert.regular_part = Some(part.0);
         cert.rules_checked = part.1;
-        let bounds: Vec<(Interval, bool)> = windows.iter().map(Window::jacobian_bounds).collect();
-        let positive = bounds.iter().filter(|b| b.0.lo > 0.0).count();
-        let negative = bounds.iter().filter(|b| b.0.hi < 0.0).count();
+        let bounds: Vec<Interval> = windows.iter().map(Window::jacobian_bounds).collect();
+        let positive = bounds.iter().filter(|b| b.lo > 0.0).count();
+        let negative = bounds.iter().filter(|b| b.hi < 0.0).count();
         let undecided = ring.len() - positive - negative;
         cert.levels = Some(levels);
         cert.ring_faces = ring.len();
@@ -303,7 +295,7 @@ fn geometric_half(
             let most = |better: &dyn Fn(&Interval, &Interval) -> bool| {
                 let mut best: Option<usize> = None;
                 for (i, b) in bounds.iter().enumerate() {
-                    if best.is_none_or(|j| better(&b.0, &bounds[j].0)) {
+                    if best.is_none_or(|j| better(b, &bounds[j])) {
                         best = Some(i);
                     }
                 }
@@ -313,9 +305,9 @@ fn geometric_half(
             let pos = most(&|a, b| a.lo > b.lo);
             cert.fold_witness = Some(FoldWitness {
                 negative_at: centre(ring[neg]),
-                negative_upper_bound: bounds[neg].0.hi,
+                negative_upper_bound: bounds[neg].hi,
                 positive_at: centre(ring[pos]),
-                positive_lower_bound: bounds[pos].0.lo,
+                positive_lower_bound: bounds[pos].lo,
             });
             let why = format!(
                 "at {levels} levels the Jacobian is proved positive on {positive} ring faces and negative on \
@@ -372,15 +364,9 @@ fn geometric_half(
     Err(last_reason)
 }
 
-fn record_margins(
-    cert: &mut CharMapCertificate,
-    net: &Net<Point>,
-    bounds: &[(Interval, bool)],
-    sign: f64,
-    area_factor: usize,
-) {
-    let lower = bounds.iter().map(|b| if sign > 0.0 { b.0.lo } else { -b.0.hi }).fold(f64::INFINITY, f64::min);
-    let upper = bounds.iter().map(|b| if sign > 0.0 { b.0.hi } else { -b.0.lo }).fold(0.0, f64::max);
+fn record_margins(cert: &mut CharMapCertificate, net: &Net<Point>, bounds: &[Interval], sign: f64, area_factor: usize) {
+    let lower = bounds.iter().map(|b| if sign > 0.0 { b.lo } else { -b.hi }).fold(f64::INFINITY, f64::min);
+    let upper = bounds.iter().map(|b| if sign > 0.0 { b.hi } else { -b.lo }).fold(0.0, f64::max);
     // the ring's points lie within radius R; each refinement divides a face's
     // parameter area by the host's faces per face (4 dyadic, 9 ternary), and
     // the Jacobian in level-0 parameters multiplies by as much
@@ -413,7 +399,7 @@ fn certified_net(
         return Err("the certified map needs the Fourier blocks of a rotation-symmetric configuration".into());
     }
     let config = &analysis.discovered.config;
-    let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { config.valence() };
+    let period = config.rotation_period(scheme);
     let orbits = Orbits::from_labels(&s.labels, period, s.valence);
     let g = orbits.group_order;
     if g < 3 {
@@ -574,9 +560,9 @@ impl Window {
     }
 
     /// An enclosure of the range of det(uᵢ, vⱼ) over the window's edge
-    /// vectors (the Jacobian over the face lies in it); the flag says whether
-    /// every pair was finite.
-    fn jacobian_bounds(&self) -> (Interval, bool) {
+    /// vectors (the Jacobian over the face lies in it); the whole line when
+    /// a bound is not finite, which decides no sign.
+    fn jacobian_bounds(&self) -> Interval {
         let mut lo = f64::INFINITY;
         let mut hi = f64::NEG_INFINITY;
         for u in &self.along_u {
@@ -586,27 +572,24 @@ impl Window {
                 hi = hi.max(det.hi);
             }
         }
-        let finite = lo.is_finite() && hi.is_finite();
-        (if finite { Interval::new(lo, hi) } else { Interval::new(f64::NEG_INFINITY, f64::INFINITY) }, finite)
+        if lo.is_finite() && hi.is_finite() {
+            Interval::new(lo, hi)
+        } else {
+            Interval::new(f64::NEG_INFINITY, f64::INFINITY)
+        }
     }
 }
 
 /// Check the rules at every regular entity the windows hold against one
 /// box spline's masks, exactly. Returns the box spline and the number of
 /// stencils compared.
-fn check_rules(
-    scheme: &dyn Scheme,
-    mesh: &PolyMesh,
-    ring: &[usize],
-    windows: &[Window],
-) -> Result<(RegularPart, usize), String> {
+fn check_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[Window]) -> Result<(RegularPart, usize), String> {
     let mut corners: HashSet<usize> = HashSet::new();
     let mut faces: HashSet<usize> = HashSet::new();
     for w in windows {
         corners.extend(mesh.face(w.face).iter().copied());
         faces.extend(w.faces.iter().copied());
     }
-    debug_assert_eq!(ring.len(), windows.len());
     let refined = connectivity(scheme, mesh).map_err(|e| format!("the net could not be refined: {e}"))?;
     let vf = mesh.vertex_faces();
     let ternary = scheme.topology().faces_per_face() == 9;

@@ -163,7 +163,7 @@ const STATEMENT: &str = "for the true local subdivision matrix S (every weight e
 /// valence when the scheme's rules are not rotation symmetric).
 pub fn certify_analysis(scheme: &dyn Scheme, analysis: &Analysis) -> Result<SpectrumCertificate, Error> {
     let config = &analysis.discovered.config;
-    let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { config.valence() };
+    let period = config.rotation_period(scheme);
     certify_spectrum(scheme, analysis, period)
 }
 

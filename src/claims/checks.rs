@@ -451,7 +451,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
             use crate::certify::Verdict;
             let got = match (&c.regularity, &c.injectivity) {
                 (Verdict::Disproved(_), _) | (_, Verdict::Disproved(_)) => false,
-                (Verdict::Proved, Verdict::Proved) if !c.conditional_geometry() => true,
+                (Verdict::Proved, Verdict::Proved) if !c.geometry_conditional => true,
                 (Verdict::Proved, Verdict::Proved) => {
                     return Err(Error::Claim(format!(
                         "n = {n}: the certified map is PROVED only given the rotation premise confirmed to interval overlap (not exactly): no unconditional proof"

@@ -84,6 +84,17 @@ impl Configuration {
             .unwrap_or(n)
     }
 
+    /// The rotation period of the configuration under `scheme`'s rules:
+    /// [`Self::symmetry_period`], or the valence (no rotation symmetry) for
+    /// rules that are not rotation symmetric, whatever the configuration.
+    pub fn rotation_period(&self, scheme: &dyn Scheme) -> usize {
+        if scheme.rotation_symmetric() {
+            self.symmetry_period()
+        } else {
+            self.valence()
+        }
+    }
+
     pub fn face_sequence(&self) -> String {
         self.sectors.iter().map(|k| k.letter()).collect()
     }

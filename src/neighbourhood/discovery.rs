@@ -262,7 +262,7 @@ const PROBE_VALENCE: usize = 24;
 /// under the rules, and a patch only has to be large enough to evaluate them.
 fn first_patch_rings(scheme: &dyn Scheme, config: &Configuration) -> usize {
     let n = config.valence();
-    let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { n };
+    let period = config.rotation_period(scheme);
     if n <= 2 * PROBE_VALENCE || 2 * period > PROBE_VALENCE || scheme.fixed_valence().is_some() {
         return 2;
     }
@@ -518,9 +518,7 @@ fn try_discover(
     let topology = scheme.topology();
     let steps = topology.steps_per_analysis();
     let chart0 = patch.chart.as_ref().expect("patch has a chart");
-    let n = config.valence();
-    // asymmetric rules have no rotation symmetry, whatever the configuration
-    let period = if scheme.rotation_symmetric() { config.symmetry_period() } else { n };
+    let period = config.rotation_period(scheme);
     let rot0 = Rotation::new(&patch, period, true);
     // Only representatives are walked, so a large symmetric patch is refined
     // only in the sectors around theirs (vertex ids kept); the whole step is

@@ -568,10 +568,7 @@ impl Expr {
             Expr::Call(f, a) => match f.as_str() {
                 // cos(q π) and sin(q π) for rational q
                 "cos" | "sin" => {
-                    let q = a.pi_multiple(env, terms)?;
-                    let (num, den) = (q.numer().to_i64()?, q.denom().to_i64()?);
-                    // cos(qπ) = cos(2π · num / (2 den)); sin(x) = cos(x − π/2)
-                    let (k, n) = if f == "cos" { (num, 2 * den) } else { (num * 2 - den, 4 * den) };
+                    let (k, n) = cos_angle(f, &a.pi_multiple(env, terms)?)?;
                     exact_cos_2pi(k, n)?
                 }
                 "sqrt" => {
@@ -590,12 +587,7 @@ impl Expr {
                 _ => return None,
             },
             Expr::Sum(var, from, to, summand) => {
-                let (lo, hi) = (from.exact_counted(env, terms)?, to.exact_counted(env, terms)?);
-                if !lo.is_integer() || !hi.is_integer() || env.contains_key(var) {
-                    return None;
-                }
-                let (lo, hi) = (lo.to_integer().to_i64()?, hi.to_integer().to_i64()?);
-                spend(terms, hi as i128 - lo as i128 + 1).ok()?;
+                let (lo, hi) = exact_sum_range(var, from, to, env, terms)?;
                 let mut inner = env.clone();
                 let mut total = Rational::zero();
                 for k in lo..=hi {
@@ -643,14 +635,7 @@ impl Expr {
             }
             Expr::Call(f, a) => match f.as_str() {
                 "cos" | "sin" => {
-                    let q = a.pi_multiple(env, terms)?;
-                    let (num, den) = (q.numer().to_i64()?, q.denom().to_i64()?);
-                    // cos(qπ) = cos(2π · num / (2 den)); sin(x) = cos(x − π/2)
-                    let (k, n) = if f == "cos" {
-                        (num, den.checked_mul(2)?)
-                    } else {
-                        (num.checked_mul(2)?.checked_sub(den)?, den.checked_mul(4)?)
-                    };
+                    let (k, n) = cos_angle(f, &a.pi_multiple(env, terms)?)?;
                     <Cyclotomic as super::weight::Weight>::cos_2pi(k, n).ok()?
                 }
                 "sqrt" | "abs" => {
@@ -673,12 +658,7 @@ impl Expr {
                 _ => return None,
             },
             Expr::Sum(var, from, to, summand) => {
-                let (lo, hi) = (from.exact_counted(env, terms)?, to.exact_counted(env, terms)?);
-                if !lo.is_integer() || !hi.is_integer() || env.contains_key(var) {
-                    return None;
-                }
-                let (lo, hi) = (lo.to_integer().to_i64()?, hi.to_integer().to_i64()?);
-                spend(terms, hi as i128 - lo as i128 + 1).ok()?;
+                let (lo, hi) = exact_sum_range(var, from, to, env, terms)?;
                 let mut inner = env.clone();
                 let mut total = <Cyclotomic as super::weight::Weight>::zero();
                 for k in lo..=hi {
@@ -747,6 +727,29 @@ impl Expr {
             e => e.exact_counted(env, terms).filter(|x| x.is_zero()),
         }
     }
+}
+
+/// cos(qπ) (`f` = "cos") or sin(qπ) as cos(2πk/n): cos(qπ) = cos(2π·num/(2·den)),
+/// sin(x) = cos(x − π/2). None when the integers overflow.
+fn cos_angle(f: &str, q: &Rational) -> Option<(i64, i64)> {
+    let (num, den) = (q.numer().to_i64()?, q.denom().to_i64()?);
+    if f == "cos" {
+        Some((num, den.checked_mul(2)?))
+    } else {
+        Some((num.checked_mul(2)?.checked_sub(den)?, den.checked_mul(4)?))
+    }
+}
+
+/// The integer range of an exact sum, its terms paid for: None when a bound
+/// is not an exact integer or the index shadows a variable.
+fn exact_sum_range(var: &str, from: &Expr, to: &Expr, env: &Env, terms: &mut u64) -> Option<(i64, i64)> {
+    let (lo, hi) = (from.exact_counted(env, terms)?, to.exact_counted(env, terms)?);
+    if !lo.is_integer() || !hi.is_integer() || env.contains_key(var) {
+        return None;
+    }
+    let (lo, hi) = (lo.to_integer().to_i64()?, hi.to_integer().to_i64()?);
+    spend(terms, hi as i128 - lo as i128 + 1).ok()?;
+    Some((lo, hi))
 }
 
 fn token_text(t: &Tok) -> String {

@@ -233,8 +233,7 @@ pub fn analyse(scheme: &dyn Scheme, config: &Configuration, opts: &Options) -> R
             analysis_size: discovered.analysis.len(),
         },
         labels: set_labels(&discovered, kind),
-        // asymmetric rules have no rotation symmetry, whatever the configuration
-        period: if scheme.rotation_symmetric() { config.symmetry_period() } else { n },
+        period: config.rotation_period(scheme),
         sectors: n,
         method: opts.method,
         exact: opts.exact,

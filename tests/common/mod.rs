@@ -169,6 +169,13 @@ pub fn registry_outcome(id: &str) -> subdlab::claims::Outcome {
     panic!("no registry claim '{id}'")
 }
 
+/// [`registry_outcome`], checking that the claim belongs to `paper`.
+pub fn registry_outcome_in(paper: &str, id: &str) -> subdlab::claims::Outcome {
+    let o = registry_outcome(id);
+    assert_eq!(o.paper, paper, "{id}");
+    o
+}
+
 /// Asserts the registry's verdict on `id` is `want`, the verdict the calling
 /// test derived by hand.
 pub fn assert_registry_verdict(id: &str, want: subdlab::claims::Verdict) {
