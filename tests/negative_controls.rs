@@ -212,6 +212,25 @@ fn spectral_c1_and_characteristic_map() {
 }
 
 #[test]
+fn certified_characteristic_map() {
+    // Catmull–Clark is C¹ at every valence (Peters & Reif 1998): proved;
+    // schemes/catmull-clark-folded-ring.toml folds by design (its comment
+    // derives the darts): disproved; sqrt(3)'s regular rules are not a box
+    // spline's: no proof either way
+    let cc = "check = \"characteristic-map\"\nscheme = \"catmull-clark\"\nvalences = [3, 5]\ncertified = true";
+    holds(cc);
+    refuted(&format!("{cc}\nexpect = false"), "injectivity PROVED");
+    let folded = format!(
+        "check = \"characteristic-map\"\nscheme = \"{}/schemes/catmull-clark-folded-ring.toml\"\nvalences = [3]\ncertified = true",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    refuted(&folded, "regularity DISPROVED");
+    holds(&format!("{folded}\nexpect = false"));
+    let o = run("check = \"characteristic-map\"\nscheme = \"sqrt3\"\nvalences = [5]\ncertified = true");
+    assert_eq!(o.verdict, Verdict::Inconclusive, "{} / {}", o.computed, o.detail);
+}
+
+#[test]
 fn matrix_eigenvalues() {
     let body = |values: &str| {
         format!("check = \"matrix-eigenvalues\"\nvalences = [3]\nrows = [[\"2\", \"1\"], [\"1\", \"2\"]]\nvalues = [{values}]")
