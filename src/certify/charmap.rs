@@ -53,17 +53,14 @@ use serde::Serialize;
 
 use super::complex::CInterval;
 use super::discs::eigenvector;
-use super::matrix::{fourier_blocks, IntervalRows};
 use super::spectrum::{certify_analysis, SpectrumCertificate, Verdict};
 use crate::charmap::net::{self, Net};
-use crate::dft::Orbits;
 use crate::error::Error;
-use crate::matrix::local::{assemble_rows, AssembleError};
 use crate::mesh::PolyMesh;
 use crate::numeric::{Interval, Rational, Weight};
 use crate::refine::{connectivity, stencil_at, Origin};
 use crate::sdc::Scheme;
-use crate::spectrum::{Analysis, Method};
+use crate::spectrum::Analysis;
 
 /// Analysis steps of refinement tried in turn until every ring face is
 /// decided (the first level whose ring faces all have regular windows is 2).
@@ -193,7 +190,19 @@ pub fn certify_charmap(
         fold_witness: None,
         reasons: Vec::new(),
     };
-    let geometric = geometric_half(scheme, analysis, max_levels, &mut cert);
+    // regularity and injectivity are statements about the map of λ1's
+    // eigenvectors: attempted only once the spectrum is proved
+    let geometric = match &cert.spectrum.verdict {
+        Verdict::Proved => geometric_half(scheme, analysis, max_levels, &mut cert),
+        other => Err(format!(
+            "not attempted: the spectrum is {} ({}), so there is no certified λ1 whose eigenvectors define the map",
+            other.word(),
+            match other {
+                Verdict::Disproved(w) | Verdict::NotProved(w) => w.as_str(),
+                Verdict::Proved => "",
+            }
+        )),
+    };
     let (regularity, injectivity) = match geometric {
         Ok(v) => v,
         Err(why) => (Verdict::NotProved(why.clone()), Verdict::NotProved(why)),
@@ -241,7 +250,7 @@ fn geometric_half(
     max_levels: usize,
     cert: &mut CharMapCertificate,
 ) -> Result<(Verdict, Verdict), String> {
-    let level0 = certified_net(scheme, analysis, cert)?;
+    let level0 = certified_net(analysis, cert)?;
     let d = &analysis.discovered;
     let mut last_reason = String::new();
     for levels in 2..=max_levels {
@@ -388,46 +397,28 @@ fn record_margins(cert: &mut CharMapCertificate, net: &Net<Point>, bounds: &[Int
     }
 }
 
-/// The level-0 net of enclosures of the subdominant pair.
-fn certified_net(
-    scheme: &dyn Scheme,
-    analysis: &Analysis,
-    cert: &mut CharMapCertificate,
-) -> Result<Vec<Option<Point>>, String> {
-    let s = &analysis.spectrum;
-    if s.method != Method::Dft {
-        return Err("the certified map needs the Fourier blocks of a rotation-symmetric configuration".into());
+/// The level-0 net of enclosures of the subdominant pair: the eigenvector
+/// of the disc that the spectral certificate proved to hold λ1 (in block 1's
+/// verified diagonalisation, the one the proof enclosed), never one chosen by
+/// a floating-point eigenvalue.
+fn certified_net(analysis: &Analysis, cert: &mut CharMapCertificate) -> Result<Vec<Option<Point>>, String> {
+    let spectrum = &cert.spectrum;
+    if spectrum.verdict != Verdict::Proved {
+        return Err("the spectrum is not proved, so λ1 and its eigenvectors are not known".into());
     }
-    let config = &analysis.discovered.config;
-    let period = config.rotation_period(scheme);
-    let orbits = Orbits::from_labels(&s.labels, period, s.valence);
+    let proof = spectrum.proof.as_ref().ok_or("the spectral certificate hands on no proof data")?;
+    let orbits = &proof.orbits;
     let g = orbits.group_order;
-    if g < 3 {
-        return Err(format!("the rotation group has order {g}: blocks 1 and g − 1 do not split a pair"));
-    }
-    let l1 = s.eigenvalues.get(1).ok_or("the spectrum has no subdominant eigenvalue")?;
-    let rows: IntervalRows =
-        assemble_rows::<Interval>(scheme, &analysis.discovered, s.neighbourhood, &orbits.representative).map_err(
-            |e| match e {
-                AssembleError::Inexact => "numerical only: a weight has no enclosure".to_string(),
-                other => format!("the interval rows of S could not be assembled: {other:?}"),
-            },
-        )?;
-    // the map of the pair from blocks m and g − m winds m times around the
-    // centre: build it from the block the float spectrum puts λ1 in, so
-    // that a wrong-block pair is disproved by its winding number
-    let m = l1.blocks.iter().copied().filter(|&m| m >= 1 && 2 * m < g).min().ok_or_else(|| {
-        format!(
-            "λ1 is not from a pair of conjugate Fourier blocks m and {g} − m (blocks {:?}): no planar map to certify",
-            l1.blocks
-        )
-    })?;
-    let block = fourier_blocks(&rows, &orbits)
-        .into_iter()
-        .find(|(b, _)| *b == m)
-        .map(|(_, b)| b)
-        .ok_or("the Fourier block of λ1 is missing")?;
-    let (z, radius) = eigenvector(&block, faer::c64::new(l1.re, l1.im))
+    // PROVED: λ1 is the simple leading eigenvalue of block 1 (and of g − 1)
+    let m = 1;
+    let row = proof.lambda1_row.ok_or("the spectral certificate names no disc for λ1")?;
+    let diagonalisation = spectrum
+        .blocks
+        .iter()
+        .find(|b| b.block == m)
+        .and_then(|b| b.diagonalisation.as_ref())
+        .ok_or("block 1's verified diagonalisation is missing")?;
+    let (z, radius) = eigenvector(diagonalisation, row)
         .map_err(|why| format!("the subdominant eigenvector of block {m} is not enclosed: {why}"))?;
     cert.eigenvector_radius = Some(radius);
     let list = orbits.block_orbits(m);
@@ -761,74 +752,140 @@ fn winding_number(net: &Net<Point>, ring: &[usize], inside: &[usize], windows: &
         })
         .collect();
     let start = *next.keys().min().ok_or("the inner region has no boundary")?;
-    let mut cones: Vec<(f64, f64)> = Vec::new();
+    // the chain a₀ → a₁ → … → a₀, and for each edge the window of the ring
+    // face on its other side (which holds the edge as (b, a))
+    let mut chain: Vec<(usize, usize)> = Vec::new();
     let mut a = start;
     loop {
         let b = next[&a];
-        // the ring face on the other side holds the edge as (b, a)
         let &w = ring_of_half.get(&(b, a)).ok_or("an inner boundary edge has no ring face beside it")?;
-        cones.push(angular_range(&windows[w].points)?);
+        chain.push((a, w));
         a = b;
         if a == start {
             break;
         }
-        if cones.len() > next.len() {
+        if chain.len() > next.len() {
             return Err("the inner boundary is not one closed chain".into());
         }
     }
-    if cones.len() != next.len() {
+    if chain.len() != next.len() {
         return Err("the inner boundary has more than one component".into());
     }
-    // lift each range next to the previous one; the arcs share their
-    // endpoints, so consecutive ranges meet, and being narrower than π each,
-    // they meet for exactly one shift by a multiple of 2π
-    let tau = 2.0 * std::f64::consts::PI;
-    let lift = |prev: (f64, f64), c: (f64, f64)| -> Result<(f64, f64), String> {
-        let mid_gap = (prev.0 + prev.1 - c.0 - c.1) / 2.0;
-        let k = (mid_gap / tau).round();
-        let shifted = (c.0 + k * tau, c.1 + k * tau);
-        if shifted.0 <= prev.1 && prev.0 <= shifted.1 {
-            Ok(shifted)
-        } else {
-            Err("two consecutive boundary arcs have disjoint angular ranges".into())
-        }
-    };
-    let mut prev = cones[0];
-    for &c in &cones[1..] {
-        prev = lift(prev, c)?;
-    }
-    let closing = lift(prev, cones[0])?;
-    Ok(((closing.0 - cones[0].0) / tau).round() as i64)
-}
-
-/// The angles of a set of enclosed points as an interval of width below π,
-/// when they lie in an open half-plane through the origin.
-fn angular_range(points: &[Point]) -> Result<(f64, f64), String> {
-    let (mut dx, mut dy) = (0.0, 0.0);
-    for p in points {
-        dx += p[0].mid();
-        dy += p[1].mid();
-    }
-    let (cx, cy) = (Interval::point(dx), Interval::point(dy));
-    let base = dy.atan2(dx);
-    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for p in points {
-        for x in [p[0].lo, p[0].hi] {
-            for y in [p[1].lo, p[1].hi] {
-                let (px, py) = (Interval::point(x), Interval::point(y));
-                let dot = cx * px + cy * py;
-                if !(dot.lo > 0.0) {
-                    return Err("the hull of a boundary arc's window is not in a half-plane through the centre".into());
-                }
-                let cross = cx * py - cy * px;
-                let angle = cross.mid().atan2(dot.mid());
-                lo = lo.min(angle);
-                hi = hi.max(angle);
+    // Lemma (winding from half-planes). Arc i (the image of chain edge i)
+    // lies in the hull of window i, proved inside the open half-plane
+    // Hᵢ = {p : dᵢ·p > 0}. Its end points p_{i−1}, pᵢ (images of the chain
+    // vertices) lie in both adjacent hulls. Take wᵢ = the midpoint of the
+    // control point at chain vertex i + 1, proved in Hᵢ ∩ H_{i+1}. Then the
+    // angle the curve turns along arc i is the principal angle from p_{i−1}
+    // to pᵢ (a path in a half-plane turns by less than π), and replacing
+    // each pᵢ by wᵢ changes the sum by terms that cancel (pᵢ and wᵢ lie in a
+    // common half-plane with both neighbours). So the curve's winding number
+    // is that of the closed polygon w₀ w₁ …, whose consecutive vertices
+    // share an open half-plane (so no edge passes through the origin): a
+    // crossing count with exact orientation signs.
+    let directions: Vec<[f64; 2]> =
+        chain.iter().map(|&(_, w)| half_plane(&windows[w].points)).collect::<Result<_, String>>()?;
+    let point = |v: usize| net.points[v].ok_or_else(|| "a chain vertex has no point".to_string());
+    let k = chain.len();
+    let mut polygon: Vec<[f64; 2]> = Vec::with_capacity(k);
+    for i in 0..k {
+        // chain vertex i + 1 ends edge i and starts edge i + 1
+        let v = chain[(i + 1) % k].0;
+        let p = point(v)?;
+        let w = [p[0].mid(), p[1].mid()];
+        for d in [directions[i], directions[(i + 1) % k]] {
+            if !(dot(d, [Interval::point(w[0]), Interval::point(w[1])]).lo > 0.0) {
+                return Err("a chain vertex's point is not in both adjacent arcs' half-planes".into());
             }
         }
+        polygon.push(w);
     }
-    // atan2 is not correctly rounded, and the cross product was rounded to
-    // its midpoint: widen by far more than either error
-    let pad = 1e-9;
-    Ok((base + lo - pad, base + hi + pad))
+    polygon_winding(&polygon)
+}
+
+/// d·p enclosed, for a float direction d and an enclosed point p.
+fn dot(d: [f64; 2], p: Point) -> Interval {
+    Interval::point(d[0]) * p[0] + Interval::point(d[1]) * p[1]
+}
+
+/// A direction d with d·p > 0 proved for every enclosed point p (so their
+/// hull lies in the open half-plane d·x > 0): the sum of the midpoints,
+/// checked in interval arithmetic.
+fn half_plane(points: &[Point]) -> Result<[f64; 2], String> {
+    let d = points.iter().fold([0.0, 0.0], |s, p| [s[0] + p[0].mid(), s[1] + p[1].mid()]);
+    if points.iter().all(|p| dot(d, *p).lo > 0.0) {
+        Ok(d)
+    } else {
+        Err("the hull of a boundary arc's window is not in a half-plane through the centre".into())
+    }
+}
+
+/// The winding number of a closed polygon of float points around the
+/// origin, none of whose edges passes through it: signed crossings of the
+/// positive x-axis, upward crossings with the origin on the left counted +1,
+/// downward ones with it on the right −1. The y signs are exact; the sign of
+/// the orientation a × b is taken from its enclosure and must be decided.
+fn polygon_winding(polygon: &[[f64; 2]]) -> Result<i64, String> {
+    let k = polygon.len();
+    let mut winding = 0i64;
+    for i in 0..k {
+        let (a, b) = (polygon[i], polygon[(i + 1) % k]);
+        let upward = a[1] <= 0.0 && b[1] > 0.0;
+        let downward = b[1] <= 0.0 && a[1] > 0.0;
+        if !upward && !downward {
+            continue;
+        }
+        let cross = Interval::point(a[0]) * Interval::point(b[1]) - Interval::point(a[1]) * Interval::point(b[0]);
+        if !cross.sign_decided() {
+            return Err("the orientation of a boundary polygon edge about the centre is not decided".into());
+        }
+        match (upward, cross.lo > 0.0) {
+            (true, true) => winding += 1,
+            (false, false) => winding -= 1,
+            _ => {}
+        }
+    }
+    Ok(winding)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The regular n-gon at angle offset `phase`, traversed `turns` times
+    /// (negative: clockwise): its winding number about the origin is
+    /// `turns` by construction.
+    fn polygon(n: usize, turns: i64, phase: f64) -> Vec<[f64; 2]> {
+        (0..n)
+            .map(|k| {
+                let t = phase + 2.0 * std::f64::consts::PI * turns as f64 * k as f64 / n as f64;
+                [t.cos(), t.sin()]
+            })
+            .collect()
+    }
+
+    #[test]
+    fn polygon_winding_counts_turns_exactly() {
+        for (turns, n) in [(1, 7), (-1, 7), (2, 13), (3, 20), (-2, 9)] {
+            // a phase of 0 puts a vertex on the ray: the half-open rule counts it once
+            for phase in [0.0, 0.3, -1e-300] {
+                assert_eq!(polygon_winding(&polygon(n, turns, phase)).unwrap(), turns, "{turns} turns, phase {phase}");
+            }
+        }
+        // a loop that does not surround the origin
+        let off: Vec<[f64; 2]> = polygon(8, 1, 0.1).iter().map(|p| [p[0] + 3.0, p[1] - 0.5]).collect();
+        assert_eq!(polygon_winding(&off).unwrap(), 0);
+    }
+
+    #[test]
+    fn a_half_plane_is_proved_or_refused() {
+        let box_at = |x: f64, y: f64| [Interval::new(x - 1e-3, x + 1e-3), Interval::new(y - 1e-3, y + 1e-3)];
+        // points in an open quadrant: a direction is found and checked
+        let d = half_plane(&[box_at(1.0, 0.1), box_at(0.2, 1.0), box_at(0.5, 0.5)]).unwrap();
+        assert!(d[0] > 0.0 && d[1] > 0.0);
+        // points on both sides of the origin: no open half-plane holds them
+        assert!(half_plane(&[box_at(1.0, 0.0), box_at(-1.0, 0.01), box_at(0.0, 1.0)]).is_err());
+        // a box holding the origin: refused, however the others lie
+        assert!(half_plane(&[box_at(1.0, 1.0), [Interval::new(-0.1, 0.1), Interval::new(-0.1, 0.1)]]).is_err());
+    }
 }

@@ -75,6 +75,10 @@ impl Disc {
 pub struct Component {
     pub discs: Vec<Disc>,
     pub count: usize,
+    /// the rows of V⁻¹AV whose discs these are (in `discs` order): a proof
+    /// names the eigenvalue it speaks about by these, never by a float value
+    #[serde(skip)]
+    pub rows: Vec<usize>,
 }
 
 impl Component {
@@ -111,21 +115,25 @@ pub struct Enclosure {
     pub components: Vec<Component>,
     /// the bound ε ≥ ‖I − RV‖∞ (how well V was inverted)
     pub epsilon: f64,
+    /// the verified diagonalisation the components come from: an eigenvector
+    /// enclosure for a component is taken from this very one
+    pub diagonalisation: Diagonalisation,
 }
 
 /// `Err` says why there is no enclosure (ε ≥ 1, non-finite entries).
 pub fn enclose(a: &CIntervalMatrix) -> Result<Enclosure, String> {
     let d = diagonalise(a)?;
-    Ok(Enclosure { components: components(d.discs), epsilon: d.epsilon })
+    Ok(Enclosure { components: components(d.discs.clone()), epsilon: d.epsilon, diagonalisation: d })
 }
 
 /// The verified approximate diagonalisation behind [`enclose`]: the float
 /// eigenvectors V of the midpoint, the Gershgorin disc of each row of
 /// V⁻¹AV (for every A in the interval matrix) and ε.
-struct Diagonalisation {
-    v: Mat<c64>,
-    discs: Vec<Disc>,
-    epsilon: f64,
+#[derive(Clone, Debug)]
+pub struct Diagonalisation {
+    pub v: Mat<c64>,
+    pub discs: Vec<Disc>,
+    pub epsilon: f64,
 }
 
 fn diagonalise(a: &CIntervalMatrix) -> Result<Diagonalisation, String> {
@@ -195,10 +203,11 @@ fn diagonalise(a: &CIntervalMatrix) -> Result<Diagonalisation, String> {
     Ok(Diagonalisation { v, discs, epsilon: eps })
 }
 
-/// An enclosure of an eigenvector of every matrix in `a` for its eigenvalue
-/// near `near`, which must be alone in its Gershgorin disc.
+/// An enclosure of an eigenvector of every matrix in the interval matrix
+/// that `d` diagonalises, for the eigenvalue in disc `i` (a component of one
+/// disc, count 1, which the caller's proof identified by its enclosures).
 ///
-/// With C = V⁻¹AV, the disc i nearest `near` and rᵢ the row radii (each
+/// With C = V⁻¹AV, the disc i and rᵢ the row radii (each
 /// bounding |Cⱼⱼ − cⱼ| + Σ_{k≠j} |Cⱼₖ|): the eigenvalue μ of C in disc i has
 /// |cⱼ − μ| ≥ Dⱼ := |cⱼ − cᵢ| − rᵢ for j ≠ i, and an eigenvector y of C
 /// satisfies |cⱼ − μ|·|yⱼ| ≤ rⱼ‖y‖∞. If every qⱼ = rⱼ/Dⱼ is below 1, the
@@ -206,12 +215,12 @@ fn diagonalise(a: &CIntervalMatrix) -> Result<Diagonalisation, String> {
 /// with yᵢ = 1 every |yⱼ| ≤ qⱼ, and x = V·y is the eigenvector of A:
 /// xₗ ∈ Vₗᵢ + Σ_{j≠i} |Vₗⱼ|·qⱼ·(unit disc). Returns x (a rectangle per
 /// entry) and max qⱼ.
-pub fn eigenvector(a: &CIntervalMatrix, near: c64) -> Result<(Vec<CInterval>, f64), String> {
-    let d = diagonalise(a)?;
-    let k = a.size;
-    let i = (0..k)
-        .min_by(|&p, &q| (d.discs[p].centre() - near).norm().total_cmp(&(d.discs[q].centre() - near).norm()))
-        .ok_or("an empty matrix has no eigenvector")?;
+pub fn eigenvector(d: &Diagonalisation, i: usize) -> Result<(Vec<CInterval>, f64), String> {
+    let k = d.discs.len();
+    if i >= k {
+        return Err(format!("disc {i} of a {k}-row diagonalisation does not exist"));
+    }
+    let near = d.discs[i].centre();
     let di = d.discs[i];
     let mut q = vec![0.0; k];
     for j in (0..k).filter(|&j| j != i) {
@@ -266,12 +275,15 @@ pub fn components(discs: Vec<Disc>) -> Vec<Component> {
             }
         }
     }
-    let mut groups: std::collections::BTreeMap<usize, Vec<Disc>> = std::collections::BTreeMap::new();
-    for (i, d) in discs.iter().enumerate() {
+    let mut groups: std::collections::BTreeMap<usize, Vec<usize>> = std::collections::BTreeMap::new();
+    for i in 0..k {
         let root = find(&mut parent, i);
-        groups.entry(root).or_default().push(*d);
+        groups.entry(root).or_default().push(i);
     }
-    let mut out: Vec<Component> = groups.into_values().map(|discs| Component { count: discs.len(), discs }).collect();
+    let mut out: Vec<Component> = groups
+        .into_values()
+        .map(|rows| Component { count: rows.len(), discs: rows.iter().map(|&i| discs[i]).collect(), rows })
+        .collect();
     out.sort_by(|a, b| b.max_modulus().total_cmp(&a.max_modulus()));
     out
 }

@@ -33,13 +33,14 @@
 //! confirms to ~1e-16 but cannot prove); the verdict says which, and names
 //! the field of the exact checks.
 
-use super::discs::{enclose, Component, Disc};
+use super::discs::{enclose, Component, Diagonalisation, Disc};
 use super::matrix::{
     fourier_blocks, mirror_symmetry, rotation_symmetry, row_sums, whole_matrix, Check, ExactRows, IntervalRows,
 };
 use crate::dft::Orbits;
 use crate::error::Error;
 use crate::matrix::local::{assemble_rows, AssembleError};
+use crate::neighbourhood::NeighbourhoodKind;
 use crate::numeric::{Cyclotomic, Interval, Rational};
 use crate::sdc::Scheme;
 use crate::spectrum::{Analysis, Method};
@@ -86,6 +87,10 @@ pub struct BlockEnclosure {
     pub components: Vec<Component>,
     /// why there is no enclosure, when there is none
     pub failure: Option<String>,
+    /// the verified diagonalisation the components come from (an
+    /// eigenvector enclosure of a proved eigenvalue is taken from it)
+    #[serde(skip)]
+    pub diagonalisation: Option<Diagonalisation>,
 }
 
 /// An enclosure of a real eigenvalue: lo ≤ λ ≤ hi.
@@ -137,8 +142,9 @@ pub struct Premises {
 pub struct SpectrumCertificate {
     #[serde(flatten)]
     pub verdict: Verdict,
-    /// true when a PROVED verdict uses a premise confirmed only to interval
-    /// overlap (see `premises`): proved given that identity of the formulas
+    /// true when a PROVED or DISPROVED verdict uses a premise confirmed only
+    /// to interval overlap (see `premises`): decided given that identity of
+    /// the formulas
     pub conditional: bool,
     /// what the verdict covers (one sentence)
     pub statement: String,
@@ -147,6 +153,21 @@ pub struct SpectrumCertificate {
     /// the enclosure that decides a disproof: the block and its component
     pub witness: Option<Witness>,
     pub blocks: Vec<BlockEnclosure>,
+    /// what a proof built on this one needs (the characteristic-map
+    /// certificate): the orbits and, when PROVED, which disc of which
+    /// diagonalisation holds λ1. Taken from the enclosures, never from the
+    /// floating-point spectrum.
+    #[serde(skip)]
+    pub proof: Option<SpectralProof>,
+}
+
+/// The data a PROVED spectral certificate hands on.
+#[derive(Clone, Debug)]
+pub struct SpectralProof {
+    pub orbits: Orbits,
+    /// λ1: the row of its one-disc component in block 1's diagonalisation
+    /// (`blocks[1].diagonalisation`), set only when the verdict is PROVED
+    pub lambda1_row: Option<usize>,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -155,7 +176,8 @@ pub struct Witness {
     pub component: Component,
 }
 
-const STATEMENT: &str = "for the true local subdivision matrix S (every weight enclosed, cos(2πk/n) included): \
+const STATEMENT: &str = "for the true local subdivision matrix S on the analysis neighbourhood (every point \
+     whose position the surface ring around the centre depends on; every weight enclosed, cos(2πk/n) included): \
      λ0 = 1 simple; λ1 real, positive, simple in block 1 and in block g−1 (semisimple, geometric multiplicity 2); \
      every other eigenvalue of modulus below λ1";
 
@@ -174,6 +196,15 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
     let s = &analysis.spectrum;
     let n = s.valence;
     let labels = &s.labels;
+    // a proof on a smaller invariant set says nothing of the eigenvalues the
+    // analysis neighbourhood adds, which may be larger than its λ1
+    if s.neighbourhood != NeighbourhoodKind::Analysis {
+        return Err(Error::Input(
+            "certificates speak about the analysis neighbourhood only (the minimal invariant set may miss larger \
+             eigenvalues of the points the surface ring depends on): drop --neighbourhood minimal"
+                .into(),
+        ));
+    }
     let orbits = Orbits::from_labels(labels, period, n);
     let not_proved = |why: String| SpectrumCertificate {
         verdict: Verdict::NotProved(why),
@@ -183,7 +214,13 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
         margins: Margins::default(),
         witness: None,
         blocks: Vec::new(),
+        proof: None,
     };
+    if s.method == Method::Dft {
+        if let Err(why) = orbits.check_free() {
+            return Ok(not_proved(format!("the rotation does not act freely off the centre: {why}")));
+        }
+    }
     let which: Vec<usize> = match s.method {
         Method::Dft => orbits.representative.clone(),
         Method::Full => {
@@ -245,10 +282,16 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
                 epsilon: Some(e.epsilon),
                 components: e.components,
                 failure: None,
+                diagonalisation: Some(e.diagonalisation),
             },
-            Err(why) => {
-                BlockEnclosure { block: *m, size: b.size, epsilon: None, components: Vec::new(), failure: Some(why) }
-            }
+            Err(why) => BlockEnclosure {
+                block: *m,
+                size: b.size,
+                epsilon: None,
+                components: Vec::new(),
+                failure: Some(why),
+                diagonalisation: None,
+            },
         })
         .collect();
     if !rotation.holds() {
@@ -258,11 +301,15 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
     let exact = row_check == Check::Exact && mirror == Check::Exact && rotation == Check::Exact;
     let premises =
         Premises { row_sums_one: row_check, mirror_symmetry: mirror, rotation_symmetry: rotation, exact, field };
-    let mut cert = decide(&enclosures, &premises, orbits.group_order, s.method);
+    let (mut cert, lambda1_row) = decide(&enclosures, &premises, orbits.group_order, s.method);
     cert.margins.max_entry_width = max_entry_width;
-    cert.conditional = cert.verdict == Verdict::Proved && !exact;
+    // every verdict but NOT PROVED rests on the premises (the blocks are S
+    // in another basis; 1 is an eigenvalue; block spectra are closed under
+    // conjugation)
+    cert.conditional = !matches!(cert.verdict, Verdict::NotProved(_)) && !exact;
     cert.premises = Some(premises);
     cert.blocks = enclosures;
+    cert.proof = Some(SpectralProof { orbits, lambda1_row });
     Ok(cert)
 }
 
@@ -413,20 +460,30 @@ fn rotation_premise(
     Ok((check, order))
 }
 
-/// The verdict from the block enclosures and the premises.
-fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Method) -> SpectrumCertificate {
+/// The verdict from the block enclosures and the premises, and when PROVED
+/// the row of λ1's disc in block 1's diagonalisation.
+fn decide(
+    blocks: &[BlockEnclosure],
+    premises: &Premises,
+    g: usize,
+    method: Method,
+) -> (SpectrumCertificate, Option<usize>) {
     let mut margins = Margins {
         max_radius: blocks.iter().flat_map(|b| &b.components).map(Component::max_radius).fold(0.0, f64::max),
         ..Margins::default()
     };
-    let finish = |verdict: Verdict, margins: Margins, witness: Option<Witness>| SpectrumCertificate {
-        verdict,
-        conditional: false,
-        statement: STATEMENT.into(),
-        premises: None,
-        margins,
-        witness,
-        blocks: Vec::new(),
+    let finish = |verdict: Verdict, margins: Margins, witness: Option<Witness>| {
+        let cert = SpectrumCertificate {
+            verdict,
+            conditional: false,
+            statement: STATEMENT.into(),
+            premises: None,
+            margins,
+            witness,
+            blocks: Vec::new(),
+            proof: None,
+        };
+        (cert, None)
     };
     let all: Vec<(usize, &Component)> =
         blocks.iter().flat_map(|b| b.components.iter().map(move |c| (b.block, c))).collect();
@@ -511,6 +568,69 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
             );
         }
     }
+    // Lemma (no candidate). λ1 must be a positive real eigenvalue of block 1
+    // of modulus above every eigenvalue other than λ0 and its conjugate
+    // partner in block g − 1. If every component of block 1 that may hold a
+    // positive real number is outdone — some other component (of block 1,
+    // or of a block other than 1 and g − 1, λ0's excepted) has a modulus
+    // proved at least its largest — no eigenvalue can be that λ1. This is
+    // the only way a leading component that is negative, complex, or tied
+    // disproves the statement: the leading component by the sort may not be
+    // the largest eigenvalue when moduli overlap, so its sign alone decides
+    // nothing.
+    let competitors = |c: &Component| {
+        others
+            .iter()
+            .filter(|(m, o)| *m != g - 1 && !(*m == 1 && std::ptr::eq(*o, c)))
+            .chain(std::iter::once(&(1usize, c1)).filter(|(_, o)| !std::ptr::eq(*o, c)))
+            .copied()
+            .max_by(|a, b| a.1.min_modulus().total_cmp(&b.1.min_modulus()))
+    };
+    let candidates: Vec<&Component> =
+        blocks[1].components.iter().filter(|c| c.meets_real_axis() && c.real_range().1 > 0.0).collect();
+    let outdone = |c: &Component| competitors(c).filter(|(_, o)| o.min_modulus() >= c.max_modulus());
+    if candidates.iter().all(|c| outdone(c).is_some()) {
+        // the component that outdoes the largest candidate, or (no
+        // candidate) block 1's leading component
+        let witness = match candidates.first() {
+            Some(c) => outdone(c),
+            None => Some((1, c1)),
+        };
+        let why = match candidates.first() {
+            None => {
+                "block 1 has no eigenvalue that may be positive and real (no enclosure meets the positive real axis)"
+                    .to_string()
+            }
+            Some(c) => {
+                let (m, o) = outdone(c).expect("every candidate is outdone");
+                // name what block 1's leading eigenvalue is, when it is the
+                // one that outdoes the candidates
+                let leading = if m == 1 && std::ptr::eq(o, c1) && !c1.meets_real_axis() {
+                    format!(
+                        "the subdominant eigenvalue of block 1 is not real (its disc about {:.9}{:+.9}i of radius \
+                         {:.2e} misses the real axis); ",
+                        c1.discs[0].re, c1.discs[0].im, c1.discs[0].radius
+                    )
+                } else if m == 1 && std::ptr::eq(o, c1) && c1.real_range().1 < 0.0 {
+                    format!("the subdominant eigenvalue of block 1 is negative (≤ {:.9}); ", c1.real_range().1)
+                } else {
+                    String::new()
+                };
+                format!(
+                    "{leading}no eigenvalue of block 1 can be a dominant positive λ1: the largest candidate (modulus ≤ {:.9}) is \
+                     matched or exceeded by an eigenvalue of block {m} (modulus ≥ {:.9}){}",
+                    c.max_modulus(),
+                    o.min_modulus(),
+                    if candidates.len() > 1 { format!(", and so are the other {}", candidates.len() - 1) } else { String::new() }
+                )
+            }
+        };
+        return finish(
+            Verdict::Disproved(why),
+            margins,
+            witness.map(|(m, c)| Witness { block: m, component: c.clone() }),
+        );
+    }
     if c1.count != 1 || c1c.count != 1 {
         return finish(
             Verdict::NotProved(format!(
@@ -533,11 +653,25 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
     // realness: a simple eigenvalue of a conjugation-closed block spectrum
     // whose component's mirror image meets no other component is real
     let self_conjugate = |m: usize, c: &Component| {
-        let mirror = Component { discs: c.discs.iter().map(|d| Disc { im: -d.im, ..*d }).collect(), count: c.count };
+        let mirror = Component {
+            discs: c.discs.iter().map(|d| Disc { im: -d.im, ..*d }).collect(),
+            count: c.count,
+            rows: c.rows.clone(),
+        };
         c.meets_real_axis() && blocks[m].components.iter().filter(|o| !std::ptr::eq(*o, c)).all(|o| o.disjoint(&mirror))
     };
+    // λ1 is real (proved below) and lies in the component, so in its real
+    // range; its modulus bounds tighten that range only once the sign is
+    // known from the real range itself (a disc far off the axis can have a
+    // modulus bounded away from 0 while its real segment is negative)
     let (lo1, hi1) = c1.real_range();
-    let real_enclosure = RealEnclosure { lo: lo1.max(lambda1_mod.0), hi: hi1.min(lambda1_mod.1) };
+    let real_enclosure = if lo1 > 0.0 {
+        RealEnclosure { lo: lo1.max(lambda1_mod.0), hi: hi1.min(lambda1_mod.1) }
+    } else if hi1 < 0.0 {
+        RealEnclosure { lo: lo1.max(-lambda1_mod.1), hi: hi1.min(-lambda1_mod.0) }
+    } else {
+        RealEnclosure { lo: lo1, hi: hi1 }
+    };
     if !c1.meets_real_axis() {
         let verdict = if gap > 0.0 {
             Verdict::Disproved(format!(
@@ -570,7 +704,7 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
         );
     }
     margins.lambda1 = Some(real_enclosure);
-    if real_enclosure.hi < 0.0 {
+    if real_enclosure.hi < 0.0 && gap > 0.0 {
         return finish(
             Verdict::Disproved(format!("λ1 is negative: λ1 ≤ {:.9}", real_enclosure.hi)),
             margins,
@@ -606,5 +740,85 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
             Some(Witness { block: m, component: c.clone() }),
         );
     }
-    finish(Verdict::Proved, margins, None)
+    // the proof hands on which disc holds λ1: the component was chosen by
+    // its enclosure, and holds one disc (count 1)
+    (finish(Verdict::Proved, margins, None).0, c1.rows.first().copied())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn block(m: usize, discs: &[(f64, f64, f64)]) -> BlockEnclosure {
+        let components = discs
+            .iter()
+            .enumerate()
+            .map(|(i, &(re, im, radius))| Component { discs: vec![Disc { re, im, radius }], count: 1, rows: vec![i] })
+            .collect();
+        BlockEnclosure {
+            block: m,
+            size: discs.len(),
+            epsilon: Some(0.0),
+            components,
+            failure: None,
+            diagonalisation: None,
+        }
+    }
+
+    fn exact_premises() -> Premises {
+        Premises {
+            row_sums_one: Check::Exact,
+            mirror_symmetry: Check::Exact,
+            rotation_symmetry: Check::Exact,
+            exact: true,
+            field: Some("Q".into()),
+        }
+    }
+
+    #[test]
+    fn the_sign_of_lambda1_comes_from_its_real_range_not_its_modulus() {
+        // block 1's only disc, about −0.3 + 0.25i of radius 0.32, meets the
+        // real axis only in [−0.4985, −0.1015] (negative), while its modulus
+        // is bounded below by 0.39 − 0.32 = 0.07 > 0: a sign taken from the
+        // modulus would "prove" a positive λ1
+        let blocks =
+            [block(0, &[(1.0, 0.0, 1e-12)]), block(1, &[(-0.3, 0.25, 0.32)]), block(2, &[(-0.3, -0.25, 0.32)])];
+        let (cert, row) = decide(&blocks, &exact_premises(), 3, Method::Dft);
+        assert!(matches!(&cert.verdict, Verdict::NotProved(w) if w.contains("sign")), "{:?}", cert.verdict);
+        assert_eq!(row, None);
+        // the same disc moved right, about +0.5 + 0.1i of radius 0.2: real
+        // range [0.3, 0.7], positive: proved, and the disc is named
+        let blocks = [
+            block(0, &[(1.0, 0.0, 1e-12)]),
+            block(1, &[(0.5, 0.1, 0.2), (0.1, 0.0, 0.01)]),
+            block(2, &[(0.5, -0.1, 0.2), (0.1, 0.0, 0.01)]),
+        ];
+        let (cert, row) = decide(&blocks, &exact_premises(), 3, Method::Dft);
+        assert_eq!(cert.verdict, Verdict::Proved);
+        assert_eq!(row, Some(0));
+        let l1 = cert.margins.lambda1.unwrap();
+        assert!(l1.lo > 0.0 && l1.lo <= 0.5 && 0.5 <= l1.hi);
+    }
+
+    #[test]
+    fn a_negative_leading_disc_disproves_only_when_it_outdoes_every_candidate() {
+        // block 1 leads with −0.6 ± 0.001; a positive 0.5995 ± 0.001 in block
+        // 1 cannot be separated from it in modulus: NOT PROVED, never
+        // DISPROVED on the leading disc's sign alone
+        let blocks = [
+            block(0, &[(1.0, 0.0, 1e-12)]),
+            block(1, &[(-0.6, 0.0, 1e-3), (0.5995, 0.0, 1e-3)]),
+            block(2, &[(-0.6, 0.0, 1e-3), (0.5995, 0.0, 1e-3)]),
+        ];
+        let (cert, _) = decide(&blocks, &exact_premises(), 3, Method::Dft);
+        assert!(matches!(cert.verdict, Verdict::NotProved(_)), "{:?}", cert.verdict);
+        // separated (0.4 ± 0.001): every candidate is outdone, DISPROVED
+        let blocks = [
+            block(0, &[(1.0, 0.0, 1e-12)]),
+            block(1, &[(-0.6, 0.0, 1e-3), (0.4, 0.0, 1e-3)]),
+            block(2, &[(-0.6, 0.0, 1e-3), (0.4, 0.0, 1e-3)]),
+        ];
+        let (cert, _) = decide(&blocks, &exact_premises(), 3, Method::Dft);
+        assert!(matches!(&cert.verdict, Verdict::Disproved(w) if w.contains("negative")), "{:?}", cert.verdict);
+    }
 }

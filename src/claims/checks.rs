@@ -449,24 +449,27 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
             let most = levels.unwrap_or(crate::certify::charmap::DEFAULT_MAX_LEVELS).max(2);
             let c = crate::certify::certify_charmap(scheme.as_ref(), &analysis, most)?;
             use crate::certify::Verdict;
-            let got = match (&c.regularity, &c.injectivity) {
-                (Verdict::Disproved(_), _) | (_, Verdict::Disproved(_)) => false,
-                (Verdict::Proved, Verdict::Proved) if !c.geometry_conditional => true,
-                (Verdict::Proved, Verdict::Proved) => {
+            // Reif's criterion as a whole: the spectrum, regularity and
+            // injectivity all proved (a disproof of any one refutes), each
+            // unconditionally
+            let got = match &c.c1 {
+                Verdict::Disproved(_) if !c.conditional && !c.geometry_conditional => false,
+                Verdict::Proved if !c.conditional && !c.geometry_conditional => true,
+                Verdict::Proved | Verdict::Disproved(_) => {
                     return Err(Error::Claim(format!(
-                        "n = {n}: the certified map is PROVED only given the rotation premise confirmed to interval overlap (not exactly): no unconditional proof"
+                        "n = {n}: the certificate is {} only given a premise confirmed to interval overlap (not exactly): no unconditional proof",
+                        c.c1.word()
                     )))
                 }
-                (Verdict::NotProved(why), _) | (_, Verdict::NotProved(why)) => {
-                    return Err(Error::Claim(format!("n = {n}: certificate NOT PROVED ({why})")))
-                }
+                Verdict::NotProved(why) => return Err(Error::Claim(format!("n = {n}: certificate NOT PROVED ({why})"))),
             };
             let bound = c.min_jacobian_lower_bound.map(|b| format!(", Jacobian ≥ {b:.4e}")).unwrap_or_default();
             Ok((
                 got == *expect,
                 if *expect { "proved regular and injective".into() } else { "disproved".into() },
                 format!(
-                    "certified regularity {}, injectivity {} (winding {}{bound})",
+                    "certified spectrum {}, regularity {}, injectivity {} (winding {}{bound})",
+                    c.spectrum.verdict.word(),
                     c.regularity.display(),
                     c.injectivity.display(),
                     c.winding_number.map(|w| w.to_string()).unwrap_or_else(|| "-".into())
@@ -506,12 +509,13 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
             let c = crate::certify::certify_analysis(scheme.as_ref(), &analysis)?;
             let got = match &c.verdict {
                 crate::certify::Verdict::Proved if !c.conditional => true,
-                crate::certify::Verdict::Disproved(_) => false,
-                // a proof resting on identities checked only to interval
+                crate::certify::Verdict::Disproved(_) if !c.conditional => false,
+                // a verdict resting on identities checked only to interval
                 // overlap, or no proof: the claim asked for one
-                crate::certify::Verdict::Proved => {
+                crate::certify::Verdict::Proved | crate::certify::Verdict::Disproved(_) => {
                     return Err(Error::Claim(format!(
-                        "n = {n}: certified PROVED only given the premises the enclosures confirm to interval overlap (not exactly): no unconditional proof"
+                        "n = {n}: certified {} only given the premises the enclosures confirm to interval overlap (not exactly): no unconditional proof",
+                        c.verdict.word()
                     )))
                 }
                 crate::certify::Verdict::NotProved(why) => {

@@ -547,6 +547,17 @@ fn read_claim(file: &str, k: usize, header: Option<usize>, text: &str, raw: toml
             known.join(", ")
         ));
     }
+    // a certificate speaks about the analysis neighbourhood only: a
+    // certified claim on the minimal invariant set asks for a proof that
+    // would say nothing of the eigenvalues the analysis set adds
+    let certified = table.get("certified").and_then(toml::Value::as_bool) == Some(true);
+    if certified && table.get("neighbourhood").and_then(toml::Value::as_str) == Some("minimal") {
+        let line = header.and_then(|h| key_line(text, h, "neighbourhood"));
+        return malformed(format!(
+            "{}: certified = true proves statements about the analysis neighbourhood only; drop neighbourhood = \"minimal\"",
+            at(line)
+        ));
+    }
     match raw.clone().try_into::<Claim>() {
         Ok(c) => c,
         Err(e) => {

@@ -60,6 +60,33 @@ impl Orbits {
         member.extend(tmp);
         Orbits { group_order: g, member, representative, fixed }
     }
+    /// Whether the rotation acts freely off the centre: every orbit that is
+    /// not a fixed point has exactly one member at each position t = 0..g−1.
+    /// The Fourier blocks count an orbit once per block, so an orbit with a
+    /// missing or doubled position would make them a different matrix from S
+    /// (with the wrong dimension); a proof checks this instead of assuming it.
+    pub fn check_free(&self) -> Result<(), String> {
+        let g = self.group_order;
+        let mut seen = vec![vec![0usize; g.max(1)]; self.num_orbits()];
+        for &(o, t) in &self.member {
+            if t >= g.max(1) {
+                return Err(format!("a point of orbit {o} has position {t} outside 0..{g}"));
+            }
+            seen[o][t] += 1;
+        }
+        for (o, counts) in seen.iter().enumerate() {
+            let expected = |t: usize| if self.fixed[o] { usize::from(t == 0) } else { 1 };
+            if let Some(t) = (0..counts.len()).find(|&t| counts[t] != expected(t)) {
+                return Err(format!(
+                    "orbit {o} ({}) has {} member(s) at position {t}, not {}",
+                    if self.fixed[o] { "a fixed point" } else { "moving" },
+                    counts[t],
+                    expected(t)
+                ));
+            }
+        }
+        Ok(())
+    }
     pub fn num_orbits(&self) -> usize {
         self.representative.len()
     }
@@ -229,4 +256,33 @@ pub fn lazy_full_by_rotation<W: Weight>(
             .collect();
         LocalMatrix { kind, labels, rows }
     })
+}
+
+#[cfg(test)]
+mod free_orbit_tests {
+    use super::Orbits;
+
+    #[test]
+    fn orbits_must_be_free_off_the_centre() {
+        // a centre and two orbits of a rotation of order 3
+        let good = Orbits {
+            group_order: 3,
+            member: vec![(0, 0), (1, 0), (1, 1), (1, 2), (2, 0), (2, 1), (2, 2)],
+            representative: vec![0, 1, 4],
+            fixed: vec![true, false, false],
+        };
+        assert!(good.check_free().is_ok());
+        // an orbit missing a member: its Fourier blocks would not be S
+        let mut missing = good.clone();
+        missing.member.pop();
+        assert!(missing.check_free().unwrap_err().contains("orbit 2"));
+        // a doubled position
+        let mut doubled = good.clone();
+        doubled.member[3] = (1, 1);
+        assert!(doubled.check_free().is_err());
+        // a fixed point that moves
+        let mut moving = good;
+        moving.member[0] = (0, 1);
+        assert!(moving.check_free().is_err());
+    }
 }
