@@ -2,48 +2,35 @@
 //! reason for neither) that the characteristic map is regular and injective,
 //! the geometric half of Reif's C¹ criterion.
 //!
-//! 1. **Eigenvectors.** The subdominant eigenvector of its Fourier block m
-//!    (1 for a proper pair) is enclosed rigorously (`discs::eigenvector`, from
-//!    the interval block that the spectral certificate encloses), and spread
-//!    over the neighbourhood by the rotation: x₍ₜ,ₐ₎ = ω^(mt)·zₐ. Its real and imaginary parts are the
-//!    two coordinate functions; any complex multiple gives the same map up to
-//!    a linear change of coordinates, which keeps regularity and injectivity.
-//! 2. **Net.** The level-0 net of enclosures is refined with the scheme's
-//!    own rules evaluated in interval arithmetic (`net::refine_net_exactly_as`),
-//!    so the refined net of enclosures holds the true refined net.
-//! 3. **Regular part.** Over a face of the ring whose one-ring of faces is a
-//!    regular grid (valence 4 quads, or valence 6 triangles), the limit of
-//!    the scheme is a box spline of the window's control points *if* the rules
-//!    at regular vertices, edges and faces are the box spline's. That is
-//!    checked exactly (rational stencils) on every regular entity the ring's
-//!    windows hold, against the masks of three box splines: the bicubic
-//!    B-spline (primal quad rules: Catmull–Clark's regular part), the
-//!    biquadratic B-spline (dual corner rules: Doo–Sabin and the bi-2
-//!    schemes), and the three-direction quartic box spline (Loop). Rules are
-//!    local functions of the combinatorics inside their slots (every host's
-//!    are), so rules that match on these entities match at every later level
-//!    of the ring's regular region.
-//! 4. **Jacobian.** A box spline's derivative along one of its directions e
-//!    is a box spline of the e-differences of the control points, with
-//!    non-negative basis functions summing to one, and both points of each
-//!    difference lie in the window. So over the face ∂ᵤx ∈ conv(U) and
-//!    ∂ᵥx ∈ conv(V) (U, V: the window's edge vectors along the two lattice
-//!    directions), and det(∂ᵤx, ∂ᵥx) = Σ αᵢβⱼ·det(uᵢ, vⱼ) with αᵢ, βⱼ ≥ 0
-//!    summing to one lies between the smallest and the largest det(uᵢ, vⱼ).
-//!    All positive: the Jacobian is positive on the face; all negative:
-//!    negative. Otherwise the face is inconclusive, and the whole net is
-//!    refined once more (up to a level limit).
-//! 5. **Regularity.** The ring faces at level L cover D_L minus λ·D_L (outer
-//!    minus inner region), whose scaled copies cover the punctured
-//!    neighbourhood, so one sign on every ring face proves regularity. A face
-//!    proved positive and another proved negative disprove it (and with it
-//!    injectivity: an injective C¹ map of a connected domain keeps its
-//!    orientation).
-//! 6. **Winding number.** The inner boundary of the ring is a closed chain of
-//!    face sides; the image of each lies in the convex hull of the adjacent
-//!    ring face's window. When each hull lies in an open half-plane through
-//!    the origin, its angles form an interval of width below π, and lifting
-//!    the intervals along the chain gives the winding number exactly.
+//! Attempted only after the spectral certificate PROVED its statement; the
+//! lemmas C1–C8 of ARCHITECTURE.md ("The proofs, step by step") are written
+//! there in full, and each function below names the one it implements.
+//!
+//! 1. **Eigenvectors (C1).** The eigenvector of the disc the spectral proof
+//!    named as λ1's, in block 1's verified diagonalisation (the very one the
+//!    spectral certificate enclosed: `SpectrumCertificate::proof`), is
+//!    enclosed (`discs::eigenvector`) and spread over the neighbourhood by
+//!    the rotation: x₍ₜ,ₐ₎ = ω^t·zₐ. No floating-point eigenvalue or block
+//!    is consulted. Re and Im are the two coordinate functions; any complex
+//!    multiple gives the same map up to a linear change of coordinates,
+//!    which keeps regularity and injectivity.
+//! 2. **Net (C2).** The level-0 net of enclosures is refined with the
+//!    scheme's own rules in interval arithmetic (`net::refine_net_exactly_as`).
+//! 3. **Regular part (C3).** Over a ring face whose one-ring of faces is a
+//!    regular grid, the rules at the window's regular entities are compared
+//!    exactly with the masks of the bicubic B-spline, the biquadratic
+//!    B-spline (dual and ternary) or the three-direction quartic box spline.
+//! 4. **Jacobian (C3).** det(∂ᵤx, ∂ᵥx) lies between the smallest and the
+//!    largest det(uᵢ, vⱼ) over the window's edge vectors along the two
+//!    lattice directions; for the biquadratic B-spline on the face enlarged
+//!    by half a face on every side.
+//! 5. **Regularity (C4, C5).** The annulus's scaled copies, with (dual
+//!    schemes) the half-face enlargement covering the quarter-face bands
+//!    between consecutive copies, cover the punctured neighbourhood; one
+//!    sign on every ring face proves regularity, both signs disprove it.
+//! 6. **Winding number (C6, C7).** From half-planes holding the windows'
+//!    hulls and exact orientation signs of a polygon through the chain's
+//!    control points (`winding_number`, `half_plane`, `polygon_winding`);
 //!    Peters–Reif: a regular characteristic map is injective if and only if
 //!    its winding number is ±1.
 
@@ -256,9 +243,10 @@ fn geometric_half(
     for levels in 2..=max_levels {
         let net = net::refine_net_exactly_as::<Interval, Point>(scheme, d, level0.clone(), levels)
             .map_err(|e| format!("the interval net could not be refined {levels} levels: {e}"))?;
-        // two fundamental annuli: the ring, and the ring scaled by λ1 (whose
-        // faces' one-rings stay inside the first ring, as a dual scheme's
-        // outermost faces' do not)
+        // two annuli (C4): the ring, and the ring scaled by λ1 (whose faces'
+        // one-rings stay inside the first ring, as a dual scheme's outermost
+        // faces' do not; its scaled copies leave quarter-face bands that the
+        // biquadratic bound's half-face enlargement covers)
         let vf = net.mesh.vertex_faces();
         let faces = |keep: &dyn Fn(usize) -> bool| (0..net.mesh.num_faces()).filter(|&f| keep(f)).collect::<Vec<_>>();
         let annuli = [
