@@ -9,9 +9,14 @@
 //!   scheme's characteristic map is linear (linear precision), so the
 //!   Jacobian is constant and its smallest lower bound over the ring equals
 //!   its largest upper bound, up to the enclosures' widths;
-//! - the regular rules of Kobbelt's sqrt(3) and of 4-3 subdivision are not
-//!   the bicubic, biquadratic or three-direction box spline's, and non-box
+//! - the regular rules of Kobbelt's sqrt(3) are no box spline's, and non-box
 //!   subdivision carries face control vertices: no box-spline proof applies;
+//! - 4-3 subdivision's quad rules are the four-direction box spline A_4's and
+//!   its triangle rules Loop's (Peters–Shiue; tests/four_three.rs derives
+//!   both masks from the direction matrices), so its eons surrounded by quads
+//!   only or by triangles only are box-spline rings; Peters–Shiue prove them
+//!   C¹ (section 3); a ring whose faces meet transition vertices is not a box
+//!   spline of one kind;
 //! - `schemes/loop-block2-dominant.toml` is built (its comment says how) so
 //!   that at valence 4 the subdominant 1/2 sits in block 2.
 
@@ -87,7 +92,7 @@ fn the_bi2_schemes_are_proved_for_valences_3_to_24() {
 
 #[test]
 fn at_the_regular_valence_the_jacobian_is_constant() {
-    for (s, n) in [("catmull-clark", 4), ("doo-sabin", 4), ("loop", 6), ("tps", 4)] {
+    for (s, n) in [("catmull-clark", 4), ("doo-sabin", 4), ("loop", 6), ("tps", 4), ("four-three", 4)] {
         let c = builtin(s, n);
         let ratio = c.min_jacobian_ratio.unwrap();
         assert!((ratio - 1.0).abs() < 1e-9, "{s}: smallest lower bound over largest upper bound {ratio}");
@@ -96,11 +101,9 @@ fn at_the_regular_valence_the_jacobian_is_constant() {
 
 #[test]
 fn schemes_without_a_box_spline_regular_part_are_not_proved_and_say_why() {
-    for (s, n, why) in [
-        ("sqrt3", 5, "numerical only: the rules over the ring are not"),
-        ("four-three", 5, "numerical only: the rules over the ring are not"),
-        ("non-box", 5, "face control vertices"),
-    ] {
+    for (s, n, why) in
+        [("sqrt3", 5, "numerical only: the rules over the ring are not"), ("non-box", 5, "face control vertices")]
+    {
         let c = builtin(s, n);
         match &c.regularity {
             Verdict::NotProved(r) => assert!(r.contains(why), "{s}: {r}"),
@@ -223,4 +226,40 @@ fn the_cli_prints_the_certificate_in_json_and_text() {
     assert!(text.contains("regular part: biquadratic B-spline"), "{text}");
     let bad = common::fails(&["charmap", "loop", "-n", "5", "--certify", "--certify-levels", "9"]);
     assert!(bad.contains("--certify-levels must be between 2 and 6"), "{bad}");
+}
+
+#[test]
+fn four_three_eons_of_quads_or_of_triangles_are_proved() {
+    use subdlab::neighbourhood::Configuration;
+    let scheme = schemes::build("four-three", &[]).unwrap();
+    let cases: Vec<(String, RegularPart)> = (3..=10)
+        .filter(|&n| n != 4)
+        .map(|n| ("Q".repeat(n), RegularPart::FourDirectionBoxSpline))
+        .chain((3..=9).filter(|&n| n != 6).map(|n| ("T".repeat(n), RegularPart::ThreeDirectionQuarticBoxSpline)))
+        .collect();
+    let results: Vec<(String, CharMapCertificate)> = cases
+        .par_iter()
+        .map(|(faces, _)| {
+            let config = Configuration::with_faces(scheme.as_ref(), faces.len(), faces).unwrap();
+            let analysis = analyse(scheme.as_ref(), &config, &Options::default()).unwrap();
+            (faces.clone(), certify_charmap(scheme.as_ref(), &analysis, 4).unwrap())
+        })
+        .collect();
+    for ((faces, c), (_, part)) in results.iter().zip(&cases) {
+        assert_eq!(c.c1, Verdict::Proved, "{faces}: {:?}", c.c1);
+        assert_proved(c, *part);
+    }
+    // alternating quads and triangles: the spectrum is proved (a reflection
+    // through a sector's bisector gives the realness), but the ring's faces
+    // meet transition vertices, whose rules mix the two box splines
+    let config = Configuration::with_faces(scheme.as_ref(), 6, "QTQTQT").unwrap();
+    let analysis = analyse(scheme.as_ref(), &config, &Options::default()).unwrap();
+    let c = certify_charmap(scheme.as_ref(), &analysis, 4).unwrap();
+    assert_eq!(c.spectrum.verdict, Verdict::Proved, "{:?}", c.spectrum.verdict);
+    assert!(matches!(&c.regularity, Verdict::NotProved(r) if r.contains("not regular")), "{:?}", c.regularity);
+    // the CLI takes the face sequence
+    let out = common::subdlab(&["charmap", "four-three", "-n", "5", "--faces", "TTTTT", "--certify"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("certified C1 (Reif's criterion): PROVED"), "{text}");
+    assert!(text.contains("regular part: three-direction quartic box spline"), "{text}");
 }

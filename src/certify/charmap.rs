@@ -70,6 +70,14 @@ pub enum RegularPart {
     /// quadratic mask (1, 3, 6, 7, 6, 3, 1)/9: vertex (1, 7, 1)²/81, edge
     /// (6, 3) ⊗ (1, 7, 1)/81, interior (6, 3)²/81
     BiquadraticBSplineTernary,
+    /// primal quad rules of the four-direction box spline A_4 with directions
+    /// {±e1, ±e2, e1 + e2, −e1 + e2} (degree 4, C², 4-3 subdivision's quads):
+    /// vertex 1/2, 1/8 (nothing on the diagonal); edge and face as bicubic.
+    /// Its support around a control point is |x|, |y| ≤ 2, |x ± y| ≤ 3, and
+    /// that of its derivative along e1 (A_4 without e1) is |x| ≤ 3/2,
+    /// |y| ≤ 2 about each e1-edge's midpoint, so over a face both lie in the
+    /// 4×4 window as the bicubic's do: the same Jacobian and hull bounds hold.
+    FourDirectionBoxSpline,
 }
 
 impl RegularPart {
@@ -79,6 +87,7 @@ impl RegularPart {
             RegularPart::BiquadraticBSpline => "biquadratic B-spline",
             RegularPart::ThreeDirectionQuarticBoxSpline => "three-direction quartic box spline",
             RegularPart::BiquadraticBSplineTernary => "biquadratic B-spline (ternary refinement)",
+            RegularPart::FourDirectionBoxSpline => "four-direction box spline A_4",
         }
     }
 }
@@ -560,8 +569,11 @@ impl Window {
 }
 
 /// Check the rules at every regular entity the windows hold against one
-/// box spline's masks, exactly. Returns the box spline and the number of
-/// stencils compared.
+/// box spline's masks, exactly. Each entity's stencil must equal the mask of
+/// at least one candidate box spline, and one box spline must fit every
+/// entity (the candidates are intersected: the bicubic B-spline and A_4
+/// share their edge and face masks and differ at vertices). Returns the box
+/// spline and the number of stencils compared.
 fn check_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[Window]) -> Result<(RegularPart, usize), String> {
     let mut corners: HashSet<usize> = HashSet::new();
     let mut faces: HashSet<usize> = HashSet::new();
@@ -572,18 +584,27 @@ fn check_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[Window]) -> Resu
     let refined = connectivity(scheme, mesh).map_err(|e| format!("the net could not be refined: {e}"))?;
     let vf = mesh.vertex_faces();
     let ternary = scheme.topology().faces_per_face() == 9;
-    let mut part: Option<RegularPart> = None;
+    let mut fitting: Option<Vec<RegularPart>> = None;
     let mut checked = 0;
     for &origin in &refined.vertex_origins {
-        let (kind, expected) = match origin {
-            Origin::Vertex(v) if corners.contains(&v) => vertex_mask(mesh, &vf, v, ternary)?,
-            Origin::Edge(a, b) if corners.contains(&a) || corners.contains(&b) => edge_mask(mesh, &vf, a, b, ternary)?,
+        let masks: Vec<(RegularPart, Mask)> = match origin {
+            Origin::Vertex(v) if corners.contains(&v) => vertex_masks(mesh, &vf, v, ternary)?,
+            Origin::Edge(a, b) if corners.contains(&a) || corners.contains(&b) => {
+                let (kind, mask) = edge_mask(mesh, &vf, a, b, ternary)?;
+                let shared = kind == RegularPart::BicubicBSpline;
+                let mut all = vec![(kind, mask.clone())];
+                if shared {
+                    all.push((RegularPart::FourDirectionBoxSpline, mask));
+                }
+                all
+            }
             Origin::Face(g) if faces.contains(&g) => {
                 let gf = mesh.face(g);
                 if gf.len() != 4 {
                     return Err("a face rule on triangles is not a box-spline rule this certificate knows".into());
                 }
-                (RegularPart::BicubicBSpline, gf.iter().map(|&v| (v, Rational::ratio(1, 4))).collect())
+                let mask: Mask = gf.iter().map(|&v| (v, Rational::ratio(1, 4))).collect();
+                vec![(RegularPart::BicubicBSpline, mask.clone()), (RegularPart::FourDirectionBoxSpline, mask)]
             }
             Origin::Corner { face: g, corner: k } if faces.contains(&g) => {
                 let gf = mesh.face(g);
@@ -597,44 +618,50 @@ fn check_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[Window]) -> Resu
                 } else {
                     (RegularPart::BiquadraticBSpline, [(0, 9), (1, 3), (2, 1), (3, 3)], 16)
                 };
-                (kind, mask.iter().map(|&(s, w)| (gf[(k + s) % 4], Rational::ratio(w, denominator))).collect())
+                vec![(kind, mask.iter().map(|&(s, w)| (gf[(k + s) % 4], Rational::ratio(w, denominator))).collect())]
             }
             _ => continue,
         };
-        if *part.get_or_insert(kind) != kind {
-            return Err("the rules over the ring mix box splines".into());
-        }
         let stencil = stencil_at::<Rational>(scheme, mesh, origin)
             .map_err(|_| "a rule over the ring has an irrational weight".to_string())?
             .ok_or("a rule over the ring cannot be evaluated on the net")?;
-        let mut got: HashMap<usize, Rational> = HashMap::new();
+        let mut got: Mask = HashMap::new();
         for (v, w) in stencil.terms {
             *got.entry(v).or_insert_with(<Rational as Weight>::zero) += w;
         }
         got.retain(|_, w| !Weight::is_zero(w));
-        if got != expected {
+        let matching: Vec<RegularPart> = masks.iter().filter(|(_, m)| *m == got).map(|(k, _)| *k).collect();
+        let before = fitting.get_or_insert_with(|| masks.iter().map(|(k, _)| *k).collect());
+        before.retain(|k| matching.contains(k));
+        if before.is_empty() {
+            let names: Vec<&str> = masks.iter().map(|(k, _)| k.describe()).collect();
             return Err(format!(
-                "numerical only: the rules over the ring are not the {}'s (at {origin:?} the stencil differs from its \
-                 mask), so the ring is not a box spline of its net",
-                kind.describe()
+                "numerical only: the rules over the ring are not one box spline's (at {origin:?} the stencil is not \
+                 the mask of the {} that fits the other entities), so the ring is not a box spline of its net",
+                names.join(" or ")
             ));
         }
         checked += 1;
     }
-    part.map(|p| (p, checked)).ok_or_else(|| "no rule over the ring was recognised".to_string())
+    match fitting.as_deref() {
+        Some([one, ..]) => Ok((*one, checked)),
+        _ => Err("no rule over the ring was recognised".to_string()),
+    }
 }
 
-/// The mask at a regular vertex: bicubic (valence-4 quads), ternary
+/// A stencil or mask: weight per control point.
+type Mask = HashMap<usize, Rational>;
+
+/// The masks at a regular vertex: bicubic or A_4 (valence-4 quads), ternary
 /// biquadratic, or Loop's (valence-6 triangles).
-fn vertex_mask(
+fn vertex_masks(
     mesh: &PolyMesh,
     vf: &[Vec<usize>],
     v: usize,
     ternary: bool,
-) -> Result<(RegularPart, HashMap<usize, Rational>), String> {
+) -> Result<Vec<(RegularPart, Mask)>, String> {
     let around = &vf[v];
     let m = mesh.face(around[0]).len();
-    let mut mask: HashMap<usize, Rational> = HashMap::new();
     let mut neighbours: HashSet<usize> = HashSet::new();
     let mut diagonal: HashSet<usize> = HashSet::new();
     for &g in around {
@@ -646,20 +673,31 @@ fn vertex_mask(
             diagonal.insert(gf[(k + 2) % 4]);
         }
     }
-    let (kind, centre, edge, diag) = match (m, around.len()) {
-        (4, 4) if ternary => (RegularPart::BiquadraticBSplineTernary, (49, 81), (7, 81), (1, 81)),
-        (4, 4) => (RegularPart::BicubicBSpline, (9, 16), (3, 32), (1, 64)),
-        (3, 6) => (RegularPart::ThreeDirectionQuarticBoxSpline, (5, 8), (1, 16), (0, 1)),
+    let candidates: &[(RegularPart, (i64, i64), (i64, i64), (i64, i64))] = match (m, around.len()) {
+        (4, 4) if ternary => &[(RegularPart::BiquadraticBSplineTernary, (49, 81), (7, 81), (1, 81))],
+        (4, 4) => &[
+            (RegularPart::BicubicBSpline, (9, 16), (3, 32), (1, 64)),
+            (RegularPart::FourDirectionBoxSpline, (1, 2), (1, 8), (0, 1)),
+        ],
+        (3, 6) => &[(RegularPart::ThreeDirectionQuarticBoxSpline, (5, 8), (1, 16), (0, 1))],
         _ => return Err("a vertex over the ring is not regular".into()),
     };
-    mask.insert(v, Rational::ratio(centre.0, centre.1));
-    for n in neighbours {
-        mask.insert(n, Rational::ratio(edge.0, edge.1));
-    }
-    for n in diagonal {
-        mask.insert(n, Rational::ratio(diag.0, diag.1));
-    }
-    Ok((kind, mask))
+    Ok(candidates
+        .iter()
+        .map(|&(kind, centre, edge, diag)| {
+            let mut mask: Mask = HashMap::new();
+            mask.insert(v, Rational::ratio(centre.0, centre.1));
+            for &n in &neighbours {
+                mask.insert(n, Rational::ratio(edge.0, edge.1));
+            }
+            if diag.0 != 0 {
+                for &n in &diagonal {
+                    mask.insert(n, Rational::ratio(diag.0, diag.1));
+                }
+            }
+            (kind, mask)
+        })
+        .collect())
 }
 
 /// The mask at an edge between regular faces (ternary: the new vertex on

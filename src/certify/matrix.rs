@@ -101,12 +101,14 @@ pub fn row_sums(rows: &IntervalRows, exact: &ExactRows, labels: &[VertexLabel], 
     all
 }
 
-/// The reflection of the neighbourhood across the spoke between sector n − 1
-/// and sector 0: sector s ↦ n − 1 − s with the chart coordinates (i, j)
-/// swapped, a point that lands on the next spoke (i = 0) relabelled in the
-/// sector that owns that spoke. `None` when a reflected point is not in the
-/// neighbourhood (the configuration has no such mirror).
-pub fn mirror_map(labels: &[VertexLabel], sectors: usize) -> Option<Vec<usize>> {
+/// The reflection of the neighbourhood about axis `axis`: sector s ↦
+/// axis − s (mod n) with the chart coordinates (i, j) swapped, a point that
+/// lands on the next spoke (i = 0) relabelled in the sector that owns that
+/// spoke. Axis n − 1 reflects across the spoke between sector n − 1 and
+/// sector 0; axis 0 across the bisector of sector 0 (a mixed face sequence
+/// such as QTQTQT has only reflections of that kind). `None` when a
+/// reflected point is not in the neighbourhood (no such mirror).
+pub fn mirror_map(labels: &[VertexLabel], sectors: usize, axis: usize) -> Option<Vec<usize>> {
     let n = sectors as i64;
     let key = |l: &VertexLabel| (if l.i == 0 && l.j == 0 { 0 } else { l.sector as i64 }, l.i, l.j, l.ring);
     let index: HashMap<(i64, i64, i64, usize), usize> = labels.iter().enumerate().map(|(k, l)| (key(l), k)).collect();
@@ -116,7 +118,7 @@ pub fn mirror_map(labels: &[VertexLabel], sectors: usize) -> Option<Vec<usize>> 
             if l.i == 0 && l.j == 0 {
                 return index.get(&key(l)).copied();
             }
-            let (s, i, j) = (n - 1 - l.sector as i64, l.j, l.i);
+            let (s, i, j) = ((axis as i64 - l.sector as i64).rem_euclid(n), l.j, l.i);
             let (s, i, j) = if i == 0 && j > 0 { ((s + 1).rem_euclid(n), j, 0) } else { (s, i, j) };
             index.get(&(s, i, j, l.ring)).copied()
         })
@@ -138,9 +140,30 @@ pub fn mirror_symmetry(
     labels: &[VertexLabel],
     sectors: usize,
 ) -> Check {
-    let Some(q) = mirror_map(labels, sectors) else {
-        return Check::Fails("the neighbourhood has no mirror image of itself across a spoke".into());
-    };
+    // any reflection will do: the spoke axis first (every rotation-symmetric
+    // sequence of equal faces has it), then every other axis; the first that
+    // maps the neighbourhood onto itself and commutes with S decides
+    let mut first_failure = None;
+    for axis in std::iter::once(sectors - 1).chain(0..sectors - 1) {
+        let Some(q) = mirror_map(labels, sectors, axis) else { continue };
+        match mirror_symmetry_about(&q, rows, exact, orbits, labels) {
+            Check::Fails(why) => {
+                first_failure.get_or_insert(why);
+            }
+            holds => return holds,
+        }
+    }
+    Check::Fails(first_failure.unwrap_or_else(|| "the neighbourhood has no mirror image of itself".into()))
+}
+
+/// [`mirror_symmetry`] for one reflection `q` of the labels.
+fn mirror_symmetry_about(
+    q: &[usize],
+    rows: &IntervalRows,
+    exact: &ExactRows,
+    orbits: &Orbits,
+    labels: &[VertexLabel],
+) -> Check {
     let g = orbits.group_order;
     let index = orbit_index(orbits);
     // Q must be an involution with QPQ = P⁻¹ (P: one step of the rotation)

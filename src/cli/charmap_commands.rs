@@ -30,6 +30,11 @@ pub struct CharmapArgs {
     /// valence of the extraordinary vertex (or face)
     #[arg(long, short = 'n')]
     pub valence: usize,
+    /// face sequence around the centre, counter-clockwise, one letter per face:
+    /// Q (quad) or T (triangle), e.g. TTTTT; as many letters as the valence
+    /// (schemes of mixed meshes only: four-three; default all quads)
+    #[arg(long)]
+    pub faces: Option<String>,
     /// analysis steps of refinement of the control net (1 to 8)
     #[arg(long, default_value_t = DEFAULT_LEVELS)]
     pub levels: usize,
@@ -155,7 +160,10 @@ pub fn charmap(a: &CharmapArgs) -> Result<(), Error> {
     }
     let style = a.figure.style()?;
     let scheme = build_scheme(&a.scheme, &a.params)?;
-    let config = Configuration::regular(scheme.as_ref(), a.valence)?;
+    let config = match a.faces.as_deref() {
+        None => Configuration::regular(scheme.as_ref(), a.valence)?,
+        Some(faces) => Configuration::with_faces(scheme.as_ref(), a.valence, faces)?,
+    };
     let opts = CharMapOptions {
         levels: a.levels,
         resolution: a.resolution,
