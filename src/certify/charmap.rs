@@ -373,21 +373,24 @@ fn geometric_half(
 fn record_margins(cert: &mut CharMapCertificate, net: &Net<Point>, bounds: &[Interval], sign: f64, area_factor: usize) {
     let lower = bounds.iter().map(|b| if sign > 0.0 { b.lo } else { -b.hi }).fold(f64::INFINITY, f64::min);
     let upper = bounds.iter().map(|b| if sign > 0.0 { b.hi } else { -b.lo }).fold(0.0, f64::max);
-    // the ring's points lie within radius R; each refinement divides a face's
-    // parameter area by the host's faces per face (4 dyadic, 9 ternary), and
-    // the Jacobian in level-0 parameters multiplies by as much
-    let radius = net
+    // the ring's points lie within radius R (R² bounded above); each
+    // refinement divides a face's parameter area by the host's faces per face
+    // (4 dyadic, 9 ternary), and the Jacobian in level-0 parameters
+    // multiplies by as much
+    let radius_squared = net
         .outer
         .iter()
         .enumerate()
         .filter(|(_, &o)| o)
         .flat_map(|(f, _)| net.mesh.face(f).iter())
         .filter_map(|&v| net.points[v])
-        .map(|p| p[0].mag().hypot(p[1].mag()))
+        .map(|p| (p[0].square() + p[1].square()).hi)
         .fold(0.0, f64::max);
-    if radius > 0.0 {
-        let scale = (area_factor as f64).powi(net.refinements as i32) / (radius * radius);
-        cert.min_jacobian_lower_bound = Some((lower * scale * (1.0 - 1e-12)).max(0.0));
+    if radius_squared > 0.0 {
+        // a lower bound in interval arithmetic: lower · factorᴸ / R² rounded down
+        let factor = (0..net.refinements).fold(Interval::point(1.0), |s, _| s * Interval::point(area_factor as f64));
+        let bound = Interval::point(lower) * factor / Interval::point(radius_squared);
+        cert.min_jacobian_lower_bound = Some(bound.lo.max(0.0));
     }
     if upper > 0.0 {
         cert.min_jacobian_ratio = Some(lower / upper);

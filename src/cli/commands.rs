@@ -193,6 +193,8 @@ pub(super) fn certificate_table(c: &crate::certify::SpectrumCertificate) -> Stri
         if c.conditional { ", given the premises marked 'identity' below" } else { "" }
     );
     out += &format!("  statement: {}\n", c.statement);
+    out += "  (the floating-point table above observes; where it disagrees with this certificate, the certificate \
+            decides)\n";
     if let Some(p) = &c.premises {
         let field = p.field.as_deref().unwrap_or("Q");
         let show = |x: &Check| match x {
