@@ -1,6 +1,7 @@
 //! The certified verdicts alone, after the floating-point analysis they
-//! reuse (made once outside the timed loop), for Catmull–Clark, Loop and
-//! Doo–Sabin:
+//! reuse (made once outside the timed loop), for every scheme whose
+//! characteristic map the certificate covers (Catmull–Clark, Loop, Doo–Sabin,
+//! 4-3 at its quad eons, PGS, TPS):
 //! - `certify_spectrum` (interval rows of S from the rules, interval Fourier
 //!   blocks, their verified enclosures, the premises and the verdict) at
 //!   n = 3..200;
@@ -20,7 +21,7 @@ use subdlab::neighbourhood::Configuration;
 use subdlab::schemes::{self, Scheme};
 use subdlab::spectrum::{analyse, Analysis, Options};
 
-const SCHEMES: [&str; 3] = ["catmull-clark", "loop", "doo-sabin"];
+const SCHEMES: [&str; 6] = ["catmull-clark", "loop", "doo-sabin", "four-three", "pgs", "tps"];
 
 /// Time `run` on the analysis of every scheme at every valence, in a group.
 fn bench_group(c: &mut Criterion, group: &str, valences: &[usize], run: fn(&dyn Scheme, &Analysis)) {

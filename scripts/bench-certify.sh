@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 cargo bench --bench certify -- "$@" >&2
 python3 - <<'PY'
 import json, os
-schemes = ["catmull-clark", "loop", "doo-sabin"]
+schemes = ["catmull-clark", "loop", "doo-sabin", "four-three", "pgs", "tps"]
 for group in ["certify_spectrum", "certify_charmap"]:
     root = os.path.join("target/criterion", group)
     if not os.path.isdir(os.path.join(root, schemes[0])):
