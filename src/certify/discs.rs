@@ -75,6 +75,10 @@ impl Disc {
 pub struct Component {
     pub discs: Vec<Disc>,
     pub count: usize,
+    /// the rows of the diagonalised matrix whose discs these are (in the
+    /// order of `discs`): a certificate names discs by row
+    #[serde(skip)]
+    pub rows: Vec<usize>,
 }
 
 impl Component {
@@ -111,19 +115,28 @@ pub struct Enclosure {
     pub components: Vec<Component>,
     /// the bound ε ≥ ‖I − RV‖∞ (how well V was inverted)
     pub epsilon: f64,
+    /// the disc of each row of V⁻¹AV, in row order
+    pub discs: Vec<Disc>,
+    /// the floating-point V and R ≈ V⁻¹ the discs were verified with: kept
+    /// so that a certificate can hand them to an independent checker, which
+    /// redoes the interval products with them
+    pub v: Mat<c64>,
+    pub r: Mat<c64>,
 }
 
 /// `Err` says why there is no enclosure (ε ≥ 1, non-finite entries).
 pub fn enclose(a: &CIntervalMatrix) -> Result<Enclosure, String> {
     let d = diagonalise(a)?;
-    Ok(Enclosure { components: components(d.discs), epsilon: d.epsilon })
+    Ok(Enclosure { components: components(d.discs.clone()), epsilon: d.epsilon, discs: d.discs, v: d.v, r: d.r })
 }
 
 /// The verified approximate diagonalisation behind [`enclose`]: the float
-/// eigenvectors V of the midpoint, the Gershgorin disc of each row of
-/// V⁻¹AV (for every A in the interval matrix) and ε.
+/// eigenvectors V of the midpoint and their approximate inverse R, the
+/// Gershgorin disc of each row of V⁻¹AV (for every A in the interval
+/// matrix) and ε.
 struct Diagonalisation {
     v: Mat<c64>,
+    r: Mat<c64>,
     discs: Vec<Disc>,
     epsilon: f64,
 }
@@ -131,7 +144,7 @@ struct Diagonalisation {
 fn diagonalise(a: &CIntervalMatrix) -> Result<Diagonalisation, String> {
     let k = a.size;
     if k == 0 {
-        return Ok(Diagonalisation { v: Mat::zeros(0, 0), discs: Vec::new(), epsilon: 0.0 });
+        return Ok(Diagonalisation { v: Mat::zeros(0, 0), r: Mat::zeros(0, 0), discs: Vec::new(), epsilon: 0.0 });
     }
     if !a.entries.iter().all(CInterval::is_finite) {
         return Err("an entry of the matrix has no finite enclosure".into());
@@ -192,7 +205,7 @@ fn diagonalise(a: &CIntervalMatrix) -> Result<Diagonalisation, String> {
             Disc { re: c.re, im: c.im, radius: radius.hi }
         })
         .collect();
-    Ok(Diagonalisation { v, discs, epsilon: eps })
+    Ok(Diagonalisation { v, r, discs, epsilon: eps })
 }
 
 /// An enclosure of an eigenvector of every matrix in `a` for its eigenvalue
@@ -266,12 +279,15 @@ pub fn components(discs: Vec<Disc>) -> Vec<Component> {
             }
         }
     }
-    let mut groups: std::collections::BTreeMap<usize, Vec<Disc>> = std::collections::BTreeMap::new();
-    for (i, d) in discs.iter().enumerate() {
+    let mut groups: std::collections::BTreeMap<usize, Vec<usize>> = std::collections::BTreeMap::new();
+    for i in 0..k {
         let root = find(&mut parent, i);
-        groups.entry(root).or_default().push(*d);
+        groups.entry(root).or_default().push(i);
     }
-    let mut out: Vec<Component> = groups.into_values().map(|discs| Component { count: discs.len(), discs }).collect();
+    let mut out: Vec<Component> = groups
+        .into_values()
+        .map(|rows| Component { count: rows.len(), discs: rows.iter().map(|&i| discs[i]).collect(), rows })
+        .collect();
     out.sort_by(|a, b| b.max_modulus().total_cmp(&a.max_modulus()));
     out
 }

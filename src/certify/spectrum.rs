@@ -43,9 +43,10 @@ use crate::matrix::local::{assemble_rows, AssembleError};
 use crate::numeric::{Cyclotomic, Interval, Rational};
 use crate::sdc::Scheme;
 use crate::spectrum::{Analysis, Method};
-use faer::c64;
+use faer::{c64, Mat};
 use rayon::prelude::*;
 use serde::Serialize;
+use std::cell::Cell;
 
 /// Largest whole matrix (no rotation symmetry) enclosed: interval matrix
 /// products cost about 100 times the floating-point ones.
@@ -86,6 +87,13 @@ pub struct BlockEnclosure {
     pub components: Vec<Component>,
     /// why there is no enclosure, when there is none
     pub failure: Option<String>,
+    /// the disc of each row, in row order (the certificate document's)
+    #[serde(skip)]
+    pub discs: Vec<Disc>,
+    /// the floating-point eigenvectors V and R ≈ V⁻¹ the discs were verified
+    /// with: an independent checker redoes the interval products with them
+    #[serde(skip)]
+    pub vectors: Option<(Mat<c64>, Mat<c64>)>,
 }
 
 /// An enclosure of a real eigenvalue: lo ≤ λ ≤ hi.
@@ -147,12 +155,28 @@ pub struct SpectrumCertificate {
     /// the enclosure that decides a disproof: the block and its component
     pub witness: Option<Witness>,
     pub blocks: Vec<BlockEnclosure>,
+    /// the components the verdict rests on (for the certificate document)
+    #[serde(skip)]
+    pub named: Named,
 }
 
 #[derive(Clone, Debug, Serialize)]
 pub struct Witness {
     pub block: usize,
     pub component: Component,
+    /// the component's index among its block's components
+    #[serde(skip)]
+    pub index: usize,
+}
+
+/// The components a verdict names, as indices into a block's `components`:
+/// a checker of the certificate document re-checks exactly these.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Named {
+    /// λ0's component in block 0
+    pub lambda0: Option<usize>,
+    /// λ1's components: in block 1 and in block g − 1
+    pub lambda1: Option<[usize; 2]>,
 }
 
 const STATEMENT: &str = "for the true local subdivision matrix S (every weight enclosed, cos(2πk/n) included): \
@@ -165,6 +189,13 @@ pub fn certify_analysis(scheme: &dyn Scheme, analysis: &Analysis) -> Result<Spec
     let config = &analysis.discovered.config;
     let period = config.rotation_period(scheme);
     certify_spectrum(scheme, analysis, period)
+}
+
+/// The orbits [`certify_analysis`] builds its Fourier blocks on (the
+/// configuration's own rotation period).
+pub fn analysis_orbits(scheme: &dyn Scheme, analysis: &Analysis) -> Orbits {
+    let s = &analysis.spectrum;
+    Orbits::from_labels(&s.labels, analysis.discovered.config.rotation_period(scheme), s.valence)
 }
 
 /// Certify the spectrum of an analysis that the driver made (its discovery,
@@ -183,6 +214,7 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
         margins: Margins::default(),
         witness: None,
         blocks: Vec::new(),
+        named: Named::default(),
     };
     let which: Vec<usize> = match s.method {
         Method::Dft => orbits.representative.clone(),
@@ -245,10 +277,18 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
                 epsilon: Some(e.epsilon),
                 components: e.components,
                 failure: None,
+                discs: e.discs,
+                vectors: Some((e.v, e.r)),
             },
-            Err(why) => {
-                BlockEnclosure { block: *m, size: b.size, epsilon: None, components: Vec::new(), failure: Some(why) }
-            }
+            Err(why) => BlockEnclosure {
+                block: *m,
+                size: b.size,
+                epsilon: None,
+                components: Vec::new(),
+                failure: Some(why),
+                discs: Vec::new(),
+                vectors: None,
+            },
         })
         .collect();
     if !rotation.holds() {
@@ -272,7 +312,11 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
 /// field beyond `cyclotomic::MAX_ORDER`), or the rows cannot be assembled.
 /// Rational rows are assembled as rationals first: cheaper, and the rows of
 /// most points are rational even where the centre's are not.
-fn exact_rows(scheme: &dyn Scheme, analysis: &Analysis, which: &[usize]) -> Option<Vec<Vec<(usize, Cyclotomic)>>> {
+pub(super) fn exact_rows(
+    scheme: &dyn Scheme,
+    analysis: &Analysis,
+    which: &[usize],
+) -> Option<Vec<Vec<(usize, Cyclotomic)>>> {
     let (d, kind) = (&analysis.discovered, analysis.spectrum.neighbourhood);
     match assemble_rows::<Rational>(scheme, d, kind, which) {
         Ok(rows) => {
@@ -419,6 +463,10 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
         max_radius: blocks.iter().flat_map(|b| &b.components).map(Component::max_radius).fold(0.0, f64::max),
         ..Margins::default()
     };
+    // set as the proof names them: every verdict's document says which
+    // components it rested on so far
+    let lambda0 = Cell::new(None);
+    let lambda1 = Cell::new(None);
     let finish = |verdict: Verdict, margins: Margins, witness: Option<Witness>| SpectrumCertificate {
         verdict,
         conditional: false,
@@ -427,7 +475,10 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
         margins,
         witness,
         blocks: Vec::new(),
+        named: Named { lambda0: lambda0.get(), lambda1: lambda1.get() },
     };
+    let index = |m: usize, c: &Component| blocks[m].components.iter().position(|o| std::ptr::eq(o, c)).unwrap_or(0);
+    let witness = |m: usize, c: &Component| Witness { block: m, component: c.clone(), index: index(m, c) };
     let all: Vec<(usize, &Component)> =
         blocks.iter().flat_map(|b| b.components.iter().map(move |c| (b.block, c))).collect();
     // an eigenvalue outside the unit disc disproves convergence, whatever else
@@ -435,7 +486,7 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
         return finish(
             Verdict::Disproved(format!("block {m} has an eigenvalue of modulus ≥ {:.6} > 1", c.min_modulus())),
             margins,
-            Some(Witness { block: *m, component: (*c).clone() }),
+            Some(witness(*m, c)),
         );
     }
     if let Some(b) = blocks.iter().find(|b| b.failure.is_some()) {
@@ -458,6 +509,7 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
     let [c0] = holding_one.as_slice() else {
         return finish(Verdict::NotProved("no single component of block 0 holds 1".into()), margins, None);
     };
+    lambda0.set(Some(index(0, c0)));
     let (lo0, hi0) = c0.real_range();
     margins.lambda0 = Some(RealEnclosure { lo: lo0, hi: hi0 });
     if c0.count != 1 {
@@ -507,7 +559,7 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
                     g - 1
                 )),
                 margins,
-                Some(Witness { block: *m, component: (*c).clone() }),
+                Some(witness(*m, c)),
             );
         }
     }
@@ -523,6 +575,7 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
             None,
         );
     }
+    lambda1.set(Some([index(1, c1), index(g - 1, c1c)]));
     let lambda1_mod = (c1.min_modulus(), c1.max_modulus());
     margins.lambda_radius = Some(c0.max_radius().max(c1.max_radius()).max(c1c.max_radius()));
     // (c) every other eigenvalue below λ1 in modulus
@@ -533,7 +586,11 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
     // realness: a simple eigenvalue of a conjugation-closed block spectrum
     // whose component's mirror image meets no other component is real
     let self_conjugate = |m: usize, c: &Component| {
-        let mirror = Component { discs: c.discs.iter().map(|d| Disc { im: -d.im, ..*d }).collect(), count: c.count };
+        let mirror = Component {
+            discs: c.discs.iter().map(|d| Disc { im: -d.im, ..*d }).collect(),
+            count: c.count,
+            rows: c.rows.clone(),
+        };
         c.meets_real_axis() && blocks[m].components.iter().filter(|o| !std::ptr::eq(*o, c)).all(|o| o.disjoint(&mirror))
     };
     let (lo1, hi1) = c1.real_range();
@@ -550,7 +607,7 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
                 "the leading eigenvalue of block 1 is not real, and not separated from the others".into(),
             )
         };
-        return finish(verdict, margins, Some(Witness { block: 1, component: c1.clone() }));
+        return finish(verdict, margins, Some(witness(1, c1)));
     }
     if !premises.mirror_symmetry.holds() {
         return finish(
@@ -574,7 +631,7 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
         return finish(
             Verdict::Disproved(format!("λ1 is negative: λ1 ≤ {:.9}", real_enclosure.hi)),
             margins,
-            Some(Witness { block: 1, component: c1.clone() }),
+            Some(witness(1, c1)),
         );
     }
     if real_enclosure.lo <= 0.0 {
@@ -603,7 +660,7 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
                 }
             )),
             margins,
-            Some(Witness { block: m, component: c.clone() }),
+            Some(witness(m, c)),
         );
     }
     finish(Verdict::Proved, margins, None)
