@@ -628,10 +628,23 @@ fn decide(blocks: &[BlockEnclosure], premises: &Premises, g: usize, method: Meth
     }
     margins.lambda1 = Some(real_enclosure);
     if real_enclosure.hi < 0.0 {
+        // a disproof only when this eigenvalue is proven the largest of block
+        // 1 (as for a non-real one): otherwise another component of the block
+        // may hold a larger, positive λ1
+        if gap > 0.0 {
+            return finish(
+                Verdict::Disproved(format!("λ1 is negative: λ1 ≤ {:.9}", real_enclosure.hi)),
+                margins,
+                Some(witness(1, c1)),
+            );
+        }
         return finish(
-            Verdict::Disproved(format!("λ1 is negative: λ1 ≤ {:.9}", real_enclosure.hi)),
+            Verdict::NotProved(
+                "the leading enclosure of block 1 is negative, but not separated from the others: it may not be λ1"
+                    .into(),
+            ),
             margins,
-            Some(witness(1, c1)),
+            None,
         );
     }
     if real_enclosure.lo <= 0.0 {
