@@ -60,6 +60,11 @@ class Malformed(Exception):
     """Not a readable certificate document: exit 2."""
 
 
+class PremiseFails(Exception):
+    """An identity of S does not hold: fatal only for a verdict that uses it
+    (a NOT PROVED document may rest on a failing premise, and say so)."""
+
+
 def reject(msg):
     raise Rejected(msg)
 
@@ -564,13 +569,30 @@ class Checker:
         if self.verdict not in ("PROVED", "DISPROVED", "NOT PROVED"):
             raise Malformed(f"unknown verdict {self.verdict!r}")
         self.read_rows(part)
-        self.check_row_sums()
+        self.premises = {}
+        self.premise("row sums", self.check_row_sums)
         if self.method == "dft":
             self.read_orbits(part)
-            self.check_rotation()
-            self.check_mirror(part)
+            self.premise("rotation", self.check_rotation)
+            self.premise("mirror", lambda: self.check_mirror(part))
         self.check_blocks(part)
         self.check_verdict(part)
+
+    def premise(self, name, check):
+        try:
+            check()
+            self.premises[name] = None
+        except PremiseFails as e:
+            self.premises[name] = str(e)
+            self.lines.append(f"  --  premise fails ({name}): {e}")
+
+    def need(self, *names):
+        """The verdict uses these premises: each must hold."""
+        for name in names:
+            if name not in self.premises:
+                reject(f"{self.verdict} needs the {name} premise, which the whole-matrix document does not have")
+            if self.premises[name] is not None:
+                reject(f"{self.verdict} rests on a premise that fails ({name}): {self.premises[name]}")
 
     def read_rows(self, part):
         size = self.size
@@ -636,7 +658,7 @@ class Checker:
             for x in row.values():
                 s = self.field.add(s, x)
             if s != one:
-                reject(f"premise: row {k} does not sum to 1")
+                raise PremiseFails(f"row {k} does not sum to 1")
         self.ok("premise: every row sums to 1 exactly (1 is an eigenvalue, of block 0)")
 
     def read_orbits(self, part):
@@ -685,26 +707,24 @@ class Checker:
                 source, steps = self.rep[o], t
             moved = {self.rotate(c, steps): x for c, x in self.rows[source].items()}
             if moved != row:
-                reject(f"premise: row {k} is not the row of {source} rotated by {steps} (S does not commute with the rotation)")
+                raise PremiseFails(f"row {k} is not the row of {source} rotated by {steps} (S does not commute with the rotation)")
         self.ok("premise: every row is its representative's rotated, fixed points' rows rotation-invariant (PS = SP)")
 
     def check_mirror(self, part):
         q = get(part, "mirror", "spectrum")
         if q is None:
-            self.mirror_ok = False
-            self.lines.append("  --  premise: no reflection given (realness of λ1 cannot be shown)")
-            return
+            raise PremiseFails("the document gives no reflection of the neighbourhood")
         q = [as_int(x, "mirror", self.size) for x in as_list(q, "mirror", self.size)]
         if sorted(q) != list(range(self.size)):
-            reject("premise: the mirror map is not a permutation")
+            raise PremiseFails("the mirror map is not a permutation")
         g = self.g
         for k in range(self.size):
             if q[q[k]] != k:
-                reject(f"premise: the mirror map is not an involution at {k}")
+                raise PremiseFails(f"the mirror map is not an involution at {k}")
             if self.fixed[self.member[k][0]] != self.fixed[self.member[q[k]][0]]:
-                reject(f"premise: the mirror map moves the fixed point {k} off the centre (or onto it)")
+                raise PremiseFails(f"the mirror map moves the fixed point {k} off the centre (or onto it)")
             if q[self.rotate(q[k], 1)] != self.rotate(k, g - 1):
-                reject(f"premise: QPQ ≠ P⁻¹ at point {k}")
+                raise PremiseFails(f"QPQ ≠ P⁻¹ at point {k}")
 
         def off(row):
             return {c: x for c, x in row.items() if not self.fixed[self.member[c][0]]}
@@ -714,8 +734,7 @@ class Checker:
                 continue
             mirrored = {q[c]: x for c, x in off(self.rows[r]).items()}
             if mirrored != off(self.rows[q[r]]):
-                reject(f"premise: S[Q{r}, Q·] ≠ S[{r}, ·] off the centre (S does not commute with the reflection)")
-        self.mirror_ok = True
+                raise PremiseFails(f"S[Q{r}, Q·] ≠ S[{r}, ·] off the centre (S does not commute with the reflection)")
         self.ok("premise: a reflection Q with Q² = I, QPQ = P⁻¹ commutes with S off the centre (block spectra closed under conjugation)")
 
     # -- the blocks and their discs
@@ -764,10 +783,12 @@ class Checker:
         blocks = as_list(get(part, "blocks", "spectrum"), "blocks")
         want = list(range(self.g)) if self.method == "dft" else [0]
         got = [as_int(get(b, "block", "block"), "block index") for b in blocks]
+        self.discs, self.components, self.failed = {}, {}, []
+        if not blocks and self.verdict == "NOT PROVED":
+            self.lines.append("  --  no enclosures (the verdict stopped before them)")
+            return
         if got != want:
             reject(f"the document's blocks are {got}, expected {want}")
-        self.discs = {}
-        self.components = {}
         failed = []
         worst_eps, worst_slack = Fraction(0), None
         for b in blocks:
@@ -877,8 +898,7 @@ class Checker:
             reject(f"PROVED with a rotation group of order {g}: blocks 1 and g − 1 must differ")
         if self.failed:
             reject(f"PROVED while block(s) {self.failed} have no enclosure")
-        if not self.mirror_ok:
-            reject("PROVED without a reflection: λ1's realness is not shown")
+        self.need("row sums", "rotation", "mirror")
         m0, i0 = self.named(get(claims, "lambda0", "claims"), "λ0's component")
         if m0 != 0:
             reject("λ0's component is not in block 0")
@@ -965,6 +985,8 @@ class Checker:
         self.ok("margins: the claimed λ0, λ1 enclosures, largest other modulus and gap are valid bounds")
 
     def check_disproof(self, claims):
+        if self.method == "dft":
+            self.need("rotation")  # the blocks' spectra are S's
         m, i = self.named(get(claims, "witness", "claims"), "witness")
         w = self.components[m][i]
         g = self.g if self.method == "dft" else 1
@@ -982,6 +1004,7 @@ class Checker:
             reject("DISPROVED: blocks 1 and g − 1 need enclosures for any other witness")
         # (b) eigenvalues outside blocks 1 and g − 1 above all of theirs
         if m not in (1, g - 1):
+            self.need("row sums")  # 1 is block 0's: the witness is not λ0
             if m == 0 and any(holds(d, Fraction(1)) for d in w) and len(w) < 2:
                 reject("DISPROVED: the witness may be λ0 = 1 itself")
             if dominates(self.components[1] + self.components[g - 1]):
