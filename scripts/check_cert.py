@@ -161,18 +161,19 @@ class Field:
         self.order = order
         self.phi = cyclotomic_polynomial(order)
         self.degree = len(self.phi) - 1
+        # x^d ≡ −Σ a_j x^j modulo Φ_L: the nonzero a_j only
+        self.low = [(j, a) for j, a in enumerate(self.phi[: self.degree]) if a]
         self._value = {}
         self._real = {}
 
     def reduce(self, dense):
-        d, phi = self.degree, self.phi
+        d = self.degree
         p = list(dense)
         for i in range(len(p) - 1, d - 1, -1):
             c = p[i]
             if c:
-                for j in range(d):
-                    if phi[j]:
-                        p[i - d + j] -= c * phi[j]
+                for j, a in self.low:
+                    p[i - d + j] -= c * a
                 p[i] = 0
         p = p[:d]
         while p and p[-1] == 0:
@@ -183,6 +184,9 @@ class Field:
         """Σ c ζ_order^i for (i, c) in terms, written in Q(ζ_L)."""
         if self.order % order:
             raise AssertionError("element outside the field")
+        if order == 1:
+            c = sum((c for _, c in terms), Fraction(0))
+            return (c,) if c else ()
         step = self.order // order
         dense = [Fraction(0)] * self.order
         for i, c in terms:
