@@ -132,6 +132,9 @@ pub fn enclose(a: &CIntervalMatrix) -> Result<Enclosure, String> {
 #[derive(Clone, Debug)]
 pub struct Diagonalisation {
     pub v: Mat<c64>,
+    /// R ≈ V⁻¹ as used in the verification (kept for the certificate
+    /// document: a checker redoes the interval products with V and R)
+    pub r: Mat<c64>,
     pub discs: Vec<Disc>,
     pub epsilon: f64,
 }
@@ -139,7 +142,7 @@ pub struct Diagonalisation {
 fn diagonalise(a: &CIntervalMatrix) -> Result<Diagonalisation, String> {
     let k = a.size;
     if k == 0 {
-        return Ok(Diagonalisation { v: Mat::zeros(0, 0), discs: Vec::new(), epsilon: 0.0 });
+        return Ok(Diagonalisation { v: Mat::zeros(0, 0), r: Mat::zeros(0, 0), discs: Vec::new(), epsilon: 0.0 });
     }
     if !a.entries.iter().all(CInterval::is_finite) {
         return Err("an entry of the matrix has no finite enclosure".into());
@@ -200,7 +203,7 @@ fn diagonalise(a: &CIntervalMatrix) -> Result<Diagonalisation, String> {
             Disc { re: c.re, im: c.im, radius: radius.hi }
         })
         .collect();
-    Ok(Diagonalisation { v, discs, epsilon: eps })
+    Ok(Diagonalisation { v, r, discs, epsilon: eps })
 }
 
 /// An enclosure of an eigenvector of every matrix in the interval matrix

@@ -132,14 +132,15 @@ pub fn mirror_map(labels: &[VertexLabel], sectors: usize, axis: usize) -> Option
 /// B_m equals that of B_{−m} = conj(B_m): closed under conjugation. Checked
 /// on the representative rows `rows` (orbit o's row at `rows[o]`), every
 /// other row being a rotation of one of them; exactly where both rows are
-/// exact.
+/// exact. Returns the check and the axis of the reflection that holds
+/// (`mirror_map`'s).
 pub fn mirror_symmetry(
     rows: &IntervalRows,
     exact: &ExactRows,
     orbits: &Orbits,
     labels: &[VertexLabel],
     sectors: usize,
-) -> Check {
+) -> (Check, Option<usize>) {
     // any reflection will do: the spoke axis first (every rotation-symmetric
     // sequence of equal faces has it), then every other axis; the first that
     // maps the neighbourhood onto itself and commutes with S decides
@@ -150,10 +151,10 @@ pub fn mirror_symmetry(
             Check::Fails(why) => {
                 first_failure.get_or_insert(why);
             }
-            holds => return holds,
+            holds => return (holds, Some(axis)),
         }
     }
-    Check::Fails(first_failure.unwrap_or_else(|| "the neighbourhood has no mirror image of itself".into()))
+    (Check::Fails(first_failure.unwrap_or_else(|| "the neighbourhood has no mirror image of itself".into())), None)
 }
 
 /// [`mirror_symmetry`] for one reflection `q` of the labels.

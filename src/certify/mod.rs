@@ -14,6 +14,8 @@
 //! - [`spectrum`]: the spectral verdict (λ0 = 1 simple, λ1 real positive from
 //!   blocks 1 and g − 1, a proven gap to every other eigenvalue):
 //!   PROVED / DISPROVED / NOT PROVED with the reason and the margins.
+//! - [`export`]: the certificate document (JSON) that an independent
+//!   checker, `scripts/check_cert.py`, re-verifies from the exact rows;
 //! - [`charmap`]: the geometric verdict (the characteristic map regular and
 //!   injective) from enclosed eigenvectors, an interval net refined with the
 //!   rules, box-spline Jacobian bounds per ring face and a certified winding
@@ -22,6 +24,7 @@
 pub mod charmap;
 pub mod complex;
 pub mod discs;
+pub mod export;
 pub mod matrix;
 pub mod spectrum;
 

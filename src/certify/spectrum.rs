@@ -47,6 +47,7 @@ use crate::spectrum::{Analysis, Method};
 use faer::c64;
 use rayon::prelude::*;
 use serde::Serialize;
+use std::cell::Cell;
 
 /// Largest whole matrix (no rotation symmetry) enclosed: interval matrix
 /// products cost about 100 times the floating-point ones.
@@ -136,6 +137,10 @@ pub struct Premises {
     /// the entries: rows holding cos(2πk/n) for n | N); null when no row is
     /// exact
     pub field: Option<String>,
+    /// the axis of the reflection that holds (`matrix::mirror_map`'s): the
+    /// spoke axis n − 1, or another where the face sequence needs it
+    #[serde(skip)]
+    pub mirror_axis: Option<usize>,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -159,6 +164,9 @@ pub struct SpectrumCertificate {
     /// floating-point spectrum.
     #[serde(skip)]
     pub proof: Option<SpectralProof>,
+    /// the components the verdict rests on (for the certificate document)
+    #[serde(skip)]
+    pub named: Named,
 }
 
 /// The data a PROVED spectral certificate hands on.
@@ -174,6 +182,19 @@ pub struct SpectralProof {
 pub struct Witness {
     pub block: usize,
     pub component: Component,
+    /// the component's index among its block's components
+    #[serde(skip)]
+    pub index: usize,
+}
+
+/// The components a verdict names, as indices into a block's `components`:
+/// a checker of the certificate document re-checks exactly these.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Named {
+    /// λ0's component in block 0
+    pub lambda0: Option<usize>,
+    /// λ1's components: in block 1 and in block g − 1
+    pub lambda1: Option<[usize; 2]>,
 }
 
 const STATEMENT: &str = "for the true local subdivision matrix S on the analysis neighbourhood (every point \
@@ -187,6 +208,13 @@ pub fn certify_analysis(scheme: &dyn Scheme, analysis: &Analysis) -> Result<Spec
     let config = &analysis.discovered.config;
     let period = config.rotation_period(scheme);
     certify_spectrum(scheme, analysis, period)
+}
+
+/// The orbits [`certify_analysis`] builds its Fourier blocks on (the
+/// configuration's own rotation period).
+pub fn analysis_orbits(scheme: &dyn Scheme, analysis: &Analysis) -> Orbits {
+    let s = &analysis.spectrum;
+    Orbits::from_labels(&s.labels, analysis.discovered.config.rotation_period(scheme), s.valence)
 }
 
 /// Certify the spectrum of an analysis that the driver made (its discovery,
@@ -215,6 +243,7 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
         witness: None,
         blocks: Vec::new(),
         proof: None,
+        named: Named::default(),
     };
     if s.method == Method::Dft {
         if let Err(why) = orbits.check_free() {
@@ -259,9 +288,11 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
     let exact: ExactRows =
         which.iter().map(|&k| exact_rows(scheme, analysis, &[k]).and_then(|mut r| r.pop())).collect();
     let row_check = row_sums(&rows, &exact, labels, &which);
+    let mut mirror_axis = None;
     let (blocks, mirror, rotation, order) = match s.method {
         Method::Dft => {
-            let mirror = mirror_symmetry(&rows, &exact, &orbits, labels, n);
+            let (mirror, axis) = mirror_symmetry(&rows, &exact, &orbits, labels, n);
+            mirror_axis = axis;
             let (rotation, order) = rotation_premise(scheme, analysis, &orbits, &exact)?;
             (fourier_blocks(&rows, &orbits), mirror, rotation, order)
         }
@@ -299,14 +330,25 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
     }
     let field = order.map(|n| if n == 1 { "Q".to_string() } else { format!("Q(ζ_{n})") });
     let exact = row_check == Check::Exact && mirror == Check::Exact && rotation == Check::Exact;
-    let premises =
-        Premises { row_sums_one: row_check, mirror_symmetry: mirror, rotation_symmetry: rotation, exact, field };
+    let premises = Premises {
+        row_sums_one: row_check,
+        mirror_symmetry: mirror,
+        rotation_symmetry: rotation,
+        exact,
+        field,
+        mirror_axis,
+    };
     let (mut cert, lambda1_row) = decide(&enclosures, &premises, orbits.group_order, s.method);
     cert.margins.max_entry_width = max_entry_width;
-    // every verdict but NOT PROVED rests on the premises (the blocks are S
-    // in another basis; 1 is an eigenvalue; block spectra are closed under
-    // conjugation)
-    cert.conditional = !matches!(cert.verdict, Verdict::NotProved(_)) && !exact;
+    // a PROVED rests on all three premises; a DISPROVED on the rotation
+    // (the blocks are S) and the row sums (which component is λ0), never on
+    // the mirror (realness is only needed to prove)
+    let overlap = |c: &Check| *c == Check::Overlap;
+    cert.conditional = match cert.verdict {
+        Verdict::Proved => !exact,
+        Verdict::Disproved(_) => overlap(&premises.rotation_symmetry) || overlap(&premises.row_sums_one),
+        Verdict::NotProved(_) => false,
+    };
     cert.premises = Some(premises);
     cert.blocks = enclosures;
     cert.proof = Some(SpectralProof { orbits, lambda1_row });
@@ -319,7 +361,11 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
 /// field beyond `cyclotomic::MAX_ORDER`), or the rows cannot be assembled.
 /// Rational rows are assembled as rationals first: cheaper, and the rows of
 /// most points are rational even where the centre's are not.
-fn exact_rows(scheme: &dyn Scheme, analysis: &Analysis, which: &[usize]) -> Option<Vec<Vec<(usize, Cyclotomic)>>> {
+pub(super) fn exact_rows(
+    scheme: &dyn Scheme,
+    analysis: &Analysis,
+    which: &[usize],
+) -> Option<Vec<Vec<(usize, Cyclotomic)>>> {
     let (d, kind) = (&analysis.discovered, analysis.spectrum.neighbourhood);
     match assemble_rows::<Rational>(scheme, d, kind, which) {
         Ok(rows) => {
@@ -472,6 +518,10 @@ fn decide(
         max_radius: blocks.iter().flat_map(|b| &b.components).map(Component::max_radius).fold(0.0, f64::max),
         ..Margins::default()
     };
+    // set as the proof names them: every verdict's document says which
+    // components it rested on so far
+    let lambda0 = Cell::new(None);
+    let lambda1 = Cell::new(None);
     let finish = |verdict: Verdict, margins: Margins, witness: Option<Witness>| {
         let cert = SpectrumCertificate {
             verdict,
@@ -482,9 +532,12 @@ fn decide(
             witness,
             blocks: Vec::new(),
             proof: None,
+            named: Named { lambda0: lambda0.get(), lambda1: lambda1.get() },
         };
         (cert, None)
     };
+    let index = |m: usize, c: &Component| blocks[m].components.iter().position(|o| std::ptr::eq(o, c)).unwrap_or(0);
+    let witness = |m: usize, c: &Component| Witness { block: m, component: c.clone(), index: index(m, c) };
     let all: Vec<(usize, &Component)> =
         blocks.iter().flat_map(|b| b.components.iter().map(move |c| (b.block, c))).collect();
     // an eigenvalue outside the unit disc disproves convergence, whatever else
@@ -492,7 +545,7 @@ fn decide(
         return finish(
             Verdict::Disproved(format!("block {m} has an eigenvalue of modulus ≥ {:.6} > 1", c.min_modulus())),
             margins,
-            Some(Witness { block: *m, component: (*c).clone() }),
+            Some(witness(*m, c)),
         );
     }
     if let Some(b) = blocks.iter().find(|b| b.failure.is_some()) {
@@ -515,6 +568,7 @@ fn decide(
     let [c0] = holding_one.as_slice() else {
         return finish(Verdict::NotProved("no single component of block 0 holds 1".into()), margins, None);
     };
+    lambda0.set(Some(index(0, c0)));
     let (lo0, hi0) = c0.real_range();
     margins.lambda0 = Some(RealEnclosure { lo: lo0, hi: hi0 });
     if c0.count != 1 {
@@ -564,7 +618,7 @@ fn decide(
                     g - 1
                 )),
                 margins,
-                Some(Witness { block: *m, component: (*c).clone() }),
+                Some(witness(*m, c)),
             );
         }
     }
@@ -592,7 +646,7 @@ fn decide(
     if candidates.iter().all(|c| outdone(c).is_some()) {
         // the component that outdoes the largest candidate, or (no
         // candidate) block 1's leading component
-        let witness = match candidates.first() {
+        let witnessed = match candidates.first() {
             Some(c) => outdone(c),
             None => Some((1, c1)),
         };
@@ -625,11 +679,7 @@ fn decide(
                 )
             }
         };
-        return finish(
-            Verdict::Disproved(why),
-            margins,
-            witness.map(|(m, c)| Witness { block: m, component: c.clone() }),
-        );
+        return finish(Verdict::Disproved(why), margins, witnessed.map(|(m, c)| witness(m, c)));
     }
     if c1.count != 1 || c1c.count != 1 {
         return finish(
@@ -643,6 +693,7 @@ fn decide(
             None,
         );
     }
+    lambda1.set(Some([index(1, c1), index(g - 1, c1c)]));
     let lambda1_mod = (c1.min_modulus(), c1.max_modulus());
     margins.lambda_radius = Some(c0.max_radius().max(c1.max_radius()).max(c1c.max_radius()));
     // (c) every other eigenvalue below λ1 in modulus
@@ -684,7 +735,7 @@ fn decide(
                 "the leading eigenvalue of block 1 is not real, and not separated from the others".into(),
             )
         };
-        return finish(verdict, margins, Some(Witness { block: 1, component: c1.clone() }));
+        return finish(verdict, margins, Some(witness(1, c1)));
     }
     if !premises.mirror_symmetry.holds() {
         return finish(
@@ -704,11 +755,24 @@ fn decide(
         );
     }
     margins.lambda1 = Some(real_enclosure);
-    if real_enclosure.hi < 0.0 && gap > 0.0 {
+    if real_enclosure.hi < 0.0 {
+        // a disproof only when this eigenvalue is proven the largest of block
+        // 1 (as for a non-real one): otherwise another component of the block
+        // may hold a larger, positive λ1
+        if gap > 0.0 {
+            return finish(
+                Verdict::Disproved(format!("λ1 is negative: λ1 ≤ {:.9}", real_enclosure.hi)),
+                margins,
+                Some(witness(1, c1)),
+            );
+        }
         return finish(
-            Verdict::Disproved(format!("λ1 is negative: λ1 ≤ {:.9}", real_enclosure.hi)),
+            Verdict::NotProved(
+                "the leading enclosure of block 1 is negative, but not separated from the others: it may not be λ1"
+                    .into(),
+            ),
             margins,
-            Some(Witness { block: 1, component: c1.clone() }),
+            None,
         );
     }
     if real_enclosure.lo <= 0.0 {
@@ -737,7 +801,7 @@ fn decide(
                 }
             )),
             margins,
-            Some(Witness { block: m, component: c.clone() }),
+            Some(witness(m, c)),
         );
     }
     // the proof hands on which disc holds λ1: the component was chosen by
@@ -772,6 +836,7 @@ mod tests {
             rotation_symmetry: Check::Exact,
             exact: true,
             field: Some("Q".into()),
+            mirror_axis: Some(2),
         }
     }
 

@@ -65,6 +65,11 @@ pub struct CharmapArgs {
     /// most analysis steps of refinement the certificate tries (2 to 6)
     #[arg(long, default_value_t = crate::certify::charmap::DEFAULT_MAX_LEVELS, requires = "certify")]
     pub certify_levels: usize,
+    /// also write the certificate document (JSON, atomically) for an
+    /// independent checker (`python3 scripts/check_cert.py FILE`); for now
+    /// it holds the spectral part
+    #[arg(long, value_name = "FILE", requires = "certify")]
+    pub certificate: Option<PathBuf>,
     /// machine-readable JSON output
     #[arg(long)]
     pub json: bool,
@@ -184,7 +189,11 @@ pub fn charmap(a: &CharmapArgs) -> Result<(), Error> {
     )?;
     let map = check_map(scheme.as_ref(), &analysis, &opts)?;
     let certificate = if a.certify {
-        Some(crate::certify::certify_charmap(scheme.as_ref(), &analysis, a.certify_levels)?)
+        let c = crate::certify::certify_charmap(scheme.as_ref(), &analysis, a.certify_levels)?;
+        if let Some(path) = &a.certificate {
+            crate::certify::export::write_spectrum(path, scheme.as_ref(), &analysis, &c.spectrum)?;
+        }
+        Some(c)
     } else {
         None
     };

@@ -44,7 +44,7 @@ fn dispatch_other(cmd: Command) -> Result<(), Error> {
         Command::Charmap(a) => super::charmap_commands::charmap(&a),
         Command::Curvature(a) => super::curvature::run(&a),
         Command::Plot { what } => super::charmap_commands::plot(&what),
-        Command::Spectrum { common: a, certify: false } => {
+        Command::Spectrum { common: a, certify: false, .. } => {
             let (_, analysis) = run_analysis(&a)?;
             if a.json {
                 print_json(&analysis.spectrum)
@@ -52,7 +52,7 @@ fn dispatch_other(cmd: Command) -> Result<(), Error> {
                 out_text(&spectrum_table(&analysis.spectrum))
             }
         }
-        Command::Spectrum { common: a, certify: true } => certified_spectrum(&a),
+        Command::Spectrum { common: a, certify: true, certificate } => certified_spectrum(&a, certificate.as_deref()),
         Command::Stencils(a) => {
             let (_, analysis) = run_analysis(&a)?;
             let st = stencils(&analysis.spectrum)?;
@@ -168,9 +168,12 @@ fn run_analysis(a: &AnalysisArgs) -> Result<(Box<dyn Scheme>, Analysis), Error> 
 
 /// `spectrum --certify`: the floating-point spectrum and, beside it, the
 /// certificate (`certify::spectrum`) from the same discovery and labels.
-fn certified_spectrum(a: &AnalysisArgs) -> Result<(), Error> {
+fn certified_spectrum(a: &AnalysisArgs, document: Option<&std::path::Path>) -> Result<(), Error> {
     let (scheme, analysis) = run_analysis(a)?;
     let certificate = crate::certify::certify_analysis(scheme.as_ref(), &analysis)?;
+    if let Some(path) = document {
+        crate::certify::export::write_spectrum(path, scheme.as_ref(), &analysis, &certificate)?;
+    }
     if a.json {
         #[derive(serde::Serialize)]
         struct Certified<'a> {

@@ -66,6 +66,11 @@ pub enum Command {
         /// Fourier block (PROVED / DISPROVED / NOT PROVED, with the margins)
         #[arg(long)]
         certify: bool,
+        /// also write the certificate document (JSON, atomically): the exact
+        /// rows of S and everything the proof rests on, for an independent
+        /// checker (`python3 scripts/check_cert.py FILE`)
+        #[arg(long, value_name = "FILE", requires = "certify")]
+        certificate: Option<std::path::PathBuf>,
     },
     /// Limit and tangent stencils (left eigenvectors) on labelled vertices
     Stencils(AnalysisArgs),

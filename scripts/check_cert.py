@@ -1,0 +1,1102 @@
+#!/usr/bin/env python3
+"""Independent checker of subdlab certificate documents (spectral part).
+
+    python3 scripts/check_cert.py CERTIFICATE.json
+
+Exit status: 0 when every check holds (CERTIFICATE ACCEPTED), 1 when one
+fails (CERTIFICATE REJECTED: the first failed check), 2 when the file cannot
+be read or is not a certificate document of a version this checker knows.
+
+Python 3.11 standard library only, and on purpose no code shared with
+subdlab: the document's exact rows of the local subdivision matrix S are the
+definition of S, and everything else is recomputed here.
+
+- Premises, exactly (fractions.Fraction; cyclotomic elements reduced modulo
+  the cyclotomic polynomial Φ_L, computed here from x^L − 1, in the one field
+  Q(ζ_L) that holds every entry, so equal elements have equal coefficients):
+  every entry real, every row sums to 1, the orbits are free (g members each;
+  fixed points' rows invariant), every row is its representative's row
+  rotated, the reflection is an involution with QPQ = P⁻¹ that S commutes
+  with off the centre.
+- Enclosures, rigorously: real intervals in midpoint-radius form on the
+  dyadic grid 2^-P (integer midpoint and radius, so the endpoints are dyadic
+  fractions, rounded outward after every operation that leaves the grid);
+  complex intervals as rectangles (a real and an imaginary interval);
+  cos and sin of 2πk/N exact where rational, else by Taylor series with a
+  remainder bound on an enclosure of π (Machin's formula, alternating-series
+  remainder). From the rows: the Fourier blocks B_m, then with the
+  document's floating-point V and R (taken as exact numbers: any V, R with
+  ‖I − RV‖∞ < 1 give valid discs) M ⊇ R·(B_m·V), ε ≥ ‖I − RV‖∞,
+  δ = ε‖M‖∞/(1 − ε), and for every claimed disc the radius it needs,
+  |M_ii − c_i| + Σ_{j≠i} |M_ij| + δ about the claimed centre c_i.
+- Everything about the claimed discs afterwards (disjointness, moduli, real
+  parts, holding 1) is decided exactly on the discs' binary64 values.
+- The verdict's logic: for PROVED, λ0's and λ1's components and the gap; for
+  DISPROVED, the witness inequality.
+"""
+
+import json
+import math
+import re
+import sys
+from fractions import Fraction
+from operator import mul
+
+# the grid of the interval endpoints: 2^-P (fine enough that exact dyadic
+# data, e.g. a 1×1 block with entry 1/4, stays exact, as it does in subdlab)
+P = 160
+UNIT = 1 << P
+# guard bits of the trigonometric series
+GUARD = 64
+# the largest cyclotomic field accepted (subdlab's own bound is 1024)
+MAX_FIELD = 4096
+
+
+class Rejected(Exception):
+    """A check failed: exit 1."""
+
+
+class Malformed(Exception):
+    """Not a readable certificate document: exit 2."""
+
+
+class PremiseFails(Exception):
+    """An identity of S does not hold: fatal only for a verdict that uses it
+    (a NOT PROVED document may rest on a failing premise, and say so)."""
+
+
+def reject(msg):
+    raise Rejected(msg)
+
+
+# ---------------------------------------------------------------- parsing
+
+
+def get(obj, key, what):
+    if not isinstance(obj, dict) or key not in obj:
+        raise Malformed(f"{what}: missing '{key}'")
+    return obj[key]
+
+
+def as_int(x, what, bound=None):
+    if isinstance(x, bool) or not isinstance(x, int):
+        raise Malformed(f"{what}: {x!r} is not an integer")
+    if x < 0 or (bound is not None and x >= bound):
+        reject(f"{what}: index {x} out of range 0..{'' if bound is None else bound - 1}")
+    return x
+
+
+def as_float(x, what):
+    """A binary64 value of the document (exact)."""
+    if isinstance(x, bool) or not isinstance(x, (int, float)):
+        raise Malformed(f"{what}: {x!r} is not a number")
+    x = float(x)
+    if not math.isfinite(x):
+        raise Malformed(f"{what}: not finite")
+    return x
+
+
+def as_list(x, what, length=None):
+    if not isinstance(x, list):
+        raise Malformed(f"{what}: not a list")
+    if length is not None and len(x) != length:
+        reject(f"{what}: {len(x)} entries, expected {length}")
+    return x
+
+
+RATIO = re.compile(r"^(-?[0-9]+)(?:/([0-9]+))?$")
+
+
+def as_ratio(s, what):
+    if not isinstance(s, str):
+        raise Malformed(f"{what}: {s!r} is not a 'p/q' string")
+    m = RATIO.match(s)
+    if not m:
+        raise Malformed(f"{what}: {s!r} is not a 'p/q' string")
+    den = int(m.group(2)) if m.group(2) is not None else 1
+    if den == 0:
+        raise Malformed(f"{what}: zero denominator")
+    return Fraction(int(m.group(1)), den)
+
+
+# ------------------------------------------------------ cyclotomic fields
+
+
+def poly_divide_exactly(p, q):
+    """p / q for a monic integer polynomial q dividing p (lowest first)."""
+    p = list(p)
+    e = len(q) - 1
+    quotient = [0] * (len(p) - e)
+    for i in range(len(p) - 1, e - 1, -1):
+        c = p[i]
+        if c:
+            for j in range(e + 1):
+                p[i - e + j] -= c * q[j]
+            quotient[i - e] = c
+    if any(p):
+        raise AssertionError("inexact polynomial division")
+    return quotient
+
+
+_PHI = {}
+
+
+def cyclotomic_polynomial(n):
+    """Φ_n, integer coefficients lowest first: x^n − 1 over Φ_d, d | n, d < n."""
+    if n not in _PHI:
+        p = [-1] + [0] * (n - 1) + [1]
+        for d in range(1, n):
+            if n % d == 0:
+                p = poly_divide_exactly(p, cyclotomic_polynomial(d))
+        _PHI[n] = tuple(p)
+    return _PHI[n]
+
+
+class Field:
+    """Q(ζ_L): elements as tuples of Fractions, the coefficients of
+    1, ζ, ..., ζ^{φ(L)−1} after reduction modulo Φ_L, trailing zeros dropped.
+    Φ_L is irreducible, so this form is unique: equal elements, equal tuples."""
+
+    def __init__(self, order):
+        self.order = order
+        self.phi = cyclotomic_polynomial(order)
+        self.degree = len(self.phi) - 1
+        # x^d ≡ −Σ a_j x^j modulo Φ_L: the nonzero a_j only
+        self.low = [(j, a) for j, a in enumerate(self.phi[: self.degree]) if a]
+        self._value = {}
+        self._real = {}
+
+    def reduce(self, dense):
+        d = self.degree
+        p = list(dense)
+        for i in range(len(p) - 1, d - 1, -1):
+            c = p[i]
+            if c:
+                for j, a in self.low:
+                    p[i - d + j] -= c * a
+                p[i] = 0
+        p = p[:d]
+        while p and p[-1] == 0:
+            p.pop()
+        return tuple(p)
+
+    def element(self, order, terms):
+        """Σ c ζ_order^i for (i, c) in terms, written in Q(ζ_L)."""
+        if self.order % order:
+            raise AssertionError("element outside the field")
+        if order == 1:
+            c = sum((c for _, c in terms), Fraction(0))
+            return (c,) if c else ()
+        step = self.order // order
+        dense = [Fraction(0)] * self.order
+        for i, c in terms:
+            dense[(i % order) * step % self.order] += c
+        return self.reduce(dense)
+
+    def conj(self, x):
+        dense = [Fraction(0)] * self.order
+        for i, c in enumerate(x):
+            dense[(-i) % self.order] += c
+        return self.reduce(dense)
+
+    def is_real(self, x):
+        if len(x) <= 1:
+            return True
+        if x not in self._real:
+            self._real[x] = self.conj(x) == x
+        return self._real[x]
+
+    def add(self, x, y):
+        n = max(len(x), len(y))
+        s = [(x[i] if i < len(x) else 0) + (y[i] if i < len(y) else 0) for i in range(n)]
+        while s and s[-1] == 0:
+            s.pop()
+        return tuple(s)
+
+    def value(self, x):
+        """A ball (scale 2^-P) enclosing the real element x = Σ x_i cos(2πi/L)."""
+        if x not in self._value:
+            mid, rad = 0, 0
+            for i, c in enumerate(x):
+                if c == 0:
+                    continue
+                cm, cr, _, _ = cos_sin(i, self.order)
+                m, r = scale_ball(c, cm, cr)
+                mid += m
+                rad += r
+            self._value[x] = (mid, rad)
+        return self._value[x]
+
+
+# ------------------------------------------------------ interval arithmetic
+#
+# A real ball (m, r) of integers at scale 2^-s is the interval
+# [(m − r)/2^s, (m + r)/2^s]: dyadic endpoints, exact sums, and after a
+# product (scale 2^-2s) the midpoint is floored back to 2^-s and the radius
+# grows by one unit when the floor dropped anything, the product's own error
+# term rounded up.
+
+
+def shift_ball(m, r, bits):
+    """A ball at scale 2^-(s+bits) as one at scale 2^-s (outward)."""
+    if bits == 0:
+        return m, r
+    mid = m >> bits
+    lost = 1 if m - (mid << bits) else 0
+    return mid, -((-r) >> bits) + lost
+
+
+def ball_mul(a, b, s):
+    am, ar = a
+    bm, br = b
+    return shift_ball(am * bm, abs(am) * br + ar * abs(bm) + ar * br, s)
+
+
+def ball_div_int(a, d):
+    m, r = a
+    mid, rem = divmod(m, d)
+    return mid, -((-r) // d) + (1 if rem else 0)
+
+
+def ball_of_fraction(q, s):
+    num = q.numerator << s
+    mid, rem = divmod(num, q.denominator)
+    return mid, (1 if rem else 0)
+
+
+def ball_of_float(x):
+    """The binary64 x at scale 2^-P (a point when it lies on the grid)."""
+    p, q = x.as_integer_ratio()
+    mid, rem = divmod(p << P, q)
+    return mid, (1 if rem else 0)
+
+
+def scale_ball(c, m, r):
+    """The rational c times the ball (m, r), same scale."""
+    num = c.numerator * m
+    mid, rem = divmod(num, c.denominator)
+    rad = -((-abs(c.numerator) * r) // c.denominator) + (1 if rem else 0)
+    return mid, rad
+
+
+def _pi_ball(s):
+    """π at scale 2^-s: Machin, π = 16 atan(1/5) − 4 atan(1/239), each
+    alternating series cut where its first omitted term bounds the rest."""
+
+    def atan_inv(x):
+        total, k, err = Fraction(0), 0, None
+        while True:
+            term = Fraction(1, (2 * k + 1) * x ** (2 * k + 1))
+            if term < Fraction(1, 1 << (s + 8)):
+                err = term
+                break
+            total += term if k % 2 == 0 else -term
+            k += 1
+        return total, err
+
+    a, ea = atan_inv(5)
+    b, eb = atan_inv(239)
+    value, err = 16 * a - 4 * b, 16 * ea + 4 * eb
+    mid, rad = ball_of_fraction(value, s)
+    return mid, rad + math.ceil(err * (1 << s))
+
+
+_PI = None
+
+
+def _series(x, s, sine):
+    """cos x or sin x for a ball x (scale 2^-s, |x| ≤ 4) by Horner's scheme
+    on the Taylor polynomial in ball arithmetic, plus the remainder bound
+    4^(2N+2)/(2N+2)! (cos) or 4^(2N+3)/(2N+3)! (sin)."""
+    one = (1 << s, 0)
+    x2 = ball_mul(x, x, s)
+
+    def tail(n):
+        e = 2 * n + 3 if sine else 2 * n + 2
+        return Fraction(4**e, math.factorial(e))
+
+    n = 1
+    while tail(n) >= Fraction(1, 1 << (s + 4)):
+        n += 1
+    acc = one
+    for j in range(n, 0, -1):
+        d = (2 * j) * (2 * j + 1) if sine else (2 * j - 1) * (2 * j)
+        t = ball_div_int(ball_mul(x2, acc, s), d)
+        acc = (one[0] - t[0], t[1])
+    if sine:
+        acc = ball_mul(x, acc, s)
+    return acc[0], acc[1] + math.ceil(tail(n) * (1 << s))
+
+
+# cos(2πf) for the fractions f where it is rational
+_EXACT_COS = {
+    Fraction(0): Fraction(1),
+    Fraction(1, 4): Fraction(0),
+    Fraction(1, 2): Fraction(-1),
+    Fraction(3, 4): Fraction(0),
+    Fraction(1, 6): Fraction(1, 2),
+    Fraction(5, 6): Fraction(1, 2),
+    Fraction(1, 3): Fraction(-1, 2),
+    Fraction(2, 3): Fraction(-1, 2),
+}
+
+_TRIG = {}
+
+
+def _cos_turn(f):
+    """A ball (scale 2^-P) enclosing cos(2πf), f a fraction in [0, 1)."""
+    if f in _EXACT_COS:
+        return ball_of_fraction(_EXACT_COS[f], P)
+    global _PI
+    s = P + GUARD
+    if _PI is None:
+        _PI = _pi_ball(s)
+    g = f - 1 if f > Fraction(1, 2) else f  # |2πg| ≤ π < 4
+    x = ball_div_int((_PI[0] * 2 * g.numerator, _PI[1] * 2 * abs(g.numerator)), g.denominator)
+    m, r = _series(x, s, sine=False)
+    return shift_ball(m, r, GUARD)
+
+
+def cos_sin(k, n):
+    """Balls (cm, cr, sm, sr) at scale 2^-P enclosing cos and sin of 2πk/n."""
+    f = Fraction(k % n, n)
+    if f not in _TRIG:
+        cm, cr = _cos_turn(f)
+        # sin(2πf) = cos(2π(1/4 − f))
+        sm, sr = _cos_turn((Fraction(1, 4) - f) % 1)
+        _TRIG[f] = (cm, cr, sm, sr)
+    return _TRIG[f]
+
+
+# complex interval matrices: four integer matrices (real midpoints,
+# imaginary midpoints, real radii, imaginary radii), scale 2^-P
+
+
+def imat(x, y):
+    cols = list(zip(*y))
+    return [[sum(map(mul, row, col)) for col in cols] for row in x]
+
+
+def is_zero(m):
+    return all(not v for row in m for v in row)
+
+
+def absm(m):
+    return [[abs(v) for v in row] for row in m]
+
+
+def cmatmul(a, b):
+    """A rectangle enclosure of every product of matrices in a and b: the
+    midpoints' product exactly (scale 2^-2P), and per real product the error
+    |x y − x_m y_m| ≤ |x_m| y_r + x_r |y_m| + x_r y_r, summed; then back to
+    2^-P outward."""
+    amr, ami, arr, ari = a
+    bmr, bmi, brr, bri = b
+    k, n = len(amr), len(bmr[0])
+    pre = imat(amr, bmr)
+    pim = imat(ami, bmr)
+    if not is_zero(ami) and not is_zero(bmi):
+        t = imat(ami, bmi)
+        pre = [[x - y for x, y in zip(r1, r2)] for r1, r2 in zip(pre, t)]
+    if not is_zero(bmi):
+        t = imat(amr, bmi)
+        pim = [[x + y for x, y in zip(r1, r2)] for r1, r2 in zip(pim, t)]
+    # radii: the real part's terms are x_re y_re and x_im y_im, the
+    # imaginary part's x_re y_im and x_im y_re
+    zero = [[0] * n for _ in range(k)]
+    rre = [row[:] for row in zero]
+    rim = [row[:] for row in zero]
+
+    def acc(target, xm, xr, ym, yr):
+        for xa, ya, use in ((absm(xm), yr, not is_zero(yr)), (xr, absm(ym), not is_zero(xr))):
+            if use:
+                t = imat(xa, ya)
+                for i in range(k):
+                    ti, ri = t[i], target[i]
+                    for j in range(n):
+                        ri[j] += ti[j]
+        if not is_zero(xr) and not is_zero(yr):
+            t = imat(xr, yr)
+            for i in range(k):
+                for j in range(n):
+                    target[i][j] += t[i][j]
+
+    acc(rre, amr, arr, bmr, brr)
+    acc(rre, ami, ari, bmi, bri)
+    acc(rim, amr, arr, bmi, bri)
+    acc(rim, ami, ari, bmr, brr)
+    out = ([[0] * n for _ in range(k)], [[0] * n for _ in range(k)], [[0] * n for _ in range(k)], [[0] * n for _ in range(k)])
+    for i in range(k):
+        for j in range(n):
+            out[0][i][j], out[2][i][j] = shift_ball(pre[i][j], rre[i][j], P)
+            out[1][i][j], out[3][i][j] = shift_ball(pim[i][j], rim[i][j], P)
+    return out
+
+
+def ceil_sqrt(n):
+    r = math.isqrt(n)
+    return r if r * r == n else r + 1
+
+
+def mag(mr, mi, rr, ri):
+    """Upper bound (scale 2^-P) of |z| over the rectangle."""
+    a, b = abs(mr) + rr, abs(mi) + ri
+    return ceil_sqrt(a * a + b * b)
+
+
+def point_matrix(rows, k, what):
+    """A k×k matrix of [re, im] binary64 pairs as a (point-when-exact) ball matrix."""
+    rows = as_list(rows, what, k)
+    out = ([], [], [], [])
+    for i, row in enumerate(rows):
+        row = as_list(row, f"{what} row {i}", k)
+        parts = ([], [], [], [])
+        for j, z in enumerate(row):
+            z = as_list(z, f"{what}[{i}][{j}]", 2)
+            rm, rr = ball_of_float(as_float(z[0], what))
+            im, ir = ball_of_float(as_float(z[1], what))
+            parts[0].append(rm)
+            parts[1].append(im)
+            parts[2].append(rr)
+            parts[3].append(ir)
+        for o, p in zip(out, parts):
+            o.append(p)
+    return out
+
+
+# ------------------------------------------------------ exact disc geometry
+
+
+class Disc:
+    __slots__ = ("re", "im", "r")
+
+    def __init__(self, re, im, r):
+        self.re, self.im, self.r = Fraction(re), Fraction(im), Fraction(r)
+
+    def norm2(self):
+        return self.re * self.re + self.im * self.im
+
+
+def disjoint(a, b):
+    dx, dy, s = a.re - b.re, a.im - b.im, a.r + b.r
+    return dx * dx + dy * dy > s * s
+
+
+def holds(d, x, y=Fraction(0)):
+    dx, dy = d.re - x, d.im - y
+    return dx * dx + dy * dy <= d.r * d.r
+
+
+def meets_real_axis(d):
+    return abs(d.im) <= d.r
+
+
+def mod_below(d, bound):
+    """Every point of d has modulus < bound: |c| + r < bound."""
+    room = bound - d.r
+    return room > 0 and d.norm2() < room * room
+
+
+def mod_at_most(d, bound):
+    room = bound - d.r
+    return room >= 0 and d.norm2() <= room * room
+
+
+def mod_above(d, bound):
+    """Every point of d has modulus > bound (≥ 0): |c| − r > bound."""
+    t = bound + d.r
+    return d.norm2() > t * t
+
+
+def mod_separated(a, b):
+    """Every point of a has larger modulus than every point of b:
+    |a.c| − a.r > |b.c| + b.r, i.e. |a.c|² − |b.c|² − s² > 2s|b.c| (s = a.r + b.r)."""
+    s = a.r + b.r
+    lhs = a.norm2() - b.norm2() - s * s
+    return lhs > 0 and lhs * lhs > 4 * s * s * b.norm2()
+
+
+def real_section_above(d, lo):
+    """Every real point of d is ≥ lo: re − sqrt(r² − im²) ≥ lo."""
+    if not meets_real_axis(d):
+        return True
+    room = d.re - lo
+    return room >= 0 and d.r * d.r - d.im * d.im <= room * room
+
+
+def real_section_below(d, hi):
+    if not meets_real_axis(d):
+        return True
+    room = hi - d.re
+    return room >= 0 and d.r * d.r - d.im * d.im <= room * room
+
+
+# ------------------------------------------------------ the checker
+
+
+class Checker:
+    def __init__(self, doc):
+        self.doc = doc
+        self.lines = []
+
+    def ok(self, msg):
+        self.lines.append(f"  ok  {msg}")
+
+    def run(self):
+        doc = self.doc
+        if not isinstance(doc, dict):
+            raise Malformed("the document is not a JSON object")
+        if doc.get("format") != "subdlab-certificate":
+            raise Malformed("not a subdlab certificate document ('format' is not 'subdlab-certificate')")
+        if doc.get("version") != 1:
+            raise Malformed(f"certificate version {doc.get('version')!r}: this checker knows version 1")
+        parts = get(doc, "parts", "document")
+        if not isinstance(parts, dict) or not parts:
+            raise Malformed("'parts' is not a non-empty object")
+        unknown = sorted(set(parts) - {"spectrum"})
+        if unknown:
+            reject(f"part(s) {', '.join(unknown)}: this checker re-checks only the 'spectrum' part")
+        self.ok(f"document: {doc.get('scheme')} at valence {doc.get('valence')}, {doc.get('neighbourhood')} neighbourhood")
+        self.spectrum(parts["spectrum"])
+
+    # -- the matrix and its premises
+
+    def spectrum(self, part):
+        self.part = part
+        what = "spectrum"
+        size = as_int(get(part, "size", what), "size")
+        self.size = size
+        self.method = get(part, "method", what)
+        if self.method not in ("dft", "full"):
+            raise Malformed(f"unknown method {self.method!r}")
+        self.verdict = get(part, "verdict", what)
+        if self.verdict not in ("PROVED", "DISPROVED", "NOT PROVED"):
+            raise Malformed(f"unknown verdict {self.verdict!r}")
+        self.read_rows(part)
+        self.premises = {}
+        self.premise("row sums", self.check_row_sums)
+        if self.method == "dft":
+            self.read_orbits(part)
+            self.premise("rotation", self.check_rotation)
+            self.premise("mirror", lambda: self.check_mirror(part))
+        self.check_blocks(part)
+        self.check_verdict(part)
+
+    def premise(self, name, check):
+        try:
+            check()
+            self.premises[name] = None
+        except PremiseFails as e:
+            self.premises[name] = str(e)
+            self.lines.append(f"  --  premise fails ({name}): {e}")
+
+    def need(self, *names):
+        """The verdict uses these premises: each must hold."""
+        for name in names:
+            if name not in self.premises:
+                reject(f"{self.verdict} needs the {name} premise, which the whole-matrix document does not have")
+            if self.premises[name] is not None:
+                reject(f"{self.verdict} rests on a premise that fails ({name}): {self.premises[name]}")
+
+    def read_rows(self, part):
+        size = self.size
+        if not get(part, "exact", "spectrum") or get(part, "inexact_rows", "spectrum"):
+            reject(
+                "the certificate has rows known in floating point only (inexact_rows "
+                f"{get(part, 'inexact_rows', 'spectrum')}): S cannot be re-verified from exact data"
+            )
+        rows = as_list(get(part, "rows", "spectrum"), "rows")
+        if len(rows) != size:
+            reject(f"the document has {len(rows)} rows for a matrix of {size} points")
+        raw = []
+        order = 1
+        for k, row in enumerate(rows):
+            if row is None:
+                reject(f"row {k} has no exact form: S cannot be re-verified")
+            row = as_list(row, f"row {k}")
+            entries = []
+            for e in row:
+                e = as_list(e, f"row {k} entry", 2)
+                col = as_int(e[0], f"row {k} column", size)
+                v = e[1]
+                if isinstance(v, str):
+                    entries.append((col, 1, ((0, as_ratio(v, f"row {k}")),)))
+                elif isinstance(v, dict):
+                    n = get(v, "order", f"row {k} entry")
+                    if isinstance(n, bool) or not isinstance(n, int) or n < 1 or n > MAX_FIELD:
+                        reject(f"row {k}: cyclotomic order {n!r} outside 1..{MAX_FIELD}")
+                    terms = tuple(
+                        (as_int(as_list(t, f"row {k} coefficient", 2)[0], f"row {k} power"), as_ratio(t[1], f"row {k}"))
+                        for t in as_list(get(v, "coefficients", f"row {k}"), f"row {k} coefficients")
+                    )
+                    order = order * n // math.gcd(order, n)
+                    if order > MAX_FIELD:
+                        reject(f"the rows need the field Q(ζ_{order}), beyond Q(ζ_{MAX_FIELD})")
+                    entries.append((col, n, terms))
+                else:
+                    raise Malformed(f"row {k}: an entry is neither 'p/q' nor a cyclotomic element")
+            raw.append(entries)
+        self.field = Field(order)
+        cache = {}
+        self.rows = []
+        for k, entries in enumerate(raw):
+            row = {}
+            for col, n, terms in entries:
+                key = (n, terms)
+                if key not in cache:
+                    cache[key] = self.field.element(n, terms)
+                x = cache[key]
+                if col in row:
+                    reject(f"row {k} lists column {col} twice")
+                if not self.field.is_real(x):
+                    reject(f"S[{k}, {col}] is not real")
+                if x:
+                    row[col] = x
+            self.rows.append(row)
+        self.ok(f"exact rows: {size} rows, every entry real, in Q(ζ_{order}) reduced modulo Φ_{order}" if order > 1 else f"exact rows: {size} rows in Q")
+
+    def check_row_sums(self):
+        one = (Fraction(1),)
+        for k, row in enumerate(self.rows):
+            s = ()
+            for x in row.values():
+                s = self.field.add(s, x)
+            if s != one:
+                raise PremiseFails(f"row {k} does not sum to 1")
+        self.ok("premise: every row sums to 1 exactly (1 is an eigenvalue, of block 0)")
+
+    def read_orbits(self, part):
+        size = self.size
+        g = as_int(get(part, "group_order", "spectrum"), "group_order")
+        if g < 1:
+            reject("group order 0")
+        orbits = get(part, "orbits", "spectrum")
+        member = as_list(get(orbits, "member", "orbits"), "orbits.member", size)
+        rep = as_list(get(orbits, "representative", "orbits"), "orbits.representative")
+        fixed = as_list(get(orbits, "fixed", "orbits"), "orbits.fixed", len(rep))
+        if not all(isinstance(f, bool) for f in fixed):
+            raise Malformed("orbits.fixed: not booleans")
+        no = len(rep)
+        index = [[None] * g for _ in range(no)]
+        self.member = []
+        for k, m in enumerate(member):
+            m = as_list(m, f"orbits.member[{k}]", 2)
+            o, t = as_int(m[0], "orbit", no), as_int(m[1], "orbit position", g)
+            if fixed[o] and t != 0:
+                reject(f"premise: point {k} of fixed orbit {o} has position {t}")
+            if index[o][t] is not None:
+                reject(f"premise: orbit {o} has two points at position {t}")
+            index[o][t] = k
+            self.member.append((o, t))
+        for o in range(no):
+            have = [t for t in range(g) if index[o][t] is not None]
+            want = [0] if fixed[o] else list(range(g))
+            if have != want:
+                reject(f"premise: orbit {o} is not free: it has {len(have)} points, a {'fixed' if fixed[o] else 'moving'} orbit needs {len(want)}")
+            if as_int(rep[o], "representative", size) != index[o][0]:
+                reject(f"premise: the representative of orbit {o} is not its point at position 0")
+        self.g, self.rep, self.fixed, self.index = g, rep, fixed, index
+        self.ok(f"premise: {no} orbits under a rotation group of order {g}, each free ({sum(fixed)} fixed point(s))")
+
+    def rotate(self, k, steps):
+        o, t = self.member[k]
+        return k if self.fixed[o] else self.index[o][(t + steps) % self.g]
+
+    def check_rotation(self):
+        for k, row in enumerate(self.rows):
+            o, t = self.member[k]
+            if self.fixed[o]:
+                source, steps = k, 1
+            else:
+                source, steps = self.rep[o], t
+            moved = {self.rotate(c, steps): x for c, x in self.rows[source].items()}
+            if moved != row:
+                raise PremiseFails(f"row {k} is not the row of {source} rotated by {steps} (S does not commute with the rotation)")
+        self.ok("premise: every row is its representative's rotated, fixed points' rows rotation-invariant (PS = SP)")
+
+    def check_mirror(self, part):
+        q = get(part, "mirror", "spectrum")
+        if q is None:
+            raise PremiseFails("the document gives no reflection of the neighbourhood")
+        q = [as_int(x, "mirror", self.size) for x in as_list(q, "mirror", self.size)]
+        if sorted(q) != list(range(self.size)):
+            raise PremiseFails("the mirror map is not a permutation")
+        g = self.g
+        for k in range(self.size):
+            if q[q[k]] != k:
+                raise PremiseFails(f"the mirror map is not an involution at {k}")
+            if self.fixed[self.member[k][0]] != self.fixed[self.member[q[k]][0]]:
+                raise PremiseFails(f"the mirror map moves the fixed point {k} off the centre (or onto it)")
+            if q[self.rotate(q[k], 1)] != self.rotate(k, g - 1):
+                raise PremiseFails(f"QPQ ≠ P⁻¹ at point {k}")
+
+        def off(row):
+            return {c: x for c, x in row.items() if not self.fixed[self.member[c][0]]}
+
+        for r in range(self.size):
+            if self.fixed[self.member[r][0]]:
+                continue
+            mirrored = {q[c]: x for c, x in off(self.rows[r]).items()}
+            if mirrored != off(self.rows[q[r]]):
+                raise PremiseFails(f"S[Q{r}, Q·] ≠ S[{r}, ·] off the centre (S does not commute with the reflection)")
+        self.ok("premise: a reflection Q with Q² = I, QPQ = P⁻¹ commutes with S off the centre (block spectra closed under conjugation)")
+
+    # -- the blocks and their discs
+
+    def block_matrix(self, m):
+        """The interval Fourier block B_m (or the whole matrix), and its orbit order."""
+        if self.method == "full":
+            order = list(range(self.size))
+            k = len(order)
+            mr = [[0] * k for _ in range(k)]
+            rr = [[0] * k for _ in range(k)]
+            for i, row in enumerate(self.rows):
+                for c, x in row.items():
+                    vm, vr = self.field.value(x)
+                    mr[i][c] += vm
+                    rr[i][c] += vr
+            zero = [[0] * k for _ in range(k)]
+            return order, (mr, [r[:] for r in zero], rr, [r[:] for r in zero])
+        g = self.g
+        order = [o for o in range(len(self.rep)) if m == 0 or not self.fixed[o]]
+        pos = {o: i for i, o in enumerate(order)}
+        k = len(order)
+        # exact sums at scale 2^-2P, one rounding per entry
+        acc = [[[0, 0, 0, 0] for _ in range(k)] for _ in range(k)]
+        for a, o in enumerate(order):
+            for c, x in self.rows[self.rep[o]].items():
+                ob, tau = self.member[c]
+                if ob not in pos:
+                    continue  # a fixed point outside block 0: its column sums to zero
+                wm, wr = self.field.value(x)
+                cm, cr, sm, sr = cos_sin(m * tau, g)
+                e = acc[a][pos[ob]]
+                e[0] += wm * cm
+                e[1] += wm * sm
+                e[2] += abs(wm) * cr + wr * abs(cm) + wr * cr
+                e[3] += abs(wm) * sr + wr * abs(sm) + wr * sr
+        mats = ([[0] * k for _ in range(k)], [[0] * k for _ in range(k)], [[0] * k for _ in range(k)], [[0] * k for _ in range(k)])
+        for i in range(k):
+            for j in range(k):
+                e = acc[i][j]
+                mats[0][i][j], mats[2][i][j] = shift_ball(e[0], e[2], P)
+                mats[1][i][j], mats[3][i][j] = shift_ball(e[1], e[3], P)
+        return order, mats
+
+    def check_blocks(self, part):
+        blocks = as_list(get(part, "blocks", "spectrum"), "blocks")
+        want = list(range(self.g)) if self.method == "dft" else [0]
+        got = [as_int(get(b, "block", "block"), "block index") for b in blocks]
+        self.discs, self.components, self.failed = {}, {}, []
+        if not blocks and self.verdict == "NOT PROVED":
+            self.lines.append("  --  no enclosures (the verdict stopped before them)")
+            return
+        if got != want:
+            reject(f"the document's blocks are {got}, expected {want}")
+        failed = []
+        worst_eps, worst_slack = Fraction(0), None
+        for b in blocks:
+            m = b["block"]
+            order, a = self.block_matrix(m)
+            k = len(order)
+            if self.method == "dft" and get(b, "orbits", f"block {m}") != order:
+                reject(f"block {m}: its rows are orbits {b['orbits']}, the checker's block has {order}")
+            if as_int(get(b, "size", f"block {m}"), "block size") != k:
+                reject(f"block {m}: size {b['size']}, the block has {k} rows")
+            if get(b, "failure", f"block {m}") is not None:
+                failed.append(m)
+                continue
+            v = point_matrix(get(b, "v", f"block {m}"), k, f"block {m} V")
+            r = point_matrix(get(b, "r", f"block {m}"), k, f"block {m} R")
+            claimed_eps = Fraction(as_float(get(b, "epsilon", f"block {m}"), f"block {m} epsilon"))
+            mm = cmatmul(r, cmatmul(a, v))
+            rv = cmatmul(r, v)
+            # ε ≥ ‖I − RV‖∞
+            eps = 0
+            for i in range(k):
+                row = 0
+                for j in range(k):
+                    row += mag((UNIT if i == j else 0) - rv[0][i][j], -rv[1][i][j], rv[2][i][j], rv[3][i][j])
+                eps = max(eps, row)
+            if eps >= UNIT:
+                reject(f"block {m}: ‖I − RV‖∞ is not below 1 (V is not shown invertible)")
+            if claimed_eps * UNIT < eps:
+                reject(f"block {m}: the claimed ε = {float(claimed_eps):.3e} is below ‖I − RV‖∞ ≥ {eps / UNIT:.3e}")
+            worst_eps = max(worst_eps, Fraction(eps, UNIT))
+            mags = [[mag(mm[0][i][j], mm[1][i][j], mm[2][i][j], mm[3][i][j]) for j in range(k)] for i in range(k)]
+            norm = max((sum(row) for row in mags), default=0)
+            delta = -((-eps * norm) // (UNIT - eps))  # ⌈ε‖M‖/(1 − ε)⌉ at scale 2^-P
+            discs_doc = as_list(get(b, "discs", f"block {m}"), f"block {m} discs", k)
+            discs = []
+            for i, d in enumerate(discs_doc):
+                d = as_list(d, f"block {m} disc {i}", 3)
+                re_, im_, rad = (as_float(x, f"block {m} disc {i}") for x in d)
+                cr_m, cr_r = ball_of_float(re_)
+                ci_m, ci_r = ball_of_float(im_)
+                need = mag(mm[0][i][i] - cr_m, mm[1][i][i] - ci_m, mm[2][i][i] + cr_r, mm[3][i][i] + ci_r)
+                need += sum(mags[i][j] for j in range(k) if j != i) + delta
+                claimed = Fraction(rad)
+                if claimed * UNIT < need:
+                    reject(
+                        f"block {m}: disc {i} claims radius {rad:.6e}, but the Gershgorin bound about its centre "
+                        f"is {need / UNIT:.6e}"
+                    )
+                slack = claimed - Fraction(need, UNIT)
+                worst_slack = slack if worst_slack is None else min(worst_slack, slack)
+                discs.append(Disc(re_, im_, rad))
+            comps = []
+            seen = []
+            for c in as_list(get(b, "components", f"block {m}"), f"block {m} components"):
+                idx = [as_int(i, f"block {m} component disc", k) for i in as_list(get(c, "discs", "component"), "component discs")]
+                count = get(c, "count", "component")
+                if not idx or count != len(idx):
+                    reject(f"block {m}: a component claims {count} eigenvalue(s) for its {len(idx)} disc(s)")
+                comps.append(idx)
+                seen.extend(idx)
+            if sorted(seen) != list(range(k)):
+                reject(f"block {m}: the components do not partition the block's {k} discs")
+            owner = {i: ci for ci, idx in enumerate(comps) for i in idx}
+            for i in range(k):
+                for j in range(i + 1, k):
+                    if owner[i] != owner[j] and not disjoint(discs[i], discs[j]):
+                        reject(f"block {m}: discs {i} and {j} are in different components but not disjoint")
+            self.discs[m] = discs
+            self.components[m] = [[discs[i] for i in idx] for idx in comps]
+        self.failed = failed
+        n = len(blocks) - len(failed)
+        self.ok(
+            f"enclosures: {n} block(s) recomputed from the rows (M ⊇ R·B·V, ε up to {float(worst_eps):.3e}); every claimed disc "
+            f"holds its Gershgorin disc (least slack {float(worst_slack or 0):.3e}); components disjoint, counts = discs"
+        )
+        if failed:
+            self.lines.append(f"  --  blocks without an enclosure (as the document says): {failed}")
+
+    # -- the verdict
+
+    def named(self, claim, what):
+        if claim is None:
+            reject(f"the verdict names no {what}")
+        m = as_int(get(claim, "block", what), f"{what} block")
+        i = as_int(get(claim, "component", what), f"{what} component")
+        if m not in self.components:
+            reject(f"{what}: block {m} has no enclosure")
+        if i >= len(self.components[m]):
+            reject(f"{what}: block {m} has no component {i}")
+        return m, i
+
+    def check_verdict(self, part):
+        claims = get(part, "claims", "spectrum")
+        margins = get(part, "margins", "spectrum")
+        if self.verdict == "PROVED":
+            self.check_proof(claims, margins)
+        elif self.verdict == "DISPROVED":
+            self.check_disproof(claims)
+        else:
+            self.ok("verdict NOT PROVED: nothing claimed beyond the enclosures above")
+
+    def check_proof(self, claims, margins):
+        if self.method != "dft":
+            reject("PROVED on the whole matrix: λ1's realness and its two Fourier blocks need the rotation symmetry")
+        g = self.g
+        if g < 3:
+            reject(f"PROVED with a rotation group of order {g}: blocks 1 and g − 1 must differ")
+        if self.failed:
+            reject(f"PROVED while block(s) {self.failed} have no enclosure")
+        self.need("row sums", "rotation", "mirror")
+        m0, i0 = self.named(get(claims, "lambda0", "claims"), "λ0's component")
+        if m0 != 0:
+            reject("λ0's component is not in block 0")
+        c0 = self.components[0][i0]
+        if not any(holds(d, Fraction(1)) for d in c0):
+            reject("λ0's component does not hold 1")
+        if len(c0) != 1:
+            reject(f"λ0's component holds {len(c0)} eigenvalues: λ0 = 1 is not shown simple")
+        lam0_lo = min(d.re - d.r for d in c0)
+        self.ok("λ0 = 1: block 0's named component holds 1 and exactly one eigenvalue")
+        l1 = get(claims, "lambda1", "claims")
+        if l1 is None:
+            reject("the verdict names no λ1 components")
+        l1 = as_list(l1, "claims.lambda1", 2)
+        named1 = [self.named(l1[0], "λ1's component in block 1"), self.named(l1[1], "λ1's component in block g − 1")]
+        if [m for m, _ in named1] != [1, g - 1]:
+            reject(f"λ1's components are in blocks {[m for m, _ in named1]}, not 1 and {g - 1}")
+        lows, highs = [], []
+        for m, i in named1:
+            c = self.components[m][i]
+            if len(c) != 1:
+                reject(f"λ1's component in block {m} holds {len(c)} eigenvalues: not simple")
+            if not any(meets_real_axis(d) for d in c):
+                reject(f"λ1's component in block {m} misses the real axis")
+            mirror = [Disc(d.re, -d.im, d.r) for d in c]
+            for j, other in enumerate(self.components[m]):
+                if j != i and not all(disjoint(a, b) for a in mirror for b in other):
+                    reject(f"the mirror image of λ1's component in block {m} meets its component {j}: realness not shown")
+            lo = min(d.re - d.r for d in c)  # the real part's lower bound, not a modulus bound
+            hi = max(d.re + d.r for d in c)
+            if not lo > 0:
+                reject(f"λ1 in block {m} is not shown positive: its real part may be as low as {float(lo):.6e}")
+            if not hi < lam0_lo:
+                reject(f"λ1 in block {m} is not shown below λ0's enclosure")
+            lows.append(lo)
+            highs.append(hi)
+        lam1_lo = min(lows)
+        self.ok(
+            f"λ1: simple in blocks 1 and {g - 1}, real (its component meets the real axis, its mirror image no other "
+            f"component), {float(lam1_lo):.12f} ≤ λ1 ≤ {float(max(highs)):.12f}, below λ0"
+        )
+        special = {(0, i0)} | set(named1)
+        worst = None
+        for m, comps in self.components.items():
+            for i, c in enumerate(comps):
+                if (m, i) in special:
+                    continue
+                for d in c:
+                    if not mod_below(d, lam1_lo):
+                        reject(f"block {m}, component {i}: an eigenvalue may reach λ1's modulus (gap not shown)")
+                    worst = d if worst is None or d.norm2() + d.r * d.r > worst.norm2() + worst.r * worst.r else worst
+        self.ok(f"gap: every other component of every block lies strictly inside |z| < {float(lam1_lo):.12f}")
+        self.check_margins(margins, c0, [self.components[m][i] for m, i in named1], special)
+
+    def check_margins(self, margins, c0, c1s, special):
+        """The claimed margins must be valid bounds of the enclosed values."""
+        if not isinstance(margins, dict):
+            raise Malformed("margins: not an object")
+        l0 = margins.get("lambda0")
+        if l0 is not None:
+            lo, hi = Fraction(as_float(l0["lo"], "λ0.lo")), Fraction(as_float(l0["hi"], "λ0.hi"))
+            if not lo <= 1 <= hi:
+                reject("margin: the claimed λ0 enclosure misses 1")
+        l1 = margins.get("lambda1")
+        if l1 is not None:
+            lo, hi = Fraction(as_float(l1["lo"], "λ1.lo")), Fraction(as_float(l1["hi"], "λ1.hi"))
+            # λ1 is one real number, in both blocks: the tool bounds it with block 1's component
+            for c in c1s[:1]:
+                if not all(real_section_above(d, lo) and real_section_below(d, hi) for d in c):
+                    reject("margin: the claimed λ1 enclosure does not hold the real points of λ1's component")
+        others = margins.get("others_max_modulus")
+        if others is not None:
+            bound = Fraction(as_float(others, "others_max_modulus"))
+            for m, comps in self.components.items():
+                for i, c in enumerate(comps):
+                    if (m, i) not in special and not all(mod_at_most(d, bound) for d in c):
+                        reject(f"margin: block {m}, component {i} exceeds the claimed largest other modulus")
+            gap = margins.get("gap_lower_bound")
+            if gap is not None:
+                t = Fraction(as_float(gap, "gap_lower_bound")) + bound
+                for c in c1s[:1]:
+                    if not all(t + d.r < 0 or d.norm2() >= (t + d.r) ** 2 for d in c):
+                        reject("margin: the claimed gap exceeds λ1's lower modulus bound minus the others' upper one")
+        self.ok("margins: the claimed λ0, λ1 enclosures, largest other modulus and gap are valid bounds")
+
+    def no_candidate(self):
+        """Lemma (no candidate), re-derived from the discs alone."""
+        g = self.g
+        block1 = self.components.get(1, [])
+        pool = [
+            c
+            for m, comps in self.components.items()
+            if m not in (1, g - 1)
+            for c in comps
+            if not (m == 0 and any(holds(d, Fraction(1)) for d in c))
+        ]
+        for i, c in enumerate(block1):
+            if not any(meets_real_axis(d) and d.re + d.r > 0 for d in c):
+                continue
+            rivals = pool + [o for j, o in enumerate(block1) if j != i]
+            if not any(all(mod_at_least(a, b) for a in o for b in c) for o in rivals):
+                return False
+        return True
+
+    def check_disproof(self, claims):
+        if self.method == "dft":
+            self.need("rotation")  # the blocks' spectra are S's
+        m, i = self.named(get(claims, "witness", "claims"), "witness")
+        w = self.components[m][i]
+        g = self.g if self.method == "dft" else 1
+        # (a) an eigenvalue outside the unit disc
+        if all(mod_above(d, Fraction(1)) for d in w):
+            self.ok(f"witness: block {m}'s component {i} lies outside the unit disc (an eigenvalue of modulus > 1)")
+            return
+        if self.method != "dft" or g < 3:
+            reject("DISPROVED: the witness is not outside the unit disc (the only disproof without blocks 1 and g − 1)")
+
+        def dominates(others):
+            return all(mod_separated(a, b) for a in w for c in others for b in c)
+
+        if 1 not in self.components or g - 1 not in self.components:
+            reject("DISPROVED: blocks 1 and g − 1 need enclosures for any other witness")
+        # (c) no candidate: every component of block 1 that may hold a
+        # positive real number is matched or exceeded in modulus by another
+        # eigenvalue's enclosure (of block 1, or of a block other than 1 and
+        # g − 1, and never a component of block 0 that may hold 1), so no
+        # eigenvalue of block 1 is a dominant positive λ1
+        if self.no_candidate():
+            self.ok(
+                "witness: every enclosure of block 1 that may hold a positive real number is outdone in modulus by "
+                "another eigenvalue's: no dominant positive λ1 in block 1"
+            )
+            return
+        # (b) eigenvalues outside blocks 1 and g − 1 above all of theirs
+        if m not in (1, g - 1):
+            self.need("row sums")  # 1 is block 0's: the witness is not λ0
+            if m == 0 and any(holds(d, Fraction(1)) for d in w) and len(w) < 2:
+                reject("DISPROVED: the witness may be λ0 = 1 itself")
+            if dominates(self.components[1] + self.components[g - 1]):
+                self.ok(
+                    f"witness: block {m}'s component {i} ({len(w)} eigenvalue(s), none of them λ0) lies above every "
+                    f"eigenvalue of blocks 1 and {g - 1} in modulus: the subdominant pair is not theirs"
+                )
+                return
+            reject(f"DISPROVED: block {m}'s component {i} is not shown above every eigenvalue of blocks 1 and {g - 1}")
+        # (c), (d) the leading eigenvalue of block 1 (or g − 1) is not real, or negative
+        rest = [c for j, c in enumerate(self.components[m]) if j != i]
+        if not dominates(rest):
+            reject(f"DISPROVED: block {m}'s component {i} is not shown to lead its block")
+        if all(not meets_real_axis(d) for d in w):
+            self.ok(f"witness: the leading eigenvalue of block {m} (above the rest of its block) is not real")
+            return
+        if all(d.re + d.r < 0 for d in w):
+            self.ok(f"witness: the leading eigenvalue of block {m} (above the rest of its block) has negative real part")
+            return
+        reject(f"DISPROVED: block {m}'s leading component {i} is neither off the real axis nor negative")
+
+
+def mod_at_least(a, b):
+    """Every point of a has modulus ≥ every point of b: |a.c| − a.r ≥ |b.c| + b.r."""
+    s = a.r + b.r
+    lhs = a.norm2() - b.norm2() - s * s
+    return lhs >= 0 and lhs * lhs >= 4 * s * s * b.norm2()
+
+
+def main(argv):
+    if len(argv) != 2:
+        print("usage: check_cert.py CERTIFICATE.json", file=sys.stderr)
+        return 2
+    try:
+        with open(argv[1], encoding="utf-8") as f:
+            doc = json.load(f)
+    except (OSError, ValueError) as e:
+        print(f"CERTIFICATE UNREADABLE: {e}")
+        return 2
+    checker = Checker(doc)
+    try:
+        checker.run()
+    except Malformed as e:
+        print("\n".join(checker.lines))
+        print(f"CERTIFICATE MALFORMED: {e}")
+        return 2
+    except Rejected as e:
+        print("\n".join(checker.lines))
+        print(f"CERTIFICATE REJECTED: {e}")
+        return 1
+    except (KeyError, TypeError, IndexError, AttributeError) as e:
+        print("\n".join(checker.lines))
+        print(f"CERTIFICATE MALFORMED: unexpected structure ({type(e).__name__}: {e})")
+        return 2
+    print("\n".join(checker.lines))
+    print(f"CERTIFICATE ACCEPTED ({checker.verdict})")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
