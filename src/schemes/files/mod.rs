@@ -30,7 +30,7 @@ use super::user::UserParam;
 use super::Params;
 use crate::error::Error;
 use crate::numeric::expr::{Env, Expr};
-use crate::numeric::{ParamValue, Rational, Weight};
+use crate::numeric::{Cyclotomic, ParamValue, Rational, Reading, Weight};
 
 /// Scheme files are a few dozen lines; the caps keep a malformed or hostile
 /// file from costing unbounded time or memory (mesh, lattice and curve files).
@@ -357,43 +357,46 @@ pub(crate) struct Term<O> {
 }
 
 /// A weight evaluated: the float always, the rational when the expression has
-/// an exact value at these parameter values.
+/// an exact rational value at these parameter values.
 pub(crate) struct Value {
     pub float: f64,
     pub exact: Option<Rational>,
 }
 
-/// Evaluate a weight, `scale` times the term's expression. An error names the
-/// field when the value is not a finite real number.
+/// Evaluate a weight, `scale` times the term's expression. Each factor is
+/// read exactly where it can be (`Expr::reading`), so the float is the exact
+/// value rounded and cannot describe another mask than the exact one. An
+/// error names the field when the value is not a finite real number.
 pub(crate) fn evaluate<O>(head: &Head, term: &Term<O>, scale: Option<&Term<()>>, env: &Env) -> Result<Value, Error> {
     let err = |t_line: usize, field: &str, msg: &dyn std::fmt::Display| field_error(&head.file, t_line, field, msg);
-    let one = |t_line: usize, field: &str, e: &Expr| -> Result<Value, Error> {
-        let z = e.eval(env).map_err(|m| err(t_line, field, &m))?;
-        if !z.re.is_finite() || !z.im.is_finite() {
-            return Err(err(t_line, field, &"the weight is not a finite number"));
-        }
-        if z.im.abs() > 1e-12 * z.re.abs().max(1.0) {
-            return Err(err(t_line, field, &format!("the weight is complex ({} + {}i)", z.re, z.im)));
-        }
-        Ok(Value { float: z.re, exact: e.exact(env) })
+    let one = |t_line: usize, field: &str, e: &Expr| -> Result<Reading, Error> {
+        let r = e.reading(env).map_err(|m| err(t_line, field, &m))?;
+        r.real().map_err(|m| err(t_line, field, &m))?;
+        Ok(r)
     };
     let v = one(term.line, &term.field, &term.expr)?;
-    let v = match scale {
-        None => v,
-        Some(s) => {
-            let f = one(s.line, &s.field, &s.expr)?;
-            Value {
-                float: v.float * f.float,
-                exact: match (v.exact, f.exact) {
-                    (Some(a), Some(b)) => Some(a * b),
-                    _ => None,
-                },
-            }
-        }
+    let Some(s) = scale else {
+        return Ok(Value { float: v.real()?, exact: v.rational().cloned() });
     };
-    // the float of an exact weight is its correctly rounded value, as a
-    // built-in's `W::ratio(p, q)` is, not the product of rounded factors
-    Ok(Value { float: v.exact.as_ref().map_or(v.float, Weight::to_f64), exact: v.exact })
+    let f = one(s.line, &s.field, &s.expr)?;
+    let floats = v.real()? * f.real()?;
+    Ok(match (v, f) {
+        // the float of an exact weight is its correctly rounded value, as a
+        // built-in's `W::ratio(p, q)` is, not the product of rounded factors
+        (Reading::Rational(a), Reading::Rational(b)) => {
+            let q = a * b;
+            Value { float: Weight::to_f64(&q), exact: Some(q) }
+        }
+        (Reading::Float(_), _) | (_, Reading::Float(_)) => Value { float: floats, exact: None },
+        (a, b) => {
+            let product = |r: Reading| match r {
+                Reading::Rational(q) => Cyclotomic::from_rational(&q),
+                Reading::Cyclotomic(c) => c,
+                Reading::Float(_) => unreachable!("float readings are handled above"),
+            };
+            Value { float: Reading::Cyclotomic(product(a) * product(b)).real()?, exact: None }
+        }
+    })
 }
 
 /// A scheme's name and description live for the rest of the process (the
