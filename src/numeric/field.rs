@@ -563,8 +563,11 @@ impl Question for AsInteger {
 #[derive(Clone, Debug, PartialEq)]
 pub enum Reading {
     Rational(Rational),
-    /// exact and not rational (an element of Q(ζ_N) that is not in Q)
-    Cyclotomic(Cyclotomic),
+    /// exact and not rational (an element of Q(ζ_N) that is not in Q),
+    /// with an enclosure when it is real: the tighter of the element's own
+    /// (from its coefficients) and the expression's interval reading, both
+    /// of which hold the exact value
+    Cyclotomic(Cyclotomic, Option<Interval>),
     /// the expression has no exact reading (a float-only parameter or
     /// literal, π outside a cosine, a cube root, a size limit)
     Float(Complex64),
@@ -584,14 +587,12 @@ impl Reading {
                 }
                 Ok(x)
             }
-            Reading::Cyclotomic(c) => match Interval::from_cyclotomic(c) {
-                Ok(i) if i.is_finite() => Ok(i.mid()),
-                Ok(_) => Err(Error::Numeric("the weight is not a finite number".into())),
-                Err(_) => {
-                    let (re, im) = c.to_complex();
-                    Err(Error::Numeric(format!("the weight is complex ({re} + {im}i)")))
-                }
-            },
+            Reading::Cyclotomic(_, Some(i)) if i.is_finite() => Ok(i.mid()),
+            Reading::Cyclotomic(_, Some(_)) => Err(Error::Numeric("the weight is not a finite number".into())),
+            Reading::Cyclotomic(c, None) => {
+                let (re, im) = c.to_complex();
+                Err(Error::Numeric(format!("the weight is complex ({re} + {im}i)")))
+            }
             Reading::Float(z) => {
                 if !z.re.is_finite() || !z.im.is_finite() {
                     return Err(Error::Numeric("the weight is not a finite number".into()));
@@ -627,7 +628,22 @@ impl Expr {
             Err(e) => return Err(e.into()),
         }
         match self.evaluate::<Cyclotomic>(env) {
-            Ok(c) => return Ok(c.to_rational().map_or(Reading::Cyclotomic(c), Reading::Rational)),
+            Ok(c) => {
+                if let Some(q) = c.to_rational() {
+                    return Ok(Reading::Rational(q));
+                }
+                // the rounding is the middle of the tightest enclosure at
+                // hand, so it lies inside every interval reading of the weight
+                let own = Interval::from_cyclotomic(&c).ok();
+                let walked = self.evaluate::<Interval>(env).ok();
+                let enclosure = match (own, walked) {
+                    (Some(a), Some(b)) if a.lo.max(b.lo) <= a.hi.min(b.hi) => {
+                        Some(Interval::new(a.lo.max(b.lo), a.hi.min(b.hi)))
+                    }
+                    (a, _) => a,
+                };
+                return Ok(Reading::Cyclotomic(c, enclosure));
+            }
             Err(EvalError::Unrepresentable(_)) => {}
             Err(e) => return Err(e.into()),
         }
@@ -730,7 +746,7 @@ mod tests {
         // Loop's β at n = 6: (5/8 − (3/8 + 1/8)²)/6 = 1/16
         assert_eq!(e.reading(&at(6, 0)).unwrap(), Reading::Rational(q(1, 16)));
         let r = e.reading(&at(5, 0)).unwrap();
-        assert!(matches!(r, Reading::Cyclotomic(_)));
+        assert!(matches!(r, Reading::Cyclotomic(..)));
         let enclosed = e.evaluate::<Interval>(&at(5, 0)).unwrap();
         assert!(enclosed.contains(r.real().unwrap()));
         // π alone has no exact reading: floats

@@ -30,7 +30,7 @@ use super::user::UserParam;
 use super::Params;
 use crate::error::Error;
 use crate::numeric::expr::{Env, Expr};
-use crate::numeric::{Cyclotomic, ParamValue, Rational, Reading, Weight};
+use crate::numeric::{Cyclotomic, Interval, ParamValue, Rational, Reading, Weight};
 
 /// Scheme files are a few dozen lines; the caps keep a malformed or hostile
 /// file from costing unbounded time or memory (mesh, lattice and curve files).
@@ -99,6 +99,46 @@ pub fn load(path: &Path, overrides: &[(String, String)]) -> Result<Built, Error>
         Family::Lattice => Built::Lattice(Box::new(lattice::LatticeFileDef::parse(&text, &file)?.build(overrides)?)),
         Family::Curve => Built::Curve(Box::new(curve::CurveFileDef::parse(&text, &file)?.build(overrides)?)),
     })
+}
+
+/// One weight of a scheme file at one point of its rules: the field that
+/// writes it, its expression, and the variables it is evaluated with (the
+/// parameters at their defaults, and for mesh files n, j and m).
+#[derive(Clone, Debug)]
+pub struct WeightSite {
+    /// "rule.family" (mesh files) or "section.\"offset\"" (lattice and curve files)
+    pub field: String,
+    pub expr: Expr,
+    pub env: Env,
+}
+
+/// Every weight a scheme file of any family defines, at its default
+/// parameters: for mesh files at each valence in `valences` (or the rule's
+/// fixed one), every index j the rule asks for and, for face-corner fields,
+/// every corner count m in `valences`; for lattice and curve files each mask
+/// term and common factor. For checking that every arithmetic reads a file
+/// alike.
+pub fn weight_sites(path: &Path, valences: std::ops::RangeInclusive<i64>) -> Result<Vec<WeightSite>, Error> {
+    let text = read_scheme_file(path)?;
+    let file = path.display().to_string();
+    let terms = |head: &Head, rules: Vec<(&[Term<()>], Option<&Term<()>>)>| -> Result<Vec<WeightSite>, Error> {
+        let (env, _) = head.values(&[])?;
+        let site = |t: &Term<()>| WeightSite { field: t.field.clone(), expr: t.expr.clone(), env: env.clone() };
+        Ok(rules.into_iter().flat_map(|(ts, scale)| ts.iter().chain(scale).map(site).collect::<Vec<_>>()).collect())
+    };
+    match family_of_text(&text, &file)? {
+        Family::Mesh => super::user::UserSchemeDef::parse(&text, &file)?.weight_sites(valences),
+        Family::Lattice => {
+            let d = lattice::LatticeFileDef::parse(&text, &file)?;
+            let masks = d.terms();
+            terms(&d.head, masks.iter().map(|(t, s)| (t.as_slice(), s.as_ref())).collect())
+        }
+        Family::Curve => {
+            let d = curve::CurveFileDef::parse(&text, &file)?;
+            let rules = d.terms();
+            terms(&d.head, rules.iter().map(|(t, s)| (t.as_slice(), s.as_ref())).collect())
+        }
+    }
 }
 
 /// What `subdlab schemes FILE` shows of a file of any family.
@@ -356,6 +396,13 @@ pub(crate) struct Term<O> {
     pub field: String,
 }
 
+impl<O> Term<O> {
+    /// The same weight without its offset.
+    pub(crate) fn unplaced(&self) -> Term<()> {
+        Term { offset: (), expr: self.expr.clone(), line: self.line, field: self.field.clone() }
+    }
+}
+
 /// A weight evaluated: the float always, the rational when the expression has
 /// an exact rational value at these parameter values.
 pub(crate) struct Value {
@@ -391,10 +438,11 @@ pub(crate) fn evaluate<O>(head: &Head, term: &Term<O>, scale: Option<&Term<()>>,
         (a, b) => {
             let product = |r: Reading| match r {
                 Reading::Rational(q) => Cyclotomic::from_rational(&q),
-                Reading::Cyclotomic(c) => c,
+                Reading::Cyclotomic(c, _) => c,
                 Reading::Float(_) => unreachable!("float readings are handled above"),
             };
-            Value { float: Reading::Cyclotomic(product(a) * product(b)).real()?, exact: None }
+            let c = product(a) * product(b);
+            Value { float: Reading::Cyclotomic(c.clone(), Interval::from_cyclotomic(&c).ok()).real()?, exact: None }
         }
     })
 }

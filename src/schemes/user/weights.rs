@@ -139,7 +139,7 @@ impl WeightTable {
         let x = reading.real().map_err(|_| Inexact)?;
         Ok(match reading {
             Reading::Rational(q) => Evaluated::Rational(ParamValue { value: x, exact: Some(q), text: String::new() }),
-            Reading::Cyclotomic(c) => Evaluated::Field(c, x),
+            Reading::Cyclotomic(c, _) => Evaluated::Field(c, x),
             Reading::Float(_) => Evaluated::Float(x),
         })
     }
