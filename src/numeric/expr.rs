@@ -457,9 +457,10 @@ impl Expr {
 
     /// The answer to `question` about this expression's value in `F`. Where
     /// `F` cannot answer (a float within rounding of the discontinuity, an
-    /// enclosure around it), an exact reading of the expression answers
-    /// instead; without one the evaluation fails: a guess here once turned a
-    /// scheme file into another scheme in floating point.
+    /// enclosure around it), or answers "on the discontinuity" from rounded
+    /// numbers, an exact reading of the expression answers instead; without
+    /// one an uncertain answer fails the evaluation: a guess here once turned
+    /// a scheme file into another scheme in floating point.
     fn decide<F: ExprField, Q: Question>(
         &self,
         question: &Q,
@@ -468,26 +469,29 @@ impl Expr {
         terms: &mut u64,
     ) -> Result<Q::Answer, EvalError> {
         let x = self.walk::<F>(env, terms)?;
-        let why = match question.ask(&x) {
-            Decision::Known(answer) => return Ok(answer),
-            Decision::Unknown(why) => why,
+        let own = match question.ask(&x) {
+            Decision::Known(answer) if F::EXACT || question.certain(&answer) => return Ok(answer),
+            own => own,
         };
-        if !F::EXACT {
-            match self.walk::<Rational>(env, terms).map(|q| question.ask(&q)) {
-                Ok(Decision::Known(answer)) => return Ok(answer),
-                Err(EvalError::Invalid(e)) => return Err(EvalError::Invalid(e)),
-                _ => {}
-            }
-            match self.walk::<Cyclotomic>(env, terms).map(|c| question.ask(&c)) {
-                Ok(Decision::Known(answer)) => return Ok(answer),
-                Err(EvalError::Invalid(e)) => return Err(EvalError::Invalid(e)),
-                _ => {}
-            }
+        match self.walk::<Rational>(env, terms).map(|q| question.ask(&q)) {
+            Ok(Decision::Known(answer)) => return Ok(answer),
+            Err(EvalError::Invalid(e)) => return Err(EvalError::Invalid(e)),
+            _ => {}
         }
-        Err(EvalError::Undecidable(format!(
-            "{what} cannot be decided in {}: its argument has no exact value, and {why}",
-            F::NAME
-        )))
+        match self.walk::<Cyclotomic>(env, terms).map(|c| question.ask(&c)) {
+            Ok(Decision::Known(answer)) => return Ok(answer),
+            Err(EvalError::Invalid(e)) => return Err(EvalError::Invalid(e)),
+            _ => {}
+        }
+        match own {
+            // exactly on the discontinuity in this arithmetic, and nothing
+            // exact to say otherwise
+            Decision::Known(answer) => Ok(answer),
+            Decision::Unknown(why) => Err(EvalError::Undecidable(format!(
+                "{what} cannot be decided in {}: its argument has no exact value, and {why}",
+                F::NAME
+            ))),
+        }
     }
 
     /// q such that the expression is q·π (for exact trigonometry).

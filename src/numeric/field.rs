@@ -171,9 +171,10 @@ impl ExprField for Complex64 {
             _ => Complex64::new(x.norm(), 0.0),
         })
     }
-    /// Exactly 0 is zero and a modulus of at least [`FLOAT_ZERO_TOLERANCE`]
-    /// is not; in between rounding may have made a zero nonzero or the
-    /// converse, so floats do not answer.
+    /// A modulus of at least [`FLOAT_ZERO_TOLERANCE`] is not zero; in between
+    /// rounding may have made a zero nonzero or the converse, so floats do
+    /// not answer. Exactly 0.0 counts as zero only where no exact reading of
+    /// the argument says otherwise (`Question::certain`).
     fn zero_test(x: &Self) -> Decision<bool> {
         let r = x.norm();
         if *x == Complex64::new(0.0, 0.0) {
@@ -532,6 +533,10 @@ impl ExprField for Interval {
 pub(crate) trait Question {
     type Answer;
     fn ask<F: ExprField>(&self, x: &F) -> Decision<Self::Answer>;
+    /// Whether an approximate field's answer stands without an exact
+    /// reading's confirmation: "far from the discontinuity" does, but "on
+    /// it" may be rounding (1 + 1e-17 − 1 is 0.0 in floats, 1e-200² too).
+    fn certain(&self, answer: &Self::Answer) -> bool;
 }
 
 /// Is the value zero? (`kronecker`)
@@ -541,6 +546,9 @@ impl Question for IsZero {
     type Answer = bool;
     fn ask<F: ExprField>(&self, x: &F) -> Decision<bool> {
         F::zero_test(x)
+    }
+    fn certain(&self, zero: &bool) -> bool {
+        !zero
     }
 }
 
@@ -556,6 +564,9 @@ impl Question for AsInteger {
             Decision::Known(None) => Decision::Known(Err(F::describe(x))),
             Decision::Unknown(why) => Decision::Unknown(why),
         }
+    }
+    fn certain(&self, integer: &Result<i64, String>) -> bool {
+        integer.is_err()
     }
 }
 
@@ -715,6 +726,11 @@ mod tests {
             "{err:?}"
         );
         assert!(parse("kronecker(a)").reading(&env).unwrap_err().to_string().contains("cannot be decided"));
+        // a float that rounding made exactly 0.0 is overruled by the exact
+        // reading: 10^-400 underflows, 1 + 1e-17 − 1 cancels, neither is 0
+        for s in ["kronecker(10^-200 10^-200)", "kronecker(1 + 1e-17 - 1)"] {
+            assert_eq!(parse(s).evaluate::<Complex64>(&Env::new()), Ok(Complex64::new(0.0, 0.0)), "{s}");
+        }
         // far from zero, or exactly zero, floats decide
         env.insert("a".into(), crate::numeric::ParamValue::from_f64(0.25));
         assert_eq!(parse("kronecker(a)").evaluate::<Complex64>(&env), Ok(Complex64::new(0.0, 0.0)));
