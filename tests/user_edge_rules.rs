@@ -451,7 +451,7 @@ fn the_edge_rule_is_checked_at_load_time() {
         ("edge = \"sum(m, 0, n - 1, m\"", "line 11, field edge-extraordinary.edge: missing ')' after sum"),
         (
             "edge = \"sum(m, 0, n/2, m)\"",
-            "line 11, field edge-extraordinary.edge: at n = 3, j = 0: the upper bound of a sum must be an integer, got 1.5",
+            "line 11, field edge-extraordinary.edge: at n = 3, j = 0: the upper bound of a sum must be an integer, got 3/2",
         ),
         (
             "edge = \"sum(m, 1, 20000, 0)\"",

@@ -650,7 +650,6 @@ impl Weight for Cyclotomic {
     fn is_zero(&self) -> bool {
         self.is_defined() && self.num.is_empty()
     }
-    const CYCLOTOMIC: bool = true;
     fn from_cyclotomic(c: &Cyclotomic) -> Result<Self, Inexact> {
         Ok(c.clone())
     }

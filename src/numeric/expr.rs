@@ -1,16 +1,21 @@
-//! A small expression language for claims and scheme files, evaluated both in
-//! floating point (complex, so that printed eigenvalues such as
-//! −1/16 ± √5/48 i can be written down) and exactly (rationals; cos and sin of
-//! rational multiples of π where the value is rational; square roots of
-//! rational squares), and exactly in cyclotomic fields (`Expr::cyclotomic`:
-//! cos and sin of rational multiples of π whatever their value).
+//! A small expression language for claims and scheme files, evaluated by
+//! one recursive walk (`Expr::evaluate`) generic over the number field
+//! (`numeric::field`): floating point (complex, so that printed eigenvalues
+//! such as −1/16 ± √5/48 i can be written down), exact rationals (cos and
+//! sin of rational multiples of π where the value is rational; square roots
+//! of rational squares), exact cyclotomic fields (cos and sin of rational
+//! multiples of π whatever their value) and outward-rounded intervals.
+//! `Expr::eval`, `Expr::exact` and `Expr::cyclotomic` are that walk in one
+//! field each.
 //!
 //! Grammar: sums and differences of products and quotients of powers of unary
 //! terms; `^` binds tighter than unary minus (−2^2 = −4), and is
 //! right-associative. Atoms: numbers (`3`, `0.375`, `1e-3`), variables, `pi`,
 //! `i` (the imaginary unit), calls `cos(x)`, `sin(x)`, `sqrt(x)`, `cbrt(x)`,
 //! `abs(x)`, `kronecker(x)` (1 when x = 0, else 0: piecewise definitions such
-//! as a_3 = 3/4), the bounded sum `sum(m, FROM, TO, EXPR)` (EXPR summed over
+//! as a_3 = 3/4; decided exactly, and an error where neither the arithmetic
+//! at hand nor an exact reading of x can decide it), the bounded sum
+//! `sum(m, FROM, TO, EXPR)` (EXPR summed over
 //! the integers m = FROM..TO, m a fresh name bound inside EXPR only; at most
 //! `MAX_SUM_TERMS` terms per evaluation, nested sums counted in full; e.g.
 //! weights given by their Fourier coefficients) and parentheses. Errors name
@@ -19,10 +24,11 @@
 use std::collections::BTreeMap;
 
 use num_complex::Complex64;
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use num_traits::{One, ToPrimitive, Zero};
 
 use super::cyclotomic::Cyclotomic;
-use super::weight::{exact_cos_2pi, Rational};
+use super::field::{AsInteger, Decision, EvalError, ExprField, IsZero, Question};
+use super::weight::Rational;
 use crate::error::Error;
 
 #[derive(Clone, Debug, PartialEq)]
@@ -45,9 +51,10 @@ pub enum Expr {
 /// The most terms one evaluation of an expression may add up, counting every
 /// term of nested sums: evaluation time stays bounded whatever the input.
 pub const MAX_SUM_TERMS: u64 = 10_000;
-/// Largest exact rational an evaluation builds (bits of numerator plus
-/// denominator): past it the exact path declines (None) and the float value
-/// is used, so the cost of every exact operation stays bounded.
+/// Largest exact number an evaluation builds (bits of numerator plus
+/// denominator): past it the exact fields decline (`Unrepresentable`) and a
+/// scheme file's weight is read in floats, so the cost of every exact
+/// operation stays bounded.
 pub const MAX_EXACT_BITS: u64 = 4096;
 /// Deepest nesting of parentheses, signs, powers and calls.
 pub const MAX_DEPTH: usize = 200;
@@ -282,137 +289,6 @@ fn chain(first: Expr, rest: Vec<(char, Expr)>) -> Expr {
     }
 }
 
-/// Floating-point `x op y` for + - * / and ^.
-fn float_op(op: char, x: Complex64, y: Complex64) -> Result<Complex64, Error> {
-    Ok(match op {
-        '+' => x + y,
-        '-' => x - y,
-        '*' => x * y,
-        '/' => {
-            if y.norm() == 0.0 {
-                return Err(Error::Input("division by zero".into()));
-            }
-            x / y
-        }
-        _ => {
-            if y.im == 0.0 && y.re.fract() == 0.0 && y.re.abs() <= 64.0 {
-                x.powi(y.re as i32)
-            } else {
-                // principal branch: a real base has imaginary part +0, never -0
-                positive_zero(x).powc(y)
-            }
-        }
-    })
-}
-
-/// The same number with a zero imaginary part of sign +: −1 as (−1, −0.0)
-/// (what negating 1 gives) would put sqrt and powers on the wrong side of the
-/// branch cut (sqrt(−1) = −i).
-fn positive_zero(z: Complex64) -> Complex64 {
-    Complex64::new(z.re, z.im + 0.0)
-}
-
-fn too_big(q: &Rational) -> bool {
-    q.numer().bits() + q.denom().bits() > MAX_EXACT_BITS
-}
-
-/// Exact `x op y` for + - * / and ^, None when undefined, not rational, or
-/// larger than [`MAX_EXACT_BITS`].
-fn exact_op(op: char, x: Rational, y: Rational) -> Option<Rational> {
-    let r = match op {
-        '+' => x + y,
-        '-' => x - y,
-        '*' => x * y,
-        '/' => {
-            if y.is_zero() {
-                return None;
-            }
-            x / y
-        }
-        _ => {
-            if !y.is_integer() || y.abs() > Rational::from_integer(256.into()) {
-                return None;
-            }
-            let k = y.to_integer().to_i32()?;
-            if k < 0 && x.is_zero() {
-                return None;
-            }
-            // decide from the operands' sizes before computing the power
-            let bits = x.numer().bits() + x.denom().bits();
-            if bits.saturating_mul(k.unsigned_abs() as u64) > 2 * MAX_EXACT_BITS {
-                return None;
-            }
-            num_traits::pow::Pow::pow(x, k)
-        }
-    };
-    (!too_big(&r)).then_some(r)
-}
-
-/// `x op y` in a cyclotomic field for + - * / and ^ (integer exponents up to
-/// 256 in modulus), None when undefined or larger than [`MAX_EXACT_BITS`].
-fn cyclotomic_op(op: char, x: Cyclotomic, y: Cyclotomic) -> Option<Cyclotomic> {
-    use super::weight::Weight;
-    let r = match op {
-        '+' => x + y,
-        '-' => x - y,
-        '*' => x * y,
-        '/' => {
-            if y.is_zero() {
-                return None;
-            }
-            x / y
-        }
-        _ => {
-            let e = y.to_rational()?;
-            if !e.is_integer() || e.abs() > Rational::from_integer(256.into()) {
-                return None;
-            }
-            let k = e.to_integer().to_i32()?;
-            let base = if k < 0 {
-                if x.is_zero() {
-                    return None;
-                }
-                x.inverse()
-            } else {
-                x
-            };
-            // square and multiply, each step bounded like every operation
-            let (mut acc, mut square, mut k) = (Cyclotomic::one(), base, k.unsigned_abs());
-            while k > 0 {
-                if k & 1 == 1 {
-                    acc = acc * square.clone();
-                }
-                k >>= 1;
-                if k > 0 {
-                    square = square.clone() * square;
-                }
-                if acc.bits() > MAX_EXACT_BITS || square.bits() > MAX_EXACT_BITS {
-                    return None;
-                }
-            }
-            acc
-        }
-    };
-    (r.is_defined() && r.bits() <= MAX_EXACT_BITS).then_some(r)
-}
-
-/// An integer summation bound from its floating value.
-fn sum_bound(z: Complex64, what: &str) -> Result<i64, Error> {
-    let r = z.re.round();
-    if z.im != 0.0 || !z.re.is_finite() || (z.re - r).abs() > 1e-9 * r.abs().max(1.0) || r.abs() > 1e15 {
-        return Err(Error::Input(format!("the {what} bound of a sum must be an integer, got {}", fmt_complex(z))));
-    }
-    Ok(r as i64)
-}
-
-fn fmt_complex(z: Complex64) -> String {
-    if z.im == 0.0 {
-        format!("{}", z.re)
-    } else {
-        format!("{} + {}i", z.re, z.im)
-    }
-}
-
 /// Count a sum's `count` terms against the budget of one evaluation.
 fn spend(terms: &mut u64, count: i128) -> Result<(), Error> {
     let total = *terms as i128 + count.max(0);
@@ -485,123 +361,17 @@ impl Expr {
         }
     }
 
-    /// Floating-point (complex) value.
+    /// Floating-point (complex) value. A kronecker or sum bound that floats
+    /// cannot decide is decided by an exact reading of its argument, or is
+    /// an error (see `numeric::field`).
     pub fn eval(&self, env: &Env) -> Result<Complex64, Error> {
-        self.eval_counted(env, &mut 0)
-    }
-
-    /// `eval`, with the sum terms spent so far in this evaluation.
-    fn eval_counted(&self, env: &Env, terms: &mut u64) -> Result<Complex64, Error> {
-        Ok(match self {
-            Expr::Num(x, _) => Complex64::new(*x, 0.0),
-            Expr::Pi => Complex64::new(std::f64::consts::PI, 0.0),
-            Expr::I => Complex64::new(0.0, 1.0),
-            Expr::Var(v) => {
-                Complex64::new(env.get(v).ok_or_else(|| Error::Input(format!("unknown variable '{v}'")))?.value, 0.0)
-            }
-            Expr::Neg(a) => -a.eval_counted(env, terms)?,
-            Expr::Bin(op, a, b) => float_op(*op, a.eval_counted(env, terms)?, b.eval_counted(env, terms)?)?,
-            Expr::Chain(first, rest) => {
-                let mut x = first.eval_counted(env, terms)?;
-                for (op, e) in rest {
-                    x = float_op(*op, x, e.eval_counted(env, terms)?)?;
-                }
-                x
-            }
-            Expr::Call(f, a) if f == "kronecker" => {
-                // decided exactly where the argument is rational (as `exact`
-                // does), else within 1e-12 of zero
-                let zero = match a.exact(env) {
-                    Some(q) => q.is_zero(),
-                    None => a.eval_counted(env, terms)?.norm() < 1e-12,
-                };
-                Complex64::new(if zero { 1.0 } else { 0.0 }, 0.0)
-            }
-            Expr::Call(f, a) => {
-                let x = positive_zero(a.eval_counted(env, terms)?);
-                match f.as_str() {
-                    "cos" => x.cos(),
-                    "sin" => x.sin(),
-                    "sqrt" => x.sqrt(),
-                    "cbrt" if x.im == 0.0 => Complex64::new(x.re.cbrt(), 0.0),
-                    "cbrt" => x.powf(1.0 / 3.0),
-                    _ => Complex64::new(x.norm(), 0.0),
-                }
-            }
-            Expr::Sum(var, from, to, summand) => {
-                let lo = sum_bound(from.eval_counted(env, terms)?, "lower")?;
-                let hi = sum_bound(to.eval_counted(env, terms)?, "upper")?;
-                if env.contains_key(var) {
-                    return Err(shadow_error(var));
-                }
-                spend(terms, hi as i128 - lo as i128 + 1)?;
-                let mut inner = env.clone();
-                let mut total = Complex64::new(0.0, 0.0);
-                for k in lo..=hi {
-                    inner.insert(var.clone(), sum_index(k));
-                    total += summand.eval_counted(&inner, terms)?;
-                }
-                total
-            }
-        })
+        Ok(self.evaluate::<Complex64>(env)?)
     }
 
     /// Exact rational value, when the expression has one this evaluator can
     /// prove (None otherwise: irrational, complex, or undecidable here).
     pub fn exact(&self, env: &Env) -> Option<Rational> {
-        self.exact_counted(env, &mut 0)
-    }
-
-    fn exact_counted(&self, env: &Env, terms: &mut u64) -> Option<Rational> {
-        Some(match self {
-            Expr::Num(_, q) => q.clone()?,
-            Expr::Var(v) => env.get(v)?.exact.clone()?,
-            Expr::Neg(a) => -a.exact_counted(env, terms)?,
-            Expr::Bin(op, a, b) => exact_op(*op, a.exact_counted(env, terms)?, b.exact_counted(env, terms)?)?,
-            Expr::Chain(first, rest) => {
-                let mut x = first.exact_counted(env, terms)?;
-                for (op, e) in rest {
-                    x = exact_op(*op, x, e.exact_counted(env, terms)?)?;
-                }
-                x
-            }
-            Expr::Call(f, a) => match f.as_str() {
-                // cos(q π) and sin(q π) for rational q
-                "cos" | "sin" => {
-                    let (k, n) = cos_angle(f, &a.pi_multiple(env, terms)?)?;
-                    exact_cos_2pi(k, n)?
-                }
-                "sqrt" => {
-                    let x = a.exact_counted(env, terms)?;
-                    use super::weight::Weight;
-                    x.sqrt().ok()?
-                }
-                "abs" => a.exact_counted(env, terms)?.abs(),
-                "kronecker" => {
-                    if a.exact_counted(env, terms)?.is_zero() {
-                        Rational::one()
-                    } else {
-                        Rational::zero()
-                    }
-                }
-                _ => return None,
-            },
-            Expr::Sum(var, from, to, summand) => {
-                let (lo, hi) = exact_sum_range(var, from, to, env, terms)?;
-                let mut inner = env.clone();
-                let mut total = Rational::zero();
-                for k in lo..=hi {
-                    inner.insert(var.clone(), sum_index(k));
-                    total += summand.exact_counted(&inner, terms)?;
-                    // as for every operation: a sum whose digits explode is not worth it
-                    if too_big(&total) {
-                        return None;
-                    }
-                }
-                total
-            }
-            Expr::Pi | Expr::I => return None,
-        })
+        self.evaluate::<Rational>(env).ok()
     }
 
     /// Exact value in a cyclotomic field Q(ζ_N), when this evaluator can
@@ -612,83 +382,132 @@ impl Expr {
     /// non-squares, elements larger than [`MAX_EXACT_BITS`]). What
     /// [`Expr::exact`] proves rational has the same value here.
     pub fn cyclotomic(&self, env: &Env) -> Option<Cyclotomic> {
-        self.cyclotomic_counted(env, &mut 0)
+        self.evaluate::<Cyclotomic>(env).ok()
     }
 
-    fn cyclotomic_counted(&self, env: &Env, terms: &mut u64) -> Option<Cyclotomic> {
-        let rational = |q: Rational| Some(Cyclotomic::from_rational(&q));
+    /// The value in the field `F` (`numeric::field`): the one evaluator of
+    /// the language, whatever the arithmetic.
+    pub fn evaluate<F: ExprField>(&self, env: &Env) -> Result<F, EvalError> {
+        self.walk(env, &mut 0)
+    }
+
+    /// `evaluate`, with the sum terms spent so far in this evaluation.
+    fn walk<F: ExprField>(&self, env: &Env, terms: &mut u64) -> Result<F, EvalError> {
         let value = match self {
-            Expr::Num(_, q) => rational(q.clone()?)?,
-            Expr::Var(v) => rational(env.get(v)?.exact.clone()?)?,
-            Expr::I => Cyclotomic::root_of_unity(1, 4).ok()?,
-            Expr::Pi => return None,
-            Expr::Neg(a) => -a.cyclotomic_counted(env, terms)?,
-            Expr::Bin(op, a, b) => {
-                cyclotomic_op(*op, a.cyclotomic_counted(env, terms)?, b.cyclotomic_counted(env, terms)?)?
+            Expr::Num(x, q) => F::number(*x, q.as_ref())?,
+            Expr::Var(v) => {
+                let p =
+                    env.get(v).ok_or_else(|| EvalError::Invalid(Error::Input(format!("unknown variable '{v}'"))))?;
+                F::number(p.value, p.exact.as_ref())?
             }
+            Expr::Pi => F::pi()?,
+            Expr::I => F::imaginary_unit()?,
+            Expr::Neg(a) => a.walk::<F>(env, terms)?.negate(),
+            Expr::Bin('^', a, b) => F::power(a.walk(env, terms)?, b.walk(env, terms)?)?,
+            Expr::Bin(op, a, b) => F::arith(*op, a.walk(env, terms)?, b.walk(env, terms)?)?,
             Expr::Chain(first, rest) => {
-                let mut x = first.cyclotomic_counted(env, terms)?;
+                let mut x = first.walk::<F>(env, terms)?;
                 for (op, e) in rest {
-                    x = cyclotomic_op(*op, x, e.cyclotomic_counted(env, terms)?)?;
+                    x = F::bounded(F::arith(*op, x, e.walk(env, terms)?)?)?;
                 }
                 x
             }
-            Expr::Call(f, a) => match f.as_str() {
-                "cos" | "sin" => {
-                    let (k, n) = cos_angle(f, &a.pi_multiple(env, terms)?)?;
-                    <Cyclotomic as super::weight::Weight>::cos_2pi(k, n).ok()?
-                }
-                "sqrt" | "abs" => {
-                    let x = a.cyclotomic_counted(env, terms)?.to_rational()?;
-                    if f == "abs" {
-                        Cyclotomic::from_rational(&x.abs())
-                    } else {
-                        use super::weight::Weight;
-                        Cyclotomic::from_rational(&x.sqrt().ok()?)
-                    }
-                }
-                "kronecker" => {
-                    let x = a.cyclotomic_counted(env, terms)?;
-                    Cyclotomic::from_rational(&if super::weight::Weight::is_zero(&x) {
-                        Rational::one()
-                    } else {
-                        Rational::zero()
-                    })
-                }
-                _ => return None,
-            },
+            Expr::Call(f, a) if f == "kronecker" => {
+                let zero = a.decide::<F, _>(&IsZero, "kronecker", env, terms)?;
+                F::from_int(zero as i64)
+            }
+            Expr::Call(f, a) if F::ANGLES_BY_PI && (f == "cos" || f == "sin") => {
+                // cos(qπ) and sin(qπ) for rational q, q found exactly
+                let Some(q) = a.pi_multiple(env, terms) else {
+                    return Err(EvalError::Unrepresentable(format!(
+                        "{f} of an argument that is not a rational multiple of π has no value in {}",
+                        F::NAME
+                    )));
+                };
+                let (k, n) = cos_angle(f, &q)
+                    .ok_or_else(|| EvalError::Unrepresentable(format!("{f}({q} π): the integers overflow")))?;
+                F::cos_turn(k, n)?
+            }
+            Expr::Call(f, a) => F::function(f, a.walk(env, terms)?)?,
             Expr::Sum(var, from, to, summand) => {
-                let (lo, hi) = exact_sum_range(var, from, to, env, terms)?;
+                let bound = |e: &Expr, what: &str, terms: &mut u64| -> Result<i64, EvalError> {
+                    let context = format!("the {what} bound of a sum");
+                    e.decide::<F, _>(&AsInteger, &context, env, terms)?.map_err(|got| {
+                        EvalError::Invalid(Error::Input(format!("{context} must be an integer, got {got}")))
+                    })
+                };
+                let lo = bound(from, "lower", terms)?;
+                let hi = bound(to, "upper", terms)?;
+                if env.contains_key(var) {
+                    return Err(EvalError::Invalid(shadow_error(var)));
+                }
+                spend(terms, hi as i128 - lo as i128 + 1).map_err(EvalError::Invalid)?;
                 let mut inner = env.clone();
-                let mut total = <Cyclotomic as super::weight::Weight>::zero();
+                let mut total = F::from_int(0);
                 for k in lo..=hi {
                     inner.insert(var.clone(), sum_index(k));
-                    total = total + summand.cyclotomic_counted(&inner, terms)?;
-                    if total.bits() > MAX_EXACT_BITS {
-                        return None;
-                    }
+                    // as for every operation: a sum whose digits explode is not worth it
+                    total = F::bounded(F::arith('+', total, summand.walk(&inner, terms)?)?)?;
                 }
                 total
             }
         };
-        (value.is_defined() && value.bits() <= MAX_EXACT_BITS).then_some(value)
+        F::bounded(value)
+    }
+
+    /// The answer to `question` about this expression's value in `F`. Where
+    /// `F` cannot answer (a float within rounding of the discontinuity, an
+    /// enclosure around it), or answers "on the discontinuity" from rounded
+    /// numbers, an exact reading of the expression answers instead; without
+    /// one an uncertain answer fails the evaluation: a guess here once turned
+    /// a scheme file into another scheme in floating point.
+    fn decide<F: ExprField, Q: Question>(
+        &self,
+        question: &Q,
+        what: &str,
+        env: &Env,
+        terms: &mut u64,
+    ) -> Result<Q::Answer, EvalError> {
+        let x = self.walk::<F>(env, terms)?;
+        let own = match question.ask(&x) {
+            Decision::Known(answer) if F::EXACT || question.certain(&answer) => return Ok(answer),
+            own => own,
+        };
+        match self.walk::<Rational>(env, terms).map(|q| question.ask(&q)) {
+            Ok(Decision::Known(answer)) => return Ok(answer),
+            Err(EvalError::Invalid(e)) => return Err(EvalError::Invalid(e)),
+            _ => {}
+        }
+        match self.walk::<Cyclotomic>(env, terms).map(|c| question.ask(&c)) {
+            Ok(Decision::Known(answer)) => return Ok(answer),
+            Err(EvalError::Invalid(e)) => return Err(EvalError::Invalid(e)),
+            _ => {}
+        }
+        match own {
+            // exactly on the discontinuity in this arithmetic, and nothing
+            // exact to say otherwise
+            Decision::Known(answer) => Ok(answer),
+            Decision::Unknown(why) => Err(EvalError::Undecidable(format!(
+                "{what} cannot be decided in {}: its argument has no exact value, and {why}",
+                F::NAME
+            ))),
+        }
     }
 
     /// q such that the expression is q·π (for exact trigonometry).
     fn pi_multiple(&self, env: &Env, terms: &mut u64) -> Option<Rational> {
+        let exact = |e: &Expr, terms: &mut u64| e.walk::<Rational>(env, terms).ok();
         match self {
             Expr::Pi => Some(Rational::one()),
             Expr::Neg(a) => Some(-a.pi_multiple(env, terms)?),
             Expr::Bin('*', a, b) => match (a.pi_multiple(env, terms), b.pi_multiple(env, terms)) {
-                (Some(p), None) => Some(p * b.exact_counted(env, terms)?),
-                (None, Some(p)) => Some(a.exact_counted(env, terms)? * p),
+                (Some(p), None) => Some(p * exact(b, terms)?),
+                (None, Some(p)) => Some(exact(a, terms)? * p),
                 // p π · q π is a multiple of π only when a factor is zero (2 π j at j = 0)
                 (Some(p), Some(q)) if p.is_zero() || q.is_zero() => Some(Rational::zero()),
                 _ => None,
             },
-            Expr::Bin('/', a, b) => {
-                Some(a.pi_multiple(env, terms)? / b.exact_counted(env, terms).filter(|y| !y.is_zero())?)
-            }
+            Expr::Bin('/', a, b) => Some(a.pi_multiple(env, terms)? / exact(b, terms).filter(|y| !y.is_zero())?),
             Expr::Bin(op @ ('+' | '-'), a, b) => {
                 let (x, y) = (a.pi_multiple(env, terms)?, b.pi_multiple(env, terms)?);
                 Some(if *op == '+' { x + y } else { x - y })
@@ -707,12 +526,14 @@ impl Expr {
                 let mut coef = Rational::one();
                 let mut power = 0u32;
                 let factors = std::iter::once(('*', &**first)).chain(rest.iter().map(|(op, e)| (*op, e)));
+                let times = |x: Rational, op: char, y: Rational| {
+                    <Rational as ExprField>::arith(op, x, y).and_then(<Rational as ExprField>::bounded).ok()
+                };
                 for (op, e) in factors {
-                    match (e.exact_counted(env, terms), op) {
-                        (Some(q), '*') => coef = exact_op('*', coef, q)?,
-                        (Some(q), _) => coef = exact_op('/', coef, q)?,
+                    match (exact(e, terms), op) {
+                        (Some(q), _) => coef = times(coef, op, q)?,
                         (None, '*') => {
-                            coef = exact_op('*', coef, e.pi_multiple(env, terms)?)?;
+                            coef = times(coef, '*', e.pi_multiple(env, terms)?)?;
                             power += 1;
                         }
                         (None, _) => return None,
@@ -724,7 +545,7 @@ impl Expr {
                     _ => None,
                 }
             }
-            e => e.exact_counted(env, terms).filter(|x| x.is_zero()),
+            e => exact(e, terms).filter(|x| x.is_zero()),
         }
     }
 }
@@ -738,18 +559,6 @@ fn cos_angle(f: &str, q: &Rational) -> Option<(i64, i64)> {
     } else {
         Some((num.checked_mul(2)?.checked_sub(den)?, den.checked_mul(4)?))
     }
-}
-
-/// The integer range of an exact sum, its terms paid for: None when a bound
-/// is not an exact integer or the index shadows a variable.
-fn exact_sum_range(var: &str, from: &Expr, to: &Expr, env: &Env, terms: &mut u64) -> Option<(i64, i64)> {
-    let (lo, hi) = (from.exact_counted(env, terms)?, to.exact_counted(env, terms)?);
-    if !lo.is_integer() || !hi.is_integer() || env.contains_key(var) {
-        return None;
-    }
-    let (lo, hi) = (lo.to_integer().to_i64()?, hi.to_integer().to_i64()?);
-    spend(terms, hi as i128 - lo as i128 + 1).ok()?;
-    Some((lo, hi))
 }
 
 fn token_text(t: &Tok) -> String {

@@ -360,7 +360,6 @@ impl Weight for Interval {
     fn is_zero(&self) -> bool {
         self.lo == 0.0 && self.hi == 0.0
     }
-    const CYCLOTOMIC: bool = true;
     /// The enclosure of a real element Σ c_i ζ_N^i of a cyclotomic field:
     /// Σ c_i cos(2πi/N), each coefficient and cosine enclosed. Realness is
     /// decided exactly; a non-real (or undefined) element has no enclosure.

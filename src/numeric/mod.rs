@@ -5,10 +5,12 @@
 pub mod cyclotomic;
 pub mod exact;
 pub mod expr;
+pub mod field;
 pub mod interval;
 pub mod recognise;
 pub mod weight;
 
 pub use cyclotomic::Cyclotomic;
+pub use field::{EvalError, ExprField, Reading};
 pub use interval::Interval;
 pub use weight::{Inexact, ParamValue, Rational, Weight};

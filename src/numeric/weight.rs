@@ -48,14 +48,9 @@ pub trait Weight:
     fn param(p: &ParamValue) -> Result<Self, Inexact>;
     fn to_f64(&self) -> f64;
     fn is_zero(&self) -> bool;
-    /// Whether a scheme file's weight that is not rational is evaluated
-    /// exactly in a cyclotomic field for this type (and handed over by
-    /// [`Weight::from_cyclotomic`]): true for `Cyclotomic` and for
-    /// `Interval`, which encloses the exact value. f64 evaluates such weights
-    /// in floating point; the rationals take rational weights only.
-    const CYCLOTOMIC: bool = false;
-    /// The weight of an exact element of a cyclotomic field;
-    /// `Err(Inexact)` when this type cannot represent it.
+    /// The weight of an exact element of a cyclotomic field (a scheme file's
+    /// weight that is not rational); `Err(Inexact)` when this type cannot
+    /// represent it (the rationals).
     fn from_cyclotomic(c: &Cyclotomic) -> Result<Self, Inexact>;
 }
 

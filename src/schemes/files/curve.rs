@@ -94,6 +94,14 @@ impl CurveFileDef {
         Ok(def)
     }
 
+    /// Each rule's terms and common factor, offsets dropped (`weight_sites`).
+    pub(crate) fn terms(&self) -> Vec<(Vec<Term<()>>, Option<Term<()>>)> {
+        [&self.even, &self.odd]
+            .iter()
+            .map(|r| (r.terms.iter().map(Term::unplaced).collect(), r.scale.clone()))
+            .collect()
+    }
+
     /// The scheme with `name=value` parameter overrides: every weight finite
     /// and real, each rule summing to 1 unless `affine = false`.
     pub fn build(&self, overrides: &[(String, String)]) -> Result<CurveFileScheme, Error> {

@@ -110,6 +110,11 @@ impl LatticeFileDef {
         Ok(def)
     }
 
+    /// Each mask's terms and common factor, offsets dropped (`weight_sites`).
+    pub(crate) fn terms(&self) -> Vec<(Vec<Term<()>>, Option<Term<()>>)> {
+        self.masks.iter().flatten().map(|m| (m.terms.iter().map(Term::unplaced).collect(), m.scale.clone())).collect()
+    }
+
     /// The scheme with `name=value` parameter overrides: every weight a finite
     /// rational, each mask summing to 1 unless `affine = false`.
     pub fn build(&self, overrides: &[(String, String)]) -> Result<LatticeFileScheme, Error> {

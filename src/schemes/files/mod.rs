@@ -30,7 +30,7 @@ use super::user::UserParam;
 use super::Params;
 use crate::error::Error;
 use crate::numeric::expr::{Env, Expr};
-use crate::numeric::{ParamValue, Rational, Weight};
+use crate::numeric::{Cyclotomic, Interval, ParamValue, Rational, Reading, Weight};
 
 /// Scheme files are a few dozen lines; the caps keep a malformed or hostile
 /// file from costing unbounded time or memory (mesh, lattice and curve files).
@@ -99,6 +99,46 @@ pub fn load(path: &Path, overrides: &[(String, String)]) -> Result<Built, Error>
         Family::Lattice => Built::Lattice(Box::new(lattice::LatticeFileDef::parse(&text, &file)?.build(overrides)?)),
         Family::Curve => Built::Curve(Box::new(curve::CurveFileDef::parse(&text, &file)?.build(overrides)?)),
     })
+}
+
+/// One weight of a scheme file at one point of its rules: the field that
+/// writes it, its expression, and the variables it is evaluated with (the
+/// parameters at their defaults, and for mesh files n, j and m).
+#[derive(Clone, Debug)]
+pub struct WeightSite {
+    /// "rule.family" (mesh files) or "section.\"offset\"" (lattice and curve files)
+    pub field: String,
+    pub expr: Expr,
+    pub env: Env,
+}
+
+/// Every weight a scheme file of any family defines, at its default
+/// parameters: for mesh files at each valence in `valences` (or the rule's
+/// fixed one), every index j the rule asks for and, for face-corner fields,
+/// every corner count m in `valences`; for lattice and curve files each mask
+/// term and common factor. For checking that every arithmetic reads a file
+/// alike.
+pub fn weight_sites(path: &Path, valences: std::ops::RangeInclusive<i64>) -> Result<Vec<WeightSite>, Error> {
+    let text = read_scheme_file(path)?;
+    let file = path.display().to_string();
+    let terms = |head: &Head, rules: Vec<(&[Term<()>], Option<&Term<()>>)>| -> Result<Vec<WeightSite>, Error> {
+        let (env, _) = head.values(&[])?;
+        let site = |t: &Term<()>| WeightSite { field: t.field.clone(), expr: t.expr.clone(), env: env.clone() };
+        Ok(rules.into_iter().flat_map(|(ts, scale)| ts.iter().chain(scale).map(site).collect::<Vec<_>>()).collect())
+    };
+    match family_of_text(&text, &file)? {
+        Family::Mesh => super::user::UserSchemeDef::parse(&text, &file)?.weight_sites(valences),
+        Family::Lattice => {
+            let d = lattice::LatticeFileDef::parse(&text, &file)?;
+            let masks = d.terms();
+            terms(&d.head, masks.iter().map(|(t, s)| (t.as_slice(), s.as_ref())).collect())
+        }
+        Family::Curve => {
+            let d = curve::CurveFileDef::parse(&text, &file)?;
+            let rules = d.terms();
+            terms(&d.head, rules.iter().map(|(t, s)| (t.as_slice(), s.as_ref())).collect())
+        }
+    }
 }
 
 /// What `subdlab schemes FILE` shows of a file of any family.
@@ -356,44 +396,55 @@ pub(crate) struct Term<O> {
     pub field: String,
 }
 
+impl<O> Term<O> {
+    /// The same weight without its offset.
+    pub(crate) fn unplaced(&self) -> Term<()> {
+        Term { offset: (), expr: self.expr.clone(), line: self.line, field: self.field.clone() }
+    }
+}
+
 /// A weight evaluated: the float always, the rational when the expression has
-/// an exact value at these parameter values.
+/// an exact rational value at these parameter values.
 pub(crate) struct Value {
     pub float: f64,
     pub exact: Option<Rational>,
 }
 
-/// Evaluate a weight, `scale` times the term's expression. An error names the
-/// field when the value is not a finite real number.
+/// Evaluate a weight, `scale` times the term's expression. Each factor is
+/// read exactly where it can be (`Expr::reading`), so the float is the exact
+/// value rounded and cannot describe another mask than the exact one. An
+/// error names the field when the value is not a finite real number.
 pub(crate) fn evaluate<O>(head: &Head, term: &Term<O>, scale: Option<&Term<()>>, env: &Env) -> Result<Value, Error> {
     let err = |t_line: usize, field: &str, msg: &dyn std::fmt::Display| field_error(&head.file, t_line, field, msg);
-    let one = |t_line: usize, field: &str, e: &Expr| -> Result<Value, Error> {
-        let z = e.eval(env).map_err(|m| err(t_line, field, &m))?;
-        if !z.re.is_finite() || !z.im.is_finite() {
-            return Err(err(t_line, field, &"the weight is not a finite number"));
-        }
-        if z.im.abs() > 1e-12 * z.re.abs().max(1.0) {
-            return Err(err(t_line, field, &format!("the weight is complex ({} + {}i)", z.re, z.im)));
-        }
-        Ok(Value { float: z.re, exact: e.exact(env) })
+    let one = |t_line: usize, field: &str, e: &Expr| -> Result<Reading, Error> {
+        let r = e.reading(env).map_err(|m| err(t_line, field, &m))?;
+        r.real().map_err(|m| err(t_line, field, &m))?;
+        Ok(r)
     };
     let v = one(term.line, &term.field, &term.expr)?;
-    let v = match scale {
-        None => v,
-        Some(s) => {
-            let f = one(s.line, &s.field, &s.expr)?;
-            Value {
-                float: v.float * f.float,
-                exact: match (v.exact, f.exact) {
-                    (Some(a), Some(b)) => Some(a * b),
-                    _ => None,
-                },
-            }
-        }
+    let Some(s) = scale else {
+        return Ok(Value { float: v.real()?, exact: v.rational().cloned() });
     };
-    // the float of an exact weight is its correctly rounded value, as a
-    // built-in's `W::ratio(p, q)` is, not the product of rounded factors
-    Ok(Value { float: v.exact.as_ref().map_or(v.float, Weight::to_f64), exact: v.exact })
+    let f = one(s.line, &s.field, &s.expr)?;
+    let floats = v.real()? * f.real()?;
+    Ok(match (v, f) {
+        // the float of an exact weight is its correctly rounded value, as a
+        // built-in's `W::ratio(p, q)` is, not the product of rounded factors
+        (Reading::Rational(a), Reading::Rational(b)) => {
+            let q = a * b;
+            Value { float: Weight::to_f64(&q), exact: Some(q) }
+        }
+        (Reading::Float(_), _) | (_, Reading::Float(_)) => Value { float: floats, exact: None },
+        (a, b) => {
+            let product = |r: Reading| match r {
+                Reading::Rational(q) => Cyclotomic::from_rational(&q),
+                Reading::Cyclotomic(c, _) => c,
+                Reading::Float(_) => unreachable!("float readings are handled above"),
+            };
+            let c = product(a) * product(b);
+            Value { float: Reading::Cyclotomic(c.clone(), Interval::from_cyclotomic(&c).ok()).real()?, exact: None }
+        }
+    })
 }
 
 /// A scheme's name and description live for the rest of the process (the

@@ -12,7 +12,7 @@ use toml::Spanned;
 use super::weights::eval_f64;
 use crate::numeric::expr::{Env, Expr};
 use crate::numeric::ParamValue;
-use crate::schemes::files::{line_of, parameter_env, parameter_table, read_scheme_file, ParamDoc};
+use crate::schemes::files::{line_of, parameter_env, parameter_table, read_scheme_file, ParamDoc, WeightSite};
 use crate::sdc::slots::{Arity, Host, HostSpec, OriginKind, RuleSlots, Valence, HOSTS};
 
 // the caps every scheme file has (one place: `schemes::files`)
@@ -268,6 +268,39 @@ impl UserSchemeDef {
     /// Parameter values: the defaults, then `name=value` overrides.
     pub(super) fn env(&self, overrides: &[(String, String)]) -> Result<Env, Error> {
         parameter_env(&self.name, &self.params, overrides)
+    }
+
+    /// Every weight of the rules at the default parameters, at each valence
+    /// in `valences` (a rule with a fixed valence at that one), every j the
+    /// field is asked for and, for face-corner fields, every corner count m
+    /// in `valences`.
+    pub fn weight_sites(&self, valences: std::ops::RangeInclusive<i64>) -> Result<Vec<WeightSite>, Error> {
+        let params = self.env(&[])?;
+        let mut out = Vec::new();
+        for rule in &self.rules {
+            let ns = match rule.spec.valence {
+                Valence::Any => valences.clone(),
+                Valence::Fixed(k) => k as i64..=k as i64,
+            };
+            for field in &rule.fields {
+                let corners = matches!(field.arity, Arity::FaceCorners(_));
+                let ms: Vec<Option<i64>> = if corners { valences.clone().map(Some).collect() } else { vec![None] };
+                for n in ns.clone() {
+                    for &m in &ms {
+                        for j in 0..field.arity.js(n as usize) as i64 {
+                            let mut env = params.clone();
+                            env.insert("n".into(), ParamValue::from_ratio(n, 1));
+                            env.insert("j".into(), ParamValue::from_ratio(j, 1));
+                            if let Some(m) = m {
+                                env.insert("m".into(), ParamValue::from_ratio(m, 1));
+                            }
+                            out.push(WeightSite { field: field.key.clone(), expr: field.expr.clone(), env });
+                        }
+                    }
+                }
+            }
+        }
+        Ok(out)
     }
 
     /// Every weight must be a finite real number at n = 3..12 (or at the

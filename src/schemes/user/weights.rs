@@ -1,7 +1,8 @@
-//! Weight evaluation: a field's expression at (n, j), in the arithmetic the
-//! caller asks for (floats; exact rationals where the weight is rational;
-//! for the weight types that take them, `Weight::CYCLOTOMIC`, exact elements
-//! of a cyclotomic field where it holds cos(2πk/n)), cached because
+//! Weight evaluation: a field's expression at (n, j) (and m), read once
+//! (`Expr::reading`: exactly in the rationals, else in a cyclotomic field,
+//! else in floats) and handed to every weight type from that one reading: f64
+//! gets the exact value rounded, the rationals rational weights, the
+//! cyclotomic and interval types the exact element. Cached because
 //! refinement asks for the same weight at every vertex and a Fourier-sum
 //! weight costs n terms.
 
@@ -11,7 +12,7 @@ use std::sync::Mutex;
 
 use crate::error::Error;
 use crate::numeric::expr::{Env, Expr};
-use crate::numeric::{Cyclotomic, Inexact, ParamValue, Weight};
+use crate::numeric::{Cyclotomic, Inexact, ParamValue, Reading, Weight};
 
 /// Entries the weight cache holds before it starts afresh (a sweep over many
 /// valences must not grow it without bound).
@@ -29,38 +30,30 @@ fn with_nj(params: &Env, n: i64, j: i64, m: Option<i64>) -> Env {
     env
 }
 
-/// A weight in floating point, with a reason when it is not a finite real.
+/// A scheme file's weight as read (`Expr::reading`): exactly where it can
+/// be, the float value that exact value rounded.
+pub(super) fn reading(expr: &Expr, params: &Env, n: i64, j: i64, m: Option<i64>) -> Result<Reading, Error> {
+    expr.reading(&with_nj(params, n, j, m))
+}
+
+/// A weight in floating point (the exact value rounded wherever there is
+/// one), with a reason when it is not a finite real.
 pub(super) fn eval_f64(expr: &Expr, params: &Env, n: i64, j: i64, m: Option<i64>) -> Result<f64, Error> {
-    let z = expr.eval(&with_nj(params, n, j, m))?;
-    if !z.re.is_finite() || !z.im.is_finite() {
-        return Err(Error::File("the weight is not a finite number".into()));
-    }
-    if z.im.abs() > 1e-12 * z.re.abs().max(1.0) {
-        return Err(Error::File(format!("the weight is complex ({} + {}i)", z.re, z.im)));
-    }
-    Ok(z.re)
+    reading(expr, params, n, j, m)?.real()
 }
 
-/// The arithmetic a weight is evaluated in.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-enum Arithmetic {
-    Float,
-    /// rational weights only
-    Rational,
-    /// rational weights, else exact in a cyclotomic field
-    Cyclotomic,
-}
-
-/// A weight as evaluated: a number (float, or exact rational), or an exact
-/// element of a cyclotomic field that is not rational.
+/// A weight as evaluated once for every weight type: an exact value with its
+/// rounding, or (no exact reading) a float.
 #[derive(Clone, Debug)]
 enum Evaluated {
-    Number(ParamValue),
-    Field(Cyclotomic),
+    Rational(ParamValue),
+    /// exact in a cyclotomic field, real and not rational; its rounding
+    Field(Cyclotomic, f64),
+    Float(f64),
 }
 
-/// (field, n, j, m, arithmetic, per-vertex parameter value's bits) -> the weight.
-type Cache = HashMap<(usize, i64, i64, Option<i64>, Arithmetic, Option<u64>), Result<Evaluated, Inexact>>;
+/// (field, n, j, m, per-vertex parameter value's bits) -> the weight.
+type Cache = HashMap<(usize, i64, i64, Option<i64>, Option<u64>), Result<Evaluated, Inexact>>;
 
 /// The weight fields of a built scheme with their parameter values.
 pub(super) struct WeightTable {
@@ -93,26 +86,22 @@ impl WeightTable {
         m: Option<i64>,
         vertex: Option<(&str, f64)>,
     ) -> Result<W, Inexact> {
-        // evaluate only in the arithmetic asked for: exact evaluation of an
-        // irrational weight fails, and float stencils must not pay for it
         let float = TypeId::of::<W>() == TypeId::of::<f64>();
         if vertex.is_some() && !float {
             return Err(Inexact);
         }
-        let arithmetic = match (float, W::CYCLOTOMIC) {
-            (true, _) => Arithmetic::Float,
-            (false, true) => Arithmetic::Cyclotomic,
-            (false, false) => Arithmetic::Rational,
-        };
         let j = if self.uses_j[k] { j } else { 0 };
         // m is a variable of face-corner fields only (a face-corner slot always has one)
         let m = if self.face_corner[k] { Some(m.ok_or(Inexact)?) } else { None };
-        let id = (k, n, j, m, arithmetic, vertex.map(|v| v.1.to_bits()));
+        // one reading serves every weight type: the float stencils see the
+        // exact value rounded, so they cannot describe another scheme than
+        // the exact and interval ones
+        let id = (k, n, j, m, vertex.map(|v| v.1.to_bits()));
         let cached = self.cache.lock().unwrap_or_else(|e| e.into_inner()).get(&id).cloned();
         let value = match cached {
             Some(v) => v,
             None => {
-                let v = self.evaluate(k, n, j, m, arithmetic, vertex);
+                let v = self.evaluate(k, n, j, m, vertex);
                 let mut cache = self.cache.lock().unwrap_or_else(|e| e.into_inner());
                 if cache.len() >= CACHE_ENTRIES {
                     cache.clear();
@@ -122,8 +111,13 @@ impl WeightTable {
             }
         };
         match value? {
-            Evaluated::Number(p) => W::param(&p),
-            Evaluated::Field(c) => W::from_cyclotomic(&c),
+            // a rational weight is taken exactly in floats too: a zero is
+            // then a zero (as with the built-ins' exact cosines), not 6e-17,
+            // and the stencil's support is the built-in's
+            Evaluated::Rational(p) => W::param(&p),
+            Evaluated::Field(_, x) if float => W::param(&ParamValue::from_f64(x)),
+            Evaluated::Field(c, _) => W::from_cyclotomic(&c),
+            Evaluated::Float(x) => W::param(&ParamValue { value: x, exact: None, text: String::new() }),
         }
     }
 
@@ -133,33 +127,20 @@ impl WeightTable {
         n: i64,
         j: i64,
         m: Option<i64>,
-        arithmetic: Arithmetic,
         vertex: Option<(&str, f64)>,
     ) -> Result<Evaluated, Inexact> {
         let mut env = with_nj(&self.env, n, j, m);
         if let Some((name, value)) = vertex {
             env.insert(name.to_string(), ParamValue::from_f64(value));
         }
-        // a rational weight is taken exactly in floats too: a zero is then a
-        // zero (as with the built-ins' exact cosines), not 6e-17, and the
-        // stencil's support is the built-in's
-        if let Some(q) = self.exprs[k].exact(&env) {
-            return Ok(Evaluated::Number(ParamValue { value: q.to_f64(), exact: Some(q), text: String::new() }));
-        }
-        match arithmetic {
-            Arithmetic::Float => {
-                let z = self.exprs[k].eval(&env).map_err(|_| Inexact)?;
-                if !z.re.is_finite() || z.im.abs() > 1e-12 * z.re.abs().max(1.0) {
-                    return Err(Inexact);
-                }
-                Ok(Evaluated::Number(ParamValue { value: z.re, exact: None, text: String::new() }))
-            }
-            Arithmetic::Rational => Err(Inexact),
-            // a weight is a real number: an exact value with an imaginary
-            // part (however small) is no weight
-            Arithmetic::Cyclotomic => {
-                self.exprs[k].cyclotomic(&env).filter(Cyclotomic::is_real).map(Evaluated::Field).ok_or(Inexact)
-            }
-        }
+        let reading = self.exprs[k].reading(&env).map_err(|_| Inexact)?;
+        // a weight is a real number: an exact value with an imaginary part
+        // (however small) is no weight
+        let x = reading.real().map_err(|_| Inexact)?;
+        Ok(match reading {
+            Reading::Rational(q) => Evaluated::Rational(ParamValue { value: x, exact: Some(q), text: String::new() }),
+            Reading::Cyclotomic(c, _) => Evaluated::Field(c, x),
+            Reading::Float(_) => Evaluated::Float(x),
+        })
     }
 }
