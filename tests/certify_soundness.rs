@@ -19,6 +19,7 @@
 mod common;
 
 use subdlab::certify::{certify_analysis, certify_charmap, Verdict};
+use subdlab::charmap::{check_map, CharMapOptions};
 use subdlab::claims::{evaluate, parse_file, Verdict as ClaimVerdict};
 use subdlab::neighbourhood::{Configuration, NeighbourhoodKind};
 use subdlab::schemes::{self, Scheme};
@@ -60,6 +61,11 @@ fn the_toggle_reproducer_is_never_proved_and_its_fold_is_disproved() {
             assert!(matches!(&c.regularity, Verdict::Disproved(w) if w.contains("changes sign")), "n = {n}");
             let w = c.fold_witness.as_ref().expect("a fold witness");
             assert!(w.negative_upper_bound < 0.0 && w.positive_lower_bound > 0.0);
+            // a second, independent route: the floating-point raster of the
+            // same map (the file's float reading is its exact one rounded)
+            // finds folded facets too
+            let raster = check_map(s.as_ref(), &a, &CharMapOptions::checked(4, 512).unwrap()).unwrap();
+            assert!(!raster.regular, "n = {n}: the raster should see the fold");
         }
     }
 }
