@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Independent checker of subdlab certificate documents (spectral part).
+"""Independent checker of subdlab certificate documents (spectral and
+characteristic-map parts).
 
     python3 scripts/check_cert.py CERTIFICATE.json
 
@@ -33,6 +34,13 @@ definition of S, and everything else is recomputed here.
   parts, holding 1) is decided exactly on the discs' binary64 values.
 - The verdict's logic: for PROVED, λ0's and λ1's components and the gap; for
   DISPROVED, the witness inequality.
+- The characteristic-map part (Checker.charmap): λ1's eigenvector enclosed
+  from block 1's V and the discs recomputed above, the net refined by the
+  document's exact stencils in the interval arithmetic above, every claimed
+  Jacobian sign, the half-planes and the winding number (exactly). Trusted:
+  the stencils being the scheme's rules, the box-spline Jacobian and hull
+  bounds over a window, the covering of the neighbourhood, the windows'
+  lattice layout and the chain (listed in the document's `trusted`).
 """
 
 import json
@@ -553,11 +561,17 @@ class Checker:
         parts = get(doc, "parts", "document")
         if not isinstance(parts, dict) or not parts:
             raise Malformed("'parts' is not a non-empty object")
-        unknown = sorted(set(parts) - {"spectrum"})
+        unknown = sorted(set(parts) - {"spectrum", "charmap"})
         if unknown:
-            reject(f"part(s) {', '.join(unknown)}: this checker re-checks only the 'spectrum' part")
+            reject(f"part(s) {', '.join(unknown)}: this checker re-checks only the 'spectrum' and 'charmap' parts")
+        if "spectrum" not in parts:
+            reject("the document has no spectrum part, on which every other part rests")
         self.ok(f"document: {doc.get('scheme')} at valence {doc.get('valence')}, {doc.get('neighbourhood')} neighbourhood")
         self.spectrum(parts["spectrum"])
+        if "charmap" in parts:
+            self.charmap(parts["charmap"])
+        elif doc.get("charmap_omitted"):
+            self.lines.append(f"  --  no charmap part: {doc['charmap_omitted']}")
 
     # -- the matrix and its premises
 
@@ -788,6 +802,9 @@ class Checker:
         want = list(range(self.g)) if self.method == "dft" else [0]
         got = [as_int(get(b, "block", "block"), "block index") for b in blocks]
         self.discs, self.components, self.failed = {}, {}, []
+        # for the characteristic map: per block V, the disc rows of each
+        # component, and the radii recomputed here (scale 2^-P)
+        self.vmats, self.comp_rows, self.needs = {}, {}, {}
         if not blocks and self.verdict == "NOT PROVED":
             self.lines.append("  --  no enclosures (the verdict stopped before them)")
             return
@@ -828,6 +845,7 @@ class Checker:
             delta = -((-eps * norm) // (UNIT - eps))  # ⌈ε‖M‖/(1 − ε)⌉ at scale 2^-P
             discs_doc = as_list(get(b, "discs", f"block {m}"), f"block {m} discs", k)
             discs = []
+            needs = []
             for i, d in enumerate(discs_doc):
                 d = as_list(d, f"block {m} disc {i}", 3)
                 re_, im_, rad = (as_float(x, f"block {m} disc {i}") for x in d)
@@ -841,6 +859,7 @@ class Checker:
                         f"block {m}: disc {i} claims radius {rad:.6e}, but the Gershgorin bound about its centre "
                         f"is {need / UNIT:.6e}"
                     )
+                needs.append(need)
                 slack = claimed - Fraction(need, UNIT)
                 worst_slack = slack if worst_slack is None else min(worst_slack, slack)
                 discs.append(Disc(re_, im_, rad))
@@ -861,6 +880,7 @@ class Checker:
                     if owner[i] != owner[j] and not disjoint(discs[i], discs[j]):
                         reject(f"block {m}: discs {i} and {j} are in different components but not disjoint")
             self.discs[m] = discs
+            self.vmats[m], self.comp_rows[m], self.needs[m] = v, comps, needs
             self.components[m] = [[discs[i] for i in idx] for idx in comps]
         self.failed = failed
         n = len(blocks) - len(failed)
@@ -940,6 +960,7 @@ class Checker:
             lows.append(lo)
             highs.append(hi)
         lam1_lo = min(lows)
+        self.lambda1_named = named1
         self.ok(
             f"λ1: simple in blocks 1 and {g - 1}, real (its component meets the real axis, its mirror image no other "
             f"component), {float(lam1_lo):.12f} ≤ λ1 ≤ {float(max(highs)):.12f}, below λ0"
@@ -1059,6 +1080,260 @@ class Checker:
             self.ok(f"witness: the leading eigenvalue of block {m} (above the rest of its block) has negative real part")
             return
         reject(f"DISPROVED: block {m}'s leading component {i} is neither off the real axis nor negative")
+
+    # -- the characteristic map
+
+    def charmap(self, part):
+        """Re-check the geometric half of Reif's criterion from the spectral
+        part's own block 1: the eigenvector enclosure, the exact refinement,
+        every claimed Jacobian sign, the half-planes and the winding number."""
+        what = "charmap"
+        verdicts = {k: get(part, k, what) for k in ("regularity", "injectivity", "c1")}
+        for k, v in verdicts.items():
+            if v not in ("PROVED", "DISPROVED", "NOT PROVED"):
+                raise Malformed(f"charmap: unknown {k} verdict {v!r}")
+        if self.verdict != "PROVED":
+            reject("a charmap part needs the spectrum PROVED: without a certified λ1 there is no map")
+        levels = as_int(get(part, "levels", what), "charmap levels")
+        x0 = self.eigenvector(get(part, "eigenvector", what))
+        pts = self.refined_points(get(part, "points", what), x0)
+        self.ok(f"net: {len(pts) - len(x0)} refined point(s) from the {len(x0)} analysis points by exact stencils "
+                f"({levels} analysis steps), in interval arithmetic")
+        sign = self.check_faces(as_list(get(part, "faces", what), "charmap faces"), pts, verdicts["regularity"])
+        winding = get(part, "winding", what)
+        number = None
+        if winding is not None:
+            number = self.check_winding(winding, pts)
+        inj = verdicts["injectivity"]
+        if inj == "PROVED":
+            if verdicts["regularity"] != "PROVED" or number is None:
+                reject("injectivity PROVED needs regularity PROVED and a winding number")
+            if number != sign:
+                reject(f"injectivity PROVED, but the winding number {number} is not the Jacobian's sign {sign}")
+            self.ok(f"injectivity: regular with winding number {number} = the Jacobian's sign (Peters–Reif)")
+        elif inj == "DISPROVED":
+            if verdicts["regularity"] == "DISPROVED":
+                self.ok("injectivity DISPROVED: the map is not regular")
+            elif verdicts["regularity"] == "PROVED" and number is not None and number != sign:
+                self.ok(f"injectivity DISPROVED: regular with winding number {number} ≠ ±1 of its sign")
+            else:
+                reject("injectivity DISPROVED without a fold or a winding number other than the Jacobian's sign")
+        parts = [self.verdict, verdicts["regularity"], inj]
+        want = "DISPROVED" if "DISPROVED" in parts else "NOT PROVED" if "NOT PROVED" in parts else "PROVED"
+        if verdicts["c1"] != want:
+            reject(f"the C¹ verdict {verdicts['c1']} does not follow from its parts ({', '.join(parts)}): {want}")
+        self.ok(f"C¹ (Reif): {want}; trusted, not re-checked: " + "; ".join(as_list(get(part, "trusted", what), "trusted")))
+        self.verdict = f"spectrum {self.verdict}, C¹ {want}"
+
+    def eigenvector(self, claim):
+        """λ1's eigenvector of block 1 enclosed from V and the discs
+        recomputed here (discs::eigenvector's lemma), spread over the
+        neighbourhood: balls (re, im) per matrix index."""
+        m, ci = self.lambda1_named[0]
+        rows = self.comp_rows[m][ci]
+        if len(rows) != 1:
+            reject("λ1's component in block 1 is not one disc")
+        i = rows[0]
+        if as_int(get(claim, "block", "eigenvector"), "eigenvector block") != 1 or get(claim, "disc", "eigenvector") != i:
+            reject(f"the eigenvector is claimed for {claim}, but λ1's disc is row {i} of block 1")
+        discs, need = self.discs[m], self.needs[m]
+        k = len(discs)
+        ci_re, ci_im = Fraction(discs[i].re), Fraction(discs[i].im)
+        q = [Fraction(0)] * k
+        for j in range(k):
+            if j == i:
+                continue
+            d2 = (Fraction(discs[j].re) - ci_re) ** 2 + (Fraction(discs[j].im) - ci_im) ** 2
+            # |c_j − c_i| from below at scale 2^-P, less the recomputed r_i
+            lower = math.isqrt(math.floor(d2 * UNIT * UNIT)) - need[i]
+            if lower <= 0:
+                reject(f"the eigenvector is not enclosed: disc {i} (λ1) meets disc {j} of block 1")
+            q[j] = Fraction(need[j], lower)
+            if q[j] >= 1:
+                reject(f"the eigenvector is not enclosed: q_{j} = r_{j}/(|c_{j} − c_{i}| − r_{i}) ≥ 1")
+        vr, vi, vrr, vri = self.vmats[m]
+        z = []
+        for l in range(k):
+            s = sum((mag(vr[l][j], vi[l][j], vrr[l][j], vri[l][j]) * q[j] for j in range(k) if j != i), Fraction(0))
+            s = math.ceil(s)
+            z.append(((vr[l][i], vrr[l][i] + s), (vi[l][i], vri[l][i] + s)))
+        order = [o for o in range(len(self.rep)) if not self.fixed[o]]
+        pos = {o: a for a, o in enumerate(order)}
+        out = []
+        for o, t in self.member:
+            if self.fixed[o]:
+                out.append(((0, 0), (0, 0)))
+                continue
+            (zr, zi) = z[pos[o]]
+            cm, cr, sm, sr = cos_sin(t, self.g)
+            c, s = (cm, cr), (sm, sr)
+            re = ball_sub(ball_mul(zr, c, P), ball_mul(zi, s, P))
+            im = ball_add(ball_mul(zr, s, P), ball_mul(zi, c, P))
+            out.append((re, im))
+        self.ok(f"eigenvector: block 1's disc {i} (λ1's), |y_j| ≤ q_j ≤ {float(max(q)):.3e} from the recomputed discs; "
+                f"x_(t,a) = ω^t z_a over {len(out)} points")
+        return out
+
+    def refined_points(self, points, x0):
+        n0 = as_int(get(points, "level0", "points"), "points.level0")
+        if n0 != len(x0):
+            reject(f"the net starts from {n0} points, the neighbourhood has {len(x0)}")
+        pts = list(x0)
+        raw = as_list(get(points, "stencils", "points"), "points.stencils")
+        weights = {}
+        orders = set()
+        for st in raw:
+            for e in as_list(st, "stencil"):
+                w = as_list(e, "stencil term", 2)[1]
+                if isinstance(w, dict):
+                    orders.add(as_int(get(w, "order", "weight"), "weight order", MAX_FIELD + 1))
+        field = Field(math.lcm(*orders)) if orders else None
+        if field is not None and field.order > MAX_FIELD:
+            reject(f"the stencils need Q(ζ_{field.order}), beyond Q(ζ_{MAX_FIELD})")
+        sums = {}
+        for n, st in enumerate(raw):
+            re, im = (0, 0), (0, 0)
+            # every rule reproduces constants: the weights sum to 1 exactly
+            # (a consistency check; that they are the scheme's rules is trusted)
+            total = ()
+            for e in st:
+                parent = as_int(e[0], "stencil parent", len(pts))  # only earlier points
+                w = e[1]
+                key = w if isinstance(w, str) else json.dumps(w, sort_keys=True)
+                if key not in weights:
+                    if isinstance(w, str):
+                        weights[key] = as_ratio(w, "stencil weight")
+                    elif isinstance(w, dict):
+                        terms = tuple((as_int(t[0], "power"), as_ratio(t[1], "coefficient")) for t in get(w, "coefficients", "weight"))
+                        x = field.element(as_int(w["order"], "order"), terms)
+                        if not field.is_real(x):
+                            reject(f"stencil {n}: a weight is not real")
+                        weights[key] = field.value(x)
+                    else:
+                        raise Malformed("a stencil weight is neither 'p/q' nor a cyclotomic element")
+                if key not in sums:
+                    if isinstance(w, str):
+                        q = as_ratio(w, "stencil weight")
+                        sums[key] = (q,) if q else ()
+                    else:
+                        terms = tuple((as_int(t[0], "power"), as_ratio(t[1], "coefficient")) for t in w["coefficients"])
+                        sums[key] = field.element(as_int(w["order"], "order"), terms)
+                total = field.add(total, sums[key]) if field else _add_q(total, sums[key])
+                wt = weights[key]
+                pr, pi = pts[parent]
+                if isinstance(wt, Fraction):
+                    re = ball_add(re, scale_ball(wt, *pr))
+                    im = ball_add(im, scale_ball(wt, *pi))
+                else:
+                    re = ball_add(re, ball_mul(wt, pr, P))
+                    im = ball_add(im, ball_mul(wt, pi, P))
+            if total != (Fraction(1),):
+                reject(f"stencil {n}: its weights do not sum to 1")
+            pts.append((re, im))
+        return pts
+
+    def check_faces(self, faces, pts, regularity):
+        """Every claimed sign re-proved from det(u_i, v_j) over the window's
+        edge vectors; returns the common sign (+1, −1) or None."""
+        count = {"+": 0, "-": 0, "?": 0}
+        self.windows = []
+        worst = None
+        for f, face in enumerate(faces):
+            claim = get(face, "sign", "face")
+            if claim not in count:
+                raise Malformed(f"face {f}: sign {claim!r}")
+            edges = []
+            for name in ("u_edges", "v_edges"):
+                vecs = []
+                for e in as_list(get(face, name, "face"), f"face {f} {name}"):
+                    a, b = (as_int(x, "edge point", len(pts)) for x in as_list(e, "edge", 2))
+                    vecs.append((ball_sub(pts[b][0], pts[a][0]), ball_sub(pts[b][1], pts[a][1]), a, b))
+                edges.append(vecs)
+            us, vs = edges
+            if not us or not vs:
+                reject(f"face {f}: a window without edges along both directions")
+            self.windows.append({p for e in us + vs for p in e[2:]})
+            count[claim] += 1
+            if claim == "?":
+                continue
+            lo, hi = None, None
+            for ux, uy, _, _ in us:
+                for vx, vy, _, _ in vs:
+                    dm, dr = ball_sub(ball_mul(ux, vy, P), ball_mul(uy, vx, P))
+                    lo = dm - dr if lo is None else min(lo, dm - dr)
+                    hi = dm + dr if hi is None else max(hi, dm + dr)
+            if claim == "+" and not lo > 0:
+                reject(f"face {f}: the Jacobian is claimed positive, but det(u_i, v_j) may be as low as {lo / UNIT:.3e}")
+            if claim == "-" and not hi < 0:
+                reject(f"face {f}: the Jacobian is claimed negative, but det(u_i, v_j) may be as high as {hi / UNIT:.3e}")
+            margin = lo if claim == "+" else -hi
+            worst = margin if worst is None else min(worst, margin)
+        n = len(faces)
+        self.ok(f"Jacobian: {n} ring faces, {count['+']} proved > 0, {count['-']} proved < 0, {count['?']} not claimed "
+                f"(least proved margin {float(Fraction(worst or 0, UNIT)):.3e})")
+        if regularity == "PROVED":
+            if n == 0 or count["?"] or (count["+"] and count["-"]):
+                reject("regularity PROVED needs every ring face proved of one sign")
+            self.ok("regularity: one sign on every ring face (the covering of the neighbourhood is trusted)")
+            return 1 if count["+"] else -1
+        if regularity == "DISPROVED":
+            if not (count["+"] and count["-"]):
+                reject("regularity DISPROVED needs one face proved positive and one proved negative")
+            self.ok("regularity DISPROVED: faces of both proved signs")
+        return None
+
+    def check_winding(self, w, pts):
+        what = "winding"
+        wins = as_list(get(w, "windows", what), "winding windows")
+        k = len(wins)
+        if k < 3:
+            reject(f"a winding chain of {k} edges")
+        verts = as_list(get(w, "vertices", what), "winding vertices", k)
+        dirs = as_list(get(w, "directions", what), "winding directions", k)
+        poly = as_list(get(w, "polygon", what), "winding polygon", k)
+        wins = [as_int(x, "chain window", len(self.windows)) for x in wins]
+        d = [tuple(as_float(c, "direction") for c in as_list(x, "direction", 2)) for x in dirs]
+        wp = [tuple(Fraction(as_float(c, "polygon point")) for c in as_list(x, "polygon point", 2)) for x in poly]
+        for i in range(k):
+            dx, dy = ball_of_float(d[i][0]), ball_of_float(d[i][1])
+            for p in sorted(self.windows[wins[i]]):
+                m, r = ball_add(ball_mul(dx, pts[p][0], P), ball_mul(dy, pts[p][1], P))
+                if not m - r > 0:
+                    reject(f"winding: a point of window {wins[i]} is not proved in its half-plane d_{i}·p > 0")
+            v = as_int(verts[i], "chain vertex", len(pts))
+            if v not in self.windows[wins[i]] or v not in self.windows[wins[(i + 1) % k]]:
+                reject(f"winding: chain vertex {i + 1} is not a point of both windows beside it")
+            for j in (i, (i + 1) % k):
+                if not Fraction(d[j][0]) * wp[i][0] + Fraction(d[j][1]) * wp[i][1] > 0:
+                    reject(f"winding: polygon point w_{i} is not in the half-plane H_{j}")
+        number = 0
+        for i in range(k):
+            (ax, ay), (bx, by) = wp[i], wp[(i + 1) % k]
+            cross = ax * by - ay * bx
+            if ay <= 0 < by and cross > 0:
+                number += 1
+            elif by <= 0 < ay and cross < 0:
+                number -= 1
+        claimed = get(w, "number", what)
+        if claimed != number:
+            reject(f"winding: the polygon winds {number} time(s) about the centre, the document claims {claimed!r}")
+        self.ok(f"winding: {k} half-planes hold their windows, each w_i lies in H_i ∩ H_(i+1); the polygon winds "
+                f"{number} time(s), counted exactly")
+        return number
+
+
+def _add_q(x, y):
+    """The sum of two rationals in the tuple form of Field elements."""
+    s = (x[0] if x else 0) + (y[0] if y else 0)
+    return (Fraction(s),) if s else ()
+
+
+def ball_add(a, b):
+    return a[0] + b[0], a[1] + b[1]
+
+
+def ball_sub(a, b):
+    return a[0] - b[0], a[1] + b[1]
 
 
 def mod_at_least(a, b):

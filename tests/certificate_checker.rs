@@ -168,22 +168,99 @@ fn the_disproof_of_a_block_2_dominant_loop_variant_is_accepted() {
     assert_accepted(&path, "loop-block2-dominant n = 5 (DISPROVED)");
 }
 
+/// Writes the certificate of `charmap ARGS --certify` to `dir/name.json`.
+fn charmap_certificate(dir: &Path, name: &str, args: &[&str]) -> PathBuf {
+    let path = dir.join(format!("{name}.json"));
+    let out = Command::new(env!("CARGO_BIN_EXE_subdlab"))
+        .arg("charmap")
+        .args(args)
+        .args(["--certify", "--certificate"])
+        .arg(&path)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    path
+}
+
+/// The characteristic-map part beside the spectral one: accepted for a
+/// primal quad, a triangle, a dual, the 4-3 scheme (PROVED), and for the
+/// folded control (regularity DISPROVED by faces of both proved signs).
 #[test]
-fn charmap_certify_writes_the_spectral_part() {
+fn charmap_certificates_are_accepted() {
     if !python3() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("charmap.json");
-    let out = Command::new(env!("CARGO_BIN_EXE_subdlab"))
-        .args(["charmap", "catmull-clark", "-n", "5", "--certify", "--certificate"])
-        .arg(&path)
-        .output()
-        .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let doc = read(&path);
-    assert!(doc["parts"]["spectrum"].is_object());
-    assert_accepted(&path, "charmap catmull-clark n = 5 (spectral part)");
+    let folded = concat!(env!("CARGO_MANIFEST_DIR"), "/schemes/catmull-clark-folded-ring.toml");
+    let cases: [(&str, &str, &str, &str); 6] = [
+        ("catmull-clark", "3", "PROVED", "PROVED"),
+        ("catmull-clark", "5", "PROVED", "PROVED"),
+        ("loop", "5", "PROVED", "PROVED"),
+        ("doo-sabin", "5", "PROVED", "PROVED"),
+        ("four-three", "5", "PROVED", "PROVED"),
+        (folded, "5", "DISPROVED", "DISPROVED"),
+    ];
+    for (k, (scheme, n, regularity, c1)) in cases.into_iter().enumerate() {
+        let start = Instant::now();
+        let path = charmap_certificate(dir.path(), &format!("charmap-{k}"), &[scheme, "-n", n]);
+        let written = start.elapsed();
+        let doc = read(&path);
+        let part = &doc["parts"]["charmap"];
+        assert!(part.is_object(), "{scheme} {n}: no charmap part ({})", doc["charmap_omitted"]);
+        assert_eq!(part["regularity"], regularity, "{scheme} {n}");
+        assert_eq!(part["c1"], c1, "{scheme} {n}");
+        let bytes = std::fs::metadata(&path).unwrap().len();
+        eprintln!("written {:>6.0} ms, {bytes:>9} bytes", written.as_secs_f64() * 1e3);
+        assert_accepted(&path, &format!("charmap {scheme} n = {n}"));
+    }
+}
+
+#[test]
+fn tampered_charmap_parts_are_rejected() {
+    if !python3() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let cc = read(&charmap_certificate(d, "cc5", &["catmull-clark", "-n", "5"]));
+    let edit = |f: &dyn Fn(&mut Value)| {
+        let mut doc = cc.clone();
+        f(&mut doc["parts"]["charmap"]);
+        doc
+    };
+    // a Jacobian sign claimed the other way
+    let t = edit(&|c| c["faces"][0]["sign"] = Value::from("-"));
+    assert_rejected(d, "sign", &t, "claimed negative");
+    // one exact stencil weight by 1/1000
+    let t = edit(&|c| {
+        let w = c["points"]["stencils"][0][0][1].as_str().unwrap().to_string();
+        c["points"]["stencils"][0][0][1] = Value::from(nudged(&w));
+    });
+    assert_rejected(d, "stencil", &t, "do not sum to 1");
+    // the eigenvector of another disc than λ1's
+    let t = edit(&|c| c["eigenvector"]["disc"] = Value::from(1));
+    assert_rejected(d, "disc", &t, "λ1's disc is row");
+    // a polygon point moved to the other side of the centre
+    let t = edit(&|c| {
+        let p = c["winding"]["polygon"][0].clone();
+        c["winding"]["polygon"][0] = Value::from(vec![-p[0].as_f64().unwrap(), -p[1].as_f64().unwrap()]);
+    });
+    assert_rejected(d, "polygon", &t, "not in the half-plane");
+    // a half-plane turned away from its window
+    let t = edit(&|c| {
+        let p = c["winding"]["directions"][3].clone();
+        c["winding"]["directions"][3] = Value::from(vec![p[1].as_f64().unwrap(), -p[0].as_f64().unwrap()]);
+    });
+    assert_rejected(d, "direction", &t, "not proved in its half-plane | not in the half-plane");
+    // a wrong winding number
+    let t = edit(&|c| c["winding"]["number"] = Value::from(2));
+    assert_rejected(d, "winding", &t, "the document claims 2");
+    // regularity PROVED with a face left undecided
+    let t = edit(&|c| c["faces"][5]["sign"] = Value::from("?"));
+    assert_rejected(d, "undecided", &t, "every ring face proved of one sign");
+    // a C¹ verdict that does not follow from its parts
+    let t = edit(&|c| c["injectivity"] = Value::from("NOT PROVED"));
+    assert_rejected(d, "c1", &t, "does not follow from its parts");
 }
 
 /// Weights known in floating point only: the document says so, and the
@@ -327,7 +404,7 @@ fn tampered_certificates_are_rejected() {
 
     // a part this checker cannot re-check
     let mut t = cc.clone();
-    t["parts"]["charmap"] = serde_json::json!({});
+    t["parts"]["curvature"] = serde_json::json!({});
     assert_rejected(d, "unknown-part", &t, "re-checks only");
 
     // not a certificate at all: exit 2

@@ -136,6 +136,45 @@ pub struct CharMapCertificate {
     /// proved negative and one where it is proved positive
     pub fold_witness: Option<FoldWitness>,
     pub reasons: Vec<String>,
+    /// what the geometric verdicts rest on, for the certificate document
+    /// (`export::charmap_part`); set when regularity is decided
+    #[serde(skip)]
+    pub evidence: Option<Evidence>,
+}
+
+/// The decisive level's geometric proof as data an independent checker can
+/// redo: which nets points the windows use, the signs claimed, and the
+/// winding computation. Vertex indices are the level-`levels` net's (the
+/// exporter re-refines the net with exact stencils and maps them).
+#[derive(Clone, Debug)]
+pub struct Evidence {
+    pub levels: usize,
+    /// the disc of block 1's diagonalisation whose eigenvector spans the map
+    pub lambda1_row: usize,
+    pub faces: Vec<FaceEvidence>,
+    pub winding: Option<WindingEvidence>,
+}
+
+/// One ring face's window: its edge vectors along the two lattice
+/// directions as (from, to) net vertices, and the Jacobian sign proved on it
+/// (+1, −1, or 0 undecided).
+#[derive(Clone, Debug)]
+pub struct FaceEvidence {
+    pub u_edges: Vec<(usize, usize)>,
+    pub v_edges: Vec<(usize, usize)>,
+    pub sign: i8,
+}
+
+/// The winding-number lemma's data (see `winding_number`): per chain edge
+/// i, the window (index into the ring faces) beside it, the chain vertex
+/// i + 1 that ends it, the half-plane direction dᵢ and the polygon point wᵢ.
+#[derive(Clone, Debug)]
+pub struct WindingEvidence {
+    pub windows: Vec<usize>,
+    pub vertices: Vec<usize>,
+    pub directions: Vec<[f64; 2]>,
+    pub polygon: Vec<[f64; 2]>,
+    pub number: i64,
 }
 
 /// Two ring faces with Jacobians of proved opposite signs.
@@ -185,6 +224,7 @@ pub fn certify_charmap(
         winding_number: None,
         fold_witness: None,
         reasons: Vec::new(),
+        evidence: None,
     };
     // regularity and injectivity are statements about the map of λ1's
     // eigenvectors: attempted only once the spectrum is proved
@@ -287,6 +327,26 @@ fn geometric_half(
         cert.undecided_faces = undecided;
         cert.max_point_width =
             Some(net.points.iter().flatten().map(|p| p[0].width().max(p[1].width())).fold(0.0, f64::max));
+        cert.evidence = Some(Evidence {
+            levels,
+            lambda1_row: cert.spectrum.proof.as_ref().and_then(|p| p.lambda1_row).unwrap_or(usize::MAX),
+            faces: windows
+                .iter()
+                .zip(&bounds)
+                .map(|(w, b)| FaceEvidence {
+                    u_edges: w.u_pairs.clone(),
+                    v_edges: w.v_pairs.clone(),
+                    sign: if b.lo > 0.0 {
+                        1
+                    } else if b.hi < 0.0 {
+                        -1
+                    } else {
+                        0
+                    },
+                })
+                .collect(),
+            winding: None,
+        });
         if positive > 0 && negative > 0 {
             let centre = |f: usize| {
                 let face = net.mesh.face(f);
@@ -343,7 +403,11 @@ fn geometric_half(
             regular
         };
         cert.reasons.push(regular);
-        let injective = match winding_number(&net, ring, inside, &windows) {
+        let winding = winding_number(&net, ring, inside, &windows);
+        if let (Ok((_, e)), Some(evidence)) = (&winding, cert.evidence.as_mut()) {
+            evidence.winding = Some(e.clone());
+        }
+        let injective = match winding.map(|(w, _)| w) {
             Ok(w) if w == sign as i64 => {
                 cert.winding_number = Some(w);
                 cert.reasons.push(format!("the annulus's inner boundary winds {w} time around the centre"));
@@ -367,6 +431,8 @@ fn geometric_half(
         };
         return Ok((Verdict::Proved, injective));
     }
+    // nothing decided: no evidence of an earlier, undecided level is kept
+    cert.evidence = None;
     Err(last_reason)
 }
 
@@ -464,6 +530,10 @@ struct Window {
     along_v: Vec<Point>,
     /// every window point, for hulls
     points: Vec<Point>,
+    /// the same edges as net vertex pairs (from, to), for the certificate
+    /// document, whose checker recomputes the edge vectors itself
+    u_pairs: Vec<(usize, usize)>,
+    v_pairs: Vec<(usize, usize)>,
 }
 
 impl Window {
@@ -531,6 +601,7 @@ impl Window {
         }
         let p = |v: usize| net.points[v].ok_or_else(|| "a window point is not determined".to_string());
         let (mut along_u, mut along_v) = (Vec::new(), Vec::new());
+        let (mut u_pairs, mut v_pairs) = (Vec::new(), Vec::new());
         for &g in &faces {
             let gf = mesh.face(g);
             for k in 0..m {
@@ -538,16 +609,28 @@ impl Window {
                 let (ca, cb) = (coords[&a], coords[&b]);
                 let diff = |from: Point, to: Point| [to[0] - from[0], to[1] - from[1]];
                 match (cb.0 - ca.0, cb.1 - ca.1) {
-                    (1, 0) => along_u.push(diff(p(a)?, p(b)?)),
-                    (-1, 0) => along_u.push(diff(p(b)?, p(a)?)),
-                    (0, 1) => along_v.push(diff(p(a)?, p(b)?)),
-                    (0, -1) => along_v.push(diff(p(b)?, p(a)?)),
+                    (1, 0) => {
+                        along_u.push(diff(p(a)?, p(b)?));
+                        u_pairs.push((a, b));
+                    }
+                    (-1, 0) => {
+                        along_u.push(diff(p(b)?, p(a)?));
+                        u_pairs.push((b, a));
+                    }
+                    (0, 1) => {
+                        along_v.push(diff(p(a)?, p(b)?));
+                        v_pairs.push((a, b));
+                    }
+                    (0, -1) => {
+                        along_v.push(diff(p(b)?, p(a)?));
+                        v_pairs.push((b, a));
+                    }
                     _ => {}
                 }
             }
         }
         let points = coords.keys().map(|&v| p(v)).collect::<Result<Vec<_>, String>>()?;
-        Ok(Window { face: f, faces, along_u, along_v, points })
+        Ok(Window { face: f, faces, along_u, along_v, points, u_pairs, v_pairs })
     }
 
     /// An enclosure of the range of det(uᵢ, vⱼ) over the window's edge
@@ -756,7 +839,12 @@ fn edge_mask(
 /// The winding number of the annulus's inner boundary (the boundary of the
 /// faces `inside` it) around the centre, from
 /// the angular ranges of the hulls of the adjacent ring faces' windows.
-fn winding_number(net: &Net<Point>, ring: &[usize], inside: &[usize], windows: &[Window]) -> Result<i64, String> {
+fn winding_number(
+    net: &Net<Point>,
+    ring: &[usize],
+    inside: &[usize],
+    windows: &[Window],
+) -> Result<(i64, WindingEvidence), String> {
     let mesh = &net.mesh;
     let mut half: HashSet<(usize, usize)> = HashSet::new();
     for &f in inside {
@@ -829,7 +917,17 @@ fn winding_number(net: &Net<Point>, ring: &[usize], inside: &[usize], windows: &
         }
         polygon.push(w);
     }
-    polygon_winding(&polygon)
+    let number = polygon_winding(&polygon)?;
+    Ok((
+        number,
+        WindingEvidence {
+            windows: chain.iter().map(|&(_, w)| w).collect(),
+            vertices: (0..k).map(|i| chain[(i + 1) % k].0).collect(),
+            directions,
+            polygon,
+            number,
+        },
+    ))
 }
 
 /// d·p enclosed, for a float direction d and an enclosed point p.

@@ -16,12 +16,14 @@
 //! ```text
 //! { "format": "subdlab-certificate", "version": 1, "tool": ...,
 //!   "float_encoding": ..., "scheme", "params", "valence", "faces", "neighbourhood",
-//!   "parts": { "spectrum": { ... } } }
+//!   "parts": { "spectrum": { ... }, "charmap": { ... } }, "charmap_omitted": ... }
 //! ```
 //!
-//! `parts` holds one object per certified statement: `spectrum` now; the
-//! characteristic-map part is to be added as `charmap` beside it (a checker
-//! rejects a part it does not know how to re-check).
+//! `parts` holds one object per certified statement (a checker rejects a
+//! part it does not know how to re-check): `spectrum`, and from
+//! `charmap --certify` `charmap`, the geometric proof at its decisive level
+//! (`charmap_part`); when that cannot be written, or would make the document
+//! exceed [`MAX_DOCUMENT_BYTES`], `charmap_omitted` says why.
 //!
 //! Numbers: floating-point values (V, R, ε, disc centres and radii, margins)
 //! are JSON numbers, written by serde_json as the shortest decimal that
@@ -33,12 +35,15 @@
 //! coefficients; subdlab writes them reduced modulo Φ_N, a checker must not
 //! rely on it).
 
+use super::charmap::CharMapCertificate;
 use super::matrix::mirror_map;
 use super::spectrum::{analysis_orbits, exact_rows, SpectrumCertificate, Verdict};
 use crate::error::Error;
 use crate::matrix::local::assemble_rows;
-use crate::numeric::{Cyclotomic, Rational};
+use crate::numeric::{Cyclotomic, Rational, Weight};
+use crate::refine::Combine;
 use crate::sdc::Scheme;
+use crate::sdc::SchemeWeight;
 use crate::spectrum::{Analysis, Method};
 use faer::c64;
 use faer::Mat;
@@ -209,5 +214,211 @@ pub fn write_spectrum(
     cert: &SpectrumCertificate,
 ) -> Result<(), Error> {
     let doc = document(analysis, vec![("spectrum", spectrum_part(scheme, analysis, cert))]);
+    write(path, &doc)
+}
+
+/// Documents above this size keep the spectral part only (with
+/// `charmap_omitted` saying why): the exact stencil DAG of a high-valence net
+/// at five levels would otherwise reach hundreds of megabytes.
+pub const MAX_DOCUMENT_BYTES: usize = 50_000_000;
+
+/// A net point named by its node in the stencil DAG being recorded: refining
+/// a net of `NodeId`s with exact weights records every new point's stencil
+/// over the points it was made from, with the very pruning and numbering of
+/// the interval net the proof used (the same refinement, another payload).
+#[derive(Clone, Copy, Debug)]
+struct NodeId(usize);
+
+thread_local! {
+    /// Stencils of the nodes made so far (`None`: a level-0 point). Combine
+    /// is a plain function of its terms, so the recording lives beside it;
+    /// `record_stencils` resets it around each use on this thread.
+    static DAG: std::cell::RefCell<Vec<Option<Vec<(usize, Cyclotomic)>>>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// The exact weight types a net is re-refined with: rational first, the
+/// cyclotomic field where a rule's weight is irrational.
+trait ExactWeight: SchemeWeight {
+    fn exact(&self) -> Cyclotomic;
+}
+
+impl ExactWeight for Rational {
+    fn exact(&self) -> Cyclotomic {
+        Cyclotomic::from_rational(self)
+    }
+}
+
+impl ExactWeight for Cyclotomic {
+    fn exact(&self) -> Cyclotomic {
+        self.clone()
+    }
+}
+
+impl<W: ExactWeight> Combine<W> for NodeId {
+    fn combine(terms: &[(W, &Self)]) -> Self {
+        // repeated parents merged, so a checker sees one weight per parent
+        let mut stencil: Vec<(usize, Cyclotomic)> = Vec::with_capacity(terms.len());
+        for (w, p) in terms {
+            match stencil.iter_mut().find(|(q, _)| *q == p.0) {
+                Some((_, acc)) => *acc = acc.clone() + w.exact(),
+                None => stencil.push((p.0, w.exact())),
+            }
+        }
+        stencil.retain(|(_, w)| !Weight::is_zero(w));
+        DAG.with(|d| {
+            let mut d = d.borrow_mut();
+            d.push(Some(stencil));
+            NodeId(d.len() - 1)
+        })
+    }
+}
+
+/// The exact stencil DAG of the net refined `levels` analysis steps in `W`:
+/// the level-L net's node per vertex, and every node's stencil (level-0
+/// nodes are the analysis points, by matrix index).
+fn record_stencils<W: ExactWeight>(
+    scheme: &dyn Scheme,
+    analysis: &Analysis,
+    levels: usize,
+) -> Result<(Vec<Option<NodeId>>, Vec<Option<Vec<(usize, Cyclotomic)>>>), Error> {
+    let d = &analysis.discovered;
+    let mut level0 = vec![None; d.patch.num_vertices()];
+    for (k, &v) in d.analysis.iter().enumerate() {
+        level0[v] = Some(NodeId(k));
+    }
+    DAG.with(|g| *g.borrow_mut() = vec![None; d.analysis.len()]);
+    let net = crate::charmap::net::refine_net_exactly_as::<W, NodeId>(scheme, d, level0, levels);
+    let dag = DAG.with(|g| std::mem::take(&mut *g.borrow_mut()));
+    Ok((net?.points, dag))
+}
+
+/// The characteristic-map part: the exact refinement from the level-0 net
+/// (the analysis points) to the decisive level, restricted to the points the
+/// windows use and their ancestors; per ring face its window's edges and the
+/// claimed Jacobian sign; the winding computation; the verdicts and the
+/// premises taken as trusted. `Err`: why the part cannot be written.
+pub fn charmap_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &CharMapCertificate) -> Result<Value, String> {
+    let e = cert
+        .evidence
+        .as_ref()
+        .ok_or("the characteristic map's regularity was not decided: there is no proof to export")?;
+    let (points, dag) = record_stencils::<Rational>(scheme, analysis, e.levels)
+        .or_else(|_| record_stencils::<Cyclotomic>(scheme, analysis, e.levels))
+        .map_err(|err| format!("the net could not be re-refined with exact weights: {err}"))?;
+    let n0 = analysis.discovered.analysis.len();
+    let node = |v: usize| points.get(v).copied().flatten().map(|n| n.0).ok_or("a window point has no exact stencil");
+    // the nodes the windows use and all their ancestors, renumbered in
+    // creation order (a topological order: parents come first); the level-0
+    // points keep their matrix indices 0..n0
+    let mut needed = vec![false; dag.len()];
+    let mut stack: Vec<usize> = Vec::new();
+    let mut faces = Vec::with_capacity(e.faces.len());
+    let pairs = |edges: &[(usize, usize)]| -> Result<Vec<[usize; 2]>, String> {
+        edges.iter().map(|&(a, b)| Ok([node(a)?, node(b)?])).collect()
+    };
+    for f in &e.faces {
+        faces.push((pairs(&f.u_edges)?, pairs(&f.v_edges)?, f.sign));
+    }
+    let chain: Vec<usize> = match &e.winding {
+        Some(w) => w.vertices.iter().map(|&v| node(v)).collect::<Result<_, _>>()?,
+        None => Vec::new(),
+    };
+    stack.extend(faces.iter().flat_map(|(u, v, _)| u.iter().chain(v).flatten().copied()));
+    stack.extend(chain.iter().copied());
+    while let Some(i) = stack.pop() {
+        if !std::mem::replace(&mut needed[i], true) {
+            if let Some(s) = &dag[i] {
+                stack.extend(s.iter().map(|(p, _)| *p));
+            }
+        }
+    }
+    let mut index = vec![usize::MAX; dag.len()];
+    for (i, slot) in index.iter_mut().enumerate().take(n0) {
+        *slot = i;
+    }
+    let mut stencils: Vec<Vec<(usize, ExactValue)>> = Vec::new();
+    for i in n0..dag.len() {
+        if needed[i] {
+            index[i] = n0 + stencils.len();
+            let s = dag[i].as_ref().ok_or("a refined point has no stencil")?;
+            stencils.push(s.iter().map(|(p, w)| (index[*p], exact_value(w))).collect());
+        }
+    }
+    let faces: Vec<Value> = faces
+        .iter()
+        .map(|(u, v, sign)| {
+            let map = |edges: &Vec<[usize; 2]>| edges.iter().map(|[a, b]| [index[*a], index[*b]]).collect::<Vec<_>>();
+            json!({ "u_edges": map(u), "v_edges": map(v), "sign": match sign { 1 => "+", -1 => "-", _ => "?" } })
+        })
+        .collect();
+    let winding = e.winding.as_ref().map(|w| {
+        json!({
+            "windows": w.windows,
+            "vertices": chain.iter().map(|&c| index[c]).collect::<Vec<_>>(),
+            "directions": w.directions,
+            "polygon": w.polygon,
+            "number": w.number,
+        })
+    });
+    Ok(json!({
+        "statement": "the characteristic map of λ1's eigenvectors is regular and injective (Reif's C¹ criterion, \
+                      with the spectral part)",
+        "regularity": cert.regularity.word(),
+        "injectivity": cert.injectivity.word(),
+        "c1": cert.c1.word(),
+        "regular_part": cert.regular_part,
+        "levels": e.levels,
+        "eigenvector": { "block": 1, "disc": e.lambda1_row },
+        "points": {
+            "level0": n0,
+            "note": "points 0..level0 are the analysis points by matrix index; point level0 + k is stencil k \
+                     over earlier points (creation order across the refinement levels)",
+            "stencils": stencils,
+        },
+        "faces": faces,
+        "winding": winding,
+        "trusted": [
+            "the rules over the ring faces' windows are the regular part's box-spline masks (compared exactly by \
+             subdlab), so the Jacobian over a face lies between the least and greatest det(u_i, v_j) of its window",
+            "the ring faces, their scaled copies (and for dual schemes the half-face enlargement) cover the punctured \
+             neighbourhood of the centre",
+            "each window is the ring face's one-ring laid out on the lattice, with its u- and v-edges as listed, and \
+             the chain is the annulus's inner boundary, window i the ring face beside its edge i",
+        ],
+    }))
+}
+
+/// The characteristic-map certificate's document: the spectral part and,
+/// when the geometric proof can be exported within [`MAX_DOCUMENT_BYTES`],
+/// the `charmap` part; otherwise `charmap_omitted` says why.
+pub fn write_charmap(
+    path: &std::path::Path,
+    scheme: &dyn Scheme,
+    analysis: &Analysis,
+    cert: &CharMapCertificate,
+) -> Result<(), Error> {
+    let spectrum = spectrum_part(scheme, analysis, &cert.spectrum);
+    let mut doc = match charmap_part(scheme, analysis, cert) {
+        Ok(charmap) => {
+            let doc = document(analysis, vec![("spectrum", spectrum.clone()), ("charmap", charmap)]);
+            let size = serde_json::to_string(&doc).map(|t| t.len()).unwrap_or(usize::MAX);
+            if size <= MAX_DOCUMENT_BYTES {
+                doc
+            } else {
+                let mut doc = document(analysis, vec![("spectrum", spectrum)]);
+                doc["charmap_omitted"] =
+                    json!(format!("the characteristic-map part would take {size} bytes, above {MAX_DOCUMENT_BYTES}"));
+                doc
+            }
+        }
+        Err(why) => {
+            let mut doc = document(analysis, vec![("spectrum", spectrum)]);
+            doc["charmap_omitted"] = json!(why);
+            doc
+        }
+    };
+    if doc.get("charmap_omitted").is_none() {
+        doc["charmap_omitted"] = Value::Null;
+    }
     write(path, &doc)
 }

@@ -66,8 +66,8 @@ pub struct CharmapArgs {
     #[arg(long, default_value_t = crate::certify::charmap::DEFAULT_MAX_LEVELS, requires = "certify")]
     pub certify_levels: usize,
     /// also write the certificate document (JSON, atomically) for an
-    /// independent checker (`python3 scripts/check_cert.py FILE`); for now
-    /// it holds the spectral part
+    /// independent checker (`python3 scripts/check_cert.py FILE`): the
+    /// spectral and the characteristic-map parts
     #[arg(long, value_name = "FILE", requires = "certify")]
     pub certificate: Option<PathBuf>,
     /// machine-readable JSON output
@@ -191,7 +191,7 @@ pub fn charmap(a: &CharmapArgs) -> Result<(), Error> {
     let certificate = if a.certify {
         let c = crate::certify::certify_charmap(scheme.as_ref(), &analysis, a.certify_levels)?;
         if let Some(path) = &a.certificate {
-            crate::certify::export::write_spectrum(path, scheme.as_ref(), &analysis, &c.spectrum)?;
+            crate::certify::export::write_charmap(path, scheme.as_ref(), &analysis, &c)?;
         }
         Some(c)
     } else {
