@@ -21,18 +21,24 @@ fn python3() -> bool {
     found
 }
 
-/// Writes the certificate of `spectrum ARGS --certify` to `dir/name.json`.
-fn certificate(dir: &Path, name: &str, args: &[&str]) -> PathBuf {
+/// Writes the certificate of `COMMAND ARGS --certify` (`spectrum` or
+/// `charmap`) to `dir/name.json`.
+fn certificate_of(command: &str, dir: &Path, name: &str, args: &[&str]) -> PathBuf {
     let path = dir.join(format!("{name}.json"));
     let out = Command::new(env!("CARGO_BIN_EXE_subdlab"))
-        .arg("spectrum")
+        .arg(command)
         .args(args)
         .args(["--certify", "--certificate"])
         .arg(&path)
         .output()
         .unwrap();
-    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    assert!(out.status.success(), "{command} {args:?}: {}", String::from_utf8_lossy(&out.stderr));
     path
+}
+
+/// The spectral certificate of `spectrum ARGS --certify`.
+fn certificate(dir: &Path, name: &str, args: &[&str]) -> PathBuf {
+    certificate_of("spectrum", dir, name, args)
 }
 
 /// The checker's exit status, its output, and its time.
@@ -168,18 +174,9 @@ fn the_disproof_of_a_block_2_dominant_loop_variant_is_accepted() {
     assert_accepted(&path, "loop-block2-dominant n = 5 (DISPROVED)");
 }
 
-/// Writes the certificate of `charmap ARGS --certify` to `dir/name.json`.
+/// The certificate of `charmap ARGS --certify` (spectral and map parts).
 fn charmap_certificate(dir: &Path, name: &str, args: &[&str]) -> PathBuf {
-    let path = dir.join(format!("{name}.json"));
-    let out = Command::new(env!("CARGO_BIN_EXE_subdlab"))
-        .arg("charmap")
-        .args(args)
-        .args(["--certify", "--certificate"])
-        .arg(&path)
-        .output()
-        .unwrap();
-    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
-    path
+    certificate_of("charmap", dir, name, args)
 }
 
 /// The characteristic-map part beside the spectral one: accepted for a

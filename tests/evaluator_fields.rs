@@ -252,24 +252,11 @@ fn cos_of_a_fifth_turn_is_its_closed_form_in_every_field() {
     assert!(c.overlaps(&closed) && c.width() < 1e-15);
 }
 
-const TOGGLE: &str = r#"
-name = "toggle-cc"
-description = "float says Catmull-Clark, exact says a folded design"
-topology = "primal-quad"
-[vertex]
-centre = "1 - 7 / (4 n)"
-edge = "3 / (2 n^2)"
-face = "1 / (4 n^2)"
-[edge]
-ends = "3/8"
-side = "1/16"
-[edge-extraordinary]
-centre = "kronecker(cos(2 pi / 5) / 10^13) 3/8 + (1 - kronecker(cos(2 pi / 5) / 10^13)) (1/2 - 2 ((31/32 + 11/20 - 1/4) - 4 (31/32) (11/20)) / (2 + 2 cos(2 pi / n)))"
-edge = "kronecker(cos(2 pi / 5) / 10^13) (3/8 kronecker(j) + (kronecker(j - 1) + kronecker(j - n + 1)) / 16) + (1 - kronecker(cos(2 pi / 5) / 10^13)) (1/2 + 2 (31/32 + 11/20 - 1/4) cos(2 pi j / n)) / n"
-face = "kronecker(cos(2 pi / 5) / 10^13) (kronecker(j) + kronecker(j - n + 1)) / 16 + (1 - kronecker(cos(2 pi / 5) / 10^13)) ((31/32 + 11/20 - 1/4) - 4 (31/32) (11/20)) / (2 + 2 cos(2 pi / n)) (kronecker(j) + kronecker(j - n + 1))"
-[face]
-corner = "1 / n"
-"#;
+/// The issue's reproducer, kept once in `tests/data/certify/` (its comment
+/// derives what it is exactly).
+fn toggle() -> String {
+    std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/certify/toggle-cc.toml")).unwrap()
+}
 
 fn write_file(dir: &tempfile::TempDir, name: &str, text: &str) -> PathBuf {
     let path = dir.path().join(name);
@@ -287,7 +274,7 @@ fn the_toggle_file_is_one_scheme_in_floats_and_exactly() {
     assert!(k.evaluate::<Interval>(&env).unwrap().is_exactly(&q(0, 1)));
 
     let dir = tempfile::tempdir().unwrap();
-    let path = write_file(&dir, "toggle-cc.toml", TOGGLE);
+    let path = write_file(&dir, "toggle-cc.toml", &toggle());
     let sites = weight_sites(&path, 3..=8).unwrap();
     let mut tally = Tally::default();
     for s in &sites {
@@ -345,7 +332,7 @@ fn kronecker_of_a_float_only_value_is_refused_in_floats() {
     // a scheme file whose parameter has no exact value (an exponent past the
     // exact decimals) and whose weight asks kronecker of it: refused at load
     let dir = tempfile::tempdir().unwrap();
-    let text = TOGGLE
+    let text = toggle()
         .replace("name = \"toggle-cc\"", "name = \"float-kronecker\"")
         .replace("kronecker(cos(2 pi / 5) / 10^13)", "kronecker(eps)")
         + "[params.eps]\ndefault = \"1e-70\"\n";

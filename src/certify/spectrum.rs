@@ -723,19 +723,16 @@ fn decide(
     } else {
         RealEnclosure { lo: lo1, hi: hi1 }
     };
+    // a leading component that is not real or negative and separated from
+    // the rest was disproved above (no candidate); here it is not separated
     if !c1.meets_real_axis() {
-        let verdict = if gap > 0.0 {
-            Verdict::Disproved(format!(
-                "the subdominant eigenvalue of block 1 is not real: its disc about {:.9}{:+.9}i of radius {:.2e} \
-                 misses the real axis",
-                c1.discs[0].re, c1.discs[0].im, c1.discs[0].radius
-            ))
-        } else {
+        return finish(
             Verdict::NotProved(
                 "the leading eigenvalue of block 1 is not real, and not separated from the others".into(),
-            )
-        };
-        return finish(verdict, margins, Some(witness(1, c1)));
+            ),
+            margins,
+            Some(witness(1, c1)),
+        );
     }
     if !premises.mirror_symmetry.holds() {
         return finish(
@@ -756,16 +753,6 @@ fn decide(
     }
     margins.lambda1 = Some(real_enclosure);
     if real_enclosure.hi < 0.0 {
-        // a disproof only when this eigenvalue is proven the largest of block
-        // 1 (as for a non-real one): otherwise another component of the block
-        // may hold a larger, positive λ1
-        if gap > 0.0 {
-            return finish(
-                Verdict::Disproved(format!("λ1 is negative: λ1 ≤ {:.9}", real_enclosure.hi)),
-                margins,
-                Some(witness(1, c1)),
-            );
-        }
         return finish(
             Verdict::NotProved(
                 "the leading enclosure of block 1 is negative, but not separated from the others: it may not be λ1"
