@@ -179,3 +179,39 @@ fn verdicts_by_construction_are_marked_everywhere() {
     marked.sort();
     assert_eq!(marked, ["pgs.subdominant", "tps.adjustable-c1", "tps.adjustable-subdominant"]);
 }
+
+/// Two face sequences of one length are two configurations: a claim about
+/// eons of quads only must fail at TTT even though QQQ (listed first) passes
+/// (an earlier version checked only the first sequence of each length).
+#[test]
+fn face_sequences_of_one_length_are_each_checked() {
+    let text = r#"
+paper = "configurations"
+title = "every face sequence is a configuration"
+
+[[claim]]
+id = "all-quads"
+location = "-"
+statement = "every face around the eon is a quad"
+check = "inequality"
+scheme = "four-three"
+faces = ["QQQ", "TTT", "QQQQQ"]
+lhs = "quads"
+op = ">="
+rhs = "n"
+"#;
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("configurations.toml");
+    std::fs::write(&path, text).unwrap();
+    let out = subdlab(&["verify", "--claims", path.to_str().unwrap(), "--json"]);
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let claim = &doc[0]["claims"][0];
+    assert_eq!(claim["verdict"], "REFUTED", "{claim}");
+    let detail = claim["detail"].as_str().unwrap();
+    assert!(detail.contains("n = 3 (TTT)") && detail.contains("3 checked"), "{detail}");
+    // the quads-only sequences alone hold
+    std::fs::write(&path, text.replace("\"TTT\", ", "")).unwrap();
+    let out = subdlab(&["verify", "--claims", path.to_str().unwrap(), "--json"]);
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(doc[0]["claims"][0]["verdict"], "HOLDS", "{}", doc[0]["claims"][0]);
+}

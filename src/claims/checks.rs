@@ -22,6 +22,27 @@ const TOL: f64 = 1e-9;
 #[derive(Default)]
 pub struct Cache {
     spectra: HashMap<String, Result<std::rc::Rc<Spectrum>, Error>>,
+    /// where certified claims write their certificate documents
+    pub(super) certificates: Option<std::path::PathBuf>,
+    /// the claim being evaluated (names its certificate files)
+    claim: String,
+}
+
+impl Cache {
+    pub(super) fn writing_certificates(certificates: Option<std::path::PathBuf>) -> Cache {
+        Cache { certificates, ..Default::default() }
+    }
+
+    /// The file the certificate of the current claim at valence n goes to,
+    /// when certificates are asked for.
+    fn certificate_path(&self, subject: &Subject, n: usize) -> Option<std::path::PathBuf> {
+        let faces = subject.faces_for(n).map(|f| format!("-{f}")).unwrap_or_default();
+        let safe: String = format!("{}-n{n}{faces}", self.claim)
+            .chars()
+            .map(|c| if c.is_ascii_alphanumeric() || "-_.".contains(c) { c } else { '_' })
+            .collect();
+        self.certificates.as_ref().map(|dir| dir.join(format!("{safe}.json")))
+    }
 }
 
 impl Cache {
@@ -224,6 +245,7 @@ pub fn evaluate(paper: &str, claim: &Claim, cache: &mut Cache) -> Outcome {
     if let Check::Malformed(message) = &claim.check {
         return error_outcome(paper, claim, message.clone());
     }
+    cache.claim = claim.id.clone();
     let p = match run(&claim.check, cache) {
         Ok(p) => p,
         Err(e) => inconclusive(e.to_string()),
@@ -256,23 +278,33 @@ fn outcome(paper: &str, claim: &Claim, p: Partial) -> Outcome {
 /// Runs a per-valence comparison and reports the first valence where it fails.
 pub(super) fn over_valences(
     subject: &Subject,
-    mut one: impl FnMut(usize) -> Result<(bool, String, String), Error>,
+    mut one: impl FnMut(&Subject, usize) -> Result<(bool, String, String), Error>,
 ) -> Result<Partial, Error> {
-    let valences = subject.valence_list()?;
+    // one run per configuration (a valence, or a face sequence: QQQ and TTT
+    // are two), each with the subject narrowed to it
+    let configurations = subject.configurations()?;
+    let name = |s: &Subject, n: usize| match s.faces_for(n) {
+        Some(f) => format!("n={n} ({f})"),
+        None => format!("n={n}"),
+    };
     let mut first = None;
     let (mut stated0, mut computed0) = (String::new(), String::new());
-    for &n in &valences {
-        let (ok, stated, computed) = one(n)?;
+    for (n, narrowed) in &configurations {
+        let (ok, stated, computed) = one(narrowed, *n)?;
         if stated0.is_empty() {
-            stated0 = format!("n={n}: {stated}");
-            computed0 = format!("n={n}: {computed}");
+            stated0 = format!("{}: {stated}", name(narrowed, *n));
+            computed0 = format!("{}: {computed}", name(narrowed, *n));
         }
         if !ok && first.is_none() {
-            first = Some((n, stated, computed));
+            first = Some((name(narrowed, *n), narrowed.label(*n), stated, computed));
         }
     }
-    let span = match (valences.first(), valences.last()) {
-        (Some(a), Some(b)) if a != b => format!("valences {a}..{b} ({} checked)", valences.len()),
+    let lo = configurations.iter().map(|(n, _)| *n).min();
+    let hi = configurations.iter().map(|(n, _)| *n).max();
+    let count = configurations.len();
+    let span = match (lo, hi) {
+        (Some(a), Some(b)) if a != b => format!("valences {a}..{b} ({count} checked)"),
+        (Some(a), _) if count > 1 => format!("valence {a} ({count} configurations)"),
         (Some(a), _) => format!("valence {a}"),
         _ => return Err(Error::Claim("no valences given".into())),
     };
@@ -283,11 +315,11 @@ pub(super) fn over_valences(
             computed: computed0,
             detail: format!("agrees at {span}"),
         },
-        Some((n, s, c)) => Partial {
+        Some((short, label, s, c)) => Partial {
             verdict: Verdict::Refuted,
-            stated: format!("n={n}: {s}"),
-            computed: format!("n={n}: {c}"),
-            detail: format!("first disagreement at n = {n} ({span})"),
+            stated: format!("{short}: {s}"),
+            computed: format!("{short}: {c}"),
+            detail: format!("first disagreement at {label} ({span})"),
         },
     })
 }
@@ -306,7 +338,7 @@ fn identity_at(l: &Expr, r: &Expr, lhs: &str, rhs: &str, env: &Env) -> Result<(b
 
 fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
     match check {
-        Check::Eigenvalues { subject, values, compare, block, moduli } => over_valences(subject, |n| {
+        Check::Eigenvalues { subject, values, compare, block, moduli } => over_valences(subject, |subject, n| {
             let spec = cache.spectrum(subject, n)?;
             let blocks: Vec<Option<usize>> = match block.as_deref() {
                 None => vec![None],
@@ -367,7 +399,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
             let (s, c) = first.unwrap_or_default();
             Ok((true, s, c))
         }),
-        Check::Subdominant { subject, value } => over_valences(subject, |n| {
+        Check::Subdominant { subject, value } => over_valences(subject, |subject, n| {
             let spec = cache.spectrum(subject, n)?;
             let stated = eval(value, &env_for(subject, n)?)?;
             let l1 = spec
@@ -378,7 +410,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
             let double = spec.eigenvalues[1].algebraic_multiplicity;
             Ok((close(stated, l1), show(stated), format!("{} (multiplicity {double})", show(l1))))
         }),
-        Check::Size { subject, value } => over_valences(subject, |n| {
+        Check::Size { subject, value } => over_valences(subject, |subject, n| {
             let spec = cache.spectrum(subject, n)?;
             let stated = eval(value, &env_for(subject, n)?)?.re;
             let size = spec.matrix_size as f64;
@@ -388,11 +420,11 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                 format!("{} (minimal {}, analysis {})", spec.matrix_size, spec.minimal_size, spec.analysis_size),
             ))
         }),
-        Check::InvariantSet { subject, rings, lattice_sum, kinds, value } => over_valences(subject, |n| {
+        Check::InvariantSet { subject, rings, lattice_sum, kinds, value } => over_valences(subject, |subject, n| {
             let spec = cache.spectrum(subject, n)?;
             super::invariant_set::one(subject, n, rings, lattice_sum.as_deref(), kinds.as_deref(), value, &spec)
         }),
-        Check::Inequality { subject, lhs, op, rhs } => over_valences(subject, |n| {
+        Check::Inequality { subject, lhs, op, rhs } => over_valences(subject, |subject, n| {
             let mut env = env_for(subject, n)?;
             let (l, r) = (Expr::parse(lhs)?, Expr::parse(rhs)?);
             let uses_spectrum = l
@@ -426,7 +458,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
             };
             Ok((ok, format!("{lhs} {op} {rhs}"), format!("{} {op} {}: {ok}", fmt_f(a), fmt_f(b))))
         }),
-        Check::NonnegativeSpectrum { subject, expect } => over_valences(subject, |n| {
+        Check::NonnegativeSpectrum { subject, expect } => over_valences(subject, |subject, n| {
             let spec = cache.spectrum(subject, n)?;
             let negative: Vec<Complex64> = spec
                 .eigenvalues
@@ -441,18 +473,22 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                 if got { "no negative eigenvalue".into() } else { format!("negative: {}", show_list(&negative)) },
             ))
         }),
-        Check::CharacteristicMap { subject, expect, levels, certified: true, .. } => over_valences(subject, |n| {
-            let (scheme, config) = subject_config(subject, n)?;
-            let options =
-                crate::spectrum::Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
-            let analysis = crate::spectrum::analyse(scheme.as_ref(), &config, &options)?;
-            let most = levels.unwrap_or(crate::certify::charmap::DEFAULT_MAX_LEVELS).max(2);
-            let c = crate::certify::certify_charmap(scheme.as_ref(), &analysis, most)?;
-            use crate::certify::Verdict;
-            // Reif's criterion as a whole: the spectrum, regularity and
-            // injectivity all proved (a disproof of any one refutes), each
-            // unconditionally
-            let got = match &c.c1 {
+        Check::CharacteristicMap { subject, expect, levels, certified: true, .. } => {
+            over_valences(subject, |subject, n| {
+                let (scheme, config) = subject_config(subject, n)?;
+                let options =
+                    crate::spectrum::Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
+                let analysis = crate::spectrum::analyse(scheme.as_ref(), &config, &options)?;
+                let most = levels.unwrap_or(crate::certify::charmap::DEFAULT_MAX_LEVELS).max(2);
+                let c = crate::certify::certify_charmap(scheme.as_ref(), &analysis, most)?;
+                if let Some(path) = cache.certificate_path(subject, n) {
+                    crate::certify::export::write_charmap(&path, scheme.as_ref(), &analysis, &c)?;
+                }
+                use crate::certify::Verdict;
+                // Reif's criterion as a whole: the spectrum, regularity and
+                // injectivity all proved (a disproof of any one refutes), each
+                // unconditionally
+                let got = match &c.c1 {
                 Verdict::Disproved(_) if !c.conditional && !c.geometry_conditional => false,
                 Verdict::Proved if !c.conditional && !c.geometry_conditional => true,
                 Verdict::Proved | Verdict::Disproved(_) => {
@@ -463,21 +499,22 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                 }
                 Verdict::NotProved(why) => return Err(Error::Claim(format!("n = {n}: certificate NOT PROVED ({why})"))),
             };
-            let bound = c.min_jacobian_lower_bound.map(|b| format!(", Jacobian ≥ {b:.4e}")).unwrap_or_default();
-            Ok((
-                got == *expect,
-                if *expect { "proved regular and injective".into() } else { "disproved".into() },
-                format!(
-                    "certified spectrum {}, regularity {}, injectivity {} (winding {}{bound})",
-                    c.spectrum.verdict.word(),
-                    c.regularity.display(),
-                    c.injectivity.display(),
-                    c.winding_number.map(|w| w.to_string()).unwrap_or_else(|| "-".into())
-                ),
-            ))
-        }),
+                let bound = c.min_jacobian_lower_bound.map(|b| format!(", Jacobian ≥ {b:.4e}")).unwrap_or_default();
+                Ok((
+                    got == *expect,
+                    if *expect { "proved regular and injective".into() } else { "disproved".into() },
+                    format!(
+                        "certified spectrum {}, regularity {}, injectivity {} (winding {}{bound})",
+                        c.spectrum.verdict.word(),
+                        c.regularity.display(),
+                        c.injectivity.display(),
+                        c.winding_number.map(|w| w.to_string()).unwrap_or_else(|| "-".into())
+                    ),
+                ))
+            })
+        }
         Check::CharacteristicMap { subject, expect, levels, resolution, certified: false } => {
-            over_valences(subject, |n| {
+            over_valences(subject, |subject, n| {
                 let (scheme, config) = subject_config(subject, n)?;
                 let opts = crate::charmap::CharMapOptions {
                     levels: levels.unwrap_or(3),
@@ -502,11 +539,14 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                 ))
             })
         }
-        Check::SpectralC1 { subject, expect, certified: true } => over_valences(subject, |n| {
+        Check::SpectralC1 { subject, expect, certified: true } => over_valences(subject, |subject, n| {
             let (scheme, config) = subject_config(subject, n)?;
             let options = crate::spectrum::Options { neighbourhood: kind_of(subject)?, method: None, exact: false };
             let analysis = crate::spectrum::analyse(scheme.as_ref(), &config, &options)?;
             let c = crate::certify::certify_analysis(scheme.as_ref(), &analysis)?;
+            if let Some(path) = cache.certificate_path(subject, n) {
+                crate::certify::export::write_spectrum(&path, scheme.as_ref(), &analysis, &c)?;
+            }
             let got = match &c.verdict {
                 crate::certify::Verdict::Proved if !c.conditional => true,
                 crate::certify::Verdict::Disproved(_) if !c.conditional => false,
@@ -529,7 +569,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                 format!("certified {}{gap}", c.verdict.display()),
             ))
         }),
-        Check::SpectralC1 { subject, expect, .. } => over_valences(subject, |n| {
+        Check::SpectralC1 { subject, expect, .. } => over_valences(subject, |subject, n| {
             let spec = cache.spectrum(subject, n)?;
             let got = spec.verdict.c1_spectral;
             let why = spec.verdict.reasons.iter().find(|r| r.contains("not") || r.contains("defective")).cloned();
@@ -543,7 +583,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                 ),
             ))
         }),
-        Check::LimitStencil { subject, weights } => over_valences(subject, |n| {
+        Check::LimitStencil { subject, weights } => over_valences(subject, |subject, n| {
             let spec = cache.spectrum(subject, n)?;
             let env = env_for(subject, n)?;
             let l = limit_stencil(&spec)?;
@@ -566,7 +606,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
             let ok = worst.0 < 1e-9;
             Ok((ok, stated, if ok { "every weight as stated".into() } else { worst.1 }))
         }),
-        Check::TangentStencils { subject, cos, sin } => over_valences(subject, |n| {
+        Check::TangentStencils { subject, cos, sin } => over_valences(subject, |subject, n| {
             let spec = cache.spectrum(subject, n)?;
             let t = tangent_stencils(&spec)?;
             let mut basis = vec![vec![0.0; spec.labels.len()]; 2];
@@ -602,7 +642,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
             // n (alias k) defined and the vars expressions in n
             let subject = valences_only(valences, vars);
             let mut modes = (0, 0);
-            let mut p = over_valences(&subject, |n| {
+            let mut p = over_valences(&subject, |subject, n| {
                 let (ok, computed, exact) = identity_at(&l, &r, lhs, rhs, &env_for(&subject, n)?)?;
                 if exact {
                     modes.0 += 1;
@@ -619,7 +659,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
         }
         Check::MatrixEigenvalues { valences, vars, rows, values } => {
             let subject = valences_only(valences, vars);
-            over_valences(&subject, |n| {
+            over_valences(&subject, |subject, n| {
                 let env = env_for(&subject, n)?;
                 let cols = rows.first().map(|r| r.len()).unwrap_or(0);
                 if rows.iter().any(|r| r.len() != cols) || rows.len() != cols {

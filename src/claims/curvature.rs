@@ -209,21 +209,24 @@ pub fn run(
 ) -> Result<(Verdict, String, String, String), Error> {
     let classes = class.names()?;
     let levels = levels.unwrap_or(crate::curvature::DEFAULT_LEVELS);
-    let valences = subject.valence_list()?;
-    if valences.is_empty() {
+    let configurations = subject.configurations()?;
+    if configurations.is_empty() {
         return Err("no valences given".into());
     }
     let mut stated_all = Vec::new();
     let mut computed_all = Vec::new();
     let mut details = Vec::new();
     let mut refuted: Option<String> = None;
-    for &n in &valences {
+    for (n, subject) in &configurations {
+        let (n, subject) = (*n, subject);
+        // "n = 5", or "n = 5 (QQTQT)" for a face sequence
+        let label = subject.label(n);
         let k = compute(subject, n, levels)?;
         let c = &k.c;
         let (ev, agree) = evidence(&k);
         if agree == Some(false) {
             return Err(Error::Claim(format!(
-                "n = {n}: the routes to the Jordan structure at λ² disagree, so the class ({}) is not decided: {ev}",
+                "{label}: the routes to the Jordan structure at λ² disagree, so the class ({}) is not decided: {ev}",
                 c.class.name()
             )));
         }
@@ -252,7 +255,7 @@ pub fn run(
         if let Some(entries) = fourier {
             let Some(sh) = &c.shapes else {
                 return Err(Error::Claim(format!(
-                    "n = {n}: F(μ) is not computed here (class {}; F(μ) needs a rotation-symmetric configuration and an eigenvalue μ with an eigenfunction on the ring)",
+                    "{label}: F(μ) is not computed here (class {}; F(μ) needs a rotation-symmetric configuration and an eigenvalue μ with an eigenfunction on the ring)",
                     c.class.name()
                 )));
             };
@@ -282,14 +285,18 @@ pub fn run(
         }
         if !wrong.is_empty() && refuted.is_none() {
             let reason = c.reasons.first().cloned().unwrap_or_default();
-            refuted = Some(format!("n = {n}: {} ({reason}); evidence: {ev}", wrong.join("; ")));
+            refuted = Some(format!("{label}: {} ({reason}); evidence: {ev}", wrong.join("; ")));
         }
         details.push(format!("{line} [{ev}]"));
     }
-    let span = match (valences.first(), valences.last()) {
-        (Some(a), Some(b)) if a != b => format!("valences {a}..{b} ({} checked)", valences.len()),
-        (Some(a), _) => format!("valence {a}"),
-        _ => unreachable!(),
+    let lo = configurations.iter().map(|(n, _)| *n).min().unwrap_or(0);
+    let hi = configurations.iter().map(|(n, _)| *n).max().unwrap_or(0);
+    let span = if lo != hi {
+        format!("valences {lo}..{hi} ({} checked)", configurations.len())
+    } else if configurations.len() > 1 {
+        format!("valence {lo} ({} configurations)", configurations.len())
+    } else {
+        format!("valence {lo}")
     };
     const SHOWN: usize = 4;
     let mut summary: Vec<String> = details.iter().take(SHOWN).cloned().collect();

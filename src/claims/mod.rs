@@ -111,18 +111,40 @@ pub enum Valences {
 }
 
 impl Subject {
-    /// The valences to check: the listed ones and the lengths of `faces`.
-    pub fn valence_list(&self) -> Result<Vec<usize>, Error> {
-        let mut v = self.valences.expand()?;
-        for f in &self.faces {
-            if !v.contains(&f.len()) {
-                v.push(f.len());
-            }
-        }
-        Ok(v)
-    }
+    /// The face sequence of valence n, when this subject holds one
+    /// configuration of that valence (a subject narrowed by
+    /// [`Subject::configurations`]).
     pub fn faces_for(&self, n: usize) -> Option<&str> {
         self.faces.iter().find(|f| f.len() == n).map(|s| s.as_str())
+    }
+
+    /// Every configuration to check, each as (valence, the subject narrowed
+    /// to it): one per `faces` sequence (several of one length are several
+    /// configurations: QQQ and TTT are both checked), and one regular
+    /// configuration per listed valence that no sequence has the length of.
+    pub fn configurations(&self) -> Result<Vec<(usize, Subject)>, Error> {
+        let narrowed = |faces: Vec<String>| Subject { faces, ..self.clone() };
+        let mut out: Vec<(usize, Subject)> = Vec::new();
+        for n in self.valences.expand()? {
+            if !self.faces.iter().any(|f| f.len() == n) && !out.iter().any(|(m, _)| *m == n) {
+                out.push((n, narrowed(Vec::new())));
+            }
+        }
+        for f in &self.faces {
+            if !out.iter().any(|(_, s)| s.faces.first() == Some(f)) {
+                out.push((f.len(), narrowed(vec![f.clone()])));
+            }
+        }
+        Ok(out)
+    }
+
+    /// How a configuration is named in verdicts: `n = 5`, or `n = 5
+    /// (QQTQT)` for a face sequence.
+    pub fn label(&self, n: usize) -> String {
+        match self.faces_for(n) {
+            Some(f) => format!("n = {n} ({f})"),
+            None => format!("n = {n}"),
+        }
     }
 }
 
@@ -154,8 +176,8 @@ pub struct Subject {
     /// the valences; may be left out when `faces` gives the configurations
     #[serde(default = "no_valences")]
     pub valences: Valences,
-    /// face sequences around the centre (schemes of mixed meshes), one per
-    /// valence; each adds its length to the valences
+    /// face sequences around the centre (schemes of mixed meshes); each is
+    /// its own configuration (QQQ and TTT are two), of valence its length
     #[serde(default)]
     pub faces: Vec<String>,
     #[serde(default)]
@@ -434,6 +456,7 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ("lin-luo", include_str!("../../claims/lin-luo.toml")),
     ("peters-shiue", include_str!("../../claims/peters-shiue.toml")),
     ("karciauskas-peters", include_str!("../../claims/karciauskas-peters.toml")),
+    ("known-results", include_str!("../../claims/known-results.toml")),
 ];
 
 /// Reads a claim file. A TOML syntax error or a bad top level (paper,
@@ -577,6 +600,20 @@ pub fn builtin_files() -> Result<Vec<ClaimFile>, Error> {
 /// stacks (deeply nested expressions recurse), and a claim whose evaluation
 /// fails unexpectedly gets an ERROR verdict instead of ending the run.
 pub fn evaluate_all(files: &[ClaimFile]) -> Result<Vec<Vec<Outcome>>, Error> {
+    evaluate_all_with(files, &EvaluationOptions::default())
+}
+
+/// What an evaluation writes besides the verdicts.
+#[derive(Clone, Debug, Default)]
+pub struct EvaluationOptions {
+    /// write the certificate document (`--certificate FILE` of `spectrum` /
+    /// `charmap --certify`) of every certified claim at every valence into
+    /// this directory, as `CLAIM-ID-nN.json`, for an independent checker
+    pub certificates: Option<std::path::PathBuf>,
+}
+
+/// [`evaluate_all`], writing what `options` asks for.
+pub fn evaluate_all_with(files: &[ClaimFile], options: &EvaluationOptions) -> Result<Vec<Vec<Outcome>>, Error> {
     use std::sync::atomic::{AtomicUsize, Ordering};
     let workers = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1).min(files.len()).max(1);
     let next = AtomicUsize::new(0);
@@ -587,7 +624,7 @@ pub fn evaluate_all(files: &[ClaimFile]) -> Result<Vec<Vec<Outcome>>, Error> {
             let work = || loop {
                 let k = next.fetch_add(1, Ordering::SeqCst);
                 let Some(f) = files.get(k) else { break };
-                let o = evaluate(f);
+                let o = evaluate_with(f, options);
                 results.lock().unwrap_or_else(|e| e.into_inner())[k] = Some(o);
             };
             let h = std::thread::Builder::new()
@@ -610,7 +647,12 @@ const EVALUATION_STACK: usize = 64 << 20;
 
 /// Evaluate every claim of a file.
 pub fn evaluate(file: &ClaimFile) -> Vec<Outcome> {
-    let mut cache = checks::Cache::default();
+    evaluate_with(file, &EvaluationOptions::default())
+}
+
+/// [`evaluate`], writing what `options` asks for.
+pub fn evaluate_with(file: &ClaimFile, options: &EvaluationOptions) -> Vec<Outcome> {
+    let mut cache = checks::Cache::writing_certificates(options.certificates.clone());
     file.claims
         .iter()
         .map(|c| {

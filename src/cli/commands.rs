@@ -12,8 +12,8 @@ use crate::spectrum::{analyse, Analysis, Method, Options, Spectrum};
 /// Runs a command; Ok holds the exit status (0, or 1 from `verify` when a
 /// claim is not as required).
 pub fn dispatch(cmd: Command) -> Result<i32, Error> {
-    if let Command::Verify { paper, claims, json, junit, check_expected } = cmd {
-        let opts = super::verify::VerifyOptions { json, junit, check_expected };
+    if let Command::Verify { paper, claims, json, junit, check_expected, certificates } = cmd {
+        let opts = super::verify::VerifyOptions { json, junit, check_expected, certificates };
         return super::verify::run(paper, &claims, &opts);
     }
     dispatch_other(cmd).map(|()| 0)

@@ -49,6 +49,11 @@ pub enum Command {
         /// passes. Exit status 0 when every verdict is as recorded
         #[arg(long)]
         check_expected: bool,
+        /// write the certificate document of every certified claim at every
+        /// valence into DIR (`CLAIM-ID-nN.json`, the format of `--certificate`),
+        /// for `scripts/check_cert.py`; DIR is created if missing
+        #[arg(long, value_name = "DIR")]
+        certificates: Option<std::path::PathBuf>,
     },
     /// List the built-in schemes (or the given scheme files) with their parameters, defaults and ranges
     Schemes {

@@ -12,6 +12,8 @@ pub struct VerifyOptions {
     pub junit: Option<PathBuf>,
     /// a claim passes when its verdict is the recorded `expected` one
     pub check_expected: bool,
+    /// write every certified claim's certificate documents here
+    pub certificates: Option<PathBuf>,
 }
 
 /// Largest claim file read (the read stops there: devices and pipes have no
@@ -95,7 +97,11 @@ pub fn run(paper: Option<String>, user: &[PathBuf], opts: &VerifyOptions) -> Res
         }
         ok
     };
-    let outcomes = claims::evaluate_all(&files)?;
+    if let Some(dir) = &opts.certificates {
+        std::fs::create_dir_all(dir).map_err(|e| Error::File(format!("{}: {e}", dir.display())))?;
+    }
+    let evaluation = claims::EvaluationOptions { certificates: opts.certificates.clone() };
+    let outcomes = claims::evaluate_all_with(&files, &evaluation)?;
     results.extend(files.into_iter().zip(outcomes));
     let judge = Judge { check_expected: opts.check_expected, builtin };
     if let Some(path) = &opts.junit {
