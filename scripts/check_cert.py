@@ -539,6 +539,115 @@ def real_section_below(d, hi):
     return room >= 0 and d.r * d.r - d.im * d.im <= room * room
 
 
+# ------------------------------------------------------ exact polynomials over Q (lemma S7)
+
+
+def det_fraction(a):
+    """det of a square matrix of Fractions by Gaussian elimination."""
+    a = [row[:] for row in a]
+    n = len(a)
+    det = Fraction(1)
+    for c in range(n):
+        piv = next((r for r in range(c, n) if a[r][c] != 0), None)
+        if piv is None:
+            return Fraction(0)
+        if piv != c:
+            a[c], a[piv] = a[piv], a[c]
+            det = -det
+        det *= a[c][c]
+        inv = 1 / a[c][c]
+        for r in range(c + 1, n):
+            f = a[r][c] * inv
+            if f:
+                for k in range(c, n):
+                    a[r][k] -= f * a[c][k]
+    return det
+
+
+def rank(a):
+    a = [row[:] for row in a]
+    rows, cols = len(a), len(a[0]) if a else 0
+    r = 0
+    for c in range(cols):
+        piv = next((i for i in range(r, rows) if a[i][c] != 0), None)
+        if piv is None:
+            continue
+        a[r], a[piv] = a[piv], a[r]
+        for i in range(r + 1, rows):
+            f = a[i][c] / a[r][c]
+            if f:
+                for k in range(c, cols):
+                    a[i][k] -= f * a[r][k]
+        r += 1
+    return r
+
+
+def charpoly_by_interpolation(s):
+    """det(xI − S), lowest coefficient first: its values at x = 0..N, then
+    Newton's divided differences, expanded."""
+    n = len(s)
+    xs = [Fraction(t) for t in range(n + 1)]
+    ys = [det_fraction([[(xs[t] if i == j else 0) - s[i][j] for j in range(n)] for i in range(n)]) for t in range(n + 1)]
+    coef = ys[:]
+    for j in range(1, n + 1):
+        for i in range(n, j - 1, -1):
+            coef[i] = (coef[i] - coef[i - 1]) / (xs[i] - xs[i - j])
+    p = [Fraction(0)] * (n + 1)
+    p[0] = coef[n]
+    deg = 0
+    for i in range(n - 1, -1, -1):
+        # p = p·(x − x_i) + coef[i]
+        q = [Fraction(0)] * (n + 1)
+        for k in range(deg + 1):
+            q[k + 1] += p[k]
+            q[k] -= xs[i] * p[k]
+        q[0] += coef[i]
+        p = q
+        deg += 1
+    if p[n] != 1:
+        raise AssertionError("the characteristic polynomial is not monic")
+    return p
+
+
+def root_multiplicity(p, r):
+    """(m, q): r is a root of p of multiplicity m, p = (x − r)^m q."""
+    p = list(p)
+    while len(p) > 1 and p[-1] == 0:
+        p.pop()
+    m = 0
+    while len(p) > 1:
+        # synthetic division by (x − r)
+        q = [Fraction(0)] * (len(p) - 1)
+        carry = Fraction(0)
+        for k in range(len(p) - 1, 0, -1):
+            carry = carry * r + p[k]
+            q[k - 1] = carry
+        if carry * r + p[0] != 0:
+            break
+        p = q
+        m += 1
+    return m, p
+
+
+def roots_inside(p, r):
+    """Every root of p strictly inside |x| < r (Schur–Cohn on p(r x))."""
+    f = [c * r**k for k, c in enumerate(p)]
+    while True:
+        while len(f) > 1 and f[-1] == 0:
+            f.pop()
+        if not f:
+            return False
+        if len(f) == 1:
+            return f[0] != 0
+        lead = f[-1]
+        f = [c / lead for c in f]
+        d = len(f) - 1
+        c = f[0]
+        if abs(c) >= 1:
+            return False
+        f = [f[k] - c * f[d - k] for k in range(1, d + 1)]
+
+
 # ------------------------------------------------------ the checker
 
 
@@ -915,6 +1024,9 @@ class Checker:
             self.ok("verdict NOT PROVED: nothing claimed beyond the enclosures above")
 
     def check_proof(self, claims, margins):
+        route = claims.get("exact_route") if isinstance(claims, dict) else None
+        if route is not None:
+            return self.check_exact_route(route, margins)
         if self.method != "dft":
             reject("PROVED on the whole matrix: λ1's realness and its two Fourier blocks need the rotation symmetry")
         g = self.g
@@ -977,6 +1089,49 @@ class Checker:
                     worst = d if worst is None or d.norm2() + d.r * d.r > worst.norm2() + worst.r * worst.r else worst
         self.ok(f"gap: every other component of every block lies strictly inside |z| < {float(lam1_lo):.12f}")
         self.check_margins(margins, c0, [self.components[m][i] for m, i in named1], special)
+
+    def check_exact_route(self, route, margins):
+        """Lemma S7: S over Q; det(xI − S) recomputed here (by values at N + 1
+        points and interpolation, not subdlab's Hessenberg reduction); 1 a
+        simple root; λ1 a root of multiplicity 2 whose eigenspace has
+        dimension 2; the rest inside |x| < others_below ≤ λ1 (Schur–Cohn)."""
+        if self.field.order != 1:
+            reject("the exact route needs every entry of S in Q")
+        lam = as_ratio(get(route, "lambda1", "exact_route"), "exact_route.lambda1")
+        below = as_ratio(get(route, "others_below", "exact_route"), "exact_route.others_below")
+        if not (0 < lam < 1):
+            reject(f"the exact route's λ1 = {lam} is not in (0, 1)")
+        if not (0 <= below <= lam):
+            reject(f"the exact route's bound {below} for the other eigenvalues is not in [0, λ1]")
+        n = self.size
+        dense = [[Fraction(0)] * n for _ in range(n)]
+        for i, row in enumerate(self.rows):
+            for j, x in row.items():
+                dense[i][j] = x[0] if x else Fraction(0)
+        p = charpoly_by_interpolation(dense)
+        m1, p1 = root_multiplicity(p, Fraction(1))
+        if m1 != 1:
+            reject(f"1 is a root of det(xI − S) of multiplicity {m1}, not 1")
+        m2, q = root_multiplicity(p1, lam)
+        if m2 != 2:
+            reject(f"λ1 = {lam} is a root of det(xI − S) of multiplicity {m2}, not 2")
+        shifted = [[dense[i][j] - (lam if i == j else 0) for j in range(n)] for i in range(n)]
+        geometric = n - rank(shifted)
+        if geometric != 2:
+            reject(f"the eigenspace of λ1 = {lam} has dimension {geometric}, not 2 (defective or larger)")
+        if not roots_inside(q, below if below > 0 else lam):
+            reject(f"an eigenvalue other than 1 and λ1 may have modulus ≥ {below}")
+        self.ok(
+            f"exact route: det(xI − S) of degree {n} recomputed over Q; 1 simple; λ1 = {lam} of multiplicity 2, "
+            f"eigenspace of dimension 2; the other {len(q) - 1} roots inside |x| < {below if below > 0 else lam} (Schur–Cohn)"
+        )
+        if isinstance(margins, dict):
+            l1 = margins.get("lambda1")
+            if l1 is not None and not (Fraction(as_float(l1["lo"], "λ1.lo")) <= lam <= Fraction(as_float(l1["hi"], "λ1.hi"))):
+                reject("margin: the claimed λ1 enclosure misses the exact λ1")
+            others = margins.get("others_max_modulus")
+            if others is not None and Fraction(as_float(others, "others_max_modulus")) < below:
+                reject("margin: the claimed bound on the other eigenvalues is below the proved one")
 
     def check_margins(self, margins, c0, c1s, special):
         """The claimed margins must be valid bounds of the enclosed values."""

@@ -483,3 +483,43 @@ fn the_soundness_controls_are_re_derived_and_their_flips_rejected() {
         }
     }
 }
+
+/// Lemma S7, the exact route: a 4-3 eon surrounded by QQT has no rotation
+/// to split λ1's pair; its certificate rests on det(xI − S) over Q, which
+/// the checker recomputes by another algorithm. Accepted as written; a
+/// claimed λ1 that is not the double root, or a bound on the other
+/// eigenvalues below the truth, rejected.
+#[test]
+fn the_exact_route_is_re_derived_and_its_tamperings_rejected() {
+    if !python3() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let path = certificate(d, "qqt", &["four-three", "-n", "3", "--faces", "QQT"]);
+    let doc = read(&path);
+    let spectrum = &doc["parts"]["spectrum"];
+    assert_eq!(spectrum["verdict"], "PROVED");
+    // 4-3 subdivision's λ1 is 1/2 (the paper's leading eigenvalues 1, 1/2, 1/2, 1/4)
+    assert_eq!(spectrum["claims"]["exact_route"]["lambda1"], "1/2");
+    assert_accepted(&path, "four-three QQT (exact route)");
+    let edit = |f: &dyn Fn(&mut Value)| {
+        let mut doc = doc.clone();
+        f(&mut doc["parts"]["spectrum"]["claims"]["exact_route"]);
+        doc
+    };
+    // 1/4 is an eigenvalue too, but not a double one with the rest below it
+    let quarter = edit(&|r| {
+        r["lambda1"] = "1/4".into();
+        r["others_below"] = "1/4".into();
+    });
+    assert_rejected(d, "lambda1-quarter", &quarter, "multiplicity | may have modulus");
+    assert_rejected(d, "bound-above-lambda1", &edit(&|r| r["lambda1"] = "1/4".into()), "not in [0, λ1]");
+    let third = edit(&|r| {
+        r["lambda1"] = "1/3".into();
+        r["others_below"] = "1/3".into();
+    });
+    assert_rejected(d, "lambda1-third", &third, "multiplicity 0");
+    // the 1/4 of the spectrum is not below 1/8
+    assert_rejected(d, "others-below", &edit(&|r| r["others_below"] = "1/8".into()), "may have modulus ≥ 1/8");
+}

@@ -182,6 +182,9 @@ pub fn spectrum_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &SpectrumCe
         "lambda0": named.lambda0.map(|i| json!({ "block": 0, "component": i })),
         "lambda1": named.lambda1.map(|[a, b]| json!([{ "block": 1, "component": a }, { "block": g - 1, "component": b }])),
         "witness": cert.witness.as_ref().map(|w| json!({ "block": w.block, "component": w.index })),
+        // lemma S7: what the exact route claims (the checker recomputes the
+        // characteristic polynomial from the rows itself)
+        "exact_route": cert.exact_route.as_ref().map(|e| json!({ "lambda1": e.lambda1, "others_below": e.others_below })),
     });
     let member: Vec<[usize; 2]> = orbits.member.iter().map(|&(o, t)| [o, t]).collect();
     json!({

@@ -14,6 +14,9 @@
 //! - [`spectrum`]: the spectral verdict (λ0 = 1 simple, λ1 real positive from
 //!   blocks 1 and g − 1, a proven gap to every other eigenvalue):
 //!   PROVED / DISPROVED / NOT PROVED with the reason and the margins.
+//! - [`exact_spectrum`]: the spectral verdict of a rational matrix from its
+//!   exact characteristic polynomial (λ1 a double semisimple rational root,
+//!   Schur–Cohn for the rest), where no rotation splits λ1's pair;
 //! - [`export`]: the certificate document (JSON) that an independent
 //!   checker, `scripts/check_cert.py`, re-verifies from the exact rows;
 //! - [`charmap`]: the geometric verdict (the characteristic map regular and
@@ -24,6 +27,7 @@
 pub mod charmap;
 pub mod complex;
 pub mod discs;
+pub mod exact_spectrum;
 pub mod export;
 pub mod matrix;
 pub mod spectrum;

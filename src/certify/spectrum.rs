@@ -45,6 +45,7 @@ use crate::numeric::{Cyclotomic, Interval, Rational};
 use crate::sdc::Scheme;
 use crate::spectrum::{Analysis, Method};
 use faer::c64;
+use num_traits::ToPrimitive;
 use rayon::prelude::*;
 use serde::Serialize;
 use std::cell::Cell;
@@ -167,6 +168,10 @@ pub struct SpectrumCertificate {
     /// the components the verdict rests on (for the certificate document)
     #[serde(skip)]
     pub named: Named,
+    /// set when the verdict was proved by the exact route (lemma S7: the
+    /// whole rational matrix's characteristic polynomial) instead of the
+    /// block enclosures
+    pub exact_route: Option<super::exact_spectrum::ExactSpectrum>,
 }
 
 /// The data a PROVED spectral certificate hands on.
@@ -244,6 +249,7 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
         blocks: Vec::new(),
         proof: None,
         named: Named::default(),
+        exact_route: None,
     };
     if s.method == Method::Dft {
         if let Err(why) = orbits.check_free() {
@@ -329,12 +335,12 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
         return Ok(not_proved(format!("the Fourier blocks need S to commute with the rotation: {rotation:?}")));
     }
     let field = order.map(|n| if n == 1 { "Q".to_string() } else { format!("Q(ζ_{n})") });
-    let exact = row_check == Check::Exact && mirror == Check::Exact && rotation == Check::Exact;
+    let premises_exact = row_check == Check::Exact && mirror == Check::Exact && rotation == Check::Exact;
     let premises = Premises {
         row_sums_one: row_check,
         mirror_symmetry: mirror,
         rotation_symmetry: rotation,
-        exact,
+        exact: premises_exact,
         field,
         mirror_axis,
     };
@@ -345,14 +351,94 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
     // the mirror (realness is only needed to prove)
     let overlap = |c: &Check| *c == Check::Overlap;
     cert.conditional = match cert.verdict {
-        Verdict::Proved => !exact,
+        Verdict::Proved => !premises_exact,
         Verdict::Disproved(_) => overlap(&premises.rotation_symmetry) || overlap(&premises.row_sums_one),
         Verdict::NotProved(_) => false,
     };
+    // where the enclosures cannot prove λ1 (no rotation of order ≥ 3 splits
+    // its pair, or a cluster is too ill-conditioned) and S is rational,
+    // lemma S7 may prove it exactly from the whole matrix
+    if let Verdict::NotProved(why) = &cert.verdict {
+        if let Some(e) = exact_route(scheme, analysis, &which, &exact) {
+            match e {
+                Ok(proof) => {
+                    let r = proof.lambda1_value.to_f64().unwrap_or(f64::NAN);
+                    cert.verdict = Verdict::Proved;
+                    cert.statement = EXACT_STATEMENT.into();
+                    cert.margins.lambda0 = Some(RealEnclosure { lo: 1.0, hi: 1.0 });
+                    cert.margins.lambda1 = Some(RealEnclosure { lo: next_down(r), hi: next_up(r) });
+                    let below = proof.others_below_value.to_f64().unwrap_or(f64::NAN);
+                    cert.margins.others_max_modulus = Some(next_up(below));
+                    cert.margins.gap_lower_bound =
+                        (&proof.lambda1_value - &proof.others_below_value).to_f64().map(|g| next_down(g).max(0.0));
+                    cert.named = Named::default();
+                    cert.exact_route = Some(proof);
+                }
+                Err(exact_why) => {
+                    cert.verdict = Verdict::NotProved(format!("{why}; the exact route (lemma S7): {exact_why}"))
+                }
+            }
+        }
+    }
+    cert.conditional = match cert.verdict {
+        Verdict::Proved => cert.exact_route.is_none() && !premises.exact,
+        _ => cert.conditional,
+    };
     cert.premises = Some(premises);
     cert.blocks = enclosures;
-    cert.proof = Some(SpectralProof { orbits, lambda1_row });
+    cert.proof =
+        Some(SpectralProof { orbits, lambda1_row: if cert.exact_route.is_some() { None } else { lambda1_row } });
     Ok(cert)
+}
+
+const EXACT_STATEMENT: &str = "for the true local subdivision matrix S on the analysis neighbourhood, every weight \
+     rational: λ0 = 1 a simple root of det(xI − S); λ1 rational, positive, a root of multiplicity 2 with a \
+     two-dimensional eigenspace (semisimple); every other root of modulus below λ1 (exact characteristic \
+     polynomial over Q, Schur–Cohn)";
+
+/// The whole matrix's exact rows for lemma S7, when S is small enough and
+/// every weight rational: `None` when the route does not apply (too large,
+/// a weight known in floating point or irrational); else its result.
+fn exact_route(
+    scheme: &dyn Scheme,
+    analysis: &Analysis,
+    which: &[usize],
+    exact: &ExactRows,
+) -> Option<Result<super::exact_spectrum::ExactSpectrum, String>> {
+    let s = &analysis.spectrum;
+    let size = s.labels.len();
+    if size > super::exact_spectrum::MAX_EXACT_ROUTE_SIZE {
+        return None;
+    }
+    // the rows at hand are the representatives' (Fourier blocks) or all
+    let all: ExactRows = if which.len() == size {
+        exact.clone()
+    } else {
+        let all: Vec<usize> = (0..size).collect();
+        match exact_rows(scheme, analysis, &all) {
+            Some(rows) => rows.into_iter().map(Some).collect(),
+            None => return Some(Err("the rows of S have no exact form".into())),
+        }
+    };
+    if let Some(k) = all.iter().position(|r| r.is_none()) {
+        return Some(Err(format!("row {k} of S has no exact form")));
+    }
+    if all.iter().flatten().any(|r| r.iter().any(|(_, w)| w.to_rational().is_none())) {
+        return Some(Err("a weight is irrational (a cyclotomic element): the route needs S over Q".into()));
+    }
+    let reals = s.eigenvalues.iter().filter(|e| e.im.abs() <= 1e-9 * e.modulus.max(1.0)).map(|e| e.re);
+    let candidates = crate::engine::exact::candidates(reals);
+    Some(super::exact_spectrum::prove(&all, &candidates))
+}
+
+/// Outward rounding of a fraction converted to the nearest f64 (within half
+/// an ulp): one ulp out is a bound.
+fn next_up(x: f64) -> f64 {
+    x.next_up()
+}
+
+fn next_down(x: f64) -> f64 {
+    x.next_down()
 }
 
 /// Rows `which` of S exactly: in Q when every weight is rational, else in a
@@ -533,6 +619,7 @@ fn decide(
             blocks: Vec::new(),
             proof: None,
             named: Named { lambda0: lambda0.get(), lambda1: lambda1.get() },
+            exact_route: None,
         };
         (cert, None)
     };

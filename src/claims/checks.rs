@@ -288,9 +288,19 @@ pub(super) fn over_valences(
         None => format!("n={n}"),
     };
     let mut first = None;
+    // a configuration that cannot be decided leaves the claim undecided,
+    // unless another configuration refutes it: one counterexample refutes a
+    // statement about all of them, whatever the others give
+    let mut undecided: Option<(String, Error)> = None;
     let (mut stated0, mut computed0) = (String::new(), String::new());
     for (n, narrowed) in &configurations {
-        let (ok, stated, computed) = one(narrowed, *n)?;
+        let (ok, stated, computed) = match one(narrowed, *n) {
+            Ok(r) => r,
+            Err(e) => {
+                undecided.get_or_insert((narrowed.label(*n), e));
+                continue;
+            }
+        };
         if stated0.is_empty() {
             stated0 = format!("{}: {stated}", name(narrowed, *n));
             computed0 = format!("{}: {computed}", name(narrowed, *n));
@@ -308,6 +318,19 @@ pub(super) fn over_valences(
         (Some(a), _) => format!("valence {a}"),
         _ => return Err(Error::Claim("no valences given".into())),
     };
+    if first.is_none() {
+        if let Some((_, e)) = undecided {
+            // nothing refutes, and something is not decided: no verdict
+            return Err(e);
+        }
+    }
+    let also = undecided
+        .map(|(label, e)| {
+            let why = e.to_string();
+            let why = why.strip_prefix(&format!("{label}: ")).map(str::to_string).unwrap_or(why);
+            format!("; {label} not decided: {why}")
+        })
+        .unwrap_or_default();
     Ok(match first {
         None => Partial {
             verdict: Verdict::Holds,
@@ -319,7 +342,7 @@ pub(super) fn over_valences(
             verdict: Verdict::Refuted,
             stated: format!("{short}: {s}"),
             computed: format!("{short}: {c}"),
-            detail: format!("first disagreement at {label} ({span})"),
+            detail: format!("first disagreement at {label} ({span}){also}"),
         },
     })
 }

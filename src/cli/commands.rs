@@ -209,6 +209,13 @@ pub(super) fn certificate_table(c: &crate::certify::SpectrumCertificate) -> Stri
         out += &format!("  premise mirror symmetry: {}\n", show(&p.mirror_symmetry));
         out += &format!("  premise rotation symmetry: {}\n", show(&p.rotation_symmetry));
     }
+    if let Some(e) = &c.exact_route {
+        out += &format!(
+            "  exact route (lemma S7): det(xI − S) over Q ({} × {}): 1 simple, λ1 = {} a double root with a \
+             two-dimensional eigenspace, the other {} roots inside |x| < {} (Schur–Cohn)\n",
+            e.size, e.size, e.lambda1, e.cofactor_degree, e.others_below
+        );
+    }
     let m = &c.margins;
     let f = |x: Option<f64>| x.map_or("-".to_string(), |v| format!("{v:.12e}"));
     if let Some(l) = m.lambda0 {

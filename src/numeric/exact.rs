@@ -376,6 +376,49 @@ pub fn rational_roots(p: &Poly, candidates: &[Rational]) -> (Vec<(Rational, usiz
     (found, rest)
 }
 
+/// Whether every root of `p` lies strictly inside the disc |x| < r (r > 0),
+/// decided exactly by the Schur–Cohn recursion, on f(x) = p(r·x):
+///
+/// make f monic (degree d, constant term c). If |c| ≥ 1, not every root lies
+/// inside: |c| is the product of the roots' moduli. Otherwise g = f − c·f*
+/// (f*(x) = x^d f(1/x), the reversed polynomial) has as many roots inside the
+/// unit disc as f (Rouché: |c·f*| < |f| on |x| = 1, where |f*| = |f|), and
+/// g(0) = c − c = 0, so g = x·h with h of degree d − 1: f has all d roots
+/// inside if and only if h has all d − 1. A non-zero constant has no roots.
+/// The zero polynomial is `false`.
+pub fn roots_inside_disc(p: &Poly, r: &Rational) -> bool {
+    assert!(r.is_positive(), "the disc's radius must be positive");
+    let mut power = Rational::one();
+    let mut f: Vec<Rational> = p
+        .coeffs
+        .iter()
+        .map(|c| {
+            let t = c * &power;
+            power = &power * r;
+            t
+        })
+        .collect();
+    loop {
+        while f.len() > 1 && f.last().is_some_and(|c| c.is_zero()) {
+            f.pop();
+        }
+        match f.len() {
+            0 => return false,
+            1 => return !f[0].is_zero(),
+            _ => {}
+        }
+        let lead = f.last().expect("non-empty").clone();
+        f.iter_mut().for_each(|c| *c = &*c / &lead);
+        let d = f.len() - 1;
+        let c = f[0].clone();
+        if c.abs() >= Rational::one() {
+            return false;
+        }
+        // h_k = g_{k+1} = f_{k+1} − c·f_{d−k−1}, k = 0..d−1 (leading 1 − c² > 0)
+        f = (1..=d).map(|k| &f[k] - &c * &f[d - k]).collect();
+    }
+}
+
 pub fn q(p: i64, qd: i64) -> Rational {
     Rational::new(BigInt::from(p), BigInt::from(qd))
 }
@@ -383,6 +426,33 @@ pub fn q(p: i64, qd: i64) -> Rational {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Roots known by construction: inside, on and outside circles.
+    #[test]
+    fn schur_cohn_decides_roots_inside_a_disc() {
+        let half = q(1, 2);
+        // (x − 1/4)(x + 1/3): both inside |x| < 1/2
+        assert!(roots_inside_disc(&Poly::from_roots(&[q(1, 4), q(-1, 3)]), &half));
+        // a root on the circle is not inside
+        assert!(!roots_inside_disc(&Poly::from_roots(&[q(1, 4), q(-1, 2)]), &half));
+        assert!(!roots_inside_disc(&Poly::from_roots(&[q(1, 2)]), &half));
+        // x² + 1/4: roots ±i/2, on |x| = 1/2, inside |x| < 51/100
+        let circle = Poly { coeffs: vec![q(1, 4), q(0, 1), q(1, 1)] };
+        assert!(!roots_inside_disc(&circle, &half));
+        assert!(roots_inside_disc(&circle, &q(51, 100)));
+        // x² − x + 1/2: roots (1 ± i)/2 of modulus 1/√2 ≈ 0.7071
+        let pair = Poly { coeffs: vec![q(1, 2), q(-1, 1), q(1, 1)] };
+        assert!(roots_inside_disc(&pair, &q(708, 1000)));
+        assert!(!roots_inside_disc(&pair, &q(707, 1000)));
+        // zero roots (x³) are inside any disc; a constant has no roots
+        assert!(roots_inside_disc(&Poly::from_roots(&[q(0, 1), q(0, 1), q(0, 1)]), &q(1, 1000)));
+        assert!(roots_inside_disc(&Poly::one(), &half));
+        // a product of many: the degree-8 polynomial with roots ±k/20, k = 1..4, and ±9/20
+        let roots: Vec<Rational> = [1, 2, 3, 4, 9].iter().flat_map(|&k| [q(k, 20), q(-k, 20)]).collect();
+        let p = Poly::from_roots(&roots);
+        assert!(roots_inside_disc(&p, &q(91, 200)));
+        assert!(!roots_inside_disc(&p, &q(9, 20)));
+    }
 
     #[test]
     fn charpoly_of_companion_like_matrix() {
