@@ -26,6 +26,7 @@ pub mod complex;
 pub mod discs;
 pub mod export;
 pub mod matrix;
+pub mod s31;
 pub mod spectrum;
 
 pub use charmap::{certify_charmap, CharMapCertificate};
