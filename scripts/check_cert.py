@@ -37,7 +37,10 @@ definition of S, and everything else is recomputed here.
 - The characteristic-map part (Checker.charmap): λ1's eigenvector enclosed
   from block 1's V and the discs recomputed above, the net refined by the
   document's exact stencils in the interval arithmetic above, every claimed
-  Jacobian sign, the half-planes and the winding number (exactly). Trusted:
+  Jacobian sign, the half-planes and the winding number (exactly); for the
+  non-box S_3^1 windows (regular part `non-box-s31`), from each face's
+  lattice layout, which differences and hull points the spline's bounds
+  need (non_box_window: its own support tests). Trusted:
   the stencils being the scheme's rules, the box-spline Jacobian and hull
   bounds over a window, the covering of the neighbourhood, the windows'
   lattice layout and the chain (listed in the document's `trusted`).
@@ -1254,6 +1257,7 @@ class Checker:
         pts = self.refined_points(get(part, "points", what), x0)
         self.ok(f"net: {len(pts) - len(x0)} refined point(s) from the {len(x0)} analysis points by exact stencils "
                 f"({levels} analysis steps), in interval arithmetic")
+        self.regular_part = part.get("regular_part")
         sign = self.check_faces(as_list(get(part, "faces", what), "charmap faces"), pts, verdicts["regularity"])
         winding = get(part, "winding", what)
         number = None
@@ -1407,6 +1411,10 @@ class Checker:
             us, vs = edges
             if not us or not vs:
                 reject(f"face {f}: a window without edges along both directions")
+            if self.regular_part == "non-box-s31":
+                non_box_window(f, face, us, vs)
+            elif "layout" in face:
+                raise Malformed(f"face {f}: a lattice layout, but the regular part is {self.regular_part!r}")
             self.windows.append({p for e in us + vs for p in e[2:]})
             count[claim] += 1
             if claim == "?":
@@ -1424,6 +1432,10 @@ class Checker:
             margin = lo if claim == "+" else -hi
             worst = margin if worst is None else min(worst, margin)
         n = len(faces)
+        if self.regular_part == "non-box-s31":
+            self.ok(f"non-box S_3^1 windows: on each of the {n} faces the {len(NON_BOX_DIFFERENCES[0])} u- and "
+                    f"{len(NON_BOX_DIFFERENCES[1])} v-differences and the {len(NON_BOX_HULL)} hull points re-derived "
+                    "from the generators' supports are among the window's edges")
         self.ok(f"Jacobian: {n} ring faces, {count['+']} proved > 0, {count['-']} proved < 0, {count['?']} not claimed "
                 f"(least proved margin {float(Fraction(worst or 0, UNIT)):.3e})")
         if regularity == "PROVED":
@@ -1475,6 +1487,122 @@ class Checker:
         self.ok(f"winding: {k} half-planes hold their windows, each w_i lies in H_i ∩ H_(i+1); the polygon winds "
                 f"{number} time(s), counted exactly")
         return number
+
+
+# The non-box S_3^1 window (subdlab's lemma C3′), re-derived from the lattice
+# positions the document gives, in half units: the face is [0, 2]², V-vertices
+# at even, face control vertices (FCVs) at odd positions. In face units
+# (half the half units) the basis of a V-vertex is the square hat φ_□
+# (support |x|∞ ≤ 1/2) smoothed by the unit square χ, that of an FCV the
+# diamond hat φ_◇ (|x|₁ ≤ 1) smoothed by χ; ∂_u f is the convex combination of
+# the u-differences of points of one kind at distance 1, weighted by φ * χ^v
+# (χ^v the unit segment along v) about their midpoints. What is positive on
+# the face is decided from the open supports:
+#   ψ_□ = φ_□ * χ^v:  |x1| < 1/2 and |x2| < 1
+#   ψ_◇ = φ_◇ * χ^v:  |x1| + max(|x2| − 1/2, 0) < 1
+#   B_□ = φ_□ * χ:    |x|∞ < 1
+#   B_◇ = φ_◇ * χ:    max(|x1| − 1/2, 0) + max(|x2| − 1/2, 0) < 1
+# each written as a condition on how far a point of the closed face can come
+# to the centre along each axis (the conditions only grow with those
+# distances, so the nearest point of the face decides).
+
+def _reach(c):
+    """The least |x − c| over x in [0, 1] (face units)."""
+    return max(Fraction(0), -c, c - 1)
+
+
+def _needed_differences(along):
+    """Midpoints (half units) of the differences along u (along = 0) or v (1)
+    whose ψ is positive somewhere on the closed face, with the kind of their
+    points. The two points lie one face (2 half units)
+    apart along the direction, so a V–V midpoint is odd along it and even
+    across, an FCV–FCV one even along and odd across; every support is at
+    most 3 face units across, so the range searched holds them all."""
+    out = []
+    for x in range(-4, 7):
+        for y in range(-4, 7):
+            a, b = (x, y) if along == 0 else (y, x)
+            if a % 2 == 1 and b % 2 == 0:
+                kind = "V"
+            elif a % 2 == 0 and b % 2 == 1:
+                kind = "F"
+            else:
+                continue
+            da, db = _reach(Fraction(a, 2)), _reach(Fraction(b, 2))
+            if kind == "V":
+                positive = da < Fraction(1, 2) and db < 1
+            else:
+                positive = da + max(db - Fraction(1, 2), Fraction(0)) < 1
+            if positive:
+                out.append(((x, y), kind))
+    return out
+
+
+def _needed_hull():
+    """Half-unit positions of the control points whose basis is positive
+    somewhere on the closed face."""
+    out = []
+    for x in range(-6, 9):
+        for y in range(-6, 9):
+            if x % 2 == 0 and y % 2 == 0:
+                kind = "V"
+            elif x % 2 and y % 2:
+                kind = "F"
+            else:
+                continue
+            a, b = _reach(Fraction(x, 2)), _reach(Fraction(y, 2))
+            half = Fraction(1, 2)
+            if kind == "V":
+                positive = a < 1 and b < 1
+            else:
+                positive = max(a - half, Fraction(0)) + max(b - half, Fraction(0)) < 1
+            if positive:
+                out.append((x, y))
+    return out
+
+
+NON_BOX_DIFFERENCES = (_needed_differences(0), _needed_differences(1))
+NON_BOX_HULL = _needed_hull()
+
+
+def non_box_window(f, face, us, vs):
+    """The listed u- and v-edges of a non-box window are differences of
+    points of one kind one face apart along their direction, oriented along
+    it, and include every difference and every hull point the S_3^1 bounds
+    need (re-derived above from the supports); a superset is sound."""
+    layout = as_list(get(face, "layout", "non-box face"), f"face {f} layout")
+    pos, at = {}, {}
+    for e in layout:
+        p, x, y = as_list(e, "layout entry", 3)
+        p = as_int(p, "layout point")
+        for c in (x, y):
+            if isinstance(c, bool) or not isinstance(c, int):
+                raise Malformed(f"face {f}: layout position {c!r} is not an integer")
+        if (x % 2) != (y % 2):
+            reject(f"face {f}: layout position ({x}, {y}) is neither a V-vertex nor an FCV")
+        if p in pos or (x, y) in at:
+            reject(f"face {f}: the layout places a point twice or two points at one position")
+        pos[p], at[(x, y)] = (x, y), p
+    for (x, y) in [(0, 0), (2, 0), (2, 2), (0, 2)]:
+        if (x, y) not in at:
+            reject(f"face {f}: the layout lacks the face's corner ({x}, {y})")
+    for along, edges, name in ((0, us, "u"), (1, vs, "v")):
+        listed = set()
+        for _, _, a, b in edges:
+            if a not in pos or b not in pos:
+                reject(f"face {f}: a {name}-edge point has no layout position")
+            (ax, ay), (bx, by) = pos[a], pos[b]
+            step = (bx - ax, by - ay)
+            if step != ((2, 0) if along == 0 else (0, 2)):
+                reject(f"face {f}: the {name}-edge ({a}, {b}) is not one face along {name} between points of one kind")
+            listed.add(((ax + bx) // 2, (ay + by) // 2))
+        for h, kind in NON_BOX_DIFFERENCES[along]:
+            if h not in listed:
+                reject(f"face {f}: the S_3^1 bound needs the {kind}–{kind} {name}-difference about {h}, not listed")
+    ends = {p for e in us + vs for p in e[2:]}
+    for h in NON_BOX_HULL:
+        if at.get(h) not in ends:
+            reject(f"face {f}: the hull needs the control point at {h}, not among the window's points")
 
 
 def _add_q(x, y):

@@ -294,6 +294,56 @@ fn tampered_charmap_parts_are_rejected() {
     assert_rejected(d, "c1", &t, "does not follow from its parts");
 }
 
+/// A non-box certificate (the S_3^1 window: the face's own edges and the
+/// differences of the 9 FCVs around it, with their lattice layout) is
+/// accepted, and the checker, which re-derives from the layout which
+/// differences and hull points the spline's bounds need, rejects a window
+/// missing one of them or laid out otherwise.
+#[test]
+fn a_non_box_charmap_certificate_is_re_derived_and_its_tampering_rejected() {
+    if !python3() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let path = charmap_certificate(d, "nb5", &["non-box", "-n", "5"]);
+    let nb = read(&path);
+    let part = &nb["parts"]["charmap"];
+    assert_eq!(part["regular_part"], "non-box-s31");
+    assert_eq!(part["c1"], "PROVED");
+    // per face 2 V–V and 6 FCV–FCV differences along each direction, over
+    // the face's 4 corners and the 9 FCVs around it (lemma C3′)
+    let face = &part["faces"][0];
+    assert_eq!(face["u_edges"].as_array().unwrap().len(), 8);
+    assert_eq!(face["v_edges"].as_array().unwrap().len(), 8);
+    assert_eq!(face["layout"].as_array().unwrap().len(), 13);
+    assert_accepted(&path, "charmap non-box n = 5");
+    let edit = |f: &dyn Fn(&mut Value)| {
+        let mut doc = nb.clone();
+        f(&mut doc["parts"]["charmap"]);
+        doc
+    };
+    // an FCV–FCV difference left out of a window (the last u-edge is one)
+    let t = edit(&|c| {
+        c["faces"][0]["u_edges"].as_array_mut().unwrap().pop();
+    });
+    assert_rejected(d, "nb-missing-difference", &t, "not listed");
+    // the layout moved by one face: the edges no longer cover the face
+    let t = edit(&|c| {
+        for e in c["faces"][2]["layout"].as_array_mut().unwrap() {
+            e[1] = Value::from(e[1].as_i64().unwrap() + 2);
+        }
+    });
+    assert_rejected(d, "nb-layout", &t, "lacks the face's corner | not listed | not among the window's points");
+    // a window claimed of another kind: the layout no longer belongs
+    let t = edit(&|c| c["regular_part"] = Value::from("bicubic-b-spline"));
+    let path = d.join("tampered-nb-kind.json");
+    std::fs::write(&path, serde_json::to_string(&t).unwrap()).unwrap();
+    let (code, text, _) = check(&path);
+    assert_eq!(code, 2, "{text}");
+    assert!(text.contains("a lattice layout, but the regular part"), "{text}");
+}
+
 /// Weights known in floating point only: the document says so, and the
 /// checker cannot re-verify it.
 #[test]

@@ -9,8 +9,10 @@
 //!   scheme's characteristic map is linear (linear precision), so the
 //!   Jacobian is constant and its smallest lower bound over the ring equals
 //!   its largest upper bound, up to the enclosures' widths;
-//! - the regular rules of Kobbelt's sqrt(3) are no box spline's, and non-box
-//!   subdivision carries face control vertices: no box-spline proof applies;
+//! - the regular rules of Kobbelt's sqrt(3) are no box spline's: no
+//!   box-spline proof applies (non-box's S_3^1 spline, which reproduces
+//!   linear functions too, is in tests/certify_nonbox.rs; its regular map is
+//!   checked for linearity here);
 //! - 4-3 subdivision's quad rules are the four-direction box spline A_4's and
 //!   its triangle rules Loop's (Peters–Shiue; tests/four_three.rs derives
 //!   both masks from the direction matrices), so its eons surrounded by quads
@@ -92,7 +94,7 @@ fn the_bi2_schemes_are_proved_for_valences_3_to_24() {
 
 #[test]
 fn at_the_regular_valence_the_jacobian_is_constant() {
-    for (s, n) in [("catmull-clark", 4), ("doo-sabin", 4), ("loop", 6), ("tps", 4), ("four-three", 4)] {
+    for (s, n) in [("catmull-clark", 4), ("doo-sabin", 4), ("loop", 6), ("tps", 4), ("four-three", 4), ("non-box", 4)] {
         let c = builtin(s, n);
         let ratio = c.min_jacobian_ratio.unwrap();
         assert!((ratio - 1.0).abs() < 1e-9, "{s}: smallest lower bound over largest upper bound {ratio}");
@@ -101,16 +103,13 @@ fn at_the_regular_valence_the_jacobian_is_constant() {
 
 #[test]
 fn schemes_without_a_box_spline_regular_part_are_not_proved_and_say_why() {
-    for (s, n, why) in
-        [("sqrt3", 5, "numerical only: the rules over the ring are not"), ("non-box", 5, "face control vertices")]
-    {
-        let c = builtin(s, n);
-        match &c.regularity {
-            Verdict::NotProved(r) => assert!(r.contains(why), "{s}: {r}"),
-            other => panic!("{s}: expected NOT PROVED, got {other:?}"),
-        }
-        assert!(matches!(c.c1, Verdict::NotProved(_)), "{s}: {:?}", c.c1);
+    // Kobbelt's sqrt(3): its regular rules are no box spline's
+    let c = builtin("sqrt3", 5);
+    match &c.regularity {
+        Verdict::NotProved(r) => assert!(r.contains("numerical only: the rules over the ring are not"), "sqrt3: {r}"),
+        other => panic!("sqrt3: expected NOT PROVED, got {other:?}"),
     }
+    assert!(matches!(c.c1, Verdict::NotProved(_)), "sqrt3: {:?}", c.c1);
 }
 
 #[test]

@@ -16,14 +16,19 @@
 //!    which keeps regularity and injectivity.
 //! 2. **Net (C2).** The level-0 net of enclosures is refined with the
 //!    scheme's own rules in interval arithmetic (`net::refine_net_exactly_as`).
-//! 3. **Regular part (C3).** Over a ring face whose one-ring of faces is a
-//!    regular grid, the rules at the window's regular entities are compared
-//!    exactly with the masks of the bicubic B-spline, the biquadratic
-//!    B-spline (dual and ternary) or the three-direction quartic box spline.
-//! 4. **Jacobian (C3).** det(∂ᵤx, ∂ᵥx) lies between the smallest and the
-//!    largest det(uᵢ, vⱼ) over the window's edge vectors along the two
+//! 3. **Regular part (C3, C3′).** Over a ring face whose one-ring of faces
+//!    is a regular grid, the rules at the window's regular entities are
+//!    compared exactly with the masks of the bicubic B-spline, A_4, the
+//!    biquadratic B-spline (dual and ternary) or the three-direction quartic
+//!    box spline; on a net with face control vertices (non-box) with the
+//!    four-directional S_3^1 spline's mask, derived from its definition in
+//!    `certify::s31` (never from the scheme or the paper's printed mask).
+//! 4. **Jacobian (C3, C3′).** det(∂ᵤx, ∂ᵥx) lies between the smallest and
+//!    the largest det(uᵢ, vⱼ) over the window's edge vectors along the two
 //!    lattice directions; for the biquadratic B-spline on the face enlarged
-//!    by half a face on every side.
+//!    by half a face on every side; for S_3^1 the differences are the face's
+//!    own two edges per direction and the six differences of the 9 FCVs
+//!    around it (the window's hull: its 4 corners and those 9 FCVs).
 //! 5. **Regularity (C4, C5).** The annulus's scaled copies, with (dual
 //!    schemes) the half-face enlargement covering the quarter-face bands
 //!    between consecutive copies, cover the punctured neighbourhood; one
@@ -40,6 +45,7 @@ use serde::Serialize;
 
 use super::complex::CInterval;
 use super::discs::eigenvector;
+use super::s31;
 use super::spectrum::{certify_analysis, SpectrumCertificate, Verdict};
 use crate::charmap::net::{self, Net};
 use crate::error::Error;
@@ -78,6 +84,13 @@ pub enum RegularPart {
     /// |y| ≤ 2 about each e1-edge's midpoint, so over a face both lie in the
     /// 4×4 window as the bicubic's do: the same Jacobian and hull bounds hold.
     FourDirectionBoxSpline,
+    /// Huang's non-box scheme's regular part: the four-directional S_3^1
+    /// spline f = Σ λ_V (φ_□ * χ)(· − V) + Σ λ_F (φ_◇ * χ)(· − F), a vector
+    /// (two-generator) spline whose V-vertices carry the square hat and
+    /// whose face control vertices carry the diamond hat; its mask is
+    /// derived from that definition (`certify::s31`), and the windows hold
+    /// the face's own edges and the differences of the 9 FCVs around it.
+    NonBoxS31,
 }
 
 impl RegularPart {
@@ -88,6 +101,7 @@ impl RegularPart {
             RegularPart::ThreeDirectionQuarticBoxSpline => "three-direction quartic box spline",
             RegularPart::BiquadraticBSplineTernary => "biquadratic B-spline (ternary refinement)",
             RegularPart::FourDirectionBoxSpline => "four-direction box spline A_4",
+            RegularPart::NonBoxS31 => "four-directional S_3^1 non-box spline",
         }
     }
 }
@@ -163,6 +177,11 @@ pub struct FaceEvidence {
     pub u_edges: Vec<(usize, usize)>,
     pub v_edges: Vec<(usize, usize)>,
     pub sign: i8,
+    /// non-box windows (empty otherwise): the edges' points with their
+    /// lattice positions in half units (the face is [0, 2]², V-vertices at
+    /// even and FCVs at odd positions), from which a checker re-derives
+    /// which differences and hull points the S_3^1 bounds need
+    pub layout: Vec<(usize, [i64; 2])>,
 }
 
 /// The winding-number lemma's data (see `winding_number`): per chain edge
@@ -336,6 +355,12 @@ fn geometric_half(
                 .map(|(w, b)| FaceEvidence {
                     u_edges: w.u_pairs.clone(),
                     v_edges: w.v_pairs.clone(),
+                    layout: w
+                        .layout
+                        .iter()
+                        .filter(|(v, _)| w.u_pairs.iter().chain(&w.v_pairs).any(|&(a, b)| a == *v || b == *v))
+                        .copied()
+                        .collect(),
                     sign: if b.lo > 0.0 {
                         1
                     } else if b.hi < 0.0 {
@@ -534,6 +559,10 @@ struct Window {
     /// document, whose checker recomputes the edge vectors itself
     u_pairs: Vec<(usize, usize)>,
     v_pairs: Vec<(usize, usize)>,
+    /// non-box windows only (empty otherwise): every window point with its
+    /// lattice position in half units (V-vertices even, FCVs odd; the ring
+    /// face is [0, 2]²), for the rule check and the certificate document
+    layout: Vec<(usize, [i64; 2])>,
 }
 
 impl Window {
@@ -541,8 +570,10 @@ impl Window {
         let mesh = &net.mesh;
         let face = mesh.face(f);
         let m = face.len();
-        if mesh.face_point(f).is_some() {
-            return Err("the ring's faces carry face control vertices, not a box-spline net".into());
+        // face control vertices: Huang's non-box S_3^1 spline (quads only)
+        let fcv = mesh.face_point(f).is_some();
+        if fcv && m != 4 {
+            return Err(format!("a ring face with a face control vertex has {m} sides"));
         }
         let (valence, corners): (usize, &[(i32, i32)]) = match m {
             4 => (4, &[(0, 0), (1, 0), (1, 1), (0, 1)]),
@@ -600,6 +631,9 @@ impl Window {
             return Err(conflict());
         }
         let p = |v: usize| net.points[v].ok_or_else(|| "a window point is not determined".to_string());
+        if fcv {
+            return Window::non_box(net, f, faces, &coords);
+        }
         let (mut along_u, mut along_v) = (Vec::new(), Vec::new());
         let (mut u_pairs, mut v_pairs) = (Vec::new(), Vec::new());
         for &g in &faces {
@@ -630,7 +664,78 @@ impl Window {
             }
         }
         let points = coords.keys().map(|&v| p(v)).collect::<Result<Vec<_>, String>>()?;
-        Ok(Window { face: f, faces, along_u, along_v, points, u_pairs, v_pairs })
+        Ok(Window { face: f, faces, along_u, along_v, points, u_pairs, v_pairs, layout: Vec::new() })
+    }
+
+    /// The window of a ring face of the non-box S_3^1 spline (lemma C3′ of
+    /// ARCHITECTURE.md, `certify::s31` for the convention): `coords` lays out
+    /// the 16 V-vertices of the face's one-ring of 9 faces, the face at
+    /// [0, 1]². The FCVs sit at the 9 faces' centres.
+    ///
+    /// ∂_u f = Σ_m d_m ψ(· − m) over the horizontal differences d_m of
+    /// control points of one kind at distance 1 (midpoint m), with
+    /// ψ = φ * χ^v ≥ 0 (χ^v the unit segment along v) and Σ_m ψ(· − m) = 1.
+    /// The open support of ψ is m + (−½, ½) × (−1, 1) for V–V differences and
+    /// {|x₁ − m₁| < 1, |x₁ − m₁| + |x₂ − m₂| < 3/2} for FCV–FCV ones; those
+    /// meeting the closed face [0, 1]² are its own two u-edges and the six
+    /// u-differences among the 9 FCVs (m₁ ∈ {0, 1}, m₂ ∈ {−½, ½, 3/2}); v
+    /// likewise. The hull: B_V's open support (−1, 1)² about the V-vertex and
+    /// B_F's octagon {|·|∞ < 3/2, |·|₁ < 2} about the FCV meet the face for
+    /// its 4 corners and the 9 FCVs only.
+    fn non_box(
+        net: &Net<Point>,
+        f: usize,
+        faces: Vec<usize>,
+        coords: &HashMap<usize, (i32, i32)>,
+    ) -> Result<Window, String> {
+        let mesh = &net.mesh;
+        // half units: V-vertices at even, FCVs at odd coordinates
+        let mut layout: Vec<(usize, [i64; 2])> =
+            coords.iter().map(|(&v, &(x, y))| (v, [2 * x as i64, 2 * y as i64])).collect();
+        for &g in &faces {
+            let fp = mesh.face_point(g).ok_or("a face of a ring face's one-ring has no face control vertex")?;
+            let sum = mesh
+                .face(g)
+                .iter()
+                .fold([0i64; 2], |s, v| [s[0] + 2 * coords[v].0 as i64, s[1] + 2 * coords[v].1 as i64]);
+            layout.push((fp, [sum[0] / 4, sum[1] / 4]));
+        }
+        layout.sort_unstable();
+        let at: HashMap<[i64; 2], usize> = layout.iter().map(|&(v, c)| (c, v)).collect();
+        let id = |c: [i64; 2]| at.get(&c).copied().ok_or_else(|| "a non-box window point is missing".to_string());
+        let p = |v: usize| net.points[v].ok_or_else(|| "a window point is not determined".to_string());
+        let diff = |a: usize, b: usize| -> Result<Point, String> {
+            let (from, to) = (p(a)?, p(b)?);
+            Ok([to[0] - from[0], to[1] - from[1]])
+        };
+        let (mut along_u, mut along_v) = (Vec::new(), Vec::new());
+        let (mut u_pairs, mut v_pairs) = (Vec::new(), Vec::new());
+        // the face's own V–V edges, then the FCV–FCV differences
+        let mut u_from: Vec<[i64; 2]> = vec![[0, 0], [0, 2]];
+        let mut v_from: Vec<[i64; 2]> = vec![[0, 0], [2, 0]];
+        for a in [-1, 1] {
+            for b in [-1, 1, 3] {
+                u_from.push([a, b]);
+                v_from.push([b, a]);
+            }
+        }
+        for c in u_from {
+            let (a, b) = (id(c)?, id([c[0] + 2, c[1]])?);
+            along_u.push(diff(a, b)?);
+            u_pairs.push((a, b));
+        }
+        for c in v_from {
+            let (a, b) = (id(c)?, id([c[0], c[1] + 2])?);
+            along_v.push(diff(a, b)?);
+            v_pairs.push((a, b));
+        }
+        let hull: Vec<usize> = layout
+            .iter()
+            .filter(|(_, c)| (c[0] % 2 != 0) || ((0..=2).contains(&c[0]) && (0..=2).contains(&c[1])))
+            .map(|&(v, _)| v)
+            .collect();
+        let points = hull.iter().map(|&v| p(v)).collect::<Result<Vec<_>, String>>()?;
+        Ok(Window { face: f, faces, along_u, along_v, points, u_pairs, v_pairs, layout })
     }
 
     /// An enclosure of the range of det(uᵢ, vⱼ) over the window's edge
@@ -661,6 +766,9 @@ impl Window {
 /// share their edge and face masks and differ at vertices). Returns the box
 /// spline and the number of stencils compared.
 fn check_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[Window]) -> Result<(RegularPart, usize), String> {
+    if windows.iter().any(|w| !w.layout.is_empty()) {
+        return check_non_box_rules(scheme, mesh, windows);
+    }
     let mut corners: HashSet<usize> = HashSet::new();
     let mut faces: HashSet<usize> = HashSet::new();
     for w in windows {
@@ -737,6 +845,108 @@ fn check_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[Window]) -> Resu
 
 /// A stencil or mask: weight per control point.
 type Mask = HashMap<usize, Rational>;
+
+/// The scheme's rational stencil at `origin`, repeated points merged and
+/// zero weights dropped.
+fn exact_stencil(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> Result<Mask, String> {
+    let stencil = stencil_at::<Rational>(scheme, mesh, origin)
+        .map_err(|_| "a rule over the ring has an irrational weight".to_string())?
+        .ok_or("a rule over the ring cannot be evaluated on the net")?;
+    let mut got: Mask = HashMap::new();
+    for (v, w) in stencil.terms {
+        *got.entry(v).or_insert_with(<Rational as Weight>::zero) += w;
+    }
+    got.retain(|_, w| !Weight::is_zero(w));
+    Ok(got)
+}
+
+/// The rule check for non-box windows: every new point that the limit over
+/// a ring face depends on after one step — its corners' V-vertex rules, the
+/// E-vertex rules of the edges at its corners, the FCV rules of the one-ring's
+/// faces and the NFCV rules of their quads at the face's corners (the new
+/// face's corners and the 3×3 new FCVs around it, lemma C3′) — compared
+/// exactly with the mask derived from the S_3^1 spline's definition
+/// (`s31::mask`), laid out by the window's lattice positions. The one-ring
+/// of the new faces is again regular, so by the rules' locality the same
+/// comparison holds at every later level.
+fn check_non_box_rules(
+    scheme: &dyn Scheme,
+    mesh: &PolyMesh,
+    windows: &[Window],
+) -> Result<(RegularPart, usize), String> {
+    // per origin of interest, the window whose layout places it (any one:
+    // the derived mask is symmetric under the lattice's rotations and
+    // reflections, so every window that holds it gives the same mask)
+    let mut vertex: HashMap<usize, usize> = HashMap::new();
+    let mut edge: HashMap<(usize, usize), usize> = HashMap::new();
+    let mut face: HashMap<usize, usize> = HashMap::new();
+    let mut corner: HashMap<(usize, usize), usize> = HashMap::new();
+    for (i, w) in windows.iter().enumerate() {
+        if w.layout.is_empty() {
+            return Err("the ring mixes faces with and without face control vertices".into());
+        }
+        let own = mesh.face(w.face);
+        for &c in own {
+            vertex.entry(c).or_insert(i);
+        }
+        for &g in &w.faces {
+            face.entry(g).or_insert(i);
+            let gf = mesh.face(g);
+            for k in 0..gf.len() {
+                let (a, b) = (gf[k], gf[(k + 1) % gf.len()]);
+                if own.contains(&a) || own.contains(&b) {
+                    edge.entry((a.min(b), a.max(b))).or_insert(i);
+                }
+                if own.contains(&a) {
+                    corner.entry((g, k)).or_insert(i);
+                }
+            }
+        }
+    }
+    let refined = connectivity(scheme, mesh).map_err(|e| format!("the net could not be refined: {e}"))?;
+    let mut checked = 0;
+    for &origin in &refined.vertex_origins {
+        let window = match origin {
+            Origin::Vertex(v) => vertex.get(&v),
+            Origin::Edge(a, b) => edge.get(&(a.min(b), a.max(b))),
+            Origin::Face(g) => face.get(&g),
+            Origin::Corner { face: g, corner: k } => corner.get(&(g, k)),
+        };
+        let Some(&i) = window else { continue };
+        let w = &windows[i];
+        // quarter units of the coarse lattice (`s31`): twice the half units
+        let quarter: HashMap<usize, (i64, i64)> = w.layout.iter().map(|&(v, c)| (v, (2 * c[0], 2 * c[1]))).collect();
+        let at: HashMap<(i64, i64), usize> = quarter.iter().map(|(&v, &c)| (c, v)).collect();
+        let q =
+            |v: usize| quarter.get(&v).copied().ok_or_else(|| "a rule's entity lies outside its window".to_string());
+        let mid = |a: (i64, i64), b: (i64, i64)| ((a.0 + b.0) / 2, (a.1 + b.1) / 2);
+        let new = match origin {
+            Origin::Vertex(v) => q(v)?,
+            Origin::Edge(a, b) => mid(q(a)?, q(b)?),
+            Origin::Face(g) => q(mesh.face_point(g).ok_or("a window face has no face control vertex")?)?,
+            Origin::Corner { face: g, corner: k } => {
+                mid(q(mesh.face(g)[k])?, q(mesh.face_point(g).ok_or("a window face has no face control vertex")?)?)
+            }
+        };
+        let derived = s31::mask(new).ok_or("a new point is not at a control position of the S_3^1 lattice")?;
+        let mut expected: Mask = HashMap::new();
+        for (p, weight) in derived {
+            let &v = at.get(&p).ok_or("the S_3^1 mask reaches beyond the window")?;
+            expected.insert(v, weight);
+        }
+        if exact_stencil(scheme, mesh, origin)? != expected {
+            return Err(format!(
+                "numerical only: at {origin:?} the stencil is not the four-directional S_3^1 spline's refinement \
+                 mask, so the ring is not that spline of its net"
+            ));
+        }
+        checked += 1;
+    }
+    if checked == 0 {
+        return Err("no rule over the ring was recognised".into());
+    }
+    Ok((RegularPart::NonBoxS31, checked))
+}
 
 /// The masks at a regular vertex: bicubic or A_4 (valence-4 quads), ternary
 /// biquadratic, or Loop's (valence-6 triangles).

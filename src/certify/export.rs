@@ -320,13 +320,17 @@ pub fn charmap_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &CharMapCert
         edges.iter().map(|&(a, b)| Ok([node(a)?, node(b)?])).collect()
     };
     for f in &e.faces {
-        faces.push((pairs(&f.u_edges)?, pairs(&f.v_edges)?, f.sign));
+        let layout: Vec<(usize, [i64; 2])> =
+            f.layout.iter().map(|&(v, c)| Ok((node(v)?, c))).collect::<Result<_, &str>>()?;
+        faces.push((pairs(&f.u_edges)?, pairs(&f.v_edges)?, f.sign, layout));
     }
     let chain: Vec<usize> = match &e.winding {
         Some(w) => w.vertices.iter().map(|&v| node(v)).collect::<Result<_, _>>()?,
         None => Vec::new(),
     };
-    stack.extend(faces.iter().flat_map(|(u, v, _)| u.iter().chain(v).flatten().copied()));
+    stack.extend(
+        faces.iter().flat_map(|(u, v, _, l)| u.iter().chain(v).flatten().copied().chain(l.iter().map(|p| p.0))),
+    );
     stack.extend(chain.iter().copied());
     while let Some(i) = stack.pop() {
         if !std::mem::replace(&mut needed[i], true) {
@@ -349,9 +353,16 @@ pub fn charmap_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &CharMapCert
     }
     let faces: Vec<Value> = faces
         .iter()
-        .map(|(u, v, sign)| {
+        .map(|(u, v, sign, layout)| {
             let map = |edges: &Vec<[usize; 2]>| edges.iter().map(|[a, b]| [index[*a], index[*b]]).collect::<Vec<_>>();
-            json!({ "u_edges": map(u), "v_edges": map(v), "sign": match sign { 1 => "+", -1 => "-", _ => "?" } })
+            let mut face =
+                json!({ "u_edges": map(u), "v_edges": map(v), "sign": match sign { 1 => "+", -1 => "-", _ => "?" } });
+            // non-box windows: the points' lattice positions, [point, x, y]
+            // in half units, from which the checker re-derives the edge set
+            if !layout.is_empty() {
+                face["layout"] = json!(layout.iter().map(|(p, c)| [index[*p] as i64, c[0], c[1]]).collect::<Vec<_>>());
+            }
+            face
         })
         .collect();
     let winding = e.winding.as_ref().map(|w| {
@@ -381,12 +392,14 @@ pub fn charmap_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &CharMapCert
         "faces": faces,
         "winding": winding,
         "trusted": [
-            "the rules over the ring faces' windows are the regular part's box-spline masks (compared exactly by \
-             subdlab), so the Jacobian over a face lies between the least and greatest det(u_i, v_j) of its window",
+            "the rules over the ring faces' windows are the regular part's box-spline masks, or for non-box the \
+             four-directional S_3^1 spline's mask derived from its definition (compared exactly by subdlab), so the \
+             Jacobian over a face lies between the least and greatest det(u_i, v_j) of its window",
             "the ring faces, their scaled copies (and for dual schemes the half-face enlargement) cover the punctured \
              neighbourhood of the centre",
-            "each window is the ring face's one-ring laid out on the lattice, with its u- and v-edges as listed, and \
-             the chain is the annulus's inner boundary, window i the ring face beside its edge i",
+            "each window is the ring face's one-ring laid out on the lattice, with its u- and v-edges as listed (for \
+             non-box windows: at the positions its layout gives), and the chain is the annulus's inner boundary, \
+             window i the ring face beside its edge i",
         ],
     }))
 }

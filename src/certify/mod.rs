@@ -21,8 +21,12 @@
 //!   checker, `scripts/check_cert.py`, re-verifies from the exact rows;
 //! - [`charmap`]: the geometric verdict (the characteristic map regular and
 //!   injective) from enclosed eigenvectors, an interval net refined with the
-//!   rules, box-spline Jacobian bounds per ring face and a certified winding
-//!   number; with the spectral verdict, Reif's criterion as a whole.
+//!   rules, box-spline (or non-box S_3^1) Jacobian bounds per ring face and a
+//!   certified winding number; with the spectral verdict, Reif's criterion
+//!   as a whole;
+//! - [`s31`]: the refinement mask of the four-directional S_3^1 spline
+//!   (non-box subdivision's regular part), derived from its two generators'
+//!   definition, which `charmap` compares the rules with.
 
 pub mod charmap;
 pub mod complex;
@@ -30,6 +34,7 @@ pub mod discs;
 pub mod exact_spectrum;
 pub mod export;
 pub mod matrix;
+pub mod s31;
 pub mod spectrum;
 
 pub use charmap::{certify_charmap, CharMapCertificate};
