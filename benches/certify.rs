@@ -1,14 +1,14 @@
 //! The certified verdicts alone, after the floating-point analysis they
-//! reuse (made once outside the timed loop), for every scheme whose
-//! characteristic map the certificate covers (Catmull–Clark, Loop, Doo–Sabin,
-//! 4-3 at its quad eons, PGS, TPS):
+//! reuse (made once outside the timed loop):
 //! - `certify_spectrum` (interval rows of S from the rules, interval Fourier
 //!   blocks, their verified enclosures, the premises and the verdict) at
-//!   n = 3..200;
+//!   n = 3..200, for every seed mesh scheme (its default parameters);
 //! - `certify_charmap` (the spectral certificate, the enclosed block
 //!   eigenvector, the interval net refined with the rules, the exact check of
 //!   the regular rules, the Jacobian bounds per ring face and the certified
-//!   winding number) at n = 3..50.
+//!   winding number) at n = 3..50, for every scheme whose characteristic map
+//!   the certificate covers (Catmull–Clark, Loop, Doo–Sabin, non-box, 4-3 at
+//!   its quad eons, PGS, TPS).
 //!
 //! `scripts/bench-certify.sh` runs both and prints the README's tables
 //! ("Certified verdicts", "Certified characteristic maps").
@@ -16,18 +16,39 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::time::Duration;
 use subdlab::certify::charmap::DEFAULT_MAX_LEVELS;
-use subdlab::certify::{certify_charmap, certify_spectrum};
+use subdlab::certify::certify_charmap;
 use subdlab::neighbourhood::Configuration;
 use subdlab::schemes::{self, Scheme};
 use subdlab::spectrum::{analyse, Analysis, Options};
 
-const SCHEMES: [&str; 6] = ["catmull-clark", "loop", "doo-sabin", "four-three", "pgs", "tps"];
+/// Every seed mesh scheme (the spectral certificate).
+const SPECTRUM_SCHEMES: [&str; 10] = [
+    "catmull-clark",
+    "loop",
+    "doo-sabin",
+    "non-box",
+    "four-three",
+    "sqrt3",
+    "unified-sqrt3",
+    "pgs",
+    "tps",
+    "polar-bi2",
+];
+
+/// The schemes whose characteristic map the certificate covers.
+const CHARMAP_SCHEMES: [&str; 7] = ["catmull-clark", "loop", "doo-sabin", "non-box", "four-three", "pgs", "tps"];
 
 /// Time `run` on the analysis of every scheme at every valence, in a group.
-fn bench_group(c: &mut Criterion, group: &str, valences: &[usize], run: fn(&dyn Scheme, &Analysis)) {
+fn bench_group(
+    c: &mut Criterion,
+    group: &str,
+    names: &[&str],
+    valences: &[usize],
+    run: fn(&dyn Scheme, &Analysis),
+) {
     let mut group = c.benchmark_group(group);
     group.sample_size(10).warm_up_time(Duration::from_millis(300)).measurement_time(Duration::from_secs(2));
-    for name in SCHEMES {
+    for &name in names {
         let scheme = schemes::build(name, &[]).unwrap();
         for &n in valences {
             let config = Configuration::regular(scheme.as_ref(), n).unwrap();
@@ -39,13 +60,13 @@ fn bench_group(c: &mut Criterion, group: &str, valences: &[usize], run: fn(&dyn 
 }
 
 fn spectrum(c: &mut Criterion) {
-    bench_group(c, "certify_spectrum", &[3, 5, 10, 25, 50, 100, 200], |s, a| {
-        std::hint::black_box(certify_spectrum(s, a, 1).unwrap().verdict);
+    bench_group(c, "certify_spectrum", &SPECTRUM_SCHEMES, &[3, 5, 10, 25, 50, 100, 200], |s, a| {
+        std::hint::black_box(subdlab::certify::certify_analysis(s, a).unwrap().verdict);
     });
 }
 
 fn charmap(c: &mut Criterion) {
-    bench_group(c, "certify_charmap", &[3, 5, 10, 25, 50], |s, a| {
+    bench_group(c, "certify_charmap", &CHARMAP_SCHEMES, &[3, 5, 10, 25, 50], |s, a| {
         std::hint::black_box(certify_charmap(s, a, DEFAULT_MAX_LEVELS).unwrap().c1);
     });
 }

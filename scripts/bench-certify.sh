@@ -8,19 +8,27 @@ cd "$(dirname "$0")/.."
 cargo bench --bench certify -- "$@" >&2
 python3 - <<'PY'
 import json, os
-schemes = ["catmull-clark", "loop", "doo-sabin", "four-three", "pgs", "tps"]
 for group in ["certify_spectrum", "certify_charmap"]:
     root = os.path.join("target/criterion", group)
+    if not os.path.isdir(root):
+        continue
+    # the schemes the bench measured, in its own order (benches/certify.rs)
+    order = ["catmull-clark", "loop", "doo-sabin", "non-box", "four-three", "sqrt3", "unified-sqrt3", "pgs", "tps", "polar-bi2"]
+    schemes = [s for s in order if os.path.isdir(os.path.join(root, s))]
     if not os.path.isdir(os.path.join(root, schemes[0])):
         continue
     ns = sorted(int(d) for d in os.listdir(os.path.join(root, schemes[0])) if d.isdigit())
     def mean(s, n):
-        with open(os.path.join(root, s, str(n), "new", "estimates.json")) as f:
+        path = os.path.join(root, s, str(n), "new", "estimates.json")
+        if not os.path.exists(path):
+            return None
+        with open(path) as f:
             return json.load(f)["mean"]["point_estimate"] * 1e-9
     print(f"{group}\n")
     print("| n | " + " | ".join(schemes) + " |")
     print("|---:|" + "---:|" * len(schemes))
     for n in ns:
-        print(f"| {n} | " + " | ".join(f"{mean(s, n) * 1e3:.2f} ms" for s in schemes) + " |")
+        cells = [mean(s, n) for s in schemes]
+        print(f"| {n} | " + " | ".join("-" if t is None else f"{t * 1e3:.2f} ms" for t in cells) + " |")
     print()
 PY

@@ -183,14 +183,26 @@ fn fourier_designed_files_are_decided_where_their_weights_hold_irrational_cosine
     assert!(c.premises.as_ref().unwrap().exact);
 }
 
+/// Without a rotation of order ≥ 3 the blocks cannot split λ1's pair. With
+/// rational weights (the transition node QQTTT) lemma S7 proves it from the
+/// exact characteristic polynomial, with λ1 = 1/2 (Peters–Shiue's S_43:
+/// leading eigenvalues 1, 1/2, 1/2, 1/4); with cos(2π/5) in the eon rules
+/// (QQTQT) neither route applies, and the reason says so.
 #[test]
-fn a_configuration_without_rotation_symmetry_is_not_proved_with_the_reason() {
-    let out = subdlab(&["spectrum", "four-three", "-n", "5", "--faces", "QQTTT", "--certify", "--json"]);
-    assert!(out.status.success());
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let cert = &v["certificate"];
-    assert_eq!(cert["verdict"], "not_proved");
-    assert!(cert["reason"].as_str().unwrap().contains("no rotation symmetry"));
+fn a_configuration_without_rotation_symmetry_is_proved_exactly_or_not_proved_with_the_reason() {
+    let certificate = |faces: &str| {
+        let out = subdlab(&["spectrum", "four-three", "-n", "5", "--faces", faces, "--certify", "--json"]);
+        assert!(out.status.success());
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        v["certificate"].clone()
+    };
+    let node = certificate("QQTTT");
+    assert_eq!(node["verdict"], "proved", "{node}");
+    assert_eq!(node["exact_route"]["lambda1"], "1/2", "{node}");
+    let eon = certificate("QQTQT");
+    assert_eq!(eon["verdict"], "not_proved");
+    let reason = eon["reason"].as_str().unwrap();
+    assert!(reason.contains("no rotation symmetry") && reason.contains("irrational"), "{reason}");
 }
 
 #[test]
