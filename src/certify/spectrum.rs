@@ -972,6 +972,47 @@ mod tests {
     }
 
     #[test]
+    fn lemma_s6_stands_for_failed_blocks_other_than_0_1_and_g_minus_1() {
+        // g = 5, λ1 = 1/2 ± 1e-12 in blocks 1 and 4; block 2's discs failed
+        let failed = |m: usize, power: Option<PowerBound>| BlockEnclosure {
+            block: m,
+            size: 3,
+            epsilon: None,
+            components: Vec::new(),
+            failure: Some("ill-conditioned".into()),
+            diagonalisation: None,
+            power_bound: power,
+        };
+        let blocks = |b2: BlockEnclosure| {
+            vec![
+                block(0, &[(1.0, 0.0, 1e-12), (0.25, 0.0, 1e-3)]),
+                block(1, &[(0.5, 0.0, 1e-12), (0.25, 0.0, 1e-3)]),
+                b2,
+                block(3, &[(0.1, 0.0, 1e-3)]),
+                block(4, &[(0.5, 0.0, 1e-12), (0.25, 0.0, 1e-3)]),
+            ]
+        };
+        // no bound: NOT PROVED naming the block
+        let (cert, _) = decide(&blocks(failed(2, None)), &exact_premises(), 5, Method::Dft);
+        assert!(matches!(&cert.verdict, Verdict::NotProved(w) if w.contains("block 2")), "{:?}", cert.verdict);
+        // ρ(B_2) ≤ 0.4653 (polar bi-2's ‖B^4‖∞ = 3/64): PROVED, the gap from it
+        let bound = PowerBound { k: 4, norm: 3.0 / 64.0, radius: 0.4653024295510502 };
+        let (cert, _) = decide(&blocks(failed(2, Some(bound))), &exact_premises(), 5, Method::Dft);
+        assert_eq!(cert.verdict, Verdict::Proved);
+        assert_eq!(cert.margins.power_bounded, vec![2]);
+        assert_eq!(cert.margins.others_max_modulus, Some(bound.radius));
+        // a bound that does not clear λ1 (ρ may equal it): NOT PROVED, naming S6
+        let weak = PowerBound { k: 512, norm: 1e-150, radius: 0.5000001 };
+        let (cert, _) = decide(&blocks(failed(2, Some(weak))), &exact_premises(), 5, Method::Dft);
+        assert!(matches!(&cert.verdict, Verdict::NotProved(w) if w.contains("lemma S6")), "{:?}", cert.verdict);
+        // λ1's own block never takes S6: block 1 without discs stays NOT PROVED
+        let mut b = blocks(block(2, &[(0.1, 0.0, 1e-3)]));
+        b[1] = failed(1, Some(bound));
+        let (cert, _) = decide(&b, &exact_premises(), 5, Method::Dft);
+        assert!(matches!(&cert.verdict, Verdict::NotProved(w) if w.starts_with("block 1")), "{:?}", cert.verdict);
+    }
+
+    #[test]
     fn a_negative_leading_disc_disproves_only_when_it_outdoes_every_candidate() {
         // block 1 leads with −0.6 ± 0.001; a positive 0.5995 ± 0.001 in block
         // 1 cannot be separated from it in modulus: NOT PROVED, never
