@@ -141,7 +141,7 @@ fn certificates_of_the_registrys_certified_spectral_claims_are_accepted() {
     }
     let claims = certified_spectral_claims();
     let schemes: Vec<&str> = claims.iter().map(|c| c.0.as_str()).collect();
-    for want in ["pgs", "tps", "non-box", "unified-sqrt3"] {
+    for want in ["pgs", "tps", "non-box", "unified-sqrt3", "polar-bi2"] {
         assert!(schemes.contains(&want), "no certified spectral claim on {want}: {schemes:?}");
     }
     let dir = tempfile::tempdir().unwrap();
