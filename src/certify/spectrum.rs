@@ -399,7 +399,8 @@ fn with_power_bounds(
         Some(c) => c.min_modulus(),
         None => return enclosures,
     };
-    if !(target > 0.0) {
+    // NaN included: no guide, no attempt
+    if target.is_nan() || target <= 0.0 {
         return enclosures;
     }
     let needed: Vec<usize> = enclosures
@@ -879,8 +880,23 @@ fn decide(
                 None,
             );
         }
-        // name the enclosure that reaches λ1
-        let (m, c) = others.iter().max_by(|a, b| a.1.max_modulus().total_cmp(&b.1.max_modulus())).copied().unwrap();
+        // name the enclosure that reaches λ1: the largest of block bm, whose
+        // bound came from its discs (a wider one in a block that S6 bounded
+        // is not the obstacle)
+        let largest = |of: &dyn Fn(usize) -> bool| {
+            others
+                .iter()
+                .filter(|(m, _)| of(*m))
+                .max_by(|a, b| a.1.max_modulus().total_cmp(&b.1.max_modulus()))
+                .copied()
+        };
+        let Some((m, c)) = largest(&|m| m == bm).or_else(|| largest(&|_| true)) else {
+            return finish(
+                Verdict::NotProved(format!("the gap below λ1 ≥ {:.9} is not shown", lambda1_mod.0)),
+                margins,
+                None,
+            );
+        };
         let held = if m == 0 {
             " (block 0 holds λ0 = 1, so lemma S6, a bound of the block's spectral radius, cannot separate it)"
         } else if m == 1 || m == g - 1 {
