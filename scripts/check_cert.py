@@ -444,6 +444,17 @@ def cmatmul(a, b):
     return out
 
 
+def scale_matrix(c, a):
+    """The positive rational c times a complex ball matrix (outward)."""
+    out = ([], [], [], [])
+    for part, rad in ((0, 2), (1, 3)):
+        for mrow, rrow in zip(a[part], a[rad]):
+            balls = [scale_ball(c, x, r) for x, r in zip(mrow, rrow)]
+            out[part].append([b[0] for b in balls])
+            out[rad].append([b[1] for b in balls])
+    return out
+
+
 def ceil_sqrt(n):
     r = math.isqrt(n)
     return r if r * r == n else r + 1
@@ -525,6 +536,12 @@ def mod_separated(a, b):
     s = a.r + b.r
     lhs = a.norm2() - b.norm2() - s * s
     return lhs > 0 and lhs * lhs > 4 * s * s * b.norm2()
+
+
+def mod_from(d, lo):
+    """Every point of d has modulus ≥ lo (≥ 0): |c| − r ≥ lo."""
+    t = lo + d.r
+    return d.norm2() >= t * t
 
 
 def real_section_above(d, lo):
@@ -1035,8 +1052,6 @@ class Checker:
         g = self.g
         if g < 3:
             reject(f"PROVED with a rotation group of order {g}: blocks 1 and g − 1 must differ")
-        if self.failed:
-            reject(f"PROVED while block(s) {self.failed} have no enclosure")
         self.need("row sums", "rotation", "mirror")
         m0, i0 = self.named(get(claims, "lambda0", "claims"), "λ0's component")
         if m0 != 0:
@@ -1080,9 +1095,17 @@ class Checker:
             f"λ1: simple in blocks 1 and {g - 1}, real (its component meets the real axis, its mirror image no other "
             f"component), {float(lam1_lo):.12f} ≤ λ1 ≤ {float(max(highs)):.12f}, below λ0"
         )
+        # lemma S6: blocks whose eigenvalues are bounded by ‖B^k‖∞^(1/k)
+        # instead of their discs (recomputed here from the rows)
+        self.powers = self.check_power_bounds(claims, self.components[1][named1[0][1]])
+        uncovered = [m for m in self.failed if m not in self.powers]
+        if uncovered:
+            reject(f"PROVED while block(s) {uncovered} have no enclosure (no discs, no lemma S6 bound)")
         special = {(0, i0)} | set(named1)
         worst = None
         for m, comps in self.components.items():
+            if m in self.powers:
+                continue
             for i, c in enumerate(comps):
                 if (m, i) in special:
                     continue
@@ -1090,7 +1113,10 @@ class Checker:
                     if not mod_below(d, lam1_lo):
                         reject(f"block {m}, component {i}: an eigenvalue may reach λ1's modulus (gap not shown)")
                     worst = d if worst is None or d.norm2() + d.r * d.r > worst.norm2() + worst.r * worst.r else worst
-        self.ok(f"gap: every other component of every block lies strictly inside |z| < {float(lam1_lo):.12f}")
+        self.ok(
+            f"gap: every other component of every block{' not bounded by lemma S6' if self.powers else ''} lies "
+            f"strictly inside |z| < {float(lam1_lo):.12f}"
+        )
         self.check_margins(margins, c0, [self.components[m][i] for m, i in named1], special)
 
     def check_exact_route(self, route, margins):
@@ -1136,6 +1162,66 @@ class Checker:
             if others is not None and Fraction(as_float(others, "others_max_modulus")) < below:
                 reject("margin: the claimed bound on the other eigenvalues is below the proved one")
 
+    def check_power_bounds(self, claims, c1):
+        """Lemma S6 re-derived: for each claimed block m (never 0, 1 or g − 1,
+        whose spectral radius is λ0's or λ1's own), ρ(B_m)^k ≤ ‖B_m^k‖∞ for
+        every induced norm and k ≥ 1. Here B_m is rebuilt from the rows,
+        divided by the claimed lower bound ℓ of λ1 (checked against λ1's
+        component c1, in block 1: λ1 is real and positive, shown above, so
+        λ1 = |λ1| ≥ ℓ when every point of c1 has modulus ≥ ℓ), squared s times
+        (k = 2^s) in ball arithmetic: ‖(B_m/ℓ)^k‖∞ < 1 gives ρ(B_m) < ℓ ≤ λ1.
+        Dividing by ℓ first keeps the powers near 1 on the 2^-P grid. Returns
+        {block: claimed radius} (each checked: radius^k ≥ claimed norm ≥ the
+        recomputed bound of ‖B_m^k‖∞)."""
+        recs = claims.get("power_bounds") if isinstance(claims, dict) else None
+        out, used = {}, []
+        if recs is None:
+            return out
+        g = self.g
+        for rec in as_list(recs, "claims.power_bounds"):
+            m = as_int(get(rec, "block", "power bound"), "power bound block")
+            if m in (0, 1, g - 1) or m >= g:
+                reject(f"lemma S6 is claimed for block {m}, which holds λ0 or λ1 (or does not exist): its spectral radius separates nothing")
+            if m in out:
+                reject(f"lemma S6 is claimed twice for block {m}")
+            k = as_int(get(rec, "k", f"block {m} power bound"), f"block {m} k")
+            if k < 1 or k & (k - 1) or k > 1 << 16:
+                reject(f"block {m}: lemma S6's power k = {k} is not a power of two up to 2^16")
+            norm = Fraction(as_float(get(rec, "norm", f"block {m} power bound"), f"block {m} norm"))
+            radius = Fraction(as_float(get(rec, "radius", f"block {m} power bound"), f"block {m} radius"))
+            ell = Fraction(as_float(get(rec, "lambda1_lower", f"block {m} power bound"), f"block {m} lambda1_lower"))
+            if not (ell > 0 and all(mod_from(d, ell) for d in c1)):
+                reject(f"block {m}: lemma S6 compares with λ1 ≥ {float(ell):.12f}, which λ1's component does not show")
+            _, a = self.block_matrix(m)
+            a = scale_matrix(1 / ell, a)
+            for _ in range(k.bit_length() - 1):
+                a = cmatmul(a, a)
+            kk = len(a[0])
+            scaled = max(
+                (sum(mag(a[0][i][j], a[1][i][j], a[2][i][j], a[3][i][j]) for j in range(kk)) for i in range(kk)),
+                default=0,
+            )
+            if scaled >= UNIT:
+                reject(
+                    f"block {m}: ‖(B/ℓ)^{k}‖∞ ≤ {scaled / UNIT:.6e} is not below 1 (ℓ = {float(ell):.12f} ≤ λ1): "
+                    f"lemma S6 does not clear λ1"
+                )
+            bound = Fraction(scaled, UNIT) * ell**k  # ≥ ‖B^k‖∞
+            if norm < bound:
+                reject(f"block {m}: the claimed ‖B^{k}‖∞ ≤ {float(norm):.6e} is below the recomputed bound {float(bound):.6e}")
+            if not norm < ell**k:
+                reject(f"block {m}: the claimed ‖B^{k}‖∞ ≤ {float(norm):.6e} does not clear λ1^{k} ≥ {float(ell**k):.6e}")
+            if radius**k < norm:
+                reject(f"block {m}: the claimed radius {float(radius):.9f} is below ‖B^{k}‖∞^(1/{k})")
+            out[m] = radius
+            used.append(f"{m} (k = {k})")
+        if out:
+            self.ok(
+                f"lemma S6, block(s) {', '.join(used)}: (B/ℓ)^k rebuilt from the rows by ball squarings has "
+                "‖(B/ℓ)^k‖∞ < 1 for a lower bound ℓ of λ1, so ρ(B) < λ1"
+            )
+        return out
+
     def check_margins(self, margins, c0, c1s, special):
         """The claimed margins must be valid bounds of the enclosed values."""
         if not isinstance(margins, dict):
@@ -1155,7 +1241,13 @@ class Checker:
         others = margins.get("others_max_modulus")
         if others is not None:
             bound = Fraction(as_float(others, "others_max_modulus"))
+            powers = getattr(self, "powers", {})
+            for m, radius in powers.items():
+                if radius > bound:
+                    reject(f"margin: block {m}'s lemma S6 bound exceeds the claimed largest other modulus")
             for m, comps in self.components.items():
+                if m in powers:
+                    continue
                 for i, c in enumerate(comps):
                     if (m, i) not in special and not all(mod_at_most(d, bound) for d in c):
                         reject(f"margin: block {m}, component {i} exceeds the claimed largest other modulus")

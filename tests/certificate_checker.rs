@@ -573,3 +573,162 @@ fn the_exact_route_is_re_derived_and_its_tamperings_rejected() {
     // the 1/4 of the spectrum is not below 1/8
     assert_rejected(d, "others-below", &edit(&|r| r["others_below"] = "1/8".into()), "may have modulus ≥ 1/8");
 }
+
+
+/// Lemma S6 (ARCHITECTURE.md): blocks other than 0, 1, g − 1 bounded by
+/// ‖B^k‖∞^(1/k). Polar bi-2's blocks m ∉ {0, ±1} are lower triangular on
+/// each radial line (a' = 0, b' = 3/4 a + 1/4 b, c' = 1/4 a + 3/4 b: the
+/// spoke rule's ring weights have no Fourier component there), with
+/// eigenvalues 1/4, 0, 0 and 0 defective, so their discs fail or are wide;
+/// λ1 = 1/2. The proof takes these blocks from S6, and the checker
+/// recomputes B^k from the exact rows.
+#[test]
+fn polar_bi2_certificates_by_lemma_s6_are_accepted() {
+    if !python3() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    // n = 12: blocks 2 and 10 have no disc enclosure at all
+    for (args, failed) in [
+        (vec!["polar-bi2", "-n", "5"], vec![]),
+        (vec!["polar-bi2", "-n", "12"], vec![2, 10]),
+        (vec!["unified-sqrt3", "--param", "alpha=1", "-n", "8"], vec![4]),
+    ] {
+        let name = args.join("-");
+        let path = certificate(dir.path(), &name, &args);
+        let doc = read(&path);
+        let s = &doc["parts"]["spectrum"];
+        assert_eq!(s["verdict"], "PROVED", "{name}");
+        let g = s["group_order"].as_u64().unwrap();
+        let bounded: Vec<u64> =
+            s["claims"]["power_bounds"].as_array().unwrap().iter().map(|p| p["block"].as_u64().unwrap()).collect();
+        assert!(!bounded.is_empty(), "{name}");
+        // never λ0's or λ1's block, and every block without discs among them
+        assert!(bounded.iter().all(|&m| m != 0 && m != 1 && m != g - 1), "{name}: {bounded:?}");
+        for m in failed {
+            assert!(!s["blocks"][m]["failure"].is_null(), "{name}: block {m} has discs");
+            assert!(bounded.contains(&(m as u64)), "{name}: block {m}");
+        }
+        for p in s["claims"]["power_bounds"].as_array().unwrap() {
+            // the bound is below λ1's lower bound, and above polar's true
+            // spectral radius 1/4 of the block (a bound cannot beat ρ)
+            let (radius, l1) = (p["radius"].as_f64().unwrap(), p["lambda1_lower"].as_f64().unwrap());
+            assert!(radius < l1, "{name}: {p}");
+            if name.starts_with("polar") {
+                assert!(radius >= 0.25 && (l1 - 0.5).abs() < 1e-9, "{name}: {p}");
+            }
+        }
+        assert_accepted(&path, &name);
+    }
+}
+
+/// `p/q + r/s` for the document's rationals.
+fn add_ratio(a: &str, b: &num_rational::BigRational) -> String {
+    let x: num_rational::BigRational = a.parse().unwrap();
+    let y = x + b;
+    format!("{}/{}", y.numer(), y.denom())
+}
+
+#[test]
+fn tampered_lemma_s6_evidence_is_rejected() {
+    if !python3() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let p5 = read(&certificate(d, "polar5", &["polar-bi2", "-n", "5"]));
+    let p12 = read(&certificate(d, "polar12", &["polar-bi2", "-n", "12"]));
+    let edit = |doc: &Value, f: &dyn Fn(&mut Value)| {
+        let mut doc = doc.clone();
+        f(&mut doc["parts"]["spectrum"]);
+        doc
+    };
+    // a smaller claimed norm than the rows give
+    let t = edit(&p5, &|s| {
+        let n = s["claims"]["power_bounds"][0]["norm"].as_f64().unwrap();
+        s["claims"]["power_bounds"][0]["norm"] = Value::from(n / 2.0);
+    });
+    assert_rejected(d, "s6-norm", &t, "below the recomputed bound");
+    // k = 1: ‖B‖∞ itself (polar's block rows have sums up to 1) does not clear λ1
+    let t = edit(&p5, &|s| s["claims"]["power_bounds"][0]["k"] = Value::from(1));
+    assert_rejected(d, "s6-k", &t, "does not clear λ1");
+    // a power k the checker does not accept
+    let t = edit(&p5, &|s| s["claims"]["power_bounds"][0]["k"] = Value::from(3));
+    assert_rejected(d, "s6-k3", &t, "not a power of two");
+    // a lower bound of λ1 above λ1 = 1/2
+    let t = edit(&p5, &|s| s["claims"]["power_bounds"][0]["lambda1_lower"] = Value::from(0.6));
+    assert_rejected(d, "s6-ell", &t, "does not show");
+    // S6 claimed for λ1's own block
+    let t = edit(&p5, &|s| s["claims"]["power_bounds"][0]["block"] = Value::from(1));
+    assert_rejected(d, "s6-block1", &t, "holds λ0 or λ1");
+    // a claimed radius below norm^(1/k)
+    let t = edit(&p5, &|s| s["claims"]["power_bounds"][0]["radius"] = Value::from(0.3));
+    assert_rejected(d, "s6-radius", &t, "radius");
+    // the bound of a block dropped: its wide discs (n = 5) reach λ1, and a
+    // block without discs (n = 12) is left with nothing
+    let t = edit(&p5, &|s| s["claims"]["power_bounds"] = Value::from(Vec::<Value>::new()));
+    assert_rejected(d, "s6-dropped", &t, "gap not shown");
+    let t = edit(&p12, &|s| {
+        let kept: Vec<Value> =
+            s["claims"]["power_bounds"].as_array().unwrap().iter().filter(|p| p["block"] != 2).cloned().collect();
+        s["claims"]["power_bounds"] = Value::from(kept);
+    });
+    assert_rejected(d, "s6-dropped-failed", &t, "no enclosure");
+
+    // the exact rows changed, every premise kept: at n = 4 (g = 4, all rows
+    // rational) add δ·h(P) on the points off the pole, h(z) = (z + 1/z − 2)
+    // (z + 1/z) = z² + z⁻² − 2z − 2z⁻¹ + 2 (P the rotation). h is symmetric
+    // (commutes with the reflection), h(1) = 0 (row sums and block 0 kept),
+    // h(±i) = 0 (blocks 1 and 3 kept), h(−1) = 8: block 2 gains 8δ·I. With
+    // δ = 1/32 block 2's eigenvalues 1/4, 0, 0 become 1/2, 1/4, 1/4: its
+    // spectral radius is λ1 = 1/2, which no bound clears. Block 2's discs are
+    // dropped (declared failed) so that only S6 speaks for it.
+    let p4 = read(&certificate(d, "polar4", &["polar-bi2", "-n", "4"]));
+    assert!(
+        p4["parts"]["spectrum"]["claims"]["power_bounds"].as_array().unwrap().iter().any(|p| p["block"] == 2),
+        "polar n = 4 takes block 2 from S6"
+    );
+    let t = edit(&p4, &|s| {
+        let g = s["group_order"].as_u64().unwrap() as usize;
+        assert_eq!(g, 4);
+        let member: Vec<(usize, usize)> = s["orbits"]["member"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|m| (m[0].as_u64().unwrap() as usize, m[1].as_u64().unwrap() as usize))
+            .collect();
+        let fixed: Vec<bool> = s["orbits"]["fixed"].as_array().unwrap().iter().map(|f| f.as_bool().unwrap()).collect();
+        let mut index = vec![vec![usize::MAX; g]; fixed.len()];
+        for (k, &(o, t)) in member.iter().enumerate() {
+            index[o][t] = k;
+        }
+        let delta = num_rational::BigRational::new(1.into(), 32.into());
+        // z⁰: 2, z^±1: −2 each, z² = z⁻² (g = 4): 1 + 1
+        let h: [(usize, i64); 4] = [(0, 2), (1, -2), (3, -2), (2, 2)];
+        for (k, &(o, t)) in member.iter().enumerate() {
+            if fixed[o] {
+                continue;
+            }
+            let row = s["rows"][k].as_array_mut().unwrap();
+            for (steps, c) in h {
+                let col = index[o][(t + steps) % g];
+                let add = &delta * num_rational::BigRational::from_integer(c.into());
+                match row.iter_mut().find(|e| e[0].as_u64() == Some(col as u64)) {
+                    Some(e) => e[1] = Value::from(add_ratio(e[1].as_str().expect("rational rows at n = 4"), &add)),
+                    None => row.push(Value::from(vec![
+                        Value::from(col),
+                        Value::from(format!("{}/{}", add.numer(), add.denom())),
+                    ])),
+                }
+            }
+        }
+        let b = &mut s["blocks"][2];
+        b["failure"] = Value::from("dropped");
+        for key in ["v", "r"] {
+            b[key] = Value::Null;
+        }
+        b["discs"] = Value::from(Vec::<Value>::new());
+        b["components"] = Value::from(Vec::<Value>::new());
+    });
+    assert_rejected(d, "s6-rows", &t, "does not clear λ1");
+}

@@ -291,3 +291,29 @@ fn claims_can_demand_a_certified_verdict() {
     assert!(o.computed.contains("DISPROVED"), "{}", o.computed);
     assert_eq!(run(&format!("scheme = \"{wrong}\"\nvalences = [4]\nexpect = false")).verdict, Verdict::Holds);
 }
+
+#[test]
+fn polar_bi2_is_proved_for_valences_3_to_24_with_its_defective_blocks_bounded_by_powers() {
+    // Karčiauskas–Peters eq. (14): D_k(λ) = (λ − 1/4) λ² (λ − γ̂_k) with
+    // γ̂_k = 0 for k ∉ {0, ±1}: those blocks have spectral radius 1/4 and a
+    // defective 0, and λ1 = γ̂_1 = 1/2. Lemma S6 may bound them by anything
+    // in [1/4, 1/2), never below their spectral radius 1/4.
+    for n in 3..=24 {
+        let c = builtin("polar-bi2", n);
+        assert_proved(&c, &format!("polar-bi2 n = {n}"));
+        assert!(lambda1(&c).contains(0.5), "n = {n}");
+        for b in &c.blocks {
+            let bounded = c.margins.power_bounded.contains(&b.block);
+            assert!(!bounded || ![0, 1, n - 1].contains(&b.block), "n = {n}: block {} by S6", b.block);
+            // a block without discs must have been bounded by S6
+            assert!(b.failure.is_none() || bounded, "n = {n}: block {} has neither", b.block);
+            if bounded {
+                let p = b.power_bound.expect("S6 evidence");
+                assert!(p.radius >= 0.25 && p.radius < 0.5, "n = {n}: block {}: {p:?}", b.block);
+                assert!(p.k.is_power_of_two());
+            }
+        }
+        // from n = 4 on some block needs S6 (n = 3 has only blocks 0, 1, 2)
+        assert_eq!(c.margins.power_bounded.is_empty(), n == 3, "n = {n}: {:?}", c.margins.power_bounded);
+    }
+}

@@ -12,6 +12,11 @@
 //!   floats see Doo–Sabin. DISPROVED by the spectrum; no map attempted.
 //! - `tie-blocks.toml`: 1/2 in blocks 1, 2, n−2, n−1 (a tie no enclosure
 //!   separates). NOT PROVED, never PROVED.
+//! - `polar-radial-tie.toml`: polar bi-2 with the radial rule (1 − w, w);
+//!   every block m ∉ {0, ±1} is lower triangular with eigenvalues w, 0, 0
+//!   (0 defective). At w = 5/8 that w is λ1 (block 1's leading eigenvalue)
+//!   and lemma S6 (‖B^k‖^(1/k)) must not separate it: NOT PROVED, naming S6.
+//!   At w = 1/2 λ1's own block holds a defective cluster: NOT PROVED.
 //! - `analysis-gap.toml`: Catmull–Clark on the minimal set, an eigenvalue of
 //!   modulus 3/4 > λ1 among the analysis neighbourhood's outer points.
 //!   Certificates refuse the minimal set; on the analysis set DISPROVED.
@@ -178,4 +183,39 @@ fn a_certified_map_claim_needs_the_spectrum_too() {
     let o = evaluate(&parse_file("t.toml", &text).unwrap()).pop().unwrap();
     assert_eq!(o.verdict, ClaimVerdict::Refuted, "{} / {} / {}", o.stated, o.computed, o.detail);
     assert!(o.computed.contains("spectrum DISPROVED"), "{}", o.computed);
+}
+
+#[test]
+fn a_defective_block_at_lambda1_is_never_proved() {
+    let file = data("polar-radial-tie.toml");
+    for (w, lambda1) in [("5/8", 0.625), ("1/2", 0.5)] {
+        let s = schemes::resolve(&file, &[("w".to_string(), w.to_string())]).unwrap();
+        for n in [5, 6, 8] {
+            let a = analysis(s.as_ref(), n);
+            // the independent route (floating point, per the file's
+            // derivation): the radial eigenvalue w lies in every Fourier
+            // block, so S has λ1 = w with multiplicity at least n, and the
+            // statement (λ1 double, every other eigenvalue below it) is false
+            let at_lambda1: usize = a
+                .spectrum
+                .eigenvalues
+                .iter()
+                .filter(|e| (e.re - lambda1).abs() < 1e-9 && e.im.abs() < 1e-9)
+                .map(|e| e.algebraic_multiplicity)
+                .sum();
+            assert!(at_lambda1 >= n, "w = {w}, n = {n}: {at_lambda1} eigenvalues at {lambda1}");
+            let c = certify_analysis(s.as_ref(), &a).unwrap();
+            let Verdict::NotProved(why) = &c.verdict else {
+                panic!("w = {w}, n = {n}: expected NOT PROVED, got {:?}", c.verdict)
+            };
+            if w == "5/8" {
+                // a block other than 0, 1, n − 1 reaches λ1, and lemma S6 says
+                // it cannot bound it below
+                assert!(why.contains("lemma S6") && why.contains("may reach λ1"), "n = {n}: {why}");
+            } else {
+                // λ1's own block: its leading enclosure holds the cluster
+                assert!(why.contains("block 1"), "n = {n}: {why}");
+            }
+        }
+    }
 }

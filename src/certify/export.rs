@@ -6,7 +6,10 @@
 //! alone: the exact rows of S (the definition of the matrix the verdict is
 //! about), the rotation orbits and the reflection the premises use, and per
 //! Fourier block the floating-point V and R ≈ V⁻¹ the discs were verified
-//! with, with the claimed ε, discs, components and counts. A checker
+//! with, with the claimed ε, discs, components and counts; for a block whose
+//! eigenvalues the proof bounds by lemma S6 instead (`certify::power`), the
+//! power k = 2^s, the claimed bound of ‖B^k‖∞ and the lower bound of λ1 it
+//! is compared with (`claims.power_bounds`). A checker
 //! recomputes the blocks from the rows, M ⊇ R·A·V and ε itself, so nothing
 //! subdlab computed in floating point or intervals is trusted; V and R need
 //! no trust at all (any V, R with ‖I − RV‖∞ < 1 give valid discs).
@@ -170,6 +173,7 @@ pub fn spectrum_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &SpectrumCe
                 "discs": discs,
                 "components": components,
                 "failure": b.failure,
+                "power_bound": b.power_bound,
             })
         })
         .collect();
@@ -182,6 +186,19 @@ pub fn spectrum_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &SpectrumCe
         "lambda0": named.lambda0.map(|i| json!({ "block": 0, "component": i })),
         "lambda1": named.lambda1.map(|[a, b]| json!([{ "block": 1, "component": a }, { "block": g - 1, "component": b }])),
         "witness": cert.witness.as_ref().map(|w| json!({ "block": w.block, "component": w.index })),
+        // lemma S6: the blocks whose eigenvalues the gap bounds by
+        // ‖B^k‖∞^(1/k) (a checker recomputes B^k from the rows), and the
+        // lower bound of λ1 each is compared with
+        "power_bounds": cert.margins.power_bounded.iter().filter_map(|&m| {
+            let p = cert.blocks.iter().find(|b| b.block == m)?.power_bound?;
+            Some(json!({
+                "block": m,
+                "k": p.k,
+                "norm": p.norm,
+                "radius": p.radius,
+                "lambda1_lower": cert.margins.lambda1_lower,
+            }))
+        }).collect::<Vec<_>>(),
         // lemma S7: what the exact route claims (the checker recomputes the
         // characteristic polynomial from the rows itself)
         "exact_route": cert.exact_route.as_ref().map(|e| json!({ "lambda1": e.lambda1, "others_below": e.others_below })),

@@ -11,6 +11,9 @@
 //!   field Q(ζ_N) (`numeric::cyclotomic`);
 //! - [`discs`]: eigenvalue enclosures of an interval matrix (Gershgorin discs
 //!   after a verified approximate diagonalisation), with counts per component;
+//! - [`power`]: lemma S6, a bound of an interval block's spectral radius by
+//!   ‖B^k‖∞^{1/k} (interval squarings), for blocks whose eigenvectors are
+//!   defective or ill-conditioned and that need only be bounded above;
 //! - [`spectrum`]: the spectral verdict (λ0 = 1 simple, λ1 real positive from
 //!   blocks 1 and g − 1, a proven gap to every other eigenvalue):
 //!   PROVED / DISPROVED / NOT PROVED with the reason and the margins.
@@ -34,6 +37,7 @@ pub mod discs;
 pub mod exact_spectrum;
 pub mod export;
 pub mod matrix;
+pub mod power;
 pub mod s31;
 pub mod spectrum;
 

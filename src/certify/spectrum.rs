@@ -37,6 +37,7 @@ use super::discs::{enclose, Component, Diagonalisation, Disc};
 use super::matrix::{
     fourier_blocks, mirror_symmetry, rotation_symmetry, row_sums, whole_matrix, Check, ExactRows, IntervalRows,
 };
+use super::power::{power_bound, PowerBound};
 use crate::dft::Orbits;
 use crate::error::Error;
 use crate::matrix::local::{assemble_rows, AssembleError};
@@ -93,6 +94,12 @@ pub struct BlockEnclosure {
     /// eigenvector enclosure of a proved eigenvalue is taken from it)
     #[serde(skip)]
     pub diagonalisation: Option<Diagonalisation>,
+    /// lemma S6 (`certify::power`): ρ(B) ≤ ‖B^k‖∞^{1/k}, computed for a
+    /// block that need not hold λ0 or λ1 (every block but 0, 1 and g − 1)
+    /// when its discs fail or reach λ1; the proof uses it in place of the
+    /// discs' moduli. Absent when not computed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub power_bound: Option<PowerBound>,
 }
 
 /// An enclosure of a real eigenvalue: lo ≤ λ ≤ hi.
@@ -113,6 +120,14 @@ pub struct Margins {
     pub others_max_modulus: Option<f64>,
     /// lower bound of λ1 − max |other eigenvalue| (positive when proved)
     pub gap_lower_bound: Option<f64>,
+    /// the lower bound of λ1's modulus the gap is measured from (lemma S6's
+    /// bounds are compared with it)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lambda1_lower: Option<f64>,
+    /// the blocks whose eigenvalues the gap bounds by lemma S6 (their
+    /// `power_bound`) rather than by their discs
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub power_bounded: Vec<usize>,
     /// the largest radius of the discs of λ0 and λ1, and of any disc
     pub lambda_radius: Option<f64>,
     pub max_radius: f64,
@@ -320,6 +335,7 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
                 components: e.components,
                 failure: None,
                 diagonalisation: Some(e.diagonalisation),
+                power_bound: None,
             },
             Err(why) => BlockEnclosure {
                 block: *m,
@@ -328,9 +344,11 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
                 components: Vec::new(),
                 failure: Some(why),
                 diagonalisation: None,
+                power_bound: None,
             },
         })
         .collect();
+    let enclosures = with_power_bounds(enclosures, &blocks, orbits.group_order, s.method);
     if !rotation.holds() {
         return Ok(not_proved(format!("the Fourier blocks need S to commute with the rotation: {rotation:?}")));
     }
@@ -439,6 +457,53 @@ fn next_up(x: f64) -> f64 {
 
 fn next_down(x: f64) -> f64 {
     x.next_down()
+}
+
+/// Whether lemma S6 (a spectral-radius bound without eigenvectors) may
+/// stand for block `m`'s discs: the proof only bounds its eigenvalues from
+/// above. Block 0 holds λ0 = 1 and blocks 1, g − 1 hold λ1, so their spectral
+/// radius is λ0 or λ1 itself and a bound of it separates nothing; their
+/// clusters stay with the discs (NOT PROVED when those cannot separate them).
+fn s6_applies(m: usize, g: usize, method: Method) -> bool {
+    method == Method::Dft && g >= 3 && m != 0 && m != 1 && m != g - 1
+}
+
+/// Lemma S6 for every block it applies to whose discs failed or reach the
+/// guide λ1 ≥ `target` (the lower modulus bound of block 1's leading
+/// component, a floating-point number that only chooses which blocks to try
+/// and when to stop squaring: `decide` compares the rigorous bounds).
+fn with_power_bounds(
+    mut enclosures: Vec<BlockEnclosure>,
+    blocks: &[(usize, super::complex::CIntervalMatrix)],
+    g: usize,
+    method: Method,
+) -> Vec<BlockEnclosure> {
+    if method != Method::Dft || g < 3 {
+        return enclosures;
+    }
+    let target = match enclosures.get(1).and_then(|b| b.components.first()) {
+        Some(c) => c.min_modulus(),
+        None => return enclosures,
+    };
+    // NaN included: no guide, no attempt
+    if target.is_nan() || target <= 0.0 {
+        return enclosures;
+    }
+    let needed: Vec<usize> = enclosures
+        .iter()
+        .enumerate()
+        .filter(|(_, b)| {
+            s6_applies(b.block, g, method)
+                && (b.failure.is_some() || b.components.iter().any(|c| c.max_modulus() >= target))
+        })
+        .map(|(i, _)| i)
+        .collect();
+    let bounds: Vec<(usize, Option<PowerBound>)> =
+        needed.par_iter().map(|&i| (i, power_bound(&blocks[i].1, target))).collect();
+    for (i, b) in bounds {
+        enclosures[i].power_bound = b;
+    }
+    enclosures
 }
 
 /// Rows `which` of S exactly: in Q when every weight is rational, else in a
@@ -635,7 +700,11 @@ fn decide(
             Some(witness(*m, c)),
         );
     }
-    if let Some(b) = blocks.iter().find(|b| b.failure.is_some()) {
+    // a block without discs is left to lemma S6 when that applies and was
+    // computed (its eigenvalues are then bounded at the gap, below)
+    if let Some(b) =
+        blocks.iter().find(|b| b.failure.is_some() && !(b.power_bound.is_some() && s6_applies(b.block, g, method)))
+    {
         return finish(
             Verdict::NotProved(format!("block {}: {}", b.block, b.failure.as_deref().unwrap_or_default())),
             margins,
@@ -783,9 +852,32 @@ fn decide(
     lambda1.set(Some([index(1, c1), index(g - 1, c1c)]));
     let lambda1_mod = (c1.min_modulus(), c1.max_modulus());
     margins.lambda_radius = Some(c0.max_radius().max(c1.max_radius()).max(c1c.max_radius()));
-    // (c) every other eigenvalue below λ1 in modulus
-    let rest = others.iter().map(|(_, c)| c.max_modulus()).fold(0.0, f64::max);
+    // (c) every other eigenvalue below λ1 in modulus: per block, the largest
+    // modulus of its discs (λ0's and λ1's excepted), or lemma S6's bound of
+    // its spectral radius where that applies and is smaller (a block whose
+    // discs failed has only the latter)
+    let block_bound = |b: &BlockEnclosure| {
+        let discs = if b.failure.is_some() {
+            f64::INFINITY
+        } else {
+            others.iter().filter(|(m, _)| *m == b.block).map(|(_, c)| c.max_modulus()).fold(0.0, f64::max)
+        };
+        match b.power_bound {
+            Some(p) if s6_applies(b.block, g, method) && p.radius < discs => (p.radius, Some(p)),
+            _ => (discs, None),
+        }
+    };
+    let bounds: Vec<(usize, f64, Option<PowerBound>)> = blocks
+        .iter()
+        .map(|b| {
+            let (r, p) = block_bound(b);
+            (b.block, r, p)
+        })
+        .collect();
+    let rest = bounds.iter().map(|&(_, r, _)| r).fold(0.0, f64::max);
     margins.others_max_modulus = Some(rest);
+    margins.lambda1_lower = Some(lambda1_mod.0);
+    margins.power_bounded = bounds.iter().filter(|(_, _, p)| p.is_some()).map(|&(m, _, _)| m).collect();
     let gap = (Interval::point(lambda1_mod.0) - Interval::point(rest)).lo;
     margins.gap_lower_bound = Some(gap);
     // realness: a simple eigenvalue of a conjugation-closed block spectrum
@@ -857,10 +949,51 @@ fn decide(
         return finish(Verdict::NotProved("λ1 is not separated from λ0 = 1".into()), margins, None);
     }
     if gap <= 0.0 {
-        // name the enclosure that reaches λ1
-        let (m, c) = others.iter().max_by(|a, b| a.1.max_modulus().total_cmp(&b.1.max_modulus())).copied().unwrap();
+        // the block whose bound reaches λ1; when lemma S6 bounds it, say so
+        let (bm, _, power) = bounds.iter().max_by(|a, b| a.1.total_cmp(&b.1)).copied().expect("g ≥ 3 blocks");
+        if let Some(p) = power.or(blocks[bm].power_bound.filter(|_| blocks[bm].failure.is_some())) {
+            return finish(
+                Verdict::NotProved(format!(
+                    "block {bm}: {}, and lemma S6 bounds its spectral radius only by ‖B^{}‖∞^(1/{}) ≤ {:.9}, not \
+                     below λ1 ≥ {:.9} (squared up to k = {}): its eigenvalues may reach λ1",
+                    blocks[bm].failure.as_deref().unwrap_or("its eigenvalue enclosures reach λ1"),
+                    p.k,
+                    p.k,
+                    p.radius,
+                    lambda1_mod.0,
+                    1u64 << super::power::MAX_SQUARINGS
+                )),
+                margins,
+                None,
+            );
+        }
+        // name the enclosure that reaches λ1: the largest of block bm, whose
+        // bound came from its discs (a wider one in a block that S6 bounded
+        // is not the obstacle)
+        let largest = |of: &dyn Fn(usize) -> bool| {
+            others
+                .iter()
+                .filter(|(m, _)| of(*m))
+                .max_by(|a, b| a.1.max_modulus().total_cmp(&b.1.max_modulus()))
+                .copied()
+        };
+        let Some((m, c)) = largest(&|m| m == bm).or_else(|| largest(&|_| true)) else {
+            return finish(
+                Verdict::NotProved(format!("the gap below λ1 ≥ {:.9} is not shown", lambda1_mod.0)),
+                margins,
+                None,
+            );
+        };
+        let held = if m == 0 {
+            " (block 0 holds λ0 = 1, so lemma S6, a bound of the block's spectral radius, cannot separate it)"
+        } else if m == 1 || m == g - 1 {
+            " (the block holds λ1, so lemma S6, a bound of the block's spectral radius, cannot separate it)"
+        } else {
+            ""
+        };
         return finish(
-            Verdict::NotProved(format!(
+            Verdict::NotProved(
+                format!(
                 "an eigenvalue enclosure of block {m} ({} eigenvalue(s), modulus in [{:.9}, {:.9}], disc radius up to \
                  {:.3e}) reaches λ1 ≥ {:.9}: the enclosures cannot separate them ({})",
                 c.count,
@@ -872,8 +1005,9 @@ fn decide(
                     "equal or nearly equal moduli"
                 } else {
                     "the enclosure is wide: defective or ill-conditioned eigenvalues in that block"
-                }
-            )),
+                },
+            ) + held,
+            ),
             margins,
             Some(witness(m, c)),
         );
@@ -900,6 +1034,7 @@ mod tests {
             components,
             failure: None,
             diagonalisation: None,
+            power_bound: None,
         }
     }
 
@@ -937,6 +1072,47 @@ mod tests {
         assert_eq!(row, Some(0));
         let l1 = cert.margins.lambda1.unwrap();
         assert!(l1.lo > 0.0 && l1.lo <= 0.5 && 0.5 <= l1.hi);
+    }
+
+    #[test]
+    fn lemma_s6_stands_for_failed_blocks_other_than_0_1_and_g_minus_1() {
+        // g = 5, λ1 = 1/2 ± 1e-12 in blocks 1 and 4; block 2's discs failed
+        let failed = |m: usize, power: Option<PowerBound>| BlockEnclosure {
+            block: m,
+            size: 3,
+            epsilon: None,
+            components: Vec::new(),
+            failure: Some("ill-conditioned".into()),
+            diagonalisation: None,
+            power_bound: power,
+        };
+        let blocks = |b2: BlockEnclosure| {
+            vec![
+                block(0, &[(1.0, 0.0, 1e-12), (0.25, 0.0, 1e-3)]),
+                block(1, &[(0.5, 0.0, 1e-12), (0.25, 0.0, 1e-3)]),
+                b2,
+                block(3, &[(0.1, 0.0, 1e-3)]),
+                block(4, &[(0.5, 0.0, 1e-12), (0.25, 0.0, 1e-3)]),
+            ]
+        };
+        // no bound: NOT PROVED naming the block
+        let (cert, _) = decide(&blocks(failed(2, None)), &exact_premises(), 5, Method::Dft);
+        assert!(matches!(&cert.verdict, Verdict::NotProved(w) if w.contains("block 2")), "{:?}", cert.verdict);
+        // ρ(B_2) ≤ 0.4653 (polar bi-2's ‖B^4‖∞ = 3/64): PROVED, the gap from it
+        let bound = PowerBound { k: 4, norm: 3.0 / 64.0, radius: 0.4653024295510502 };
+        let (cert, _) = decide(&blocks(failed(2, Some(bound))), &exact_premises(), 5, Method::Dft);
+        assert_eq!(cert.verdict, Verdict::Proved);
+        assert_eq!(cert.margins.power_bounded, vec![2]);
+        assert_eq!(cert.margins.others_max_modulus, Some(bound.radius));
+        // a bound that does not clear λ1 (ρ may equal it): NOT PROVED, naming S6
+        let weak = PowerBound { k: 512, norm: 1e-150, radius: 0.5000001 };
+        let (cert, _) = decide(&blocks(failed(2, Some(weak))), &exact_premises(), 5, Method::Dft);
+        assert!(matches!(&cert.verdict, Verdict::NotProved(w) if w.contains("lemma S6")), "{:?}", cert.verdict);
+        // λ1's own block never takes S6: block 1 without discs stays NOT PROVED
+        let mut b = blocks(block(2, &[(0.1, 0.0, 1e-3)]));
+        b[1] = failed(1, Some(bound));
+        let (cert, _) = decide(&b, &exact_premises(), 5, Method::Dft);
+        assert!(matches!(&cert.verdict, Verdict::NotProved(w) if w.starts_with("block 1")), "{:?}", cert.verdict);
     }
 
     #[test]

@@ -232,6 +232,14 @@ pub(super) fn certificate_table(c: &crate::certify::SpectrumCertificate) -> Stri
         f(m.lambda_radius),
         m.max_entry_width
     );
+    for &b in &m.power_bounded {
+        if let Some(p) = c.blocks.iter().find(|e| e.block == b).and_then(|e| e.power_bound) {
+            out += &format!(
+                "  block {b} by lemma S6 (no eigenvectors): ρ ≤ ‖B^{}‖∞^(1/{}) ≤ {:.9} (‖B^{}‖∞ ≤ {:.6e})\n",
+                p.k, p.k, p.radius, p.k, p.norm
+            );
+        }
+    }
     if let Some(w) = &c.witness {
         out += &format!(
             "  witness: block {}, {} eigenvalue(s) with modulus in [{:.12}, {:.12}]\n",
