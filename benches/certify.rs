@@ -15,8 +15,8 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use std::time::Duration;
-use subdlab::certify::charmap::DEFAULT_MAX_LEVELS;
 use subdlab::certify::certify_charmap;
+use subdlab::certify::charmap::DEFAULT_MAX_LEVELS;
 use subdlab::neighbourhood::Configuration;
 use subdlab::schemes::{self, Scheme};
 use subdlab::spectrum::{analyse, Analysis, Options};
@@ -39,13 +39,7 @@ const SPECTRUM_SCHEMES: [&str; 10] = [
 const CHARMAP_SCHEMES: [&str; 7] = ["catmull-clark", "loop", "doo-sabin", "non-box", "four-three", "pgs", "tps"];
 
 /// Time `run` on the analysis of every scheme at every valence, in a group.
-fn bench_group(
-    c: &mut Criterion,
-    group: &str,
-    names: &[&str],
-    valences: &[usize],
-    run: fn(&dyn Scheme, &Analysis),
-) {
+fn bench_group(c: &mut Criterion, group: &str, names: &[&str], valences: &[usize], run: fn(&dyn Scheme, &Analysis)) {
     let mut group = c.benchmark_group(group);
     group.sample_size(10).warm_up_time(Duration::from_millis(300)).measurement_time(Duration::from_secs(2));
     for &name in names {

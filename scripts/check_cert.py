@@ -1039,7 +1039,11 @@ class Checker:
         if self.verdict == "PROVED":
             self.check_proof(claims, margins)
         elif self.verdict == "DISPROVED":
-            self.check_disproof(claims)
+            route = claims.get("exact_route") if isinstance(claims, dict) else None
+            if route is not None:
+                self.check_exact_disproof(route)
+            else:
+                self.check_disproof(claims)
         else:
             self.ok("verdict NOT PROVED: nothing claimed beyond the enclosures above")
 
@@ -1119,24 +1123,32 @@ class Checker:
         )
         self.check_margins(margins, c0, [self.components[m][i] for m, i in named1], special)
 
-    def check_exact_route(self, route, margins):
-        """Lemma S7: S over Q; det(xI − S) recomputed here (by values at N + 1
-        points and interpolation, not subdlab's Hessenberg reduction); 1 a
-        simple root; λ1 a root of multiplicity 2 whose eigenspace has
-        dimension 2; the rest inside |x| < others_below ≤ λ1 (Schur–Cohn)."""
+    def exact_matrix(self):
         if self.field.order != 1:
             reject("the exact route needs every entry of S in Q")
+        n = self.size
+        dense = [[Fraction(0)] * n for _ in range(n)]
+        for i, row in enumerate(self.rows):
+            for j, x in row.items():
+                dense[i][j] = x[0] if x else Fraction(0)
+        return dense
+
+    def check_exact_route(self, route, margins):
+        """Lemma S7, PROVED: S over Q; det(xI − S) recomputed here (by values
+        at N + 1 points and interpolation, not subdlab's Hessenberg
+        reduction); 1 a simple root; λ1 a root of multiplicity 2 whose
+        eigenspace has dimension 2; the rest inside |x| < others_below ≤ λ1
+        (Schur–Cohn)."""
+        if route.get("proved") is not True:
+            reject("a PROVED verdict whose exact route is not a proof")
         lam = as_ratio(get(route, "lambda1", "exact_route"), "exact_route.lambda1")
         below = as_ratio(get(route, "others_below", "exact_route"), "exact_route.others_below")
         if not (0 < lam < 1):
             reject(f"the exact route's λ1 = {lam} is not in (0, 1)")
         if not (0 <= below <= lam):
             reject(f"the exact route's bound {below} for the other eigenvalues is not in [0, λ1]")
+        dense = self.exact_matrix()
         n = self.size
-        dense = [[Fraction(0)] * n for _ in range(n)]
-        for i, row in enumerate(self.rows):
-            for j, x in row.items():
-                dense[i][j] = x[0] if x else Fraction(0)
         p = charpoly_by_interpolation(dense)
         m1, p1 = root_multiplicity(p, Fraction(1))
         if m1 != 1:
@@ -1161,6 +1173,44 @@ class Checker:
             others = margins.get("others_max_modulus")
             if others is not None and Fraction(as_float(others, "others_max_modulus")) < below:
                 reject("margin: the claimed bound on the other eigenvalues is below the proved one")
+
+    def check_exact_disproof(self, route):
+        """Lemma S7, DISPROVED: 1 a root of multiplicity ≥ 2; or 1 simple and
+        λ1 a root with every root other than 1 and λ1 inside |x| < λ1
+        (Schur–Cohn on the cofactor of (x − λ1)^m), of multiplicity m ≠ 2 or
+        with an eigenspace of dimension ≠ 2. Recomputed from the rows."""
+        if route.get("proved") is not False:
+            reject("a DISPROVED verdict whose exact route is not a disproof")
+        dense = self.exact_matrix()
+        n = self.size
+        p = charpoly_by_interpolation(dense)
+        m1, p1 = root_multiplicity(p, Fraction(1))
+        if m1 != as_int(get(route, "one_multiplicity", "exact_route"), "one_multiplicity"):
+            reject(f"1 is a root of det(xI − S) of multiplicity {m1}, not the claimed one")
+        if m1 >= 2:
+            self.ok(f"exact route: det(xI − S) of degree {n} recomputed over Q; 1 is a root of multiplicity {m1}: λ0 = 1 is not simple")
+            return
+        if m1 == 0:
+            reject("1 is not a root of det(xI − S): the exact route claims nothing about it")
+        lam = as_ratio(get(route, "lambda1", "exact_route"), "exact_route.lambda1")
+        if not (0 < lam < 1):
+            reject(f"the exact route's λ1 = {lam} is not in (0, 1)")
+        m, q = root_multiplicity(p1, lam)
+        if m == 0 or m != as_int(get(route, "algebraic", "exact_route"), "algebraic"):
+            reject(f"λ1 = {lam} is a root of multiplicity {m}, not the claimed one")
+        if not roots_inside(q, lam):
+            reject(f"a root other than 1 and λ1 = {lam} may have modulus ≥ λ1: λ1 is not shown dominant")
+        shifted = [[dense[i][j] - (lam if i == j else 0) for j in range(n)] for i in range(n)]
+        geometric = n - rank(shifted)
+        if geometric != as_int(get(route, "geometric", "exact_route"), "geometric"):
+            reject(f"the eigenspace of λ1 = {lam} has dimension {geometric}, not the claimed one")
+        if m == 2 and geometric == 2:
+            reject(f"λ1 = {lam} is a double semisimple eigenvalue: nothing is disproved")
+        self.ok(
+            f"exact route: det(xI − S) of degree {n} recomputed over Q; 1 simple; λ1 = {lam} dominant (the other "
+            f"{len(q) - 1} roots inside |x| < {lam}), algebraic multiplicity {m}, geometric {geometric}: not a double "
+            "semisimple eigenvalue"
+        )
 
     def check_power_bounds(self, claims, c1):
         """Lemma S6 re-derived: for each claimed block m (never 0, 1 or g − 1,

@@ -574,7 +574,6 @@ fn the_exact_route_is_re_derived_and_its_tamperings_rejected() {
     assert_rejected(d, "others-below", &edit(&|r| r["others_below"] = "1/8".into()), "may have modulus ≥ 1/8");
 }
 
-
 /// Lemma S6 (ARCHITECTURE.md): blocks other than 0, 1, g − 1 bounded by
 /// ‖B^k‖∞^(1/k). Polar bi-2's blocks m ∉ {0, ±1} are lower triangular on
 /// each radial line (a' = 0, b' = 3/4 a + 1/4 b, c' = 1/4 a + 3/4 b: the
@@ -731,4 +730,35 @@ fn tampered_lemma_s6_evidence_is_rejected() {
         b["components"] = Value::from(Vec::<Value>::new());
     });
     assert_rejected(d, "s6-rows", &t, "does not clear λ1");
+}
+
+/// Lemma S7's disproof: polar bi-2 with the radial rule (1/2, 1/2) at n = 6
+/// (`tests/data/certify/polar-radial-tie.toml`, derived there by hand: the
+/// radial 1/2 in every block beside the spoke's 1/2, a Jordan structure at
+/// λ1 = 1/2). The checker recomputes the multiplicities; a claimed
+/// geometric multiplicity of 2 (a semisimple double λ1, nothing disproved)
+/// or another λ1 is rejected.
+#[test]
+fn an_exact_disproof_at_a_defective_lambda1_is_re_derived() {
+    if !python3() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/certify/polar-radial-tie.toml");
+    let path = certificate(d, "tie", &[file, "-n", "6", "--param", "w=1/2"]);
+    let doc = read(&path);
+    let s = &doc["parts"]["spectrum"];
+    assert_eq!(s["verdict"], "DISPROVED", "{}", s["reason"]);
+    let route = &s["claims"]["exact_route"];
+    assert_eq!(route["lambda1"], "1/2");
+    assert!(route["algebraic"].as_u64().unwrap() > route["geometric"].as_u64().unwrap(), "{route}");
+    assert_accepted(&path, "polar-radial-tie w = 1/2, n = 6 (DISPROVED by lemma S7)");
+    let edit = |f: &dyn Fn(&mut Value)| {
+        let mut doc = doc.clone();
+        f(&mut doc["parts"]["spectrum"]["claims"]["exact_route"]);
+        doc
+    };
+    assert_rejected(d, "geometric", &edit(&|r| r["geometric"] = 2.into()), "dimension");
+    assert_rejected(d, "lambda1", &edit(&|r| r["lambda1"] = "1/4".into()), "multiplicity | dominant");
 }

@@ -11,12 +11,15 @@
 //! - `toggle-block2.toml`: exactly, block 2 holds 1/2 above block 1's 2/5;
 //!   floats see Doo–Sabin. DISPROVED by the spectrum; no map attempted.
 //! - `tie-blocks.toml`: 1/2 in blocks 1, 2, n−2, n−1 (a tie no enclosure
-//!   separates). NOT PROVED, never PROVED.
+//!   separates). NOT PROVED, or DISPROVED by lemma S7 (multiplicity 4)
+//!   where S is rational; never PROVED.
 //! - `polar-radial-tie.toml`: polar bi-2 with the radial rule (1 − w, w);
 //!   every block m ∉ {0, ±1} is lower triangular with eigenvalues w, 0, 0
 //!   (0 defective). At w = 5/8 that w is λ1 (block 1's leading eigenvalue)
 //!   and lemma S6 (‖B^k‖^(1/k)) must not separate it: NOT PROVED, naming S6.
-//!   At w = 1/2 λ1's own block holds a defective cluster: NOT PROVED.
+//!   At w = 1/2 λ1's own block holds a defective cluster: NOT PROVED. At
+//!   n = 6 (S rational) lemma S7 DISPROVES both: λ1 = w is dominant with
+//!   multiplicity ≥ n.
 //! - `analysis-gap.toml`: Catmull–Clark on the minimal set, an eigenvalue of
 //!   modulus 3/4 > λ1 among the analysis neighbourhood's outer points.
 //!   Certificates refuse the minimal set; on the analysis set DISPROVED.
@@ -127,13 +130,19 @@ fn a_tie_across_blocks_is_never_proved() {
     for n in [5, 6, 7, 8] {
         let a = analysis(s.as_ref(), n);
         let c = certify_analysis(s.as_ref(), &a).unwrap();
-        assert!(
-            matches!(&c.verdict, Verdict::NotProved(w) if w.contains("cannot separate")),
-            "n = {n}: {:?}",
-            c.verdict
-        );
+        match (&c.verdict, &c.exact_route) {
+            // the enclosures cannot separate block 1 from block 2
+            (Verdict::NotProved(w), _) => assert!(w.contains("cannot separate"), "n = {n}: {w}"),
+            // where S is rational, lemma S7 counts the multiplicity of 1/2
+            // exactly: 4 (the file's derivation), so "λ1 double" is false
+            (Verdict::Disproved(_), Some(route)) => {
+                assert_eq!(route.lambda1.as_deref(), Some("1/2"), "n = {n}");
+                assert_eq!((route.algebraic, route.geometric), (4, 4), "n = {n}")
+            }
+            (v, _) => panic!("n = {n}: a tie must never be PROVED, got {v:?}"),
+        }
         let m = certify_charmap(s.as_ref(), &a, 4).unwrap();
-        assert!(matches!(m.c1, Verdict::NotProved(_)), "n = {n}: {:?}", m.c1);
+        assert!(!matches!(m.c1, Verdict::Proved), "n = {n}: {:?}", m.c1);
     }
 }
 
@@ -205,6 +214,19 @@ fn a_defective_block_at_lambda1_is_never_proved() {
                 .sum();
             assert!(at_lambda1 >= n, "w = {w}, n = {n}: {at_lambda1} eigenvalues at {lambda1}");
             let c = certify_analysis(s.as_ref(), &a).unwrap();
+            if n == 6 {
+                // cos(2π/6) = 1/2: S is rational, and lemma S7 decides exactly:
+                // λ1 = w dominant with multiplicity ≥ n, not a double
+                // semisimple eigenvalue: DISPROVED, unconditionally
+                let Verdict::Disproved(why) = &c.verdict else {
+                    panic!("w = {w}, n = 6: expected DISPROVED by lemma S7, got {:?}", c.verdict)
+                };
+                let route = c.exact_route.as_ref().expect("decided by the exact route");
+                assert_eq!(route.lambda1.as_deref(), Some(w), "{why}");
+                assert!(route.algebraic >= n, "{route:?}");
+                assert!(!c.conditional);
+                continue;
+            }
             let Verdict::NotProved(why) = &c.verdict else {
                 panic!("w = {w}, n = {n}: expected NOT PROVED, got {:?}", c.verdict)
             };

@@ -201,7 +201,14 @@ pub fn spectrum_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &SpectrumCe
         }).collect::<Vec<_>>(),
         // lemma S7: what the exact route claims (the checker recomputes the
         // characteristic polynomial from the rows itself)
-        "exact_route": cert.exact_route.as_ref().map(|e| json!({ "lambda1": e.lambda1, "others_below": e.others_below })),
+        "exact_route": cert.exact_route.as_ref().map(|e| json!({
+            "proved": e.proved,
+            "one_multiplicity": e.one_multiplicity,
+            "lambda1": e.lambda1,
+            "algebraic": e.algebraic,
+            "geometric": e.geometric,
+            "others_below": e.others_below,
+        })),
     });
     let member: Vec<[usize; 2]> = orbits.member.iter().map(|&(o, t)| [o, t]).collect();
     json!({

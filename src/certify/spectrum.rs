@@ -379,18 +379,26 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
     if let Verdict::NotProved(why) = &cert.verdict {
         if let Some(e) = exact_route(scheme, analysis, &which, &exact) {
             match e {
-                Ok(proof) => {
-                    let r = proof.lambda1_value.to_f64().unwrap_or(f64::NAN);
-                    cert.verdict = Verdict::Proved;
-                    cert.statement = EXACT_STATEMENT.into();
-                    cert.margins.lambda0 = Some(RealEnclosure { lo: 1.0, hi: 1.0 });
-                    cert.margins.lambda1 = Some(RealEnclosure { lo: next_down(r), hi: next_up(r) });
-                    let below = proof.others_below_value.to_f64().unwrap_or(f64::NAN);
-                    cert.margins.others_max_modulus = Some(next_up(below));
-                    cert.margins.gap_lower_bound =
-                        (&proof.lambda1_value - &proof.others_below_value).to_f64().map(|g| next_down(g).max(0.0));
+                Ok(route) => {
+                    // the exact route decides alone: no enclosure is named
                     cert.named = Named::default();
-                    cert.exact_route = Some(proof);
+                    cert.witness = None;
+                    cert.margins.power_bounded.clear();
+                    cert.margins.lambda0 = Some(RealEnclosure { lo: 1.0, hi: 1.0 });
+                    if let Some(r) = route.lambda1_value.as_ref().and_then(|r| r.to_f64()) {
+                        cert.margins.lambda1 = Some(RealEnclosure { lo: next_down(r), hi: next_up(r) });
+                    }
+                    if route.proved {
+                        cert.verdict = Verdict::Proved;
+                        cert.statement = EXACT_STATEMENT.into();
+                        if let (Some(r), Some(below)) = (&route.lambda1_value, &route.others_below_value) {
+                            cert.margins.others_max_modulus = below.to_f64().map(next_up);
+                            cert.margins.gap_lower_bound = (r - below).to_f64().map(|g| next_down(g).max(0.0));
+                        }
+                    } else {
+                        cert.verdict = Verdict::Disproved(route.why.clone());
+                    }
+                    cert.exact_route = Some(route);
                 }
                 Err(exact_why) => {
                     cert.verdict = Verdict::NotProved(format!("{why}; the exact route (lemma S7): {exact_why}"))
@@ -398,10 +406,10 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
             }
         }
     }
-    cert.conditional = match cert.verdict {
-        Verdict::Proved => cert.exact_route.is_none() && !premises.exact,
-        _ => cert.conditional,
-    };
+    // the exact route rests on no premise: it reads S itself
+    if cert.exact_route.is_some() {
+        cert.conditional = false;
+    }
     cert.premises = Some(premises);
     cert.blocks = enclosures;
     cert.proof =

@@ -210,11 +210,28 @@ pub(super) fn certificate_table(c: &crate::certify::SpectrumCertificate) -> Stri
         out += &format!("  premise rotation symmetry: {}\n", show(&p.rotation_symmetry));
     }
     if let Some(e) = &c.exact_route {
-        out += &format!(
-            "  exact route (lemma S7): det(xI − S) over Q ({} × {}): 1 simple, λ1 = {} a double root with a \
-             two-dimensional eigenspace, the other {} roots inside |x| < {} (Schur–Cohn)\n",
-            e.size, e.size, e.lambda1, e.cofactor_degree, e.others_below
-        );
+        let lambda1 = e.lambda1.as_deref().unwrap_or("-");
+        out += &if e.proved {
+            format!(
+                "  exact route (lemma S7): det(xI − S) over Q ({} × {}): 1 simple, λ1 = {lambda1} a double root with \
+                 a two-dimensional eigenspace, the other {} roots inside |x| < {} (Schur–Cohn)\n",
+                e.size,
+                e.size,
+                e.cofactor_degree,
+                e.others_below.as_deref().unwrap_or("-")
+            )
+        } else if e.one_multiplicity != 1 {
+            format!(
+                "  exact route (lemma S7): det(xI − S) over Q ({} × {}): 1 is a root of multiplicity {}\n",
+                e.size, e.size, e.one_multiplicity
+            )
+        } else {
+            format!(
+                "  exact route (lemma S7): det(xI − S) over Q ({} × {}): λ1 = {lambda1} dominant (the other {} roots \
+                 inside |x| < {lambda1}, Schur–Cohn), of algebraic multiplicity {} and geometric multiplicity {}\n",
+                e.size, e.size, e.cofactor_degree, e.algebraic, e.geometric
+            )
+        };
     }
     let m = &c.margins;
     let f = |x: Option<f64>| x.map_or("-".to_string(), |v| format!("{v:.12e}"));
