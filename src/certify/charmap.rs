@@ -816,14 +816,7 @@ fn check_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[Window]) -> Resu
             }
             _ => continue,
         };
-        let stencil = stencil_at::<Rational>(scheme, mesh, origin)
-            .map_err(|_| "a rule over the ring has an irrational weight".to_string())?
-            .ok_or("a rule over the ring cannot be evaluated on the net")?;
-        let mut got: Mask = HashMap::new();
-        for (v, w) in stencil.terms {
-            *got.entry(v).or_insert_with(<Rational as Weight>::zero) += w;
-        }
-        got.retain(|_, w| !Weight::is_zero(w));
+        let got = exact_stencil(scheme, mesh, origin)?;
         let matching: Vec<RegularPart> = masks.iter().filter(|(_, m)| *m == got).map(|(k, _)| *k).collect();
         let before = fitting.get_or_insert_with(|| masks.iter().map(|(k, _)| *k).collect());
         before.retain(|k| matching.contains(k));
