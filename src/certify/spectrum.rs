@@ -386,14 +386,15 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
                     cert.margins.power_bounded.clear();
                     cert.margins.lambda0 = Some(RealEnclosure { lo: 1.0, hi: 1.0 });
                     if let Some(r) = route.lambda1_value.as_ref().and_then(|r| r.to_f64()) {
-                        cert.margins.lambda1 = Some(RealEnclosure { lo: next_down(r), hi: next_up(r) });
+                        // the fraction rounded to nearest f64 is within half an ulp: one ulp out bounds it
+                        cert.margins.lambda1 = Some(RealEnclosure { lo: r.next_down(), hi: r.next_up() });
                     }
                     if route.proved {
                         cert.verdict = Verdict::Proved;
                         cert.statement = EXACT_STATEMENT.into();
                         if let (Some(r), Some(below)) = (&route.lambda1_value, &route.others_below_value) {
-                            cert.margins.others_max_modulus = below.to_f64().map(next_up);
-                            cert.margins.gap_lower_bound = (r - below).to_f64().map(|g| next_down(g).max(0.0));
+                            cert.margins.others_max_modulus = below.to_f64().map(f64::next_up);
+                            cert.margins.gap_lower_bound = (r - below).to_f64().map(|g| g.next_down().max(0.0));
                         }
                     } else {
                         cert.verdict = Verdict::Disproved(route.why.clone());
@@ -455,16 +456,6 @@ fn exact_route(
     let reals = s.eigenvalues.iter().filter(|e| e.im.abs() <= 1e-9 * e.modulus.max(1.0)).map(|e| e.re);
     let candidates = crate::engine::exact::candidates(reals);
     Some(super::exact_spectrum::prove(&all, &candidates))
-}
-
-/// Outward rounding of a fraction converted to the nearest f64 (within half
-/// an ulp): one ulp out is a bound.
-fn next_up(x: f64) -> f64 {
-    x.next_up()
-}
-
-fn next_down(x: f64) -> f64 {
-    x.next_down()
 }
 
 /// Whether lemma S6 (a spectral-radius bound without eigenvectors) may
