@@ -1400,6 +1400,10 @@ class Checker:
         self.ok(f"net: {len(pts) - len(x0)} refined point(s) from the {len(x0)} analysis points by exact stencils "
                 f"({levels} analysis steps), in interval arithmetic")
         self.regular_part = part.get("regular_part")
+        if self.regular_part == "difference-scheme":
+            # lemma C9's lattice constants are not re-derived here: such a
+            # part is never accepted (subdlab does not write one)
+            reject("regular part 'difference-scheme' (lemma C9): this checker does not re-derive its bounds")
         sign = self.check_faces(as_list(get(part, "faces", what), "charmap faces"), pts, verdicts["regularity"])
         winding = get(part, "winding", what)
         number = None

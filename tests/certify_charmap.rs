@@ -10,7 +10,8 @@
 //!   Jacobian is constant and its smallest lower bound over the ring equals
 //!   its largest upper bound, up to the enclosures' widths;
 //! - the regular rules of Kobbelt's sqrt(3) are no box spline's: no
-//!   box-spline proof applies (non-box's S_3^1 spline, which reproduces
+//!   box-spline proof applies, and lemma C9 proves its map instead
+//!   (tests/certify_difference.rs; non-box's S_3^1 spline, which reproduces
 //!   linear functions too, is in tests/certify_nonbox.rs; its regular map is
 //!   checked for linearity here);
 //! - 4-3 subdivision's quad rules are the four-direction box spline A_4's and
@@ -99,17 +100,6 @@ fn at_the_regular_valence_the_jacobian_is_constant() {
         let ratio = c.min_jacobian_ratio.unwrap();
         assert!((ratio - 1.0).abs() < 1e-9, "{s}: smallest lower bound over largest upper bound {ratio}");
     }
-}
-
-#[test]
-fn schemes_without_a_box_spline_regular_part_are_not_proved_and_say_why() {
-    // Kobbelt's sqrt(3): its regular rules are no box spline's
-    let c = builtin("sqrt3", 5);
-    match &c.regularity {
-        Verdict::NotProved(r) => assert!(r.contains("numerical only: the rules over the ring are not"), "sqrt3: {r}"),
-        other => panic!("sqrt3: expected NOT PROVED, got {other:?}"),
-    }
-    assert!(matches!(c.c1, Verdict::NotProved(_)), "sqrt3: {:?}", c.c1);
 }
 
 #[test]

@@ -44,6 +44,7 @@ use std::collections::{HashMap, HashSet};
 use serde::Serialize;
 
 use super::complex::CInterval;
+use super::difference;
 use super::discs::eigenvector;
 use super::s31;
 use super::spectrum::{certify_analysis, SpectrumCertificate, Verdict};
@@ -91,6 +92,10 @@ pub enum RegularPart {
     /// derived from that definition (`certify::s31`), and the windows hold
     /// the face's own edges and the differences of the 9 FCVs around it.
     NonBoxS31,
+    /// no box spline: the scheme's own regular rules on the triangular
+    /// lattice, with the derivative and position bounds of lemma C9 from
+    /// the contraction of their difference scheme (`certify::difference`)
+    DifferenceScheme,
 }
 
 impl RegularPart {
@@ -102,6 +107,7 @@ impl RegularPart {
             RegularPart::BiquadraticBSplineTernary => "biquadratic B-spline (ternary refinement)",
             RegularPart::FourDirectionBoxSpline => "four-direction box spline A_4",
             RegularPart::NonBoxS31 => "four-directional S_3^1 non-box spline",
+            RegularPart::DifferenceScheme => "the scheme's regular rules, difference-scheme bounds",
         }
     }
 }
@@ -182,6 +188,10 @@ pub struct FaceEvidence {
     /// even and FCVs at odd positions), from which a checker re-derives
     /// which differences and hull points the S_3^1 bounds need
     pub layout: Vec<(usize, [i64; 2])>,
+    /// difference-scheme windows (empty otherwise): every point of the
+    /// face's window W_up with its lattice position, from which a checker
+    /// recomputes the second differences N(p) and the face's bounds
+    pub window: Vec<(usize, [i64; 2])>,
 }
 
 /// The winding-number lemma's data (see `winding_number`): per chain edge
@@ -331,8 +341,34 @@ fn geometric_half(
                 Err(why) => last_reason = format!("at {levels} levels: {why}"),
             }
         }
-        let Some((ring, inside, windows)) = chosen else { continue };
-        let part = check_rules(scheme, &net.mesh, &windows)?;
+        let Some((mut ring, mut inside, mut windows)) = chosen else { continue };
+        let part = match check_rules(scheme, &net.mesh, &windows) {
+            Ok(part) => part,
+            // no box spline over a triangle ring: the scheme's own regular
+            // rules with the difference-scheme bounds (lemma C9), on the
+            // first annulus whose larger windows lie on the net
+            Err(box_spline) if net.mesh.face(ring[0]).len() == 3 => {
+                let mut found = None;
+                for (r, i) in annuli.iter().filter(|(_, inside)| !inside.is_empty()) {
+                    match difference_windows(scheme, &net, r) {
+                        Ok(w) => {
+                            found = Some((r, i, w));
+                            break;
+                        }
+                        Err(difference::RingFailure::Level(why)) => {
+                            last_reason = format!("at {levels} levels: {box_spline}; difference-scheme bound: {why}")
+                        }
+                        Err(difference::RingFailure::Final(why)) => {
+                            return Err(format!("{box_spline}; difference-scheme bound: {why}"))
+                        }
+                    }
+                }
+                let Some((r, i, (w, checked))) = found else { continue };
+                (ring, inside, windows) = (r, i, w);
+                (RegularPart::DifferenceScheme, checked)
+            }
+            Err(why) => return Err(why),
+        };
         cert.regular_part = Some(part.0);
         cert.rules_checked = part.1;
         let bounds: Vec<Interval> = windows.iter().map(Window::jacobian_bounds).collect();
@@ -361,6 +397,7 @@ fn geometric_half(
                         .filter(|(v, _)| w.u_pairs.iter().chain(&w.v_pairs).any(|&(a, b)| a == *v || b == *v))
                         .copied()
                         .collect(),
+                    window: w.window.clone(),
                     sign: if b.lo > 0.0 {
                         1
                     } else if b.hi < 0.0 {
@@ -459,6 +496,49 @@ fn geometric_half(
     // nothing decided: no evidence of an earlier, undecided level is kept
     cert.evidence = None;
     Err(last_reason)
+}
+
+/// Levels by which an undecided ring face is refined on its own window
+/// (lemma C9's bounds shrink by about D per level on smooth data).
+const DIFFERENCE_DEPTH: usize = 3;
+
+/// The ring's windows for lemma C9 (`certify::difference`): per face its
+/// own edges, the Jacobian bound (refined on the window where undecided) and the hull radius δ from
+/// the window's second differences and the lattice constants.
+fn difference_windows(
+    scheme: &dyn Scheme,
+    net: &Net<Point>,
+    ring: &[usize],
+) -> Result<(Vec<Window>, usize), difference::RingFailure> {
+    use difference::RingFailure;
+    let bound =
+        difference::lattice_bound(scheme).map_err(|why| RingFailure::Final(format!("numerical only: {why}")))?;
+    let (ring_windows, checked) = difference::ring_windows(scheme, &bound, &net.mesh, ring)?;
+    let mut out = Vec::with_capacity(ring_windows.len());
+    for rw in ring_windows {
+        let p = |v: usize| net.points[v].ok_or_else(|| RingFailure::Level("a window point is not determined".into()));
+        let values: Vec<Point> = rw.vertices.iter().map(|&v| p(v)).collect::<Result<_, _>>()?;
+        let (_, radius) = difference::face_bounds(&bound, 0, &values);
+        let jacobian = difference::jacobian(&bound, 0, &values, DIFFERENCE_DEPTH);
+        let face = net.mesh.face(rw.face);
+        let (a, b, c) = (face[0], face[1], face[2]);
+        let diff = |from: Point, to: Point| [to[0] - from[0], to[1] - from[1]];
+        let (u, v) = (diff(p(a)?, p(b)?), diff(p(a)?, p(c)?));
+        out.push(Window {
+            face: rw.face,
+            faces: vec![rw.face],
+            along_u: vec![u],
+            along_v: vec![v],
+            points: vec![p(a)?, p(b)?, p(c)?],
+            u_pairs: vec![(a, b)],
+            v_pairs: vec![(a, c)],
+            layout: Vec::new(),
+            jacobian: Some(jacobian),
+            radius,
+            window: bound.windows[0].iter().zip(&rw.vertices).map(|(l, &v)| (v, [l.0, l.1])).collect(),
+        });
+    }
+    Ok((out, checked))
 }
 
 fn record_margins(cert: &mut CharMapCertificate, net: &Net<Point>, bounds: &[Interval], sign: f64, area_factor: usize) {
@@ -563,6 +643,14 @@ struct Window {
     /// lattice position in half units (V-vertices even, FCVs odd; the ring
     /// face is [0, 2]²), for the rule check and the certificate document
     layout: Vec<(usize, [i64; 2])>,
+    /// difference-scheme windows only (None, 0 otherwise): the Jacobian
+    /// over the face proved to lie in `jacobian` (lemma C9, not the edge
+    /// vectors' range), and the face's image within `radius` of the hull of
+    /// `points`
+    jacobian: Option<Interval>,
+    radius: f64,
+    /// difference-scheme windows only: the window on the lattice
+    window: Vec<(usize, [i64; 2])>,
 }
 
 impl Window {
@@ -664,7 +752,19 @@ impl Window {
             }
         }
         let points = coords.keys().map(|&v| p(v)).collect::<Result<Vec<_>, String>>()?;
-        Ok(Window { face: f, faces, along_u, along_v, points, u_pairs, v_pairs, layout: Vec::new() })
+        Ok(Window {
+            face: f,
+            faces,
+            along_u,
+            along_v,
+            points,
+            u_pairs,
+            v_pairs,
+            layout: Vec::new(),
+            jacobian: None,
+            radius: 0.0,
+            window: Vec::new(),
+        })
     }
 
     /// The window of a ring face of the non-box S_3^1 spline (lemma C3′ of
@@ -735,13 +835,28 @@ impl Window {
             .map(|&(v, _)| v)
             .collect();
         let points = hull.iter().map(|&v| p(v)).collect::<Result<Vec<_>, String>>()?;
-        Ok(Window { face: f, faces, along_u, along_v, points, u_pairs, v_pairs, layout })
+        Ok(Window {
+            face: f,
+            faces,
+            along_u,
+            along_v,
+            points,
+            u_pairs,
+            v_pairs,
+            layout,
+            jacobian: None,
+            radius: 0.0,
+            window: Vec::new(),
+        })
     }
 
     /// An enclosure of the range of det(uᵢ, vⱼ) over the window's edge
     /// vectors (the Jacobian over the face lies in it); the whole line when
     /// a bound is not finite, which decides no sign.
     fn jacobian_bounds(&self) -> Interval {
+        if let Some(j) = self.jacobian {
+            return if j.is_finite() { j } else { Interval::new(f64::NEG_INFINITY, f64::INFINITY) };
+        }
         let mut lo = f64::INFINITY;
         let mut hi = f64::NEG_INFINITY;
         for u in &self.along_u {
@@ -1104,7 +1219,7 @@ fn winding_number(
     // share an open half-plane (so no edge passes through the origin): a
     // crossing count with exact orientation signs.
     let directions: Vec<[f64; 2]> =
-        chain.iter().map(|&(_, w)| half_plane(&windows[w].points)).collect::<Result<_, String>>()?;
+        chain.iter().map(|&(_, w)| half_plane(&windows[w].points, windows[w].radius)).collect::<Result<_, String>>()?;
     let point = |v: usize| net.points[v].ok_or_else(|| "a chain vertex has no point".to_string());
     let k = chain.len();
     let mut polygon: Vec<[f64; 2]> = Vec::with_capacity(k);
@@ -1140,10 +1255,13 @@ fn dot(d: [f64; 2], p: Point) -> Interval {
 
 /// A direction d with d·p > 0 proved for every enclosed point p (so their
 /// hull lies in the open half-plane d·x > 0): the sum of the midpoints,
-/// checked in interval arithmetic.
-fn half_plane(points: &[Point]) -> Result<[f64; 2], String> {
+/// checked in interval arithmetic; with a `radius`, for every point within
+/// that distance of the hull (d·p − radius·|d| > 0).
+fn half_plane(points: &[Point], radius: f64) -> Result<[f64; 2], String> {
     let d = points.iter().fold([0.0, 0.0], |s, p| [s[0] + p[0].mid(), s[1] + p[1].mid()]);
-    if points.iter().all(|p| dot(d, *p).lo > 0.0) {
+    let reach =
+        Interval::point(radius) * Interval::sqrt(&(Interval::point(d[0]).square() + Interval::point(d[1]).square()));
+    if points.iter().all(|p| (dot(d, *p) - reach).lo > 0.0) {
         Ok(d)
     } else {
         Err("the hull of a boundary arc's window is not in a half-plane through the centre".into())
@@ -1211,11 +1329,11 @@ mod tests {
     fn a_half_plane_is_proved_or_refused() {
         let box_at = |x: f64, y: f64| [Interval::new(x - 1e-3, x + 1e-3), Interval::new(y - 1e-3, y + 1e-3)];
         // points in an open quadrant: a direction is found and checked
-        let d = half_plane(&[box_at(1.0, 0.1), box_at(0.2, 1.0), box_at(0.5, 0.5)]).unwrap();
+        let d = half_plane(&[box_at(1.0, 0.1), box_at(0.2, 1.0), box_at(0.5, 0.5)], 0.0).unwrap();
         assert!(d[0] > 0.0 && d[1] > 0.0);
         // points on both sides of the origin: no open half-plane holds them
-        assert!(half_plane(&[box_at(1.0, 0.0), box_at(-1.0, 0.01), box_at(0.0, 1.0)]).is_err());
+        assert!(half_plane(&[box_at(1.0, 0.0), box_at(-1.0, 0.01), box_at(0.0, 1.0)], 0.0).is_err());
         // a box holding the origin: refused, however the others lie
-        assert!(half_plane(&[box_at(1.0, 1.0), [Interval::new(-0.1, 0.1), Interval::new(-0.1, 0.1)]]).is_err());
+        assert!(half_plane(&[box_at(1.0, 1.0), [Interval::new(-0.1, 0.1), Interval::new(-0.1, 0.1)]], 0.0).is_err());
     }
 }

@@ -325,6 +325,11 @@ fn record_stencils<W: ExactWeight>(
 /// claimed Jacobian sign; the winding computation; the verdicts and the
 /// premises taken as trusted. `Err`: why the part cannot be written.
 pub fn charmap_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &CharMapCertificate) -> Result<Value, String> {
+    if cert.regular_part == Some(super::charmap::RegularPart::DifferenceScheme) {
+        return Err("the geometric proof rests on lemma C9 (difference-scheme bounds of the scheme's own regular \
+                    rules), which the independent checker does not re-derive: only the spectral part is exported"
+            .into());
+    }
     let e = cert
         .evidence
         .as_ref()

@@ -33,6 +33,7 @@
 
 pub mod charmap;
 pub mod complex;
+pub mod difference;
 pub mod discs;
 pub mod exact_spectrum;
 pub mod export;

@@ -163,6 +163,30 @@ fn echelon(rows: usize, cols: usize, a: &mut [Rational], reduced: bool) -> Vec<u
     pivots
 }
 
+/// The pivot columns of the `rows` × `cols` matrix `a` (row-major) under
+/// Gaussian elimination: a maximal set of linearly independent columns.
+pub fn pivot_columns(rows: usize, cols: usize, mut a: Vec<Rational>) -> Vec<usize> {
+    echelon(rows, cols, &mut a, false)
+}
+
+/// The inverse of the `n` × `n` matrix `a` (row-major) by Gauss–Jordan on
+/// [a | I], or `None` when `a` is singular.
+pub fn inverse(n: usize, a: &[Rational]) -> Option<Vec<Rational>> {
+    let cols = 2 * n;
+    let mut aug = vec![Rational::zero(); n * cols];
+    for i in 0..n {
+        for j in 0..n {
+            aug[i * cols + j] = a[i * n + j].clone();
+        }
+        aug[i * cols + n + i] = Rational::one();
+    }
+    let pivots = echelon(n, cols, &mut aug, true);
+    if pivots.len() < n || pivots.iter().any(|&c| c >= n) {
+        return None;
+    }
+    Some((0..n).flat_map(|i| aug[i * cols + n..(i + 1) * cols].to_vec()).collect())
+}
+
 /// A basis of the null space {x : A x = 0} of the `rows` × `cols` matrix `a`
 /// (row-major), by reduction to row echelon form: one vector per free column.
 pub fn null_space(rows: usize, cols: usize, mut a: Vec<Rational>) -> Vec<Vec<Rational>> {
