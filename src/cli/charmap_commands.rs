@@ -59,7 +59,7 @@ pub struct CharmapArgs {
     #[command(flatten)]
     pub figure: FigureArgs,
     /// also prove (or disprove) Reif's criterion: certified spectrum,
-    /// Jacobian bounds of the ring's box-spline patches, certified winding number
+    /// Jacobian bounds of the ring's box-spline patches (or of the scheme's own rules by difference-scheme bounds), certified winding number
     #[arg(long)]
     pub certify: bool,
     /// most analysis steps of refinement the certificate tries (2 to 6)
