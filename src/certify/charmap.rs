@@ -173,6 +173,8 @@ pub struct Evidence {
     pub lambda1_row: usize,
     pub faces: Vec<FaceEvidence>,
     pub winding: Option<WindingEvidence>,
+    /// lemma C9's lattice data, when the regular part is `DifferenceScheme`
+    pub difference: Option<std::sync::Arc<difference::LatticeBound>>,
 }
 
 /// One ring face's window: its edge vectors along the two lattice
@@ -342,6 +344,7 @@ fn geometric_half(
             }
         }
         let Some((mut ring, mut inside, mut windows)) = chosen else { continue };
+        let mut lattice = None;
         let part = match check_rules(scheme, &net.mesh, &windows) {
             Ok(part) => part,
             // no box spline over a triangle ring: the scheme's own regular
@@ -363,8 +366,9 @@ fn geometric_half(
                         }
                     }
                 }
-                let Some((r, i, (w, checked))) = found else { continue };
+                let Some((r, i, (w, checked, bound))) = found else { continue };
                 (ring, inside, windows) = (r, i, w);
+                lattice = Some(bound);
                 (RegularPart::DifferenceScheme, checked)
             }
             Err(why) => return Err(why),
@@ -408,6 +412,7 @@ fn geometric_half(
                 })
                 .collect(),
             winding: None,
+            difference: lattice.clone(),
         });
         if positive > 0 && negative > 0 {
             let centre = |f: usize| {
@@ -498,10 +503,6 @@ fn geometric_half(
     Err(last_reason)
 }
 
-/// Levels by which an undecided ring face is refined on its own window
-/// (lemma C9's bounds shrink by about D per level on smooth data).
-const DIFFERENCE_DEPTH: usize = 3;
-
 /// The ring's windows for lemma C9 (`certify::difference`): per face its
 /// own edges, the Jacobian bound (refined on the window where undecided) and the hull radius δ from
 /// the window's second differences and the lattice constants.
@@ -509,7 +510,7 @@ fn difference_windows(
     scheme: &dyn Scheme,
     net: &Net<Point>,
     ring: &[usize],
-) -> Result<(Vec<Window>, usize), difference::RingFailure> {
+) -> Result<(Vec<Window>, usize, std::sync::Arc<difference::LatticeBound>), difference::RingFailure> {
     use difference::RingFailure;
     let bound =
         difference::lattice_bound(scheme).map_err(|why| RingFailure::Final(format!("numerical only: {why}")))?;
@@ -519,7 +520,7 @@ fn difference_windows(
         let p = |v: usize| net.points[v].ok_or_else(|| RingFailure::Level("a window point is not determined".into()));
         let values: Vec<Point> = rw.vertices.iter().map(|&v| p(v)).collect::<Result<_, _>>()?;
         let (_, radius) = difference::face_bounds(&bound, 0, &values);
-        let jacobian = difference::jacobian(&bound, 0, &values, DIFFERENCE_DEPTH);
+        let jacobian = difference::jacobian(&bound, 0, &values, difference::DEPTH);
         let face = net.mesh.face(rw.face);
         let (a, b, c) = (face[0], face[1], face[2]);
         let diff = |from: Point, to: Point| [to[0] - from[0], to[1] - from[1]];
@@ -538,7 +539,7 @@ fn difference_windows(
             window: bound.windows[0].iter().zip(&rw.vertices).map(|(l, &v)| (v, [l.0, l.1])).collect(),
         });
     }
-    Ok((out, checked))
+    Ok((out, checked, bound))
 }
 
 fn record_margins(cert: &mut CharMapCertificate, net: &Net<Point>, bounds: &[Interval], sign: f64, area_factor: usize) {

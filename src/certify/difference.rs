@@ -69,6 +69,9 @@ const TORUS: i64 = 12;
 /// Windows larger than this are refused: the word products (9³ of them for
 /// the ternary split) grow with the window's cube; Kobbelt √3's is 27 points.
 const MAX_WINDOW: usize = 64;
+/// Levels by which an undecided ring face is refined on its own window
+/// (the bounds shrink by about D per level on smooth data).
+pub const DEPTH: usize = 3;
 /// Longest words of children whose norms are bounded (the cost grows by D²
 /// per letter).
 const MAX_WORD: usize = 3;

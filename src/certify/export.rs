@@ -325,11 +325,6 @@ fn record_stencils<W: ExactWeight>(
 /// claimed Jacobian sign; the winding computation; the verdicts and the
 /// premises taken as trusted. `Err`: why the part cannot be written.
 pub fn charmap_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &CharMapCertificate) -> Result<Value, String> {
-    if cert.regular_part == Some(super::charmap::RegularPart::DifferenceScheme) {
-        return Err("the geometric proof rests on lemma C9 (difference-scheme bounds of the scheme's own regular \
-                    rules), which the independent checker does not re-derive: only the spectral part is exported"
-            .into());
-    }
     let e = cert
         .evidence
         .as_ref()
@@ -351,15 +346,17 @@ pub fn charmap_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &CharMapCert
     for f in &e.faces {
         let layout: Vec<(usize, [i64; 2])> =
             f.layout.iter().map(|&(v, c)| Ok((node(v)?, c))).collect::<Result<_, &str>>()?;
-        faces.push((pairs(&f.u_edges)?, pairs(&f.v_edges)?, f.sign, layout));
+        let window: Vec<(usize, [i64; 2])> =
+            f.window.iter().map(|&(v, c)| Ok((node(v)?, c))).collect::<Result<_, &str>>()?;
+        faces.push((pairs(&f.u_edges)?, pairs(&f.v_edges)?, f.sign, layout, window));
     }
     let chain: Vec<usize> = match &e.winding {
         Some(w) => w.vertices.iter().map(|&v| node(v)).collect::<Result<_, _>>()?,
         None => Vec::new(),
     };
-    stack.extend(
-        faces.iter().flat_map(|(u, v, _, l)| u.iter().chain(v).flatten().copied().chain(l.iter().map(|p| p.0))),
-    );
+    stack.extend(faces.iter().flat_map(|(u, v, _, l, w)| {
+        u.iter().chain(v).flatten().copied().chain(l.iter().map(|p| p.0)).chain(w.iter().map(|p| p.0))
+    }));
     stack.extend(chain.iter().copied());
     while let Some(i) = stack.pop() {
         if !std::mem::replace(&mut needed[i], true) {
@@ -382,7 +379,7 @@ pub fn charmap_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &CharMapCert
     }
     let faces: Vec<Value> = faces
         .iter()
-        .map(|(u, v, sign, layout)| {
+        .map(|(u, v, sign, layout, window)| {
             let map = |edges: &Vec<[usize; 2]>| edges.iter().map(|[a, b]| [index[*a], index[*b]]).collect::<Vec<_>>();
             let mut face =
                 json!({ "u_edges": map(u), "v_edges": map(v), "sign": match sign { 1 => "+", -1 => "-", _ => "?" } });
@@ -390,6 +387,11 @@ pub fn charmap_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &CharMapCert
             // in half units, from which the checker re-derives the edge set
             if !layout.is_empty() {
                 face["layout"] = json!(layout.iter().map(|(p, c)| [index[*p] as i64, c[0], c[1]]).collect::<Vec<_>>());
+            }
+            // lemma C9 windows: W_up's points at their lattice positions,
+            // the face's corners at (0,0), (1,0), (0,1)
+            if !window.is_empty() {
+                face["window"] = json!(window.iter().map(|(p, c)| [index[*p] as i64, c[0], c[1]]).collect::<Vec<_>>());
             }
             face
         })
@@ -403,7 +405,9 @@ pub fn charmap_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &CharMapCert
             "number": w.number,
         })
     });
+    let difference = e.difference.as_ref().map(|b| difference_part(b));
     Ok(json!({
+        "difference": difference,
         "statement": "the characteristic map of λ1's eigenvectors is regular and injective (Reif's C¹ criterion, \
                       with the spectral part)",
         "regularity": cert.regularity.word(),
@@ -421,16 +425,46 @@ pub fn charmap_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &CharMapCert
         "faces": faces,
         "winding": winding,
         "trusted": [
-            "the rules over the ring faces' windows are the regular part's box-spline masks, or for non-box the \
-             four-directional S_3^1 spline's mask derived from its definition (compared exactly by subdlab), so the \
-             Jacobian over a face lies between the least and greatest det(u_i, v_j) of its window",
+            if e.difference.is_some() {
+                "the rules over the ring faces' windows are the exported regular mask (read off a regular torus and \
+                 compared exactly by subdlab at every child window point of the next analysis step), and by locality \
+                 at every later level"
+            } else {
+                "the rules over the ring faces' windows are the regular part's box-spline masks, or for non-box the \
+                 four-directional S_3^1 spline's mask derived from its definition (compared exactly by subdlab), so \
+                 the Jacobian over a face lies between the least and greatest det(u_i, v_j) of its window"
+            },
             "the ring faces, their scaled copies (and for dual schemes the half-face enlargement) cover the punctured \
              neighbourhood of the centre",
             "each window is the ring face's one-ring laid out on the lattice, with its u- and v-edges as listed (for \
-             non-box windows: at the positions its layout gives), and the chain is the annulus's inner boundary, \
+             non-box windows: at the positions its layout gives; for lemma C9 windows: W_up at the positions its \
+             `window` gives, the face's corners at (0,0), (1,0), (0,1)), and the chain is the annulus's inner boundary, \
              window i the ring face beside its edge i",
         ],
     }))
+}
+
+/// Lemma C9's data: the regular mask (per class c of a new point y, the
+/// weights on old points x as [D·x − y, weight]), the windows and bases of
+/// second differences per triangle type, and the constants subdlab claims
+/// (a checker recomputes them from the mask and requires its own to be at
+/// most these).
+fn difference_part(b: &super::difference::LatticeBound) -> Value {
+    let types = |f: &dyn Fn(usize) -> Value| json!({ "up": f(0), "down": f(1) });
+    json!({
+        "dilation": b.mask.dilation,
+        "steps": b.mask.steps,
+        "mask": b.mask.classes.iter().map(|(c, list)| json!([c.0, c.1, list.iter().map(|(o, w)| json!([o.0, o.1, format!("{}/{}", w.numer(), w.denom())])).collect::<Vec<_>>()])).collect::<Vec<_>>(),
+        "windows": types(&|t| json!(b.windows[t].iter().map(|p| [p.0, p.1]).collect::<Vec<_>>())),
+        "basis": types(&|t| json!(b.basis[t].iter().map(|row| row.iter().map(|(p, c)| [p.0, p.1, *c]).collect::<Vec<_>>()).collect::<Vec<_>>())),
+        "word": b.word,
+        "word_norms": b.word_norms,
+        "k_edge": b.k_edge,
+        "k_pos": b.k_pos,
+        "edge_constant": b.edge_constant,
+        "position_constant": b.position_constant,
+        "depth": super::difference::DEPTH,
+    })
 }
 
 /// The characteristic-map certificate's document: the spectral part and,
