@@ -875,6 +875,10 @@ pub fn jacobian(bound: &LatticeBound, t: usize, values: &[[Interval; 2]], depth:
             })
             .collect();
         let j = jacobian(bound, *t2, &child, depth - 1) / scale;
+        // a child of undecided sign leaves the parent undecided: stop early
+        if !(j.lo > 0.0 || j.hi < 0.0) {
+            return here;
+        }
         hull = Some(hull.map_or(j, |h| h.hull(&j)));
     }
     let children = hull.expect("a triangle has children");
