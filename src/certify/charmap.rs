@@ -628,6 +628,7 @@ fn certified_net(analysis: &Analysis, cert: &mut CharMapCertificate) -> Result<V
 /// A ring face with its one-ring of faces laid out on the lattice: the
 /// corners of the face get (0,0), (1,0), (1,1), (0,1) (triangles: (0,0),
 /// (1,0), (0,1)), and every window vertex its lattice position.
+#[derive(Default)]
 struct Window {
     face: usize,
     faces: Vec<usize>,
@@ -753,19 +754,7 @@ impl Window {
             }
         }
         let points = coords.keys().map(|&v| p(v)).collect::<Result<Vec<_>, String>>()?;
-        Ok(Window {
-            face: f,
-            faces,
-            along_u,
-            along_v,
-            points,
-            u_pairs,
-            v_pairs,
-            layout: Vec::new(),
-            jacobian: None,
-            radius: 0.0,
-            window: Vec::new(),
-        })
+        Ok(Window { face: f, faces, along_u, along_v, points, u_pairs, v_pairs, ..Window::default() })
     }
 
     /// The window of a ring face of the non-box S_3^1 spline (lemma C3′ of
@@ -836,19 +825,7 @@ impl Window {
             .map(|&(v, _)| v)
             .collect();
         let points = hull.iter().map(|&v| p(v)).collect::<Result<Vec<_>, String>>()?;
-        Ok(Window {
-            face: f,
-            faces,
-            along_u,
-            along_v,
-            points,
-            u_pairs,
-            v_pairs,
-            layout,
-            jacobian: None,
-            radius: 0.0,
-            window: Vec::new(),
-        })
+        Ok(Window { face: f, faces, along_u, along_v, points, u_pairs, v_pairs, layout, ..Window::default() })
     }
 
     /// An enclosure of the range of det(uᵢ, vⱼ) over the window's edge
