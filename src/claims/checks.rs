@@ -2,6 +2,7 @@
 //! valence and neighbourhood, since many claims look at the same spectrum.
 
 use std::collections::{BTreeMap, HashMap};
+use std::sync::Arc;
 
 use num_complex::Complex64;
 
@@ -21,11 +22,31 @@ const TOL: f64 = 1e-9;
 
 #[derive(Default)]
 pub struct Cache {
-    spectra: HashMap<String, Result<std::rc::Rc<Spectrum>, Error>>,
+    spectra: HashMap<String, Result<Arc<Spectrum>, Error>>,
     /// where certified claims write their certificate documents
     pub(super) certificates: Option<std::path::PathBuf>,
     /// the claim being evaluated (names its certificate files)
     claim: String,
+}
+
+/// Names the certificate files of one claim (what a configuration evaluated
+/// on another thread needs of the cache).
+struct CertificateNames {
+    directory: Option<std::path::PathBuf>,
+    claim: String,
+}
+
+impl CertificateNames {
+    /// The file the certificate of the claim at valence n goes to, when
+    /// certificates are asked for.
+    fn path(&self, subject: &Subject, n: usize) -> Option<std::path::PathBuf> {
+        let faces = subject.faces_for(n).map(|f| format!("-{f}")).unwrap_or_default();
+        let safe: String = format!("{}-n{n}{faces}", self.claim)
+            .chars()
+            .map(|c| if c.is_ascii_alphanumeric() || "-_.".contains(c) { c } else { '_' })
+            .collect();
+        self.directory.as_ref().map(|dir| dir.join(format!("{safe}.json")))
+    }
 }
 
 impl Cache {
@@ -33,22 +54,39 @@ impl Cache {
         Cache { certificates, ..Default::default() }
     }
 
-    /// The file the certificate of the current claim at valence n goes to,
-    /// when certificates are asked for.
-    fn certificate_path(&self, subject: &Subject, n: usize) -> Option<std::path::PathBuf> {
-        let faces = subject.faces_for(n).map(|f| format!("-{f}")).unwrap_or_default();
-        let safe: String = format!("{}-n{n}{faces}", self.claim)
-            .chars()
-            .map(|c| if c.is_ascii_alphanumeric() || "-_.".contains(c) { c } else { '_' })
-            .collect();
-        self.certificates.as_ref().map(|dir| dir.join(format!("{safe}.json")))
+    fn certificate_names(&self) -> CertificateNames {
+        CertificateNames { directory: self.certificates.clone(), claim: self.claim.clone() }
     }
-}
 
-impl Cache {
-    pub(super) fn spectrum(&mut self, s: &Subject, n: usize) -> Result<std::rc::Rc<Spectrum>, Error> {
-        let key = format!("{}|{:?}|{n}|{:?}|{:?}", s.scheme, s.params, s.neighbourhood, s.faces_for(n));
-        self.spectra.entry(key).or_insert_with(|| compute(s, n).map(std::rc::Rc::new)).clone()
+    fn key(s: &Subject, n: usize) -> String {
+        format!("{}|{:?}|{n}|{:?}|{:?}", s.scheme, s.params, s.neighbourhood, s.faces_for(n))
+    }
+
+    pub(super) fn spectrum(&mut self, s: &Subject, n: usize) -> Result<Arc<Spectrum>, Error> {
+        self.spectra.entry(Cache::key(s, n)).or_insert_with(|| compute(s, n).map(Arc::new)).clone()
+    }
+
+    /// Analyse, side by side, every configuration of `subject` that is not
+    /// cached yet, for a check that asks for the spectrum of each (the
+    /// sequential pass then finds them all cached: the same analyses, as
+    /// `compute` reads only the narrowed subject). A subject whose
+    /// configurations cannot be listed is left to that pass to report.
+    fn prefetch(&mut self, subject: &Subject) {
+        let Ok(configurations) = subject.configurations() else { return };
+        let mut missing: Vec<(usize, Subject)> = Vec::new();
+        let mut keys: Vec<String> = Vec::new();
+        for (n, s) in configurations {
+            let key = Cache::key(&s, n);
+            if !self.spectra.contains_key(&key) && !keys.contains(&key) {
+                keys.push(key);
+                missing.push((n, s));
+            }
+        }
+        if missing.len() < 2 {
+            return;
+        }
+        let computed = super::schedule::each_configuration(&missing, |s, n| compute(s, n).map(Arc::new));
+        self.spectra.extend(keys.into_iter().zip(computed));
     }
 }
 
@@ -275,14 +313,39 @@ fn outcome(paper: &str, claim: &Claim, p: Partial) -> Outcome {
     }
 }
 
+/// What a per-configuration comparison gives: whether it agrees, the stated
+/// and the computed value.
+type Comparison = Result<(bool, String, String), Error>;
+
 /// Runs a per-valence comparison and reports the first valence where it fails.
 pub(super) fn over_valences(
     subject: &Subject,
-    mut one: impl FnMut(&Subject, usize) -> Result<(bool, String, String), Error>,
+    mut one: impl FnMut(&Subject, usize) -> Comparison,
 ) -> Result<Partial, Error> {
     // one run per configuration (a valence, or a face sequence: QQQ and TTT
     // are two), each with the subject narrowed to it
     let configurations = subject.configurations()?;
+    let results: Vec<Comparison> = configurations.iter().map(|(n, narrowed)| one(narrowed, *n)).collect();
+    summarise(&configurations, results)
+}
+
+/// [`over_valences`] for a comparison that needs nothing but its
+/// configuration (no cache): the configurations are evaluated side by side
+/// (`schedule`), and the verdict is drawn from their results in
+/// configuration order, as from a sequential run.
+fn over_independent_valences(
+    subject: &Subject,
+    one: impl Fn(&Subject, usize) -> Comparison + Sync,
+) -> Result<Partial, Error> {
+    let configurations = subject.configurations()?;
+    let results = super::schedule::each_configuration(&configurations, one);
+    summarise(&configurations, results)
+}
+
+/// The verdict from the comparison at each configuration (in order): HOLDS
+/// when all agree, REFUTED at the first that disagrees, and no verdict when
+/// nothing disagrees but a configuration could not be decided.
+fn summarise(configurations: &[(usize, Subject)], results: Vec<Comparison>) -> Result<Partial, Error> {
     let name = |s: &Subject, n: usize| match s.faces_for(n) {
         Some(f) => format!("n={n} ({f})"),
         None => format!("n={n}"),
@@ -293,8 +356,8 @@ pub(super) fn over_valences(
     // statement about all of them, whatever the others give
     let mut undecided: Option<(String, Error)> = None;
     let (mut stated0, mut computed0) = (String::new(), String::new());
-    for (n, narrowed) in &configurations {
-        let (ok, stated, computed) = match one(narrowed, *n) {
+    for ((n, narrowed), result) in configurations.iter().zip(results) {
+        let (ok, stated, computed) = match result {
             Ok(r) => r,
             Err(e) => {
                 undecided.get_or_insert((narrowed.label(*n), e));
@@ -361,92 +424,104 @@ fn identity_at(l: &Expr, r: &Expr, lhs: &str, rhs: &str, env: &Env) -> Result<(b
 
 fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
     match check {
-        Check::Eigenvalues { subject, values, compare, block, moduli } => over_valences(subject, |subject, n| {
-            let spec = cache.spectrum(subject, n)?;
-            let blocks: Vec<Option<usize>> = match block.as_deref() {
-                None => vec![None],
-                // every non-trivial Fourier block, with m in the environment
-                Some("m") => (1..n).map(Some).collect(),
-                Some(b) => {
-                    let m = eval(b, &env_for(subject, n)?)?.re.round();
-                    if !(0.0..n as f64).contains(&m) {
-                        return Err(Error::Claim(format!("block '{b}' is {m} at n = {n}")));
+        Check::Eigenvalues { subject, values, compare, block, moduli } => {
+            cache.prefetch(subject);
+            over_valences(subject, |subject, n| {
+                let spec = cache.spectrum(subject, n)?;
+                let blocks: Vec<Option<usize>> = match block.as_deref() {
+                    None => vec![None],
+                    // every non-trivial Fourier block, with m in the environment
+                    Some("m") => (1..n).map(Some).collect(),
+                    Some(b) => {
+                        let m = eval(b, &env_for(subject, n)?)?.re.round();
+                        if !(0.0..n as f64).contains(&m) {
+                            return Err(Error::Claim(format!("block '{b}' is {m} at n = {n}")));
+                        }
+                        vec![Some(m as usize)]
                     }
-                    vec![Some(m as usize)]
-                }
-            };
-            let mut first = None;
-            for b in blocks {
-                let env = env_with(subject, n, b)?;
-                let mut stated = stated_values(values, &env)?;
-                stated.sort_by(|a, b| eigenvalue_order(*a, *b));
-                let mut computed = match b {
-                    Some(m) => block_values(&spec, m)?,
-                    None => expanded(&spec),
                 };
-                computed.sort_by(|a, b| eigenvalue_order(*a, *b));
-                if *moduli {
-                    // the other reading: only |λ| is compared
-                    for z in stated.iter_mut().chain(computed.iter_mut()) {
-                        *z = Complex64::new(z.norm(), 0.0);
-                    }
+                let mut first = None;
+                for b in blocks {
+                    let env = env_with(subject, n, b)?;
+                    let mut stated = stated_values(values, &env)?;
                     stated.sort_by(|a, b| eigenvalue_order(*a, *b));
+                    let mut computed = match b {
+                        Some(m) => block_values(&spec, m)?,
+                        None => expanded(&spec),
+                    };
                     computed.sort_by(|a, b| eigenvalue_order(*a, *b));
-                }
-                let shown: Vec<Complex64> = match compare.as_str() {
-                    "leading" => computed.iter().take(stated.len()).copied().collect(),
-                    "all" | "contains" => computed.clone(),
-                    // only the computed copies of the stated values count
-                    "count" => computed.iter().copied().filter(|w| stated.iter().any(|z| close(*z, *w))).collect(),
-                    other => {
-                        return Err(Error::Claim(format!(
-                            "unknown comparison '{other}' (all, leading, contains, count)"
-                        )))
+                    if *moduli {
+                        // the other reading: only |λ| is compared
+                        for z in stated.iter_mut().chain(computed.iter_mut()) {
+                            *z = Complex64::new(z.norm(), 0.0);
+                        }
+                        stated.sort_by(|a, b| eigenvalue_order(*a, *b));
+                        computed.sort_by(|a, b| eigenvalue_order(*a, *b));
                     }
-                };
-                let (missing, extra) = unmatched(&stated, &shown);
-                let ok = missing.is_empty() && (compare == "contains" || extra.is_empty());
-                let tag = b.map(|m| format!("block {m}: ")).unwrap_or_default();
-                let tag = if *moduli { format!("{tag}moduli ") } else { tag };
-                let text = (format!("{tag}{}", show_list(&stated)), format!("{tag}{}", show_list(&shown)));
-                if !ok {
-                    let why = format!(
-                        " (stated but not found: {}; found but not stated: {})",
-                        show_list(&missing),
-                        show_list(&extra)
-                    );
-                    return Ok((false, text.0, text.1 + &why));
+                    let shown: Vec<Complex64> = match compare.as_str() {
+                        "leading" => computed.iter().take(stated.len()).copied().collect(),
+                        "all" | "contains" => computed.clone(),
+                        // only the computed copies of the stated values count
+                        "count" => computed.iter().copied().filter(|w| stated.iter().any(|z| close(*z, *w))).collect(),
+                        other => {
+                            return Err(Error::Claim(format!(
+                                "unknown comparison '{other}' (all, leading, contains, count)"
+                            )))
+                        }
+                    };
+                    let (missing, extra) = unmatched(&stated, &shown);
+                    let ok = missing.is_empty() && (compare == "contains" || extra.is_empty());
+                    let tag = b.map(|m| format!("block {m}: ")).unwrap_or_default();
+                    let tag = if *moduli { format!("{tag}moduli ") } else { tag };
+                    let text = (format!("{tag}{}", show_list(&stated)), format!("{tag}{}", show_list(&shown)));
+                    if !ok {
+                        let why = format!(
+                            " (stated but not found: {}; found but not stated: {})",
+                            show_list(&missing),
+                            show_list(&extra)
+                        );
+                        return Ok((false, text.0, text.1 + &why));
+                    }
+                    first.get_or_insert(text);
                 }
-                first.get_or_insert(text);
-            }
-            let (s, c) = first.unwrap_or_default();
-            Ok((true, s, c))
-        }),
-        Check::Subdominant { subject, value } => over_valences(subject, |subject, n| {
-            let spec = cache.spectrum(subject, n)?;
-            let stated = eval(value, &env_for(subject, n)?)?;
-            let l1 = spec
-                .eigenvalues
-                .get(1)
-                .map(|e| Complex64::new(e.re, e.im))
-                .ok_or_else(|| Error::Claim("no subdominant eigenvalue".into()))?;
-            let double = spec.eigenvalues[1].algebraic_multiplicity;
-            Ok((close(stated, l1), show(stated), format!("{} (multiplicity {double})", show(l1))))
-        }),
-        Check::Size { subject, value } => over_valences(subject, |subject, n| {
-            let spec = cache.spectrum(subject, n)?;
-            let stated = eval(value, &env_for(subject, n)?)?.re;
-            let size = spec.matrix_size as f64;
-            Ok((
-                (stated - size).abs() < 0.5,
-                format!("{stated}"),
-                format!("{} (minimal {}, analysis {})", spec.matrix_size, spec.minimal_size, spec.analysis_size),
-            ))
-        }),
-        Check::InvariantSet { subject, rings, lattice_sum, kinds, value } => over_valences(subject, |subject, n| {
-            let spec = cache.spectrum(subject, n)?;
-            super::invariant_set::one(subject, n, rings, lattice_sum.as_deref(), kinds.as_deref(), value, &spec)
-        }),
+                let (s, c) = first.unwrap_or_default();
+                Ok((true, s, c))
+            })
+        }
+        Check::Subdominant { subject, value } => {
+            cache.prefetch(subject);
+            over_valences(subject, |subject, n| {
+                let spec = cache.spectrum(subject, n)?;
+                let stated = eval(value, &env_for(subject, n)?)?;
+                let l1 = spec
+                    .eigenvalues
+                    .get(1)
+                    .map(|e| Complex64::new(e.re, e.im))
+                    .ok_or_else(|| Error::Claim("no subdominant eigenvalue".into()))?;
+                let double = spec.eigenvalues[1].algebraic_multiplicity;
+                Ok((close(stated, l1), show(stated), format!("{} (multiplicity {double})", show(l1))))
+            })
+        }
+        Check::Size { subject, value } => {
+            cache.prefetch(subject);
+            over_valences(subject, |subject, n| {
+                let spec = cache.spectrum(subject, n)?;
+                let stated = eval(value, &env_for(subject, n)?)?.re;
+                let size = spec.matrix_size as f64;
+                Ok((
+                    (stated - size).abs() < 0.5,
+                    format!("{stated}"),
+                    format!("{} (minimal {}, analysis {})", spec.matrix_size, spec.minimal_size, spec.analysis_size),
+                ))
+            })
+        }
+        Check::InvariantSet { subject, rings, lattice_sum, kinds, value } => {
+            cache.prefetch(subject);
+            over_valences(subject, |subject, n| {
+                let spec = cache.spectrum(subject, n)?;
+                super::invariant_set::one(subject, n, rings, lattice_sum.as_deref(), kinds.as_deref(), value, &spec)
+            })
+        }
         Check::Inequality { subject, lhs, op, rhs } => over_valences(subject, |subject, n| {
             let mut env = env_for(subject, n)?;
             let (l, r) = (Expr::parse(lhs)?, Expr::parse(rhs)?);
@@ -481,30 +556,34 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
             };
             Ok((ok, format!("{lhs} {op} {rhs}"), format!("{} {op} {}: {ok}", fmt_f(a), fmt_f(b))))
         }),
-        Check::NonnegativeSpectrum { subject, expect } => over_valences(subject, |subject, n| {
-            let spec = cache.spectrum(subject, n)?;
-            let negative: Vec<Complex64> = spec
-                .eigenvalues
-                .iter()
-                .filter(|e| e.is_real() && e.re < -1e-12)
-                .map(|e| Complex64::new(e.re, 0.0))
-                .collect();
-            let got = negative.is_empty();
-            Ok((
-                got == *expect,
-                if *expect { "no negative eigenvalue".into() } else { "a negative eigenvalue".into() },
-                if got { "no negative eigenvalue".into() } else { format!("negative: {}", show_list(&negative)) },
-            ))
-        }),
-        Check::CharacteristicMap { subject, expect, levels, certified: true, .. } => {
+        Check::NonnegativeSpectrum { subject, expect } => {
+            cache.prefetch(subject);
             over_valences(subject, |subject, n| {
+                let spec = cache.spectrum(subject, n)?;
+                let negative: Vec<Complex64> = spec
+                    .eigenvalues
+                    .iter()
+                    .filter(|e| e.is_real() && e.re < -1e-12)
+                    .map(|e| Complex64::new(e.re, 0.0))
+                    .collect();
+                let got = negative.is_empty();
+                Ok((
+                    got == *expect,
+                    if *expect { "no negative eigenvalue".into() } else { "a negative eigenvalue".into() },
+                    if got { "no negative eigenvalue".into() } else { format!("negative: {}", show_list(&negative)) },
+                ))
+            })
+        }
+        Check::CharacteristicMap { subject, expect, levels, certified: true, .. } => {
+            let names = cache.certificate_names();
+            over_independent_valences(subject, |subject, n| {
                 let (scheme, config) = subject_config(subject, n)?;
                 let options =
                     crate::spectrum::Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
                 let analysis = crate::spectrum::analyse(scheme.as_ref(), &config, &options)?;
                 let most = levels.unwrap_or(crate::certify::charmap::DEFAULT_MAX_LEVELS).max(2);
                 let c = crate::certify::certify_charmap(scheme.as_ref(), &analysis, most)?;
-                if let Some(path) = cache.certificate_path(subject, n) {
+                if let Some(path) = names.path(subject, n) {
                     crate::certify::export::write_charmap(&path, scheme.as_ref(), &analysis, &c)?;
                 }
                 use crate::certify::Verdict;
@@ -537,7 +616,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
             })
         }
         Check::CharacteristicMap { subject, expect, levels, resolution, certified: false } => {
-            over_valences(subject, |subject, n| {
+            over_independent_valences(subject, |subject, n| {
                 let (scheme, config) = subject_config(subject, n)?;
                 let opts = crate::charmap::CharMapOptions {
                     levels: levels.unwrap_or(3),
@@ -562,15 +641,17 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                 ))
             })
         }
-        Check::SpectralC1 { subject, expect, certified: true } => over_valences(subject, |subject, n| {
-            let (scheme, config) = subject_config(subject, n)?;
-            let options = crate::spectrum::Options { neighbourhood: kind_of(subject)?, method: None, exact: false };
-            let analysis = crate::spectrum::analyse(scheme.as_ref(), &config, &options)?;
-            let c = crate::certify::certify_analysis(scheme.as_ref(), &analysis)?;
-            if let Some(path) = cache.certificate_path(subject, n) {
-                crate::certify::export::write_spectrum(&path, scheme.as_ref(), &analysis, &c)?;
-            }
-            let got = match &c.verdict {
+        Check::SpectralC1 { subject, expect, certified: true } => {
+            let names = cache.certificate_names();
+            over_independent_valences(subject, |subject, n| {
+                let (scheme, config) = subject_config(subject, n)?;
+                let options = crate::spectrum::Options { neighbourhood: kind_of(subject)?, method: None, exact: false };
+                let analysis = crate::spectrum::analyse(scheme.as_ref(), &config, &options)?;
+                let c = crate::certify::certify_analysis(scheme.as_ref(), &analysis)?;
+                if let Some(path) = names.path(subject, n) {
+                    crate::certify::export::write_spectrum(&path, scheme.as_ref(), &analysis, &c)?;
+                }
+                let got = match &c.verdict {
                 crate::certify::Verdict::Proved if !c.conditional => true,
                 crate::certify::Verdict::Disproved(_) if !c.conditional => false,
                 // a verdict resting on identities checked only to interval
@@ -585,70 +666,82 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                     return Err(Error::Claim(format!("n = {n}: certificate NOT PROVED ({why})")))
                 }
             };
-            let gap = c.margins.gap_lower_bound.map(|g| format!(", gap ≥ {g:.6e}")).unwrap_or_default();
-            Ok((
-                got == *expect,
-                if *expect { "proved".into() } else { "disproved".into() },
-                format!("certified {}{gap}", c.verdict.display()),
-            ))
-        }),
-        Check::SpectralC1 { subject, expect, .. } => over_valences(subject, |subject, n| {
-            let spec = cache.spectrum(subject, n)?;
-            let got = spec.verdict.c1_spectral;
-            let why = spec.verdict.reasons.iter().find(|r| r.contains("not") || r.contains("defective")).cloned();
-            Ok((
-                got == *expect,
-                if *expect { "passes".into() } else { "fails".into() },
-                format!(
-                    "{}{}",
-                    if got { "passes" } else { "fails" },
-                    why.map(|w| format!(": {w}")).unwrap_or_default()
-                ),
-            ))
-        }),
-        Check::LimitStencil { subject, weights } => over_valences(subject, |subject, n| {
-            let spec = cache.spectrum(subject, n)?;
-            let env = env_for(subject, n)?;
-            let l = limit_stencil(&spec)?;
-            let mut worst = (0.0f64, String::new());
-            for (k, lab) in spec.labels.iter().enumerate() {
-                // a whole label name (`edge[r1,s2,0]`) before its kind and ring
-                let want = match weights.get(&lab.name).or_else(|| weights.get(&selector(lab.kind, lab.ring))) {
-                    Some(e) => eval(e, &env)?.re,
-                    None => 0.0,
-                };
-                let d = (l[k] - want).abs();
-                if d > worst.0 {
-                    worst = (d, format!("{}: computed {}, stated {}", lab.name, fmt_f(l[k]), fmt_f(want)));
-                }
-            }
-            if let Some(key) = weights.keys().find(|k| k.contains('[') && !spec.labels.iter().any(|l| &l.name == *k)) {
-                return Err(Error::Claim(format!("'{key}' names no vertex of the neighbourhood at n = {n}")));
-            }
-            let stated = weights.iter().map(|(k, v)| format!("{k} = {v}")).collect::<Vec<_>>().join(", ");
-            let ok = worst.0 < 1e-9;
-            Ok((ok, stated, if ok { "every weight as stated".into() } else { worst.1 }))
-        }),
-        Check::TangentStencils { subject, cos, sin } => over_valences(subject, |subject, n| {
-            let spec = cache.spectrum(subject, n)?;
-            let t = tangent_stencils(&spec)?;
-            let mut basis = vec![vec![0.0; spec.labels.len()]; 2];
-            for (k, lab) in spec.labels.iter().enumerate() {
-                let mut env = env_for(subject, n)?;
-                env.insert("s".into(), ParamValue::from_ratio(lab.sector as i64, 1));
-                for (b, map) in [cos, sin].iter().enumerate() {
-                    if let Some(e) = map.get(&selector(lab.kind, lab.ring)) {
-                        basis[b][k] = eval(e, &env)?.re;
+                let gap = c.margins.gap_lower_bound.map(|g| format!(", gap ≥ {g:.6e}")).unwrap_or_default();
+                Ok((
+                    got == *expect,
+                    if *expect { "proved".into() } else { "disproved".into() },
+                    format!("certified {}{gap}", c.verdict.display()),
+                ))
+            })
+        }
+        Check::SpectralC1 { subject, expect, .. } => {
+            cache.prefetch(subject);
+            over_valences(subject, |subject, n| {
+                let spec = cache.spectrum(subject, n)?;
+                let got = spec.verdict.c1_spectral;
+                let why = spec.verdict.reasons.iter().find(|r| r.contains("not") || r.contains("defective")).cloned();
+                Ok((
+                    got == *expect,
+                    if *expect { "passes".into() } else { "fails".into() },
+                    format!(
+                        "{}{}",
+                        if got { "passes" } else { "fails" },
+                        why.map(|w| format!(": {w}")).unwrap_or_default()
+                    ),
+                ))
+            })
+        }
+        Check::LimitStencil { subject, weights } => {
+            cache.prefetch(subject);
+            over_valences(subject, |subject, n| {
+                let spec = cache.spectrum(subject, n)?;
+                let env = env_for(subject, n)?;
+                let l = limit_stencil(&spec)?;
+                let mut worst = (0.0f64, String::new());
+                for (k, lab) in spec.labels.iter().enumerate() {
+                    // a whole label name (`edge[r1,s2,0]`) before its kind and ring
+                    let want = match weights.get(&lab.name).or_else(|| weights.get(&selector(lab.kind, lab.ring))) {
+                        Some(e) => eval(e, &env)?.re,
+                        None => 0.0,
+                    };
+                    let d = (l[k] - want).abs();
+                    if d > worst.0 {
+                        worst = (d, format!("{}: computed {}, stated {}", lab.name, fmt_f(l[k]), fmt_f(want)));
                     }
                 }
-            }
-            let ok = t.len() == 2 && t.iter().all(|v| in_span(&basis, v)) && basis.iter().all(|v| in_span(&t, v));
-            Ok((
-                ok,
-                "span of the stated cos/sin stencils".into(),
-                format!("{} tangent stencils, {}", t.len(), if ok { "same span" } else { "different span" }),
-            ))
-        }),
+                if let Some(key) =
+                    weights.keys().find(|k| k.contains('[') && !spec.labels.iter().any(|l| &l.name == *k))
+                {
+                    return Err(Error::Claim(format!("'{key}' names no vertex of the neighbourhood at n = {n}")));
+                }
+                let stated = weights.iter().map(|(k, v)| format!("{k} = {v}")).collect::<Vec<_>>().join(", ");
+                let ok = worst.0 < 1e-9;
+                Ok((ok, stated, if ok { "every weight as stated".into() } else { worst.1 }))
+            })
+        }
+        Check::TangentStencils { subject, cos, sin } => {
+            cache.prefetch(subject);
+            over_valences(subject, |subject, n| {
+                let spec = cache.spectrum(subject, n)?;
+                let t = tangent_stencils(&spec)?;
+                let mut basis = vec![vec![0.0; spec.labels.len()]; 2];
+                for (k, lab) in spec.labels.iter().enumerate() {
+                    let mut env = env_for(subject, n)?;
+                    env.insert("s".into(), ParamValue::from_ratio(lab.sector as i64, 1));
+                    for (b, map) in [cos, sin].iter().enumerate() {
+                        if let Some(e) = map.get(&selector(lab.kind, lab.ring)) {
+                            basis[b][k] = eval(e, &env)?.re;
+                        }
+                    }
+                }
+                let ok = t.len() == 2 && t.iter().all(|v| in_span(&basis, v)) && basis.iter().all(|v| in_span(&t, v));
+                Ok((
+                    ok,
+                    "span of the stated cos/sin stencils".into(),
+                    format!("{} tangent stencils, {}", t.len(), if ok { "same span" } else { "different span" }),
+                ))
+            })
+        }
         Check::Identity { lhs, rhs, vars, valences } => {
             let (l, r) = (Expr::parse(lhs)?, Expr::parse(rhs)?);
             let Some(valences) = valences else {

@@ -217,11 +217,15 @@ pub fn run(
     let mut computed_all = Vec::new();
     let mut details = Vec::new();
     let mut refuted: Option<String> = None;
-    for (n, subject) in &configurations {
+    // the analyses side by side (each reads only its configuration); the
+    // verdict is drawn from them in order, as from a sequential run: the
+    // first configuration that fails to compute or to decide ends it
+    let analyses = super::schedule::each_configuration(&configurations, |s, n| compute(s, n, levels));
+    for ((n, subject), k) in configurations.iter().zip(analyses) {
         let (n, subject) = (*n, subject);
         // "n = 5", or "n = 5 (QQTQT)" for a face sequence
         let label = subject.label(n);
-        let k = compute(subject, n, levels)?;
+        let k = k?;
         let c = &k.c;
         let (ev, agree) = evidence(&k);
         if agree == Some(false) {

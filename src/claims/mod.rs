@@ -12,6 +12,7 @@ pub mod builtin;
 pub mod checks;
 pub mod curvature;
 pub mod invariant_set;
+mod schedule;
 
 use std::collections::BTreeMap;
 

@@ -108,6 +108,10 @@ impl Interval {
     /// The enclosure of an exact rational: the nearest double, widened by
     /// whole ulps until exact comparison confirms lo ≤ q ≤ hi.
     pub fn rational(q: &Rational) -> Interval {
+        Interval::small_rational(q).unwrap_or_else(|| Interval::rational_by_comparison(q))
+    }
+    /// [`Interval::rational`] by exact comparison with big integers.
+    fn rational_by_comparison(q: &Rational) -> Interval {
         let f = ToPrimitive::to_f64(q).unwrap_or(f64::NAN);
         if !f.is_finite() {
             return Interval::ENTIRE;
@@ -124,6 +128,31 @@ impl Interval {
             hi = hi.next_up();
         }
         Interval::new(lo, hi)
+    }
+    /// [`Interval::rational`] without big-integer arithmetic, for a fraction
+    /// whose numerator and denominator are exact doubles (|·| ≤ 2^53): the
+    /// scheme rules convert their parameters (TPS's e = 1/3) at every weight,
+    /// and the general route's exact comparisons dominated the certificates.
+    /// It returns the very interval the general route does: there f is the
+    /// nearest double to q (num-rational divides exact doubles here too), the
+    /// point [f, f] when q = f, else [f⁻, f⁺] one ulp either side (q lies
+    /// strictly between them, so each widening loop stops after one step).
+    /// q = f is decided exactly: the remainder n − f·d of a correctly rounded
+    /// quotient is a double, and a fused multiply-add computes it exactly
+    /// (|f| ≥ 2^−53 here, far from underflow).
+    fn small_rational(q: &Rational) -> Option<Interval> {
+        const EXACT: i64 = 1 << 53;
+        let (n, d) = (q.numer().to_i64()?, q.denom().to_i64()?);
+        if n.abs() > EXACT || d.abs() > EXACT || d == 0 {
+            return None;
+        }
+        if n == 0 {
+            return Some(Interval::point(0.0));
+        }
+        let (n, d) = (n as f64, d as f64);
+        let f = n / d;
+        let remainder = (-f).mul_add(d, n);
+        Some(if remainder == 0.0 { Interval::point(f) } else { Interval::new(f.next_down(), f.next_up()) })
     }
     /// p / q for machine integers (point interval when the quotient is a double).
     pub fn ratio(p: i64, q: i64) -> Interval {
@@ -295,6 +324,29 @@ pub fn cos_sin_2pi(k: i64, n: i64) -> (Interval, Interval) {
     let k = k.rem_euclid(n);
     let g = gcd(k, n).max(1);
     let (k, n) = (k / g, n / g);
+    // the rules ask for the same few angles at every weight (unified sqrt(3)
+    // evaluates cos(2π/n) per slot): each thread keeps the enclosures it made
+    thread_local! {
+        static MADE: std::cell::RefCell<std::collections::HashMap<(i64, i64), (Interval, Interval)>> =
+            std::cell::RefCell::new(std::collections::HashMap::new());
+    }
+    if let Some(known) = MADE.with(|m| m.borrow().get(&(k, n)).copied()) {
+        return known;
+    }
+    let made = reduced_cos_sin_2pi(k, n);
+    MADE.with(|m| {
+        let mut m = m.borrow_mut();
+        // a bound on the memory, never reached by the rules' few angles
+        if m.len() >= 1 << 16 {
+            m.clear();
+        }
+        m.insert((k, n), made);
+    });
+    made
+}
+
+/// [`cos_sin_2pi`] of k/n in lowest terms, 0 ≤ k < n.
+fn reduced_cos_sin_2pi(k: i64, n: i64) -> (Interval, Interval) {
     // reduce r = k/n ∈ [0, 1) to [0, 1/8], tracking signs and the swap
     let (mut p, mut q) = (k as i128, n as i128);
     let (mut cos_sign, mut sin_sign, mut swap) = (1.0, 1.0, false);
@@ -399,6 +451,22 @@ mod tests {
 
     fn q(p: i64, r: i64) -> Rational {
         Rational::new(BigInt::from(p), BigInt::from(r))
+    }
+
+    #[test]
+    fn small_fractions_get_the_enclosure_of_the_exact_comparison() {
+        let mut fractions = vec![(1i64 << 53, 3i64), (-(1i64 << 53), (1i64 << 53) - 1), (1, 1i64 << 52)];
+        for p in -40..=40 {
+            for r in 1..=40 {
+                fractions.push((p, r));
+                fractions.push((p * 1_000_003, r * 999_983));
+            }
+        }
+        for (p, r) in fractions {
+            let x = q(p, r);
+            let small = Interval::small_rational(&x).expect("machine-sized fraction");
+            assert_eq!(small, Interval::rational_by_comparison(&x), "{p}/{r}");
+        }
     }
 
     #[test]

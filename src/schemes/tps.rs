@@ -41,9 +41,17 @@ use crate::numeric::{Inexact, Weight};
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
 use crate::sdc::{Origin, RuleResult};
+use std::any::{Any, TypeId};
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex};
 
 pub struct Tps {
     params: Params,
+    /// the 1-D weights in each weight type asked for, made once: every
+    /// weight of the rules needs them, and converting e and forming them
+    /// anew at each weight, in exact arithmetic, was most of the cost of the
+    /// exact stencils the characteristic-map certificate checks
+    one_d_made: Mutex<HashMap<TypeId, Arc<dyn Any + Send + Sync>>>,
 }
 
 const INFO: SchemeInfo = SchemeInfo {
@@ -69,7 +77,7 @@ pub fn entry() -> SchemeEntry {
         name: INFO.name,
         description: INFO.description,
         params: || vec![E],
-        build: |params| Box::new(Tps { params }),
+        build: |params| Box::new(Tps { params, one_d_made: Mutex::new(HashMap::new()) }),
     }
 }
 
@@ -103,8 +111,15 @@ impl<W: Weight> OneD<W> {
 }
 
 impl Tps {
-    fn one_d<W: Weight>(&self) -> Result<OneD<W>, Inexact> {
-        Ok(OneD::new(W::param(self.params.of(&E).expect("e has a default"))?))
+    fn one_d<W: Weight>(&self) -> Result<Arc<OneD<W>>, Inexact> {
+        let made = |m: &Arc<dyn Any + Send + Sync>| m.clone().downcast::<Result<Arc<OneD<W>>, Inexact>>().ok();
+        let key = TypeId::of::<W>();
+        if let Some(known) = self.one_d_made.lock().unwrap_or_else(|e| e.into_inner()).get(&key).and_then(made) {
+            return known.as_ref().clone();
+        }
+        let one_d = W::param(self.params.of(&E).expect("e has a default")).map(|e| Arc::new(OneD::new(e)));
+        self.one_d_made.lock().unwrap_or_else(|e| e.into_inner()).insert(key, Arc::new(one_d.clone()));
+        one_d
     }
 
     /// (α1, α2) of eq. (18) at valence n.
@@ -113,7 +128,7 @@ impl Tps {
         if n == 4 {
             // the tensor-product vertex rule: v0² q + v0 v1 Σ edge + v1² Σ diagonal
             let four = W::int(4);
-            return Ok((four.clone() * w.v0.clone() * w.v1.clone(), four * w.v1.clone() * w.v1));
+            return Ok((four.clone() * w.v0.clone() * w.v1.clone(), four * w.v1.clone() * w.v1.clone()));
         }
         let (a1, a2): (W, W) = (alpha1(n), alpha1::<W>(n) / W::int(7));
         // TPS's left eigenvector (1, l_a, l_b) of block 0 for eigenvalue 1
@@ -152,14 +167,14 @@ impl<W: Weight> Mask<W> for Tps {
         let w = self.one_d::<W>()?;
         Ok(match (rule, slot.family) {
             // the corner point near c_0 of a quad: the tensor product of the 1-D rule
-            ("corner", "near") => w.near.clone() * w.near,
-            ("corner", "side") => w.near * w.far,
-            ("corner", "far") => w.far.clone() * w.far,
+            ("corner", "near") => w.near.clone() * w.near.clone(),
+            ("corner", "side") => w.near.clone() * w.far.clone(),
+            ("corner", "far") => w.far.clone() * w.far.clone(),
             // the edge point near a on edge a-b, and the quads' other corners
-            ("edge", "near") => w.near * w.v0,
-            ("edge", "far") => w.far * w.v0,
-            ("edge", "near-side") => w.near * w.v1,
-            ("edge", "far-side") => w.far * w.v1,
+            ("edge", "near") => w.near.clone() * w.v0.clone(),
+            ("edge", "far") => w.far.clone() * w.v0.clone(),
+            ("edge", "near-side") => w.near.clone() * w.v1.clone(),
+            ("edge", "far-side") => w.far.clone() * w.v1.clone(),
             // the vertex point (valence n) with the weights α1, α2 of `alphas`
             ("vertex", family) => {
                 let n = slot.n as i64;
