@@ -215,8 +215,9 @@ fn spectral_c1_and_characteristic_map() {
 fn certified_characteristic_map() {
     // Catmull–Clark is C¹ at every valence (Peters & Reif 1998): proved;
     // schemes/catmull-clark-folded-ring.toml folds by design (its comment
-    // derives the darts): disproved; sqrt(3)'s regular rules are not a box
-    // spline's: no proof either way
+    // derives the darts): disproved; Kobbelt's sqrt(3) is C¹ (Kobbelt 2000)
+    // and proved by lemma C9 at valence 5; at valence 3 its windows leave the
+    // net (README): no proof either way
     let cc = "check = \"characteristic-map\"\nscheme = \"catmull-clark\"\nvalences = [3, 5]\ncertified = true";
     holds(cc);
     refuted(&format!("{cc}\nexpect = false"), "injectivity PROVED");
@@ -226,7 +227,8 @@ fn certified_characteristic_map() {
     );
     refuted(&folded, "regularity DISPROVED");
     holds(&format!("{folded}\nexpect = false"));
-    let o = run("check = \"characteristic-map\"\nscheme = \"sqrt3\"\nvalences = [5]\ncertified = true");
+    holds("check = \"characteristic-map\"\nscheme = \"sqrt3\"\nvalences = [5]\ncertified = true");
+    let o = run("check = \"characteristic-map\"\nscheme = \"sqrt3\"\nvalences = [3]\ncertified = true");
     assert_eq!(o.verdict, Verdict::Inconclusive, "{} / {}", o.computed, o.detail);
 }
 
