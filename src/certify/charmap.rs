@@ -753,7 +753,11 @@ impl Window {
                 }
             }
         }
-        let points = coords.keys().map(|&v| p(v)).collect::<Result<Vec<_>, String>>()?;
+        // in vertex order: the half-plane direction sums these points'
+        // midpoints, and a hash order would change its last bits run to run
+        let mut ids: Vec<usize> = coords.keys().copied().collect();
+        ids.sort_unstable();
+        let points = ids.iter().map(|&v| p(v)).collect::<Result<Vec<_>, String>>()?;
         Ok(Window { face: f, faces, along_u, along_v, points, u_pairs, v_pairs, ..Window::default() })
     }
 
