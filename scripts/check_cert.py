@@ -44,6 +44,28 @@ definition of S, and everything else is recomputed here.
   the stencils being the scheme's rules, the box-spline Jacobian and hull
   bounds over a window, the covering of the neighbourhood, the windows'
   lattice layout and the chain (listed in the document's `trusted`).
+- Lemma C9 (regular part `difference-scheme`, DifferenceLattice), from the
+  document's exact mask, windows and second-difference bases alone:
+  re-derived exactly (Fractions, integers) — every mask class an affine
+  rule (weights sum to 1, Σ w·δ = 0), the windows hold their corners and
+  are closed (each child's window computed from its parent's; the D²
+  children of each type found here), the basis rows vanish on affine data
+  and are |W| − 3 independent ones; S_c from the mask, M_c from
+  Δ2_child·S_c = M_c·Δ2_parent (solved by this checker's own Gauss–Jordan
+  left inverse and checked on every column), K_edge and K_pos (max ‖κ‖₁ of
+  D·edge(child) − edge(parent) and of a child's corner minus the parent's
+  interpolant), the word norms P_j = max D^j‖M_w‖∞ over all type-consistent
+  words of j ≤ L children (exact integer products, L the document's word,
+  P_L < 1 required), and the factors ε/N = K_edge·Σ_{j<L}P_j/(1 − P_L) and
+  δ/N = K_pos·Σ_{j<L}P_j D^-j/(1 − P_L D^-L). Rigorously, per face (balls
+  above): N(p) from the window's values, det(u, v) ± (ε(|u| + |v|) + ε²),
+  refined with the S_c on the face's own window up to the document's depth
+  where its sign is undecided (a face's Jacobian lies in D² times the hull
+  of its children's), and for the winding the face's corners with radius
+  δ (d·p − δ|d| > 0). The document's k_edge, k_pos, word_norms and
+  constants are only reported, never used. Trusted in addition: the rules
+  over the windows being the exported mask, and each face's `window`
+  layout (W_up on the net, the face's corners at (0,0), (1,0), (0,1)).
 """
 
 import json
@@ -1400,10 +1422,13 @@ class Checker:
         self.ok(f"net: {len(pts) - len(x0)} refined point(s) from the {len(x0)} analysis points by exact stencils "
                 f"({levels} analysis steps), in interval arithmetic")
         self.regular_part = part.get("regular_part")
+        self.lattice = None
         if self.regular_part == "difference-scheme":
-            # lemma C9's lattice constants are not re-derived here: such a
-            # part is never accepted (subdlab does not write one)
-            reject("regular part 'difference-scheme' (lemma C9): this checker does not re-derive its bounds")
+            # lemma C9: the lattice constants re-derived from the document's
+            # mask, windows and bases (DifferenceLattice)
+            self.lattice = DifferenceLattice(get(part, "difference", what), self.lines)
+        elif part.get("difference") is not None:
+            raise Malformed(f"charmap: lemma C9 data, but the regular part is {self.regular_part!r}")
         sign = self.check_faces(as_list(get(part, "faces", what), "charmap faces"), pts, verdicts["regularity"])
         winding = get(part, "winding", what)
         number = None
@@ -1542,6 +1567,11 @@ class Checker:
         edge vectors; returns the common sign (+1, −1) or None."""
         count = {"+": 0, "-": 0, "?": 0}
         self.windows = []
+        # per window, the radius (scale 2^-P) by which its hull is enlarged:
+        # 0 but for lemma C9's windows (the face's corners within δ)
+        self.hull_radius = []
+        lattice = self.lattice
+        refined = 0
         worst = None
         for f, face in enumerate(faces):
             claim = get(face, "sign", "face")
@@ -1561,20 +1591,39 @@ class Checker:
                 non_box_window(f, face, us, vs)
             elif "layout" in face:
                 raise Malformed(f"face {f}: a lattice layout, but the regular part is {self.regular_part!r}")
-            self.windows.append({p for e in us + vs for p in e[2:]})
+            if lattice is None and "window" in face:
+                raise Malformed(f"face {f}: a lemma C9 window, but the regular part is {self.regular_part!r}")
+            if lattice is not None:
+                # lemma C9: f(T) within δ = δ-factor·N(p) of the face's
+                # control triangle (its three corners)
+                vals, norm, corners = lattice.face(f, face, pts, us, vs)
+                self.windows.append(set(corners))
+                self.hull_radius.append(lattice.scaled_up(lattice.position_factor, norm))
+            else:
+                self.windows.append({p for e in us + vs for p in e[2:]})
+                self.hull_radius.append(0)
             count[claim] += 1
             if claim == "?":
                 continue
-            lo, hi = None, None
-            for ux, uy, _, _ in us:
-                for vx, vy, _, _ in vs:
-                    dm, dr = ball_sub(ball_mul(ux, vy, P), ball_mul(uy, vx, P))
-                    lo = dm - dr if lo is None else min(lo, dm - dr)
-                    hi = dm + dr if hi is None else max(hi, dm + dr)
+            if lattice is not None:
+                # det(∂₁f, ∂₂f) over the face within ε(|u| + |v|) + ε² of
+                # det(u, v), ε = ε-factor·N(p), refined where undecided
+                lo, hi = lattice.jacobian(0, vals, 0)
+                if not (lo > 0 or hi < 0) and lattice.depth:
+                    lo, hi = lattice.jacobian(0, vals, lattice.depth)
+                    refined += lo > 0 or hi < 0
+            else:
+                lo, hi = None, None
+                for ux, uy, _, _ in us:
+                    for vx, vy, _, _ in vs:
+                        dm, dr = ball_sub(ball_mul(ux, vy, P), ball_mul(uy, vx, P))
+                        lo = dm - dr if lo is None else min(lo, dm - dr)
+                        hi = dm + dr if hi is None else max(hi, dm + dr)
+            bound = "det(u_i, v_j)" if lattice is None else "its lemma C9 enclosure"
             if claim == "+" and not lo > 0:
-                reject(f"face {f}: the Jacobian is claimed positive, but det(u_i, v_j) may be as low as {lo / UNIT:.3e}")
+                reject(f"face {f}: the Jacobian is claimed positive, but {bound} may be as low as {lo / UNIT:.3e}")
             if claim == "-" and not hi < 0:
-                reject(f"face {f}: the Jacobian is claimed negative, but det(u_i, v_j) may be as high as {hi / UNIT:.3e}")
+                reject(f"face {f}: the Jacobian is claimed negative, but {bound} may be as high as {hi / UNIT:.3e}")
             margin = lo if claim == "+" else -hi
             worst = margin if worst is None else min(worst, margin)
         n = len(faces)
@@ -1582,6 +1631,11 @@ class Checker:
             self.ok(f"non-box S_3^1 windows: on each of the {n} faces the {len(NON_BOX_DIFFERENCES[0])} u- and "
                     f"{len(NON_BOX_DIFFERENCES[1])} v-differences and the {len(NON_BOX_HULL)} hull points re-derived "
                     "from the generators' supports are among the window's edges")
+        if lattice is not None:
+            self.ok(f"lemma C9 faces: each window is W_up at its layout's positions with the face's own u- and "
+                    f"v-edge; Jacobian within ε(|u| + |v|) + ε² of det(u, v), ε = {float(lattice.edge_factor):.6g}·N(p) "
+                    f"(N from the face's values), {refined} face(s) decided only by refining the window up to "
+                    f"{lattice.depth} level(s) with the S_c")
         self.ok(f"Jacobian: {n} ring faces, {count['+']} proved > 0, {count['-']} proved < 0, {count['?']} not claimed "
                 f"(least proved margin {float(Fraction(worst or 0, UNIT)):.3e})")
         if regularity == "PROVED":
@@ -1609,9 +1663,14 @@ class Checker:
         wp = [tuple(Fraction(as_float(c, "polygon point")) for c in as_list(x, "polygon point", 2)) for x in poly]
         for i in range(k):
             dx, dy = ball_of_float(d[i][0]), ball_of_float(d[i][1])
+            # a hull enlarged by a radius ρ (lemma C9) lies in the half-plane
+            # when every corner p has d·p − ρ|d| > 0
+            rho = self.hull_radius[wins[i]]
+            length = ceil_sqrt((abs(dx[0]) + dx[1]) ** 2 + (abs(dy[0]) + dy[1]) ** 2)
+            slack = -((-rho * length) >> P)
             for p in sorted(self.windows[wins[i]]):
                 m, r = ball_add(ball_mul(dx, pts[p][0], P), ball_mul(dy, pts[p][1], P))
-                if not m - r > 0:
+                if not m - r - slack > 0:
                     reject(f"winding: a point of window {wins[i]} is not proved in its half-plane d_{i}·p > 0")
             v = as_int(verts[i], "chain vertex", len(pts))
             if v not in self.windows[wins[i]] or v not in self.windows[wins[(i + 1) % k]]:
@@ -1749,6 +1808,435 @@ def non_box_window(f, face, us, vs):
     for h in NON_BOX_HULL:
         if at.get(h) not in ends:
             reject(f"face {f}: the hull needs the control point at {h}, not among the window's points")
+
+
+# The difference-scheme bounds (subdlab's lemma C9), re-derived from the
+# document's regular mask, windows and second-difference bases alone: the
+# children of each lattice triangle, the matrices S_c and M_c, the constants
+# K_edge and K_pos (exact), the word norms P_j (exact, by integer products)
+# and the factors of ε and δ (exact fractions). The document's own constants
+# are only reported.
+
+# own corners of the up and the down lattice triangle, counter-clockwise
+C9_CORNERS = (((0, 0), (1, 0), (0, 1)), ((1, 0), (1, 1), (0, 1)))
+# each type's own edges along e1 and e2, as (from, to)
+C9_EDGES = ((((0, 0), (1, 0)), ((0, 0), (0, 1))), (((0, 1), (1, 1)), ((1, 0), (1, 1))))
+C9_TYPES = ("up", "down")
+# bounds of what this checker re-derives (the work grows with the window's
+# size, D² children per level and (D²)^word words)
+C9_MAX_WINDOW = 64
+C9_MAX_WORD = 3
+C9_MAX_DEPTH = 4
+C9_MAX_DILATION = 4
+
+
+def _lattice_point(p, what):
+    p = as_list(p, what, 2)
+    for c in p:
+        if isinstance(c, bool) or not isinstance(c, int):
+            raise Malformed(f"{what}: {c!r} is not an integer")
+    return (p[0], p[1])
+
+
+def _c9_children(t, d):
+    """The lattice triangles of the 1/d lattice inside the triangle of type t
+    at the origin (d·corners, 1/d units): (offset, type). Each has area 1/2,
+    the parent d²/2, and lattice triangles do not overlap: d² of them tile it."""
+
+    def inside(x, y):
+        if t == 0:
+            return x >= 0 and y >= 0 and x + y <= d
+        return x <= d and y <= d and x + y >= d
+
+    out = []
+    for ox in range(-1, d + 1):
+        for oy in range(-1, d + 1):
+            for t2 in (0, 1):
+                if all(inside(ox + cx, oy + cy) for cx, cy in C9_CORNERS[t2]):
+                    out.append(((ox, oy), t2))
+    if len(out) != d * d:
+        raise AssertionError("the children do not tile the triangle")
+    return out
+
+
+def _c9_barycentric(t, y, d):
+    """Weights of the point y/d on the corners of the triangle of type t:
+    solved from Σ w = 1, Σ w·corner = y/d (exact, Cramer's rule)."""
+    (ax, ay), (bx, by), (cx, cy) = C9_CORNERS[t]
+    px, py = Fraction(y[0], d), Fraction(y[1], d)
+    det = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+    wb = ((px - ax) * (cy - ay) - (py - ay) * (cx - ax)) / det
+    wc = ((bx - ax) * (py - ay) - (by - ay) * (px - ax)) / det
+    return {C9_CORNERS[t][0]: 1 - wb - wc, C9_CORNERS[t][1]: wb, C9_CORNERS[t][2]: wc}
+
+
+class DifferenceLattice:
+    """Lemma C9's lattice half, recomputed: raises Rejected when an
+    inequality or identity fails, Malformed when the data cannot be read."""
+
+    def __init__(self, diff, lines):
+        self.lines = lines
+        what = "charmap difference"
+        d = as_int(get(diff, "dilation", what), "dilation")
+        if not 2 <= d <= C9_MAX_DILATION:
+            reject(f"lemma C9: dilation {d} outside 2..{C9_MAX_DILATION}")
+        self.d = d
+        self.steps = as_int(get(diff, "steps", what), "steps")
+        self.read_mask(as_list(get(diff, "mask", what), "mask"))
+        wins = get(diff, "windows", what)
+        self.windows = []
+        for name in C9_TYPES:
+            w = [_lattice_point(p, f"window {name}") for p in as_list(get(wins, name, "windows"), f"window {name}")]
+            if len(set(w)) != len(w):
+                reject(f"lemma C9: the {name} window lists a point twice")
+            if len(w) > C9_MAX_WINDOW:
+                reject(f"lemma C9: the {name} window has {len(w)} points, beyond this checker's {C9_MAX_WINDOW}")
+            self.windows.append(w)
+        self.index = [{p: i for i, p in enumerate(w)} for w in self.windows]
+        self.check_windows()
+        basis = get(diff, "basis", what)
+        self.basis = [self.read_basis(t, as_list(get(basis, name, "basis"), f"basis {name}"))
+                      for t, name in enumerate(C9_TYPES)]
+        self.solvers = [self.left_inverse(t) for t in (0, 1)]
+        self.ok(f"lemma C9 second differences: {len(self.basis[0])} (up) and {len(self.basis[1])} (down) rows, "
+                "each vanishing on affine data, independent (exact rank), |W| − 3 of them: they span every "
+                "functional of a window that vanishes on affine data")
+        self.derive_matrices()
+        # the per-face forms: sparse integer basis rows, own edges by window
+        # index, and the S_c over one common denominator
+        self.sparse_basis = [[[(i, c, abs(c)) for i, c in enumerate(row) if c] for row in self.basis[t]]
+                             for t in (0, 1)]
+        self.edge_index = [[(self.index[t][a], self.index[t][b]) for a, b in C9_EDGES[t]] for t in (0, 1)]
+        den = 1
+        for kids in self.children:
+            for _, _, rows in kids:
+                for row in rows:
+                    for w in row.values():
+                        den = math.lcm(den, w.denominator)
+        self.s_den = den
+        self.s_int = [[(t2, [[(i, int(w * den), abs(int(w * den))) for i, w in row.items()] for row in rows])
+                       for _, t2, rows in kids] for kids in self.children]
+        self.word = as_int(get(diff, "word", what), "word")
+        if not 1 <= self.word <= C9_MAX_WORD:
+            reject(f"lemma C9: word length {self.word} outside 1..{C9_MAX_WORD}")
+        depth = as_int(get(diff, "depth", what), "depth")
+        if depth > C9_MAX_DEPTH:
+            reject(f"lemma C9: refinement depth {depth} beyond this checker's {C9_MAX_DEPTH}")
+        self.depth = depth
+        self.word_norms()
+        self.factors(diff)
+
+    def ok(self, msg):
+        self.lines.append(f"  ok  {msg}")
+
+    def read_mask(self, raw):
+        d = self.d
+        self.mask = {}
+        for entry in raw:
+            cx, cy, terms = as_list(entry, "mask class", 3)
+            c = _lattice_point([cx, cy], "mask class")
+            if not (0 <= c[0] < d and 0 <= c[1] < d):
+                reject(f"lemma C9: mask class {c} is not a residue modulo {d}")
+            if c in self.mask:
+                reject(f"lemma C9: mask class {c} given twice")
+            weights = {}
+            for term in as_list(terms, f"mask class {c}"):
+                dx, dy, w = as_list(term, "mask term", 3)
+                delta = _lattice_point([dx, dy], "mask offset")
+                if (delta[0] + c[0]) % d or (delta[1] + c[1]) % d:
+                    reject(f"lemma C9: mask class {c}: offset {delta} does not reach a lattice point")
+                if delta in weights:
+                    reject(f"lemma C9: mask class {c}: offset {delta} given twice")
+                w = as_ratio(w, "mask weight")
+                if w:
+                    weights[delta] = w
+            # affine combinations reproducing affine data: Σ w = 1 and
+            # Σ w·(D·x − y) = 0, i.e. Σ w·x = y/D
+            if sum(weights.values(), Fraction(0)) != 1:
+                reject(f"lemma C9: mask class {c}: the weights do not sum to 1")
+            for k in (0, 1):
+                if sum((w * delta[k] for delta, w in weights.items()), Fraction(0)) != 0:
+                    reject(f"lemma C9: mask class {c}: the rule does not reproduce linear data (Σ w·δ ≠ 0)")
+            self.mask[c] = weights
+        if len(self.mask) != d * d:
+            reject(f"lemma C9: the mask has {len(self.mask)} classes, expected {d * d}")
+
+    def weights(self, y):
+        """The new point at y (1/D units) over old lattice points: {x: w}."""
+        d = self.d
+        out = {}
+        for (dx, dy), w in self.mask[(y[0] % d, y[1] % d)].items():
+            out[((y[0] + dx) // d, (y[1] + dy) // d)] = w
+        return out
+
+    def check_windows(self):
+        d = self.d
+        self.children = []
+        for t in (0, 1):
+            for c in C9_CORNERS[t]:
+                if c not in self.index[t]:
+                    reject(f"lemma C9: the {C9_TYPES[t]} window lacks its corner {c}")
+        reach = 0
+        for t in (0, 1):
+            kids = []
+            for o, t2 in _c9_children(t, d):
+                # S_c: the child's window points over the parent's window
+                rows = []
+                for w in self.windows[t2]:
+                    row = {}
+                    for x, wt in self.weights((o[0] + w[0], o[1] + w[1])).items():
+                        i = self.index[t].get(x)
+                        if i is None:
+                            reject(f"lemma C9: the {C9_TYPES[t]} window is not closed: its child at {o}/{d} needs "
+                                   f"the point {x}")
+                        row[i] = wt
+                        reach += 1
+                    rows.append(row)
+                kids.append((o, t2, rows))
+            self.children.append(kids)
+        self.ok(f"lemma C9 mask: {d * d} classes of affine rules (weights sum to 1, Σ w·δ = 0, exactly), dilation {d} "
+                f"(one analysis step of {self.steps} refinement(s), as the document says); windows of {len(self.windows[0])} (up) and {len(self.windows[1])} (down) points hold their corners "
+                f"and are closed: every point of each of the {d * d} children's windows is computed from the parent's "
+                f"window ({reach} weights)")
+
+    def read_basis(self, t, raw):
+        n = len(self.windows[t])
+        rows = []
+        for r, row in enumerate(raw):
+            dense = [0] * n
+            for term in as_list(row, f"basis row {r}"):
+                x, y, c = as_list(term, "basis term", 3)
+                p = _lattice_point([x, y], "basis point")
+                if isinstance(c, bool) or not isinstance(c, int):
+                    raise Malformed(f"basis coefficient {c!r} is not an integer")
+                i = self.index[t].get(p)
+                if i is None:
+                    reject(f"lemma C9: a {C9_TYPES[t]} basis row uses {p}, not a window point")
+                dense[i] += c
+            w = self.windows[t]
+            if sum(dense) or sum(c * p[0] for c, p in zip(dense, w)) or sum(c * p[1] for c, p in zip(dense, w)):
+                reject(f"lemma C9: {C9_TYPES[t]} basis row {r} does not vanish on affine data")
+            rows.append(dense)
+        if len(rows) != n - 3:
+            reject(f"lemma C9: {len(rows)} {C9_TYPES[t]} basis rows, the window needs |W| − 3 = {n - 3}")
+        return rows
+
+    def left_inverse(self, t):
+        """E with E·Rᵀ = [I_k; 0] (Gauss–Jordan on [Rᵀ | I], exact): then
+        κᵀR = g has the solution κ = (E g)[:k] exactly when (E g)[k:] = 0."""
+        rows = self.basis[t]
+        k, n = len(rows), len(self.windows[t])
+        a = [[Fraction(rows[j][i]) for j in range(k)] + [Fraction(int(i == c)) for c in range(n)] for i in range(n)]
+        for c in range(k):
+            piv = next((r for r in range(c, n) if a[r][c] != 0), None)
+            if piv is None:
+                reject(f"lemma C9: the {C9_TYPES[t]} basis rows are not independent")
+            a[c], a[piv] = a[piv], a[c]
+            inv = 1 / a[c][c]
+            a[c] = [x * inv for x in a[c]]
+            for r in range(n):
+                if r != c and a[r][c] != 0:
+                    f = a[r][c]
+                    a[r] = [x - f * y for x, y in zip(a[r], a[c])]
+        return [row[k:] for row in a], k
+
+    def coordinates(self, t, g, what):
+        """κ with κᵀR_t = g (exact), for a functional g on W_t vanishing on
+        affine data."""
+        e, k = self.solvers[t]
+        nz = [(i, x) for i, x in enumerate(g) if x]
+        y = [sum((row[i] * x for i, x in nz), Fraction(0)) for row in e]
+        if any(y[k:]):
+            reject(f"lemma C9: {what} is not a combination of second differences (the mask does not reproduce "
+                   "affine data)")
+        return y[:k]
+
+    def derive_matrices(self):
+        d = self.d
+        k_edge, k_pos = Fraction(0), Fraction(0)
+        self.m = [[], []]
+        for t in (0, 1):
+            n = len(self.windows[t])
+            for o, t2, s in self.children[t]:
+                def combine(terms):
+                    g = [Fraction(0)] * n
+                    for p, c in terms:
+                        for i, w in s[self.index[t2][p]].items():
+                            g[i] += c * w
+                    return g
+
+                m = []
+                for r, row in enumerate(self.basis[t2]):
+                    terms = [(self.windows[t2][i], c) for i, c in enumerate(row) if c]
+                    m.append(self.coordinates(t, combine(terms), f"a second difference of the child at {o}/{d}"))
+                self.m[t].append((t2, m))
+                for e in (0, 1):
+                    (ca, cb), (pa, pb) = C9_EDGES[t2][e], C9_EDGES[t][e]
+                    g = combine([(cb, d), (ca, -d)])
+                    g[self.index[t][pb]] -= 1
+                    g[self.index[t][pa]] += 1
+                    kappa = self.coordinates(t, g, f"D·edge − edge of the child at {o}/{d}")
+                    k_edge = max(k_edge, sum(map(abs, kappa)))
+                for c in C9_CORNERS[t2]:
+                    g = combine([(c, 1)])
+                    for corner, w in _c9_barycentric(t, (o[0] + c[0], o[1] + c[1]), d).items():
+                        g[self.index[t][corner]] -= w
+                    kappa = self.coordinates(t, g, f"a corner of the child at {o}/{d} off the parent's interpolant")
+                    k_pos = max(k_pos, sum(map(abs, kappa)))
+        self.k_edge, self.k_pos = k_edge, k_pos
+        sizes = {(len(m), len(m[0])) for kids in self.m for _, m in kids}
+        self.ok(f"lemma C9 matrices: per type the {d * d} children's S_c from the mask and M_c with "
+                f"Δ2_child·S_c = M_c·Δ2_parent solved exactly and checked on every column ({len(self.m[0]) + len(self.m[1])} "
+                f"matrices, {' '.join(f'{a}×{b}' for a, b in sorted(sizes))}); K_edge = max‖κ‖₁ = {k_edge} "
+                f"(≈ {float(k_edge):.6g}), K_pos = {k_pos} (≈ {float(k_pos):.6g}), exact")
+
+    def word_norms(self):
+        """P_j = max over type-consistent words of j children of D^j‖M_w‖∞,
+        exactly: the M_c times the common denominator are integer matrices,
+        their products exact; words share their prefixes."""
+        d, word = self.d, self.word
+        den = 1
+        for kids in self.m:
+            for _, m in kids:
+                for row in m:
+                    for x in row:
+                        den = math.lcm(den, x.denominator)
+        ints = [[(t2, [[int(x * den) for x in row] for row in m]) for t2, m in kids] for kids in self.m]
+
+        def norm(a):
+            return max(sum(map(abs, row)) for row in a)
+
+        def product(a, b_cols):
+            return [[sum(map(mul, row, col)) for col in b_cols] for row in a]
+
+        norms = [Fraction(1)]
+        # frontier: (type reached, product as columns) — the words of length j
+        frontier = [(t2, list(zip(*a))) for t in (0, 1) for t2, a in ints[t]]
+        worst = max(norm(a) for t in (0, 1) for _, a in ints[t])
+        norms.append(Fraction(d * worst, den))
+        for j in range(2, word + 1):
+            worst, nxt = 0, []
+            last = j == word
+            for t, cols in frontier:
+                for t2, a in ints[t]:
+                    p = product(a, cols)
+                    worst = max(worst, norm(p))
+                    if not last:
+                        nxt.append((t2, list(zip(*p))))
+            norms.append(Fraction(d**j * worst, den**j))
+            frontier = nxt
+        self.p = norms
+        words = sum(2 * (d * d) ** j for j in range(1, word + 1))
+        shown = ", ".join(f"{float(x):.6g}" for x in norms)
+        if not norms[word] < 1:
+            reject(f"lemma C9: the difference scheme is not proved contractive at word length {word}: "
+                   f"P_{word} = {float(norms[word]):.6g} ≥ 1 (P_0..P_{word} = {shown})")
+        self.ok(f"lemma C9 word norms: P_j = max D^j‖M_w‖∞ over all {words} type-consistent words of up to {word} "
+                f"children, exactly (integer products): P_0..P_{word} = {shown}; P_{word} < 1")
+
+    def factors(self, diff):
+        d, word, p = self.d, self.word, self.p
+        q = p[word]
+        self.edge_factor = self.k_edge * sum(p[:word], Fraction(0)) / (1 - q)
+        self.position_factor = (self.k_pos * sum((p[j] / d**j for j in range(word)), Fraction(0))
+                                / (1 - q / d**word))
+        theirs = {k: diff.get(k) for k in ("k_edge", "k_pos", "edge_constant", "position_constant", "word_norms")}
+        self.ok(f"lemma C9 factors (exact, used below): ε ≤ {float(self.edge_factor):.9g}·N(p), "
+                f"δ ≤ {float(self.position_factor):.9g}·N(p); the document's own (reported, not used): "
+                f"k_edge {theirs['k_edge']}, k_pos {theirs['k_pos']}, edge_constant {theirs['edge_constant']}, "
+                f"position_constant {theirs['position_constant']}, word_norms {theirs['word_norms']}")
+
+    # -- per face, in the ball arithmetic of the net (scale 2^-P)
+
+    def seminorm(self, t, vals):
+        """An upper bound (scale 2^-P, integer) of N(p): the largest
+        Euclidean length of the basis rows' combinations of the values
+        (each value a ball pair (xm, xr, ym, yr))."""
+        n = 0
+        for row in self.sparse_basis[t]:
+            xm = xr = ym = yr = 0
+            for i, c, a in row:
+                v = vals[i]
+                xm += c * v[0]
+                xr += a * v[1]
+                ym += c * v[2]
+                yr += a * v[3]
+            n = max(n, ceil_sqrt((abs(xm) + xr) ** 2 + (abs(ym) + yr) ** 2))
+        return n
+
+    def scaled_up(self, factor, n):
+        """⌈factor·n⌉ for a nonnegative Fraction factor: an upper bound."""
+        return -((-factor.numerator * n) // factor.denominator)
+
+    def jacobian(self, t, vals, depth):
+        """An enclosure [lo, hi] (scale 2^-P) of det(∂₁f, ∂₂f) over the
+        triangle of type t with window values vals, in its own parameter;
+        refined by the S_c up to depth levels while its sign is undecided."""
+        eps = self.scaled_up(self.edge_factor, self.seminorm(t, vals))
+        (a0, b0), (a1, b1) = self.edge_index[t]
+        pa, pb, qa, qb = vals[a0], vals[b0], vals[a1], vals[b1]
+        ux, uy = (pb[0] - pa[0], pb[1] + pa[1]), (pb[2] - pa[2], pb[3] + pa[3])
+        vx, vy = (qb[0] - qa[0], qb[1] + qa[1]), (qb[2] - qa[2], qb[3] + qa[3])
+        lu = ceil_sqrt((abs(ux[0]) + ux[1]) ** 2 + (abs(uy[0]) + uy[1]) ** 2)
+        lv = ceil_sqrt((abs(vx[0]) + vx[1]) ** 2 + (abs(vy[0]) + vy[1]) ** 2)
+        pad = -((-(eps * (lu + lv) + eps * eps)) >> P)
+        dm, dr = ball_sub(ball_mul(ux, vy, P), ball_mul(uy, vx, P))
+        lo, hi = dm - dr - pad, dm + dr + pad
+        if lo > 0 or hi < 0 or depth == 0:
+            return lo, hi
+        # the triangle's Jacobian set is the union of its children's, and
+        # in the parent's parameter (D times coarser) a child's is D² times
+        # its own
+        den = self.s_den
+        clo, chi = None, None
+        for t2, s in self.s_int[t]:
+            child = []
+            for row in s:
+                xm = xr = ym = yr = 0
+                for i, w, a in row:
+                    v = vals[i]
+                    xm += w * v[0]
+                    xr += a * v[1]
+                    ym += w * v[2]
+                    yr += a * v[3]
+                # Σ (w/den)·[m ± r] ⊆ [Σ w m ∓ Σ |w| r]/den, rounded outward
+                xq, xrem = divmod(xm, den)
+                yq, yrem = divmod(ym, den)
+                child.append((xq, -(-xr // den) + (1 if xrem else 0), yq, -(-yr // den) + (1 if yrem else 0)))
+            a, b = self.jacobian(t2, child, depth - 1)
+            clo = a if clo is None else min(clo, a)
+            chi = b if chi is None else max(chi, b)
+            if clo <= 0 <= chi:
+                return lo, hi  # both signs possible: undecided, whatever the rest
+        d2 = self.d * self.d
+        lo2, hi2 = max(lo, d2 * clo), min(hi, d2 * chi)
+        if lo2 > hi2:
+            reject("lemma C9: two enclosures of one Jacobian are disjoint (an arithmetic fault)")
+        return lo2, hi2
+
+    def face(self, f, face, pts, us, vs):
+        """A ring face's window (W_up laid out at the positions `window`
+        gives): its values, its u- and v-edge checked to be the face's own,
+        N(p) (upper bound, scale 2^-P). Returns (values, N, corners)."""
+        layout = as_list(get(face, "window", "difference-scheme face"), f"face {f} window")
+        at = {}
+        used = set()
+        for e in layout:
+            i, x, y = as_list(e, "window entry", 3)
+            i = as_int(i, "window point", len(pts))
+            p = _lattice_point([x, y], "window position")
+            if p in at or i in used:
+                reject(f"face {f}: the window places a point twice or two points at one position")
+            at[p] = i
+            used.add(i)
+        if set(at) != set(self.windows[0]):
+            reject(f"face {f}: the window's positions are not the up window W_up")
+        ids = [at[p] for p in self.windows[0]]
+        vals = [(pts[i][0][0], pts[i][0][1], pts[i][1][0], pts[i][1][1]) for i in ids]
+        o, a, b = (at[c] for c in C9_CORNERS[0])
+        if [(e[2], e[3]) for e in us] != [(o, a)] or [(e[2], e[3]) for e in vs] != [(o, b)]:
+            reject(f"face {f}: the u- and v-edges are not the window's own edges (0,0)→(1,0) and (0,0)→(0,1)")
+        return vals, self.seminorm(0, vals), (o, a, b)
 
 
 def _add_q(x, y):
