@@ -139,7 +139,11 @@ fn tampered_difference_scheme_parts_are_rejected() {
         // a basis row repeated in place of another: dependent rows
         ("basis-dependent", "b = c['difference']['basis']['up']\nb[1] = b[0]", "not independent"),
         // a basis row that is no second difference
-        ("basis-not-second-difference", "c['difference']['basis']['up'][0][0][2] = 2", "does not vanish on affine data"),
+        (
+            "basis-not-second-difference",
+            "c['difference']['basis']['up'][0][0][2] = 2",
+            "does not vanish on affine data",
+        ),
         // words of one child do not contract (P_1 ≈ 2.57)
         ("word-1", "c['difference']['word'] = 1", "not proved contractive"),
         // no refinement: every face of the valence-4 ring needs its window

@@ -856,7 +856,7 @@ pub fn face_bounds(bound: &LatticeBound, t: usize, values: &[[Interval; 2]]) -> 
 /// The Jacobian over the triangle of type `t` (in its own lattice
 /// parameter), refined up to `depth` more levels where its sign is
 /// undecided: the triangle's Jacobian lies in the hull of its children's
-/// (each in the child's parameter, D² times smaller), intersected with its
+/// (a child's, in its own parameter, times D²), intersected with its
 /// own bound.
 pub fn jacobian(bound: &LatticeBound, t: usize, values: &[[Interval; 2]], depth: usize) -> Interval {
     let (here, _) = face_bounds(bound, t, values);
@@ -874,7 +874,7 @@ pub fn jacobian(bound: &LatticeBound, t: usize, values: &[[Interval; 2]], depth:
                 })
             })
             .collect();
-        let j = jacobian(bound, *t2, &child, depth - 1) / scale;
+        let j = jacobian(bound, *t2, &child, depth - 1) * scale;
         // a child of undecided sign leaves the parent undecided: stop early
         if !(j.lo > 0.0 || j.hi < 0.0) {
             return here;
