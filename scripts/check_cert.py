@@ -1711,6 +1711,19 @@ class Checker:
 # to the centre along each axis (the conditions only grow with those
 # distances, so the nearest point of the face decides).
 
+def _combine(row, vals):
+    """Σ c·v over a sparse integer row [(index, c, |c|), ...] of ball pairs
+    (xm, xr, ym, yr): the midpoints combined with c, the radii with |c|."""
+    xm = xr = ym = yr = 0
+    for i, c, a in row:
+        v = vals[i]
+        xm += c * v[0]
+        xr += a * v[1]
+        ym += c * v[2]
+        yr += a * v[3]
+    return xm, xr, ym, yr
+
+
 def _reach(c):
     """The least |x − c| over x in [0, 1] (face units)."""
     return max(Fraction(0), -c, c - 1)
@@ -2154,13 +2167,7 @@ class DifferenceLattice:
         (each value a ball pair (xm, xr, ym, yr))."""
         n = 0
         for row in self.sparse_basis[t]:
-            xm = xr = ym = yr = 0
-            for i, c, a in row:
-                v = vals[i]
-                xm += c * v[0]
-                xr += a * v[1]
-                ym += c * v[2]
-                yr += a * v[3]
+            xm, xr, ym, yr = _combine(row, vals)
             n = max(n, ceil_sqrt((abs(xm) + xr) ** 2 + (abs(ym) + yr) ** 2))
         return n
 
@@ -2192,13 +2199,7 @@ class DifferenceLattice:
         for t2, s in self.s_int[t]:
             child = []
             for row in s:
-                xm = xr = ym = yr = 0
-                for i, w, a in row:
-                    v = vals[i]
-                    xm += w * v[0]
-                    xr += a * v[1]
-                    ym += w * v[2]
-                    yr += a * v[3]
+                xm, xr, ym, yr = _combine(row, vals)
                 # Σ (w/den)·[m ± r] ⊆ [Σ w m ∓ Σ |w| r]/den, rounded outward
                 xq, xrem = divmod(xm, den)
                 yq, yrem = divmod(ym, den)

@@ -51,7 +51,7 @@ use std::sync::{Arc, Mutex, OnceLock};
 use num_traits::{One, Signed, Zero};
 
 use crate::mesh::PolyMesh;
-use crate::numeric::exact::{inverse, pivot_columns};
+use crate::numeric::exact::{inverse, pivot_columns, rank_of};
 use crate::numeric::{Interval, Rational};
 use crate::refine::{connectivity, stencil_at, Origin};
 use crate::sdc::Scheme;
@@ -324,23 +324,16 @@ fn second_difference_basis(window: &[Lattice]) -> Result<Vec<Vec<(Lattice, i64)>
         }
         v
     };
-    // greedy: keep a candidate when it raises the rank
+    // greedy: keep a candidate when it raises the rank of those kept
     let mut chosen: Vec<Vec<(Lattice, i64)>> = Vec::new();
-    let mut reduced: Vec<(usize, Vec<Rational>)> = Vec::new();
+    let mut kept: Vec<Rational> = Vec::new();
     for row in candidates {
-        let mut v = dense(&row);
-        for (pivot, r) in &reduced {
-            if !v[*pivot].is_zero() {
-                let c = &v[*pivot] / &r[*pivot];
-                for j in 0..n {
-                    let t = &c * &r[j];
-                    v[j] -= t;
-                }
-            }
-        }
-        if let Some(pivot) = v.iter().position(|x| !x.is_zero()) {
-            reduced.push((pivot, v));
+        let before = kept.len();
+        kept.extend(dense(&row));
+        if rank_of(chosen.len() + 1, n, kept.clone()) > chosen.len() {
             chosen.push(row);
+        } else {
+            kept.truncate(before);
         }
         if chosen.len() + 3 == n {
             break;
