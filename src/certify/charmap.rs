@@ -51,7 +51,7 @@ use super::spectrum::{certify_analysis, SpectrumCertificate, Verdict};
 use crate::charmap::net::{self, Net};
 use crate::error::Error;
 use crate::mesh::PolyMesh;
-use crate::numeric::{Interval, Rational, Weight};
+use crate::numeric::{Interval, Rational, SmallRational, Weight};
 use crate::refine::{connectivity, stencil_at, Origin};
 use crate::sdc::Scheme;
 use crate::spectrum::Analysis;
@@ -894,7 +894,7 @@ fn check_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[Window]) -> Resu
                 if gf.len() != 4 {
                     return Err("a face rule on triangles is not a box-spline rule this certificate knows".into());
                 }
-                let mask: Mask = gf.iter().map(|&v| (v, Rational::ratio(1, 4))).collect();
+                let mask: Mask = gf.iter().map(|&v| (v, SmallRational::ratio(1, 4))).collect();
                 vec![(RegularPart::BicubicBSpline, mask.clone()), (RegularPart::FourDirectionBoxSpline, mask)]
             }
             Origin::Corner { face: g, corner: k } if faces.contains(&g) => {
@@ -909,7 +909,7 @@ fn check_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[Window]) -> Resu
                 } else {
                     (RegularPart::BiquadraticBSpline, [(0, 9), (1, 3), (2, 1), (3, 3)], 16)
                 };
-                vec![(kind, mask.iter().map(|&(s, w)| (gf[(k + s) % 4], Rational::ratio(w, denominator))).collect())]
+                vec![(kind, mask.iter().map(|&(s, w)| (gf[(k + s) % 4], SmallRational::ratio(w, denominator))).collect())]
             }
             _ => continue,
         };
@@ -933,21 +933,42 @@ fn check_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[Window]) -> Resu
     }
 }
 
-/// A stencil or mask: weight per control point.
-type Mask = HashMap<usize, Rational>;
+/// A stencil or mask: weight per control point, exact in machine integers
+/// (every mask weight is a small fraction; a stencil weight that does not
+/// fit is kept spoiled, and a spoiled weight equals no mask weight).
+type Mask = HashMap<usize, SmallRational>;
 
 /// The scheme's rational stencil at `origin`, repeated points merged and
-/// zero weights dropped.
+/// zero weights dropped. Computed in machine-integer rationals first (the
+/// rule check asks for tens of thousands of stencils per valence, and big
+/// rationals allocate and reduce at every product); a term that left the
+/// machine integers is recomputed in big rationals, so the result is the
+/// exact stencil either way.
 fn exact_stencil(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> Result<Mask, String> {
-    let stencil = stencil_at::<Rational>(scheme, mesh, origin)
-        .map_err(|_| "a rule over the ring has an irrational weight".to_string())?
-        .ok_or("a rule over the ring cannot be evaluated on the net")?;
-    let mut got: Mask = HashMap::new();
-    for (v, w) in stencil.terms {
-        *got.entry(v).or_insert_with(<Rational as Weight>::zero) += w;
+    let irrational = |_| "a rule over the ring has an irrational weight".to_string();
+    let missing = "a rule over the ring cannot be evaluated on the net";
+    let small = stencil_at::<SmallRational>(scheme, mesh, origin).map_err(irrational)?.ok_or(missing)?;
+    let merge = |terms: Vec<(usize, SmallRational)>| -> Mask {
+        let mut merged: Mask = HashMap::new();
+        for (v, w) in terms {
+            let sum = merged.entry(v).or_insert_with(SmallRational::zero);
+            *sum = *sum + w;
+        }
+        merged.retain(|_, w| !Weight::is_zero(w));
+        merged
+    };
+    let got = merge(small.terms);
+    if got.values().all(|w| !w.is_spoiled()) {
+        return Ok(got);
     }
-    got.retain(|_, w| !Weight::is_zero(w));
-    Ok(got)
+    // an intermediate left the machine integers: the big rationals decide,
+    // and a final weight that still does not fit stays spoiled
+    let big = stencil_at::<Rational>(scheme, mesh, origin).map_err(irrational)?.ok_or(missing)?;
+    let mut exact: HashMap<usize, Rational> = HashMap::new();
+    for (v, w) in big.terms {
+        *exact.entry(v).or_insert_with(<Rational as Weight>::zero) += w;
+    }
+    Ok(exact.into_iter().filter(|(_, w)| !Weight::is_zero(w)).map(|(v, w)| (v, SmallRational::from_rational(&w))).collect())
 }
 
 /// The rule check for non-box windows: every new point that the limit over
@@ -1022,7 +1043,7 @@ fn check_non_box_rules(
         let mut expected: Mask = HashMap::new();
         for (p, weight) in derived {
             let &v = at.get(&p).ok_or("the S_3^1 mask reaches beyond the window")?;
-            expected.insert(v, weight);
+            expected.insert(v, SmallRational::from_rational(&weight));
         }
         if exact_stencil(scheme, mesh, origin)? != expected {
             return Err(format!(
@@ -1072,13 +1093,13 @@ fn vertex_masks(
         .iter()
         .map(|&(kind, centre, edge, diag)| {
             let mut mask: Mask = HashMap::new();
-            mask.insert(v, Rational::ratio(centre.0, centre.1));
+            mask.insert(v, SmallRational::ratio(centre.0, centre.1));
             for &n in &neighbours {
-                mask.insert(n, Rational::ratio(edge.0, edge.1));
+                mask.insert(n, SmallRational::ratio(edge.0, edge.1));
             }
             if diag.0 != 0 {
                 for &n in &diagonal {
-                    mask.insert(n, Rational::ratio(diag.0, diag.1));
+                    mask.insert(n, SmallRational::ratio(diag.0, diag.1));
                 }
             }
             (kind, mask)
@@ -1094,7 +1115,7 @@ fn edge_mask(
     a: usize,
     b: usize,
     ternary: bool,
-) -> Result<(RegularPart, HashMap<usize, Rational>), String> {
+) -> Result<(RegularPart, Mask), String> {
     let sides: Vec<usize> = vf[a].iter().copied().filter(|g| mesh.face(*g).contains(&b)).collect();
     if sides.len() != 2 {
         return Err("an edge over the ring does not have two faces".into());
@@ -1105,9 +1126,9 @@ fn edge_mask(
     }
     if ternary && m == 4 {
         // along the edge (6, 3)/9, across it (1, 7, 1)/9
-        let mut mask: HashMap<usize, Rational> = HashMap::new();
-        mask.insert(a, Rational::ratio(42, 81));
-        mask.insert(b, Rational::ratio(21, 81));
+        let mut mask: Mask = HashMap::new();
+        mask.insert(a, SmallRational::ratio(42, 81));
+        mask.insert(b, SmallRational::ratio(21, 81));
         for g in sides {
             let gf = mesh.face(g);
             let k = gf.iter().position(|&x| x == a).ok_or("an edge's face does not hold it")?;
@@ -1115,8 +1136,8 @@ fn edge_mask(
             let (next, prev) = (gf[(k + 1) % 4], gf[(k + 3) % 4]);
             let beside_a = if next == b { prev } else { next };
             let beside_b = gf[(k + 2) % 4];
-            mask.insert(beside_a, Rational::ratio(6, 81));
-            mask.insert(beside_b, Rational::ratio(3, 81));
+            mask.insert(beside_a, SmallRational::ratio(6, 81));
+            mask.insert(beside_b, SmallRational::ratio(3, 81));
         }
         return Ok((RegularPart::BiquadraticBSplineTernary, mask));
     }
@@ -1125,12 +1146,12 @@ fn edge_mask(
         3 => (RegularPart::ThreeDirectionQuarticBoxSpline, (3, 8), (1, 8)),
         _ => return Err("an edge over the ring borders a face that is neither a quad nor a triangle".into()),
     };
-    let mut mask: HashMap<usize, Rational> = HashMap::new();
-    mask.insert(a, Rational::ratio(end.0, end.1));
-    mask.insert(b, Rational::ratio(end.0, end.1));
+    let mut mask: Mask = HashMap::new();
+    mask.insert(a, SmallRational::ratio(end.0, end.1));
+    mask.insert(b, SmallRational::ratio(end.0, end.1));
     for g in sides {
         for &x in mesh.face(g).iter().filter(|&&x| x != a && x != b) {
-            mask.insert(x, Rational::ratio(other.0, other.1));
+            mask.insert(x, SmallRational::ratio(other.0, other.1));
         }
     }
     Ok((kind, mask))

@@ -319,21 +319,38 @@ fn check_defined<T>(net: &Net<T>) -> Result<(), Error> {
 /// with a wider one.
 fn prune<T: Clone>(net: Net<T>, margin: usize) -> Result<Net<T>, Error> {
     let mesh = &net.mesh;
-    let mut near: HashSet<usize> = HashSet::new();
+    // Breadth-first growth from the outer faces' corners, `margin` face
+    // layers deep. Only the last layer's vertices are expanded at each
+    // step (the earlier ones were), so the cost is linear in the vertices
+    // reached: the net has hundreds of thousands of vertices at the deeper
+    // levels of a ternary host, where re-expanding the whole set each layer
+    // (and hashing every id) was most of a certificate's time.
+    let mut near = vec![false; mesh.num_vertices()];
+    let mut frontier: Vec<usize> = Vec::new();
     for f in (0..mesh.num_faces()).filter(|&f| net.outer[f]) {
-        near.extend(mesh.face(f).iter().copied());
+        for &v in mesh.face(f) {
+            if !near[v] {
+                near[v] = true;
+                frontier.push(v);
+            }
+        }
     }
     let vf = mesh.vertex_faces();
     for _ in 0..margin {
-        let mut grown = near.clone();
-        for &v in &near {
+        let mut next = Vec::new();
+        for &v in &frontier {
             for &f in &vf[v] {
-                grown.extend(mesh.face(f).iter().copied());
+                for &w in mesh.face(f) {
+                    if !near[w] {
+                        near[w] = true;
+                        next.push(w);
+                    }
+                }
             }
         }
-        near = grown;
+        frontier = next;
     }
-    let keep: Vec<usize> = (0..mesh.num_faces()).filter(|&f| mesh.face(f).iter().any(|v| near.contains(v))).collect();
+    let keep: Vec<usize> = (0..mesh.num_faces()).filter(|&f| mesh.face(f).iter().any(|&v| near[v])).collect();
     // carry every attribute (charts, FCVs, face centres, lattice directions)
     let (new_mesh, old) = mesh.restrict(&keep)?;
     let points: Vec<Option<T>> = old.iter().map(|&v| net.points[v].clone()).collect();

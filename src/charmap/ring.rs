@@ -3,7 +3,6 @@
 //! later (which is the level-0 part scaled by λ1), and the two boundary
 //! polygons of the ring.
 
-use std::collections::HashSet;
 
 use nalgebra::{Matrix2, Vector2};
 
@@ -47,11 +46,15 @@ pub fn extract(net: &Net) -> Ring {
         }
     }
     let boundary = |flags: &dyn Fn(usize) -> bool| -> Vec<[[f64; 2]; 2]> {
-        let mut half: HashSet<(usize, usize)> = HashSet::new();
+        // a directed side (a, b) is on the boundary when no flagged face has
+        // the side (b, a); the sides leaving each vertex are few, so a list
+        // per vertex answers that without hashing the (many) sides of a deep
+        // level's ring
+        let mut leaving: Vec<Vec<usize>> = vec![Vec::new(); mesh.num_vertices()];
         for f in (0..mesh.num_faces()).filter(|&f| flags(f)) {
             let face = mesh.face(f);
             for k in 0..face.len() {
-                half.insert((face[k], face[(k + 1) % face.len()]));
+                leaving[face[k]].push(face[(k + 1) % face.len()]);
             }
         }
         // in face order, not the set's (randomly seeded) order: sums over the
@@ -62,7 +65,7 @@ pub fn extract(net: &Net) -> Ring {
                 let face = mesh.face(f);
                 (0..face.len()).map(move |k| (face[k], face[(k + 1) % face.len()]))
             })
-            .filter(|(a, b)| !half.contains(&(*b, *a)))
+            .filter(|(a, b)| !leaving[*b].contains(a))
             .map(|(a, b)| [p(a), p(b)])
             .collect()
     };

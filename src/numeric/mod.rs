@@ -1,5 +1,6 @@
 //! Number types: the weight scalar that rules are written over (f64, exact
-//! rationals, outward-rounded intervals, exact elements of cyclotomic fields),
+//! rationals — big, and in machine integers for the hot exact paths —
+//! outward-rounded intervals, exact elements of cyclotomic fields),
 //! rational recognition, and exact polynomial/matrix algebra.
 
 pub mod cyclotomic;
@@ -8,9 +9,11 @@ pub mod expr;
 pub mod field;
 pub mod interval;
 pub mod recognise;
+pub mod small;
 pub mod weight;
 
 pub use cyclotomic::Cyclotomic;
 pub use field::{EvalError, ExprField, Reading};
 pub use interval::Interval;
+pub use small::SmallRational;
 pub use weight::{Inexact, ParamValue, Rational, Weight};

@@ -12,7 +12,7 @@
 use super::{Caps, CentreKind, Params, Rules, Scheme, SchemeInfo};
 use crate::lattice::{LatticeScheme, LatticeWeight};
 use crate::mesh::{PolyMesh, SectorKind};
-use crate::numeric::{Cyclotomic, Interval, Rational};
+use crate::numeric::{Cyclotomic, Interval, Rational, SmallRational};
 use crate::sdc::{Origin, RuleResult, Stencil};
 use crate::sdc::{Topology, TriangleSplit};
 
@@ -144,6 +144,14 @@ impl Rules<f64> for LatticeOnMesh {
 impl Rules<Rational> for LatticeOnMesh {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<Rational> {
         self.rule::<Rational>(mesh, origin)
+    }
+}
+
+/// The rational masks in machine integers (spoiled where they do not fit).
+impl Rules<SmallRational> for LatticeOnMesh {
+    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<SmallRational> {
+        let exact = self.rule::<Rational>(mesh, origin)?;
+        Ok(exact.map(|s| Stencil { terms: s.terms.iter().map(|(v, w)| (*v, SmallRational::from_rational(w))).collect() }))
     }
 }
 

@@ -20,7 +20,7 @@ pub use params::{ParamSpec, Params};
 pub use stencil::{Origin, RuleResult, Stencil};
 
 use crate::mesh::{PolyMesh, SectorKind};
-use crate::numeric::{Cyclotomic, Interval, Rational, Weight};
+use crate::numeric::{Cyclotomic, Interval, Rational, SmallRational, Weight};
 
 /// The rules of a scheme for one weight type.
 pub trait Rules<W: Weight> {
@@ -129,7 +129,9 @@ impl Caps {
 /// intervals, exact cyclotomic numbers), its description, its
 /// parameter values, and the two behaviours some schemes add (a per-vertex
 /// parameter rule, different rules at the first levels of a real mesh).
-pub trait Scheme: Rules<f64> + Rules<Rational> + Rules<Interval> + Rules<Cyclotomic> + Send + Sync {
+pub trait Scheme:
+    Rules<f64> + Rules<Rational> + Rules<SmallRational> + Rules<Interval> + Rules<Cyclotomic> + Send + Sync
+{
     fn info(&self) -> &SchemeInfo;
     fn params(&self) -> &Params;
     /// How the per-vertex parameter of a new vertex derives from the old ones
@@ -209,6 +211,14 @@ impl SchemeWeight for f64 {
 impl SchemeWeight for Rational {
     fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
         Rules::<Rational>::stencil(scheme, mesh, origin)
+    }
+}
+
+/// Exact rationals in machine integers (spoiled, never rounded, on
+/// overflow): the certificate's many exact stencil comparisons.
+impl SchemeWeight for SmallRational {
+    fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
+        Rules::<SmallRational>::stencil(scheme, mesh, origin)
     }
 }
 

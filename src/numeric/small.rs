@@ -1,0 +1,179 @@
+//! Exact rationals in machine integers, for the hot exact paths.
+//!
+//! The certificate compares the scheme's stencils with a box spline's mask
+//! exactly at every regular entity of the ring's windows — tens of thousands
+//! of stencils per valence, each a few dozen products of small fractions
+//! (1/4, 3/8, 1/16 ...). In big rationals every product allocates and reduces
+//! by a big-integer gcd, and that was most of a certified claim's time.
+//! [`SmallRational`] does the same arithmetic in `i128` numerators and
+//! denominators with checked operations. It never rounds: an operation that
+//! would overflow (or divide by zero) makes the value *spoiled*, spoiled
+//! values stay spoiled, and a caller that finds a spoiled term recomputes
+//! with big rationals ([`SmallRational::to_rational`] returns `None`). So a
+//! stencil computed this way is either the exact stencil or visibly not one.
+
+use super::cyclotomic::Cyclotomic;
+use super::weight::{rational_cos_2pi, Inexact, ParamValue, Rational, Weight};
+use num_bigint::BigInt;
+use num_rational::Ratio;
+use num_traits::{CheckedAdd, CheckedDiv, CheckedMul, CheckedSub, ToPrimitive, Zero};
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// An exact rational in machine integers, or `None` once an operation left
+/// them (see the module documentation).
+#[derive(Clone, Copy, Debug)]
+pub struct SmallRational(Option<Ratio<i128>>);
+
+/// Equal values are equal; a spoiled value equals nothing, not even itself
+/// (like a NaN), so an exact comparison never passes on spoiled data.
+impl PartialEq for SmallRational {
+    fn eq(&self, other: &Self) -> bool {
+        matches!((self.0, other.0), (Some(a), Some(b)) if a == b)
+    }
+}
+
+impl SmallRational {
+    /// p/q, spoiled when q = 0.
+    pub fn new(p: i128, q: i128) -> Self {
+        SmallRational((q != 0).then(|| Ratio::new(p, q)))
+    }
+
+    /// The value, when it was never spoiled.
+    pub fn to_rational(&self) -> Option<Rational> {
+        self.0.map(|r| Rational::new(BigInt::from(*r.numer()), BigInt::from(*r.denom())))
+    }
+
+    /// A big rational as a small one, spoiled when it does not fit.
+    pub fn from_rational(r: &Rational) -> Self {
+        match (r.numer().to_i128(), r.denom().to_i128()) {
+            (Some(p), Some(q)) => SmallRational::new(p, q),
+            _ => SmallRational(None),
+        }
+    }
+
+    pub fn is_spoiled(&self) -> bool {
+        self.0.is_none()
+    }
+
+    fn checked(a: Self, b: Self, op: impl Fn(&Ratio<i128>, &Ratio<i128>) -> Option<Ratio<i128>>) -> Self {
+        SmallRational(match (a.0, b.0) {
+            (Some(x), Some(y)) => op(&x, &y),
+            _ => None,
+        })
+    }
+}
+
+impl Add for SmallRational {
+    type Output = Self;
+    fn add(self, b: Self) -> Self {
+        Self::checked(self, b, |x, y| x.checked_add(y))
+    }
+}
+
+impl Sub for SmallRational {
+    type Output = Self;
+    fn sub(self, b: Self) -> Self {
+        Self::checked(self, b, |x, y| x.checked_sub(y))
+    }
+}
+
+impl Mul for SmallRational {
+    type Output = Self;
+    fn mul(self, b: Self) -> Self {
+        Self::checked(self, b, |x, y| x.checked_mul(y))
+    }
+}
+
+impl Div for SmallRational {
+    type Output = Self;
+    fn div(self, b: Self) -> Self {
+        // checked_div is None for a zero divisor, which spoils the value as
+        // the big rationals' division would panic
+        Self::checked(self, b, |x, y| x.checked_div(y))
+    }
+}
+
+impl Neg for SmallRational {
+    type Output = Self;
+    fn neg(self) -> Self {
+        Self::checked(SmallRational::new(0, 1), self, |x, y| x.checked_sub(y))
+    }
+}
+
+impl Weight for SmallRational {
+    fn zero() -> Self {
+        SmallRational::new(0, 1)
+    }
+    fn one() -> Self {
+        SmallRational::new(1, 1)
+    }
+    fn ratio(p: i64, q: i64) -> Self {
+        SmallRational::new(p as i128, q as i128)
+    }
+    fn cos_2pi(k: i64, n: i64) -> Result<Self, Inexact> {
+        rational_cos_2pi(k, n).map(|(p, q)| SmallRational::ratio(p, q)).ok_or(Inexact)
+    }
+    fn sqrt(&self) -> Result<Self, Inexact> {
+        let Some(r) = self.0 else { return Ok(*self) };
+        let root = |x: i128| -> Option<i128> {
+            if x < 0 {
+                return None;
+            }
+            // the float estimate is off by at most a few units at i128
+            // magnitudes; the exact square decides
+            let s = (x as f64).sqrt() as i128;
+            (s.saturating_sub(2)..=s.saturating_add(2)).find(|&t| t >= 0 && t.checked_mul(t) == Some(x))
+        };
+        match (root(*r.numer()), root(*r.denom())) {
+            (Some(p), Some(q)) => Ok(SmallRational::new(p, q)),
+            _ => Err(Inexact),
+        }
+    }
+    fn param(p: &ParamValue) -> Result<Self, Inexact> {
+        p.exact.as_ref().map(SmallRational::from_rational).ok_or(Inexact)
+    }
+    fn to_f64(&self) -> f64 {
+        self.0.map_or(f64::NAN, |r| *r.numer() as f64 / *r.denom() as f64)
+    }
+    fn is_zero(&self) -> bool {
+        self.0.is_some_and(|r| r.is_zero())
+    }
+    fn from_cyclotomic(c: &Cyclotomic) -> Result<Self, Inexact> {
+        c.to_rational().map(|r| SmallRational::from_rational(&r)).ok_or(Inexact)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn arithmetic_is_that_of_the_rationals() {
+        let q = |p, q| SmallRational::ratio(p, q);
+        assert_eq!((q(1, 4) + q(3, 8)).to_rational(), Some(Rational::ratio(5, 8)));
+        assert_eq!((q(1, 4) - q(3, 8)).to_rational(), Some(Rational::ratio(-1, 8)));
+        assert_eq!((q(2, 3) * q(9, 16)).to_rational(), Some(Rational::ratio(3, 8)));
+        assert_eq!((q(2, 3) / q(4, 9)).to_rational(), Some(Rational::ratio(3, 2)));
+        assert_eq!((-q(5, 7)).to_rational(), Some(Rational::ratio(-5, 7)));
+        assert_eq!(q(9, 16).sqrt().map(|r| r.to_rational()), Ok(Some(Rational::ratio(3, 4))));
+        assert_eq!(q(2, 1).sqrt(), Err(Inexact));
+        assert_eq!(SmallRational::cos_2pi(1, 6).map(|r| r.to_rational()), Ok(Some(Rational::ratio(1, 2))));
+        assert_eq!(SmallRational::cos_2pi(1, 5), Err(Inexact));
+    }
+
+    #[test]
+    fn overflow_and_division_by_zero_spoil_instead_of_rounding() {
+        let big = SmallRational::new(i128::MAX / 3, 1);
+        assert!((big * SmallRational::int(4)).is_spoiled());
+        assert!((big * SmallRational::int(4) - big).is_spoiled(), "a spoiled value stays spoiled");
+        assert!((SmallRational::one() / SmallRational::zero()).is_spoiled());
+        assert!(SmallRational::new(1, 0).to_rational().is_none());
+        assert!(!SmallRational::new(0, 1).is_spoiled() && !(big * SmallRational::int(2)).is_spoiled());
+        let spoiled = SmallRational::new(1, 0);
+        assert!(spoiled != spoiled, "a spoiled value equals nothing, so no exact comparison passes on it");
+        // a big rational that does not fit is spoiled, one that fits is kept
+        let huge = Rational::new(BigInt::from(10).pow(40), BigInt::from(3));
+        assert!(SmallRational::from_rational(&huge).is_spoiled());
+        assert_eq!(SmallRational::from_rational(&Rational::ratio(-7, 12)).to_rational(), Some(Rational::ratio(-7, 12)));
+    }
+}
