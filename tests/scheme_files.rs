@@ -11,23 +11,23 @@
 
 mod common;
 use common::{assert_same_multiset, subdlab};
+use subdlab::curves::CurveRules;
+use subdlab::lattice::LatticeRules;
 use subdlab::matrix::local::AssembleError;
 use subdlab::matrix::{assemble, LocalMatrix};
 use subdlab::mesh::obj::read_obj_file;
 use subdlab::mesh::PolyMesh;
 use subdlab::neighbourhood::{discover, Configuration, NeighbourhoodKind};
 use subdlab::numeric::Rational;
+use subdlab::numeric::{Cyclotomic, ParamValue, Weight};
 use subdlab::refine::mesh::refine_mesh;
 use subdlab::refine::Origin;
+use subdlab::schemes::files::describe;
+use subdlab::schemes::registry::{self, Built};
 use subdlab::schemes::user::UserSchemeDef;
 use subdlab::schemes::{self, Scheme};
 use subdlab::sdc::slots::{gather, GatherError, Host, OriginKind, Wants};
 use subdlab::spectrum::{analyse, Options};
-use subdlab::curves::CurveRules;
-use subdlab::lattice::LatticeRules;
-use subdlab::numeric::{Cyclotomic, ParamValue, Weight};
-use subdlab::schemes::files::describe;
-use subdlab::schemes::registry::{self, Built};
 
 fn path(rel: &str) -> String {
     format!("{}/{rel}", env!("CARGO_MANIFEST_DIR"))
@@ -986,7 +986,8 @@ fn exact_difference(a: &dyn Scheme, b: &dyn Scheme, n: usize, faces: Option<&str
         return Some(format!("n = {n} {faces:?}: labels differ"));
     }
     for (i, (ra, rb)) in ma.rows.iter().zip(&mb.rows).enumerate() {
-        let same = ra.len() == rb.len() && ra.iter().zip(rb).all(|((ca, wa), (cb, wb))| ca == cb && (wa.clone() - wb.clone()).is_zero());
+        let same = ra.len() == rb.len()
+            && ra.iter().zip(rb).all(|((ca, wa), (cb, wb))| ca == cb && (wa.clone() - wb.clone()).is_zero());
         if !same {
             return Some(format!("n = {n} {faces:?}: row {i} differs: {ra:?} vs {rb:?}"));
         }
@@ -1070,7 +1071,12 @@ fn scheme_files_carry_their_built_ins_parameters() {
                 assert!(p.rule.is_some() && p.default.text.is_empty(), "{what}: the default should be the rule in n");
             } else {
                 let want = ParamValue::parse(spec.default).unwrap().exact;
-                assert!(p.rule.is_none() && p.default.exact == want, "{what}: default {} vs {}", p.default.text, spec.default);
+                assert!(
+                    p.rule.is_none() && p.default.exact == want,
+                    "{what}: default {} vs {}",
+                    p.default.text,
+                    spec.default
+                );
             }
         }
         // at the defaults
@@ -1108,8 +1114,11 @@ fn scheme_files_carry_their_built_ins_parameters() {
             let (lo, hi) = (exact_bound(spec.min), exact_bound(spec.max));
             for v in [&hi + (&hi - &lo), &lo - (&hi - &lo)] {
                 let o = vec![(spec.name.to_string(), v.to_string())];
-                let want = format!("parameter {}={v} is out of range [{}, {}] for scheme", spec.name, spec.min, spec.max);
-                for (who, result) in [(entry.name(), entry.build(&o).err()), (file.as_str(), registry::resolve(file, &o).err())] {
+                let want =
+                    format!("parameter {}={v} is out of range [{}, {}] for scheme", spec.name, spec.min, spec.max);
+                for (who, result) in
+                    [(entry.name(), entry.build(&o).err()), (file.as_str(), registry::resolve(file, &o).err())]
+                {
                     let e = result.unwrap_or_else(|| panic!("{who} accepts {o:?}"));
                     assert!(matches!(e, subdlab::error::Error::Input(_)), "{who}: {e:?}");
                     let e = e.to_string();
@@ -1130,7 +1139,9 @@ fn scheme_files_carry_their_built_ins_parameters() {
         assert_eq!(subdlab(&args).status.code(), Some(2));
     }
     // and what the issue saw refused is accepted and is the built-in
-    for (scheme, name, good) in [("schemes/non-box.toml", "non-box", "a=0.4"), ("schemes/four-three.toml", "four-three", "centre_weight=0.55")] {
+    for (scheme, name, good) in
+        [("schemes/non-box.toml", "non-box", "a=0.4"), ("schemes/four-three.toml", "four-three", "centre_weight=0.55")]
+    {
         let (k, v) = good.split_once('=').unwrap();
         let o = over(&[(k, v)]);
         let entry = registry::find(name).unwrap();

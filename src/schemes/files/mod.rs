@@ -259,10 +259,14 @@ pub(crate) fn parameter_table(
             // not a number: the built-ins' "scheme rule" default, a formula
             // in the valence that stands for the parameter until it is given
             (Err(e), toml::Value::String(s)) => {
-                // anything else that is no number keeps the number's error
                 if s.chars().count() > MAX_EXPR_CHARS {
-                    return Err(err(default_at, &default_key, &format!("expression longer than {MAX_EXPR_CHARS} characters")));
+                    return Err(err(
+                        default_at,
+                        &default_key,
+                        &format!("expression longer than {MAX_EXPR_CHARS} characters"),
+                    ));
                 }
+                // a string that is neither a number nor an expression in n keeps the number's error
                 let in_n = Expr::parse(s).ok().filter(|x| x.variables().iter().any(|v| v == "n"));
                 let Some(expr) = in_n else { return Err(err(default_at, &default_key, &e)) };
                 if let Some(v) = expr.variables().into_iter().find(|v| v != "n") {
