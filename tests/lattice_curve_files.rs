@@ -224,7 +224,7 @@ fn malformed_files_fail_with_the_line_and_the_field() {
     std::fs::write(&ok, CURVE_OK).unwrap();
     assert_eq!(registry::resolve(ok.to_str().unwrap(), &[]).unwrap().family(), Family::Curve);
 
-    let cases: [(String, &str); 10] = [
+    let cases: [(String, &str); 11] = [
         (CURVE_OK.replace("\"curve\"", "\"torus\""), "line 1, field domain"),
         (CURVE_OK.replace("\"c\"", "\"four-point\""), "line 2, field name: 'four-point' is a built-in"),
         (CURVE_OK.replace("\"0\" = 1", "\"zero\" = 1"), "line 4, field even.\"zero\""),
@@ -244,6 +244,11 @@ fn malformed_files_fail_with_the_line_and_the_field() {
         (
             "domain = \"lattice\"\nname = \"l\"\n[mask-00]\n\"0\" = 1\n".into(),
             "line 4, field mask-00.\"0\": '0' is not an offset",
+        ),
+        // a default rule in the valence belongs to mesh files
+        (
+            CURVE_OK.replace("name = \"c\"", "name = \"c\"\n[params.t]\ndefault = \"1/n\""),
+            "line 4, field params.t.default: a default in the valence n needs a mesh scheme file",
         ),
     ];
     for (text, want) in cases {

@@ -11,14 +11,19 @@
 
 mod common;
 use common::{assert_same_multiset, subdlab};
+use subdlab::curves::CurveRules;
+use subdlab::lattice::LatticeRules;
 use subdlab::matrix::local::AssembleError;
 use subdlab::matrix::{assemble, LocalMatrix};
 use subdlab::mesh::obj::read_obj_file;
 use subdlab::mesh::PolyMesh;
 use subdlab::neighbourhood::{discover, Configuration, NeighbourhoodKind};
 use subdlab::numeric::Rational;
+use subdlab::numeric::{Cyclotomic, ParamValue, Weight};
 use subdlab::refine::mesh::refine_mesh;
 use subdlab::refine::Origin;
+use subdlab::schemes::files::describe;
+use subdlab::schemes::registry::{self, Built};
 use subdlab::schemes::user::UserSchemeDef;
 use subdlab::schemes::{self, Scheme};
 use subdlab::sdc::slots::{gather, GatherError, Host, OriginKind, Wants};
@@ -304,39 +309,6 @@ fn pgs_file_is_the_built_in() {
     same_for_valences_3_to_12("schemes/pgs.toml", "pgs", &[], &RATIONAL_COS);
 }
 
-/// PGS's `mu` and `lambda_sub` (given: they replace μ_n and λ_sub at every
-/// n != 4) as file parameters: the shipped file with the paper's μ_n and
-/// λ_sub replaced by `kronecker(n - 4) μ_4 + (1 - kronecker(n - 4)) mu`
-/// (μ_4 = 2·2/4 = 1, λ_sub at n = 4, c = 0: 1/2 · 1^3).
-#[test]
-fn pgs_parameters_as_file_parameters() {
-    let text = std::fs::read_to_string(path("schemes/pgs.toml")).unwrap();
-    let mu = "(kronecker(n - 3) 3/5 + (1 - kronecker(n - 3)) 2 (n - 2) / n)";
-    let c = "cos(2 pi / n)";
-    let lambda = format!(
-        "(1/2 (1 - {c})^3 + 3 * 5519/10000 (1 - {c})^2 {c} + 3 * 5985/10000 (1 - {c}) {c}^2 + 64367/100000 {c}^3)"
-    );
-    assert_eq!(text.matches(mu).count(), 4);
-    assert_eq!(text.matches(lambda.as_str()).count(), 5);
-    let text = text
-        .replace(mu, "(kronecker(n - 4) + (1 - kronecker(n - 4)) mu)")
-        .replace(&lambda, "(kronecker(n - 4) / 2 + (1 - kronecker(n - 4)) lambda_sub)")
-        .replace(
-            "topology = \"augmented-dual\"\n",
-            "topology = \"augmented-dual\"\n[params.mu]\ndefault = \"3/5\"\n[params.lambda_sub]\ndefault = \"1/2\"\n",
-        );
-    for (mu, lambda) in [("3/5", "1/2"), ("1/2", "3/5"), ("4/5", "11/20")] {
-        let o = [("mu", mu), ("lambda_sub", lambda)];
-        let (file, built) = (text_scheme(&text, &o), builtin("pgs", &o));
-        for n in [3, 4, 5, 6, 8] {
-            let exact = difference(file.as_ref(), built.as_ref(), n, None).unwrap_or_else(|e| panic!("{o:?}: {e}"));
-            if RATIONAL_COS.contains(&n) {
-                assert_eq!(exact, 2, "{o:?} n = {n}");
-            }
-        }
-    }
-}
-
 #[test]
 fn polar_bi2_file_is_the_built_in() {
     for alpha in ["1/4", "1/3"] {
@@ -371,24 +343,6 @@ fn four_three_file_is_the_built_in_on_every_face_sequence() {
     }
     // 4 + 6 + 8 + 14 + 20 sequences up to rotation (transition QQTTT among them)
     assert_eq!(checked, 52);
-}
-
-/// The paper's centre weight as a parameter: the shipped file with the eon's
-/// centre weight replaced by `cw` equals the built-in's `centre_weight`.
-#[test]
-fn four_three_centre_weight_as_a_file_parameter() {
-    let text = std::fs::read_to_string(path("schemes/four-three.toml")).unwrap();
-    let paper = "(kronecker(n - 3) 3/8 + kronecker(n - 4) / 2 + (1 - kronecker(n - 3) - kronecker(n - 4)) 3/5)";
-    assert!(text.contains(paper));
-    let text = text
-        .replace(paper, "cw")
-        .replace("blend-levels = 3\n", "blend-levels = 3\n[params.cw]\ndefault = \"1/2\"\nmin = 0.25\nmax = 0.75\n");
-    for cw in ["1/4", "1/2", "3/4"] {
-        let (file, built) = (text_scheme(&text, &[("cw", cw)]), builtin("four-three", &[("centre_weight", cw)]));
-        for (n, faces) in [(3, "QQQ"), (5, "QTQTT"), (6, "QQQTTT"), (8, "QQQQQQQQ")] {
-            difference(file.as_ref(), built.as_ref(), n, Some(faces)).unwrap_or_else(|e| panic!("cw {cw}: {e}"));
-        }
-    }
 }
 
 /// Rule (4a') at eons: the share t of the quad term as a file parameter,
@@ -752,6 +706,27 @@ fn errors_in_files_of_the_new_hosts_name_the_line_and_the_field() {
                 .replace("between = \"4/32\"", "between = \"4/32 n\""),
             "field vertex-transition.between: unknown variable 'n' (vertex-transition rules have no valence n)",
         ),
+        // a parameter's default rule is an expression in n alone, and is
+        // substituted only where rules have an n
+        (
+            std::fs::read_to_string(path("schemes/non-box.toml"))
+                .unwrap()
+                .replace("default = \"kronecker(n - 3) 3/4", "default = \"q kronecker(n - 3) 3/4"),
+            "field params.a.default: a default is a number or an expression in the valence n only (found 'q')",
+        ),
+        (
+            std::fs::read_to_string(path("schemes/four-three.toml"))
+                .unwrap()
+                .replace("between = \"4/32\"", "between = \"4/32 + 0 centre_weight\""),
+            "field vertex-transition.between: parameter 'centre_weight' defaults to a rule in the valence n, which \
+             vertex-transition rules do not have",
+        ),
+        (
+            std::fs::read_to_string(path("schemes/unified-sqrt3.toml"))
+                .unwrap()
+                .replace("default = \"1\"", "default = \"1 + 0 n\""),
+            "field vertex-param: 'alpha' needs a number default",
+        ),
     ];
     for (text, want) in cases {
         let e =
@@ -958,5 +933,218 @@ fn gatherers_cover_every_origin_with_declared_rules_and_families() {
         let mut declared = spec.origins();
         declared.sort_by_key(|k| *k as usize);
         assert_eq!(made, declared, "{}", spec.name);
+    }
+}
+
+/// The one correspondence between built-ins and repository scheme files: the
+/// file in schemes/ whose `name` is the built-in's name followed by "-file"
+/// stands for that built-in. Every built-in has exactly one such file, and
+/// no file claims a built-in that does not exist.
+fn counterparts() -> Vec<(registry::Entry, String)> {
+    let mut files = Vec::new();
+    for e in std::fs::read_dir(path("schemes")).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_some_and(|x| x == "toml") {
+            let name = describe(&p).unwrap_or_else(|e| panic!("{e}")).name;
+            files.push((name, p.display().to_string()));
+        }
+    }
+    for (name, file) in &files {
+        if let Some(b) = name.strip_suffix("-file") {
+            assert!(registry::find(b).is_some(), "{file} is named '{name}' but there is no built-in '{b}'");
+        }
+    }
+    registry::entries()
+        .into_iter()
+        .map(|e| {
+            let want = format!("{}-file", e.name());
+            let mine: Vec<_> = files.iter().filter(|(n, _)| *n == want).collect();
+            assert_eq!(mine.len(), 1, "built-in '{}': {} files named '{want}' in schemes/", e.name(), mine.len());
+            let file = mine[0].1.clone();
+            (e, file)
+        })
+        .collect()
+}
+
+/// A decimal bound (0.25, 0.01) as the exact rational it is written as.
+fn exact_bound(x: f64) -> Rational {
+    ParamValue::parse(&format!("{x}")).unwrap().exact.unwrap()
+}
+
+/// Where two mesh schemes' local matrices (the analysis neighbourhood)
+/// differ at valence n, in Q(ζ) exactly (cos(2πk/n) is an exact element).
+fn exact_difference(a: &dyn Scheme, b: &dyn Scheme, n: usize, faces: Option<&str>) -> Option<String> {
+    let config = |s: &dyn Scheme| match faces {
+        Some(f) => Configuration::with_faces(s, n, f).unwrap(),
+        None => Configuration::regular(s, n).unwrap(),
+    };
+    let (da, db) = (discover(a, &config(a)).unwrap(), discover(b, &config(b)).unwrap());
+    let kind = NeighbourhoodKind::Analysis;
+    let ma: LocalMatrix<Cyclotomic> = assemble(a, &da, kind).unwrap_or_else(|e| panic!("{} n = {n}: {e:?}", a.name()));
+    let mb: LocalMatrix<Cyclotomic> = assemble(b, &db, kind).unwrap_or_else(|e| panic!("{} n = {n}: {e:?}", b.name()));
+    if ma.labels != mb.labels {
+        return Some(format!("n = {n} {faces:?}: labels differ"));
+    }
+    for (i, (ra, rb)) in ma.rows.iter().zip(&mb.rows).enumerate() {
+        let same = ra.len() == rb.len()
+            && ra.iter().zip(rb).all(|((ca, wa), (cb, wb))| ca == cb && (wa.clone() - wb.clone()).is_zero());
+        if !same {
+            return Some(format!("n = {n} {faces:?}: row {i} differs: {ra:?} vs {rb:?}"));
+        }
+    }
+    None
+}
+
+/// A lattice scheme's four parity masks, or a curve scheme's even and odd
+/// rules, exactly, zero weights dropped and sorted.
+fn exact_masks(built: &Built) -> Vec<Vec<(i64, i64, Rational)>> {
+    let clean = |mut v: Vec<(i64, i64, Rational)>| {
+        v.retain(|t| !Weight::is_zero(&t.2));
+        v.sort_by(|x, y| (x.0, x.1).cmp(&(y.0, y.1)));
+        v
+    };
+    match built {
+        Built::Lattice(l) => [(0, 0), (0, 1), (1, 0), (1, 1)]
+            .into_iter()
+            .map(|(a, b)| {
+                let m = LatticeRules::<Rational>::mask(l.as_ref(), a, b);
+                clean(m.into_iter().map(|((i, j), w)| (i, j, w)).collect())
+            })
+            .collect(),
+        Built::Curve(c) => {
+            let m = CurveRules::<Rational>::mask(c.as_ref()).unwrap().merged();
+            vec![
+                clean(m.even.into_iter().map(|(o, w)| (o, 0, w)).collect()),
+                clean(m.odd.into_iter().map(|(o, w)| (o, 0, w)).collect()),
+            ]
+        }
+        Built::Mesh(_) => unreachable!("mesh schemes are compared by their local matrices"),
+    }
+}
+
+/// Whether the file and the built-in are one scheme with these overrides:
+/// mesh schemes by their exact local matrices at n = 3, 5, 7 (and a fan of
+/// quads and triangles where the host takes face sequences), lattice and
+/// curve schemes by their exact masks. `Some(why)` when they differ.
+fn file_differs(entry: &registry::Entry, file: &str, o: &[(String, String)]) -> Option<String> {
+    let built = entry.build(o).unwrap_or_else(|e| panic!("{} {o:?}: {e}", entry.name()));
+    let from_file = registry::resolve(file, o).unwrap_or_else(|e| panic!("{file} {o:?}: {e}"));
+    assert_eq!(built.family(), from_file.family(), "{file}");
+    match (&from_file, &built) {
+        (Built::Mesh(f), Built::Mesh(b)) => {
+            assert_eq!(f.topology(), b.topology(), "{file}");
+            for n in [3, 5, 7] {
+                let mixed = format!("{}{}", "Q".repeat(n - n / 2), "T".repeat(n / 2));
+                let faces = if b.face_sequences() { vec![None, Some(mixed.as_str())] } else { vec![None] };
+                for faces in faces {
+                    if let Some(why) = exact_difference(f.as_ref(), b.as_ref(), n, faces) {
+                        return Some(why);
+                    }
+                }
+            }
+            None
+        }
+        _ => (exact_masks(&from_file) != exact_masks(&built)).then(|| "the masks differ".into()),
+    }
+}
+
+/// Issue 24: every repository file that stands for a built-in carries the
+/// built-in's parameters (same names, ranges and defaults: a number, or the
+/// scheme's own rule in n where the built-in's default is its rule) and is
+/// the built-in at parameter values other than the defaults: each parameter
+/// alone at 2/7 and 5/7 of its range and all of them together, compared in
+/// exact arithmetic. A value out of range is refused by both, with the same
+/// one-line error. A file may have parameters of its own besides
+/// (four-point-file's tension w); at their defaults it is the built-in.
+#[test]
+fn scheme_files_carry_their_built_ins_parameters() {
+    let pairs = counterparts();
+    let mut compared = 0;
+    for (entry, file) in &pairs {
+        let fparams = describe(std::path::Path::new(file)).unwrap().params;
+        let specs = entry.params();
+        for spec in &specs {
+            let what = format!("{file}: parameter '{}' of '{}'", spec.name, entry.name());
+            let p = fparams.iter().find(|p| p.name == spec.name).unwrap_or_else(|| panic!("{what} is missing"));
+            assert_eq!((p.min, p.max), (spec.min, spec.max), "{what}: range");
+            if spec.default.is_empty() {
+                assert!(p.rule.is_some() && p.default.text.is_empty(), "{what}: the default should be the rule in n");
+            } else {
+                let want = ParamValue::parse(spec.default).unwrap().exact;
+                assert!(
+                    p.rule.is_none() && p.default.exact == want,
+                    "{what}: default {} vs {}",
+                    p.default.text,
+                    spec.default
+                );
+            }
+        }
+        // at the defaults
+        assert_eq!(file_differs(entry, file, &[]), None, "{file} at its defaults");
+        // two values inside each range, neither the default
+        let values = |spec: &subdlab::schemes::ParamSpec| -> Vec<String> {
+            let (lo, hi) = (exact_bound(spec.min), exact_bound(spec.max));
+            [2, 5]
+                .into_iter()
+                .map(|k| {
+                    let v = &lo + (&hi - &lo) * Rational::new(k.into(), 7.into());
+                    let default = ParamValue::parse(spec.default).ok().and_then(|d| d.exact);
+                    assert!(v > lo && v < hi && Some(&v) != default.as_ref(), "{}: {v}", spec.name);
+                    v.to_string()
+                })
+                .collect()
+        };
+        let mut settings: Vec<Vec<(String, String)>> = Vec::new();
+        for spec in &specs {
+            for v in values(spec) {
+                settings.push(vec![(spec.name.to_string(), v)]);
+            }
+        }
+        if specs.len() > 1 {
+            settings.push(specs.iter().map(|s| (s.name.to_string(), values(s)[1].clone())).collect());
+        }
+        for o in &settings {
+            if let Some(why) = file_differs(entry, file, o) {
+                panic!("{file} is not '{}' at {o:?}: {why}", entry.name());
+            }
+            compared += 1;
+        }
+        // out of range, above and below: the same one-line input error
+        for spec in &specs {
+            let (lo, hi) = (exact_bound(spec.min), exact_bound(spec.max));
+            for v in [&hi + (&hi - &lo), &lo - (&hi - &lo)] {
+                let o = vec![(spec.name.to_string(), v.to_string())];
+                let want =
+                    format!("parameter {}={v} is out of range [{}, {}] for scheme", spec.name, spec.min, spec.max);
+                for (who, result) in
+                    [(entry.name(), entry.build(&o).err()), (file.as_str(), registry::resolve(file, &o).err())]
+                {
+                    let e = result.unwrap_or_else(|| panic!("{who} accepts {o:?}"));
+                    assert!(matches!(e, subdlab::error::Error::Input(_)), "{who}: {e:?}");
+                    let e = e.to_string();
+                    assert!(e.contains(&want) && !e.contains('\n'), "{who}: '{e}', want '{want}'");
+                }
+            }
+        }
+    }
+    // 15 built-ins; 9 parameters (two values each) and the settings of both
+    // of four-three's and of pgs's together
+    assert_eq!(pairs.len(), 15);
+    assert_eq!(compared, 20);
+    // on the command line: the issue's two refusals, exit 2 with one line
+    for (scheme, bad) in [("schemes/non-box.toml", "a=1.5"), ("schemes/four-three.toml", "centre_weight=0.8")] {
+        let args = ["spectrum", &path(scheme), "--valence", "5", "--param", bad];
+        let e = common::fails(&args);
+        assert!(e.contains("is out of range"), "{e}");
+        assert_eq!(subdlab(&args).status.code(), Some(2));
+    }
+    // and what the issue saw refused is accepted and is the built-in
+    for (scheme, name, good) in
+        [("schemes/non-box.toml", "non-box", "a=0.4"), ("schemes/four-three.toml", "four-three", "centre_weight=0.55")]
+    {
+        let (k, v) = good.split_once('=').unwrap();
+        let o = over(&[(k, v)]);
+        let entry = registry::find(name).unwrap();
+        assert_eq!(file_differs(&entry, &path(scheme), &o), None, "{scheme} {good}");
     }
 }

@@ -222,12 +222,16 @@ pub(crate) fn literal(v: &toml::Value) -> Result<ParamValue, Error> {
 }
 
 /// The `[params.NAME]` tables of a scheme file (mesh, lattice or curve),
-/// checked: names are identifiers and not reserved, default, min and max are
-/// numbers, and the default lies in [min, max]. Errors name line and field.
+/// checked: names are identifiers and not reserved, min and max are numbers,
+/// and the default is a number in [min, max] or, where rules have a valence
+/// (`valence`: mesh files), an expression in n (the parameter is then absent
+/// until given, as a built-in's parameter with the scheme's own rule for a
+/// default). Errors name line and field.
 pub(crate) fn parameter_table(
     params: &BTreeMap<String, Spanned<ParamDoc>>,
     text: &str,
     file: &str,
+    valence: bool,
 ) -> Result<Vec<UserParam>, Error> {
     let at = |span: std::ops::Range<usize>| line_of(text, span.start);
     let err = |line: usize, field: &str, msg: &dyn std::fmt::Display| field_error(file, line, field, msg);
@@ -248,8 +252,41 @@ pub(crate) fn parameter_table(
             return Err(err(line, &key, &format!("'{pname}' is reserved (n, j, pi, i and function names)")));
         }
         let p = p.get_ref();
-        let default =
-            literal(p.default.get_ref()).map_err(|e| err(at(p.default.span()), &format!("{key}.default"), &e))?;
+        let default_at = at(p.default.span());
+        let default_key = format!("{key}.default");
+        let (default, rule) = match (literal(p.default.get_ref()), p.default.get_ref()) {
+            (Ok(v), _) => (v, None),
+            // not a number: the built-ins' "scheme rule" default, a formula
+            // in the valence that stands for the parameter until it is given
+            (Err(e), toml::Value::String(s)) => {
+                if s.chars().count() > MAX_EXPR_CHARS {
+                    return Err(err(
+                        default_at,
+                        &default_key,
+                        &format!("expression longer than {MAX_EXPR_CHARS} characters"),
+                    ));
+                }
+                // a string that is neither a number nor an expression in n keeps the number's error
+                let in_n = Expr::parse(s).ok().filter(|x| x.variables().iter().any(|v| v == "n"));
+                let Some(expr) = in_n else { return Err(err(default_at, &default_key, &e)) };
+                if let Some(v) = expr.variables().into_iter().find(|v| v != "n") {
+                    return Err(err(
+                        default_at,
+                        &default_key,
+                        &format!("a default is a number or an expression in the valence n only (found '{v}')"),
+                    ));
+                }
+                if !valence {
+                    return Err(err(
+                        default_at,
+                        &default_key,
+                        &"a default in the valence n needs a mesh scheme file (lattice and curve rules have no n)",
+                    ));
+                }
+                (ParamValue { value: f64::NAN, exact: None, text: String::new() }, Some(expr))
+            }
+            (Err(e), _) => return Err(err(default_at, &default_key, &e)),
+        };
         let bound = |b: &Option<Spanned<toml::Value>>, which: &str, none: f64| -> Result<f64, Error> {
             match b {
                 None => Ok(none),
@@ -259,12 +296,13 @@ pub(crate) fn parameter_table(
             }
         };
         let (min, max) = (bound(&p.min, "min", f64::NEG_INFINITY)?, bound(&p.max, "max", f64::INFINITY)?);
-        if !(min <= max && default.value >= min && default.value <= max) {
+        if !(min <= max && (rule.is_some() || (default.value >= min && default.value <= max))) {
             return Err(err(line, &key, &format!("default {} is not in [{min}, {max}]", default.text)));
         }
         out.push(UserParam {
             name: pname.clone(),
             default,
+            rule,
             min,
             max,
             description: p.description.clone().unwrap_or_default(),
@@ -278,7 +316,9 @@ pub(crate) fn parameter_table(
 /// alike, with the built-ins' wording).
 pub(crate) fn parameter_env(scheme: &str, params: &[UserParam], overrides: &[(String, String)]) -> Result<Env, Error> {
     let mut env = Env::new();
-    for p in params {
+    // a parameter whose default is a rule in n is absent until given (its
+    // rule is substituted into the weights instead: `substitute`)
+    for p in params.iter().filter(|p| p.rule.is_none()) {
         env.insert(p.name.clone(), p.default.clone());
     }
     for (name, text) in overrides {
@@ -300,6 +340,35 @@ pub(crate) fn parameter_env(scheme: &str, params: &[UserParam], overrides: &[(St
         env.insert(name.clone(), v);
     }
     Ok(env)
+}
+
+/// The parameter values a built scheme reports: every parameter with a value
+/// (one whose default is a rule in n only when given, as the built-ins').
+pub(crate) fn given_values(params: &[UserParam], env: &Env) -> Vec<(String, ParamValue)> {
+    params.iter().filter_map(|p| Some((p.name.clone(), env.get(&p.name)?.clone()))).collect()
+}
+
+/// `expr` with every free occurrence of the variable `name` replaced by
+/// `by` (a parameter's default rule in n, where the parameter is not given).
+/// A sum that binds `name` hides it in its summand; `by` has no variable but
+/// n, which no sum may bind (n is always in the environment), so nothing in
+/// `by` is captured.
+pub(crate) fn substitute(expr: &Expr, name: &str, by: &Expr) -> Expr {
+    let sub = |e: &Expr| Box::new(substitute(e, name, by));
+    match expr {
+        Expr::Var(v) if v == name => by.clone(),
+        Expr::Var(_) | Expr::Num(..) | Expr::Pi | Expr::I => expr.clone(),
+        Expr::Neg(a) => Expr::Neg(sub(a)),
+        Expr::Call(f, a) => Expr::Call(f.clone(), sub(a)),
+        Expr::Bin(op, a, b) => Expr::Bin(*op, sub(a), sub(b)),
+        Expr::Chain(first, rest) => {
+            Expr::Chain(sub(first), rest.iter().map(|(op, e)| (*op, substitute(e, name, by))).collect())
+        }
+        Expr::Sum(v, from, to, body) => {
+            let body = if v == name { body.clone() } else { sub(body) };
+            Expr::Sum(v.clone(), sub(from), sub(to), body)
+        }
+    }
 }
 
 /// The keys every lattice and curve file has, checked.
@@ -351,14 +420,14 @@ impl Head {
             Some(d) => d.get_ref().replace('\n', " "),
             None => format!("scheme file {file}"),
         };
-        let out = parameter_table(params, text, file)?;
+        let out = parameter_table(params, text, file, false)?;
         Ok(Head { file: file.to_string(), name: shown, description, affine: affine.unwrap_or(true), params: out })
     }
 
     /// Parameter values: the defaults, then `name=value` overrides (range-checked).
     pub(crate) fn values(&self, overrides: &[(String, String)]) -> Result<(Env, Params), Error> {
         let env = parameter_env(&self.name, &self.params, overrides)?;
-        let values = self.params.iter().map(|p| (p.name.clone(), env[&p.name].clone())).collect();
+        let values = given_values(&self.params, &env);
         Ok((env, Params { values }))
     }
 

@@ -12,7 +12,9 @@ use toml::Spanned;
 use super::weights::eval_f64;
 use crate::numeric::expr::{Env, Expr};
 use crate::numeric::ParamValue;
-use crate::schemes::files::{line_of, parameter_env, parameter_table, read_scheme_file, ParamDoc, WeightSite};
+use crate::schemes::files::{
+    line_of, parameter_env, parameter_table, read_scheme_file, substitute, ParamDoc, WeightSite,
+};
 use crate::sdc::slots::{Arity, Host, HostSpec, OriginKind, RuleSlots, Valence, HOSTS};
 
 // the caps every scheme file has (one place: `schemes::files`)
@@ -121,7 +123,12 @@ pub(super) struct RuleDef {
 #[derive(Clone, Debug)]
 pub struct UserParam {
     pub name: String,
+    /// the default value; empty text (and no value) when `rule` is the default
     pub default: ParamValue,
+    /// a default that is an expression in the valence n (a built-in's
+    /// "scheme rule" default): the parameter is absent until given, and the
+    /// expression stands in for it in every weight
+    pub rule: Option<Expr>,
     pub min: f64,
     pub max: f64,
     pub description: String,
@@ -261,13 +268,24 @@ impl UserSchemeDef {
             rules,
         };
         // check the defaults now, so that a file that cannot work fails at load
-        def.check(&def.env(&[])?)?;
+        def.instantiate(&[])?;
         Ok(def)
     }
 
-    /// Parameter values: the defaults, then `name=value` overrides.
-    pub(super) fn env(&self, overrides: &[(String, String)]) -> Result<Env, Error> {
-        parameter_env(&self.name, &self.params, overrides)
+    /// Parameter values (the defaults, then `name=value` overrides) and the
+    /// rules with every parameter that is not given but has a default rule in
+    /// n replaced by that rule, weights checked.
+    pub(super) fn instantiate(&self, overrides: &[(String, String)]) -> Result<(Env, Vec<RuleDef>), Error> {
+        let env = parameter_env(&self.name, &self.params, overrides)?;
+        let mut rules = self.rules.clone();
+        for p in &self.params {
+            let Some(by) = p.rule.as_ref().filter(|_| !env.contains_key(&p.name)) else { continue };
+            for field in rules.iter_mut().flat_map(|r| r.fields.iter_mut()) {
+                field.expr = substitute(&field.expr, &p.name, by);
+            }
+        }
+        self.check(&rules, &env)?;
+        Ok((env, rules))
     }
 
     /// Every weight of the rules at the default parameters, at each valence
@@ -275,9 +293,9 @@ impl UserSchemeDef {
     /// field is asked for and, for face-corner fields, every corner count m
     /// in `valences`.
     pub fn weight_sites(&self, valences: std::ops::RangeInclusive<i64>) -> Result<Vec<WeightSite>, Error> {
-        let params = self.env(&[])?;
+        let (params, rules) = self.instantiate(&[])?;
         let mut out = Vec::new();
-        for rule in &self.rules {
+        for rule in &rules {
             let ns = match rule.spec.valence {
                 Valence::Any => valences.clone(),
                 Valence::Fixed(k) => k as i64..=k as i64,
@@ -310,8 +328,8 @@ impl UserSchemeDef {
     /// on how the mesh is stored); with `affine`, every rule's weights sum to
     /// 1 (at a uniform valence n: a derived point counts as one point; with
     /// face-corner fields, at every uniform corner count m = 3..12).
-    pub(super) fn check(&self, params: &Env) -> Result<(), Error> {
-        for rule in &self.rules {
+    fn check(&self, rules: &[RuleDef], params: &Env) -> Result<(), Error> {
+        for rule in rules {
             // a rule with face-corner fields takes any polygons: checked at
             // every corner count m (quad-only families at m = 4 only), which
             // makes it affine on fans of mixed faces too, as each face then
@@ -432,7 +450,7 @@ impl Cx<'_> {
     }
 
     fn params(&self, doc: &FileDoc) -> Result<Vec<UserParam>, Error> {
-        parameter_table(&doc.params, self.text, self.file)
+        parameter_table(&doc.params, self.text, self.file, true)
     }
 
     /// The file's rule sections in the host's order, each field parsed.
@@ -506,6 +524,19 @@ impl Cx<'_> {
                         line,
                         &key,
                         "the parameter 'm' hides the corner count m of face-corner fields; rename it",
+                    ));
+                }
+                // a default rule in n is substituted for its parameter: only where there is an n
+                let by_rule = params.iter().find(|p| p.rule.is_some() && expr.variables().contains(&p.name));
+                if let (false, Some(p)) = (has_n, by_rule) {
+                    return Err(self.err(
+                        line,
+                        &key,
+                        format!(
+                            "parameter '{}' defaults to a rule in the valence n, which {section} rules do not have; \
+                             give it a number default",
+                            p.name
+                        ),
                     ));
                 }
                 for var in expr.variables() {
@@ -583,6 +614,10 @@ impl Cx<'_> {
         }
         if !params.iter().any(|p| &p.name == name) {
             return Err(self.err(line, "vertex-param", format!("'{name}' is not a parameter of the file")));
+        }
+        // per-vertex values replace a number; a default rule in n has none
+        if params.iter().any(|p| &p.name == name && p.rule.is_some()) {
+            return Err(self.err(line, "vertex-param", format!("'{name}' needs a number default")));
         }
         Ok(Some(name.clone()))
     }

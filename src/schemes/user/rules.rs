@@ -10,7 +10,7 @@ use super::weights::WeightTable;
 use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::numeric::{Inexact, Weight};
-use crate::schemes::files::intern;
+use crate::schemes::files::{given_values, intern};
 use crate::schemes::{Caps, Params, Rules, Scheme, SchemeInfo};
 use crate::sdc::slots::{weigh, Arity, Host, Mask, Slot, Wants};
 use crate::sdc::VertexParam;
@@ -57,12 +57,11 @@ impl UserSchemeDef {
 
     /// The scheme with the given parameter overrides, weights checked.
     pub fn build(&self, overrides: &[(String, String)]) -> Result<UserScheme, Error> {
-        let env = self.env(overrides)?;
-        self.check(&env)?;
-        let values = self.params.iter().map(|p| (p.name.clone(), env[&p.name].clone())).collect();
+        let (env, rules) = self.instantiate(overrides)?;
+        let values = given_values(&self.params, &env);
         let mut fields = HashMap::new();
         let (mut exprs, mut face_corner) = (Vec::new(), Vec::new());
-        for rule in &self.rules {
+        for rule in &rules {
             for f in &rule.fields {
                 fields.insert((rule.spec.name, f.family), exprs.len());
                 exprs.push(f.expr.clone());
