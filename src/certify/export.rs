@@ -42,7 +42,7 @@ use super::charmap::CharMapCertificate;
 use super::matrix::mirror_map;
 use super::spectrum::{analysis_orbits, exact_rows, SpectrumCertificate, Verdict};
 use crate::error::Error;
-use crate::matrix::local::assemble_rows;
+use crate::matrix::local::assemble_rows_rational;
 use crate::numeric::{Cyclotomic, Rational, Weight};
 use crate::refine::Combine;
 use crate::sdc::Scheme;
@@ -116,7 +116,7 @@ pub fn write(path: &std::path::Path, doc: &Value) -> Result<(), Error> {
 fn all_exact_rows(scheme: &dyn Scheme, analysis: &Analysis) -> Vec<Option<Vec<(usize, Cyclotomic)>>> {
     let everyone: Vec<usize> = (0..analysis.spectrum.labels.len()).collect();
     if let Ok(rows) =
-        assemble_rows::<Rational>(scheme, &analysis.discovered, analysis.spectrum.neighbourhood, &everyone)
+        assemble_rows_rational(scheme, &analysis.discovered, analysis.spectrum.neighbourhood, &everyone)
     {
         return rows
             .into_iter()

@@ -40,9 +40,9 @@ use super::matrix::{
 use super::power::{power_bound, PowerBound};
 use crate::dft::Orbits;
 use crate::error::Error;
-use crate::matrix::local::{assemble_rows, AssembleError};
+use crate::matrix::local::{assemble_rows, assemble_rows_rational, AssembleError};
 use crate::neighbourhood::NeighbourhoodKind;
-use crate::numeric::{Cyclotomic, Interval, Rational};
+use crate::numeric::{Cyclotomic, Interval};
 use crate::sdc::Scheme;
 use crate::spectrum::{Analysis, Method};
 use faer::c64;
@@ -517,7 +517,7 @@ pub(super) fn exact_rows(
     which: &[usize],
 ) -> Option<Vec<Vec<(usize, Cyclotomic)>>> {
     let (d, kind) = (&analysis.discovered, analysis.spectrum.neighbourhood);
-    match assemble_rows::<Rational>(scheme, d, kind, which) {
+    match assemble_rows_rational(scheme, d, kind, which) {
         Ok(rows) => {
             return Some(
                 rows.into_iter()
@@ -599,7 +599,7 @@ fn rotation_premise(
     let mut check = rotation_symmetry(&all, &exact, &fixed, orbits, labels);
     // the common case: every row off the centre rational, in one assembly
     let others: Vec<usize> = moving.iter().copied().filter(|&k| !is_rep(k)).collect();
-    if let Ok(rows) = assemble_rows::<Rational>(scheme, &analysis.discovered, s.neighbourhood, &others) {
+    if let Ok(rows) = assemble_rows_rational(scheme, &analysis.discovered, s.neighbourhood, &others) {
         for (k, row) in others.iter().zip(rows) {
             exact[*k] = Some(row.into_iter().map(|(c, w)| (c, Cyclotomic::from_rational(&w))).collect());
         }
@@ -613,7 +613,7 @@ fn rotation_premise(
         let rep = orbits.representative[o];
         let members: Vec<usize> = others.iter().copied().filter(|&k| orbits.member[k].0 == o).collect();
         check = check.and(rotation_symmetry(&all, &exact, &[rep], orbits, labels));
-        let rational = assemble_rows::<Rational>(scheme, &analysis.discovered, s.neighbourhood, &members);
+        let rational = assemble_rows_rational(scheme, &analysis.discovered, s.neighbourhood, &members);
         let chunks: Vec<&[usize]> = match (&rational, &exact_reps[o]) {
             (Ok(_), _) => vec![&members[..]],
             // nothing to compare exactly with, or too much work: on the enclosures

@@ -2,7 +2,7 @@
 //! role of neighbourhood vertex k, restricted to the (invariant) neighbourhood.
 
 use crate::neighbourhood::{Discovered, NeighbourhoodKind, VertexLabel};
-use crate::numeric::{Inexact, Weight};
+use crate::numeric::{Inexact, Rational, SmallRational, Weight};
 use crate::refine::{Combine, SparseRow};
 use crate::sdc::{Scheme, SchemeWeight, Stencil};
 
@@ -66,6 +66,29 @@ pub fn assemble_rows<W: SchemeWeight>(
             .ok_or(AssembleError::Missing)
     })?;
     restrict(set, raw)
+}
+
+/// [`assemble_rows`] in exact rationals, computed in machine-integer
+/// rationals first ([`SmallRational`]: most schemes' weights are small
+/// fractions, and big rationals allocate and reduce at every product); when
+/// a weight leaves the machine integers the rows are assembled again in big
+/// rationals. `Err(Inexact)` exactly where big rationals would give it (an
+/// irrational weight).
+pub fn assemble_rows_rational(
+    scheme: &dyn Scheme,
+    d: &Discovered,
+    kind: NeighbourhoodKind,
+    which: &[usize],
+) -> Result<Vec<Vec<(usize, Rational)>>, AssembleError> {
+    let small = assemble_rows::<SmallRational>(scheme, d, kind, which)?;
+    let exact: Option<Vec<Vec<(usize, Rational)>>> = small
+        .iter()
+        .map(|row| row.iter().map(|(c, w)| w.to_rational().map(|w| (*c, w))).collect())
+        .collect();
+    match exact {
+        Some(rows) => Ok(rows),
+        None => assemble_rows::<Rational>(scheme, d, kind, which),
+    }
 }
 
 /// The rows over one analysis step of the successors of the level-0

@@ -17,7 +17,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::dft::{fourier_blocks_from_rows, omega_pow, Orbits};
-use crate::matrix::local::{assemble_rows, assemble_rows_f64, lazy_full_f64, set_labels};
+use crate::matrix::local::{assemble_rows_f64, assemble_rows_rational, lazy_full_f64, set_labels};
 use crate::matrix::{assemble, FullMatrix, LocalMatrix};
 use crate::neighbourhood::{discover, Configuration, Discovered, NeighbourhoodKind, VertexLabel};
 use crate::numeric::recognise::recognise;
@@ -260,7 +260,7 @@ impl driver::RowSource for MeshRows<'_> {
         Ok(lazy_full_f64(self.scheme, self.discovered, self.kind)?)
     }
     fn exact_rows(&self, which: &[usize]) -> Option<driver::Rows<Rational>> {
-        assemble_rows::<Rational>(self.scheme, self.discovered, self.kind, which).ok()
+        assemble_rows_rational(self.scheme, self.discovered, self.kind, which).ok()
     }
     fn exact_matrix(&self) -> Option<LocalMatrix<Rational>> {
         assemble::<Rational>(self.scheme, self.discovered, self.kind).ok()
