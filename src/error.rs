@@ -105,6 +105,71 @@ impl From<Error> for String {
     }
 }
 
+/// Longest run of a message shown whole by [`shorten_echoes`], in characters.
+pub const MAX_ECHO_CHARS: usize = 80;
+/// Characters kept of a longer run.
+const KEPT_ECHO_CHARS: usize = 60;
+
+/// A displayed message with every long echo of user input cut to its first
+/// [`KEPT_ECHO_CHARS`] characters and "… (N bytes)": a 100 KB argument
+/// quoted whole would be an error line nobody can read. Messages quote input
+/// as `'...'`; a quoted span, or a run without whitespace outside quotes (an
+/// unquoted path or token), longer than [`MAX_ECHO_CHARS`] is cut. The
+/// message's own words are short, so only echoes are affected; whitespace
+/// and line breaks are kept. Applied where errors are displayed, so no
+/// message needs to cap what it quotes.
+pub fn shorten_echoes(message: &str) -> String {
+    fn cut(run: &str, out: &mut String) {
+        if run.chars().count() <= MAX_ECHO_CHARS {
+            out.push_str(run);
+        } else {
+            out.extend(run.chars().take(KEPT_ECHO_CHARS));
+            out.push_str(&format!("… ({} bytes)", run.len()));
+        }
+    }
+    let chars: Vec<(usize, char)> = message.char_indices().collect();
+    let start_of = |k: usize| chars.get(k).map_or(message.len(), |&(i, _)| i);
+    let mut out = String::with_capacity(message.len().min(1024));
+    let mut word_start: Option<usize> = None;
+    let mut k = 0;
+    while k < chars.len() {
+        let (i, c) = chars[k];
+        // an opening quote starts the message or follows a space, an opening
+        // bracket or an operator: "scheme's" has an apostrophe, not a quote
+        let opens = c == '\'' && (k == 0 || chars[k - 1].1.is_whitespace() || "([{=:,".contains(chars[k - 1].1));
+        // its closing quote is the next one not followed by a letter or digit
+        let close = opens
+            .then(|| {
+                (k + 1..chars.len())
+                    .find(|&j| chars[j].1 == '\'' && chars.get(j + 1).is_none_or(|&(_, d)| !d.is_alphanumeric()))
+            })
+            .flatten();
+        if let Some(j) = close {
+            if let Some(w) = word_start.take() {
+                cut(&message[w..i], &mut out);
+            }
+            out.push('\'');
+            cut(&message[start_of(k + 1)..chars[j].0], &mut out);
+            out.push('\'');
+            k = j + 1;
+            continue;
+        }
+        if c.is_whitespace() {
+            if let Some(w) = word_start.take() {
+                cut(&message[w..i], &mut out);
+            }
+            out.push(c);
+        } else if word_start.is_none() {
+            word_start = Some(i);
+        }
+        k += 1;
+    }
+    if let Some(w) = word_start {
+        cut(&message[w..], &mut out);
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -117,6 +182,38 @@ mod tests {
         assert!(matches!(Error::from("x"), Error::Message(_)));
         assert_eq!(Error::Numeric("no convergence".into()).to_string(), "no convergence");
         assert_eq!(Error::Claim("missing field 'n'".into()).to_string(), "missing field 'n'");
+    }
+
+    #[test]
+    fn long_echoes_are_cut_and_the_rest_is_kept() {
+        let long = "1+".repeat(60_000);
+        let m = shorten_echoes(&format!("reference '{long}x' at n = 3: unknown variable 'x'"));
+        let kept = "1+".repeat(30);
+        assert_eq!(m, format!("reference '{kept}… (120001 bytes)' at n = 3: unknown variable 'x'"));
+        // a quoted input with spaces is cut as one echo
+        let spaced = "1 + ".repeat(30_000);
+        let m = shorten_echoes(&format!("bad value '{spaced}' for '--valence <N>'"));
+        assert_eq!(m, format!("bad value '{}… (120000 bytes)' for '--valence <N>'", &spaced[..60]));
+        // an unquoted run (a path) too; whitespace and line breaks stay
+        let path = format!("/{}", "d".repeat(199));
+        assert_eq!(
+            shorten_echoes(&format!("cannot read {path}: no such file\nnext line")),
+            format!("cannot read {}… (201 bytes) no such file\nnext line", &path[..60])
+        );
+        // short messages, apostrophes and quotes at the edges are untouched
+        for m in [
+            "unknown scheme 'nosuch'; known schemes: catmull-clark, loop, doo-sabin, non-box, four-three, sqrt3, \
+             unified-sqrt3, tps, pgs, polar-bi2, khan-mustafa, khan-mustafa-cubic, cubic-bspline, four-point",
+            "the scheme's parameter 'a' (got 'x=1')",
+            "unexpected ''' at column 3",
+            "'",
+            "",
+        ] {
+            assert_eq!(shorten_echoes(m), m);
+        }
+        // after an apostrophe, runs are cut word by word
+        let m = shorten_echoes(&format!("the scheme's {} x", "y".repeat(100)));
+        assert_eq!(m, format!("the scheme's {}… (100 bytes) x", "y".repeat(60)));
     }
 
     #[test]

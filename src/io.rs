@@ -3,10 +3,15 @@
 //! old file intact. A library module (not part of `cli`) because figures and
 //! reports are written by library code too.
 //!
-//! - Only regular files are replaced. A symbolic link keeps pointing where it
-//!   did: the file it names is replaced. Devices and FIFOs (`/dev/null`,
-//!   `/dev/stdout`, a named pipe) are written into directly; a directory or a
-//!   dangling link is a one-line error.
+//! - Only regular files are replaced. Symbolic links are followed, those of
+//!   the folders too (`/proc/self/cwd/x`): the temporary is made and renamed
+//!   next to the real file, and a link keeps pointing where it did. Devices
+//!   and FIFOs (`/dev/null`, a named pipe) are written into directly; a
+//!   directory or a dangling link is a one-line error.
+//! - A path naming one of the process's open descriptors (`/dev/stdout`,
+//!   `/dev/fd/N`, `/proc/self/fd/N`) is written through that descriptor, as
+//!   standard output is: `-o /dev/stdout >> log` appends to `log`, and
+//!   `-o /dev/stdout > log` leaves exactly the output in it.
 //! - A new file gets the mode 0666 minus the umask (as `>` in a shell); a
 //!   replaced file keeps its mode.
 //! - Temporaries are named `.NAME.subdlab-PID-K.tmp`. They are removed when
@@ -42,31 +47,121 @@ pub fn version_line() -> String {
     }
 }
 
+/// The text of an input file's bytes (mesh, scheme, claim and parameter
+/// files all read through here): UTF-8 without the byte-order mark some
+/// editors put first, which would otherwise be part of the first line
+/// (`\u{feff}v 0 0 0` is no vertex, `\u{feff}name = ...` no TOML key).
+pub fn decode_text(mut bytes: Vec<u8>) -> std::result::Result<String, std::string::FromUtf8Error> {
+    const BOM: &[u8] = "\u{feff}".as_bytes();
+    if bytes.starts_with(BOM) {
+        bytes.drain(..BOM.len());
+    }
+    String::from_utf8(bytes)
+}
+
 /// Writes `contents` to `path` (see the module documentation).
 pub fn write_atomic(path: &Path, contents: &[u8]) -> Result<()> {
     let fail = |why: &dyn std::fmt::Display| Error::Write { path: path.display().to_string(), reason: why.to_string() };
-    match fs::symlink_metadata(path) {
-        Ok(m) if m.file_type().is_symlink() => match fs::metadata(path) {
-            Ok(t) if t.is_file() && !is_special_path(path) => {
-                let real = fs::canonicalize(path).map_err(|e| fail(&e))?;
-                replace(&real, contents, Some(&t)).map_err(|e| fail(&e))
-            }
-            Ok(t) if t.is_dir() => Err(fail(&"it is a directory")),
-            Ok(_) => write_in_place(path, contents).map_err(|e| fail(&e)),
-            Err(_) => Err(fail(&"it is a symbolic link to a file that does not exist")),
-        },
-        Ok(m) if m.is_dir() => Err(fail(&"it is a directory")),
-        Ok(m) if m.is_file() && !is_special_path(path) => replace(path, contents, Some(&m)).map_err(|e| fail(&e)),
-        Ok(_) => write_in_place(path, contents).map_err(|e| fail(&e)),
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => replace(path, contents, None).map_err(|e| fail(&e)),
-        Err(e) => Err(fail(&e)),
+    match resolve(path).map_err(|e| fail(&e))? {
+        Target::Missing(real) => replace(&real, contents, None).map_err(|e| fail(&e)),
+        Target::Existing(_, m) if m.is_dir() => Err(fail(&"it is a directory")),
+        Target::Existing(real, m) if m.is_file() => replace(&real, contents, Some(&m)).map_err(|e| fail(&e)),
+        Target::Existing(real, _) => write_in_place(&real, contents).map_err(|e| fail(&e)),
+        Target::Descriptor(fd) => write_descriptor(fd, contents).map_err(|e| fail(&e)),
+        Target::Dangling => Err(fail(&"it is a symbolic link to a file that does not exist")),
     }
 }
 
-/// Paths the system provides (`/dev/stdout` may resolve to a regular file
-/// when standard output is redirected): written in place, never replaced.
-fn is_special_path(path: &Path) -> bool {
-    path.starts_with("/dev") || path.starts_with("/proc")
+/// Where a path written to leads, symbolic links followed.
+#[derive(Debug)]
+enum Target {
+    /// a file or directory at this real path (no link in it)
+    Existing(PathBuf, fs::Metadata),
+    /// nothing yet at this real path (its folder exists)
+    Missing(PathBuf),
+    /// one of the process's own open descriptors (`/dev/stdout`,
+    /// `/dev/fd/N`, `/proc/self/fd/N`): the file the caller opened, with the
+    /// caller's offset and append mode
+    Descriptor(i32),
+    /// a symbolic link to nothing
+    Dangling,
+}
+
+/// Follows every symbolic link of `path` (its folders' too, such as
+/// `/proc/self/cwd`) to the real place of the file, so a temporary is made
+/// and renamed next to the real file, never next to a link or inside /proc.
+/// The links of /proc that name the process's descriptors are not followed:
+/// opening one would open the file anew, at offset 0 and without the
+/// caller's append mode, and overwrite what the file held in place.
+fn resolve(path: &Path) -> std::io::Result<Target> {
+    let mut path = path.to_path_buf();
+    // as the kernel's limit on links followed in one lookup
+    for _ in 0..40 {
+        let name = match path.file_name() {
+            Some(n) => n.to_os_string(),
+            // "/", "..", "a/..": a folder (or nothing), never a file to write
+            None => return fs::metadata(&path).map(|m| Target::Existing(path.clone(), m)),
+        };
+        let parent = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+        let folder = fs::canonicalize(parent)?;
+        if let Some(fd) = own_descriptor(&folder, &name) {
+            return Ok(Target::Descriptor(fd));
+        }
+        let real = folder.join(&name);
+        match fs::symlink_metadata(&real) {
+            Ok(m) if m.file_type().is_symlink() => {
+                // a relative link is relative to the folder it is in (an
+                // absolute one replaces the path whole)
+                path = folder.join(fs::read_link(&real)?);
+                if fs::symlink_metadata(&path).is_err() {
+                    return Ok(Target::Dangling);
+                }
+            }
+            Ok(m) => return Ok(Target::Existing(real, m)),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Target::Missing(real)),
+            Err(e) => return Err(e),
+        }
+    }
+    Err(std::io::Error::new(std::io::ErrorKind::InvalidInput, "too many levels of symbolic links"))
+}
+
+/// The descriptor `name` names when `folder` (canonical) is this process's
+/// descriptor folder, `/proc/PID/fd` or `/proc/PID/task/TID/fd`
+/// (`/proc/self/fd`, `/dev/fd` and `/proc/thread-self/fd` canonicalise to
+/// these).
+fn own_descriptor(folder: &Path, name: &std::ffi::OsStr) -> Option<i32> {
+    let fd: i32 = name.to_str()?.parse().ok()?;
+    let process = Path::new("/proc").join(std::process::id().to_string());
+    let tasks = process.join("task");
+    let own = folder == process.join("fd")
+        || (folder.file_name() == Some("fd".as_ref()) && folder.parent().and_then(Path::parent) == Some(&tasks));
+    own.then_some(fd)
+}
+
+/// Writes into an open descriptor of the process (see [`Target::Descriptor`]).
+#[cfg(unix)]
+fn write_descriptor(fd: i32, contents: &[u8]) -> std::io::Result<()> {
+    use std::os::unix::io::FromRawFd;
+    if fd == 1 && stdout_closed() {
+        // the runtime's /dev/null stands in for a closed standard output
+        return Err(std::io::Error::new(std::io::ErrorKind::BrokenPipe, "standard output is closed"));
+    }
+    // SAFETY: fcntl(F_DUPFD_CLOEXEC) only duplicates the descriptor; the
+    // duplicate is owned by the File and closed when it drops, the caller's
+    // descriptor stays open.
+    let dup = unsafe { libc::fcntl(fd, libc::F_DUPFD_CLOEXEC, 0) };
+    if dup == -1 {
+        return Err(std::io::Error::last_os_error());
+    }
+    // SAFETY: `dup` is a fresh descriptor nothing else owns.
+    let mut f = unsafe { File::from_raw_fd(dup) };
+    f.write_all(contents)?;
+    f.flush()
+}
+
+#[cfg(not(unix))]
+fn write_descriptor(_fd: i32, _contents: &[u8]) -> std::io::Result<()> {
+    Err(std::io::Error::new(std::io::ErrorKind::Unsupported, "descriptor paths are a Unix feature"))
 }
 
 fn write_in_place(path: &Path, contents: &[u8]) -> std::io::Result<()> {
@@ -238,15 +333,14 @@ mod cleanup {
 
 /// Writes text to standard output; a failed write (a full disk, a closed
 /// descriptor) is the one-line error "cannot write to standard output: ...".
+/// Every command's output goes through here (or [`print_json`]): `print!`
+/// would panic on such a failure.
 pub fn out(text: &str) -> Result<()> {
     if text.is_empty() {
         return Ok(());
     }
-    #[cfg(unix)]
-    {
-        if stdout_was_closed() {
-            return Err(stdout_error("it is closed"));
-        }
+    if stdout_closed() {
+        return Err(stdout_error("it is closed"));
     }
     let mut o = std::io::stdout().lock();
     o.write_all(text.as_bytes()).and_then(|_| o.flush()).map_err(stdout_error)
@@ -257,27 +351,40 @@ fn stdout_error(reason: impl std::fmt::Display) -> Error {
     Error::Write { path: "to standard output".into(), reason: reason.to_string() }
 }
 
-/// Whether the process started with standard output closed (`>&-`). Rust's
-/// runtime then opens /dev/null read-write on descriptor 1, which a shell's
-/// `> /dev/null` (write-only) never does; a descriptor that is closed now
-/// counts too.
-#[cfg(unix)]
-fn stdout_was_closed() -> bool {
-    // SAFETY: fcntl and fstat only query descriptor 1; `st` is plain data.
-    unsafe {
-        let flags = libc::fcntl(1, libc::F_GETFL);
-        if flags == -1 {
-            return true;
+/// Whether standard output was closed when the process started (`>&-`),
+/// as [`record_stdout_at_start`] saw it.
+static STDOUT_CLOSED_AT_START: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Records whether descriptor 1 is open. The binary calls this before
+/// `main` (from an `.init_array` constructor): by the time `main` runs, Rust's
+/// runtime has put /dev/null (opened read-write) on a closed descriptor 1,
+/// and that cannot be told from a /dev/null the caller opened read-write on
+/// purpose (`1<>/dev/null`, Python's `subprocess.DEVNULL`), which is a valid
+/// place to write. Only queries the descriptor and stores a flag, so it is
+/// safe to run before the runtime is set up.
+pub fn record_stdout_at_start() {
+    #[cfg(unix)]
+    {
+        // SAFETY: fcntl only queries descriptor 1.
+        if unsafe { libc::fcntl(1, libc::F_GETFD) } == -1 {
+            STDOUT_CLOSED_AT_START.store(true, std::sync::atomic::Ordering::Relaxed);
         }
-        let mut st: libc::stat = std::mem::zeroed();
-        if libc::fstat(1, &mut st) != 0 {
-            return true;
-        }
-        let dev_null = (st.st_mode & libc::S_IFMT) == libc::S_IFCHR
-            && libc::major(st.st_rdev) == 1
-            && libc::minor(st.st_rdev) == 3;
-        dev_null && (flags & libc::O_ACCMODE) == libc::O_RDWR
     }
+}
+
+/// Standard output was closed at start-up, or is closed now.
+fn stdout_closed() -> bool {
+    if STDOUT_CLOSED_AT_START.load(std::sync::atomic::Ordering::Relaxed) {
+        return true;
+    }
+    #[cfg(unix)]
+    {
+        // SAFETY: fcntl only queries descriptor 1.
+        if unsafe { libc::fcntl(1, libc::F_GETFD) } == -1 {
+            return true;
+        }
+    }
+    false
 }
 
 /// The JSON text of a value, with the tool's version, the git commit (when
@@ -320,6 +427,14 @@ pub fn printable(s: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn decode_text_drops_a_leading_byte_order_mark_only() {
+        assert_eq!(decode_text(b"\xEF\xBB\xBFv 0 0 0\n".to_vec()).unwrap(), "v 0 0 0\n");
+        assert_eq!(decode_text(b"a\xEF\xBB\xBF".to_vec()).unwrap(), "a\u{feff}");
+        assert_eq!(decode_text(b"\xEF\xBB\xBF\xEF\xBB\xBF".to_vec()).unwrap(), "\u{feff}");
+        assert!(decode_text(b"\xEF\xBB".to_vec()).is_err());
+    }
 
     #[test]
     fn printable_escapes_control_characters() {

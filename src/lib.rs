@@ -28,6 +28,10 @@
 //!
 //! The [`prelude`] exports what a library user needs for the common calls.
 
+// Output goes through `io::out`, which reports a failed write (a full disk)
+// as the one-line error: `print!` panics instead.
+#![deny(clippy::print_stdout)]
+
 pub mod error;
 pub mod io;
 pub mod mesh;

@@ -12,3 +12,19 @@ fn main() {
     subdlab::io::install_cleanup_handlers();
     std::process::exit(subdlab::cli::main());
 }
+
+/// Runs before `main`, and so before Rust's runtime replaces a closed
+/// standard output with /dev/null: the only moment a closed descriptor 1
+/// (`>&-`) can be told from one open on /dev/null (see
+/// `subdlab::io::record_stdout_at_start`). glibc and musl call the
+/// `.init_array` entries before `main`; elsewhere nothing is recorded and a
+/// closed standard output reads as /dev/null.
+#[cfg(any(target_os = "linux", target_os = "android"))]
+#[used]
+#[link_section = ".init_array"]
+static RECORD_STDOUT_AT_START: extern "C" fn() = {
+    extern "C" fn record() {
+        subdlab::io::record_stdout_at_start();
+    }
+    record
+};

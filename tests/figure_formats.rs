@@ -1,6 +1,7 @@
 //! Figure formats chosen by extension: the same figure as SVG, PDF and PNG,
 //! each parsed back (SVG size and text, PDF header, page count, page size and
-//! embedded font, PNG signature and size), and an unknown extension refused.
+//! embedded font, PNG signature and size), and an unknown extension refused;
+//! hostile titles and run-to-run determinism.
 
 mod common;
 use common::{fails, subdlab};
@@ -642,6 +643,76 @@ fn wedge_figure_has_a_legend_and_the_style_flags() {
     for (_, p) in &d.polygons {
         for &(x, y) in p {
             assert!(fx(x) >= -2.0 * ux && fy(y) >= -2.0 * uy, "({}, {}) outside the quarter plane", fx(x), fy(y));
+        }
+    }
+}
+
+/// Control characters in a title (XML 1.0 cannot carry them, even as
+/// `&#1;`) are shown as their escapes, and `&<>"'` are escaped: every figure
+/// command writes well-formed SVG, read back by an XML parser with the title
+/// intact; PDF and PNG are made from the same SVG.
+#[test]
+fn titles_with_markup_and_control_characters_give_well_formed_figures() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("f.svg");
+    let f = file.to_str().unwrap();
+    let title = "a<b>&\"c'd\u{1}e\u{1b}[31m\u{7}\tf";
+    let shown = "a<b>&\"c'd\\u{1}e\\u{1b}[31m\\u{7}\tf";
+    let commands: [Vec<&str>; 6] = [
+        vec!["charmap", "loop", "-n", "7", "--out", f],
+        vec!["charmap", "loop", "-n", "7", "--wedge", "--out", f],
+        vec!["plot", "spectrum", "loop", "--valences", "3..6", "--out", f],
+        vec!["plot", "compare", "--curve", "loop", "--valences", "3..6", "--out", f],
+        vec!["curvature", "loop", "-n", "7", "--out", f],
+        vec!["sweep", "non-box", "--valences", "3..4", "--param", "a=0:1:1/2", "--plot", f],
+    ];
+    for args in commands {
+        let args: Vec<&str> = args.into_iter().chain(["--title", title]).collect();
+        let out = subdlab(&args);
+        assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+        let svg = std::fs::read_to_string(&file).unwrap();
+        let doc = roxmltree::Document::parse(&svg).unwrap_or_else(|e| panic!("{args:?}: not well-formed: {e}"));
+        let texts: Vec<String> = doc
+            .descendants()
+            .filter(|n| n.has_tag_name("text"))
+            .map(|n| n.text().unwrap_or("").trim().to_string())
+            .collect();
+        assert!(texts.iter().any(|t| t == shown), "{args:?}: {texts:?}");
+    }
+    for ext in ["pdf", "png"] {
+        let file = dir.path().join(format!("f.{ext}"));
+        let out = subdlab(&["charmap", "loop", "-n", "7", "--title", title, "--out", file.to_str().unwrap()]);
+        assert!(out.status.success(), "{ext}: {}", String::from_utf8_lossy(&out.stderr));
+    }
+}
+
+/// The same figure is the same bytes: two processes (hash maps seeded
+/// differently) with one and two worker threads write identical SVG and PDF.
+#[test]
+fn figures_are_byte_identical_across_runs_and_thread_counts() {
+    let dir = tempfile::tempdir().unwrap();
+    for ext in ["svg", "pdf"] {
+        let figures: [&[&str]; 2] = [
+            &["plot", "spectrum", "loop", "--valences", "3..8"],
+            &["plot", "compare", "--curve", "loop", "--curve", "catmull-clark", "--valences", "3..8"],
+        ];
+        for args in figures {
+            let bytes: Vec<Vec<u8>> = ["1", "2", "1"]
+                .iter()
+                .enumerate()
+                .map(|(k, threads)| {
+                    let file = dir.path().join(format!("f{k}.{ext}"));
+                    let out = std::process::Command::new(env!("CARGO_BIN_EXE_subdlab"))
+                        .args(args)
+                        .args(["-o", file.to_str().unwrap()])
+                        .env("RAYON_NUM_THREADS", threads)
+                        .output()
+                        .unwrap();
+                    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+                    std::fs::read(file).unwrap()
+                })
+                .collect();
+            assert!(bytes[0] == bytes[1] && bytes[1] == bytes[2], "{args:?} {ext}: runs differ");
         }
     }
 }

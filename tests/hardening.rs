@@ -98,6 +98,58 @@ fn symlinks_keep_pointing_and_special_files_are_written_in_place() {
     assert_eq!(names, ["dangling", "link.mtx", "pipe", "target.txt"]);
 }
 
+/// The text `matrix loop -n 3` writes (to standard output, or any -o file).
+fn loop_matrix() -> Vec<u8> {
+    let o = subdlab(&["matrix", "loop", "-n", "3"]);
+    assert!(o.status.success() && o.stdout.starts_with(b"%%MatrixMarket"));
+    o.stdout
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn outputs_through_proc_and_dev_links_are_replaced_or_appended_never_mixed() {
+    let dir = tempfile::tempdir().unwrap();
+    let want = loop_matrix();
+    // old contents longer than the new: written in place, their tail would stay
+    let old = vec![b'z'; want.len() + 5000];
+    let run = |out: &str, stdout: std::process::Stdio| {
+        let o = std::process::Command::new(env!("CARGO_BIN_EXE_subdlab"))
+            .current_dir(dir.path())
+            .args(["matrix", "loop", "-n", "3", "-o", out])
+            .stdout(stdout)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{out}: {}", String::from_utf8_lossy(&o.stderr));
+    };
+    // a folder reached through a link (/proc/self/cwd): the real file is replaced
+    let real = dir.path().join("x.mtx");
+    std::fs::write(&real, &old).unwrap();
+    run("/proc/self/cwd/x.mtx", std::process::Stdio::null());
+    assert_eq!(std::fs::read(&real).unwrap(), want);
+    // a relative link in another folder: the file it names is replaced
+    std::fs::create_dir(dir.path().join("sub")).unwrap();
+    std::os::unix::fs::symlink("../x.mtx", dir.path().join("sub/l.mtx")).unwrap();
+    std::fs::write(&real, &old).unwrap();
+    run("sub/l.mtx", std::process::Stdio::null());
+    assert_eq!(std::fs::read(&real).unwrap(), want);
+    assert!(std::fs::symlink_metadata(dir.path().join("sub/l.mtx")).unwrap().file_type().is_symlink());
+    // standard output appended to a log (`-o /dev/stdout >> log`): the log
+    // keeps what it had and gains the output, as `>>` means
+    let log = dir.path().join("log.txt");
+    for path in ["/dev/stdout", "/dev/fd/1", "/proc/self/fd/1"] {
+        std::fs::write(&log, &old).unwrap();
+        run(path, std::fs::OpenOptions::new().append(true).open(&log).unwrap().into());
+        assert_eq!(std::fs::read(&log).unwrap(), [old.as_slice(), &want].concat(), "{path} >> log");
+        // `> log`: the shell empties the log, which then holds exactly the output
+        run(path, std::fs::File::create(&log).unwrap().into());
+        assert_eq!(std::fs::read(&log).unwrap(), want, "{path} > log");
+    }
+    let mut names: Vec<String> =
+        std::fs::read_dir(dir.path()).unwrap().map(|e| e.unwrap().file_name().into_string().unwrap()).collect();
+    names.sort();
+    assert_eq!(names, ["log.txt", "sub", "x.mtx"], "no temporaries left");
+}
+
 #[cfg(unix)]
 extern "C" {
     #[link_name = "mkfifo"]
@@ -182,17 +234,59 @@ fn interrupted_writes_leave_no_temporary_and_stale_ones_are_removed() {
 
 // ------------------------------------------------------------ standard output, usage
 
+/// Typical invocations of every subcommand that prints to standard output
+/// (`report` prints through the same `io::out` but takes minutes: left out).
+fn printing_invocations(figure: &str) -> Vec<Vec<String>> {
+    let cube = Path::new(env!("CARGO_MANIFEST_DIR")).join("meshes/cube.obj");
+    let cube = cube.to_str().unwrap();
+    let scheme_file = Path::new(env!("CARGO_MANIFEST_DIR")).join("schemes/loop.toml");
+    let lists: [&[&str]; 17] = [
+        &["schemes"],
+        &["schemes", scheme_file.to_str().unwrap()],
+        &["spectrum", "loop", "-n", "5", "--json"],
+        &["spectrum", "loop", "-n", "5", "--certify"],
+        &["stencils", "loop", "-n", "5"],
+        &["matrix", "loop", "-n", "3"],
+        &["curve", "four-point"],
+        &["charmap", "loop", "-n", "5"],
+        &["curvature", "loop", "-n", "7"],
+        &["curvature", "loop", "-n", "7", "--json"],
+        &["curvature", "loop", "-n", "7", "--out", figure],
+        &["sweep", "loop", "--valences", "3..5"],
+        &["sweep", "loop", "--valences", "3..5", "--csv"],
+        &["verify", "--paper", "khan-mustafa"],
+        &["matrix", "loop", "-n", "3", "-o", "/dev/stdout"],
+        &["--help"],
+        &["--version"],
+    ];
+    let mut all: Vec<Vec<String>> = lists.iter().map(|a| a.iter().map(|s| s.to_string()).collect()).collect();
+    // commands that write files only: nothing to fail on standard output
+    let refined = figure.replace(".svg", ".obj");
+    let quiet: [&[&str]; 2] = [
+        &["refine", cube, "--scheme", "catmull-clark", "-l", "1", "-o", &refined],
+        &["plot", "spectrum", "loop", "--valences", "3..5", "-o", figure],
+    ];
+    all.extend(quiet.iter().map(|a| a.iter().map(|s| s.to_string()).collect()));
+    all
+}
+
 #[cfg(unix)]
 #[test]
 fn full_or_closed_stdout_is_a_one_line_error() {
-    for args in [vec!["schemes"], vec!["spectrum", "loop", "-n", "5", "--json"], vec!["--help"]] {
+    let dir = tempfile::tempdir().unwrap();
+    let figure = dir.path().join("f.svg");
+    for args in printing_invocations(figure.to_str().unwrap()) {
         let full = std::fs::OpenOptions::new().write(true).open("/dev/full").unwrap();
         let out = std::process::Command::new(env!("CARGO_BIN_EXE_subdlab")).args(&args).stdout(full).output().unwrap();
         let err = String::from_utf8_lossy(&out.stderr);
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        if args[0] == "refine" || args[0] == "plot" {
+            assert_eq!(out.status.code(), Some(0), "{args:?}: {err}");
+            continue;
+        }
         assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
-        assert!(!err.contains("panicked"), "{err}");
-        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
-        assert!(err.contains("cannot write to standard output"), "{err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains("cannot write"), "{args:?}: {err}");
     }
     // a closed stdout (`>&-`)
     let out = std::process::Command::new("sh")
@@ -202,6 +296,95 @@ fn full_or_closed_stdout_is_a_one_line_error() {
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("standard output: it is closed"));
+}
+
+#[cfg(unix)]
+#[test]
+fn stdout_on_dev_null_opened_read_write_is_written() {
+    // what Python's subprocess.DEVNULL and the shell's `1<>/dev/null` give:
+    // a valid place to write, unlike a closed descriptor (above)
+    let null = std::fs::OpenOptions::new().read(true).write(true).open("/dev/null").unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_subdlab")).arg("schemes").stdout(null).output().unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(out.stderr.is_empty(), "{}", String::from_utf8_lossy(&out.stderr));
+    let out = std::process::Command::new("sh")
+        .arg("-c")
+        .arg(format!("'{}' curvature loop -n 7 1<>/dev/null", env!("CARGO_BIN_EXE_subdlab")))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+}
+
+#[test]
+fn long_inputs_are_cut_in_error_lines() {
+    let dir = tempfile::tempdir().unwrap();
+    let svg = dir.path().join("r.svg");
+    let svg = svg.to_str().unwrap();
+    let run = |reference: &str| {
+        let out = subdlab(&["plot", "spectrum", "loop", "--valences", "3..4", "--reference", reference, "-o", svg]);
+        assert_eq!(out.status.code(), Some(2));
+        String::from_utf8(out.stderr).unwrap()
+    };
+    // 120,001 characters without a space, then with spaces: one short line
+    // naming the size, the message's own words kept
+    for reference in ["1+".repeat(60_000) + "x", "1 + ".repeat(30_000) + "x"] {
+        let err = run(&reference);
+        assert_eq!(err.trim_end().lines().count(), 1, "{}", &err[..err.len().min(400)]);
+        assert!(err.len() < 300, "{} bytes: {}", err.len(), &err[..err.len().min(400)]);
+        assert!(err.starts_with(&format!("error: reference '{}", &reference[..40])), "{err}");
+        assert!(err.contains(&format!("… ({} bytes)", reference.len())), "{err}");
+    }
+    // a value clap refuses is echoed by clap's usage message: cut too
+    let out = subdlab(&["spectrum", "loop", "-n", &"9".repeat(120_000)]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stderr.len() < 600, "{}", String::from_utf8_lossy(&out.stderr[..out.stderr.len().min(600)]));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("… (120000 bytes)"));
+}
+
+// ------------------------------------------------------------ input files
+
+#[test]
+fn a_byte_order_mark_is_not_part_of_the_first_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let bom = |text: &str| [b"\xEF\xBB\xBF".as_slice(), text.as_bytes()].concat();
+    // a tetrahedron whose first line is a vertex: refined the same with a mark
+    let obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
+    // unified-sqrt3 with one alpha per vertex, first line a value
+    let alphas = "0\n1/2\n1\n3/2\n";
+    let mesh = dir.path().join("t.obj");
+    let params = dir.path().join("alpha.txt");
+    let refine = |out: &str| {
+        let out = dir.path().join(out);
+        let mut args = vec!["refine", mesh.to_str().unwrap(), "--scheme", "unified-sqrt3", "-l", "1"];
+        args.extend(["--vertex-params", params.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+        let o = subdlab(&args);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        std::fs::read(out).unwrap()
+    };
+    std::fs::write(&mesh, obj).unwrap();
+    std::fs::write(&params, alphas).unwrap();
+    let plain = refine("plain.obj");
+    assert!(String::from_utf8_lossy(&plain).lines().filter(|l| l.starts_with("f ")).count() > 4);
+    std::fs::write(&mesh, bom(obj)).unwrap();
+    std::fs::write(&params, bom(alphas)).unwrap();
+    assert_eq!(refine("marked.obj"), plain);
+    // scheme and claim files whose first line is a key
+    let scheme = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("schemes/loop.toml")).unwrap();
+    let scheme: String =
+        scheme.lines().filter(|l| !l.starts_with('#') && !l.is_empty()).map(|l| l.to_string() + "\n").collect();
+    let file = dir.path().join("s.toml");
+    let describe = |text: Vec<u8>| {
+        std::fs::write(&file, text).unwrap();
+        let o = subdlab(&["schemes", file.to_str().unwrap(), "--json"]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        o.stdout
+    };
+    assert_eq!(describe(bom(&scheme)), describe(scheme.into_bytes()));
+    let claims = claim_file(dir.path(), "c.toml", &claim("a", "check = \"identity\"\nlhs = \"1/2\"\nrhs = \"2/4\""));
+    let text = std::fs::read_to_string(&claims).unwrap();
+    std::fs::write(&claims, bom(&text)).unwrap();
+    let (v, _) = verdicts(&["verify", "--claims", &claims]);
+    assert_eq!(v, [("a".to_string(), "HOLDS".to_string())]);
 }
 
 #[test]

@@ -81,8 +81,7 @@ pub fn run(a: &CurvatureArgs) -> Result<(), Error> {
     if a.json {
         print_json(&c)
     } else {
-        print!("{}", table(&c));
-        Ok(())
+        crate::io::out(&table(&c))
     }
 }
 

@@ -232,23 +232,39 @@ pub fn main() -> i32 {
                 return match crate::io::out(&e.to_string()) {
                     Ok(()) => 0,
                     Err(m) => {
-                        eprintln!("error: {m}");
+                        error_line(&m);
                         2
                     }
                 };
             }
-            // a usage error (or the help after a bare `subdlab`): clap's whole message
-            eprint!("{}", e.render());
+            // a usage error (or the help after a bare `subdlab`): clap's whole
+            // message, with a long echoed argument cut (see `error_line`)
+            to_stderr(&crate::error::shorten_echoes(&e.render().to_string()));
             return 2;
         }
     };
     match commands::dispatch(cli.command) {
         Ok(code) => code,
         Err(e) => {
-            eprintln!("error: {}", crate::io::printable(&e.to_string()));
+            error_line(&e);
             2
         }
     }
+}
+
+/// Shows an error as the one line "error: MESSAGE": control characters
+/// escaped, long echoes of the user's input cut
+/// ([`crate::error::shorten_echoes`]).
+fn error_line(e: &crate::error::Error) {
+    let line = crate::error::shorten_echoes(&crate::io::printable(&e.to_string()));
+    to_stderr(&format!("error: {line}\n"));
+}
+
+/// Writes to standard error; when even that fails (a full disk) there is
+/// nowhere left to report to, and the exit status still says it.
+fn to_stderr(text: &str) {
+    use std::io::Write;
+    let _ = std::io::stderr().lock().write_all(text.as_bytes());
 }
 
 /// Runs the command line; usage errors and failures are the message (see

@@ -29,7 +29,7 @@ pub(super) fn read_capped(path: &Path, limit: u64, what: &str) -> Result<String,
     if bytes.len() as u64 > limit {
         return Err(Error::File(format!("{}: {what} larger than {} MiB", path.display(), limit >> 20)));
     }
-    String::from_utf8(bytes).map_err(|_| Error::File(format!("{}: not UTF-8 text", path.display())))
+    crate::io::decode_text(bytes).map_err(|_| Error::File(format!("{}: not UTF-8 text", path.display())))
 }
 
 /// A file that could not be read or parsed: one ERROR outcome standing for it,

@@ -56,7 +56,7 @@ fn read_file(path: &Path) -> Result<ObjMesh, Error> {
     if bytes.len() as u64 > MAX_FILE_BYTES {
         return Err(too_large());
     }
-    let text = String::from_utf8(bytes).map_err(|e| {
+    let text = crate::io::decode_text(bytes).map_err(|e| {
         // report the line of the first invalid byte
         let line = 1 + e.as_bytes()[..e.utf8_error().valid_up_to()].iter().filter(|&&b| b == b'\n').count();
         Error::File(format!("{}: line {line}: not valid UTF-8 text", path.display()))

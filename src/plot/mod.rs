@@ -10,6 +10,11 @@
 //! the same SVG rasterised (resvg) at `Style::dpi`, so a PNG looks like the
 //! PDF at that resolution: a figure's size is in points, and the PNG has
 //! size × dpi / 72 pixels. Files are written atomically (`io::write_atomic`).
+//!
+//! The same figure is the same bytes in every run and at every thread count
+//! (SVG as drawn; PDF with its resource dictionaries in a fixed order, see
+//! `sort_resource_entries`). Text XML cannot carry (control characters in a
+//! title) is shown escaped (`xml_safe`).
 
 pub mod charmap;
 pub mod compare;
@@ -83,7 +88,26 @@ pub fn render_svg<F: Figure>(fig: &F) -> Result<String, Error> {
         fig.draw(&root)?;
         root.present().map_err(|e| Error::Message(format!("cannot draw the figure: {e}")))?;
     }
-    Ok(svg)
+    Ok(xml_safe(svg))
+}
+
+/// Whether XML 1.0 can carry `c` at all (its `Char` production): not the
+/// C0 controls other than tab, line feed and carriage return, nor U+FFFE
+/// and U+FFFF, even escaped as `&#1;`.
+fn is_xml_char(c: char) -> bool {
+    matches!(c, '\t' | '\n' | '\r' | '\u{20}'..='\u{d7ff}' | '\u{e000}'..='\u{fffd}' | '\u{10000}'..)
+}
+
+/// The SVG with every character XML cannot carry shown as its escape
+/// (`\u{1b}`, as in error messages). Only text can hold one (a title, a
+/// scheme name, a reference expression: the user's), and plotters already
+/// escapes `&<>"'` in it but not these, so the whole document is filtered
+/// here, once, for every text of every figure and format.
+fn xml_safe(svg: String) -> String {
+    if svg.chars().all(is_xml_char) {
+        return svg;
+    }
+    svg.chars().map(|c| if is_xml_char(c) { c.to_string() } else { c.escape_unicode().to_string() }).collect()
 }
 
 /// The family name of the embedded font, as its name table gives it.
@@ -114,7 +138,48 @@ fn svg_tree(svg: &str) -> Result<svg2pdf::usvg::Tree, Error> {
 pub fn svg_to_pdf(svg: &str) -> Result<Vec<u8>, Error> {
     let tree = svg_tree(svg)?;
     svg2pdf::to_pdf(&tree, svg2pdf::ConversionOptions::default(), svg2pdf::PageOptions::default())
+        .map(|pdf| sort_resource_entries(&pdf))
         .map_err(|e| Error::Message(format!("cannot convert the figure to PDF: {e}")))
+}
+
+/// The resource dictionaries whose entries svg2pdf writes in the order of a
+/// `HashMap` (a new random order in every process).
+const RESOURCE_DICTIONARIES: [&[u8]; 6] =
+    [b"/XObject <<", b"/ExtGState <<", b"/Pattern <<", b"/Shading <<", b"/Font <<", b"/ColorSpace <<"];
+
+/// The PDF with the entries of every resource dictionary sorted, so the same
+/// figure is the same bytes in every run. svg2pdf writes one entry per line
+/// (`/xo12 30 0 R`); sorting permutes whole lines inside the dictionary, so
+/// no byte offset changes and the cross-reference table stays right. Streams
+/// (binary) are skipped; a dictionary whose lines are not all single entries
+/// is left as it is.
+fn sort_resource_entries(pdf: &[u8]) -> Vec<u8> {
+    let lines: Vec<&[u8]> = pdf.split(|&b| b == b'\n').collect();
+    let single_entry = |l: &[u8]| {
+        let l = l.trim_ascii();
+        l.starts_with(b"/") && !l.windows(2).any(|w| w == b"<<" || w == b">>")
+    };
+    let mut sorted: Vec<&[u8]> = Vec::with_capacity(lines.len());
+    let (mut k, mut in_stream) = (0, false);
+    while k < lines.len() {
+        let line = lines[k];
+        sorted.push(line);
+        k += 1;
+        if in_stream {
+            in_stream = line != b"endstream";
+        } else if line == b"stream" {
+            in_stream = true;
+        } else if RESOURCE_DICTIONARIES.contains(&line.trim_ascii()) {
+            let Some(len) = lines[k..].iter().position(|l| l.trim_ascii() == b">>") else { continue };
+            let mut entries = lines[k..k + len].to_vec();
+            if entries.iter().all(|l| single_entry(l)) {
+                entries.sort_unstable();
+            }
+            sorted.extend(entries);
+            k += len;
+        }
+    }
+    sorted.join(&b'\n')
 }
 
 /// Most pixels of a PNG (a bound on memory: four bytes each).

@@ -60,7 +60,7 @@ pub(crate) fn read_scheme_file(path: &Path) -> Result<String, Error> {
     if bytes.len() > MAX_FILE_BYTES {
         return Err(Error::File(format!("{shown}: larger than {MAX_FILE_BYTES} bytes; scheme files are short")));
     }
-    String::from_utf8(bytes).map_err(|_| Error::File(format!("{shown}: not UTF-8 text")))
+    crate::io::decode_text(bytes).map_err(|_| Error::File(format!("{shown}: not UTF-8 text")))
 }
 
 /// The family a file's text declares. Text that is not TOML, or whose
