@@ -213,10 +213,10 @@ pub fn local_matrix<W: LatticeWeight>(scheme: &dyn LatticeScheme, w: &Window) ->
 /// Largest |offset| (in either coordinate) of a mask accepted. The window is
 /// two-dimensional: its side grows with the reach, so its points as the
 /// square of the reach, and the exact stage's characteristic polynomial
-/// over Q as a high power of the points (a 76-point window takes a second,
-/// masks reaching 32 would give thousands of points and run for minutes or
-/// more). Every built-in scheme reaches 1.
-pub const MAX_LATTICE_REACH: i64 = 6;
+/// over Q steeply with the points: a dense mask of reach 2 (an 81-point
+/// window) takes 3 s, of reach 3 over two minutes; masks out to ±32 ran for
+/// minutes more. The built-in schemes reach 1 and 2.
+pub const MAX_LATTICE_REACH: i64 = 2;
 
 /// Every window is found by [`minimal_invariant_window`] (the analysis
 /// window's influence set first), so every lattice analysis refuses a mask
