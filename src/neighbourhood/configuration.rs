@@ -135,14 +135,35 @@ pub fn check_valence_for(scheme: &dyn Scheme, n: usize) -> Result<(), Error> {
         return Ok(());
     }
     let per = super::discovery::bytes_per_sector(scheme);
+    // hosts of two refinements per analysis step (sqrt(3)) also grow as n²:
+    // measured 15 (sqrt3) and 31 (unified-sqrt3) bytes per n², e.g. sqrt3
+    // 0.51 GB at n = 5000 and 1.8 GB at n = 10000
+    let square = if scheme.topology().steps_per_analysis() > 1 { TWO_STEP_BYTES_PER_N2 } else { 0.0 };
+    let estimate = |n: usize| per * n as f64 + square * (n as f64).powi(2);
+    // the estimate grows with n: the largest valence within the budget by bisection
+    let (mut fits, mut over) = (UNESTIMATED_VALENCE, MAX_VALENCE + 1);
+    while over - fits > 1 {
+        let mid = fits + (over - fits) / 2;
+        if estimate(mid) <= crate::error::MEMORY_BUDGET {
+            fits = mid;
+        } else {
+            over = mid;
+        }
+    }
     crate::error::check_memory(
-        per * n as f64,
+        estimate(n),
         &format!("{} at valence {n}", scheme.name()),
         &format!(
-            "about {:.0} KiB per sector, from its neighbourhood at valence {}",
+            "about {:.0} KiB per sector, from its neighbourhood at valence {}{}",
             per / 1024.0,
-            super::discovery::PROBE_VALENCE
+            super::discovery::PROBE_VALENCE,
+            if square > 0.0 { format!(", and {square:.0} bytes per n² for its two-refinement steps") } else { String::new() }
         ),
-        &format!("the largest valence that fits is about {}", (crate::error::MEMORY_BUDGET / per) as usize),
+        &format!("the largest valence that fits is about {fits}"),
     )
 }
+
+/// The quadratic part of the estimate for hosts of two refinements per
+/// analysis step (see [`check_valence_for`]): the largest measured, with no
+/// margin beyond the linear part's.
+const TWO_STEP_BYTES_PER_N2: f64 = 32.0;
