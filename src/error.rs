@@ -133,8 +133,8 @@ mod tests {
 /// Peak memory one command may be estimated to need before it is refused.
 /// A fixed budget rather than a fraction of the memory available now, so
 /// that the same request is accepted or refused on every machine (and in
-/// every test run) alike; 4 GiB fits the machines subdlab is run on with room
-/// for the estimates' error (each is within a factor 2 of the measured peak).
+/// every test run) alike; 4 GiB fits the machines subdlab is run on, and
+/// each estimate is calibrated to lie above the measured peaks.
 pub const MEMORY_BUDGET: f64 = (4u64 << 30) as f64;
 
 /// The one refusal of work estimated to need more than [`MEMORY_BUDGET`]:

@@ -255,8 +255,8 @@ pub const PROBE_VALENCE: usize = 24;
 
 /// Peak bytes of an analysis per vertex of the probe's patch and its one
 /// analysis step (see [`bytes_per_sector`]). Measured: `spectrum` (exact
-/// stage included) at n = 5000 of every built-in scheme peaks at 0.5 to 1
-/// times the estimate this gives.
+/// stage included) at n = 5000 of every built-in scheme peaks at 0.15 to
+/// 0.45 times the estimate this gives.
 const BYTES_PER_PROBE_VERTEX: f64 = 4096.0;
 
 /// Bytes per sector when the probe itself fails (the analysis will then
