@@ -226,3 +226,41 @@ mod tests {
         assert_eq!(w.to_string(), "figure: cannot write a.svg: disk full");
     }
 }
+
+/// Peak memory one command may be estimated to need before it is refused.
+/// A fixed budget rather than a fraction of the memory available now, so
+/// that the same request is accepted or refused on every machine (and in
+/// every test run) alike; 4 GiB fits the machines subdlab is run on, and
+/// each estimate is calibrated to lie above the measured peaks.
+pub const MEMORY_BUDGET: f64 = (4u64 << 30) as f64;
+
+/// The one refusal of work estimated to need more than [`MEMORY_BUDGET`]:
+/// made before the work, with the estimate, so a request that cannot fit
+/// fails in milliseconds instead of after minutes of paging or an abort by
+/// the allocator. `what` names the work ("polar-bi2 at valence 10000000"),
+/// `basis` says what the estimate rests on, `hint` what fits instead.
+pub fn check_memory(bytes: f64, what: &str, basis: &str, hint: &str) -> Result<()> {
+    if bytes <= MEMORY_BUDGET {
+        return Ok(());
+    }
+    Err(Error::Input(format!(
+        "{what} would need about {} of memory ({basis}), above the supported {}; {hint}",
+        format_bytes(bytes),
+        format_bytes(MEMORY_BUDGET)
+    )))
+}
+
+/// A byte count as the refusals print it: MiB below a GiB, else GiB (TiB
+/// for the absurd).
+pub fn format_bytes(bytes: f64) -> String {
+    const MIB: f64 = (1u64 << 20) as f64;
+    const GIB: f64 = (1u64 << 30) as f64;
+    const TIB: f64 = (1u64 << 40) as f64;
+    if bytes < GIB {
+        format!("{:.0} MiB", bytes / MIB)
+    } else if bytes < TIB {
+        format!("{:.1} GiB", bytes / GIB)
+    } else {
+        format!("{:.0} TiB", bytes / TIB)
+    }
+}

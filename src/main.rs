@@ -8,6 +8,13 @@ fn main() {
     unsafe {
         libc::signal(libc::SIGPIPE, libc::SIG_DFL);
     }
+    // faer's parallel kernels split their reductions by the number of rayon
+    // threads, so a dense eigenproblem (the whole-matrix method, Fourier
+    // blocks above faer's parallel threshold) would differ in its last digits
+    // with RAYON_NUM_THREADS; results must be byte-identical for any thread
+    // count. Each dense solve runs sequentially; the parallelism is outside,
+    // over blocks, valences and claims, whose results are collected in order.
+    faer::set_global_parallelism(faer::Par::Seq);
     // an interrupted write leaves no temporary file behind
     subdlab::io::install_cleanup_handlers();
     std::process::exit(subdlab::cli::main());

@@ -29,6 +29,7 @@ fn dispatch_other(cmd: Command) -> Result<(), Error> {
         Command::Verify { .. } => unreachable!("verify is dispatched first"),
         Command::Sweep(a) => sweep(&a),
         Command::Report { out } => {
+            crate::report::check_destination(&out)?;
             let files = crate::report::build()?;
             crate::report::write(&out, &files)?;
             out_text(&format!("wrote {} files to {}\n", files.len(), out.display()))

@@ -27,12 +27,54 @@ pub struct RingSampler {
     pub size: usize,
 }
 
+/// Bytes of one row entry (a level-0 index and its weight: 16, and up to
+/// twice that in vector capacity, the rows being built by accumulation) and
+/// of one face of a refined net (its connectivity and tracked sets, as
+/// `charmap::net` measures them). Measured on sqrt(3), three levels: peaks
+/// of 0.3, 1.0 and 2.3 GB at n = 200, 400, 600 (about 6 GB at n = 1000,
+/// where the estimate is 9 GiB).
+const ENTRY_BYTES: f64 = 32.0;
+const FACE_BYTES: f64 = 1024.0;
+
+/// The memory of a net of weight rows. Each vertex carries the row of
+/// weights over the level-0 neighbourhood that gives its value; a vertex
+/// near a valence-n centre depends on all n of the centre's neighbours, so
+/// those rows have O(n) entries and the net's entries grow as n² (the
+/// characteristic map's net of points is linear in n): at sqrt(3) n = 1000,
+/// three levels would need about 6 GB.
+fn estimate_bytes(net: &Net<SparseRow<f64>>) -> f64 {
+    let entries: usize = net.points.iter().flatten().map(|r| r.entries.len()).sum();
+    entries as f64 * ENTRY_BYTES + net.mesh.num_faces() as f64 * FACE_BYTES
+}
+
+fn check_memory(bytes: f64, levels: usize, size: usize) -> Result<(), Error> {
+    crate::error::check_memory(
+        bytes,
+        &format!("sampling the characteristic ring {levels} levels deep"),
+        &format!(
+            "weight rows over the {size} neighbourhood points, estimated from the net after one level, whose faces \
+             and rows grow with the host's faces per face at each further refinement"
+        ),
+        "use fewer --levels or a smaller valence",
+    )
+}
+
 impl RingSampler {
     /// Refine unit rows `levels` analysis steps.
     pub fn new(scheme: &dyn Scheme, d: &Discovered, levels: usize) -> Result<Self, Error> {
         let mut level0 = vec![None; d.patch.num_vertices()];
         for (k, &v) in d.analysis.iter().enumerate() {
             level0[v] = Some(SparseRow::<f64>::unit(k));
+        }
+        if levels > 1 {
+            // refused up front when it cannot fit: one step is cheap (it
+            // reuses discovery's refinements) and the last level is about
+            // the host's faces-per-face to the power of the remaining
+            // refinements times as large
+            let first = refine_net(scheme, d, level0.clone(), 1)?;
+            let refinements = scheme.topology().steps_per_analysis() * (levels - 1);
+            let growth = (scheme.topology().faces_per_face() as f64).powi(refinements as i32);
+            check_memory(estimate_bytes(&first) * growth, levels, d.analysis.len())?;
         }
         let net = refine_net(scheme, d, level0, levels)?;
         let ring_faces: Vec<usize> = (0..net.mesh.num_faces()).filter(|&f| net.outer[f] && !net.inner[f]).collect();

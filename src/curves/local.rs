@@ -48,7 +48,28 @@ impl<W: Weight> Refinement for Deps<'_, W> {
     }
 }
 
+/// Largest |offset| of a rule accepted. The invariant window grows with the
+/// reach (about twice it, plus the one-ring) and the exact stage's
+/// characteristic polynomial over Q grows steeply with the window and the
+/// mask's density: a dense mask of reach 8 takes 2 s, of reach 16 over 100 s
+/// (a sparse one of reach 32, 12 s). Every built-in scheme reaches 2.
+pub const MAX_CURVE_REACH: i64 = 8;
+
+/// Every window is found by [`close`] and [`influence_set`], so every curve
+/// analysis refuses a mask past [`MAX_CURVE_REACH`] there, before any work.
+fn check_reach<W: Weight>(mask: &CurveMask<W>) -> Result<(), Error> {
+    if mask.reach() > MAX_CURVE_REACH {
+        return Err(Error::Input(format!(
+            "the curve rules reach offset {}, beyond the supported {MAX_CURVE_REACH} (the invariant window grows with \
+             the reach and its exact analysis steeply with the window)",
+            mask.reach()
+        )));
+    }
+    Ok(())
+}
+
 fn close<W: Weight>(mask: &CurveMask<W>, seed: BTreeSet<i64>) -> Result<BTreeSet<i64>, Error> {
+    check_reach(mask)?;
     Ok(invariant_closure(&Deps(mask), seed, MAX_WINDOW)?)
 }
 
@@ -59,6 +80,7 @@ pub fn minimal_window<W: Weight>(mask: &CurveMask<W>) -> Result<Vec<i64>, Error>
 
 /// The old points that influence the limit curve over [−1, 1] (see module doc).
 pub fn influence_set<W: Weight>(mask: &CurveMask<W>) -> Result<BTreeSet<i64>, Error> {
+    check_reach(mask)?;
     // the influence of level-L points lies within the mask's reach of [−1, 1];
     // once 2^L well exceeds that reach, further levels only repeat the pattern
     let levels = Levels::past_reach(mask.reach(), 1, MAX_INFLUENCE_LEVELS);

@@ -176,6 +176,7 @@ fn named(scheme: &dyn LatticeScheme, e: ClosureError<Point>) -> Error {
 /// refined points depend only on itself. An error, not a loop, when the masks
 /// are not local.
 pub fn minimal_invariant_window(scheme: &dyn LatticeScheme, seed: &[Point]) -> Result<Window, Error> {
+    check_reach(scheme)?;
     let set = invariant_closure(&Deps(scheme), seed.iter().copied(), MAX_WINDOW).map_err(|e| named(scheme, e))?;
     Ok(Window::from_set(set))
 }
@@ -209,6 +210,29 @@ pub fn local_matrix<W: LatticeWeight>(scheme: &dyn LatticeScheme, w: &Window) ->
     Ok(window_matrix(scheme, w)?.dense())
 }
 
+/// Largest |offset| (in either coordinate) of a mask accepted. The window is
+/// two-dimensional: its side grows with the reach, so its points as the
+/// square of the reach, and the exact stage's characteristic polynomial
+/// over Q steeply with the points: a dense mask of reach 2 (an 81-point
+/// window) takes 3 s, of reach 3 over two minutes; masks out to ±32 ran for
+/// minutes more. The built-in schemes reach 1 and 2.
+pub const MAX_LATTICE_REACH: i64 = 2;
+
+/// Every window is found by [`minimal_invariant_window`] (the analysis
+/// window's influence set first), so every lattice analysis refuses a mask
+/// past [`MAX_LATTICE_REACH`] there, before any work.
+fn check_reach(scheme: &dyn LatticeScheme) -> Result<(), Error> {
+    let r = reach(scheme);
+    if r > MAX_LATTICE_REACH {
+        return Err(Error::Input(format!(
+            "{}: the masks reach offset {r}, beyond the supported {MAX_LATTICE_REACH} (the invariant window grows as \
+             the square of the reach and its exact analysis as a high power of the window)",
+            scheme.name()
+        )));
+    }
+    Ok(())
+}
+
 /// Largest |offset| of the four masks.
 fn reach(scheme: &dyn LatticeScheme) -> i64 {
     (0..4u8)
@@ -229,6 +253,7 @@ pub fn analysis_window(scheme: &dyn LatticeScheme, radius: i64) -> Result<Window
         let r = radius << k;
         (-r..=r).flat_map(|i| (-r..=r).map(move |j| (i, j))).collect::<Vec<Point>>()
     };
+    check_reach(scheme)?;
     let levels = Levels::past_reach(reach(scheme), radius, MAX_LEVELS);
     let mut seed = influence_set(&Deps(scheme), square, levels).map_err(|e| named(scheme, e))?;
     seed.insert((0, 0));

@@ -386,6 +386,31 @@ fn svg<F: plot::Figure>(fig: &F) -> Result<Vec<u8>, Error> {
     plot::render_svg(fig).map(|s| s.into_bytes())
 }
 
+/// Fails early, before the report's work (tens of seconds of analyses), when
+/// `dir` cannot receive it: the nearest existing one of `dir` and its
+/// ancestors (what [`write`] creates the rest under) must be a directory in
+/// which a file can be created. Checked by creating (and removing) a
+/// temporary file there, which is what the writes will do; nothing is
+/// created when the check fails.
+pub fn check_destination(dir: &Path) -> Result<(), Error> {
+    let fail = |reason: String| Err(Error::Write { path: dir.display().to_string(), reason });
+    let mut existing = dir;
+    while !existing.as_os_str().is_empty() && std::fs::symlink_metadata(existing).is_err() {
+        match existing.parent() {
+            Some(p) => existing = p,
+            None => break,
+        }
+    }
+    let existing = if existing.as_os_str().is_empty() { Path::new(".") } else { existing };
+    if !existing.is_dir() {
+        return fail(format!("{} is not a directory", existing.display()));
+    }
+    match tempfile::Builder::new().prefix(".subdlab-write-check").tempfile_in(existing) {
+        Ok(_) => Ok(()),
+        Err(e) => fail(format!("cannot create files in {}: {e}", existing.display())),
+    }
+}
+
 /// Write the report into `dir` (each file atomically).
 pub fn write(dir: &Path, files: &Files) -> Result<(), Error> {
     for (name, bytes) in files {
