@@ -25,9 +25,13 @@ use crate::numeric::{Inexact, Weight};
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
 use crate::sdc::{Origin, RuleResult};
+use super::memo::WeightMemo;
+use std::sync::Arc;
 
 pub struct Pgs {
     params: Params,
+    /// (μ, w1, w2, α) per valence and weight type, made once (see `memo`)
+    made: WeightMemo,
 }
 
 const INFO: SchemeInfo = SchemeInfo {
@@ -60,7 +64,7 @@ pub fn entry() -> SchemeEntry {
         name: INFO.name,
         description: INFO.description,
         params: || vec![MU, LAMBDA_SUB],
-        build: |params| Box::new(Pgs { params }),
+        build: |params| Box::new(Pgs { params, made: WeightMemo::new() }),
     }
 }
 
@@ -102,7 +106,11 @@ pub fn paper_mu<W: Weight>(n: i64) -> W {
 }
 
 impl Pgs {
-    pub fn weights<W: Weight>(&self, n: i64) -> Result<PgsWeights<W>, Inexact> {
+    pub fn weights<W: Weight>(&self, n: i64) -> Result<Arc<PgsWeights<W>>, Inexact> {
+        self.made.get::<W, _>(n, || self.make_weights(n))
+    }
+
+    fn make_weights<W: Weight>(&self, n: i64) -> Result<PgsWeights<W>, Inexact> {
         let given = |spec: &ParamSpec| if n == 4 { None } else { self.params.of(spec) };
         let mu = match given(&MU) {
             Some(p) => W::param(p)?,
@@ -149,7 +157,8 @@ impl<W: Weight> Mask<W> for Pgs {
             ("corner", "side") => W::ratio(3, 16),
             ("corner", "far") => W::ratio(1, 16),
             ("corner-augmented", family) => {
-                let PgsWeights { w1, w2, .. } = self.weights::<W>(n)?;
+                let weights = self.weights::<W>(n)?;
+                let (w1, w2) = (weights.w1.clone(), weights.w2.clone());
                 match family {
                     "vertex" => w1,
                     "side" => w2,
@@ -157,11 +166,11 @@ impl<W: Weight> Mask<W> for Pgs {
                     _ => W::zero(),
                 }
             }
-            ("face", "point") => W::one() - self.weights::<W>(n)?.alpha,
-            ("face", "corner") => self.weights::<W>(n)?.alpha / W::int(n),
+            ("face", "point") => W::one() - self.weights::<W>(n)?.alpha.clone(),
+            ("face", "corner") => self.weights::<W>(n)?.alpha.clone() / W::int(n),
             // eq. (1): μ/n on the corners a_i, (1 − μ)/(2n) on their outer neighbours
-            ("point", "corner") => self.weights::<W>(n)?.mu / W::int(n),
-            ("point", "outer") => (W::one() - self.weights::<W>(n)?.mu) / W::int(2 * n),
+            ("point", "corner") => self.weights::<W>(n)?.mu.clone() / W::int(n),
+            ("point", "outer") => (W::one() - self.weights::<W>(n)?.mu.clone()) / W::int(2 * n),
             // no weight on slots the mask does not use
             _ => W::zero(),
         })

@@ -41,9 +41,8 @@ use crate::numeric::{Inexact, Weight};
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
 use crate::sdc::{Origin, RuleResult};
-use std::any::{Any, TypeId};
-use std::collections::HashMap;
-use std::sync::{Arc, Mutex};
+use super::memo::WeightMemo;
+use std::sync::Arc;
 
 pub struct Tps {
     params: Params,
@@ -51,7 +50,7 @@ pub struct Tps {
     /// weight of the rules needs them, and converting e and forming them
     /// anew at each weight, in exact arithmetic, was most of the cost of the
     /// exact stencils the characteristic-map certificate checks
-    one_d_made: Mutex<HashMap<TypeId, Arc<dyn Any + Send + Sync>>>,
+    one_d_made: WeightMemo,
 }
 
 const INFO: SchemeInfo = SchemeInfo {
@@ -77,7 +76,7 @@ pub fn entry() -> SchemeEntry {
         name: INFO.name,
         description: INFO.description,
         params: || vec![E],
-        build: |params| Box::new(Tps { params, one_d_made: Mutex::new(HashMap::new()) }),
+        build: |params| Box::new(Tps { params, one_d_made: WeightMemo::new() }),
     }
 }
 
@@ -112,14 +111,7 @@ impl<W: Weight> OneD<W> {
 
 impl Tps {
     fn one_d<W: Weight>(&self) -> Result<Arc<OneD<W>>, Inexact> {
-        let made = |m: &Arc<dyn Any + Send + Sync>| m.clone().downcast::<Result<Arc<OneD<W>>, Inexact>>().ok();
-        let key = TypeId::of::<W>();
-        if let Some(known) = self.one_d_made.lock().unwrap_or_else(|e| e.into_inner()).get(&key).and_then(made) {
-            return known.as_ref().clone();
-        }
-        let one_d = W::param(self.params.of(&E).expect("e has a default")).map(|e| Arc::new(OneD::new(e)));
-        self.one_d_made.lock().unwrap_or_else(|e| e.into_inner()).insert(key, Arc::new(one_d.clone()));
-        one_d
+        self.one_d_made.get::<W, _>(0, || W::param(self.params.of(&E).expect("e has a default")).map(OneD::new))
     }
 
     /// (α1, α2) of eq. (18) at valence n.
