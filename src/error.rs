@@ -43,6 +43,11 @@ pub enum Error {
     /// malformed, or a stated value does not evaluate. The outcome carrying
     /// the message names the claim.
     Claim(String),
+    /// A computation ran on valid input and could not decide the question
+    /// asked (a proof not found, a quantity this tool does not compute for
+    /// the configuration, a size beyond what is analysed): a claim's
+    /// INCONCLUSIVE, never a malformed input.
+    Undecided(String),
 }
 
 pub type Result<T> = std::result::Result<T, Error>;
@@ -60,6 +65,7 @@ impl Error {
             Error::NotDetermined(m) => Error::NotDetermined(f(m)),
             Error::Numeric(m) => Error::Numeric(f(m)),
             Error::Claim(m) => Error::Claim(f(m)),
+            Error::Undecided(m) => Error::Undecided(f(m)),
             w @ Error::Write { .. } => Error::Message(f(w.to_string())),
         }
     }
@@ -79,7 +85,8 @@ impl std::fmt::Display for Error {
             | Error::File(m)
             | Error::NotDetermined(m)
             | Error::Numeric(m)
-            | Error::Claim(m) => f.write_str(m),
+            | Error::Claim(m)
+            | Error::Undecided(m) => f.write_str(m),
             Error::Write { path, reason } => write!(f, "cannot write {path}: {reason}"),
         }
     }

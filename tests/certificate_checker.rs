@@ -32,7 +32,9 @@ fn certificate_of(command: &str, dir: &Path, name: &str, args: &[&str]) -> PathB
         .arg(&path)
         .output()
         .unwrap();
-    assert!(out.status.success(), "{command} {args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    // 0 proved, 1 disproved or not proved (the certificate is written
+    // either way), 2 an error
+    assert!(matches!(out.status.code(), Some(0 | 1)), "{command} {args:?}: {}", String::from_utf8_lossy(&out.stderr));
     path
 }
 

@@ -109,7 +109,7 @@ fn a_jordan_block_names_both_routes_and_the_exact_nullities() {
 #[test]
 fn malformed_curvature_claims_are_errors_or_inconclusive() {
     let o = run("scheme = \"loop\"\nvalences = [5]\nclass = \"flat\"");
-    assert_eq!(o.verdict, Verdict::Inconclusive, "{}", o.detail);
+    assert_eq!(o.verdict, Verdict::Error, "{}", o.detail);
     assert!(o.detail.contains("the classes are"), "{}", o.detail);
     let o = run("scheme = \"loop\"\nvalences = [5]\nclass = \"bounded\"\nfourrier = [0]");
     assert_eq!(o.verdict, Verdict::Error, "{}", o.detail);

@@ -603,7 +603,7 @@ fn unknown_keys_are_errors_naming_the_line_and_the_rest_is_evaluated() {
         &claim("n", "check = \"size\"\nscheme = \"loop\"\nvalences = [5]\nvalue = \"n + 1\"\nvars = { n = \"6\" }"),
     );
     let (v, _) = verdicts(&["verify", "--claims", &f]);
-    assert_eq!(v[0].1, "INCONCLUSIVE");
+    assert_eq!(v[0].1, "ERROR");
 }
 
 #[test]
@@ -647,7 +647,7 @@ fn exit_statuses_junit_and_expected_verdicts() {
 }
 
 #[test]
-fn non_finite_values_are_inconclusive_and_empty_ranges_are_not_holds() {
+fn non_finite_values_and_empty_ranges_are_errors() {
     let dir = tempfile::tempdir().unwrap();
     let mut c = String::new();
     c += &claim(
@@ -665,7 +665,7 @@ fn non_finite_values_are_inconclusive_and_empty_ranges_are_not_holds() {
     let f = claim_file(dir.path(), "nan.toml", &c);
     let (v, _) = verdicts(&["verify", "--claims", &f]);
     for (id, verdict) in &v {
-        assert_eq!(verdict, "INCONCLUSIVE", "{id}: {v:?}");
+        assert_eq!(verdict, "ERROR", "{id}: {v:?}");
     }
     assert_eq!(v.len(), 6);
 }
@@ -728,7 +728,7 @@ fn builtin_data_is_validated() {
     assert!(!err.contains("panicked"), "{err}");
     assert_eq!(v.len(), cases.len() + 1);
     for (id, verdict) in &v {
-        assert_eq!(verdict, "INCONCLUSIVE", "{id}: {v:?}");
+        assert_eq!(verdict, "ERROR", "{id}: {v:?}");
     }
 }
 

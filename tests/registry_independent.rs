@@ -1033,7 +1033,7 @@ rhs = "4"
     assert_eq!(o[1].verdict, Verdict::Refuted);
     assert!(o[1].detail.contains("first disagreement at n = 7"), "{}", o[1].detail);
     assert!(o[1].computed.contains("n=7: 1 vs 0"), "{}", o[1].computed);
-    assert_eq!(o[2].verdict, Verdict::Inconclusive, "{}", o[2].detail);
+    assert_eq!(o[2].verdict, Verdict::Error, "{}", o[2].detail);
 }
 
 /// Exact Jacobians of the limit map at the regular (valence-4) vertices of

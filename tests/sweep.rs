@@ -147,6 +147,14 @@ fn convergent_and_admissible_intervals_match_the_closed_form() {
         assert_eq!(conv, vec![inside(conv_lo, conv_hi)], "convergent, n = {n}");
         assert_eq!(adm, vec![inside(adm_lo, adm_hi)], "admissible, n = {n}");
     }
+    // the text names the runs as grid points, never as closed intervals: at
+    // n = 3 (c = −1/2) the admissible set is the open (3/8, 7/8), whose grid
+    // points are 1/2..3/4; the convergent one (−3/8, 13/8) has 0..3/2
+    let out = subdlab(&["sweep", file.to_str().unwrap(), "--valences", "3..3", "--param", "w=0:2:1/8"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("valence    3: grid points 1/2..3/4 (step 1/8)"), "{text}");
+    assert!(text.contains("valence    3: grid points 0..3/2 (step 1/8)"), "{text}");
+    assert!(!text.contains(": [1/2, 3/4]"), "{text}");
 }
 
 /// The points do not depend on how many worker threads compute them.

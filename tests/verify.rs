@@ -86,14 +86,14 @@ fn malformed_claim_files_are_one_line_errors() {
 }
 
 #[test]
-fn a_claim_that_cannot_be_evaluated_is_inconclusive_with_the_reason() {
+fn a_claim_naming_an_unknown_scheme_is_an_error_with_the_reason() {
     let dir = tempfile::tempdir().unwrap();
     let p = dir.path().join("x.toml");
     std::fs::write(&p, USER_FILE.replace("\"catmull-clark\"", "\"no-such-scheme\"")).unwrap();
     let out = subdlab(&["verify", "--claims", p.to_str().unwrap(), "--json"]);
-    assert!(!out.status.success());
+    assert_eq!(out.status.code(), Some(2));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    assert_eq!(v[0]["claims"][0]["verdict"], "INCONCLUSIVE");
+    assert_eq!(v[0]["claims"][0]["verdict"], "ERROR");
     assert!(v[0]["claims"][0]["detail"].as_str().unwrap().contains("unknown scheme"));
 }
 

@@ -222,14 +222,23 @@ pub struct FoldWitness {
 }
 
 /// Certify the characteristic map of an analysis (analysis neighbourhood).
+/// The one range check of the certificate's most refinement levels, shared
+/// by `charmap --certify-levels`, certified claims' `levels` and
+/// [`certify_charmap`]: 2 to [`MAX_LEVELS`]; `what` names the value where it
+/// was given.
+pub fn check_levels(max_levels: usize, what: &str) -> Result<(), Error> {
+    if !(2..=MAX_LEVELS).contains(&max_levels) {
+        return Err(Error::Input(format!("{what} must be between 2 and {MAX_LEVELS}, got {max_levels}")));
+    }
+    Ok(())
+}
+
 pub fn certify_charmap(
     scheme: &dyn Scheme,
     analysis: &Analysis,
     max_levels: usize,
 ) -> Result<CharMapCertificate, Error> {
-    if !(2..=MAX_LEVELS).contains(&max_levels) {
-        return Err(Error::Input(format!("certification levels must be between 2 and {MAX_LEVELS}, got {max_levels}")));
-    }
+    check_levels(max_levels, "certification levels")?;
     let spectrum = certify_analysis(scheme, analysis)?;
     let s = &analysis.spectrum;
     let mut cert = CharMapCertificate {

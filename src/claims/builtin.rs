@@ -84,7 +84,7 @@ fn nonbox_vector_mask(data: &toml::Value) -> Result4 {
     // coarse cells [2, 4)² of sector 0 (fine chart coordinates [4, 8)²)
     let mut cells = Vec::new();
     let step = step_selected::<Rational>(scheme.as_ref(), &patch, |refined| {
-        let chart = refined.mesh.chart.as_ref().ok_or_else(|| Error::Claim("no chart".into()))?;
+        let chart = refined.mesh.chart.as_ref().ok_or_else(|| Error::Undecided("no chart".into()))?;
         cells = (0..refined.vertex_origins.len())
             .filter(|&v| {
                 let (x, y) = chart.in_chart(chart.vertex_coords[v], 0);
@@ -98,7 +98,7 @@ fn nonbox_vector_mask(data: &toml::Value) -> Result4 {
     let mut t = [[q(0, 1), q(0, 1)], [q(0, 1), q(0, 1)]];
     for v in cells {
         let i = usize::from(!fcv1.contains(&v));
-        let st = step.stencils[v].as_ref().ok_or_else(|| Error::Claim("rule not evaluable".into()))?;
+        let st = step.stencils[v].as_ref().ok_or_else(|| Error::Undecided("rule not evaluable".into()))?;
         for (u, w) in &st.terms {
             let j = usize::from(!fcv0.contains(u));
             t[i][j] = &t[i][j] + w;
@@ -573,7 +573,7 @@ fn strip_shifted_eigenvectors(data: &toml::Value) -> Result4 {
     let st = strip(data)?;
     let basis = eigenbasis(&st)?;
     let a = crate::spectrum::strip::action_on(&st.s_plus, &basis)
-        .ok_or_else(|| Error::Claim("the leading eigenvectors are not invariant under S⁺".into()))?;
+        .ok_or_else(|| Error::Undecided("the leading eigenvectors are not invariant under S⁺".into()))?;
     let half = q(1, 2);
     let mut out = Vec::new();
     let mut all = true;
@@ -611,7 +611,7 @@ fn strip_jsr(data: &toml::Value) -> Result4 {
     let basis = eigenbasis(&st)?;
     let n = st.s.len();
     if crate::spectrum::strip::action_on(&st.s_plus, &basis).is_none() {
-        return Err(Error::Claim("the leading eigenvectors are not invariant under S⁺: Q⁺ is not defined".into()));
+        return Err(Error::Undecided("the leading eigenvectors are not invariant under S⁺: Q⁺ is not defined".into()));
     }
     let length = int_in(data, "length", 1, 16)? as usize;
     let bound = crate::numeric::Weight::to_f64(&exact(text(data, "bound")?)?);
@@ -814,10 +814,12 @@ fn fourthree_convex_hull(data: &toml::Value) -> Result4 {
                 (K::Edge, 1) => &mut e,
                 (K::Face, 1) => &mut d,
                 _ if w.abs() < 1e-12 => continue,
-                _ => return Err(Error::Claim(format!("the regular limit stencil of {faces} reaches {}", lab.name))),
+                _ => {
+                    return Err(Error::Undecided(format!("the regular limit stencil of {faces} reaches {}", lab.name)))
+                }
             };
             if slot.is_some_and(|x| (x - w).abs() > 1e-12) {
-                return Err(Error::Claim(format!("the regular limit stencil of {faces} is not symmetric")));
+                return Err(Error::Undecided(format!("the regular limit stencil of {faces} is not symmetric")));
             }
             *slot = Some(*w);
         }
@@ -1006,7 +1008,7 @@ fn matrix_nonnegative_range(data: &toml::Value) -> Result4 {
         let mut mats = Vec::new();
         for (r, x) in rules.iter().zip(&samples) {
             let m = assemble::<Rational>(r.as_ref(), d, kind).map_err(|e| {
-                Error::Claim(format!("k = {k}, {}: no exact S on the common neighbourhood ({e:?})", shown(x)))
+                Error::Undecided(format!("k = {k}, {}: no exact S on the common neighbourhood ({e:?})", shown(x)))
             })?;
             mats.push(m);
         }
@@ -1161,12 +1163,12 @@ fn curve_relation3() -> Result4 {
     use crate::curves::{refine_closed, CurveWeight};
     use crate::schemes::curves::{self, relation::four_point_by_relation3};
     let four = Rational::mask(curves::build("four-point", &[])?.as_ref())
-        .map_err(|_| Error::Claim("inexact four-point mask".into()))?;
+        .map_err(|_| Error::Undecided("inexact four-point mask".into()))?;
     let n = 8;
     let mut diffs = 0;
     for k in 0..n {
         let e: Vec<Rational> = (0..n).map(|i| if i == k { q(1, 1) } else { q(0, 1) }).collect();
-        let lhs = four_point_by_relation3(&e).map_err(|_| Error::Claim("inexact B-spline mask".into()))?;
+        let lhs = four_point_by_relation3(&e).map_err(|_| Error::Undecided("inexact B-spline mask".into()))?;
         let rhs = refine_closed(&four, &e);
         diffs += lhs.iter().zip(&rhs).filter(|(a, b)| a != b).count();
     }
@@ -1199,7 +1201,7 @@ fn curve_c1_laurent(data: &toml::Value) -> Result4 {
     for v in values {
         let v = v.as_str().ok_or_else(|| Error::Claim("data.values: strings".into()))?;
         let s = curves::build(name, &[(param.to_string(), v.to_string())])?;
-        let mask = Rational::mask(s.as_ref()).map_err(|_| Error::Claim("inexact mask".into()))?;
+        let mask = Rational::mask(s.as_ref()).map_err(|_| Error::Undecided("inexact mask".into()))?;
         let failed = match c1_test(&mask, max_steps) {
             Ok((Some(l), norms)) => {
                 proven += 1;
@@ -1368,7 +1370,7 @@ fn fourthree_node_counts(data: &toml::Value) -> Result4 {
     let count = |m: &crate::mesh::PolyMesh| -> Result<[usize; 3], Error> {
         let mut c = [0usize; 3];
         for v in 0..m.num_vertices() {
-            match classify(m, v).ok_or_else(|| Error::Claim("a vertex is not classifiable".into()))?.1 {
+            match classify(m, v).ok_or_else(|| Error::Undecided("a vertex is not classifiable".into()))?.1 {
                 NodeType::Eon => c[0] += 1,
                 NodeType::Transition { .. } => c[1] += 1,
                 NodeType::RegularQuad | NodeType::RegularTri => c[2] += 1,
@@ -1473,7 +1475,7 @@ fn fourthree_step_two_bound(data: &toml::Value) -> Result4 {
         let b = bound.eval(&env)?.re;
         let (pc, fc) = match (patch.chart.as_ref(), fine.chart.as_ref()) {
             (Some(p), Some(f)) => (p, f),
-            _ => return Err(Error::Claim("no lattice chart".into())),
+            _ => return Err(Error::Undecided("no lattice chart".into())),
         };
         let is_w = |u: usize| {
             let c = pc.vertex_coords[u];

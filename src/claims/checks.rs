@@ -102,7 +102,7 @@ fn subject_params(s: &Subject, n: usize) -> Result<Vec<(String, String)>, Error>
         let e = Expr::parse(v).map_err(|e| Error::Claim(format!("parameter {k} = '{v}': {e}")))?;
         let text = match e.exact(&base) {
             Some(q) => q.to_string(),
-            None => format!("{:e}", e.eval(&base)?.re),
+            None => format!("{:e}", real(e.eval(&base)?, v)?),
         };
         params.push((k.clone(), text));
     }
@@ -173,11 +173,26 @@ fn define(mut env: Env, defs: Vec<(&String, &String)>) -> Result<Env, Error> {
                 later.push((k, v));
                 continue;
             }
+            if real_variables(&e, &env).is_err() {
+                // defined from a non-real variable: marked in turn
+                let text = format!("'{v}' (from a non-real variable)");
+                env.insert(k.clone(), ParamValue { value: f64::NAN, text, exact: None });
+                continue;
+            }
             let value = match e.exact(&env) {
                 Some(q) => {
                     ParamValue { value: crate::numeric::Weight::to_f64(&q), text: q.to_string(), exact: Some(q) }
                 }
-                None => ParamValue::from_f64(e.eval(&env)?.re),
+                None => {
+                    let z = finite(e.eval(&env)?, v)?;
+                    match real(z, v) {
+                        Ok(x) => ParamValue::from_f64(x),
+                        // the environment holds real numbers: a non-real
+                        // variable is marked (NaN) and is an error where it
+                        // is used ([`real_variables`]), never its real part
+                        Err(_) => ParamValue { value: f64::NAN, text: format!("'{v}' = {}", show(z)), exact: None },
+                    }
+                }
             };
             env.insert(k.clone(), value);
         }
@@ -191,14 +206,41 @@ fn define(mut env: Env, defs: Vec<(&String, &String)>) -> Result<Env, Error> {
 }
 
 /// The value of a stated expression; a value that is not a finite number
-/// (0·10^400, an overflow) cannot decide a claim, so it is an error (the
-/// claim becomes INCONCLUSIVE).
+/// (0·10^400, an overflow) is a malformed value (the claim is an ERROR).
 pub(super) fn eval(text: &str, env: &Env) -> Result<Complex64, Error> {
-    let z = Expr::parse(text)
-        .map_err(|e| Error::Claim(format!("'{text}': {e}")))?
-        .eval(env)
-        .map_err(|e| Error::Claim(format!("'{text}': {e}")))?;
+    let e = Expr::parse(text).map_err(|e| Error::Claim(format!("'{text}': {e}")))?;
+    real_variables(&e, env)?;
+    let z = e.eval(env).map_err(|e| Error::Claim(format!("'{text}': {e}")))?;
     finite(z, text)
+}
+
+/// An error when `e` uses a variable whose value is not real: variables
+/// (`vars`, `params`) are real numbers; a complex quantity is written into
+/// the expression itself (its imaginary part was once dropped silently).
+fn real_variables(e: &Expr, env: &Env) -> Result<(), Error> {
+    match e.variables().iter().find_map(|v| env.get(v).filter(|p| p.value.is_nan())) {
+        Some(p) => Err(Error::Claim(format!(
+            "variable {} is not a real number: variables must be real (write a complex quantity into the expression \
+             itself)",
+            p.text
+        ))),
+        None => Ok(()),
+    }
+}
+
+/// [`eval`] of a quantity that must be real (a weight, a count, a size, a
+/// block index): a non-real value is a malformed claim, never its real part.
+pub(super) fn eval_real(text: &str, env: &Env) -> Result<f64, Error> {
+    real(eval(text, env)?, text)
+}
+
+/// The real number `z`, or an error naming `text` when `z` is not real
+/// (imaginary part beyond rounding, relative 1e-12).
+fn real(z: Complex64, text: &str) -> Result<f64, Error> {
+    if z.im.abs() > 1e-12 * z.norm().max(1.0) {
+        return Err(Error::Claim(format!("'{text}' is {}, not a real number: a real value is required here", show(z))));
+    }
+    Ok(z.re)
 }
 
 fn finite(z: Complex64, text: &str) -> Result<Complex64, Error> {
@@ -279,16 +321,29 @@ fn inconclusive(detail: String) -> Partial {
     Partial { verdict: Verdict::Inconclusive, stated: String::new(), computed: String::new(), detail }
 }
 
+/// Whether an error says the computation could not decide (the claim is
+/// INCONCLUSIVE): a proof not found, a quantity not computed for this
+/// configuration, a numerical stage that failed on valid input. Every other
+/// error (a malformed or vacuous claim, a missing or misspelt scheme file, an
+/// unknown scheme or parameter, a value of the wrong kind) says the claim
+/// cannot be read as written: ERROR, which no recorded verdict can pass.
+pub(super) fn undecided(e: &Error) -> bool {
+    matches!(e, Error::Undecided(_) | Error::Numeric(_) | Error::NotDetermined(_) | Error::Message(_))
+}
+
 pub fn evaluate(paper: &str, claim: &Claim, cache: &mut Cache) -> Outcome {
     if let Check::Malformed(message) = &claim.check {
         return error_outcome(paper, claim, message.clone());
     }
+    if let Err(e) = claim.check.validate() {
+        return error_outcome(paper, claim, e.to_string());
+    }
     cache.claim = claim.id.clone();
-    let p = match run(&claim.check, cache) {
-        Ok(p) => p,
-        Err(e) => inconclusive(e.to_string()),
-    };
-    outcome(paper, claim, p)
+    match run(&claim.check, cache) {
+        Ok(p) => outcome(paper, claim, p),
+        Err(e) if undecided(&e) => outcome(paper, claim, inconclusive(e.to_string())),
+        Err(e) => error_outcome(paper, claim, e.to_string()),
+    }
 }
 
 /// The ERROR outcome of a claim that could not be read or evaluated.
@@ -350,6 +405,12 @@ fn summarise(configurations: &[(usize, Subject)], results: Vec<Comparison>) -> R
         Some(f) => format!("n={n} ({f})"),
         None => format!("n={n}"),
     };
+    // a malformed value at any configuration makes the claim an ERROR,
+    // whatever the others give: the claim cannot be read as written
+    let mut results = results;
+    if let Some(k) = results.iter().position(|r| r.as_ref().is_err_and(|e| !undecided(e))) {
+        return Err(results.swap_remove(k).err().unwrap_or_else(|| Error::Claim("malformed claim".into())));
+    }
     let mut first = None;
     // a configuration that cannot be decided leaves the claim undecided,
     // unless another configuration refutes it: one counterexample refutes a
@@ -379,7 +440,7 @@ fn summarise(configurations: &[(usize, Subject)], results: Vec<Comparison>) -> R
         (Some(a), Some(b)) if a != b => format!("valences {a}..{b} ({count} checked)"),
         (Some(a), _) if count > 1 => format!("valence {a} ({count} configurations)"),
         (Some(a), _) => format!("valence {a}"),
-        _ => return Err(Error::Claim("no valences given".into())),
+        _ => return Err(Error::Claim("no valences given: the claim asserts nothing".into())),
     };
     if first.is_none() {
         if let Some((_, e)) = undecided {
@@ -414,6 +475,8 @@ fn summarise(configurations: &[(usize, Subject)], results: Vec<Comparison>) -> R
 /// floating point (relative 1e-12); the two values as shown, and whether the
 /// comparison was exact.
 fn identity_at(l: &Expr, r: &Expr, lhs: &str, rhs: &str, env: &Env) -> Result<(bool, String, bool), Error> {
+    real_variables(l, env)?;
+    real_variables(r, env)?;
     if let (Some(a), Some(b)) = (l.exact(env), r.exact(env)) {
         return Ok((a == b, format!("{a} vs {b}"), true));
     }
@@ -433,7 +496,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                     // every non-trivial Fourier block, with m in the environment
                     Some("m") => (1..n).map(Some).collect(),
                     Some(b) => {
-                        let m = eval(b, &env_for(subject, n)?)?.re.round();
+                        let m = eval_real(b, &env_for(subject, n)?)?.round();
                         if !(0.0..n as f64).contains(&m) {
                             return Err(Error::Claim(format!("block '{b}' is {m} at n = {n}")));
                         }
@@ -497,7 +560,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                     .eigenvalues
                     .get(1)
                     .map(|e| Complex64::new(e.re, e.im))
-                    .ok_or_else(|| Error::Claim("no subdominant eigenvalue".into()))?;
+                    .ok_or_else(|| Error::Undecided("no subdominant eigenvalue".into()))?;
                 let double = spec.eigenvalues[1].algebraic_multiplicity;
                 Ok((close(stated, l1), show(stated), format!("{} (multiplicity {double})", show(l1))))
             })
@@ -506,7 +569,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
             cache.prefetch(subject);
             over_valences(subject, |subject, n| {
                 let spec = cache.spectrum(subject, n)?;
-                let stated = eval(value, &env_for(subject, n)?)?.re;
+                let stated = eval_real(value, &env_for(subject, n)?)?;
                 let size = spec.matrix_size as f64;
                 Ok((
                     (stated - size).abs() < 0.5,
@@ -536,12 +599,14 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                     .eigenvalues
                     .get(1)
                     .map(|e| e.re)
-                    .ok_or_else(|| Error::Claim("no subdominant eigenvalue".into()))?;
+                    .ok_or_else(|| Error::Undecided("no subdominant eigenvalue".into()))?;
                 let l3 = spec.eigenvalues.get(2).map(|e| e.modulus).unwrap_or(0.0);
                 env.insert("lambda1".into(), ParamValue::from_f64(l1));
                 env.insert("lambda3".into(), ParamValue::from_f64(l3));
                 env.insert("size".into(), ParamValue::from_ratio(spec.matrix_size as i64, 1));
             }
+            real_variables(&l, &env)?;
+            real_variables(&r, &env)?;
             let (a, b) = (finite(l.eval(&env)?, lhs)?, finite(r.eval(&env)?, rhs)?);
             if a.im.abs() > 1e-12 || b.im.abs() > 1e-12 {
                 return Err(Error::Claim(format!("'{lhs}' or '{rhs}' is not real at n = {n}")));
@@ -581,7 +646,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                 let options =
                     crate::spectrum::Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
                 let analysis = crate::spectrum::analyse(scheme.as_ref(), &config, &options)?;
-                let most = levels.unwrap_or(crate::certify::charmap::DEFAULT_MAX_LEVELS).max(2);
+                let most = levels.unwrap_or(crate::certify::charmap::DEFAULT_MAX_LEVELS);
                 let c = crate::certify::certify_charmap(scheme.as_ref(), &analysis, most)?;
                 if let Some(path) = names.path(subject, n) {
                     crate::certify::export::write_charmap(&path, scheme.as_ref(), &analysis, &c)?;
@@ -594,12 +659,12 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                 Verdict::Disproved(_) if !c.conditional && !c.geometry_conditional => false,
                 Verdict::Proved if !c.conditional && !c.geometry_conditional => true,
                 Verdict::Proved | Verdict::Disproved(_) => {
-                    return Err(Error::Claim(format!(
+                    return Err(Error::Undecided(format!(
                         "n = {n}: the certificate is {} only given a premise confirmed to interval overlap (not exactly): no unconditional proof",
                         c.c1.word()
                     )))
                 }
-                Verdict::NotProved(why) => return Err(Error::Claim(format!("n = {n}: certificate NOT PROVED ({why})"))),
+                Verdict::NotProved(why) => return Err(Error::Undecided(format!("n = {n}: certificate NOT PROVED ({why})"))),
             };
                 let bound = c.min_jacobian_lower_bound.map(|b| format!(", Jacobian ≥ {b:.4e}")).unwrap_or_default();
                 Ok((
@@ -657,13 +722,13 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                 // a verdict resting on identities checked only to interval
                 // overlap, or no proof: the claim asked for one
                 crate::certify::Verdict::Proved | crate::certify::Verdict::Disproved(_) => {
-                    return Err(Error::Claim(format!(
+                    return Err(Error::Undecided(format!(
                         "n = {n}: certified {} only given the premises the enclosures confirm to interval overlap (not exactly): no unconditional proof",
                         c.verdict.word()
                     )))
                 }
                 crate::certify::Verdict::NotProved(why) => {
-                    return Err(Error::Claim(format!("n = {n}: certificate NOT PROVED ({why})")))
+                    return Err(Error::Undecided(format!("n = {n}: certificate NOT PROVED ({why})")))
                 }
             };
                 let gap = c.margins.gap_lower_bound.map(|g| format!(", gap ≥ {g:.6e}")).unwrap_or_default();
@@ -701,7 +766,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                 for (k, lab) in spec.labels.iter().enumerate() {
                     // a whole label name (`edge[r1,s2,0]`) before its kind and ring
                     let want = match weights.get(&lab.name).or_else(|| weights.get(&selector(lab.kind, lab.ring))) {
-                        Some(e) => eval(e, &env)?.re,
+                        Some(e) => eval_real(e, &env)?,
                         None => 0.0,
                     };
                     let d = (l[k] - want).abs();
@@ -730,7 +795,7 @@ fn run(check: &Check, cache: &mut Cache) -> Result<Partial, Error> {
                     env.insert("s".into(), ParamValue::from_ratio(lab.sector as i64, 1));
                     for (b, map) in [cos, sin].iter().enumerate() {
                         if let Some(e) = map.get(&selector(lab.kind, lab.ring)) {
-                            basis[b][k] = eval(e, &env)?.re;
+                            basis[b][k] = eval_real(e, &env)?;
                         }
                     }
                 }
@@ -912,7 +977,7 @@ fn stated_values(values: &[String], env: &Env) -> Result<Vec<Complex64>, Error> 
     for v in values {
         let (e, count) = match v.split_once(';') {
             Some((e, c)) => {
-                let k = eval(c, env)?.re.round();
+                let k = eval_real(c, env)?.round();
                 if !(0.0..=100_000.0).contains(&k) {
                     return Err(Error::Claim(format!("repeat count of '{v}' is {k}")));
                 }

@@ -46,7 +46,7 @@ impl ClassSpec {
             ClassSpec::Any(v) => v.clone(),
         };
         if v.is_empty() {
-            return Err("class: at least one class must be given".into());
+            return Err(Error::Claim("class: at least one class must be given".into()));
         }
         for c in &v {
             if !CLASSES.contains(&c.as_str()) {
@@ -69,7 +69,9 @@ struct Computed {
 /// when |μ| = λ².
 fn compute(subject: &Subject, n: usize, levels: usize) -> Result<Computed, Error> {
     if subject.neighbourhood.as_deref().is_some_and(|k| k != "analysis") {
-        return Err("the curvature check uses the analysis neighbourhood; leave 'neighbourhood' out".into());
+        return Err(Error::Claim(
+            "the curvature check uses the analysis neighbourhood; leave 'neighbourhood' out".into(),
+        ));
     }
     let (scheme, config) = subject_config(subject, n)?;
     let opts = CurvatureOptions { levels, ..CurvatureOptions::default() };
@@ -211,7 +213,7 @@ pub fn run(
     let levels = levels.unwrap_or(crate::curvature::DEFAULT_LEVELS);
     let configurations = subject.configurations()?;
     if configurations.is_empty() {
-        return Err("no valences given".into());
+        return Err(Error::Claim("no valences given".into()));
     }
     let mut stated_all = Vec::new();
     let mut computed_all = Vec::new();
@@ -229,7 +231,7 @@ pub fn run(
         let c = &k.c;
         let (ev, agree) = evidence(&k);
         if agree == Some(false) {
-            return Err(Error::Claim(format!(
+            return Err(Error::Undecided(format!(
                 "{label}: the routes to the Jordan structure at λ² disagree, so the class ({}) is not decided: {ev}",
                 c.class.name()
             )));
@@ -258,7 +260,7 @@ pub fn run(
         }
         if let Some(entries) = fourier {
             let Some(sh) = &c.shapes else {
-                return Err(Error::Claim(format!(
+                return Err(Error::Undecided(format!(
                     "{label}: F(μ) is not computed here (class {}; F(μ) needs a rotation-symmetric configuration and an eigenvalue μ with an eigenfunction on the ring)",
                     c.class.name()
                 )));

@@ -29,7 +29,7 @@
 
 use num_complex::Complex64;
 
-use super::checks::{env_for, eval, kind_of, show, subject_config};
+use super::checks::{env_for, eval_real, kind_of, show, subject_config};
 use super::Subject;
 use crate::error::{Error, Result};
 use crate::matrix::local::{step_rows_of, AssembleError};
@@ -56,7 +56,7 @@ pub(super) fn one(
 ) -> Result<(bool, String, String)> {
     let env = env_for(subject, n)?;
     let whole = |text: &str| -> Result<i64> {
-        let x = eval(text, &env)?.re;
+        let x = eval_real(text, &env)?;
         if (x - x.round()).abs() > 1e-9 || !(0.0..=1e6).contains(&x) {
             return Err(Error::Claim(format!("'{text}' is {x} at n = {n}, not a count")));
         }
@@ -85,7 +85,8 @@ pub(super) fn one(
         let set = stated_set(&d, r, cut, kinds);
         let what = describe(r, cut, kinds);
         if set.len() != stated {
-            return Err(Error::Claim(format!(
+            // the statement's set is not identified: nothing about it is decided
+            return Err(Error::Undecided(format!(
                 "the set {what} has {} vertices at n = {n}, the statement {stated}: it is not the statement's set",
                 set.len()
             )));
@@ -105,7 +106,7 @@ pub(super) fn one(
                 continue;
             }
         };
-        return Ok(judge(&d, spec, kind, &set, &rows, &what, evidence));
+        return judge(&d, spec, kind, &set, &rows, &what, evidence);
     }
     Err(Error::NotDetermined(format!(
         "the stated set could not be evaluated on patches of up to {} rings: {last}",
@@ -153,7 +154,7 @@ fn judge(
     rows: &[Vec<(usize, f64)>],
     what: &str,
     evidence: &str,
-) -> (bool, String, String) {
+) -> Result<(bool, String, String)> {
     let position: std::collections::HashMap<usize, usize> = set.iter().enumerate().map(|(k, &v)| (v, k)).collect();
     let name = |v: usize| d.labels[v].name.clone();
     let mut outside: Vec<usize> =
@@ -240,20 +241,26 @@ fn judge(
                     )
                 });
             }
+            // an invariant set containing the neighbourhood whose spectrum
+            // is not computed leaves the claim undecided, never refuted
+            Err(e) if contains => {
+                parts.push(format!("spectrum not computed: {e}"));
+                return Err(Error::Undecided(parts.join("; ")));
+            }
             Err(e) => parts.push(format!("spectrum not computed: {e}")),
         }
     } else {
         parts.push("S on a set that is not invariant is not defined".into());
     }
     let ok = invariant && contains && leading;
-    (
+    Ok((
         ok,
         format!(
             "{} vertices: invariant, containing the {kind_text} neighbourhood, same leading eigenvalues",
             set.len()
         ),
         parts.join("; "),
-    )
+    ))
 }
 
 /// Eigenvalues (repeated by multiplicity) of S on an invariant set.

@@ -1,6 +1,8 @@
 //! Paper statements as data (`claims/*.toml`), evaluated against the tool's
 //! computations: every claim ends HOLDS, REFUTED (with the numbers that show
-//! it) or INCONCLUSIVE (the computation could not decide, with the reason).
+//! it), INCONCLUSIVE (the computation ran and could not decide, with the
+//! reason) or ERROR (the claim cannot be read as written, or asserts
+//! nothing: see [`checks::undecided`] and [`Check::validate`]).
 //!
 //! A claim file names its paper and lists claims; each claim has an id, where
 //! it stands in the paper, the statement as printed, the convention it uses,
@@ -82,7 +84,10 @@ fn default_up_to() -> usize {
 #[derive(Clone, Debug, Deserialize)]
 pub struct Claim {
     pub id: String,
-    /// section, equation or figure
+    /// section, equation or figure; required in the built-in registry
+    /// (every claim there cites its place in the paper), optional in a
+    /// user's claim file, where it may mean nothing
+    #[serde(default)]
     pub location: String,
     /// the statement as printed
     pub statement: String,
@@ -364,6 +369,39 @@ fn yes() -> bool {
     true
 }
 
+impl Check {
+    /// What a claim must satisfy before anything is computed: no list that
+    /// the check compares with is empty (a claim that asserts nothing would
+    /// HOLD vacuously), and every option in its range by the same check the
+    /// command line uses. An error here makes the claim an ERROR.
+    pub fn validate(&self) -> Result<(), Error> {
+        let vacuous = |what: &str| {
+            Err(Error::Claim(format!("{what} is empty: the claim asserts nothing (a vacuous claim is an ERROR)")))
+        };
+        match self {
+            Check::Eigenvalues { values, .. } if values.is_empty() => vacuous("values"),
+            Check::MatrixEigenvalues { rows, .. } if rows.is_empty() => vacuous("rows"),
+            Check::MatrixEigenvalues { values, .. } if values.is_empty() => vacuous("values"),
+            Check::LimitStencil { weights, .. } if weights.is_empty() => vacuous("weights"),
+            Check::TangentStencils { cos, .. } if cos.is_empty() => vacuous("cos"),
+            Check::TangentStencils { sin, .. } if sin.is_empty() => vacuous("sin"),
+            Check::InvariantSet { kinds: Some(k), .. } if k.is_empty() => vacuous("kinds"),
+            Check::LatticeMatrix { rows, .. } if rows.is_empty() => vacuous("rows"),
+            Check::Identity { valences: Some(v), .. } if matches!(v, Valences::List(l) if l.is_empty()) => {
+                vacuous("valences")
+            }
+            Check::CharacteristicMap { levels, certified: true, .. } => crate::certify::charmap::check_levels(
+                levels.unwrap_or(crate::certify::charmap::DEFAULT_MAX_LEVELS),
+                "levels",
+            ),
+            Check::CharacteristicMap { levels, resolution, certified: false, .. } => {
+                crate::charmap::CharMapOptions::checked(levels.unwrap_or(3), resolution.unwrap_or(256)).map(|_| ())
+            }
+            _ => Ok(()),
+        }
+    }
+}
+
 /// The keys each check kind reads, besides the common ones
 /// ([`COMMON_KEYS`]); anything else in a claim is an error naming its line.
 pub const CHECK_KEYS: &[(&str, &[&str])] = &[
@@ -592,8 +630,24 @@ fn read_claim(file: &str, k: usize, header: Option<usize>, text: &str, raw: toml
     }
 }
 
+/// The built-in registry's files. Every registry claim cites its place in
+/// the paper: one without a `location` is malformed (an ERROR) here.
 pub fn builtin_files() -> Result<Vec<ClaimFile>, Error> {
-    BUILTIN.iter().map(|(name, text)| parse_file(name, text)).collect()
+    BUILTIN
+        .iter()
+        .map(|(name, text)| {
+            let mut f = parse_file(name, text)?;
+            for c in &mut f.claims {
+                if c.location.trim().is_empty() && !matches!(c.check, Check::Malformed(_)) {
+                    c.check = Check::Malformed(format!(
+                        "{name}: claim '{}' has no location (every registry claim cites its place in the paper)",
+                        c.id
+                    ));
+                }
+            }
+            Ok(f)
+        })
+        .collect()
 }
 
 /// Evaluate several files side by side (papers are independent; each has its

@@ -144,7 +144,10 @@ pub(super) fn check_out(path: &Path) -> Result<(), Error> {
     Ok(())
 }
 
-pub fn charmap(a: &CharmapArgs) -> Result<(), Error> {
+/// `charmap`; Ok holds the exit status: 0, or with `--certify` the
+/// certificate's ([`super::commands::certified_status`]: 0 only when Reif's
+/// criterion is PROVED unconditionally).
+pub fn charmap(a: &CharmapArgs) -> Result<i32, Error> {
     if a.levels == 0 || a.levels > MAX_LEVELS {
         return Err(Error::Input(format!("--levels must be between 1 and {MAX_LEVELS}, got {}", a.levels)));
     }
@@ -174,12 +177,8 @@ pub fn charmap(a: &CharmapArgs) -> Result<(), Error> {
         resolution: a.resolution,
         display_levels: a.out.as_ref().map(|_| a.levels.min(FIGURE_LEVELS)),
     };
-    if a.certify && !(2..=crate::certify::charmap::MAX_LEVELS).contains(&a.certify_levels) {
-        return Err(Error::Input(format!(
-            "--certify-levels must be between 2 and {}, got {}",
-            crate::certify::charmap::MAX_LEVELS,
-            a.certify_levels
-        )));
+    if a.certify {
+        crate::certify::charmap::check_levels(a.certify_levels, "--certify-levels")?;
     }
     opts.check()?;
     let analysis = analyse(
@@ -203,8 +202,12 @@ pub fn charmap(a: &CharmapArgs) -> Result<(), Error> {
         }
         plot::save(&RingFigure { map: &map, copies: a.rings, wedge: a.wedge, sectors: a.sectors, style }, out)?;
     }
+    let status = certificate
+        .as_ref()
+        .map(|c| super::commands::certified_status(&c.c1, c.conditional || c.geometry_conditional))
+        .unwrap_or(0);
     match (a.json, &certificate) {
-        (true, None) => print_json(&map),
+        (true, None) => print_json(&map)?,
         (true, Some(c)) => {
             #[derive(serde::Serialize)]
             struct Certified<'a> {
@@ -212,11 +215,12 @@ pub fn charmap(a: &CharmapArgs) -> Result<(), Error> {
                 map: &'a CharMap,
                 certificate: &'a crate::certify::CharMapCertificate,
             }
-            print_json(&Certified { map: &map, certificate: c })
+            print_json(&Certified { map: &map, certificate: c })?
         }
-        (false, None) => crate::io::out(&table(&map)),
-        (false, Some(c)) => crate::io::out(&format!("{}\n{}", table(&map), certificate_table(c))),
+        (false, None) => crate::io::out(&table(&map))?,
+        (false, Some(c)) => crate::io::out(&format!("{}\n{}", table(&map), certificate_table(c)))?,
     }
+    Ok(status)
 }
 
 /// The characteristic-map certificate as text: the three verdicts and the

@@ -9,14 +9,34 @@ use crate::schemes::{self, Scheme};
 use crate::spectrum::stencils::stencils;
 use crate::spectrum::{analyse, Analysis, Method, Options, Spectrum};
 
-/// Runs a command; Ok holds the exit status (0, or 1 from `verify` when a
-/// claim is not as required).
+/// Runs a command; Ok holds the exit status: 0, or 1 from a command whose
+/// verdict did not hold (`verify`: a claim not as required; `spectrum
+/// --certify`, `charmap --certify`: not proved unconditionally).
 pub fn dispatch(cmd: Command) -> Result<i32, Error> {
     if let Command::Verify { paper, claims, json, junit, check_expected, certificates } = cmd {
         let opts = super::verify::VerifyOptions { json, junit, check_expected, certificates };
         return super::verify::run(paper, &claims, &opts);
     }
-    dispatch_other(cmd).map(|()| 0)
+    if let Some(result) = super::lattice::dispatch(&cmd) {
+        return result.map(|()| 0);
+    }
+    match cmd {
+        Command::Spectrum { common: a, certify: true, certificate } => certified_spectrum(&a, certificate.as_deref()),
+        Command::Charmap(a) => super::charmap_commands::charmap(&a),
+        other => dispatch_other(other).map(|()| 0),
+    }
+}
+
+/// The exit status of a command that prints a certified verdict, with the
+/// meaning `verify` gives it: 0 PROVED unconditionally; 1 anything else
+/// (DISPROVED, NOT PROVED, or PROVED only given premises confirmed to
+/// interval overlap, which a certified claim reads as INCONCLUSIVE). Errors
+/// exit 2 before a verdict exists.
+pub(super) fn certified_status(verdict: &crate::certify::Verdict, conditional: bool) -> i32 {
+    match verdict {
+        crate::certify::Verdict::Proved if !conditional => 0,
+        _ => 1,
+    }
 }
 
 fn dispatch_other(cmd: Command) -> Result<(), Error> {
@@ -42,7 +62,7 @@ fn dispatch_other(cmd: Command) -> Result<(), Error> {
         Command::Curve { scheme, params, neighbourhood, json } => {
             super::mesh_commands::curve(&scheme, &params, &neighbourhood, json)
         }
-        Command::Charmap(a) => super::charmap_commands::charmap(&a),
+        Command::Charmap(_) => unreachable!("charmap is dispatched first"),
         Command::Curvature(a) => super::curvature::run(&a),
         Command::Plot { what } => super::charmap_commands::plot(&what),
         Command::Spectrum { common: a, certify: false, .. } => {
@@ -53,7 +73,7 @@ fn dispatch_other(cmd: Command) -> Result<(), Error> {
                 out_text(&spectrum_table(&analysis.spectrum))
             }
         }
-        Command::Spectrum { common: a, certify: true, certificate } => certified_spectrum(&a, certificate.as_deref()),
+        Command::Spectrum { certify: true, .. } => unreachable!("spectrum --certify is dispatched first"),
         Command::Stencils(a) => {
             let (_, analysis) = run_analysis(&a)?;
             let st = stencils(&analysis.spectrum)?;
@@ -169,7 +189,9 @@ fn run_analysis(a: &AnalysisArgs) -> Result<(Box<dyn Scheme>, Analysis), Error> 
 
 /// `spectrum --certify`: the floating-point spectrum and, beside it, the
 /// certificate (`certify::spectrum`) from the same discovery and labels.
-fn certified_spectrum(a: &AnalysisArgs, document: Option<&std::path::Path>) -> Result<(), Error> {
+/// `spectrum --certify`: the table and the certificate; Ok holds the exit
+/// status ([`certified_status`]).
+fn certified_spectrum(a: &AnalysisArgs, document: Option<&std::path::Path>) -> Result<i32, Error> {
     let (scheme, analysis) = run_analysis(a)?;
     let certificate = crate::certify::certify_analysis(scheme.as_ref(), &analysis)?;
     if let Some(path) = document {
@@ -182,10 +204,11 @@ fn certified_spectrum(a: &AnalysisArgs, document: Option<&std::path::Path>) -> R
             spectrum: &'a Spectrum,
             certificate: &'a crate::certify::SpectrumCertificate,
         }
-        print_json(&Certified { spectrum: &analysis.spectrum, certificate: &certificate })
+        print_json(&Certified { spectrum: &analysis.spectrum, certificate: &certificate })?;
     } else {
-        out_text(&format!("{}\n{}", spectrum_table(&analysis.spectrum), certificate_table(&certificate)))
+        out_text(&format!("{}\n{}", spectrum_table(&analysis.spectrum), certificate_table(&certificate)))?;
     }
+    Ok(certified_status(&certificate.verdict, certificate.conditional))
 }
 
 /// The certificate as text: the verdict, the premises and the margins.
@@ -598,12 +621,15 @@ fn sweep(args: &super::SweepArgs) -> Result<(), Error> {
         print_row(&cells, p.error.as_deref().unwrap_or_default(), if csv || grid.curvature { &added } else { &[] });
     }
     if !csv && grid.param.is_some() {
+        // runs of grid points, not intervals: the true ends lie between a
+        // run's end and the next grid point
+        let step = grid.step();
         for (what, list) in
             [("convergent (λ0 = 1 simple and dominant)", &converging), ("admissible (every computed test)", &intervals)]
         {
-            text += &format!("\nintervals of {name} where the scheme is {what}:\n");
+            text += &format!("\ngrid points of {name} where the scheme is {what}:\n");
             for i in list {
-                text += &format!("  valence {:>4}: [{}, {}]\n", i.valence, i.from, i.to);
+                text += &format!("  valence {:>4}: {}\n", i.valence, i.grid_points(step.as_deref()));
             }
         }
     }

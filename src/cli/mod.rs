@@ -18,9 +18,27 @@ pub struct Cli {
     pub command: Command,
 }
 
+// Exit statuses, one meaning for every command that prints a verdict: 0 the
+// verdict holds (HOLDS, PROVED), 1 a verdict that did not hold (REFUTED,
+// INCONCLUSIVE, DISPROVED, NOT PROVED), 2 an error (nothing was decided).
+const VERIFY_EXIT: &str = "Exit status: 0 every claim HOLDS (with --check-expected: every verdict is the recorded \
+one); 1 a claim is REFUTED or INCONCLUSIVE (with --check-expected: a verdict differs from the recorded one); 2 an \
+error: a claim is ERROR (malformed or vacuous, a missing scheme file, an unknown parameter, a non-real value where \
+a real one is required) or a file cannot be read, whatever --check-expected records.";
+const SPECTRUM_EXIT: &str = "Exit status: with --certify, 0 PROVED unconditionally; 1 DISPROVED, NOT PROVED, or \
+PROVED only given premises confirmed to interval overlap; 2 an error. Without --certify the verdict is a \
+floating-point observation and the exit status is 0 whatever it says (2 on an error).";
+const CHARMAP_EXIT: &str = "Exit status: with --certify, 0 Reif's criterion PROVED unconditionally; 1 DISPROVED, \
+NOT PROVED, or PROVED only given premises confirmed to interval overlap; 2 an error. Without --certify the verdict \
+is a numerical observation and the exit status is 0 whatever it says (2 on an error).";
+const OBSERVED_EXIT: &str = "Exit status: 0 when the analysis ran, whatever the observed verdicts say (they are \
+floating-point observations; decide with `spectrum --certify`, `charmap --certify` or a claim in `verify`); 2 an \
+error.";
+
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Sweep valences (and one parameter): λ0..λ3, verdicts, admissible intervals
+    #[command(after_help = OBSERVED_EXIT)]
     Sweep(SweepArgs),
     /// Write reports/: an index and one page per paper (claims, figures, refuted statements)
     Report {
@@ -29,6 +47,7 @@ pub enum Command {
         out: std::path::PathBuf,
     },
     /// Check the papers' statements (built-in registry, or your own claim files)
+    #[command(after_help = VERIFY_EXIT)]
     Verify {
         /// only this paper of the built-in registry (see the list printed without it)
         #[arg(long)]
@@ -64,6 +83,7 @@ pub enum Command {
         json: bool,
     },
     /// Spectrum of the local subdivision matrix with multiplicities and the Reif verdict
+    #[command(after_help = SPECTRUM_EXIT)]
     Spectrum {
         #[command(flatten)]
         common: AnalysisArgs,
@@ -134,8 +154,10 @@ pub enum Command {
         json: bool,
     },
     /// Characteristic map: regularity and injectivity of the characteristic ring; optional figure
+    #[command(after_help = CHARMAP_EXIT)]
     Charmap(charmap_commands::CharmapArgs),
     /// Second order at the centre: curvature class, L_p limit, F(μ) and shapes, Reif's C² test
+    #[command(after_help = OBSERVED_EXIT)]
     Curvature(curvature::CurvatureArgs),
     /// Figures (SVG, PDF or PNG by the file extension)
     Plot {
@@ -218,7 +240,9 @@ pub struct AnalysisArgs {
 }
 
 /// Runs the command line and returns the exit status: 0 success; 1 when
-/// `verify` finds a claim that is not as required (REFUTED or INCONCLUSIVE);
+/// `verify` finds a claim that is not as required (REFUTED or INCONCLUSIVE)
+/// or a certified verdict is not PROVED unconditionally (`spectrum
+/// --certify`, `charmap --certify`);
 /// 2 for usage errors (clap's full message: what is missing, the usage line)
 /// and for every other error (one line on stderr, control characters shown
 /// escaped).
@@ -274,7 +298,7 @@ pub fn run() -> Result<(), crate::error::Error> {
     let cli = Cli::try_parse().map_err(|e| Error::Input(e.to_string()))?;
     match commands::dispatch(cli.command)? {
         0 => Ok(()),
-        _ => Err(Error::Claim("some claims are not as required".into())),
+        _ => Err(Error::Claim("a verdict did not hold (a claim not as required, or a certificate not proved)".into())),
     }
 }
 

@@ -327,11 +327,40 @@ pub fn run_on(grid: &Grid, threads: usize, progress: &(dyn Fn(usize, usize) + Sy
 }
 
 /// Maximal runs of consecutive swept values, per valence, where a test passes.
+/// `from` and `to` are the first and the last grid point of the run, not the
+/// ends of the true interval (which lies between them and their outside
+/// neighbours on the grid): [`Interval::grid_points`] says so in text.
 #[derive(Clone, Debug, Serialize)]
 pub struct Interval {
     pub valence: usize,
     pub from: String,
     pub to: String,
+}
+
+impl Interval {
+    /// The run as what it is, "grid points A..B (step S)": the grid points
+    /// that pass, never a closed interval [A, B] (the true set of passing
+    /// values is open at a strict bound and reaches past the grid points).
+    pub fn grid_points(&self, step: Option<&str>) -> String {
+        let step = step.map(|s| format!(" (step {s})")).unwrap_or_default();
+        if self.from == self.to {
+            format!("grid point {}{step}", self.from)
+        } else {
+            format!("grid points {}..{}{step}", self.from, self.to)
+        }
+    }
+}
+
+impl Grid {
+    /// The step of the swept parameter (exact text), when it has two values or more.
+    pub fn step(&self) -> Option<String> {
+        let (_, values) = self.param.as_ref()?;
+        let exact = |s: &String| crate::numeric::ParamValue::parse(s).ok().and_then(|p| p.exact);
+        match (values.first().and_then(exact), values.get(1).and_then(exact)) {
+            (Some(a), Some(b)) => Some((b - a).to_string()),
+            _ => None,
+        }
+    }
 }
 
 impl Point {
