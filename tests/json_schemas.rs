@@ -365,6 +365,7 @@ fn verify_json() {
                     ("stated", "s"),
                     ("computed", "s"),
                     ("detail", "s"),
+                    ("seconds", "f"),
                 ],
             );
             assert!(["HOLDS", "REFUTED", "INCONCLUSIVE", "ERROR"].contains(&c["verdict"].as_str().unwrap()));

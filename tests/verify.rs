@@ -222,3 +222,36 @@ rhs = "n"
     let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(doc[0]["claims"][0]["verdict"], "HOLDS", "{}", doc[0]["claims"][0]);
 }
+
+/// Per-claim timings: `--json` gives each claim's wall-clock `seconds`, and
+/// `--slowest K` lists K claims, slowest first, after the table. The claim
+/// ids listed must be the file's own and the times must be those the JSON
+/// orders (non-increasing), so the summary cannot invent or reorder claims.
+#[test]
+fn per_claim_timings_and_the_slowest_claims() {
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/claims/eigenvalues.toml");
+    let out = subdlab(&["verify", "--claims", file, "--json"]);
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let claims = json[0]["claims"].as_array().unwrap();
+    let ids: Vec<&str> = claims.iter().map(|c| c["id"].as_str().unwrap()).collect();
+    assert_eq!(ids.len(), 3);
+    for c in claims {
+        let s = c["seconds"].as_f64().unwrap();
+        assert!(s.is_finite() && s >= 0.0, "{c}");
+    }
+    let out = subdlab(&["verify", "--claims", file, "--slowest", "2"]);
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    let tail = &text[text.find("slowest 2 of 3 claims").expect(&text)..];
+    let rows: Vec<(f64, &str)> = tail
+        .lines()
+        .skip(1)
+        .filter(|l| !l.trim().is_empty())
+        .map(|l| {
+            let f: Vec<&str> = l.split_whitespace().collect();
+            (f[0].parse().unwrap(), *f.last().unwrap())
+        })
+        .collect();
+    assert_eq!(rows.len(), 2, "{tail}");
+    assert!(rows.iter().all(|(_, id)| ids.contains(id)), "{tail}");
+    assert!(rows[0].0 >= rows[1].0, "slowest first: {tail}");
+}

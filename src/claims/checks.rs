@@ -365,6 +365,7 @@ fn outcome(paper: &str, claim: &Claim, p: Partial) -> Outcome {
         stated: p.stated,
         computed: p.computed,
         detail: p.detail,
+        seconds: 0.0,
     }
 }
 

@@ -486,6 +486,10 @@ pub struct Outcome {
     pub computed: String,
     /// what decided the verdict
     pub detail: String,
+    /// wall-clock seconds the claim's evaluation took (its configurations
+    /// run side by side, so on several cores this is less than its CPU
+    /// time); 0 for a file that could not be read
+    pub seconds: f64,
 }
 
 /// The built-in registry: one file per source paper, compiled in.
@@ -711,15 +715,18 @@ pub fn evaluate_with(file: &ClaimFile, options: &EvaluationOptions) -> Vec<Outco
     file.claims
         .iter()
         .map(|c| {
+            let started = std::time::Instant::now();
             let run = std::panic::AssertUnwindSafe(|| checks::evaluate(&file.paper, c, &mut cache));
-            std::panic::catch_unwind(run).unwrap_or_else(|p| {
+            let mut outcome = std::panic::catch_unwind(run).unwrap_or_else(|p| {
                 let why = p
                     .downcast_ref::<&str>()
                     .map(|s| s.to_string())
                     .or_else(|| p.downcast_ref::<String>().cloned())
                     .unwrap_or_default();
                 checks::error_outcome(&file.paper, c, format!("internal error while evaluating this claim: {why}"))
-            })
+            });
+            outcome.seconds = started.elapsed().as_secs_f64();
+            outcome
         })
         .collect()
 }

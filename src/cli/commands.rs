@@ -13,8 +13,8 @@ use crate::spectrum::{analyse, Analysis, Method, Options, Spectrum};
 /// verdict did not hold (`verify`: a claim not as required; `spectrum
 /// --certify`, `charmap --certify`: not proved unconditionally).
 pub fn dispatch(cmd: Command) -> Result<i32, Error> {
-    if let Command::Verify { paper, claims, json, junit, check_expected, certificates } = cmd {
-        let opts = super::verify::VerifyOptions { json, junit, check_expected, certificates };
+    if let Command::Verify { paper, claims, json, junit, check_expected, certificates, slowest } = cmd {
+        let opts = super::verify::VerifyOptions { json, junit, check_expected, certificates, slowest };
         return super::verify::run(paper, &claims, &opts);
     }
     if let Some(result) = super::lattice::dispatch(&cmd) {

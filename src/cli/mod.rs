@@ -73,6 +73,11 @@ pub enum Command {
         /// for `scripts/check_cert.py`; DIR is created if missing
         #[arg(long, value_name = "DIR")]
         certificates: Option<std::path::PathBuf>,
+        /// after the table, list the K claims that took longest (wall-clock
+        /// seconds and share of the total; `--json` gives every claim's
+        /// `seconds`)
+        #[arg(long, value_name = "K")]
+        slowest: Option<usize>,
     },
     /// List the built-in schemes (or the given scheme files) with their parameters, defaults and ranges
     Schemes {

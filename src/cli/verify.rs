@@ -14,6 +14,8 @@ pub struct VerifyOptions {
     pub check_expected: bool,
     /// write every certified claim's certificate documents here
     pub certificates: Option<PathBuf>,
+    /// after the table, the K claims that took longest (text output only)
+    pub slowest: Option<usize>,
 }
 
 /// Largest claim file read (the read stops there: devices and pipes have no
@@ -56,6 +58,7 @@ fn unreadable(path: &Path, message: String) -> (ClaimFile, Vec<Outcome>) {
         stated: String::new(),
         computed: String::new(),
         detail: message,
+        seconds: 0.0,
     };
     (file, vec![outcome])
 }
@@ -121,7 +124,11 @@ pub fn run(paper: Option<String>, user: &[PathBuf], opts: &VerifyOptions) -> Res
             .collect();
         print_json(&out)?;
     } else {
-        crate::io::out(&table(&results, &judge))?;
+        let mut text = table(&results, &judge);
+        if let Some(k) = opts.slowest {
+            text += &slowest(&results, k);
+        }
+        crate::io::out(&text)?;
     }
     let all: Vec<&Outcome> = results.iter().flat_map(|(_, o)| o).collect();
     let errors: Vec<&&Outcome> = all.iter().filter(|o| o.verdict == Verdict::Error).collect();
@@ -207,6 +214,21 @@ fn counts(s: &Summary) -> String {
         t += &format!("; {} of them by construction", s.by_construction);
     }
     t
+}
+
+/// The `k` claims that took longest, slowest first, with their share of the
+/// summed claim time: where the main job's time goes (wall-clock per claim;
+/// `verify --json` gives every claim's `seconds`).
+fn slowest(results: &[(ClaimFile, Vec<Outcome>)], k: usize) -> String {
+    let mut all: Vec<&Outcome> = results.iter().flat_map(|(_, o)| o).collect();
+    let total: f64 = all.iter().map(|o| o.seconds).sum();
+    all.sort_by(|a, b| b.seconds.total_cmp(&a.seconds).then_with(|| a.id.cmp(&b.id)));
+    let mut out = format!("\nslowest {} of {} claims (wall-clock seconds; all claims: {total:.2} s):\n", k.min(all.len()), all.len());
+    for o in all.iter().take(k) {
+        let share = if total > 0.0 { 100.0 * o.seconds / total } else { 0.0 };
+        out += &format!("  {:>8.3} s  {:>5.1} %  {}\n", o.seconds, share, crate::io::printable(&o.id));
+    }
+    out
 }
 
 fn table(results: &[(ClaimFile, Vec<Outcome>)], judge: &Judge) -> String {
