@@ -10,7 +10,11 @@
 //!   the certificate covers (Catmull–Clark, Loop, Doo–Sabin, non-box, 4-3 at
 //!   its quad eons, PGS, TPS).
 //!
-//! `scripts/bench-certify.sh` runs both and prints the README's tables
+//! - `certify_charmap_difference`: the same for Kobbelt √3, whose map is
+//!   proved by the difference-scheme bound (lemma C9) at n = 4, 5, 6, 8
+//!   (seconds per valence, so only these; n = 3 is NOT PROVED).
+//!
+//! `scripts/bench-certify.sh` runs them and prints the README's tables
 //! ("Certified verdicts", "Certified characteristic maps").
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
@@ -65,5 +69,11 @@ fn charmap(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, spectrum, charmap);
+fn charmap_difference(c: &mut Criterion) {
+    bench_group(c, "certify_charmap_difference", &["sqrt3"], &[4, 5, 6, 8], |s, a| {
+        std::hint::black_box(certify_charmap(s, a, DEFAULT_MAX_LEVELS).unwrap().c1);
+    });
+}
+
+criterion_group!(benches, spectrum, charmap, charmap_difference);
 criterion_main!(benches);

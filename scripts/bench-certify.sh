@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs the certified-verdict benchmarks (benches/certify.rs) and prints, per
-# group (certify_spectrum, certify_charmap), the mean time per scheme and
+# group (certify_spectrum, certify_charmap, certify_charmap_difference), the mean time per scheme and
 # valence as the README's tables. Criterion arguments pass through, e.g.
 # `scripts/bench-certify.sh certify_charmap` runs one group.
 set -euo pipefail
@@ -8,14 +8,14 @@ cd "$(dirname "$0")/.."
 cargo bench --bench certify -- "$@" >&2
 python3 - <<'PY'
 import json, os
-for group in ["certify_spectrum", "certify_charmap"]:
+for group in ["certify_spectrum", "certify_charmap", "certify_charmap_difference"]:
     root = os.path.join("target/criterion", group)
     if not os.path.isdir(root):
         continue
     # the schemes the bench measured, in its own order (benches/certify.rs)
     order = ["catmull-clark", "loop", "doo-sabin", "non-box", "four-three", "sqrt3", "unified-sqrt3", "pgs", "tps", "polar-bi2"]
     schemes = [s for s in order if os.path.isdir(os.path.join(root, s))]
-    if not os.path.isdir(os.path.join(root, schemes[0])):
+    if not schemes:
         continue
     ns = sorted(int(d) for d in os.listdir(os.path.join(root, schemes[0])) if d.isdigit())
     def mean(s, n):

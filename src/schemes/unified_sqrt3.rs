@@ -18,6 +18,7 @@
 
 use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
+use super::memo::WeightMemo;
 use crate::numeric::Inexact;
 use crate::numeric::Weight;
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
@@ -29,6 +30,33 @@ pub struct UnifiedSqrt3 {
     /// the same rules under two names: `unified-sqrt3` with α as a parameter
     /// (also per vertex), `sqrt3` fixed at α = 0
     info: &'static SchemeInfo,
+    /// the four weights per valence and weight type at the scheme's own α
+    /// (a mesh without per-vertex α), made once (see `memo`)
+    made: WeightMemo,
+}
+
+/// The weights of eqs. (1) and (2) at one valence and one α.
+struct Sqrt3Weights<W> {
+    centre: W,
+    edge: W,
+    corner: W,
+    ring: W,
+}
+
+impl<W: Weight> Sqrt3Weights<W> {
+    fn new(alpha: W, n: i64) -> Result<Self, Inexact> {
+        let c = W::cos_2pi(1, n)?;
+        let one_minus = W::one() - alpha.clone();
+        let two_a_c = W::int(2) * alpha.clone() * c.clone();
+        Ok(Sqrt3Weights {
+            // eq. (2): the old vertex relaxed
+            centre: (W::int(5) + W::int(4) * alpha.clone() + W::int(2) * one_minus.clone() * c.clone()) / W::int(9),
+            edge: one_minus * (W::int(4) - W::int(2) * c) / W::int(9 * n),
+            // eq. (1): the new face point, one term per corner P
+            corner: (W::int(9) + W::int(4) * alpha.clone() - two_a_c.clone()) / W::int(27),
+            ring: -((W::int(4) * alpha - two_a_c) / W::int(27 * n)),
+        })
+    }
 }
 
 const INFO: SchemeInfo = SchemeInfo {
@@ -60,7 +88,7 @@ pub fn entry() -> SchemeEntry {
         name: INFO.name,
         description: INFO.description,
         params: || vec![ALPHA],
-        build: |params| Box::new(UnifiedSqrt3 { params, info: &INFO }),
+        build: |params| Box::new(UnifiedSqrt3 { params, info: &INFO, made: WeightMemo::new() }),
     }
 }
 
@@ -72,7 +100,7 @@ pub fn kobbelt_entry() -> SchemeEntry {
         params: Vec::new,
         build: |_| {
             let params = Params { values: vec![("alpha".to_string(), crate::numeric::ParamValue::from_ratio(0, 1))] };
-            Box::new(UnifiedSqrt3 { params, info: &KOBBELT_INFO })
+            Box::new(UnifiedSqrt3 { params, info: &KOBBELT_INFO, made: WeightMemo::new() })
         },
     }
 }
@@ -104,18 +132,18 @@ impl Wants for UnifiedSqrt3 {
 impl<W: Weight> Mask<W> for UnifiedSqrt3 {
     fn weight(&self, mesh: &PolyMesh, rule: &'static str, slot: &Slot) -> Result<W, Inexact> {
         let at = slot.at.expect("every slot of the sqrt(3) host's rules belongs to a vertex");
-        let alpha: W = self.alpha(mesh, at)?;
         let n = slot.n as i64;
-        let c = W::cos_2pi(1, n)?;
-        let one_minus = W::one() - alpha.clone();
-        let two_a_c = W::int(2) * alpha.clone() * c.clone();
+        // the scheme's own α is the same at every vertex: its weights are
+        // made once per valence; a per-vertex α makes them at each slot
+        let weights = match mesh.vertex_params {
+            None => self.made.get::<W, _>(n, || Sqrt3Weights::new(self.alpha::<W>(mesh, at)?, n))?,
+            Some(_) => std::sync::Arc::new(Sqrt3Weights::new(self.alpha::<W>(mesh, at)?, n)?),
+        };
         Ok(match (rule, slot.family) {
-            // eq. (2): the old vertex relaxed
-            ("vertex", "centre") => (W::int(5) + W::int(4) * alpha + W::int(2) * one_minus * c) / W::int(9),
-            ("vertex", "edge") => one_minus * (W::int(4) - W::int(2) * c) / W::int(9 * n),
-            // eq. (1): the new face point, one term per corner P
-            ("face", "corner") => (W::int(9) + W::int(4) * alpha - two_a_c) / W::int(27),
-            ("face", "ring") => -((W::int(4) * alpha - two_a_c) / W::int(27 * n)),
+            ("vertex", "centre") => weights.centre.clone(),
+            ("vertex", "edge") => weights.edge.clone(),
+            ("face", "corner") => weights.corner.clone(),
+            ("face", "ring") => weights.ring.clone(),
             // no weight on slots the mask does not use
             _ => W::zero(),
         })
