@@ -63,35 +63,24 @@ impl SmallRational {
     }
 }
 
-impl Add for SmallRational {
-    type Output = Self;
-    fn add(self, b: Self) -> Self {
-        Self::checked(self, b, |x, y| x.checked_add(y))
-    }
+/// The four operations, each the checked one of `Ratio<i128>` (a `None`
+/// spoils the value: an overflow, or a division by zero, which the big
+/// rationals' division would panic on).
+macro_rules! checked_operation {
+    ($trait:ident, $method:ident, $checked:ident) => {
+        impl $trait for SmallRational {
+            type Output = Self;
+            fn $method(self, b: Self) -> Self {
+                Self::checked(self, b, |x, y| x.$checked(y))
+            }
+        }
+    };
 }
 
-impl Sub for SmallRational {
-    type Output = Self;
-    fn sub(self, b: Self) -> Self {
-        Self::checked(self, b, |x, y| x.checked_sub(y))
-    }
-}
-
-impl Mul for SmallRational {
-    type Output = Self;
-    fn mul(self, b: Self) -> Self {
-        Self::checked(self, b, |x, y| x.checked_mul(y))
-    }
-}
-
-impl Div for SmallRational {
-    type Output = Self;
-    fn div(self, b: Self) -> Self {
-        // checked_div is None for a zero divisor, which spoils the value as
-        // the big rationals' division would panic
-        Self::checked(self, b, |x, y| x.checked_div(y))
-    }
-}
+checked_operation!(Add, add, checked_add);
+checked_operation!(Sub, sub, checked_sub);
+checked_operation!(Mul, mul, checked_mul);
+checked_operation!(Div, div, checked_div);
 
 impl Neg for SmallRational {
     type Output = Self;
