@@ -43,7 +43,12 @@ fn bad_sweeps_are_one_line_errors() {
     fails(&["sweep", "non-box", "--valences", "3..5", "--param", "a=0:1:0.1", "--param", "a=0:1:0.5"]);
     fails(&["sweep", "non-box", "--valences", "3..5", "--param", "a=1:0:0.1"]);
     fails(&["sweep", "non-box", "--valences", "5..3"]);
-    fails(&["sweep", "non-box", "--valences", "3..5000"]);
+    // a sweep's cost is about the sum of its valences: 3..5000 (12.5 million)
+    // is refused before any work, while a few high valences are a cheap sweep
+    let e = fails(&["sweep", "non-box", "--valences", "3..5000"]);
+    assert!(e.contains("sums to 12502497") && e.contains("limit 500497"), "{e}");
+    let out = subdlab(&["sweep", "non-box", "--valences", "4999..5000", "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     fails(&["sweep", "non-box", "--valences", "3..5", "--json", "--csv"]);
     fails(&["sweep", "no-such-scheme", "--valences", "3..5"]);
     fails(&["sweep", "loop", "--valences", "3..5", "--param", "q=0:1:0.5"]);

@@ -216,8 +216,21 @@ pub fn parse_valences(s: &str) -> Result<Vec<usize>, Error> {
     }
     crate::neighbourhood::configuration::check_valence(a)?;
     crate::neighbourhood::configuration::check_valence(b)?;
+    // a point costs about linearly in n, so a sweep about the sum of its
+    // valences: refused up front past that of 3..1000 (half a minute on
+    // one core), not after minutes of work
+    let work: u128 = (a as u128 + b as u128) * (b - a + 1) as u128 / 2;
+    if work > MAX_VALENCE_SUM {
+        return Err(Error::Input(format!(
+            "valence range '{s}' sums to {work} over its points, above a sweep's limit {MAX_VALENCE_SUM} (that of \
+             3..1000; a point costs about linearly in n): split the range, or use `spectrum` at single valences"
+        )));
+    }
     Ok((a..=b).collect())
 }
+
+/// The largest sum of the valences of one sweep: that of 3..1000.
+pub const MAX_VALENCE_SUM: u128 = (3 + 1000) * 998 / 2;
 
 /// One point, exactly as `subdlab spectrum` (and `charmap`) would compute it.
 pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
