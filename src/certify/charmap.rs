@@ -918,7 +918,10 @@ fn check_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[Window]) -> Resu
                 } else {
                     (RegularPart::BiquadraticBSpline, [(0, 9), (1, 3), (2, 1), (3, 3)], 16)
                 };
-                vec![(kind, mask.iter().map(|&(s, w)| (gf[(k + s) % 4], SmallRational::ratio(w, denominator))).collect())]
+                vec![(
+                    kind,
+                    mask.iter().map(|&(s, w)| (gf[(k + s) % 4], SmallRational::ratio(w, denominator))).collect(),
+                )]
             }
             _ => continue,
         };
@@ -977,7 +980,11 @@ fn exact_stencil(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> Result
     for (v, w) in big.terms {
         *exact.entry(v).or_insert_with(<Rational as Weight>::zero) += w;
     }
-    Ok(exact.into_iter().filter(|(_, w)| !Weight::is_zero(w)).map(|(v, w)| (v, SmallRational::from_rational(&w))).collect())
+    Ok(exact
+        .into_iter()
+        .filter(|(_, w)| !Weight::is_zero(w))
+        .map(|(v, w)| (v, SmallRational::from_rational(&w)))
+        .collect())
 }
 
 /// The rule check for non-box windows: every new point that the limit over

@@ -115,9 +115,7 @@ pub fn write(path: &std::path::Path, doc: &Value) -> Result<(), Error> {
 /// rational or cyclotomic, and row by row where a chunk is not exact.
 fn all_exact_rows(scheme: &dyn Scheme, analysis: &Analysis) -> Vec<Option<Vec<(usize, Cyclotomic)>>> {
     let everyone: Vec<usize> = (0..analysis.spectrum.labels.len()).collect();
-    if let Ok(rows) =
-        assemble_rows_rational(scheme, &analysis.discovered, analysis.spectrum.neighbourhood, &everyone)
-    {
+    if let Ok(rows) = assemble_rows_rational(scheme, &analysis.discovered, analysis.spectrum.neighbourhood, &everyone) {
         return rows
             .into_iter()
             .map(|r| Some(r.into_iter().map(|(c, w)| (c, Cyclotomic::from_rational(&w))).collect()))

@@ -3,7 +3,6 @@
 //! later (which is the level-0 part scaled by λ1), and the two boundary
 //! polygons of the ring.
 
-
 use nalgebra::{Matrix2, Vector2};
 
 use super::net::{facet_triangles, Net};

@@ -223,7 +223,11 @@ fn slowest(results: &[(ClaimFile, Vec<Outcome>)], k: usize) -> String {
     let mut all: Vec<&Outcome> = results.iter().flat_map(|(_, o)| o).collect();
     let total: f64 = all.iter().map(|o| o.seconds).sum();
     all.sort_by(|a, b| b.seconds.total_cmp(&a.seconds).then_with(|| a.id.cmp(&b.id)));
-    let mut out = format!("\nslowest {} of {} claims (wall-clock seconds; all claims: {total:.2} s):\n", k.min(all.len()), all.len());
+    let mut out = format!(
+        "\nslowest {} of {} claims (wall-clock seconds; all claims: {total:.2} s):\n",
+        k.min(all.len()),
+        all.len()
+    );
     for o in all.iter().take(k) {
         let share = if total > 0.0 { 100.0 * o.seconds / total } else { 0.0 };
         out += &format!("  {:>8.3} s  {:>5.1} %  {}\n", o.seconds, share, crate::io::printable(&o.id));

@@ -81,10 +81,8 @@ pub fn assemble_rows_rational(
     which: &[usize],
 ) -> Result<Vec<Vec<(usize, Rational)>>, AssembleError> {
     let small = assemble_rows::<SmallRational>(scheme, d, kind, which)?;
-    let exact: Option<Vec<Vec<(usize, Rational)>>> = small
-        .iter()
-        .map(|row| row.iter().map(|(c, w)| w.to_rational().map(|w| (*c, w))).collect())
-        .collect();
+    let exact: Option<Vec<Vec<(usize, Rational)>>> =
+        small.iter().map(|row| row.iter().map(|(c, w)| w.to_rational().map(|w| (*c, w))).collect()).collect();
     match exact {
         Some(rows) => Ok(rows),
         None => assemble_rows::<Rational>(scheme, d, kind, which),

@@ -157,7 +157,11 @@ pub fn check_valence_for(scheme: &dyn Scheme, n: usize) -> Result<(), Error> {
             "about {:.0} KiB per sector, from its neighbourhood at valence {}{}",
             per / 1024.0,
             super::discovery::PROBE_VALENCE,
-            if square > 0.0 { format!(", and {square:.0} bytes per n² for its two-refinement steps") } else { String::new() }
+            if square > 0.0 {
+                format!(", and {square:.0} bytes per n² for its two-refinement steps")
+            } else {
+                String::new()
+            }
         ),
         &format!("the largest valence that fits is about {fits}"),
     )

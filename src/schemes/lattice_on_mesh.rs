@@ -151,7 +151,8 @@ impl Rules<Rational> for LatticeOnMesh {
 impl Rules<SmallRational> for LatticeOnMesh {
     fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<SmallRational> {
         let exact = self.rule::<Rational>(mesh, origin)?;
-        Ok(exact.map(|s| Stencil { terms: s.terms.iter().map(|(v, w)| (*v, SmallRational::from_rational(w))).collect() }))
+        Ok(exact
+            .map(|s| Stencil { terms: s.terms.iter().map(|(v, w)| (*v, SmallRational::from_rational(w))).collect() }))
     }
 }
 

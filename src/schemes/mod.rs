@@ -15,8 +15,8 @@ pub mod four_three;
 // regular-lattice schemes (Z², `crate::lattice`), listed in `registry` with the rest
 pub mod khan_mustafa;
 pub mod lattice_on_mesh;
-pub mod memo;
 pub mod loop_subdivision;
+pub mod memo;
 pub mod non_box;
 pub mod pgs;
 pub mod polar_bi2;

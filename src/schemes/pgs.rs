@@ -19,13 +19,13 @@
 //! given, replace μ_n and λ_sub at every valence n ≠ 4 (valence 4 keeps the
 //! paper's values, which make a 4-gon's rules the biquadratic ones).
 
+use super::memo::WeightMemo;
 use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
 use crate::sdc::{Origin, RuleResult};
-use super::memo::WeightMemo;
 use std::sync::Arc;
 
 pub struct Pgs {

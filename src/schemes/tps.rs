@@ -35,13 +35,13 @@
 //! Valence 4 keeps the tensor-product rule, so regular regions stay the
 //! regular adjustable scheme.
 
+use super::memo::WeightMemo;
 use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
 use crate::sdc::{Origin, RuleResult};
-use super::memo::WeightMemo;
 use std::sync::Arc;
 
 pub struct Tps {

@@ -16,9 +16,9 @@
 //! that. The expansions are implemented because they are the rules the paper
 //! states in full and because they reduce to Kobbelt's rules (1), (2) at α = 0.
 
+use super::memo::WeightMemo;
 use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
-use super::memo::WeightMemo;
 use crate::numeric::Inexact;
 use crate::numeric::Weight;
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
