@@ -959,32 +959,16 @@ type Mask = HashMap<usize, SmallRational>;
 fn exact_stencil(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> Result<Mask, String> {
     let irrational = |_| "a rule over the ring has an irrational weight".to_string();
     let missing = "a rule over the ring cannot be evaluated on the net";
+    // `stencil_at` gives the stencil merged (repeated points summed, zeros
+    // dropped), so it only has to be keyed by point here
     let small = stencil_at::<SmallRational>(scheme, mesh, origin).map_err(irrational)?.ok_or(missing)?;
-    let merge = |terms: Vec<(usize, SmallRational)>| -> Mask {
-        let mut merged: Mask = HashMap::new();
-        for (v, w) in terms {
-            let sum = merged.entry(v).or_insert_with(SmallRational::zero);
-            *sum = *sum + w;
-        }
-        merged.retain(|_, w| !Weight::is_zero(w));
-        merged
-    };
-    let got = merge(small.terms);
-    if got.values().all(|w| !w.is_spoiled()) {
-        return Ok(got);
+    if small.terms.iter().all(|(_, w)| !w.is_spoiled()) {
+        return Ok(small.terms.into_iter().collect());
     }
     // an intermediate left the machine integers: the big rationals decide,
     // and a final weight that still does not fit stays spoiled
     let big = stencil_at::<Rational>(scheme, mesh, origin).map_err(irrational)?.ok_or(missing)?;
-    let mut exact: HashMap<usize, Rational> = HashMap::new();
-    for (v, w) in big.terms {
-        *exact.entry(v).or_insert_with(<Rational as Weight>::zero) += w;
-    }
-    Ok(exact
-        .into_iter()
-        .filter(|(_, w)| !Weight::is_zero(w))
-        .map(|(v, w)| (v, SmallRational::from_rational(&w)))
-        .collect())
+    Ok(big.terms.iter().map(|(v, w)| (*v, SmallRational::from_rational(w))).collect())
 }
 
 /// The rule check for non-box windows: every new point that the limit over
