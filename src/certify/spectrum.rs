@@ -224,10 +224,13 @@ const STATEMENT: &str = "for the true local subdivision matrix S on the analysis
 
 /// [`certify_spectrum`] with the configuration's own rotation period (the
 /// valence when the scheme's rules are not rotation symmetric).
+/// Made once per analysis and shared (a spectral claim and a characteristic
+/// map claim about the same scheme and valence prove the same spectrum).
 pub fn certify_analysis(scheme: &dyn Scheme, analysis: &Analysis) -> Result<SpectrumCertificate, Error> {
     let config = &analysis.discovered.config;
     let period = config.rotation_period(scheme);
-    certify_spectrum(scheme, analysis, period)
+    let shared = analysis.derived(period as u64, || certify_spectrum(scheme, analysis, period))?;
+    Ok(SpectrumCertificate::clone(&shared))
 }
 
 /// The orbits [`certify_analysis`] builds its Fourier blocks on (the

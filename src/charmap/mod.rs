@@ -21,7 +21,7 @@ use serde::Serialize;
 use crate::error::Error;
 use crate::neighbourhood::{Configuration, NeighbourhoodKind};
 use crate::sdc::Scheme;
-use crate::spectrum::{analyse, Analysis, Options};
+use crate::spectrum::{analyse_shared, Analysis, Options};
 pub use raster::Coverage;
 pub use regularity::Regularity;
 pub use ring::{Ring, Tri};
@@ -125,8 +125,11 @@ pub fn characteristic_map(
     opts: &CharMapOptions,
 ) -> Result<CharMap, Error> {
     opts.check()?;
-    let analysis =
-        analyse(scheme, config, &Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false })?;
+    let analysis = analyse_shared(
+        scheme,
+        config,
+        &Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false },
+    )?;
     check_map(scheme, &analysis, opts)
 }
 

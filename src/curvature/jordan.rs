@@ -195,7 +195,7 @@ pub fn growth_test(
     let below = spec.eigenvalues.iter().map(|e| e.modulus).filter(|&m| m < nu * (1.0 - 1e-6)).fold(0.0, f64::max);
     let window =
         if below <= 0.0 { 10 } else { ((1e-10f64).ln() / (below / nu).ln()).ceil().clamp(10.0, 400.0) as usize };
-    let sampler = RingSampler::new(scheme, &analysis.discovered, level)?;
+    let sampler = RingSampler::shared(scheme, &analysis.discovered, level)?;
     let mut x = nalgebra::DVector::<f64>::from_vec(generic(s));
     x = &projector * x;
     let scale = inf_norm(x.as_slice()).max(1e-300);
@@ -231,7 +231,7 @@ pub fn growth_test(
         let g = tail.as_slice();
         let gs = inf_norm(g).max(1e-300);
         for l in 1..=levels {
-            let sm = RingSampler::new(scheme, &analysis.discovered, l)?;
+            let sm = RingSampler::shared(scheme, &analysis.discovered, l)?;
             top_levels.push(ring_size(&sm, g) / gs);
         }
         let last = top_levels.len();

@@ -98,7 +98,7 @@ use crate::error::Error;
 use crate::neighbourhood::{Configuration, NeighbourhoodKind};
 use crate::numeric::Rational;
 use crate::sdc::Scheme;
-use crate::spectrum::{analyse, Analysis, Eigenvalue, Method, Options, Spectrum, Synthesis};
+use crate::spectrum::{analyse_shared, Analysis, Eigenvalue, Method, Options, Spectrum, Synthesis};
 pub use sampler::RingSampler;
 
 /// Relative tolerance for equal eigenvalue moduli (|μ| against λ²).
@@ -319,7 +319,7 @@ pub struct SurfaceRows {
 /// on) and run the second-order analysis.
 pub fn curvature(scheme: &dyn Scheme, config: &Configuration, opts: &CurvatureOptions) -> Result<Curvature, Error> {
     let options = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
-    let analysis = analyse(scheme, config, &options)?;
+    let analysis = analyse_shared(scheme, config, &options)?;
     let c = curvature_of_analysis(scheme, &analysis, opts)?;
     // the exact path (a characteristic polynomial over Q, about a second for
     // 80 × 80) runs only where it can decide something: λ and μ both read as
@@ -327,7 +327,7 @@ pub fn curvature(scheme: &dyn Scheme, config: &Configuration, opts: &CurvatureOp
     let eigs = &analysis.spectrum.eigenvalues;
     let rational = |i: usize| eigs.get(i).is_some_and(|e| e.recognised.is_some());
     if opts.exact && c.mu.as_ref().is_some_and(|m| rational(1) && rational(m.index)) {
-        let exact = analyse(scheme, config, &Options { exact: true, ..options })?;
+        let exact = analyse_shared(scheme, config, &Options { exact: true, ..options })?;
         return curvature_of_analysis(scheme, &exact, opts);
     }
     Ok(c)
@@ -395,7 +395,7 @@ pub fn curvature_of_analysis(
     }
     let lambda = pair.lambda;
     let lam2 = lambda * lambda;
-    let sampler = RingSampler::new(scheme, &analysis.discovered, opts.levels)?;
+    let sampler = RingSampler::shared(scheme, &analysis.discovered, opts.levels)?;
     out.ring_vertices = sampler.ring_vertices.len();
 
     // eigenvalues below λ, descending, until μ is found and both |μ| and λ²

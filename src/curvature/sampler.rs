@@ -15,6 +15,7 @@ use crate::error::Error;
 use crate::neighbourhood::Discovered;
 use crate::refine::SparseRow;
 use crate::sdc::Scheme;
+use std::sync::Arc;
 
 pub struct RingSampler {
     pub net: Net<SparseRow<f64>>,
@@ -61,6 +62,14 @@ fn check_memory(bytes: f64, levels: usize, size: usize) -> Result<(), Error> {
 
 impl RingSampler {
     /// Refine unit rows `levels` analysis steps.
+    /// [`RingSampler::new`], made once per discovery and level count and
+    /// shared: the curvature class, the Jordan growth test (at several
+    /// levels) and the exact route of one scheme and configuration sample
+    /// the same net.
+    pub fn shared(scheme: &dyn Scheme, d: &Discovered, levels: usize) -> Result<Arc<Self>, Error> {
+        d.derived(levels as u64, || RingSampler::new(scheme, d, levels))
+    }
+
     pub fn new(scheme: &dyn Scheme, d: &Discovered, levels: usize) -> Result<Self, Error> {
         let mut level0 = vec![None; d.patch.num_vertices()];
         for (k, &v) in d.analysis.iter().enumerate() {

@@ -19,5 +19,7 @@
 pub mod closure;
 pub mod exact;
 pub mod local;
+// results shared across callers (one discovery per scheme and configuration)
+pub mod memo;
 
 pub use local::LocalMatrix;

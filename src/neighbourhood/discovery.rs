@@ -17,6 +17,8 @@ use std::cell::RefCell;
 use std::collections::{BTreeSet, HashMap};
 use std::sync::{Arc, OnceLock};
 
+use crate::engine::memo::{Derived, Memo};
+
 use super::builder::build_patch;
 use super::configuration::Configuration;
 use super::labels::{canonical_order, label_vertices, VertexLabel};
@@ -73,6 +75,9 @@ pub struct Discovered {
     /// Fourier blocks need, composed exactly as assembly composes them, so
     /// assembly takes them from here instead of composing them again.
     pub(crate) composite: HashMap<usize, SparseRow<f64>>,
+    /// What later stages derive from this discovery alone (see
+    /// [`Discovered::derived`]).
+    derived: Derived,
 }
 
 /// The refinements of one analysis step of the whole patch (one for binary
@@ -178,6 +183,19 @@ impl Discovered {
     pub(crate) fn composite_row(&self, v: usize) -> Option<&SparseRow<f64>> {
         self.composite.get(&v)
     }
+    /// The value of type `T` derived from this discovery under `key`, made by
+    /// `make` the first time it is asked for (a failure is not kept). For
+    /// values that depend on nothing but the discovery, its scheme (the
+    /// one that discovered it, as for [`Discovered::float_stencils`]) and
+    /// `key`: the characteristic ring's net at a level count is refined once
+    /// for the curvature class, the Jordan growth test and the exact route.
+    pub fn derived<T: std::any::Any + Send + Sync, E>(
+        &self,
+        key: u64,
+        make: impl FnOnce() -> Result<T, E>,
+    ) -> Result<Arc<T>, E> {
+        self.derived.get_or_try_insert(key, make)
+    }
 }
 
 /// Per refinement and vertex, the float stencil once evaluated: the outer
@@ -205,6 +223,32 @@ const MAX_LEVELS: usize = 3;
 
 pub fn discover(scheme: &dyn Scheme, config: &Configuration) -> Result<Discovered, Error> {
     discover_from(scheme, config, first_patch_rings(scheme, config))
+}
+
+/// Discoveries made in this process, by scheme identity and configuration.
+static DISCOVERIES: Memo<Discovered> = Memo::new(512 << 20);
+
+/// Bytes a discovery holds per vertex of its level-0 patch: the patch, the
+/// refined meshes of one analysis step (several times the patch), labels,
+/// and the composite and float stencil rows. A generous estimate, used only
+/// to bound the memo.
+const MEMO_BYTES_PER_PATCH_VERTEX: usize = 4096;
+
+/// [`discover`], shared: the same scheme (by [`Scheme::identity`]) and
+/// configuration are discovered once per process, and every caller gets the
+/// same value (its lazily made parts, the whole refinement step and the float
+/// stencils, are made once too). A scheme without an identity is discovered
+/// afresh.
+pub fn discover_shared(scheme: &dyn Scheme, config: &Configuration) -> Result<Arc<Discovered>, Error> {
+    let Some(identity) = scheme.identity() else {
+        return discover(scheme, config).map(Arc::new);
+    };
+    let key = format!("{identity} {config:?}");
+    DISCOVERIES.get_or_try_insert(
+        key,
+        || discover(scheme, config),
+        |d| d.patch.num_vertices() * MEMO_BYTES_PER_PATCH_VERTEX,
+    )
 }
 
 /// [`discover`] on a level-0 patch of at least `min_rings` rings (at most
@@ -276,7 +320,7 @@ pub fn bytes_per_sector(scheme: &dyn Scheme) -> f64 {
         sectors: vec![scheme.sector_kind(); PROBE_VALENCE],
         face_control: scheme.face_control(),
     };
-    match discover(scheme, &probe) {
+    match discover_shared(scheme, &probe) {
         Ok(d) => {
             let vertices =
                 d.patch.num_vertices() + d.refinements().iter().map(|r| r.mesh.num_vertices()).sum::<usize>();
@@ -300,7 +344,7 @@ fn first_patch_rings(scheme: &dyn Scheme, config: &Configuration) -> usize {
         return 2;
     }
     let probe = Configuration { sectors: config.sectors[..period].repeat(PROBE_VALENCE / period), ..config.clone() };
-    discover(scheme, &probe).map_or(2, |d| d.patch_rings)
+    discover_shared(scheme, &probe).map_or(2, |d| d.patch_rings)
 }
 
 /// A float stencil as one refinement step evaluates it; None when the rule
@@ -741,6 +785,7 @@ fn try_discover(
         patch_rings: rings,
         analysis_levels: levels_used,
         composite,
+        derived: Derived::default(),
     })
 }
 

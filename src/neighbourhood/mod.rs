@@ -9,5 +9,5 @@ pub mod labels;
 
 pub use builder::build_patch;
 pub use configuration::Configuration;
-pub use discovery::{discover, discover_with_rings, Discovered, NeighbourhoodKind};
+pub use discovery::{discover, discover_shared, discover_with_rings, Discovered, NeighbourhoodKind};
 pub use labels::{VertexKind, VertexLabel};

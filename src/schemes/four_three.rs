@@ -218,4 +218,10 @@ impl Scheme for FourThree {
     fn at_level(&self, level: usize) -> Option<Box<dyn Scheme>> {
         Some(Box::new(FourThree { params: self.params.clone(), level: Some(level) }))
     }
+    /// The first levels of a real mesh blend the eon rules in, so the level
+    /// is part of what the rules are.
+    fn identity(&self) -> Option<String> {
+        let params: Vec<String> = self.params.values.iter().map(|(k, v)| format!("{k}={}", v.text)).collect();
+        Some(format!("{} [{}] level {:?}", INFO.name, params.join(", "), self.level))
+    }
 }

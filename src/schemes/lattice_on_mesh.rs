@@ -180,4 +180,9 @@ impl Scheme for LatticeOnMesh {
     fn params(&self) -> &Params {
         &self.params
     }
+    /// A lattice scheme may come from a file whose name another file shares:
+    /// not memoised (no registry claim analyses these on a mesh repeatedly).
+    fn identity(&self) -> Option<String> {
+        None
+    }
 }

@@ -145,6 +145,15 @@ pub trait Scheme:
     fn at_level(&self, _level: usize) -> Option<Box<dyn Scheme>> {
         None
     }
+    /// What identifies these rules to results memoised across callers
+    /// (`engine::memo`): equal identities must mean equal rules. `None`: never
+    /// memoised. The default, name and parameter values, holds for a built-in
+    /// whose rules depend on nothing else; a scheme read from a file (two files
+    /// may share a name) or one with another input (a refinement level) says so.
+    fn identity(&self) -> Option<String> {
+        let params: Vec<String> = self.params().values.iter().map(|(k, v)| format!("{k}={}", v.text)).collect();
+        Some(format!("{} [{}]", self.info().name, params.join(", ")))
+    }
 }
 
 /// Accessors to the description, so callers write `scheme.name()` rather

@@ -19,7 +19,10 @@ use serde::Serialize;
 use crate::dft::{fourier_blocks_from_rows, omega_pow, Orbits};
 use crate::matrix::local::{assemble_rows_f64, assemble_rows_rational, lazy_full_f64, set_labels};
 use crate::matrix::{assemble, FullMatrix, LocalMatrix};
-use crate::neighbourhood::{discover, Configuration, Discovered, NeighbourhoodKind, VertexLabel};
+use crate::neighbourhood::{discover_shared, Configuration, Discovered, NeighbourhoodKind, VertexLabel};
+use std::sync::Arc;
+
+use crate::engine::memo::{Derived, Memo};
 use crate::numeric::recognise::recognise;
 use crate::numeric::Rational;
 use crate::sdc::Scheme;
@@ -207,17 +210,62 @@ pub const MAX_FULL_SIZE: usize = 1500;
 
 /// Everything computed for one scheme and configuration.
 pub struct Analysis {
-    pub discovered: Discovered,
+    /// shared with every analysis of the same scheme and configuration
+    /// (`discover_shared`)
+    pub discovered: Arc<Discovered>,
     /// S over the whole neighbourhood; with Fourier blocks only the
     /// representative rows were needed, and the rest is assembled on first
     /// access (see [`FullMatrix`])
     pub matrix: FullMatrix<f64>,
     pub exact_matrix: Option<FullMatrix<Rational>>,
     pub spectrum: Spectrum,
+    /// What later stages derive from this analysis alone (a spectral
+    /// certificate), made once for every caller that shares it
+    /// ([`analyse_shared`]); see [`Analysis::derived`].
+    derived: Derived,
+}
+
+impl Analysis {
+    /// The value of type `T` derived from this analysis (and the scheme that
+    /// made it) under `key`, made by `make` the first time it is asked for.
+    pub fn derived<T: std::any::Any + Send + Sync, E>(
+        &self,
+        key: u64,
+        make: impl FnOnce() -> Result<T, E>,
+    ) -> Result<Arc<T>, E> {
+        self.derived.get_or_try_insert(key, make)
+    }
+}
+
+/// Analyses made in this process, by scheme identity, configuration and
+/// options (see [`analyse_shared`]).
+static ANALYSES: Memo<Analysis> = Memo::new(1 << 30);
+
+/// Bytes an analysis holds per label, besides its shared discovery: the
+/// rows of S, labels, and per block its eigenvalues and right eigenvectors
+/// (a block of size m holds m² complex numbers, so this grows with the block
+/// size; counted generously as 16 bytes per entry plus the rest).
+fn analysis_bytes(a: &Analysis) -> usize {
+    let size = a.spectrum.labels.len();
+    let block = size.div_ceil(a.spectrum.valence.max(1)).max(1);
+    size * (16 * block + 2048)
+}
+
+/// [`analyse`], shared: one scheme (by [`Scheme::identity`]), configuration
+/// and set of options are analysed once per process, and every caller
+/// reads the same analysis (`subdlab verify` decides many claims about the
+/// same scheme and valence; the curvature class and its exact route ask
+/// twice). A scheme without an identity is analysed afresh.
+pub fn analyse_shared(scheme: &dyn Scheme, config: &Configuration, opts: &Options) -> Result<Arc<Analysis>, Error> {
+    let Some(identity) = scheme.identity() else {
+        return analyse(scheme, config, opts).map(Arc::new);
+    };
+    let key = format!("{identity} {config:?} {opts:?}");
+    ANALYSES.get_or_try_insert(key, || analyse(scheme, config, opts), analysis_bytes)
 }
 
 pub fn analyse(scheme: &dyn Scheme, config: &Configuration, opts: &Options) -> Result<Analysis, Error> {
-    let discovered = discover(scheme, config)?;
+    let discovered = discover_shared(scheme, config)?;
     let kind = opts.neighbourhood;
     let n = config.valence();
     let rows = MeshRows { scheme, discovered: &discovered, kind };
@@ -241,7 +289,7 @@ pub fn analyse(scheme: &dyn Scheme, config: &Configuration, opts: &Options) -> R
         rows: &rows,
     };
     let driver::Solved { matrix, exact_matrix, spectrum } = driver::solve(problem)?;
-    Ok(Analysis { discovered, matrix, exact_matrix, spectrum })
+    Ok(Analysis { discovered, matrix, exact_matrix, spectrum, derived: Derived::default() })
 }
 
 /// The rows of S on a mesh neighbourhood, assembled from the scheme's rules

@@ -25,6 +25,8 @@ struct Shared {
     /// (rule, family) -> field index in `weights`
     fields: HashMap<(&'static str, &'static str), usize>,
     blend_levels: Option<usize>,
+    /// the file's parsed definition and the overrides, as text (`Scheme::identity`)
+    identity: String,
 }
 
 /// A user scheme with its parameter values fixed and its weights checked.
@@ -82,6 +84,7 @@ impl UserSchemeDef {
                 weights: WeightTable::new(env, exprs, face_corner),
                 fields,
                 blend_levels: self.blend_levels,
+                identity: format!("file {self:?} overrides {overrides:?}"),
             }),
             level: None,
         })
@@ -151,6 +154,11 @@ impl Scheme for UserScheme {
     fn at_level(&self, level: usize) -> Option<Box<dyn Scheme>> {
         self.shared.blend_levels?;
         Some(Box::new(UserScheme { shared: self.shared.clone(), level: Some(level) }))
+    }
+    /// Two files may share a name: the whole parsed definition and the
+    /// parameter values given are the identity, with the refinement level.
+    fn identity(&self) -> Option<String> {
+        Some(format!("{} level {:?}", self.shared.identity, self.level))
     }
 }
 
