@@ -1,56 +1,37 @@
-//! The analysis commands (`spectrum`, `stencils`, `matrix`) for the schemes
-//! that have no mesh configuration: regular-lattice schemes (built-in
-//! `khan-mustafa`, `khan-mustafa-cubic`, or a `domain = "lattice"` file) and
-//! curve schemes (`spectrum` only, the same output as `subdlab curve`). The
-//! family comes from the one registry (`schemes::registry`); lattice output
-//! reuses the mesh tables and JSON types, so the stable field names are the
-//! same as for every other scheme.
+//! The analysis commands (`spectrum`, `stencils`, `matrix`) on the native
+//! windows of the schemes that have no mesh configuration: regular-lattice
+//! schemes (built-in `khan-mustafa`, `khan-mustafa-cubic`, or a `domain =
+//! "lattice"` file) and curve schemes (`spectrum` only, the same output as
+//! `subdlab curve`). The front door (`cli::front_door`) resolves the scheme
+//! and routes it here by its domain; lattice output reuses the mesh tables
+//! and JSON types, so the stable field names are the same as for every other
+//! scheme.
 
-use super::commands::{out_text, parse_params};
+use super::commands::out_text;
 use super::{AnalysisArgs, Command};
+use crate::curves::CurveScheme;
 use crate::error::Error;
 use crate::io::{print_json, write_atomic};
 use crate::lattice::analysis::{analyse, LatticeAnalysis};
 use crate::lattice::{self, LatticeScheme};
 use crate::matrix::export::{to_matrix_market, MatrixJson};
 use crate::neighbourhood::NeighbourhoodKind;
-use crate::schemes::registry::{self, Family};
 use crate::spectrum::stencils::stencils;
 
-/// `None` when the command is not an analysis of a lattice or curve scheme
-/// (the mesh path runs, and reports unknown names and unreadable files).
-pub(super) fn dispatch(cmd: &Command) -> Option<Result<(), Error>> {
-    let args = match cmd {
-        Command::Spectrum { common: a, .. } | Command::Stencils(a) => a,
-        Command::Matrix { common, .. } => common,
-        // only the analysis commands are routed by family here
-        _ => return None,
+/// A curve scheme under `spectrum` (the front door routes only that here):
+/// its vertex has two neighbours, so the valence must be 2; the output is
+/// that of `subdlab curve`.
+pub(super) fn curve(cmd: &Command, scheme: &dyn CurveScheme) -> Result<(), Error> {
+    let Command::Spectrum { common: a, .. } = cmd else {
+        return Err(Error::Input(format!("'{}' is a curve scheme: only `subdlab spectrum` runs on it", scheme.name())));
     };
-    match registry::family_of(&args.scheme) {
-        Ok(Family::Lattice) => Some(run(cmd, args)),
-        Ok(Family::Curve) => Some(curve(cmd, args)),
-        Ok(Family::Mesh) | Err(_) => None,
-    }
-}
-
-/// A curve scheme under `spectrum`: its vertex has two neighbours, so the
-/// valence must be 2; the output is that of `subdlab curve`.
-fn curve(cmd: &Command, a: &AnalysisArgs) -> Result<(), Error> {
-    let name = &a.scheme;
-    if !matches!(cmd, Command::Spectrum { .. }) {
-        return Err(Error::Input(format!(
-            "'{name}' is a curve scheme: use `subdlab spectrum` or `subdlab curve` (the JSON carries the matrix)"
-        )));
-    }
-    if matches!(cmd, Command::Spectrum { certify: true, .. }) {
-        return Err(Error::Input(format!("--certify covers mesh schemes only; '{name}' is a curve scheme")));
-    }
-    if a.valence != 2 {
+    let name = &a.config.scheme;
+    if a.config.valence != 2 {
         return Err(Error::Input(format!(
             "'{name}' is a curve scheme: a curve vertex has two neighbours (use --valence 2)"
         )));
     }
-    if a.faces.is_some() {
+    if a.config.faces.is_some() {
         return Err(Error::Input(format!("scheme '{name}' takes no --faces: it is a curve scheme")));
     }
     match a.method.as_deref() {
@@ -61,16 +42,24 @@ fn curve(cmd: &Command, a: &AnalysisArgs) -> Result<(), Error> {
             )))
         }
     }
-    super::mesh_commands::curve(name, &a.params, &a.neighbourhood, a.json)
+    super::mesh_commands::curve_of(scheme, &a.neighbourhood, a.json)
 }
 
-fn run(cmd: &Command, a: &AnalysisArgs) -> Result<(), Error> {
-    let (built, analysis) = prepare(a)?;
+/// A regular-lattice scheme under `spectrum`, `stencils` or `matrix`: the
+/// analysis of its invariant window.
+pub(super) fn run(cmd: &Command, built: Box<dyn LatticeScheme>) -> Result<(), Error> {
+    let a = match cmd {
+        Command::Spectrum { common: a, .. } | Command::Stencils(a) => a,
+        Command::Matrix { common, .. } => common,
+        _ => return Err(Error::Input(format!("'{}' is a lattice scheme: no such analysis here", built.name()))),
+    };
+    run_window(cmd, a, built)
+}
+
+fn run_window(cmd: &Command, a: &AnalysisArgs, built: Box<dyn LatticeScheme>) -> Result<(), Error> {
+    let (built, analysis) = prepare(a, built)?;
     let scheme = built.as_ref();
     match cmd {
-        Command::Spectrum { certify: true, .. } => {
-            Err(Error::Input(format!("--certify covers mesh schemes only; '{}' is a lattice scheme", a.scheme)))
-        }
         Command::Spectrum { .. } => {
             if a.json {
                 print_json(&analysis.spectrum)
@@ -131,15 +120,17 @@ fn run(cmd: &Command, a: &AnalysisArgs) -> Result<(), Error> {
 
 /// Check the options that make sense on the lattice, build the scheme with
 /// its parameters, then analyse.
-fn prepare(a: &AnalysisArgs) -> Result<(Box<dyn LatticeScheme>, LatticeAnalysis), Error> {
-    let name = a.scheme.as_str();
-    if a.valence != 4 {
+fn prepare(
+    a: &AnalysisArgs,
+    scheme: Box<dyn LatticeScheme>,
+) -> Result<(Box<dyn LatticeScheme>, LatticeAnalysis), Error> {
+    let name = a.config.scheme.as_str();
+    if a.config.valence != 4 {
         return Err(Error::Input(format!("{name} is defined on the regular quad lattice only (valence 4)")));
     }
-    if a.faces.is_some() {
+    if a.config.faces.is_some() {
         return Err(Error::Input(format!("scheme '{name}' takes no --faces: it lives on the regular quad lattice")));
     }
-    let scheme = registry::lattice(name, &parse_params(&a.params)?)?;
     match a.method.as_deref() {
         None | Some("full") => {}
         Some("dft") => {

@@ -55,7 +55,7 @@ pub fn known_names() -> Vec<&'static str> {
 /// The scheme as a mesh scheme: regular-lattice schemes refine meshes and give
 /// characteristic maps through their masks on oriented quad meshes; curve
 /// schemes have no mesh rules.
-fn on_mesh(built: registry::Built, name: &str) -> Result<Box<dyn Scheme>, Error> {
+pub fn on_mesh(built: registry::Built, name: &str) -> Result<Box<dyn Scheme>, Error> {
     match built {
         registry::Built::Mesh(s) => Ok(s),
         registry::Built::Lattice(l) => Ok(Box::new(lattice_on_mesh::LatticeOnMesh::new(l))),
