@@ -84,12 +84,13 @@ pub(super) fn route(domain: Family, analysis: Analysis) -> Route {
     use Analysis::*;
     match (domain, analysis) {
         (Family::Mesh, _) => Route::Mesh,
-        (Family::Lattice, Spectrum | Stencils | Matrix) => Route::Native,
+        // the window's matrix is rational: `--certify` proves its spectrum exactly (lemma S7)
+        (Family::Lattice, Spectrum | CertifiedSpectrum | Stencils | Matrix) => Route::Native,
         (Family::Lattice, Charmap | CertifiedCharmap | Curvature) => Route::Mesh,
         (Family::Curve, Spectrum) => Route::Native,
-        (Family::Lattice | Family::Curve, CertifiedSpectrum) => Route::Refused(
-            "--certify covers mesh schemes only: the certificate's proofs are stated over a mesh configuration's \
-             Fourier blocks and vertex labels",
+        (Family::Curve, CertifiedSpectrum) => Route::Refused(
+            "--certify covers mesh schemes only (and lattice schemes, by the exact route): its statement (λ1 a \
+             double, semisimple eigenvalue) is that of a surface, and a curve's λ1 is simple",
         ),
         (Family::Curve, Stencils | Matrix) => Route::Refused(
             "its local matrix and eigenvalues are printed by `subdlab spectrum --json` (or `subdlab curve --json`), \
@@ -134,7 +135,7 @@ fn run(cmd: &Command, analysis: Analysis, config: &SchemeArgs) -> Result<i32, Er
     let domain = built.family();
     match (route(domain, analysis), built) {
         (Route::Refused(why), _) => Err(refusal(analysis, &config.scheme, domain, why)),
-        (Route::Native, Built::Lattice(scheme)) => super::lattice::run(cmd, scheme).map(|()| 0),
+        (Route::Native, Built::Lattice(scheme)) => super::lattice::run(cmd, scheme),
         (Route::Native, Built::Curve(scheme)) => super::lattice::curve(cmd, scheme.as_ref()).map(|()| 0),
         (_, built) => {
             let scheme = crate::schemes::on_mesh(built, &config.scheme)?;

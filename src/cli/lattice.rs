@@ -45,15 +45,106 @@ pub(super) fn curve(cmd: &Command, scheme: &dyn CurveScheme) -> Result<(), Error
     super::mesh_commands::curve_of(scheme, &a.neighbourhood, a.json)
 }
 
-/// A regular-lattice scheme under `spectrum`, `stencils` or `matrix`: the
-/// analysis of its invariant window.
-pub(super) fn run(cmd: &Command, built: Box<dyn LatticeScheme>) -> Result<(), Error> {
+/// A regular-lattice scheme under `spectrum` (with or without `--certify`),
+/// `stencils` or `matrix`: the analysis of its invariant window. Ok holds the
+/// exit status (`spectrum --certify`: 0 only when PROVED).
+pub(super) fn run(cmd: &Command, built: Box<dyn LatticeScheme>) -> Result<i32, Error> {
     let a = match cmd {
         Command::Spectrum { common: a, .. } | Command::Stencils(a) => a,
         Command::Matrix { common, .. } => common,
         _ => return Err(Error::Input(format!("'{}' is a lattice scheme: no such analysis here", built.name()))),
     };
-    run_window(cmd, a, built)
+    if let Command::Spectrum { certify: true, certificate, .. } = cmd {
+        if certificate.is_some() {
+            return Err(Error::Input(format!(
+                "--certificate writes the document of a mesh configuration's proof; '{}' is a lattice scheme, whose \
+                 proof is the exact route printed (and given by --json)",
+                a.config.scheme
+            )));
+        }
+        return certified(a, built);
+    }
+    run_window(cmd, a, built).map(|()| 0)
+}
+
+/// What `spectrum --certify` proves of a lattice scheme: lemma S7 on the
+/// window's whole matrix, which is rational (the masks are): 1 simple, λ1 a
+/// double root of det(xI − S) with a two-dimensional eigenspace, every other
+/// root strictly inside |x| < λ1 (ARCHITECTURE.md, "The proofs, step by
+/// step"). No enclosure is involved, so nothing is conditional.
+#[derive(serde::Serialize)]
+struct LatticeCertificate {
+    #[serde(flatten)]
+    verdict: crate::certify::Verdict,
+    statement: &'static str,
+    method: &'static str,
+    exact_route: Option<crate::certify::exact_spectrum::ExactSpectrum>,
+}
+
+const LATTICE_STATEMENT: &str = "λ0 = 1 is simple; λ1 = λ2 is real, positive and semisimple; every other eigenvalue \
+has modulus < λ1 (the spectral conditions of Reif's criterion, for the window's matrix)";
+
+fn certified(a: &AnalysisArgs, scheme: Box<dyn LatticeScheme>) -> Result<i32, Error> {
+    use crate::certify::exact_spectrum::prove;
+    use crate::certify::Verdict;
+    use crate::numeric::{Cyclotomic, Weight as _};
+    let (_, analysis) = prepare(a, scheme)?;
+    let q = &analysis.exact_matrix;
+    let rows: crate::certify::matrix::ExactRows = (0..q.size())
+        .map(|i| {
+            let row = (0..q.size()).map(|j| (j, q.get(i, j))).filter(|(_, w)| !w.is_zero());
+            Some(row.map(|(j, w)| (j, Cyclotomic::from_rational(&w))).collect())
+        })
+        .collect();
+    // the floating-point eigenvalues only propose λ1; the proof is exact
+    let s = &analysis.spectrum;
+    let reals = s.eigenvalues.iter().filter(|e| e.im.abs() <= 1e-9 * e.modulus.max(1.0)).map(|e| e.re);
+    let candidates = crate::engine::exact::candidates(reals);
+    let (verdict, exact_route) = match prove(&rows, &candidates) {
+        Ok(e) if e.proved => (Verdict::Proved, Some(e)),
+        Ok(e) => (Verdict::Disproved(e.why.clone()), Some(e)),
+        Err(why) => (Verdict::NotProved(why), None),
+    };
+    let status = if verdict == Verdict::Proved { 0 } else { 1 };
+    let c = LatticeCertificate {
+        verdict,
+        statement: LATTICE_STATEMENT,
+        method: "exact: lemma S7 on the whole matrix of the window, over Q",
+        exact_route,
+    };
+    if a.json {
+        #[derive(serde::Serialize)]
+        struct Certified<'a> {
+            #[serde(flatten)]
+            spectrum: &'a crate::spectrum::Spectrum,
+            certificate: &'a LatticeCertificate,
+        }
+        print_json(&Certified { spectrum: s, certificate: &c })?;
+    } else {
+        let mut text = format!(
+            "{}window: {}\n\ncertified spectral C1 conditions: {}\n  statement: {}\n",
+            super::commands::spectrum_table(s),
+            window_text(&analysis.window),
+            c.verdict.display(),
+            c.statement
+        );
+        if let Some(e) = &c.exact_route {
+            text += &format!(
+                "  exact route (lemma S7): det(xI − S) over Q ({} × {}): 1 of multiplicity {}, λ1 = {} of algebraic \
+                 multiplicity {} and geometric multiplicity {}, the other {} roots inside |x| < {} (Schur–Cohn)\n",
+                e.size,
+                e.size,
+                e.one_multiplicity,
+                e.lambda1.as_deref().unwrap_or("-"),
+                e.algebraic,
+                e.geometric,
+                e.cofactor_degree,
+                e.others_below.as_deref().unwrap_or("-")
+            );
+        }
+        out_text(&text)?;
+    }
+    Ok(status)
 }
 
 fn run_window(cmd: &Command, a: &AnalysisArgs, built: Box<dyn LatticeScheme>) -> Result<(), Error> {

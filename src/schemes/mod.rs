@@ -31,7 +31,9 @@ pub mod user;
 // (`crate::sdc`); re-exported here because every scheme file implements it.
 use crate::error::Error;
 pub use crate::sdc::params;
-pub use crate::sdc::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeInfo, SchemeWeight};
+pub use crate::sdc::{
+    Caps, CentreKind, Domain, MeshDomain, ParamSpec, Params, RuleWeight, Rules, Scheme, SchemeInfo, SchemeWeight,
+};
 
 /// Every built-in scheme: name, description and parameter specification.
 pub type SchemeEntry = registry::BuiltinEntry<dyn Scheme>;
