@@ -8,7 +8,7 @@ use subdlab::charmap::{characteristic_map_of, net, raster, regularity, ring, wed
 use subdlab::mesh::{PolyMesh, SectorKind};
 use subdlab::neighbourhood::{Configuration, NeighbourhoodKind};
 use subdlab::refine::{Origin, RuleResult, Stencil};
-use subdlab::schemes::{self, Caps, CentreKind, Params, Rules, Scheme, SchemeInfo, SchemeWeight};
+use subdlab::schemes::{self, Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeInfo, SchemeWeight};
 use subdlab::sdc::{Topology, TriangleSplit};
 use subdlab::spectrum::{analyse, Options};
 
@@ -237,8 +237,8 @@ struct SkewLoop {
     params: Params,
 }
 
-impl<W: SchemeWeight> Rules<W> for SkewLoop {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+impl<W: SchemeWeight> Rules<MeshDomain, W> for SkewLoop {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         if let Origin::Edge(a, b) = origin {
             let (Some(va), Some(vb)) = (mesh.valence(a), mesh.valence(b)) else { return Ok(None) };
             if va != 6 || vb != 6 {
@@ -370,8 +370,8 @@ struct JordanCc {
     params: Params,
 }
 
-impl<W: SchemeWeight> Rules<W> for JordanCc {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+impl<W: SchemeWeight> Rules<MeshDomain, W> for JordanCc {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         if let Origin::Edge(a, b) = origin {
             let (Some(va), Some(vb)) = (mesh.valence(a), mesh.valence(b)) else { return Ok(None) };
             if va != 4 || vb != 4 {

@@ -111,3 +111,71 @@ fn charmap_runs_repeat_exactly() {
         assert!(runs.iter().all(|r| r == &runs[0] && !r.is_empty()), "{scheme}: runs differ");
     }
 }
+
+/// The CLI's flag and the claim file's `faces` reach one configuration:
+/// `charmap four-three --faces QQTT` (a mixed eon, quads and triangles)
+/// and a `characteristic-map` claim on the same sequence give the same
+/// verdict and the same smallest Jacobian ratio of the same ring; the
+/// all-quad default is a different ring (so the flag is not ignored), and a
+/// claim stating the opposite is refuted (the comparison can fail).
+#[test]
+fn charmap_faces_on_the_command_line_is_the_claim_file_route() {
+    let run = |faces: Option<&str>| {
+        let mut a = vec!["charmap", "four-three", "-n", "4", "--levels", "3", "--resolution", "256", "--json"];
+        if let Some(f) = faces {
+            a.extend(["--faces", f]);
+        }
+        let out = subdlab(&a);
+        assert!(out.status.success(), "{a:?}: {}", String::from_utf8_lossy(&out.stderr));
+        serde_json::from_slice::<serde_json::Value>(&out.stdout).unwrap()
+    };
+    let mixed = run(Some("QQTT"));
+    let quads = run(None);
+    assert_ne!(mixed["ring_facets"], quads["ring_facets"], "--faces QQTT analysed the all-quad ring");
+    let dir = tempfile::tempdir().unwrap();
+    let verdict = |expect: bool| {
+        let file = dir.path().join(format!("mixed-{expect}.toml"));
+        std::fs::write(
+            &file,
+            format!(
+                "paper = \"t\"\ntitle = \"t\"\n[[claim]]\nid = \"mixed\"\nlocation = \"-\"\nstatement = \"-\"\n\
+                 check = \"characteristic-map\"\nscheme = \"four-three\"\nfaces = [\"QQTT\"]\nlevels = 3\n\
+                 resolution = 256\nexpect = {expect}\n"
+            ),
+        )
+        .unwrap();
+        let out = subdlab(&["verify", "--claims", file.to_str().unwrap(), "--json"]);
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        let claim = v[0]["claims"][0].clone();
+        (claim["verdict"].as_str().unwrap().to_string(), claim["computed"].as_str().unwrap().to_string())
+    };
+    let regular_and_injective = mixed["regular"] == true && mixed["injective"] == true;
+    let (holds, computed) = verdict(regular_and_injective);
+    assert_eq!(holds, "HOLDS", "{computed}");
+    let (refuted, _) = verdict(!regular_and_injective);
+    assert_eq!(refuted, "REFUTED");
+    // the claim prints the ratio to 12 decimals: the same ring, not only the same verdict
+    let printed: f64 = computed
+        .split("min Jacobian ratio ")
+        .nth(1)
+        .and_then(|t| t.split(')').next())
+        .and_then(|t| t.parse().ok())
+        .unwrap_or_else(|| panic!("no ratio in {computed}"));
+    let cli = mixed["min_jacobian_ratio"].as_f64().unwrap();
+    assert!((printed - cli).abs() < 1e-11, "claim: {computed}; cli: {cli}");
+}
+
+/// Analyses that a domain does not have are refused in one line naming the
+/// command, the scheme and its domain; a curve has no surface analyses.
+#[test]
+fn a_curve_scheme_has_no_surface_analyses() {
+    for (command, why) in [("charmap", "characteristic map"), ("curvature", "surface curvature")] {
+        let e = fails(&[command, "four-point", "-n", "2"]);
+        assert_eq!(e.trim().lines().count(), 1, "{e}");
+        assert!(e.contains(&format!("`{command}`")) && e.contains("curve scheme") && e.contains("the line Z"), "{e}");
+        assert!(e.contains(why), "{e}");
+    }
+    // the lattice scheme's map is the mesh pipeline's, at valence 4 (its masks on oriented quads)
+    let out = subdlab(&["charmap", "khan-mustafa", "-n", "4", "--levels", "2", "--resolution", "64", "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+}

@@ -189,3 +189,45 @@ fn schemes_describes_scheme_files() {
     assert_eq!(v[0]["params"][0]["max"], 0.5);
     fails(&["schemes", "no-such-file.toml"]);
 }
+
+/// `spectrum --certify` on a regular-lattice scheme proves the window's
+/// spectrum exactly (lemma S7: the masks are rational). Khan–Mustafa's
+/// scheme reproduces the linear functions x and y, which the dilation halves:
+/// λ1 = 1/2, double, with a two-dimensional eigenspace, and 1 simple (the
+/// constants). The negative control is the piecewise-constant scheme (every
+/// parity copies p_{i,j}): the four points of {-1, 0}² are their own
+/// parents, so 1 is an eigenvalue four times and the conditions are
+/// DISPROVED, with exit status 1.
+#[test]
+fn lattice_spectrum_certify_proves_exactly_and_disproves_the_control() {
+    let out = subdlab(&["spectrum", "khan-mustafa", "-n", "4", "--certify", "--json"]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let c = &v["certificate"];
+    assert_eq!(c["verdict"], "proved", "{c}");
+    let e = &c["exact_route"];
+    assert_eq!((e["one_multiplicity"].as_u64(), e["lambda1"].as_str()), (Some(1), Some("1/2")), "{e}");
+    assert_eq!((e["algebraic"].as_u64(), e["geometric"].as_u64()), (Some(2), Some(2)), "{e}");
+
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("constant.toml");
+    let masks: String =
+        ["00", "10", "01", "11"].iter().map(|p| format!("[mask-{p}]\n\"0,0\" = 1\n")).collect::<Vec<_>>().concat();
+    std::fs::write(&file, format!("domain = \"lattice\"\nname = \"piecewise-constant\"\n{masks}")).unwrap();
+    let out = subdlab(&["spectrum", file.to_str().unwrap(), "-n", "4", "--certify"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{text}{}", String::from_utf8_lossy(&out.stderr));
+    assert!(text.contains("certified spectral C1 conditions: DISPROVED"), "{text}");
+    assert!(text.contains("1 of multiplicity 4"), "{text}");
+    // the certificate document describes mesh configurations: refused in one line
+    let e = fails(&["spectrum", "khan-mustafa", "-n", "4", "--certify", "--certificate", "x.json"]);
+    assert!(e.contains("lattice scheme"), "{e}");
+}
+
+/// A curve's λ1 is simple, so the surface statement `--certify` proves does
+/// not apply: a one-line refusal naming the domain.
+#[test]
+fn curve_spectrum_certify_is_refused_naming_the_domain() {
+    let e = fails(&["spectrum", "four-point", "-n", "2", "--certify"]);
+    assert!(e.contains("curve scheme") && e.contains("the line Z") && e.contains("λ1 is simple"), "{e}");
+}

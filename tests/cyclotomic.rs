@@ -23,7 +23,7 @@ use subdlab::neighbourhood::Configuration;
 use subdlab::numeric::cyclotomic::cyclotomic_polynomial;
 use subdlab::numeric::{Cyclotomic, Interval, Weight};
 use subdlab::refine::{Origin, RuleResult, Stencil};
-use subdlab::schemes::{self, Caps, CentreKind, Params, Rules, Scheme, SchemeInfo, SchemeWeight};
+use subdlab::schemes::{self, Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeInfo, SchemeWeight};
 use subdlab::sdc::{Topology, TriangleSplit};
 use subdlab::spectrum::{analyse, Options};
 
@@ -231,8 +231,8 @@ struct RootLoop {
     params: Params,
 }
 
-impl<W: SchemeWeight> Rules<W> for RootLoop {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+impl<W: SchemeWeight> Rules<MeshDomain, W> for RootLoop {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         let stencil = W::rule(self.base.as_ref(), mesh, origin)?;
         match (origin, stencil) {
             (Origin::Vertex(v), Some(s)) if mesh.valence(v) != Some(6) => {
@@ -291,8 +291,8 @@ struct TwistedDooSabin {
     params: Params,
 }
 
-impl<W: SchemeWeight> Rules<W> for TwistedDooSabin {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+impl<W: SchemeWeight> Rules<MeshDomain, W> for TwistedDooSabin {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         let stencil = W::rule(self.base.as_ref(), mesh, origin)?;
         match (origin, stencil) {
             (Origin::Corner { face, corner: 2 }, Some(mut s)) if mesh.face(face).len() != 4 => {

@@ -13,7 +13,7 @@ use subdlab::mesh::PolyMesh;
 use subdlab::neighbourhood::{discover, Configuration, NeighbourhoodKind};
 use subdlab::numeric::Rational;
 use subdlab::refine::{Origin, RuleResult, Stencil};
-use subdlab::schemes::{self, Params, Rules, Scheme, SchemeInfo};
+use subdlab::schemes::{self, MeshDomain, Params, Rules, Scheme, SchemeInfo};
 use subdlab::spectrum::{analyse, decompose, Method, Options};
 
 /// Every built-in mesh scheme, with the unified sqrt(3) family at three α.
@@ -41,8 +41,8 @@ impl<'a> Asymmetric<'a> {
     }
 }
 
-impl<W: subdlab::schemes::SchemeWeight> Rules<W> for Asymmetric<'_> {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+impl<W: subdlab::schemes::SchemeWeight> Rules<MeshDomain, W> for Asymmetric<'_> {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         W::rule(self.0, mesh, origin)
     }
 }

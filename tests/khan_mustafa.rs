@@ -27,13 +27,14 @@ use num_traits::{One, Signed, Zero};
 use subdlab::lattice::analysis::{analyse, charpoly, to_qmatrix};
 use subdlab::lattice::fit::{derive_masks, grid, least_squares, total_degree, Monomial};
 use subdlab::lattice::{
-    analysis_window, invariance_defects, local_matrix, minimal_invariant_window, stencil, LatticeRules, LatticeScheme,
+    analysis_window, invariance_defects, local_matrix, minimal_invariant_window, stencil, LatticeDomain, LatticeScheme,
     Point, Window,
 };
 use subdlab::neighbourhood::NeighbourhoodKind;
 use subdlab::numeric::exact::{q, Poly};
 use subdlab::numeric::Rational;
 use subdlab::schemes::khan_mustafa::{KhanMustafa, KhanMustafaCubic};
+use subdlab::sdc::Rules;
 
 // ---------------------------------------------------------------- paper data
 
@@ -177,9 +178,9 @@ fn assembled_paper_matrix() -> Vec<Vec<Rational>> {
 fn every_mask_is_an_affine_combination() {
     // weights summing to 1: the rules commute with translations of the data
     for (a, b) in PARITIES {
-        let m: Vec<(Point, Rational)> = LatticeRules::<Rational>::mask(&KhanMustafa, a, b);
+        let m: Vec<(Point, Rational)> = Rules::<LatticeDomain, Rational>::rule(&KhanMustafa, &(), (a, b));
         assert_eq!(sum_mask(&m), Rational::one(), "quadratic rule ({a},{b})");
-        let m: Vec<(Point, Rational)> = LatticeRules::<Rational>::mask(&KhanMustafaCubic, a, b);
+        let m: Vec<(Point, Rational)> = Rules::<LatticeDomain, Rational>::rule(&KhanMustafaCubic, &(), (a, b));
         assert_eq!(sum_mask(&m), Rational::one(), "cubic rule ({a},{b})");
         assert_eq!(m.len(), 16, "the cubic variant has support 16");
     }
@@ -188,8 +189,8 @@ fn every_mask_is_an_affine_combination() {
 #[test]
 fn float_and_exact_masks_come_from_the_same_code() {
     for (a, b) in PARITIES {
-        let e: Vec<(Point, Rational)> = LatticeRules::<Rational>::mask(&KhanMustafa, a, b);
-        let f: Vec<(Point, f64)> = LatticeRules::<f64>::mask(&KhanMustafa, a, b);
+        let e: Vec<(Point, Rational)> = Rules::<LatticeDomain, Rational>::rule(&KhanMustafa, &(), (a, b));
+        let f: Vec<(Point, f64)> = Rules::<LatticeDomain, f64>::rule(&KhanMustafa, &(), (a, b));
         for ((pe, we), (pf, wf)) in e.iter().zip(&f) {
             assert_eq!(pe, pf);
             assert!((subdlab::numeric::Weight::to_f64(we) - wf).abs() < 1e-15);
@@ -206,7 +207,7 @@ fn printed_stencils_are_the_least_squares_quadratic() {
     for (k, &(a, b)) in PARITIES.iter().enumerate() {
         let d: [[Rational; 3]; 3] = dense(&derived[a as usize][b as usize], -1);
         assert_eq!(d, grid_over(&PRINTED_QUADRATIC[k], 144), "printed rule {k} vs least-squares fit");
-        let used: Vec<(Point, Rational)> = LatticeRules::<Rational>::mask(&KhanMustafa, a, b);
+        let used: Vec<(Point, Rational)> = Rules::<LatticeDomain, Rational>::rule(&KhanMustafa, &(), (a, b));
         assert_eq!(dense::<3>(&used, -1), d, "scheme mask ({a},{b}) vs derivation");
     }
 }
@@ -341,7 +342,7 @@ fn cubic_variant_against_the_least_squares_cubic() {
                 assert_eq!(printed_sum, Rational::one());
             }
         }
-        let used: Vec<(Point, Rational)> = LatticeRules::<Rational>::mask(&KhanMustafaCubic, a, b);
+        let used: Vec<(Point, Rational)> = Rules::<LatticeDomain, Rational>::rule(&KhanMustafaCubic, &(), (a, b));
         assert_eq!(dense::<4>(&used, -1), d, "cubic scheme mask ({a},{b}) is the derived one");
     }
 }

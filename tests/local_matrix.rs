@@ -8,11 +8,12 @@ use num_bigint::BigInt;
 use subdlab::curves::local::local_matrix as curve_matrix;
 use subdlab::curves::CurveWeight;
 use subdlab::engine::LocalMatrix;
-use subdlab::lattice::{self, LatticeRules, LatticeScheme, Point, Window};
+use subdlab::lattice::{self, LatticeDomain, LatticeScheme, Parity, Point, Window};
 use subdlab::matrix::assemble;
 use subdlab::neighbourhood::{discover, Configuration, NeighbourhoodKind};
 use subdlab::numeric::{Rational, Weight};
 use subdlab::schemes;
+use subdlab::sdc::Rules;
 
 fn q(p: i64, d: i64) -> Rational {
     Rational::new(BigInt::from(p), BigInt::from(d))
@@ -85,8 +86,8 @@ impl Tensor {
     }
 }
 
-impl<W: Weight> LatticeRules<W> for Tensor {
-    fn mask(&self, alpha: u8, beta: u8) -> Vec<(Point, W)> {
+impl<W: Weight> Rules<LatticeDomain, W> for Tensor {
+    fn rule(&self, _: &(), (alpha, beta): Parity) -> Vec<(Point, W)> {
         let mut out = Vec::new();
         for &(r, (a, b)) in self.rule(alpha) {
             for &(s, (c, d)) in self.rule(beta) {

@@ -11,8 +11,8 @@
 
 mod common;
 use common::{assert_same_multiset, subdlab};
-use subdlab::curves::CurveRules;
-use subdlab::lattice::LatticeRules;
+use subdlab::curves::CurveDomain;
+use subdlab::lattice::LatticeDomain;
 use subdlab::matrix::local::AssembleError;
 use subdlab::matrix::{assemble, LocalMatrix};
 use subdlab::mesh::obj::read_obj_file;
@@ -27,6 +27,7 @@ use subdlab::schemes::registry::{self, Built};
 use subdlab::schemes::user::UserSchemeDef;
 use subdlab::schemes::{self, Scheme};
 use subdlab::sdc::slots::{gather, GatherError, Host, OriginKind, Wants};
+use subdlab::sdc::Rules;
 use subdlab::spectrum::{analyse, Options};
 
 fn path(rel: &str) -> String {
@@ -1007,12 +1008,12 @@ fn exact_masks(built: &Built) -> Vec<Vec<(i64, i64, Rational)>> {
         Built::Lattice(l) => [(0, 0), (0, 1), (1, 0), (1, 1)]
             .into_iter()
             .map(|(a, b)| {
-                let m = LatticeRules::<Rational>::mask(l.as_ref(), a, b);
+                let m = Rules::<LatticeDomain, Rational>::rule(l.as_ref(), &(), (a, b));
                 clean(m.into_iter().map(|((i, j), w)| (i, j, w)).collect())
             })
             .collect(),
         Built::Curve(c) => {
-            let m = CurveRules::<Rational>::mask(c.as_ref()).unwrap().merged();
+            let m = Rules::<CurveDomain, Rational>::rule(c.as_ref(), &(), ()).unwrap().merged();
             vec![
                 clean(m.even.into_iter().map(|(o, w)| (o, 0, w)).collect()),
                 clean(m.odd.into_iter().map(|(o, w)| (o, 0, w)).collect()),

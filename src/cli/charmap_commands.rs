@@ -10,7 +10,7 @@ use crate::charmap::{check_map, CharMap, CharMapOptions, DEFAULT_LEVELS, DEFAULT
 use crate::error::Error;
 use crate::io::print_json;
 use crate::neighbourhood::configuration::check_valence;
-use crate::neighbourhood::{Configuration, NeighbourhoodKind};
+use crate::neighbourhood::NeighbourhoodKind;
 use crate::plot::{self, charmap::RingFigure, spectrum::SpectrumFigure, sweep::Bound};
 use crate::schemes::{self, Scheme};
 use crate::spectrum::{analyse, Options};
@@ -25,25 +25,14 @@ const FIGURE_LEVELS: usize = 3;
 
 #[derive(Args, Debug, Clone)]
 pub struct CharmapArgs {
-    /// scheme name (see `subdlab schemes`) or a scheme file (.toml, see schemes/)
-    pub scheme: String,
-    /// valence of the extraordinary vertex (or face)
-    #[arg(long, short = 'n')]
-    pub valence: usize,
-    /// face sequence around the centre, counter-clockwise, one letter per face:
-    /// Q (quad) or T (triangle), e.g. TTTTT; as many letters as the valence
-    /// (schemes of mixed meshes only: four-three; default all quads)
-    #[arg(long)]
-    pub faces: Option<String>,
+    #[command(flatten)]
+    pub config: super::SchemeArgs,
     /// analysis steps of refinement of the control net (1 to 8)
     #[arg(long, default_value_t = DEFAULT_LEVELS)]
     pub levels: usize,
     /// pixels per side when rasterising the ring (16 to 8192)
     #[arg(long, default_value_t = DEFAULT_RESOLUTION)]
     pub resolution: usize,
-    /// scheme parameter NAME=VALUE; repeatable
-    #[arg(long = "param", short = 'p')]
-    pub params: Vec<String>,
     /// write a figure (.svg, .pdf or .png) of the nested rings and the control net
     #[arg(short, long)]
     pub out: Option<PathBuf>,
@@ -144,10 +133,9 @@ pub(super) fn check_out(path: &Path) -> Result<(), Error> {
     Ok(())
 }
 
-/// `charmap`; Ok holds the exit status: 0, or with `--certify` the
-/// certificate's ([`super::commands::certified_status`]: 0 only when Reif's
-/// criterion is PROVED unconditionally).
-pub fn charmap(a: &CharmapArgs) -> Result<i32, Error> {
+/// The flags of `charmap` that need no scheme, checked before the scheme is
+/// resolved (and again by [`charmap`], which is cheap).
+pub(super) fn check_flags(a: &CharmapArgs) -> Result<(), Error> {
     if a.levels == 0 || a.levels > MAX_LEVELS {
         return Err(Error::Input(format!("--levels must be between 1 and {MAX_LEVELS}, got {}", a.levels)));
     }
@@ -166,12 +154,17 @@ pub fn charmap(a: &CharmapArgs) -> Result<i32, Error> {
     if a.wedge && a.sectors {
         return Err(Error::Input("--sectors colours the rings' sectors; the wedge is one sector".into()));
     }
+    a.figure.style()?;
+    Ok(())
+}
+
+/// `charmap`; Ok holds the exit status: 0, or with `--certify` the
+/// certificate's ([`super::commands::certified_status`]: 0 only when Reif's
+/// criterion is PROVED unconditionally).
+pub fn charmap(a: &CharmapArgs, scheme: Box<dyn Scheme>) -> Result<i32, Error> {
+    check_flags(a)?;
     let style = a.figure.style()?;
-    let scheme = build_scheme(&a.scheme, &a.params)?;
-    let config = match a.faces.as_deref() {
-        None => Configuration::regular(scheme.as_ref(), a.valence)?,
-        Some(faces) => Configuration::with_faces(scheme.as_ref(), a.valence, faces)?,
-    };
+    let config = super::commands::configuration(scheme.as_ref(), &a.config)?;
     let opts = CharMapOptions {
         levels: a.levels,
         resolution: a.resolution,

@@ -17,13 +17,81 @@ pub fn dispatch(cmd: Command) -> Result<i32, Error> {
         let opts = super::verify::VerifyOptions { json, junit, check_expected, certificates, slowest };
         return super::verify::run(paper, &claims, &opts);
     }
-    if let Some(result) = super::lattice::dispatch(&cmd) {
-        return result.map(|()| 0);
+    // the analysis commands: one front door resolves the scheme and routes it by its domain
+    if let Some(result) = super::front_door::dispatch(&cmd) {
+        return result;
     }
+    dispatch_other(cmd).map(|()| 0)
+}
+
+/// An analysis command on the mesh pipeline, with the scheme the front door
+/// resolved (a mesh scheme, or a lattice scheme on oriented quad meshes).
+/// Ok holds the exit status.
+pub(super) fn mesh_analysis(cmd: &Command, scheme: Box<dyn Scheme>) -> Result<i32, Error> {
     match cmd {
-        Command::Spectrum { common: a, certify: true, certificate } => certified_spectrum(&a, certificate.as_deref()),
-        Command::Charmap(a) => super::charmap_commands::charmap(&a),
-        other => dispatch_other(other).map(|()| 0),
+        Command::Spectrum { common: a, certify: true, certificate } => {
+            certified_spectrum(a, scheme, certificate.as_deref())
+        }
+        Command::Charmap(a) => super::charmap_commands::charmap(a, scheme),
+        Command::Curvature(a) => super::curvature::run(a, scheme).map(|()| 0),
+        Command::Spectrum { common: a, certify: false, .. } => {
+            let (_, analysis) = run_analysis(a, scheme)?;
+            if a.json {
+                print_json(&analysis.spectrum)?;
+            } else {
+                out_text(&spectrum_table(&analysis.spectrum))?;
+            }
+            Ok(0)
+        }
+        Command::Stencils(a) => {
+            let (_, analysis) = run_analysis(a, scheme)?;
+            let st = stencils(&analysis.spectrum)?;
+            if a.json {
+                print_json(&st)?;
+            } else {
+                out_text(&stencil_table(&st))?;
+            }
+            Ok(0)
+        }
+        Command::Matrix { common, format, output } => {
+            let format = matrix_format(format.as_deref(), common.json)?;
+            let (scheme, analysis) = run_analysis(common, scheme)?;
+            let text = match format {
+                "mtx" => to_matrix_market(
+                    &analysis.matrix,
+                    &format!(
+                        "subdlab local subdivision matrix: scheme {} valence {} faces {} neighbourhood {}",
+                        scheme.name(),
+                        common.config.valence,
+                        analysis.spectrum.faces,
+                        kind_name(analysis.spectrum.neighbourhood)
+                    ),
+                ),
+                "json" => {
+                    let m = &analysis.matrix;
+                    let j = MatrixJson {
+                        scheme: scheme.name(),
+                        valence: common.config.valence,
+                        neighbourhood: m.kind,
+                        size: m.size(),
+                        labels: m.labels.iter().map(|l| l.name.as_str()).collect(),
+                        vertices: &m.labels,
+                        matrix: m.to_dense_f64(),
+                        exact: analysis.exact_matrix.as_ref().map(|q| {
+                            (0..q.size()).map(|i| (0..q.size()).map(|j| q.get(i, j).to_string()).collect()).collect()
+                        }),
+                    };
+                    crate::io::json_text(&j)? + "\n"
+                }
+                other => return Err(Error::Input(format!("unknown matrix format '{other}'; use mtx or json"))),
+            };
+            match output {
+                Some(p) => write_atomic(p, text.as_bytes())?,
+                None => out_text(&text)?,
+            }
+            Ok(0)
+        }
+        _ => Err(Error::Input("not an analysis command".into())),
     }
 }
 
@@ -40,13 +108,13 @@ pub(super) fn certified_status(verdict: &crate::certify::Verdict, conditional: b
 }
 
 fn dispatch_other(cmd: Command) -> Result<(), Error> {
-    // Lattice and curve schemes have no mesh configuration: the registry names
-    // their family, and their analyses are routed first.
-    if let Some(result) = super::lattice::dispatch(&cmd) {
-        return result;
-    }
     match cmd {
         Command::Verify { .. } => unreachable!("verify is dispatched first"),
+        Command::Spectrum { .. }
+        | Command::Stencils(_)
+        | Command::Matrix { .. }
+        | Command::Charmap(_)
+        | Command::Curvature(_) => unreachable!("the analysis commands go through the front door"),
         Command::Sweep(a) => sweep(&a),
         Command::Report { out } => {
             crate::report::check_destination(&out)?;
@@ -62,64 +130,7 @@ fn dispatch_other(cmd: Command) -> Result<(), Error> {
         Command::Curve { scheme, params, neighbourhood, json } => {
             super::mesh_commands::curve(&scheme, &params, &neighbourhood, json)
         }
-        Command::Charmap(_) => unreachable!("charmap is dispatched first"),
-        Command::Curvature(a) => super::curvature::run(&a),
         Command::Plot { what } => super::charmap_commands::plot(&what),
-        Command::Spectrum { common: a, certify: false, .. } => {
-            let (_, analysis) = run_analysis(&a)?;
-            if a.json {
-                print_json(&analysis.spectrum)
-            } else {
-                out_text(&spectrum_table(&analysis.spectrum))
-            }
-        }
-        Command::Spectrum { certify: true, .. } => unreachable!("spectrum --certify is dispatched first"),
-        Command::Stencils(a) => {
-            let (_, analysis) = run_analysis(&a)?;
-            let st = stencils(&analysis.spectrum)?;
-            if a.json {
-                print_json(&st)
-            } else {
-                out_text(&stencil_table(&st))
-            }
-        }
-        Command::Matrix { common, format, output } => {
-            let format = matrix_format(format.as_deref(), common.json)?;
-            let (scheme, analysis) = run_analysis(&common)?;
-            let text = match format {
-                "mtx" => to_matrix_market(
-                    &analysis.matrix,
-                    &format!(
-                        "subdlab local subdivision matrix: scheme {} valence {} faces {} neighbourhood {}",
-                        scheme.name(),
-                        common.valence,
-                        analysis.spectrum.faces,
-                        kind_name(analysis.spectrum.neighbourhood)
-                    ),
-                ),
-                "json" => {
-                    let m = &analysis.matrix;
-                    let j = MatrixJson {
-                        scheme: scheme.name(),
-                        valence: common.valence,
-                        neighbourhood: m.kind,
-                        size: m.size(),
-                        labels: m.labels.iter().map(|l| l.name.as_str()).collect(),
-                        vertices: &m.labels,
-                        matrix: m.to_dense_f64(),
-                        exact: analysis.exact_matrix.as_ref().map(|q| {
-                            (0..q.size()).map(|i| (0..q.size()).map(|j| q.get(i, j).to_string()).collect()).collect()
-                        }),
-                    };
-                    crate::io::json_text(&j)? + "\n"
-                }
-                other => return Err(Error::Input(format!("unknown matrix format '{other}'; use mtx or json"))),
-            };
-            match output {
-                Some(p) => write_atomic(&p, text.as_bytes()),
-                None => out_text(&text),
-            }
-        }
     }
 }
 
@@ -156,22 +167,15 @@ pub(super) fn parse_params(list: &[String]) -> Result<Vec<(String, String)>, Err
 /// The scheme (name or file, with `--param`s) and its configuration at the
 /// valence (regular, or the `--faces` sequence), as every analysis command
 /// reads them.
-pub(super) fn scheme_and_configuration(
-    scheme: &str,
-    params: &[String],
-    valence: usize,
-    faces: Option<&str>,
-) -> Result<(Box<dyn Scheme>, Configuration), Error> {
-    let scheme = schemes::resolve(scheme, &parse_params(params)?)?;
-    let config = match faces {
-        None => Configuration::regular(scheme.as_ref(), valence)?,
-        Some(faces) => Configuration::with_faces(scheme.as_ref(), valence, faces)?,
-    };
-    Ok((scheme, config))
+pub(super) fn configuration(scheme: &dyn Scheme, a: &super::SchemeArgs) -> Result<Configuration, Error> {
+    match a.faces.as_deref() {
+        None => Configuration::regular(scheme, a.valence),
+        Some(faces) => Configuration::with_faces(scheme, a.valence, faces),
+    }
 }
 
-fn run_analysis(a: &AnalysisArgs) -> Result<(Box<dyn Scheme>, Analysis), Error> {
-    let (scheme, config) = scheme_and_configuration(&a.scheme, &a.params, a.valence, a.faces.as_deref())?;
+fn run_analysis(a: &AnalysisArgs, scheme: Box<dyn Scheme>) -> Result<(Box<dyn Scheme>, Analysis), Error> {
+    let config = configuration(scheme.as_ref(), &a.config)?;
     let neighbourhood: NeighbourhoodKind = a.neighbourhood.parse()?;
     let method = match a.method.as_deref() {
         None => None,
@@ -191,8 +195,12 @@ fn run_analysis(a: &AnalysisArgs) -> Result<(Box<dyn Scheme>, Analysis), Error> 
 /// certificate (`certify::spectrum`) from the same discovery and labels.
 /// `spectrum --certify`: the table and the certificate; Ok holds the exit
 /// status ([`certified_status`]).
-fn certified_spectrum(a: &AnalysisArgs, document: Option<&std::path::Path>) -> Result<i32, Error> {
-    let (scheme, analysis) = run_analysis(a)?;
+fn certified_spectrum(
+    a: &AnalysisArgs,
+    scheme: Box<dyn Scheme>,
+    document: Option<&std::path::Path>,
+) -> Result<i32, Error> {
+    let (scheme, analysis) = run_analysis(a, scheme)?;
     let certificate = crate::certify::certify_analysis(scheme.as_ref(), &analysis)?;
     if let Some(path) = document {
         crate::certify::export::write_spectrum(path, scheme.as_ref(), &analysis, &certificate)?;

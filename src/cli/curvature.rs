@@ -6,7 +6,6 @@ use std::path::PathBuf;
 use clap::Args;
 
 use super::charmap_commands::check_out;
-use super::commands::scheme_and_configuration;
 use crate::curvature::{curvature, Curvature, CurvatureOptions, DEFAULT_LEVELS, MAX_LEVELS};
 use crate::error::Error;
 use crate::io::print_json;
@@ -14,17 +13,8 @@ use crate::plot::{self, curvature::CurvatureFigure, curvature::CurvatureFigureKi
 
 #[derive(Args, Debug, Clone)]
 pub struct CurvatureArgs {
-    /// scheme name (see `subdlab schemes`) or a scheme file (.toml)
-    pub scheme: String,
-    /// valence of the extraordinary vertex (or face)
-    #[arg(long, short = 'n')]
-    pub valence: usize,
-    /// scheme parameter NAME=VALUE; repeatable
-    #[arg(long = "param", short = 'p')]
-    pub params: Vec<String>,
-    /// face sequence around the centre for mixed-mesh schemes (four-three), e.g. QQTTT
-    #[arg(long)]
-    pub faces: Option<String>,
+    #[command(flatten)]
+    pub config: super::SchemeArgs,
     /// analysis steps of refinement of the ring samples (1 to 6)
     #[arg(long, default_value_t = DEFAULT_LEVELS)]
     pub levels: usize,
@@ -48,7 +38,13 @@ pub struct CurvatureArgs {
     pub style: super::FigureArgs,
 }
 
-pub fn run(a: &CurvatureArgs) -> Result<(), Error> {
+/// The flags of `curvature` that need no scheme, checked before the scheme
+/// is resolved; the figure kind they name.
+pub(super) fn check_flags(a: &CurvatureArgs) -> Result<(), Error> {
+    figure_kind(a).map(|_| ())
+}
+
+fn figure_kind(a: &CurvatureArgs) -> Result<CurvatureFigureKind, Error> {
     if a.levels == 0 || a.levels > MAX_LEVELS {
         return Err(Error::Input(format!("--levels must be between 1 and {MAX_LEVELS}, got {}", a.levels)));
     }
@@ -60,11 +56,18 @@ pub fn run(a: &CurvatureArgs) -> Result<(), Error> {
         "surface" => CurvatureFigureKind::Surface,
         other => return Err(Error::Input(format!("unknown figure '{other}'; use central-ring or surface"))),
     };
-    let style = a.style.style()?;
+    a.style.style()?;
     if let Some(out) = &a.out {
         check_out(out)?;
     }
-    let (scheme, config) = scheme_and_configuration(&a.scheme, &a.params, a.valence, a.faces.as_deref())?;
+    Ok(kind)
+}
+
+/// `curvature` of the scheme the front door resolved.
+pub fn run(a: &CurvatureArgs, scheme: Box<dyn crate::schemes::Scheme>) -> Result<(), Error> {
+    let kind = figure_kind(a)?;
+    let style = a.style.style()?;
+    let config = super::commands::configuration(scheme.as_ref(), &a.config)?;
     let opts = CurvatureOptions {
         levels: a.levels,
         figures: a.out.is_some(),

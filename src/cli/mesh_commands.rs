@@ -114,8 +114,14 @@ fn read_vertex_params(path: &Path, scheme: &dyn crate::schemes::Scheme, count: u
 
 pub fn curve(scheme: &str, params: &[String], neighbourhood: &str, json: bool) -> Result<(), Error> {
     let scheme = crate::schemes::curves::build(scheme, &parse_params(params)?)?;
+    curve_of(scheme.as_ref(), neighbourhood, json)
+}
+
+/// The curve analysis of a resolved curve scheme (`subdlab curve`, and
+/// `subdlab spectrum` of a curve scheme through the front door).
+pub fn curve_of(scheme: &dyn crate::curves::CurveScheme, neighbourhood: &str, json: bool) -> Result<(), Error> {
     let kind: NeighbourhoodKind = neighbourhood.parse()?;
-    let spec = curve_spectrum(scheme.as_ref(), kind)?;
+    let spec = curve_spectrum(scheme, kind)?;
     if json {
         return print_json(&spec);
     }

@@ -1,10 +1,14 @@
-//! The `subdlab` command line. Every analysis command takes `--valence N`,
-//! repeated `--param NAME=VALUE`, `--neighbourhood minimal|analysis` and
-//! `--json`. Errors are one line on stderr with a non-zero exit.
+//! The `subdlab` command line. Every analysis command (`spectrum`,
+//! `stencils`, `matrix`, `charmap`, `curvature`) takes the same scheme and
+//! configuration flags ([`SchemeArgs`]: the scheme, `--valence N`, repeated
+//! `--param NAME=VALUE`, `--faces`) and `--json`; the scheme is resolved once
+//! (`front_door`) and its domain decides which analyses run on it. Errors are
+//! one line on stderr with a non-zero exit.
 
 mod charmap_commands;
 mod commands;
 mod curvature;
+mod front_door;
 mod lattice;
 mod mesh_commands;
 mod verify;
@@ -215,11 +219,16 @@ impl FigureArgs {
     }
 }
 
+/// The scheme and the configuration at its centre: the one definition of the
+/// flags every analysis command takes (`spectrum`, `stencils`, `matrix`,
+/// `charmap`, `curvature`), flattened into each command's arguments so that
+/// they cannot drift apart. The front door (`cli::front_door`) resolves the
+/// scheme once and asks its domain what it can do.
 #[derive(Args, Debug, Clone)]
-pub struct AnalysisArgs {
+pub struct SchemeArgs {
     /// scheme name (see `subdlab schemes`) or a scheme file (.toml, see schemes/)
     pub scheme: String,
-    /// valence of the extraordinary vertex (or face)
+    /// valence of the extraordinary vertex (or face); regular-lattice schemes: 4, curve schemes: 2
     #[arg(long, short = 'n')]
     pub valence: usize,
     /// scheme parameter NAME=VALUE (3/8, 0.375 and 1e-3 are accepted); repeatable
@@ -230,6 +239,12 @@ pub struct AnalysisArgs {
     /// (schemes of mixed meshes only: four-three; default all quads)
     #[arg(long)]
     pub faces: Option<String>,
+}
+
+#[derive(Args, Debug, Clone)]
+pub struct AnalysisArgs {
+    #[command(flatten)]
+    pub config: SchemeArgs,
     /// minimal (smallest invariant set) or analysis (also defines the first limit ring)
     #[arg(long, default_value = "analysis")]
     pub neighbourhood: String,

@@ -12,7 +12,7 @@ pub mod local;
 pub mod smoothness;
 
 use crate::numeric::{Inexact, Rational, Weight};
-use crate::sdc::Params;
+use crate::sdc::{Domain, Params, RuleWeight, Rules};
 
 /// The two rules of a binary curve scheme: new P_{2i} = Σ w·P_{i+o} over
 /// `even`, new P_{2i+1} = Σ w·P_{i+o} over `odd`, as (o, w) pairs.
@@ -54,37 +54,37 @@ impl<W: Weight> CurveMask<W> {
     }
 }
 
-/// The rules of a curve scheme for one weight type.
-pub trait CurveRules<W: Weight> {
-    fn mask(&self) -> Result<CurveMask<W>, Inexact>;
+/// The line Z with binary dilation: one rule gives both masks (even and
+/// odd), or why the weights are not representable in `W` (the scheme's rules
+/// are `sdc::Rules<CurveDomain, W>`, written once generic over `W`).
+pub enum CurveDomain {}
+
+impl Domain for CurveDomain {
+    type Host = ();
+    type Position = ();
+    type Rule<W: Weight> = Result<CurveMask<W>, Inexact>;
+    type Scheme<'a> = dyn CurveScheme + 'a;
 }
 
-pub trait CurveScheme: CurveRules<f64> + CurveRules<Rational> + Send + Sync {
+crate::sdc::rule_weights!(CurveDomain: f64, Rational);
+
+/// A curve scheme: its masks in f64 and exact rationals.
+pub trait CurveScheme: Rules<CurveDomain, f64> + Rules<CurveDomain, Rational> + Send + Sync {
     fn name(&self) -> &'static str;
     fn description(&self) -> &'static str;
     fn params(&self) -> &Params;
 }
 
-/// Weight types every curve scheme has rules for; the one entry point to the
-/// curve rules (results come back merged).
-pub trait CurveWeight: Weight {
-    fn rule(scheme: &dyn CurveScheme) -> Result<CurveMask<Self>, Inexact>;
+/// Weight types every curve scheme has rules for ([`RuleWeight`] on the
+/// curve domain); `mask` is the one entry point to the curve rules (results
+/// come back merged).
+pub trait CurveWeight: RuleWeight<CurveDomain> {
     fn mask(scheme: &dyn CurveScheme) -> Result<CurveMask<Self>, Inexact> {
-        Ok(Self::rule(scheme)?.merged())
+        Ok(Self::rule_of(scheme, &(), ())?.merged())
     }
 }
 
-impl CurveWeight for f64 {
-    fn rule(scheme: &dyn CurveScheme) -> Result<CurveMask<Self>, Inexact> {
-        CurveRules::<f64>::mask(scheme)
-    }
-}
-
-impl CurveWeight for Rational {
-    fn rule(scheme: &dyn CurveScheme) -> Result<CurveMask<Self>, Inexact> {
-        CurveRules::<Rational>::mask(scheme)
-    }
-}
+impl<W: RuleWeight<CurveDomain>> CurveWeight for W {}
 
 /// One subdivision step of a closed polygon of scalars (apply it per
 /// coordinate for points): the refined polygon has twice as many points,

@@ -24,18 +24,31 @@ use crate::engine::closure::{self, assemble, influence_set, invariant_closure, C
 use crate::engine::LocalMatrix;
 use crate::error::Error;
 use crate::numeric::{Rational, Weight};
-use crate::sdc::Params;
+use crate::sdc::{Domain, Params, RuleWeight, Rules};
 
 /// A lattice point (i, j), or an offset (r, s) inside a mask.
 pub type Point = (i64, i64);
 
-/// The four masks of a lattice scheme, for one weight type.
-pub trait LatticeRules<W: Weight> {
-    /// Mask of parity (α, β): the weights w_{α,β}(r, s) with their offsets.
-    fn mask(&self, alpha: u8, beta: u8) -> Vec<(Point, W)>;
+/// The parity (α, β) ∈ {0,1}² of a fine index: which of the four masks
+/// gives the point.
+pub type Parity = (u8, u8);
+
+/// The regular lattice Z² with binary dilation: a rule is the mask of one
+/// parity, the weights w_{α,β}(r, s) with their offsets (the scheme's rules
+/// are `sdc::Rules<LatticeDomain, W>`, written once generic over `W`).
+pub enum LatticeDomain {}
+
+impl Domain for LatticeDomain {
+    type Host = ();
+    type Position = Parity;
+    type Rule<W: Weight> = Vec<(Point, W)>;
+    type Scheme<'a> = dyn LatticeScheme + 'a;
 }
 
-pub trait LatticeScheme: LatticeRules<f64> + LatticeRules<Rational> + Send + Sync {
+crate::sdc::rule_weights!(LatticeDomain: f64, Rational);
+
+/// A regular-lattice scheme: its four masks in f64 and exact rationals.
+pub trait LatticeScheme: Rules<LatticeDomain, f64> + Rules<LatticeDomain, Rational> + Send + Sync {
     fn name(&self) -> &'static str;
     fn description(&self) -> &'static str;
     /// The parameter values the masks were built with (scheme files may have
@@ -46,23 +59,16 @@ pub trait LatticeScheme: LatticeRules<f64> + LatticeRules<Rational> + Send + Syn
     }
 }
 
-/// Weight types the lattice engine evaluates masks in; lets generic code ask a
-/// `&dyn LatticeScheme` for masks of either type.
-pub trait LatticeWeight: Weight {
-    fn mask_of(scheme: &dyn LatticeScheme, alpha: u8, beta: u8) -> Vec<(Point, Self)>;
-}
-
-impl LatticeWeight for f64 {
+/// Weight types the lattice engine evaluates masks in ([`RuleWeight`] on
+/// the lattice domain); lets generic code ask a `&dyn LatticeScheme` for
+/// masks of either type.
+pub trait LatticeWeight: RuleWeight<LatticeDomain> {
     fn mask_of(scheme: &dyn LatticeScheme, alpha: u8, beta: u8) -> Vec<(Point, Self)> {
-        LatticeRules::<f64>::mask(scheme, alpha, beta)
+        Self::rule_of(scheme, &(), (alpha, beta))
     }
 }
 
-impl LatticeWeight for Rational {
-    fn mask_of(scheme: &dyn LatticeScheme, alpha: u8, beta: u8) -> Vec<(Point, Self)> {
-        LatticeRules::<Rational>::mask(scheme, alpha, beta)
-    }
-}
+impl<W: RuleWeight<LatticeDomain>> LatticeWeight for W {}
 
 /// Split a fine index into (coarse index, parity): a = 2i + α with α ∈ {0, 1}.
 pub fn split(a: i64) -> (i64, u8) {

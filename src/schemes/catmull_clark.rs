@@ -5,7 +5,7 @@
 //! vertex point = (Q + 2R + (n - 3) v) / n, Q = average of the adjacent face
 //!                points, R = average of the adjacent edge midpoints.
 
-use super::{Caps, CentreKind, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
+use super::{Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
@@ -74,8 +74,8 @@ impl<W: Weight> Mask<W> for CatmullClark {
     }
 }
 
-impl<W: Weight> Rules<W> for CatmullClark {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+impl<W: Weight> Rules<MeshDomain, W> for CatmullClark {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         weigh(Host::PrimalQuad, mesh, origin, self, &W::one())
     }
 }

@@ -2,7 +2,7 @@
 //! the new vertex at corner 0 of an m-gon is Σ_j α_j v_j with
 //! α_0 = 1/4 + 5/(4m), α_j = (3 + 2 cos(2πj/m)) / (4m).
 
-use super::{Caps, CentreKind, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
+use super::{Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Inexact;
 use crate::numeric::Weight;
@@ -51,8 +51,8 @@ impl<W: Weight> Mask<W> for DooSabin {
     }
 }
 
-impl<W: Weight> Rules<W> for DooSabin {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+impl<W: Weight> Rules<MeshDomain, W> for DooSabin {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         weigh(Host::Dual, mesh, origin, self, &W::one())
     }
 }

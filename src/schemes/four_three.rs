@@ -33,7 +33,7 @@
 //! the edge at an eon is (σ−1)/σ (4b) + 1/σ (regular rule), after σ0 (4b) alone
 //! (section 2); the (4a') share is blended with the same factor (Lemma 3.8).
 
-use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
+use super::{Caps, CentreKind, MeshDomain, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
@@ -153,7 +153,7 @@ impl Wants for FourThree {
         match (rule, family) {
             // the quad term (4a') only when it has weight
             ("vertex-eon", "quad-opposite" | "quad-side") => !self.eon_quad_term::<f64>().is_ok_and(|t| t == 0.0),
-            _ => self.rule(rule),
+            _ => Wants::rule(self, rule),
         }
     }
 }
@@ -202,8 +202,8 @@ impl<W: Weight> Mask<W> for FourThree {
     }
 }
 
-impl<W: Weight> Rules<W> for FourThree {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+impl<W: Weight> Rules<MeshDomain, W> for FourThree {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         weigh(Host::MixedQuadTriangle, mesh, origin, self, &self.eon_share())
     }
 }

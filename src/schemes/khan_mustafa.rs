@@ -19,8 +19,9 @@
 //! scheme parameters are numbers with a range, and the variant is a choice.
 
 use super::registry::LatticeEntry;
-use crate::lattice::{LatticeRules, LatticeScheme, Point};
+use crate::lattice::{LatticeDomain, LatticeScheme, Parity, Point};
 use crate::numeric::Weight;
+use crate::sdc::Rules;
 
 /// Weights given as integer numerators over a common denominator, with offsets
 /// (r, s) meaning p_{i+r, j+s}.
@@ -31,8 +32,8 @@ fn over<W: Weight>(den: i64, terms: &[((i64, i64), i64)]) -> Vec<(Point, W)> {
 /// The quadratic 9-point scheme, eq. (3.3).
 pub struct KhanMustafa;
 
-impl<W: Weight> LatticeRules<W> for KhanMustafa {
-    fn mask(&self, alpha: u8, beta: u8) -> Vec<(Point, W)> {
+impl<W: Weight> Rules<LatticeDomain, W> for KhanMustafa {
+    fn rule(&self, _: &(), (alpha, beta): Parity) -> Vec<(Point, W)> {
         match (alpha, beta) {
             // p_{2i,2j} = 1/144 {−16 p_{i−1,j−1} + 32 p_{i−1,j} − 16 p_{i−1,j+1} + 32 p_{i,j−1} + 80 p_{i,j}
             //                    + 32 p_{i,j+1} − 16 p_{i+1,j−1} + 32 p_{i+1,j} − 16 p_{i+1,j+1}}   (vertex rule)
@@ -124,8 +125,8 @@ impl LatticeScheme for KhanMustafa {
 /// data).
 pub struct KhanMustafaCubic;
 
-impl<W: Weight> LatticeRules<W> for KhanMustafaCubic {
-    fn mask(&self, alpha: u8, beta: u8) -> Vec<(Point, W)> {
+impl<W: Weight> Rules<LatticeDomain, W> for KhanMustafaCubic {
+    fn rule(&self, _: &(), (alpha, beta): Parity) -> Vec<(Point, W)> {
         match (alpha, beta) {
             // p_{2i,2j} = 1/800 {−92 p_{i−1,j−1} + 176 (p_{i−1,j} + p_{i,j−1}) − 16 (p_{i−1,j+1} + p_{i+1,j−1})
             //   − 68 (p_{i−1,j+2} + p_{i+1,j+1} + p_{i+2,j−1}) + 372 p_{i,j} + 148 (p_{i,j+1} + p_{i+1,j})

@@ -9,7 +9,7 @@
 //! is p_{2i,2j}, of a +i edge p_{2i+1,2j}, of a +j edge p_{2i,2j+1}, of a face
 //! p_{2i+1,2j+1} (with (i, j) the face's corner whose outgoing edge is +i).
 
-use super::{Caps, CentreKind, Params, Rules, Scheme, SchemeInfo};
+use super::{Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeInfo};
 use crate::lattice::{LatticeScheme, LatticeWeight};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Cyclotomic, Interval, Rational, SmallRational};
@@ -43,7 +43,7 @@ impl LatticeOnMesh {
         LatticeOnMesh { inner, params, info }
     }
 
-    fn rule<W: LatticeWeight>(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+    fn masks_on_mesh<W: LatticeWeight>(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         let Some(((alpha, beta), base)) = parity_and_base(mesh, origin) else { return Ok(None) };
         let mut s = Stencil::new();
         for ((r, t), w) in W::mask_of(self.inner.as_ref(), alpha, beta) {
@@ -135,22 +135,22 @@ fn parity_and_base(mesh: &PolyMesh, origin: Origin) -> Option<((u8, u8), usize)>
     }
 }
 
-impl Rules<f64> for LatticeOnMesh {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<f64> {
-        self.rule::<f64>(mesh, origin)
+impl Rules<MeshDomain, f64> for LatticeOnMesh {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<f64> {
+        self.masks_on_mesh::<f64>(mesh, origin)
     }
 }
 
-impl Rules<Rational> for LatticeOnMesh {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<Rational> {
-        self.rule::<Rational>(mesh, origin)
+impl Rules<MeshDomain, Rational> for LatticeOnMesh {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<Rational> {
+        self.masks_on_mesh::<Rational>(mesh, origin)
     }
 }
 
 /// The rational masks in machine integers (spoiled where they do not fit).
-impl Rules<SmallRational> for LatticeOnMesh {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<SmallRational> {
-        let exact = self.rule::<Rational>(mesh, origin)?;
+impl Rules<MeshDomain, SmallRational> for LatticeOnMesh {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<SmallRational> {
+        let exact = self.masks_on_mesh::<Rational>(mesh, origin)?;
         Ok(exact
             .map(|s| Stencil { terms: s.terms.iter().map(|(v, w)| (*v, SmallRational::from_rational(w))).collect() }))
     }
@@ -158,17 +158,17 @@ impl Rules<SmallRational> for LatticeOnMesh {
 
 /// Lattice masks are exact rationals or floats: enclosures exist for the
 /// rational ones only (the lattice family has no interval rules of its own).
-impl Rules<Interval> for LatticeOnMesh {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<Interval> {
-        let exact = self.rule::<Rational>(mesh, origin)?;
+impl Rules<MeshDomain, Interval> for LatticeOnMesh {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<Interval> {
+        let exact = self.masks_on_mesh::<Rational>(mesh, origin)?;
         Ok(exact.map(|s| Stencil { terms: s.terms.iter().map(|(v, w)| (*v, Interval::rational(w))).collect() }))
     }
 }
 
 /// The rational masks as elements of Q (the certificate's exact premises).
-impl Rules<Cyclotomic> for LatticeOnMesh {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<Cyclotomic> {
-        let exact = self.rule::<Rational>(mesh, origin)?;
+impl Rules<MeshDomain, Cyclotomic> for LatticeOnMesh {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<Cyclotomic> {
+        let exact = self.masks_on_mesh::<Rational>(mesh, origin)?;
         Ok(exact.map(|s| Stencil { terms: s.terms.iter().map(|(v, w)| (*v, Cyclotomic::from_rational(w))).collect() }))
     }
 }

@@ -3,7 +3,7 @@
 //! vertex point: (1 - nβ) v + β Σ v_i,  β = (1/n) (5/8 - (3/8 + cos(2π/n)/4)^2)
 //! edge point:   3/8 (a + b) + 1/8 (c + d), c and d the opposite apexes
 
-use super::{Caps, CentreKind, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
+use super::{Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Inexact;
 use crate::numeric::Weight;
@@ -65,8 +65,8 @@ impl<W: Weight> Mask<W> for Loop {
     }
 }
 
-impl<W: Weight> Rules<W> for Loop {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+impl<W: Weight> Rules<MeshDomain, W> for Loop {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         weigh(Host::PrimalTriangle, mesh, origin, self, &W::one())
     }
 }

@@ -31,7 +31,9 @@ pub mod user;
 // (`crate::sdc`); re-exported here because every scheme file implements it.
 use crate::error::Error;
 pub use crate::sdc::params;
-pub use crate::sdc::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeInfo, SchemeWeight};
+pub use crate::sdc::{
+    Caps, CentreKind, Domain, MeshDomain, ParamSpec, Params, RuleWeight, Rules, Scheme, SchemeInfo, SchemeWeight,
+};
 
 /// Every built-in scheme: name, description and parameter specification.
 pub type SchemeEntry = registry::BuiltinEntry<dyn Scheme>;
@@ -55,7 +57,7 @@ pub fn known_names() -> Vec<&'static str> {
 /// The scheme as a mesh scheme: regular-lattice schemes refine meshes and give
 /// characteristic maps through their masks on oriented quad meshes; curve
 /// schemes have no mesh rules.
-fn on_mesh(built: registry::Built, name: &str) -> Result<Box<dyn Scheme>, Error> {
+pub fn on_mesh(built: registry::Built, name: &str) -> Result<Box<dyn Scheme>, Error> {
     match built {
         registry::Built::Mesh(s) => Ok(s),
         registry::Built::Lattice(l) => Ok(Box::new(lattice_on_mesh::LatticeOnMesh::new(l))),

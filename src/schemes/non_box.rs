@@ -13,7 +13,7 @@
 //! given, replaces a_k at every valence k ≠ 4 (vertices and k-gons); valence 4
 //! keeps 1/2 so that the regular part stays the spline.
 
-use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
+use super::{Caps, CentreKind, MeshDomain, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
@@ -113,8 +113,8 @@ impl<W: Weight> Mask<W> for NonBox {
     }
 }
 
-impl<W: Weight> Rules<W> for NonBox {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+impl<W: Weight> Rules<MeshDomain, W> for NonBox {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         weigh(Host::Fcv, mesh, origin, self, &W::one())
     }
 }

@@ -20,7 +20,7 @@
 //! paper's values, which make a 4-gon's rules the biquadratic ones).
 
 use super::memo::WeightMemo;
-use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
+use super::{Caps, CentreKind, MeshDomain, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
@@ -177,8 +177,8 @@ impl<W: Weight> Mask<W> for Pgs {
     }
 }
 
-impl<W: Weight> Rules<W> for Pgs {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+impl<W: Weight> Rules<MeshDomain, W> for Pgs {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         weigh(Host::AugmentedDual, mesh, origin, self, &W::one())
     }
 }

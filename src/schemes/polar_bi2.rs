@@ -10,7 +10,7 @@
 //! * γ_j = (1/2 + cos(2πj/n))/n (15), so Σ γ_j = 1/2; α = 1/4 by default
 //!   (parameter `alpha`).
 
-use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
+use super::{Caps, CentreKind, MeshDomain, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Inexact;
 use crate::numeric::Weight;
@@ -80,8 +80,8 @@ impl<W: Weight> Mask<W> for PolarBi2 {
     }
 }
 
-impl<W: Weight> Rules<W> for PolarBi2 {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+impl<W: Weight> Rules<MeshDomain, W> for PolarBi2 {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         weigh(Host::Polar, mesh, origin, self, &W::one())
     }
 }

@@ -36,7 +36,7 @@
 //! regular adjustable scheme.
 
 use super::memo::WeightMemo;
-use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
+use super::{Caps, CentreKind, MeshDomain, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
@@ -184,8 +184,8 @@ impl<W: Weight> Mask<W> for Tps {
     }
 }
 
-impl<W: Weight> Rules<W> for Tps {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+impl<W: Weight> Rules<MeshDomain, W> for Tps {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         weigh(Host::Ternary, mesh, origin, self, &W::one())
     }
 }

@@ -17,7 +17,7 @@
 //! states in full and because they reduce to Kobbelt's rules (1), (2) at α = 0.
 
 use super::memo::WeightMemo;
-use super::{Caps, CentreKind, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
+use super::{Caps, CentreKind, MeshDomain, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Inexact;
 use crate::numeric::Weight;
@@ -150,8 +150,8 @@ impl<W: Weight> Mask<W> for UnifiedSqrt3 {
     }
 }
 
-impl<W: Weight> Rules<W> for UnifiedSqrt3 {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+impl<W: Weight> Rules<MeshDomain, W> for UnifiedSqrt3 {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         weigh(Host::Sqrt3, mesh, origin, self, &W::one())
     }
 }

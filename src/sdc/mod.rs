@@ -1,7 +1,8 @@
 //! The scheme-description layer (the role of OpenSubdiv's Sdc): what a
 //! subdivision scheme *is*, independent of how it is analysed. It holds the
-//! rule interface (`Rules<W>`, `Scheme`, `SchemeWeight`), the stencil and
-//! origin types rules produce, the refinement host a scheme runs on
+//! one rule interface of every domain (`Domain`, `Rules<D, W>`, `RuleWeight<D>`;
+//! the mesh domain's `Scheme` and `SchemeWeight`), the stencil and origin
+//! types mesh rules produce, the refinement host a scheme runs on
 //! (`Topology`), the kind of centre it is analysed at and its typed parameters.
 //!
 //! Layering: `sdc` depends only on `numeric` and `mesh`. The engine (hosts,
@@ -22,10 +23,74 @@ pub use stencil::{Origin, RuleResult, Stencil};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Cyclotomic, Interval, Rational, SmallRational, Weight};
 
-/// The rules of a scheme for one weight type.
-pub trait Rules<W: Weight> {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W>;
+/// A domain subdivision acts on: meshes with an extraordinary vertex or face
+/// ([`MeshDomain`]), the regular lattice Z² (`lattice::LatticeDomain`), the
+/// line Z (`curves::CurveDomain`). It names what a rule is asked and what it
+/// answers, so that every scheme of every domain writes its rules as one
+/// trait, [`Rules`], generic over the weight type.
+pub trait Domain: 'static {
+    /// What a rule reads besides its position: the mesh being refined; on Z²
+    /// and Z nothing (`()`), their rules being masks over offsets.
+    type Host: ?Sized;
+    /// Where the new point is: its origin in the old mesh ([`Origin`]); on
+    /// Z² the parity (α, β) of its index; on Z nothing (one rule gives the
+    /// even and the odd mask).
+    type Position: Copy;
+    /// What a rule gives in weights `W`: a stencil over old vertices (or
+    /// none where the rule does not apply), a mask over offsets.
+    type Rule<W: Weight>;
+    /// The domain's scheme, as the engine holds it: a trait object (`dyn
+    /// Scheme + 'a`, `dyn LatticeScheme + 'a`, `dyn CurveScheme + 'a`), of
+    /// any lifetime, as callers borrow it.
+    type Scheme<'a>: ?Sized;
 }
+
+/// The rules of a scheme on domain `D` for one weight type: the one rule
+/// trait every scheme implements (usually once, generic over `W`).
+pub trait Rules<D: Domain, W: Weight> {
+    fn rule(&self, host: &D::Host, at: D::Position) -> D::Rule<W>;
+}
+
+/// The one weight dispatch: lets generic code (`W: RuleWeight<D>`) ask a
+/// domain's scheme object for its rule in any weight type the domain's
+/// scheme trait demands; [`rule_weights!`](crate::sdc::rule_weights) implements
+/// it for each (domain, weight) pair. `SchemeWeight`, `LatticeWeight` and
+/// `CurveWeight` are this trait on one domain, with the domain's convenience
+/// calls (merged results), and have no impls of their own.
+pub trait RuleWeight<D: Domain>: Weight {
+    fn rule_of(scheme: &D::Scheme<'_>, host: &D::Host, at: D::Position) -> D::Rule<Self>;
+}
+
+/// `RuleWeight<DOMAIN>` for each listed weight: the rule of the domain's
+/// scheme object, which has rules for that weight (its scheme trait says so).
+/// Invoked as `crate::sdc::rule_weights!` (a path inside the layer order).
+macro_rules! rule_weights {
+    ($domain:ty: $($w:ty),+) => {$(
+        impl $crate::sdc::RuleWeight<$domain> for $w {
+            fn rule_of(
+                scheme: &<$domain as $crate::sdc::Domain>::Scheme<'_>,
+                host: &<$domain as $crate::sdc::Domain>::Host,
+                at: <$domain as $crate::sdc::Domain>::Position,
+            ) -> <$domain as $crate::sdc::Domain>::Rule<$w> {
+                $crate::sdc::Rules::<$domain, $w>::rule(scheme, host, at)
+            }
+        }
+    )+};
+}
+pub(crate) use rule_weights;
+
+/// Meshes with an extraordinary vertex or face: a rule gives the stencil of
+/// the new vertex with this origin over the old mesh's vertices.
+pub enum MeshDomain {}
+
+impl Domain for MeshDomain {
+    type Host = PolyMesh;
+    type Position = Origin;
+    type Rule<W: Weight> = RuleResult<W>;
+    type Scheme<'a> = dyn Scheme + 'a;
+}
+
+rule_weights!(MeshDomain: f64, Rational, SmallRational, Interval, Cyclotomic);
 
 /// What kind of point the analysis is centred on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
@@ -130,7 +195,13 @@ impl Caps {
 /// parameter values, and the two behaviours some schemes add (a per-vertex
 /// parameter rule, different rules at the first levels of a real mesh).
 pub trait Scheme:
-    Rules<f64> + Rules<Rational> + Rules<SmallRational> + Rules<Interval> + Rules<Cyclotomic> + Send + Sync
+    Rules<MeshDomain, f64>
+    + Rules<MeshDomain, Rational>
+    + Rules<MeshDomain, SmallRational>
+    + Rules<MeshDomain, Interval>
+    + Rules<MeshDomain, Cyclotomic>
+    + Send
+    + Sync
 {
     fn info(&self) -> &SchemeInfo;
     fn params(&self) -> &Params;
@@ -201,46 +272,19 @@ impl dyn Scheme + '_ {
     }
 }
 
-/// Weight types every scheme implements rules for; lets generic code ask a
-/// `&dyn Scheme` for stencils of any of them. This is the one entry point to
-/// the rules: results come back merged (duplicates summed, zeros dropped).
-pub trait SchemeWeight: Weight {
-    fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self>;
+/// Weight types every mesh scheme implements rules for ([`RuleWeight`] on the
+/// mesh domain): lets generic code ask a `&dyn Scheme` for stencils of any of
+/// them (f64, exact rationals, rationals in machine integers for the
+/// certificate's many exact comparisons, interval enclosures, exact
+/// cyclotomic numbers). `stencil` is the one entry point to the mesh rules:
+/// results come back merged (duplicates summed, zeros dropped).
+pub trait SchemeWeight: RuleWeight<MeshDomain> {
+    fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
+        Self::rule_of(scheme, mesh, origin)
+    }
     fn stencil(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
         Ok(Self::rule(scheme, mesh, origin)?.map(|s| s.merged()))
     }
 }
 
-impl SchemeWeight for f64 {
-    fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
-        Rules::<f64>::stencil(scheme, mesh, origin)
-    }
-}
-
-impl SchemeWeight for Rational {
-    fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
-        Rules::<Rational>::stencil(scheme, mesh, origin)
-    }
-}
-
-/// Exact rationals in machine integers (spoiled, never rounded, on
-/// overflow): the certificate's many exact stencil comparisons.
-impl SchemeWeight for SmallRational {
-    fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
-        Rules::<SmallRational>::stencil(scheme, mesh, origin)
-    }
-}
-
-/// Enclosures of the weights, for the certified path (`certify`).
-impl SchemeWeight for Interval {
-    fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
-        Rules::<Interval>::stencil(scheme, mesh, origin)
-    }
-}
-
-/// Exact weights with cos(2πk/n), for the certificate's exact premises.
-impl SchemeWeight for Cyclotomic {
-    fn rule(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
-        Rules::<Cyclotomic>::stencil(scheme, mesh, origin)
-    }
-}
+impl<W: RuleWeight<MeshDomain>> SchemeWeight for W {}

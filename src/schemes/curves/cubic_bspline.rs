@@ -1,10 +1,11 @@
 //! Uniform cubic B-spline subdivision (Lane–Riesenfeld / Chaikin of degree 3):
 //! P_{2i} = (P_{i-1} + 6 P_i + P_{i+1}) / 8, P_{2i+1} = (P_i + P_{i+1}) / 2.
 
-use crate::curves::{CurveMask, CurveRules, CurveScheme};
+use crate::curves::{CurveDomain, CurveMask, CurveScheme};
 use crate::numeric::{Inexact, Weight};
 use crate::schemes::registry::CurveEntry;
 use crate::sdc::Params;
+use crate::sdc::Rules;
 
 pub struct CubicBSpline {
     params: Params,
@@ -19,8 +20,8 @@ pub fn entry() -> CurveEntry {
     }
 }
 
-impl<W: Weight> CurveRules<W> for CubicBSpline {
-    fn mask(&self) -> Result<CurveMask<W>, Inexact> {
+impl<W: Weight> Rules<CurveDomain, W> for CubicBSpline {
+    fn rule(&self, _: &(), _: ()) -> Result<CurveMask<W>, Inexact> {
         Ok(CurveMask {
             even: vec![(-1, W::ratio(1, 8)), (0, W::ratio(3, 4)), (1, W::ratio(1, 8))],
             odd: vec![(0, W::ratio(1, 2)), (1, W::ratio(1, 2))],

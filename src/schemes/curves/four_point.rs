@@ -2,10 +2,11 @@
 //! w = 1/16 (the value that reproduces cubics):
 //! P_{2i} = P_i, P_{2i+1} = (1/2 + w)(P_i + P_{i+1}) − w (P_{i-1} + P_{i+2}).
 
-use crate::curves::{CurveMask, CurveRules, CurveScheme};
+use crate::curves::{CurveDomain, CurveMask, CurveScheme};
 use crate::numeric::{Inexact, Weight};
 use crate::schemes::registry::CurveEntry;
 use crate::sdc::Params;
+use crate::sdc::Rules;
 
 pub struct FourPoint {
     params: Params,
@@ -20,8 +21,8 @@ pub fn entry() -> CurveEntry {
     }
 }
 
-impl<W: Weight> CurveRules<W> for FourPoint {
-    fn mask(&self) -> Result<CurveMask<W>, Inexact> {
+impl<W: Weight> Rules<CurveDomain, W> for FourPoint {
+    fn rule(&self, _: &(), _: ()) -> Result<CurveMask<W>, Inexact> {
         let w = W::ratio(1, 16);
         let near = W::ratio(1, 2) + w.clone();
         Ok(CurveMask { even: vec![(0, W::one())], odd: vec![(-1, -w.clone()), (0, near.clone()), (1, near), (2, -w)] })

@@ -10,9 +10,10 @@
 //! opposite convention for its surface scheme (α = 0 approximating, α = 1
 //! interpolatory); the section-3 α here corresponds to 1 − α there.
 
-use crate::curves::{CurveMask, CurveRules, CurveScheme};
+use crate::curves::{CurveDomain, CurveMask, CurveScheme};
 use crate::numeric::{Inexact, Weight};
 use crate::schemes::registry::CurveEntry;
+use crate::sdc::Rules;
 use crate::sdc::{ParamSpec, Params};
 
 pub struct UnifiedCurve {
@@ -37,8 +38,8 @@ pub fn entry() -> CurveEntry {
     }
 }
 
-impl<W: Weight> CurveRules<W> for UnifiedCurve {
-    fn mask(&self) -> Result<CurveMask<W>, Inexact> {
+impl<W: Weight> Rules<CurveDomain, W> for UnifiedCurve {
+    fn rule(&self, _: &(), _: ()) -> Result<CurveMask<W>, Inexact> {
         let a: W = W::param(self.params.get("alpha").expect("alpha has a default"))?;
         let side = a.clone() / W::int(8);
         let centre = (W::int(4) - a.clone()) / W::int(4);

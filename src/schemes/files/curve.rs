@@ -28,10 +28,11 @@ use toml::Spanned;
 
 use super::MAX_FILE_BYTES;
 use super::{evaluate, intern, line_of, not_affine, offset_key, rule_terms, toml_error, Head, ParamDoc, Section, Term};
-use crate::curves::{CurveMask, CurveRules, CurveScheme};
+use crate::curves::{CurveDomain, CurveMask, CurveScheme};
 use crate::error::Error;
 use crate::numeric::{Inexact, Rational};
 use crate::schemes::Params;
+use crate::sdc::Rules;
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -151,14 +152,14 @@ impl CurveFileDef {
     }
 }
 
-impl CurveRules<f64> for CurveFileScheme {
-    fn mask(&self) -> Result<CurveMask<f64>, Inexact> {
+impl Rules<CurveDomain, f64> for CurveFileScheme {
+    fn rule(&self, _: &(), _: ()) -> Result<CurveMask<f64>, Inexact> {
         Ok(self.float.clone())
     }
 }
 
-impl CurveRules<Rational> for CurveFileScheme {
-    fn mask(&self) -> Result<CurveMask<Rational>, Inexact> {
+impl Rules<CurveDomain, Rational> for CurveFileScheme {
+    fn rule(&self, _: &(), _: ()) -> Result<CurveMask<Rational>, Inexact> {
         self.exact.clone().ok_or(Inexact)
     }
 }

@@ -31,9 +31,10 @@ use super::{
     Term,
 };
 use crate::error::Error;
-use crate::lattice::{LatticeRules, LatticeScheme, Point};
+use crate::lattice::{LatticeDomain, LatticeScheme, Parity, Point};
 use crate::numeric::{Rational, Weight};
 use crate::schemes::Params;
+use crate::sdc::Rules;
 
 /// The section names of the masks, indexed [α][β].
 const SECTIONS: [[&str; 2]; 2] = [["mask-00", "mask-01"], ["mask-10", "mask-11"]];
@@ -153,14 +154,14 @@ impl LatticeFileDef {
     }
 }
 
-impl LatticeRules<f64> for LatticeFileScheme {
-    fn mask(&self, alpha: u8, beta: u8) -> Vec<(Point, f64)> {
+impl Rules<LatticeDomain, f64> for LatticeFileScheme {
+    fn rule(&self, _: &(), (alpha, beta): Parity) -> Vec<(Point, f64)> {
         self.float[alpha as usize & 1][beta as usize & 1].clone()
     }
 }
 
-impl LatticeRules<Rational> for LatticeFileScheme {
-    fn mask(&self, alpha: u8, beta: u8) -> Vec<(Point, Rational)> {
+impl Rules<LatticeDomain, Rational> for LatticeFileScheme {
+    fn rule(&self, _: &(), (alpha, beta): Parity) -> Vec<(Point, Rational)> {
         self.exact[alpha as usize & 1][beta as usize & 1].clone()
     }
 }

@@ -11,7 +11,7 @@ use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::numeric::{Inexact, Weight};
 use crate::schemes::files::{given_values, intern};
-use crate::schemes::{Caps, Params, Rules, Scheme, SchemeInfo};
+use crate::schemes::{Caps, MeshDomain, Params, Rules, Scheme, SchemeInfo};
 use crate::sdc::slots::{weigh, Arity, Host, Mask, Slot, Wants};
 use crate::sdc::VertexParam;
 use crate::sdc::{Origin, RuleResult, Stencil};
@@ -124,8 +124,8 @@ impl UserScheme {
     }
 }
 
-impl<W: Weight> Rules<W> for UserScheme {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+impl<W: Weight> Rules<MeshDomain, W> for UserScheme {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         weigh(self.shared.host, mesh, origin, self.shared.as_ref(), &self.ev_share())
     }
 }
