@@ -126,6 +126,12 @@ pub struct SmallestWeight {
     pub at: String,
 }
 
+impl Default for SmallestWeight {
+    fn default() -> Self {
+        SmallestWeight::new()
+    }
+}
+
 impl SmallestWeight {
     pub fn new() -> Self {
         SmallestWeight { value: f64::INFINITY, at: String::new() }

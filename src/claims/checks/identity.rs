@@ -58,7 +58,7 @@ impl CheckKind for Identity {
         let subject = Subject::valences_only(valences, vars);
         let mut modes = (0, 0);
         let mut p = over_valences(&subject, |subject, n| {
-            let (ok, computed, exact) = identity_at(&l, &r, lhs, rhs, &env_for(&subject, n)?)?;
+            let (ok, computed, exact) = identity_at(&l, &r, lhs, rhs, &env_for(subject, n)?)?;
             if exact {
                 modes.0 += 1;
             } else {

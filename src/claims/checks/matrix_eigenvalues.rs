@@ -46,7 +46,7 @@ impl CheckKind for MatrixEigenvalues {
         let MatrixEigenvalues { valences, vars, rows, values } = self;
         let subject = Subject::valences_only(valences, vars);
         over_valences(&subject, |subject, n| {
-            let env = env_for(&subject, n)?;
+            let env = env_for(subject, n)?;
             let cols = rows.first().map(|r| r.len()).unwrap_or(0);
             if rows.iter().any(|r| r.len() != cols) || rows.len() != cols {
                 return Ok((
