@@ -130,3 +130,50 @@ fn summarise(configurations: &[(usize, Subject)], results: Vec<Comparison>) -> R
         ),
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The variant is the decision: only `Undecided` is INCONCLUSIVE; the
+    /// engine's failures on valid input become `Undecided` with their
+    /// message; malformed data (`Claim`), a bad request (`Input`) or file
+    /// (`File`) stay what they are and so are ERROR.
+    #[test]
+    fn only_undecided_is_inconclusive_and_engine_failures_become_undecided() {
+        for e in [
+            Error::Numeric("no convergence".into()),
+            Error::NotDetermined("a vertex".into()),
+            Error::Message("x".into()),
+        ] {
+            let text = e.to_string();
+            let typed = engine_failure_undecided(e.clone());
+            assert_eq!(typed, Error::Undecided(text));
+            assert!(!undecided(&e) && undecided(&typed));
+        }
+        for e in
+            [Error::Claim("data.lo is missing".into()), Error::Input("unknown scheme".into()), Error::File("f".into())]
+        {
+            assert_eq!(engine_failure_undecided(e.clone()), e);
+            assert!(!undecided(&e));
+        }
+    }
+
+    /// A malformed value at one configuration makes the claim an ERROR even
+    /// when another configuration refutes it; an undecided one does not
+    /// hide a refutation.
+    #[test]
+    fn summarise_ranks_malformed_over_refuted_over_undecided() {
+        let subject = Subject::valences_only(&crate::claims::subject::Valences::List(vec![3, 4]), &Default::default());
+        let configurations = subject.configurations().unwrap();
+        let refuted: Comparison = Ok((false, "1".into(), "2".into()));
+        let malformed = summarise(&configurations, vec![Err(Error::Claim("bad".into())), refuted.clone()]);
+        assert_eq!(malformed, Err(Error::Claim("bad".into())));
+        let f = summarise(&configurations, vec![Err(Error::Numeric("stage".into())), refuted]).unwrap();
+        assert!(!f.holds);
+        assert!(f.detail.contains("n = 3 not decided: stage"), "{}", f.detail);
+        let only_undecided =
+            summarise(&configurations, vec![Err(Error::Numeric("stage".into())), Ok((true, "".into(), "".into()))]);
+        assert_eq!(only_undecided, Err(Error::Undecided("stage".into())));
+    }
+}
