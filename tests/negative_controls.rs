@@ -527,6 +527,7 @@ fn nonnegative_weights_range_needs_affine_weights() {
         "check = \"builtin\"\nname = \"matrix.nonnegative\"\ndata = {{ scheme = \"{file}\", valences = [5], param = \"t\", range = [\"0\", \"1\"], samples = [\"0\", \"1\", \"1/2\"] }}"
     ));
     assert_eq!(o.verdict, Verdict::Inconclusive, "{} / {}", o.computed, o.detail);
-    assert!(o.computed.contains("only if: not decided (S not affine in t"), "{}", o.computed);
-    assert!(o.computed.contains("at t = 1/2 is 3/4, off the line 1 - t"), "{}", o.computed);
+    // INCONCLUSIVE is an `Error::Undecided`, whose message carries the evidence
+    assert!(o.detail.contains("only if: not decided (S not affine in t"), "{}", o.detail);
+    assert!(o.detail.contains("at t = 1/2 is 3/4, off the line 1 - t"), "{}", o.detail);
 }

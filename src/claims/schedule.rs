@@ -12,13 +12,18 @@
 //! collect the results in configuration order and decide from them exactly
 //! as they would from a sequential run.
 
-use super::Subject;
+use crate::claims::subject::Subject;
+
+/// Stack of a claim-evaluation worker (the file workers of
+/// `evaluate::evaluate_all_with` and this pool's): deeply nested expressions
+/// recurse.
+pub const EVALUATION_STACK: usize = 64 << 20;
 
 /// Evaluate `one` at every configuration, largest valence first (the most
 /// work, so that the last to finish is a short one), on the configuration
 /// pool; the results come back in the order of `configurations`. Without a
 /// pool (its threads could not be started) they are evaluated here in turn.
-pub(super) fn each_configuration<T: Send>(
+pub fn each_configuration<T: Send>(
     configurations: &[(usize, Subject)],
     one: impl Fn(&Subject, usize) -> T + Sync,
 ) -> Vec<T> {
@@ -53,7 +58,7 @@ fn pool() -> Option<&'static rayon::ThreadPool> {
         let cores = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
         rayon::ThreadPoolBuilder::new()
             .num_threads(cores)
-            .stack_size(super::EVALUATION_STACK)
+            .stack_size(EVALUATION_STACK)
             .thread_name(|k| format!("subdlab-claims-{k}"))
             .build()
             .ok()

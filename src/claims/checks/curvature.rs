@@ -10,13 +10,17 @@
 //! where S is rational, the exact nullities of S − λ²I and (S − λ²I)². When
 //! the routes disagree the claim is INCONCLUSIVE with both.
 
-use crate::error::Error;
 use serde::Deserialize;
 
-use super::checks::{env_for, eval, subject_config};
-use super::{Subject, Verdict};
+use crate::claims::check_kind::CheckKind;
+use crate::claims::common::spectra::{subject_config, Cache};
+use crate::claims::common::values::{env_for, eval};
+use crate::claims::schedule;
+use crate::claims::subject::Subject;
+use crate::claims::verdict::Finding;
 use crate::curvature::jordan::{exact_jordan, growth_test, ExactJordan, GrowthTest};
-use crate::curvature::{curvature_of_analysis, Curvature, CurvatureOptions, Evidence, EIG_TOL};
+use crate::curvature::{curvature_of_analysis, Curvature as SecondOrder, CurvatureOptions, Evidence, EIG_TOL};
+use crate::error::Error;
 use crate::neighbourhood::NeighbourhoodKind;
 use crate::numeric::Rational;
 use crate::spectrum::{analyse, fmt_f, Analysis, Options};
@@ -35,6 +39,32 @@ pub enum ClassSpec {
 pub enum FourierEntry {
     Int(i64),
     Expr(String),
+}
+
+/// The second-order analysis (`subdlab curvature`): the curvature class
+/// (one name or a list of admissible names: zero, bounded, unbounded,
+/// not-applicable), optionally whether Reif's C² test passes (`c2`) and
+/// the Fourier index set F(μ) (`fourier`, integers or expressions in n
+/// such as "n-2"); `levels` refines the ring samples (default 3).
+#[derive(Clone, Debug, Deserialize)]
+pub struct CurvatureCheck {
+    #[serde(flatten)]
+    pub subject: Subject,
+    pub class: ClassSpec,
+    #[serde(default)]
+    pub c2: Option<bool>,
+    #[serde(default)]
+    pub fourier: Option<Vec<FourierEntry>>,
+    #[serde(default)]
+    pub levels: Option<usize>,
+}
+
+impl CheckKind for CurvatureCheck {
+    const KEYS: &'static [&'static str] = &["class", "c2", "fourier", "levels"];
+
+    fn evaluate(&self, _cache: &mut Cache) -> Result<Finding, Error> {
+        run(&self.subject, &self.class, self.c2, self.fourier.as_deref(), self.levels)
+    }
 }
 
 const CLASSES: &[&str] = &["zero", "bounded", "unbounded", "not-applicable"];
@@ -59,7 +89,7 @@ impl ClassSpec {
 
 /// One valence: the analysis and the second routes.
 struct Computed {
-    c: Curvature,
+    c: SecondOrder,
     growth: Option<Result<GrowthTest, Error>>,
     exact: Option<ExactJordan>,
 }
@@ -88,7 +118,7 @@ fn compute(subject: &Subject, n: usize, levels: usize) -> Result<Computed, Error
     let at_lambda2 = c.mu_over_lambda_squared.is_some_and(|r| (r - 1.0).abs() <= EIG_TOL);
     let (mut growth, mut exact) = (None, None);
     if at_lambda2 {
-        let lambda = c.lambda.ok_or("no subdominant eigenvalue")?;
+        let lambda = c.lambda.ok_or_else(|| Error::Undecided("no subdominant eigenvalue".into()))?;
         growth = Some(growth_test(scheme.as_ref(), &analysis, lambda, levels, 5));
         let lambda_exact = analysis.spectrum.eigenvalues.get(1).and_then(|e| e.exact.as_deref()).and_then(parse_q);
         if let Some(l) = lambda_exact {
@@ -105,7 +135,7 @@ fn parse_q(s: &str) -> Option<Rational> {
 }
 
 /// The float route's finding at λ²: (defective, a chain top shows on the ring).
-fn float_jordan(c: &Curvature) -> (bool, bool, String) {
+fn float_jordan(c: &SecondOrder) -> (bool, bool, String) {
     let Some(l2) = c.lambda_squared else { return (false, false, String::new()) };
     let at: Vec<_> = c.examined.iter().filter(|e| (e.modulus - l2).abs() <= EIG_TOL * l2 && !e.vanishes).collect();
     let defective = at.iter().any(|e| e.defective);
@@ -202,13 +232,15 @@ fn stated_fourier(subject: &Subject, n: usize, entries: &[FourierEntry], g: usiz
     Ok(out)
 }
 
-pub fn run(
+/// The class (and C² test, F(μ)) at every configuration, the analyses side
+/// by side: REFUTED at the first configuration that disagrees.
+fn run(
     subject: &Subject,
     class: &ClassSpec,
     c2: Option<bool>,
     fourier: Option<&[FourierEntry]>,
     levels: Option<usize>,
-) -> Result<(Verdict, String, String, String), Error> {
+) -> Result<Finding, Error> {
     let classes = class.names()?;
     let levels = levels.unwrap_or(crate::curvature::DEFAULT_LEVELS);
     let configurations = subject.configurations()?;
@@ -222,7 +254,7 @@ pub fn run(
     // the analyses side by side (each reads only its configuration); the
     // verdict is drawn from them in order, as from a sequential run: the
     // first configuration that fails to compute or to decide ends it
-    let analyses = super::schedule::each_configuration(&configurations, |s, n| compute(s, n, levels));
+    let analyses = schedule::each_configuration(&configurations, |s, n| compute(s, n, levels));
     for ((n, subject), k) in configurations.iter().zip(analyses) {
         let (n, subject) = (*n, subject);
         // "n = 5", or "n = 5 (QQTQT)" for a face sequence
@@ -310,14 +342,14 @@ pub fn run(
         summary.push(format!("… ({} valences in all)", details.len()));
     }
     Ok(match refuted {
-        None => (
-            Verdict::Holds,
+        None => Finding::new(
+            true,
             stated_all.first().cloned().unwrap_or_default(),
             computed_all.first().cloned().unwrap_or_default(),
             format!("agrees at {span}: {}", summary.join(" | ")),
         ),
-        Some(why) => (
-            Verdict::Refuted,
+        Some(why) => Finding::new(
+            false,
             stated_all.join("; "),
             computed_all.join("; "),
             format!("first disagreement at {why} ({span})"),

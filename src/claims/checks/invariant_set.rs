@@ -28,15 +28,59 @@
 //!    non-zero eigenvalues are listed.
 
 use num_complex::Complex64;
+use serde::Deserialize;
 
-use super::checks::{env_for, eval_real, kind_of, show, subject_config};
-use super::Subject;
+use crate::claims::check_kind::{vacuous, CheckKind};
+use crate::claims::common::configurations::over_valences;
+use crate::claims::common::spectra::{kind_of, subject_config, Cache};
+use crate::claims::common::values::{env_for, eval_real, show};
+use crate::claims::subject::Subject;
+use crate::claims::verdict::Finding;
 use crate::error::{Error, Result};
 use crate::matrix::local::{step_rows_of, AssembleError};
 use crate::neighbourhood::labels::kind_name;
 use crate::neighbourhood::{discover_with_rings, Discovered, VertexKind};
 use crate::numeric::{Rational, Weight};
 use crate::spectrum::{eigen, eigenvalue_order, Spectrum};
+
+/// A stated vertex set "suffices" (or "is invariant"): the set built from
+/// the vertex labels (every vertex of ring ≤ `rings`, optionally only
+/// those with i + j ≤ `lattice_sum` in their sector's chart and of the
+/// listed `kinds`) must have the stated size `value`, be invariant under
+/// one analysis step, contain the `neighbourhood` (analysis by default:
+/// what the analysis needs) and have the same leading eigenvalues as S
+/// on it (every extra eigenvalue below λ1 in modulus).
+#[derive(Clone, Debug, Deserialize)]
+pub struct InvariantSet {
+    #[serde(flatten)]
+    pub subject: Subject,
+    pub rings: String,
+    #[serde(default)]
+    pub lattice_sum: Option<String>,
+    #[serde(default)]
+    pub kinds: Option<Vec<String>>,
+    pub value: String,
+}
+
+impl CheckKind for InvariantSet {
+    const KEYS: &'static [&'static str] = &["rings", "lattice_sum", "kinds", "value"];
+
+    fn validate(&self) -> Result<()> {
+        if self.kinds.as_ref().is_some_and(|k| k.is_empty()) {
+            return vacuous("kinds");
+        }
+        Ok(())
+    }
+
+    fn evaluate(&self, cache: &mut Cache) -> Result<Finding> {
+        let InvariantSet { subject, rings, lattice_sum, kinds, value } = self;
+        cache.prefetch(subject);
+        over_valences(subject, |subject, n| {
+            let spec = cache.spectrum(subject, n)?;
+            one(subject, n, rings, lattice_sum.as_deref(), kinds.as_deref(), value, &spec)
+        })
+    }
+}
 
 /// Eigenvalues closer than this (relative) are the same.
 const SAME: f64 = 1e-7;
@@ -45,7 +89,7 @@ const SAME: f64 = 1e-7;
 const ZERO: f64 = 1e-6;
 
 /// One valence: (holds, stated, computed).
-pub(super) fn one(
+fn one(
     subject: &Subject,
     n: usize,
     rings: &str,
