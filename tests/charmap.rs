@@ -9,7 +9,7 @@ use subdlab::mesh::{PolyMesh, SectorKind};
 use subdlab::neighbourhood::{Configuration, NeighbourhoodKind};
 use subdlab::refine::{Origin, RuleResult, Stencil};
 use subdlab::schemes::{self, Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeInfo, SchemeWeight};
-use subdlab::sdc::{Topology, TriangleSplit};
+use subdlab::sdc::Topology;
 use subdlab::spectrum::{analyse, Options};
 
 fn opts(levels: usize, resolution: usize) -> CharMapOptions {
@@ -263,7 +263,7 @@ impl<W: SchemeWeight> Rules<MeshDomain, W> for SkewLoop {
 const SKEWLOOP_INFO: SchemeInfo = SchemeInfo {
     name: "skew-loop",
     description: "Loop with edge weights that favour Fourier block 2 (test only)",
-    topology: Topology::PrimalSplit(TriangleSplit::FourTriangles),
+    topology: Topology::PrimalTriangle,
     centre: CentreKind::Vertex,
     sector: SectorKind::Tri,
     caps: Caps::NONE,
@@ -412,7 +412,7 @@ impl<W: SchemeWeight> Rules<MeshDomain, W> for JordanCc {
 const JORDANCC_INFO: SchemeInfo = SchemeInfo {
     name: "jordan-cc",
     description: "Catmull–Clark with edge weights that make lambda1 defective (test only)",
-    topology: Topology::PrimalSplit(TriangleSplit::FacePointQuads),
+    topology: Topology::PrimalQuad,
     centre: CentreKind::Vertex,
     sector: SectorKind::Quad,
     caps: Caps::NONE,

@@ -24,7 +24,7 @@ use subdlab::numeric::cyclotomic::cyclotomic_polynomial;
 use subdlab::numeric::{Cyclotomic, Interval, Weight};
 use subdlab::refine::{Origin, RuleResult, Stencil};
 use subdlab::schemes::{self, Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeInfo, SchemeWeight};
-use subdlab::sdc::{Topology, TriangleSplit};
+use subdlab::sdc::Topology;
 use subdlab::spectrum::{analyse, Options};
 
 use std::f64::consts::PI;
@@ -248,7 +248,7 @@ impl<W: SchemeWeight> Rules<MeshDomain, W> for RootLoop {
 const ROOT_LOOP: SchemeInfo = SchemeInfo {
     name: "root-loop",
     description: "Loop with its extraordinary vertex weights written as square roots of their squares (test only)",
-    topology: Topology::PrimalSplit(TriangleSplit::FourTriangles),
+    topology: Topology::PrimalTriangle,
     centre: CentreKind::Vertex,
     sector: SectorKind::Tri,
     caps: Caps::NONE,

@@ -21,7 +21,7 @@ use subdlab::schemes::{self, Scheme};
 use subdlab::spectrum::exact::to_qmatrix;
 use subdlab::spectrum::stencils::{limit_stencil, tangent_stencils};
 use subdlab::spectrum::{analyse, Analysis, Method, Options};
-use subdlab::topology::{Topology, TriangleSplit};
+use subdlab::topology::Topology;
 
 fn four_three(cw: Option<&str>) -> Box<dyn Scheme> {
     let o: Vec<(String, String)> = cw.map(|c| vec![("centre_weight".to_string(), c.to_string())]).unwrap_or_default();
@@ -702,7 +702,7 @@ fn sigma_blending_of_rule_4b() {
     for sigma in 2..=5usize {
         let (m1, p1) = refine_mesh(s.as_ref(), &m, &p, sigma - 1).unwrap();
         let (_, p2) = refine_mesh(s.as_ref(), &m, &p, sigma).unwrap();
-        let r = Topology::PrimalSplit(TriangleSplit::FourTriangles).refine(&m1).unwrap();
+        let r = Topology::MixedQuadTriangle.refine(&m1).unwrap();
         let share = if sigma <= 3 { (sigma - 1) as f64 / sigma as f64 } else { 1.0 };
         let fan = m1.vertex_fan(0).unwrap();
         let n = fan.len();

@@ -900,7 +900,7 @@ fn gatherers_cover_every_origin_with_declared_rules_and_families() {
     ];
     for (host, mesh) in meshes {
         let spec = host.spec();
-        let refined = spec.topology.refine(&mesh).unwrap();
+        let refined = spec.host.refine(&mesh).unwrap();
         for &origin in &refined.vertex_origins {
             let g = gather(host, &mesh, origin, &All).unwrap_or_else(|e| panic!("{} {origin:?}: {e}", spec.name));
             let parts = g.parts.iter().chain(&g.extraordinary).chain(&g.regular);

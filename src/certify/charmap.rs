@@ -53,6 +53,7 @@ use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::numeric::{Interval, Rational, SmallRational, Weight};
 use crate::refine::{connectivity, stencil_at, Origin};
+use crate::sdc::host::RegularSpline;
 use crate::sdc::Scheme;
 use crate::spectrum::Analysis;
 
@@ -328,6 +329,9 @@ fn geometric_half(
 ) -> Result<(Verdict, Verdict), String> {
     let level0 = certified_net(analysis, cert)?;
     let d = &analysis.discovered;
+    // the host says whether its regular part is the non-box S_3^1 spline
+    // (windows with face control vertices) or a box spline
+    let non_box = scheme.topology().regular_spline() == RegularSpline::NonBoxS31;
     let mut last_reason = String::new();
     for levels in 2..=max_levels {
         let net = net::refine_net_exactly_as::<Interval, Point>(scheme, d, level0.clone(), levels)
@@ -344,7 +348,7 @@ fn geometric_half(
         ];
         let mut chosen = None;
         for (ring, inside) in annuli.iter().filter(|(_, inside)| !inside.is_empty()) {
-            match ring.iter().map(|&f| Window::around(&net, &vf, f)).collect::<Result<Vec<_>, String>>() {
+            match ring.iter().map(|&f| Window::around(&net, &vf, f, non_box)).collect::<Result<Vec<_>, String>>() {
                 Ok(w) => {
                     chosen = Some((ring, inside, w));
                     break;
@@ -665,12 +669,12 @@ struct Window {
 }
 
 impl Window {
-    fn around(net: &Net<Point>, vf: &[Vec<usize>], f: usize) -> Result<Window, String> {
+    fn around(net: &Net<Point>, vf: &[Vec<usize>], f: usize, non_box: bool) -> Result<Window, String> {
         let mesh = &net.mesh;
         let face = mesh.face(f);
         let m = face.len();
         // face control vertices: Huang's non-box S_3^1 spline (quads only)
-        let fcv = mesh.face_point(f).is_some();
+        let fcv = non_box;
         if fcv && m != 4 {
             return Err(format!("a ring face with a face control vertex has {m} sides"));
         }
@@ -883,7 +887,7 @@ fn check_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[Window]) -> Resu
     }
     let refined = connectivity(scheme, mesh).map_err(|e| format!("the net could not be refined: {e}"))?;
     let vf = mesh.vertex_faces();
-    let ternary = scheme.topology().faces_per_face() == 9;
+    let ternary = scheme.topology().regular_spline() == RegularSpline::TernaryPrimal;
     let mut fitting: Option<Vec<RegularPart>> = None;
     let mut checked = 0;
     for &origin in &refined.vertex_origins {

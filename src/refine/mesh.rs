@@ -12,7 +12,6 @@ use super::{apply, step, Origin, Stencil, Step};
 use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::sdc::Scheme;
-use crate::sdc::{Topology, TriangleSplit};
 
 /// Most refinement levels accepted in one call.
 pub const MAX_LEVELS: usize = 12;
@@ -50,8 +49,8 @@ pub fn refine_mesh(
         )));
     }
     // refuse before any work: the first level's size, then the host's growth per level
-    let estimate = (1..levels)
-        .fold(size_bound(scheme.topology(), mesh), |size, _| size.saturating_mul(growth_per_level(scheme.topology())));
+    let host = scheme.topology();
+    let estimate = (1..levels).fold(host.size_bound(mesh), |size, _| size.saturating_mul(host.growth_per_level()));
     if estimate > MAX_REFINED_FACES {
         return Err(Error::Input(format!(
             "{levels} level(s) would produce about {estimate} faces or vertices (estimated before refining), above the supported {MAX_REFINED_FACES}; use fewer levels"
@@ -60,7 +59,7 @@ pub fn refine_mesh(
     let mut mesh = mesh.clone();
     let mut points: Vec<Option<[f64; 3]>> = points.iter().map(|p| Some(*p)).collect();
     for level in 1..=levels {
-        let bound = size_bound(scheme.topology(), &mesh);
+        let bound = host.size_bound(&mesh);
         if bound > MAX_REFINED_FACES {
             return Err(Error::Input(format!(
                 "level {level} would produce {bound} faces or vertices, above the supported {MAX_REFINED_FACES}; use fewer levels"
@@ -127,46 +126,6 @@ pub fn composite_weights(
     Ok((mesh, rows))
 }
 
-/// The larger of the face and vertex counts of the next level, computed from
-/// the refinement host's counting rules before any work is done.
-/// How many times the faces multiply per level once the mesh is refined
-/// (each split's count of new faces per old face, asymptotically).
-fn growth_per_level(topology: Topology) -> usize {
-    match topology {
-        Topology::TernarySplit => 9,
-        Topology::Sqrt3 => 3,
-        _ => 4,
-    }
-}
-
-fn size_bound(topology: Topology, mesh: &PolyMesh) -> usize {
-    let corners: usize = mesh.faces().iter().map(|f| f.len()).sum();
-    let (v, e, f) = (mesh.num_vertices(), mesh.edges().len(), mesh.num_faces());
-    match topology {
-        Topology::PrimalSplit(split) => {
-            let face_point = |len: usize| len >= 4 || split == TriangleSplit::FacePointQuads;
-            // a face with a face point becomes one quad per corner, a triangle without one 4 triangles
-            let faces: usize = mesh.faces().iter().map(|fc| if face_point(fc.len()) { fc.len() } else { 4 }).sum();
-            let face_points = mesh.faces().iter().filter(|fc| face_point(fc.len())).count();
-            faces.max(v + e + face_points)
-        }
-        // one vertex per corner; F-, E- and V-faces
-        Topology::Dual => corners.max(f + e + v),
-        // 9 quads per quad; old vertices, 2 per edge, 4 per quad
-        Topology::TernarySplit => (9 * f).max(v + 2 * e + 4 * f),
-        // the dual split plus at most one central point per face
-        Topology::AugmentedDual => corners.max(f + e + v) + f,
-        // old vertices plus one per face; two triangles per flipped edge
-        Topology::Sqrt3 => (2 * e).max(v + f),
-        // one quad per corner; old vertices (the old FCVs become the face
-        // points), one per edge, one new FCV per new quad
-        Topology::FcvSplit => corners.max(v + e + corners),
-        // every face shrinks to a copy (one new point per corner at most) and
-        // every edge gets a joining quad
-        Topology::PolarSplit => (f + e).max(corners + v),
-    }
-}
-
 /// Why the rule for `origin` does not apply, as one line.
 fn not_applicable(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin, level: usize) -> Error {
     let name = scheme.name();
@@ -216,16 +175,7 @@ fn requirement(scheme: &dyn Scheme) -> &'static str {
     if let Some(r) = scheme.mesh_requirement() {
         return r;
     }
-    match scheme.topology() {
-        Topology::PrimalSplit(TriangleSplit::FourTriangles) => "a closed triangle mesh",
-        Topology::TernarySplit => "a closed quad mesh",
-        Topology::PolarSplit => "a closed polar net (poles with triangle fans, rings of quads)",
-        Topology::AugmentedDual => {
-            "a closed mesh whose vertices all have valence 4 (a Doo–Sabin net: apply one doo-sabin step first)"
-        }
-        Topology::Sqrt3 => "a closed triangle mesh",
-        Topology::PrimalSplit(TriangleSplit::FacePointQuads) | Topology::Dual | Topology::FcvSplit => "a closed mesh",
-    }
+    scheme.topology().mesh_requirement()
 }
 
 /// Give every face a face control vertex at `scale` times its barycentre (the

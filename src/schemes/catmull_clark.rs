@@ -9,8 +9,8 @@ use super::{Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeEntry, Sc
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
+use crate::sdc::Topology;
 use crate::sdc::{Origin, RuleResult};
-use crate::sdc::{Topology, TriangleSplit};
 
 pub struct CatmullClark {
     params: Params,
@@ -19,7 +19,7 @@ pub struct CatmullClark {
 const INFO: SchemeInfo = SchemeInfo {
     name: "catmull-clark",
     description: "Catmull–Clark primal quad subdivision (bicubic B-spline in the regular case)",
-    topology: Topology::PrimalSplit(TriangleSplit::FacePointQuads),
+    topology: Topology::PrimalQuad,
     centre: CentreKind::Vertex,
     sector: SectorKind::Quad,
     caps: Caps::NONE,

@@ -37,8 +37,8 @@ use super::{Caps, CentreKind, MeshDomain, ParamSpec, Params, Rules, Scheme, Sche
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
+use crate::sdc::Topology;
 use crate::sdc::{Origin, RuleResult};
-use crate::sdc::{Topology, TriangleSplit};
 
 /// σ0 of section 2: the last refinement step that still blends (4b) with the
 /// regular edge rules ("say σ0 = 3").
@@ -55,7 +55,7 @@ const INFO: SchemeInfo = SchemeInfo {
     name: "four-three",
     description:
         "Peters–Shiue 4-3 subdivision of quad/triangle meshes (A_4 and A_3 box splines, 4-3 transition, eon rules)",
-    topology: Topology::PrimalSplit(TriangleSplit::FourTriangles),
+    topology: Topology::MixedQuadTriangle,
     centre: CentreKind::Vertex,
     sector: SectorKind::Quad,
     caps: Caps { face_sequences: true, mesh_requirement: Some("a closed mesh of triangles and quads"), ..Caps::NONE },

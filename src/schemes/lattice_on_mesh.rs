@@ -13,8 +13,8 @@ use super::{Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeInfo};
 use crate::lattice::{LatticeScheme, LatticeWeight};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Cyclotomic, Interval, Rational, SmallRational};
+use crate::sdc::Topology;
 use crate::sdc::{Origin, RuleResult, Stencil};
-use crate::sdc::{Topology, TriangleSplit};
 
 pub struct LatticeOnMesh {
     inner: Box<dyn LatticeScheme>,
@@ -27,7 +27,7 @@ impl LatticeOnMesh {
         let info = SchemeInfo {
             name: inner.name(),
             description: inner.description(),
-            topology: Topology::PrimalSplit(TriangleSplit::FacePointQuads),
+            topology: Topology::PrimalQuad,
             centre: CentreKind::Vertex,
             sector: SectorKind::Quad,
             caps: Caps {

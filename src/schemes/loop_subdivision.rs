@@ -8,8 +8,8 @@ use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Inexact;
 use crate::numeric::Weight;
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
+use crate::sdc::Topology;
 use crate::sdc::{Origin, RuleResult};
-use crate::sdc::{Topology, TriangleSplit};
 
 pub struct Loop {
     params: Params,
@@ -18,7 +18,7 @@ pub struct Loop {
 const INFO: SchemeInfo = SchemeInfo {
     name: "loop",
     description: "Loop primal triangle subdivision, Loop's original weights (quartic box spline when regular)",
-    topology: Topology::PrimalSplit(TriangleSplit::FourTriangles),
+    topology: Topology::PrimalTriangle,
     centre: CentreKind::Vertex,
     sector: SectorKind::Tri,
     caps: Caps::NONE,

@@ -27,7 +27,7 @@ pub struct NonBox {
 const INFO: SchemeInfo = SchemeInfo {
     name: "non-box",
     description: "Huang's non-box S_3^1 subdivision: quads with face control vertices (FCVs)",
-    topology: Topology::FcvSplit,
+    topology: Topology::Fcv,
     centre: CentreKind::Vertex,
     sector: SectorKind::Quad,
     caps: Caps {

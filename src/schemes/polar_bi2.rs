@@ -25,7 +25,7 @@ pub struct PolarBi2 {
 const INFO: SchemeInfo = SchemeInfo {
     name: "polar-bi2",
     description: "Karčiauskas–Peters polar bi-2 subdivision (PolBS): a pole with a triangle fan, quad rings",
-    topology: Topology::PolarSplit,
+    topology: Topology::Polar,
     centre: CentreKind::Polar,
     // the faces around the pole
     sector: SectorKind::Tri,

@@ -56,7 +56,7 @@ pub struct Tps {
 const INFO: SchemeInfo = SchemeInfo {
     name: "tps",
     description: "Karčiauskas–Peters primal (ternary) bi-2 subdivision of quad meshes (TPS; adjustable with e != 1/3)",
-    topology: Topology::TernarySplit,
+    topology: Topology::Ternary,
     centre: CentreKind::Vertex,
     sector: SectorKind::Quad,
     caps: Caps::NONE,

@@ -1,7 +1,68 @@
-//! The refinement host a scheme runs on, named: which connectivity one
-//! subdivision step produces. The hosts themselves (the operators that build
-//! the refined mesh) live in `crate::topology`; a scheme only names its host,
-//! as OpenSubdiv's Sdc names a split type without knowing the refiner.
+//! The refinement host a scheme runs on: which connectivity one subdivision
+//! step produces, which neighbour positions (mask slots) its rules weigh, and
+//! what the rest of the engine must know of it. A scheme only names its host
+//! (`Host`), as OpenSubdiv's Sdc names a split type without knowing the
+//! refiner.
+//!
+//! One host is one unit: a file `src/topology/<host>.rs` that implements
+//! [`RefinementHost`] — its split, its slots and their gatherer, its counting
+//! rules (growth per level, size bound), the mesh it needs and the spline of
+//! its regular part. Every question about a host is a method of that trait
+//! without a default, so a new host must answer all of them, and nothing
+//! outside its file matches on which host it is.
+//!
+//! The registry is split over the two layers that must know it: the variant
+//! list of [`Host`] here (the identity scheme descriptions name), and the
+//! table that maps each variant to its unit in `crate::topology` (which sees
+//! every host file; [`Registry`] is the interface this layer calls it
+//! through, so `sdc` imports nothing from above). The table is an exhaustive
+//! match: a variant without a unit does not compile.
+
+use crate::error::Error;
+use crate::mesh::{PolyMesh, SectorKind};
+use crate::sdc::slots::{Gather, HostSpec, Wants};
+use crate::sdc::{CentreKind, Origin};
+
+/// Every refinement host, by name: the registry's list of identities. Adding
+/// a host adds one variant here and one line to the table in
+/// `crate::topology` (the compiler asks for the latter).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Host {
+    /// primal split, every face into quads around a face point (Catmull–Clark)
+    PrimalQuad,
+    /// primal split of triangles into 4 (Loop, butterfly)
+    PrimalTriangle,
+    /// primal split of quads and triangles together (4-3 subdivision)
+    MixedQuadTriangle,
+    /// quads around face control vertices (non-box)
+    Fcv,
+    /// dual split (Doo–Sabin)
+    Dual,
+    /// Kobbelt's sqrt(3) split
+    Sqrt3,
+    /// ternary quad split (TPS)
+    Ternary,
+    /// dual split plus central points (PGS)
+    AugmentedDual,
+    /// radial split of polar nets (polar bi-2)
+    Polar,
+}
+
+/// Every host, in the order scheme-file documentation lists them.
+pub const HOSTS: [Host; 9] = [
+    Host::PrimalQuad,
+    Host::PrimalTriangle,
+    Host::MixedQuadTriangle,
+    Host::Fcv,
+    Host::Dual,
+    Host::Sqrt3,
+    Host::Ternary,
+    Host::AugmentedDual,
+    Host::Polar,
+];
+
+/// The host a scheme runs on (the name scheme descriptions have always used).
+pub type Topology = Host;
 
 /// How triangles are split by a primal operator.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -12,54 +73,112 @@ pub enum TriangleSplit {
     FacePointQuads,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Topology {
-    /// vertex, edge and (for quads and larger) face points; each face split
-    /// into quads around its face point, triangles as `TriangleSplit` says
-    PrimalSplit(TriangleSplit),
-    /// one new vertex per face corner; F-, E- and V-faces (Doo–Sabin)
-    Dual,
-    /// a new vertex in every triangle, old edges flipped (Kobbelt's sqrt(3))
-    Sqrt3,
-    /// quads around each face's control vertex, a new FCV per new quad (non-box)
-    FcvSplit,
-    /// every quad split into 3 x 3 quads (ternary primal bi-2, TPS)
-    TernarySplit,
-    /// the dual split plus a central point per non-quad (or already augmented)
-    /// face (point-augmented bi-2, PGS)
-    AugmentedDual,
-    /// radial-only binary split of polar nets (polar bi-2)
-    PolarSplit,
+/// The refined connectivity of one step: the new mesh, where each new vertex
+/// comes from, and the parent entity of each new face.
+#[derive(Clone, Debug)]
+pub struct Refined {
+    pub mesh: PolyMesh,
+    pub vertex_origins: Vec<Origin>,
+    pub face_parents: Vec<Origin>,
 }
 
-impl Topology {
-    /// Refinements in one analysis step: the number after which the refined
-    /// lattice is the old one scaled, without rotation, so that vertices can be
-    /// matched by lattice coordinates.
-    pub fn steps_per_analysis(&self) -> usize {
-        // exhaustive on purpose: a new host must say how its lattice realigns
-        match self {
-            Topology::Sqrt3 => 2,
-            Topology::PrimalSplit(_)
-            | Topology::Dual
-            | Topology::FcvSplit
-            | Topology::TernarySplit
-            | Topology::AugmentedDual
-            | Topology::PolarSplit => 1,
-        }
-    }
+/// The spline a host's regular rules may be, as far as the certified
+/// characteristic map (`certify::charmap`, lemmas C3 and C3′) must know it to
+/// choose the masks it compares the rules with and the windows it bounds.
+/// Which of a family's candidates fits (bicubic or A_4, quads or triangles)
+/// the certificate decides by comparing exactly; the host only says which
+/// family its lattice refinement belongs to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RegularSpline {
+    /// binary primal refinement: over quads the bicubic B-spline or the
+    /// four-direction box spline A_4 (vertex, edge and face masks), over
+    /// triangles the three-direction quartic box spline
+    BinaryPrimal,
+    /// binary dual refinement: the biquadratic B-spline (corner masks)
+    BinaryDual,
+    /// ternary primal refinement of quads: the biquadratic B-spline with the
+    /// ternary mask (1, 3, 6, 7, 6, 3, 1)/9 in each direction
+    TernaryPrimal,
+    /// quads with face control vertices: the four-directional S_3^1
+    /// non-box spline (`certify::s31`)
+    NonBoxS31,
+    /// no box spline of a lattice refinement (a rotating or radial-only
+    /// split): the certificate has no mask to compare with, and a triangle
+    /// ring falls back on the difference-scheme bounds
+    NoBoxSpline,
+}
 
+/// Everything a refinement host states. Implemented once per host, in its
+/// file under `src/topology/`; no method has a default, so a new host answers
+/// every question and the compiler names any it leaves out.
+pub trait RefinementHost: Sync {
+    /// Name, sector and centre kinds, face control vertices, and the rules
+    /// with their slot families (what scheme files write weights for).
+    fn spec(&self) -> &'static HostSpec;
+    /// One refinement step of the connectivity (the split).
+    fn refine(&self, mesh: &PolyMesh) -> Result<Refined, Error>;
+    /// The slots of `origin`'s rule mapped to mesh vertices, only the rules
+    /// and optional families `wants` names.
+    fn gather(&self, mesh: &PolyMesh, origin: Origin, wants: &dyn Wants) -> Gather;
+    /// Refinements in one analysis step: the number after which the refined
+    /// lattice is the old one scaled, without rotation, so that vertices can
+    /// be matched by lattice coordinates.
+    fn steps_per_analysis(&self) -> usize;
     /// How many faces one face becomes in one refinement, away from
     /// extraordinary points and boundaries: what the cost of refining a net
-    /// grows by per level. Dual hosts make a face per old face, edge and
-    /// vertex (F + E + V = 4F on a closed quad net).
-    pub fn faces_per_face(&self) -> usize {
-        match self {
-            Topology::PrimalSplit(_) | Topology::Dual | Topology::FcvSplit | Topology::AugmentedDual => 4,
-            Topology::Sqrt3 => 3,
-            Topology::TernarySplit => 9,
-            // radial-only: each ring of faces becomes two
-            Topology::PolarSplit => 2,
-        }
+    /// grows by per level, and what a face's parameter area shrinks by.
+    fn growth_per_level(&self) -> usize;
+    /// An upper bound of the larger of the face and vertex counts after one
+    /// refinement of `mesh`, from the split's counting rules, before any work.
+    fn size_bound(&self, mesh: &PolyMesh) -> usize;
+    /// What the split needs of a real mesh to refine it, for error messages.
+    fn mesh_requirement(&self) -> &'static str;
+    /// The spline family of the regular part (see [`RegularSpline`]).
+    fn regular_spline(&self) -> RegularSpline;
+}
+
+/// The table from a host's identity to its unit. Implemented for [`Host`] by
+/// `crate::topology` (the one place that sees every host file); this layer
+/// only calls it.
+pub trait Registry {
+    fn unit(self) -> &'static dyn RefinementHost;
+}
+
+impl Host {
+    /// Name, rules and slot families (the unit's [`RefinementHost::spec`]).
+    pub fn spec(self) -> &'static HostSpec {
+        self.unit().spec()
+    }
+    /// The host named `name` (as scheme files name it, `topology = "..."`).
+    pub fn by_name(name: &str) -> Option<Host> {
+        HOSTS.iter().copied().find(|h| h.spec().name == name)
+    }
+    pub fn refine(self, mesh: &PolyMesh) -> Result<Refined, Error> {
+        self.unit().refine(mesh)
+    }
+    pub fn steps_per_analysis(self) -> usize {
+        self.unit().steps_per_analysis()
+    }
+    /// [`RefinementHost::growth_per_level`], under the name the analyses use.
+    pub fn faces_per_face(self) -> usize {
+        self.unit().growth_per_level()
+    }
+    pub fn growth_per_level(self) -> usize {
+        self.unit().growth_per_level()
+    }
+    pub fn size_bound(self, mesh: &PolyMesh) -> usize {
+        self.unit().size_bound(mesh)
+    }
+    pub fn mesh_requirement(self) -> &'static str {
+        self.unit().mesh_requirement()
+    }
+    pub fn regular_spline(self) -> RegularSpline {
+        self.unit().regular_spline()
+    }
+    pub fn sector(self) -> SectorKind {
+        self.spec().sector
+    }
+    pub fn centre(self) -> CentreKind {
+        self.spec().centre
     }
 }

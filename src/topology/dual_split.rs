@@ -1,12 +1,22 @@
 //! Dual split (Doo–Sabin and other dual schemes): a new vertex near every face
 //! corner; F-faces shrink the old faces, E-faces sit on interior edges,
 //! V-faces on interior vertices.
+//!
+//! The host unit (`Host::Dual`, scheme files `topology = "dual"`): one rule,
+//! the new vertex near a face corner over the face's corners. Regular part:
+//! the biquadratic B-spline (binary dual refinement of quads).
 
 use crate::mesh::IdMap;
 
 use super::{ChartBuilder, Refined};
+use super::{RefinementHost, RegularSpline};
 use crate::error::Error;
 use crate::mesh::PolyMesh;
+use crate::mesh::SectorKind;
+use crate::sdc::slots::Host;
+use crate::sdc::slots::OriginKind::Corner as C;
+use crate::sdc::slots::{canonical, fam, unsupported, Gather, Gathered, HostSpec, Part, RuleSlots, Wants, PER_J};
+use crate::sdc::CentreKind;
 use crate::sdc::Origin;
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
@@ -93,4 +103,75 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
         new_mesh.chart = cb.finish(1);
     }
     Ok(Refined { mesh: new_mesh, vertex_origins: origins, face_parents: parents })
+}
+
+/// The host unit: everything the engine asks of this host.
+pub struct DualSplit;
+
+static SPEC: HostSpec = HostSpec {
+    host: Host::Dual,
+    name: "dual",
+    sector: SectorKind::Quad,
+    centre: CentreKind::Face,
+    face_control: false,
+    rules: RULES,
+};
+
+impl RefinementHost for DualSplit {
+    fn spec(&self) -> &'static HostSpec {
+        &SPEC
+    }
+    fn refine(&self, mesh: &PolyMesh) -> Result<Refined, Error> {
+        refine(mesh)
+    }
+    fn gather(&self, mesh: &PolyMesh, origin: Origin, _wants: &dyn Wants) -> Gather {
+        match origin {
+            Origin::Corner { face, corner } => {
+                let cyc = mesh.face_from(face, corner);
+                let mut p = Part::new("corner", cyc.len());
+                cyc.iter().enumerate().for_each(|(j, &c)| p.put("corner", j, c));
+                Ok(Gathered::one(p))
+            }
+            Origin::Vertex(_) | Origin::Edge(..) | Origin::Face(_) => unsupported(Host::Dual, origin),
+        }
+    }
+    fn steps_per_analysis(&self) -> usize {
+        1
+    }
+    fn growth_per_level(&self) -> usize {
+        4
+    }
+    fn size_bound(&self, mesh: &PolyMesh) -> usize {
+        let corners: usize = mesh.faces().iter().map(|f| f.len()).sum();
+        let (v, e, f) = (mesh.num_vertices(), mesh.edges().len(), mesh.num_faces());
+        // one vertex per corner; F-, E- and V-faces
+        corners.max(f + e + v)
+    }
+    fn mesh_requirement(&self) -> &'static str {
+        "a closed mesh"
+    }
+    fn regular_spline(&self) -> RegularSpline {
+        RegularSpline::BinaryDual
+    }
+}
+
+const RULES: &[RuleSlots] = &[canonical(
+    "corner",
+    C,
+    &[fam("corner", PER_J, "c_j, the face's corners counter-clockwise from c_0, the corner itself")],
+    false,
+    "the new vertex near corner c_0 of an n-gon",
+)];
+
+#[cfg(test)]
+mod tests {
+    use super::super::host_tests::{check_host, quad_torus};
+    use super::*;
+
+    /// A face per old face, edge and vertex: F + E + V = F + 2F + F on a
+    /// quad torus.
+    #[test]
+    fn states_its_growth_bound_and_rules() {
+        check_host(Host::Dual, &quad_torus(4, 5), 20 + 40 + 20, true);
+    }
 }

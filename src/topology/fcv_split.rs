@@ -9,12 +9,27 @@
 //! `Corner { face: f, corner: k }` for the NFCV of the new quad at corner k.
 //! Charts use doubled lattice coordinates (scale 2): vertices at even, FCVs at
 //! odd points.
+//!
+//! The host unit (`Host::Fcv`, scheme files `topology = "fcv"`): meshes carry
+//! a face control vertex (FCV) per face; its rules are the vertex, edge, FCV
+//! (face) and new-quad FCV (corner) rules. Regular part: the four-directional
+//! S_3^1 non-box spline (`certify::s31`).
 
 use crate::mesh::IdMap;
 
 use super::{ChartBuilder, Refined};
+use super::{RefinementHost, RegularSpline};
 use crate::error::Error;
 use crate::mesh::PolyMesh;
+use crate::mesh::SectorKind;
+use crate::mesh::VertexId;
+use crate::sdc::slots::Host;
+use crate::sdc::slots::OriginKind::{Corner as C, Edge as E, Face as F, Vertex as V};
+use crate::sdc::slots::Valence::{Any, Fixed};
+use crate::sdc::slots::{
+    face_corners, fam, fan, rule, Arity, Gather, GatherError, Gathered, HostSpec, Part, RuleSlots, Wants, ONE, PER_J,
+};
+use crate::sdc::CentreKind;
 use crate::sdc::Origin;
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
@@ -104,4 +119,145 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
         new_mesh.chart = cb.finish(2);
     }
     Ok(Refined { mesh: new_mesh, vertex_origins: origins, face_parents: parents })
+}
+
+/// The host unit: everything the engine asks of this host.
+pub struct FcvSplit;
+
+static SPEC: HostSpec = HostSpec {
+    host: Host::Fcv,
+    name: "fcv",
+    sector: SectorKind::Quad,
+    centre: CentreKind::Vertex,
+    face_control: true,
+    rules: RULES,
+};
+
+impl RefinementHost for FcvSplit {
+    fn spec(&self) -> &'static HostSpec {
+        &SPEC
+    }
+    fn refine(&self, mesh: &PolyMesh) -> Result<Refined, Error> {
+        refine(mesh)
+    }
+    fn gather(&self, mesh: &PolyMesh, origin: Origin, _wants: &dyn Wants) -> Gather {
+        fcv(mesh, origin).map(Gathered::one)
+    }
+    fn steps_per_analysis(&self) -> usize {
+        1
+    }
+    fn growth_per_level(&self) -> usize {
+        4
+    }
+    fn size_bound(&self, mesh: &PolyMesh) -> usize {
+        let corners: usize = mesh.faces().iter().map(|f| f.len()).sum();
+        let (v, e) = (mesh.num_vertices(), mesh.edges().len());
+        // one quad per corner; old vertices (the old FCVs become the face
+        // points), one per edge, one new FCV per new quad
+        corners.max(v + e + corners)
+    }
+    fn mesh_requirement(&self) -> &'static str {
+        "a closed mesh"
+    }
+    fn regular_spline(&self) -> RegularSpline {
+        RegularSpline::NonBoxS31
+    }
+}
+
+const RULES: &[RuleSlots] = &[
+    rule(
+        "vertex",
+        V,
+        Any,
+        &[fam("centre", ONE, "the vertex v"), fam("fcv", PER_J, "the FCV of fan face j")],
+        "the new vertex point of v (valence n)",
+    ),
+    rule(
+        "edge",
+        E,
+        Fixed(4),
+        &[
+            fam("ends", Arity::Fixed(2), "the edge's two ends"),
+            fam("fcv", Arity::Fixed(2), "the FCVs of its two faces"),
+        ],
+        "the new edge point",
+    ),
+    rule(
+        "face",
+        F,
+        Any,
+        &[fam("centre", ONE, "the face's old FCV"), fam("corner", PER_J, "corner j of the n-gon")],
+        "the new FCV of an old n-gon",
+    ),
+    rule(
+        "corner",
+        C,
+        Any,
+        &[
+            fam("vertex", ONE, "the corner V_0"),
+            fam("fcv", ONE, "the FCV of the face F_0"),
+            fam("side", Arity::Fixed(2), "the FCVs of F_0's two neighbours at V_0"),
+        ],
+        "the FCV of the new quad at corner V_0 of face F_0 (an n-gon)",
+    ),
+];
+
+fn fcv(mesh: &PolyMesh, origin: Origin) -> Result<Part, GatherError> {
+    if !mesh.has_face_point_on_every_face() {
+        return Err(GatherError::NotCovered);
+    }
+    let point = |a: VertexId, b: VertexId| mesh.face_point_left_of(a, b).ok_or(GatherError::Truncated);
+    match origin {
+        Origin::Vertex(v) => {
+            let fan = fan(mesh, v)?;
+            let mut p = Part::around("vertex", fan.len(), v);
+            p.put("centre", 0, v);
+            for (j, cyc) in fan.iter().enumerate() {
+                p.put("fcv", j, point(v, cyc[1])?);
+            }
+            Ok(p)
+        }
+        Origin::Edge(a, b) => {
+            let mut p = Part::new("edge", 4);
+            p.put("ends", 0, a);
+            p.put("ends", 1, b);
+            p.put("fcv", 0, point(a, b)?);
+            p.put("fcv", 1, point(b, a)?);
+            Ok(p)
+        }
+        Origin::Face(f) => {
+            let mut p = face_corners("face", mesh, f);
+            p.put("centre", 0, mesh.face_point(f).ok_or(GatherError::Truncated)?);
+            Ok(p)
+        }
+        Origin::Corner { face: f, corner: k } => {
+            let cyc = mesh.face_from(f, k);
+            let (v0, next, prev) = (cyc[0], cyc[1], cyc[cyc.len() - 1]);
+            let mut p = Part::new("corner", cyc.len());
+            p.put("vertex", 0, v0);
+            p.put("fcv", 0, mesh.face_point(f).ok_or(GatherError::Truncated)?);
+            // the old faces at V_0 next to F_0: across (V_0, next) and across (prev, V_0)
+            p.put("side", 0, point(next, v0)?);
+            p.put("side", 1, point(v0, prev)?);
+            Ok(p)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::host_tests::{check_host, quad_torus};
+    use super::*;
+
+    /// Every quad becomes one quad per corner around its FCV.
+    #[test]
+    fn states_its_growth_bound_and_rules() {
+        let torus = quad_torus(4, 5);
+        let (nv, nf) = (torus.num_vertices(), torus.num_faces());
+        let with_fcvs = PolyMesh::new(nv + nf, torus.faces().to_vec())
+            .unwrap()
+            .with_face_points((0..nf).map(|f| Some(nv + f)).collect())
+            .unwrap();
+        check_host(Host::Fcv, &with_fcvs, 4 * 20, true);
+    }
 }

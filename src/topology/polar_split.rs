@@ -15,12 +15,25 @@
 //! Charts: all vertices lie on spokes, at (spoke, ring, 0). The ring-r points
 //! near x on the radial edge to ring r + 1 and r − 1 get rings 2r and 2r − 1
 //! (one ring per radial half-segment), the spoke points ring 1, the pole stays at 0.
+//!
+//! The host unit (`Host::Polar`, scheme files `topology = "polar"`): the pole
+//! rule, the spoke rule and the radial rule. It grows by 2 per level (each
+//! ring of quads becomes two); no box spline of a lattice dilation.
 
 use crate::mesh::IdMap;
 
 use super::{ChartBuilder, Refined};
+use super::{RefinementHost, RegularSpline};
 use crate::error::Error;
 use crate::mesh::PolyMesh;
+use crate::mesh::SectorKind;
+use crate::sdc::slots::Host;
+use crate::sdc::slots::OriginKind::{Edge as E, Vertex as V};
+use crate::sdc::slots::Valence::{Any, Fixed};
+use crate::sdc::slots::{
+    canonical, fam, rule, unsupported, Gather, GatherError, Gathered, HostSpec, Part, RuleSlots, Wants, ONE, PER_J,
+};
+use crate::sdc::CentreKind;
 use crate::sdc::Origin;
 
 /// A pole: an interior vertex whose faces are all triangles.
@@ -169,4 +182,136 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
         new_mesh.chart = cb.finish(1);
     }
     Ok(Refined { mesh: new_mesh, vertex_origins: origins, face_parents: parents })
+}
+
+/// The host unit: everything the engine asks of this host.
+pub struct PolarSplit;
+
+static SPEC: HostSpec = HostSpec {
+    host: Host::Polar,
+    name: "polar",
+    sector: SectorKind::Tri,
+    centre: CentreKind::Polar,
+    face_control: false,
+    rules: RULES,
+};
+
+impl RefinementHost for PolarSplit {
+    fn spec(&self) -> &'static HostSpec {
+        &SPEC
+    }
+    fn refine(&self, mesh: &PolyMesh) -> Result<Refined, Error> {
+        refine(mesh)
+    }
+    fn gather(&self, mesh: &PolyMesh, origin: Origin, _wants: &dyn Wants) -> Gather {
+        match origin {
+            Origin::Vertex(p) => {
+                mesh.fan_corners(p).ok_or(GatherError::Truncated)?;
+                let ring = mesh.uniform_ring(p, 3).ok_or(GatherError::NotCovered)?;
+                let mut part = Part::around("pole", ring.len(), p);
+                part.put("centre", 0, p);
+                ring.iter().enumerate().for_each(|(j, &a)| part.put("ring", j, a));
+                Ok(Gathered::one(part))
+            }
+            // the pole's ring from the mesh's cached fan: every spoke point asks
+            // for it, and copying the fan each time would be quadratic in n
+            Origin::Edge(x, y) => match mesh.uniform_ring(x, 3) {
+                // x is a pole: the spoke rule, ring turned so that a_0 = y
+                Some(ring) => {
+                    let n = ring.len();
+                    let i = ring.iter().position(|&a| a == y).ok_or(GatherError::NotCovered)?;
+                    let mut part = Part::around("spoke", n, x);
+                    part.put("pole", 0, x);
+                    (0..n).for_each(|j| part.put("ring", j, ring[(i + j) % n]));
+                    Ok(Gathered::one(part))
+                }
+                None => {
+                    let mut part = Part::new("radial", 2);
+                    part.put("near", 0, x);
+                    part.put("far", 0, y);
+                    Ok(Gathered::one(part))
+                }
+            },
+            Origin::Face(_) | Origin::Corner { .. } => unsupported(Host::Polar, origin),
+        }
+    }
+    fn steps_per_analysis(&self) -> usize {
+        1
+    }
+    fn growth_per_level(&self) -> usize {
+        2
+    }
+    fn size_bound(&self, mesh: &PolyMesh) -> usize {
+        let corners: usize = mesh.faces().iter().map(|f| f.len()).sum();
+        let (v, e, f) = (mesh.num_vertices(), mesh.edges().len(), mesh.num_faces());
+        // every face shrinks to a copy (one new point per corner at most) and
+        // every edge gets a joining quad
+        (f + e).max(corners + v)
+    }
+    fn mesh_requirement(&self) -> &'static str {
+        "a closed polar net (poles with triangle fans, rings of quads)"
+    }
+    fn regular_spline(&self) -> RegularSpline {
+        RegularSpline::NoBoxSpline
+    }
+}
+
+const RULES: &[RuleSlots] = &[
+    rule(
+        "pole",
+        V,
+        Any,
+        &[fam("centre", ONE, "the pole p"), fam("ring", PER_J, "the pole's j-th neighbour")],
+        "the new pole (n spokes)",
+    ),
+    canonical(
+        "spoke",
+        E,
+        &[fam("pole", ONE, "the pole p"), fam("ring", PER_J, "a_j, the pole's neighbours, a_0 the spoke's end")],
+        false,
+        "the new vertex on spoke p-a_0",
+    ),
+    rule(
+        "radial",
+        E,
+        Fixed(2),
+        &[fam("near", ONE, "the near end x of radial edge x-y"), fam("far", ONE, "the far end y")],
+        "the new vertex on a radial edge near x (away from the pole)",
+    ),
+];
+
+#[cfg(test)]
+mod tests {
+    use super::super::host_tests::check_host;
+    use super::*;
+
+    /// A polar sphere: poles 0 and 1, `rings` rings of n vertices between
+    /// them, n triangles at each pole and rings − 1 rings of n quads.
+    fn polar_sphere(n: usize, rings: usize) -> PolyMesh {
+        let ring = |r: usize, s: usize| 2 + r * n + s % n;
+        let mut faces = Vec::new();
+        for s in 0..n {
+            faces.push(vec![0, ring(0, s), ring(0, s + 1)]);
+            faces.push(vec![1, ring(rings - 1, s + 1), ring(rings - 1, s)]);
+            for r in 0..rings - 1 {
+                faces.push(vec![ring(r, s), ring(r + 1, s), ring(r + 1, s + 1), ring(r, s + 1)]);
+            }
+        }
+        PolyMesh::new(2 + rings * n, faces).unwrap()
+    }
+
+    /// Every face shrinks to a copy and every circumferential edge (n per
+    /// ring) gets a quad: F' = F + rings·n = 2F − n. The ratio F'/F tends to
+    /// the stated growth 2 as the rings multiply (and never exceeds it).
+    #[test]
+    fn states_its_growth_bound_and_rules() {
+        let n = 5;
+        for rings in 2..6 {
+            let sphere = polar_sphere(n, rings);
+            let f = sphere.num_faces();
+            assert_eq!(f, (rings + 1) * n);
+            check_host(Host::Polar, &sphere, f + rings * n, false);
+            assert_eq!(PolarSplit.growth_per_level() * f - (f + rings * n), n);
+        }
+    }
 }

@@ -1,11 +1,15 @@
 //! Primal split: Catmull–Clark-like (quads around face points) and Loop-like
-//! (1 -> 4 triangles) refinement, and any mixture (4-3 subdivision).
+//! (1 -> 4 triangles) refinement, and any mixture (4-3 subdivision). The
+//! split, its counting rule and the edge gatherer shared by the three primal
+//! hosts (`primal_quad`, `primal_triangle`, `mixed_quad_triangle`), which
+//! state which triangle split they use.
 
 use crate::mesh::IdMap;
 
 use super::{ChartBuilder, Refined, TriangleSplit};
 use crate::error::Error;
-use crate::mesh::PolyMesh;
+use crate::mesh::{PolyMesh, VertexId};
+use crate::sdc::slots::{ev_part, sized, Gather, GatherError, Gathered, Part, Wants};
 use crate::sdc::Origin;
 
 pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, Error> {
@@ -97,4 +101,95 @@ pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, Error> {
         new_mesh.chart = cb.finish(1);
     }
     Ok(Refined { mesh: new_mesh, vertex_origins: origins, face_parents: parents })
+}
+
+/// The larger of the face and vertex counts after one primal split of `mesh`:
+/// a face with a face point becomes one quad per corner, a triangle without
+/// one 4 triangles; old vertices, one per edge, one per face point.
+pub(crate) fn size_bound(mesh: &PolyMesh, tri: TriangleSplit) -> usize {
+    let face_point = |len: usize| len >= 4 || tri == TriangleSplit::FacePointQuads;
+    let faces: usize = mesh.faces().iter().map(|fc| if face_point(fc.len()) { fc.len() } else { 4 }).sum();
+    let face_points = mesh.faces().iter().filter(|fc| face_point(fc.len())).count();
+    faces.max(mesh.num_vertices() + mesh.edges().len() + face_points)
+}
+
+/// Whether vertex v is extraordinary for a primal host: a closed fan of
+/// `size`-gons whose count is not the regular valence. (Vertices with open
+/// fans, such as the rim of a truncated neighbourhood, lie in the regular part.)
+fn extraordinary(mesh: &PolyMesh, v: VertexId, size: usize) -> bool {
+    let regular = if size == 4 { 4 } else { 6 };
+    // from the cached fan: every edge at v asks, so copying the fan would cost valence²
+    mesh.fan_corners(v).is_some_and(|fan| fan.len() != regular && fan.iter().all(|&(f, _)| mesh.face(f).len() == size))
+}
+
+/// The apex of the triangle on the other side of the triangle edge p -> q.
+fn across(mesh: &PolyMesh, p: VertexId, q: VertexId) -> Result<VertexId, GatherError> {
+    let (g, k) = mesh.half_edge(q, p).ok_or(GatherError::Truncated)?;
+    let c = mesh.face_from(g, k);
+    if c.len() != 3 {
+        return Err(GatherError::NotCovered);
+    }
+    Ok(c[2])
+}
+
+/// The edge rule of a primal host over `size`-gons (4: quads, 3: triangles),
+/// with the rule seen from an extraordinary end where the mask has one.
+pub(crate) fn primal_edge(mesh: &PolyMesh, a: VertexId, b: VertexId, size: usize, wants: &dyn Wants) -> Gather {
+    // the two faces in the mesh's storage, each with the index of the edge's
+    // first end (every edge point asks: no copies of the faces)
+    let (Some((fl, kl)), Some((fr, kr))) = (mesh.half_edge(a, b), mesh.half_edge(b, a)) else {
+        return Err(GatherError::Truncated);
+    };
+    let (l, r) = (mesh.face(fl), mesh.face(fr));
+    // corner t of a face counted from the edge's first end
+    let at = |face: &[VertexId], k: usize, t: usize| face[(k + t) % face.len()];
+    // a quad mask that weighs the two faces' corners takes any polygons
+    let polygons = size == 4 && wants.family("edge", "face-corner");
+    if !polygons {
+        sized([l, r], size)?;
+    }
+    // (a quad mask always weighs `side`; a polygon mask may not)
+    let sides = !polygons || wants.family("edge", "side");
+    let mut p = Part::new("edge", if size == 4 { 4 } else { 6 });
+    if polygons {
+        p.slots.reserve(6 + l.len() + r.len());
+    }
+    p.put("ends", 0, a);
+    p.put("ends", 1, b);
+    if size == 4 {
+        for (i, (face, k)) in [(l, kl), (r, kr)].into_iter().enumerate() {
+            // side slots 0, 1 on the left quad, 2, 3 on the right one
+            if sides && face.len() == 4 {
+                p.put("side", 2 * i, at(face, k, 2));
+                p.put("side", 2 * i + 1, at(face, k, 3));
+            }
+            if polygons {
+                p.put_face_corners(i, face, k);
+            }
+        }
+    } else {
+        let (c, d) = (at(l, kl, 2), at(r, kr, 2));
+        p.put("opposite", 0, c);
+        p.put("opposite", 1, d);
+        if wants.family("edge", "wing") {
+            // left (a, b, c), right (b, a, d): across b-c, c-a, a-d, d-b
+            let wings = [across(mesh, b, c)?, across(mesh, c, a)?, across(mesh, a, d)?, across(mesh, d, b)?];
+            wings.iter().enumerate().for_each(|(j, &v)| p.put("wing", j, v));
+        }
+    }
+    const EV: &str = "edge-extraordinary";
+    if !wants.rule(EV) {
+        return Ok(Gathered::one(p));
+    }
+    let parts = match (extraordinary(mesh, a, size), extraordinary(mesh, b, size)) {
+        (false, false) => return Ok(Gathered::one(p)),
+        (true, false) => vec![ev_part(EV, mesh, a, b, Some(size))?],
+        (false, true) => vec![ev_part(EV, mesh, b, a, Some(size))?],
+        // both ends extraordinary: the mean of the two ends' rules (Zorin's
+        // convention for the modified butterfly, and our choice here)
+        (true, true) => {
+            vec![ev_part(EV, mesh, a, b, Some(size))?.scaled(1, 2), ev_part(EV, mesh, b, a, Some(size))?.scaled(1, 2)]
+        }
+    };
+    Ok(Gathered::replacing(parts, p))
 }

@@ -10,10 +10,27 @@
 //! next step the lattice is the original one scaled by 1/3 with no rotation,
 //! and coordinates return to its own units (scale 1: vertex c -> c, face vertex
 //! -> (a + b + c)/3), so vertices two steps apart match by coordinates.
+//!
+//! The host unit (`Host::Sqrt3`, scheme files `topology = "sqrt3"`): the
+//! vertex rule (centre and ring) and the face rule summed over the
+//! triangle's three corners and their rings. Two steps make one analysis
+//! step (the lattice turns back); no box spline: a triangle ring is bounded
+//! by the difference scheme (`certify::difference`).
 
 use super::{ChartBuilder, Refined};
+use super::{RefinementHost, RegularSpline};
 use crate::error::Error;
+use crate::mesh::FaceId;
 use crate::mesh::PolyMesh;
+use crate::mesh::SectorKind;
+use crate::sdc::slots::Host;
+use crate::sdc::slots::OriginKind::{Face as F, Vertex as V};
+use crate::sdc::slots::Valence::Any;
+use crate::sdc::slots::{
+    fam, rule, unsupported, vertex_fan_part, Arity, Gather, GatherError, Gathered, HostSpec, Part, RuleSlots, Wants,
+    TRI_VERTEX,
+};
+use crate::sdc::CentreKind;
 use crate::sdc::Origin;
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
@@ -79,4 +96,94 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
         new_mesh.chart = cb.finish(new_scale);
     }
     Ok(Refined { mesh: new_mesh, vertex_origins: origins, face_parents: parents })
+}
+
+/// The host unit: everything the engine asks of this host.
+pub struct Sqrt3Split;
+
+static SPEC: HostSpec = HostSpec {
+    host: Host::Sqrt3,
+    name: "sqrt3",
+    sector: SectorKind::Tri,
+    centre: CentreKind::Vertex,
+    face_control: false,
+    rules: RULES,
+};
+
+impl RefinementHost for Sqrt3Split {
+    fn spec(&self) -> &'static HostSpec {
+        &SPEC
+    }
+    fn refine(&self, mesh: &PolyMesh) -> Result<Refined, Error> {
+        refine(mesh)
+    }
+    fn gather(&self, mesh: &PolyMesh, origin: Origin, _wants: &dyn Wants) -> Gather {
+        match origin {
+            Origin::Vertex(v) => vertex_fan_part("vertex", mesh, v, Some(3)).map(Gathered::one),
+            Origin::Face(f) => sqrt3_face(mesh, f).map(Gathered::one),
+            Origin::Edge(..) | Origin::Corner { .. } => unsupported(Host::Sqrt3, origin),
+        }
+    }
+    fn steps_per_analysis(&self) -> usize {
+        2
+    }
+    fn growth_per_level(&self) -> usize {
+        3
+    }
+    fn size_bound(&self, mesh: &PolyMesh) -> usize {
+        let (v, e, f) = (mesh.num_vertices(), mesh.edges().len(), mesh.num_faces());
+        // old vertices plus one per face; two triangles per flipped edge
+        (2 * e).max(v + f)
+    }
+    fn mesh_requirement(&self) -> &'static str {
+        "a closed triangle mesh"
+    }
+    fn regular_spline(&self) -> RegularSpline {
+        RegularSpline::NoBoxSpline
+    }
+}
+
+const RULES: &[RuleSlots] = &[
+    rule("vertex", V, Any, TRI_VERTEX, "the new position of old vertex v (valence n)"),
+    rule(
+        "face",
+        F,
+        Any,
+        &[
+            fam("corner", Arity::Fixed(3), "each corner P of the triangle; n is P's valence"),
+            fam("ring", Arity::PerJ(3), "2-ring: each neighbour of each corner P; n is P's valence"),
+        ],
+        "the new vertex in a triangle, summed over its three corners P",
+    ),
+];
+
+/// The triangle's corners P and their rings, each slot at P's valence.
+fn sqrt3_face(mesh: &PolyMesh, f: FaceId) -> Result<Part, GatherError> {
+    let face = mesh.face(f);
+    if face.len() != 3 {
+        return Err(GatherError::NotCovered);
+    }
+    let mut p = Part::new("face", 3);
+    for (k, &c) in face.iter().enumerate() {
+        // the ring from the mesh's cached fan: a corner of valence n is asked
+        // for by its n faces, so copying its whole fan each time would cost n²
+        mesh.fan_corners(c).ok_or(GatherError::Truncated)?;
+        let ring = mesh.uniform_ring(c, 3).ok_or(GatherError::NotCovered)?;
+        let n = ring.len();
+        p.put_around("corner", k, n, c, c);
+        ring.iter().enumerate().for_each(|(j, &t)| p.put_around("ring", j, n, c, t));
+    }
+    Ok(p)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::host_tests::{check_host, triangle_torus};
+    use super::*;
+
+    /// Two triangles per flipped edge: 2E = 3F on a closed triangle mesh.
+    #[test]
+    fn states_its_growth_bound_and_rules() {
+        check_host(Host::Sqrt3, &triangle_torus(4, 5), 2 * 60, true);
+    }
 }

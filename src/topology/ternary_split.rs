@@ -8,12 +8,27 @@
 //! an old vertex p goes to 3p, the edge vertex near a on a–b to 2a + b, and
 //! the interior vertex near corner v0 of quad (v0, v1, v2, v3) to
 //! (4v0 + 2v1 + v2 + 2v3)/3 (the bilinear point at (1/3, 1/3), times 3).
+//!
+//! The host unit (`Host::Ternary`, scheme files `topology = "ternary"`): the
+//! vertex rule, the edge rule (the new vertex near a) and the interior rule
+//! (the new vertex near a corner). Regular part: the biquadratic B-spline
+//! with the ternary mask (ternary primal refinement of quads).
 
 use crate::mesh::IdMap;
 
 use super::{ChartBuilder, Refined};
+use super::{RefinementHost, RegularSpline};
 use crate::error::Error;
 use crate::mesh::PolyMesh;
+use crate::mesh::SectorKind;
+use crate::sdc::slots::Host;
+use crate::sdc::slots::OriginKind::{Corner as C, Edge as E, Vertex as V};
+use crate::sdc::slots::Valence::{Any, Fixed};
+use crate::sdc::slots::{
+    edge_faces, fam, quad_corner, rule, sized, unsupported, vertex_fan_part, Arity, Gather, GatherError, Gathered,
+    HostSpec, Part, RuleSlots, Wants, ONE, QUAD_VERTEX,
+};
+use crate::sdc::CentreKind;
 use crate::sdc::Origin;
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
@@ -88,4 +103,106 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
         new_mesh.chart = cb.finish(1);
     }
     Ok(Refined { mesh: new_mesh, vertex_origins: origins, face_parents: parents })
+}
+
+/// The host unit: everything the engine asks of this host.
+pub struct TernarySplit;
+
+static SPEC: HostSpec = HostSpec {
+    host: Host::Ternary,
+    name: "ternary",
+    sector: SectorKind::Quad,
+    centre: CentreKind::Vertex,
+    face_control: false,
+    rules: RULES,
+};
+
+impl RefinementHost for TernarySplit {
+    fn spec(&self) -> &'static HostSpec {
+        &SPEC
+    }
+    fn refine(&self, mesh: &PolyMesh) -> Result<Refined, Error> {
+        refine(mesh)
+    }
+    fn gather(&self, mesh: &PolyMesh, origin: Origin, _wants: &dyn Wants) -> Gather {
+        match origin {
+            Origin::Vertex(v) => vertex_fan_part("vertex", mesh, v, Some(4)).map(Gathered::one),
+            Origin::Edge(a, b) => {
+                let (l, r) = edge_faces(mesh, a, b)?;
+                sized([&l, &r], 4)?;
+                let mut p = Part::new("edge", 4);
+                p.put("near", 0, a);
+                p.put("far", 0, b);
+                p.put("near-side", 0, l[3]);
+                p.put("near-side", 1, r[2]);
+                p.put("far-side", 0, l[2]);
+                p.put("far-side", 1, r[3]);
+                Ok(Gathered::one(p))
+            }
+            Origin::Corner { face, corner } => {
+                let c = mesh.face_from(face, corner);
+                if c.len() != 4 {
+                    return Err(GatherError::NotCovered);
+                }
+                Ok(Gathered::one(quad_corner("corner", "near", &c)))
+            }
+            Origin::Face(_) => unsupported(Host::Ternary, origin),
+        }
+    }
+    fn steps_per_analysis(&self) -> usize {
+        1
+    }
+    fn growth_per_level(&self) -> usize {
+        9
+    }
+    fn size_bound(&self, mesh: &PolyMesh) -> usize {
+        let (v, e, f) = (mesh.num_vertices(), mesh.edges().len(), mesh.num_faces());
+        // 9 quads per quad; old vertices, 2 per edge, 4 per quad
+        (9 * f).max(v + 2 * e + 4 * f)
+    }
+    fn mesh_requirement(&self) -> &'static str {
+        "a closed quad mesh"
+    }
+    fn regular_spline(&self) -> RegularSpline {
+        RegularSpline::TernaryPrimal
+    }
+}
+
+const RULES: &[RuleSlots] = &[
+    rule("vertex", V, Any, QUAD_VERTEX, "the new position of old vertex v (valence n)"),
+    rule(
+        "edge",
+        E,
+        Fixed(4),
+        &[
+            fam("near", ONE, "the near end a of edge a-b"),
+            fam("far", ONE, "the far end b"),
+            fam("near-side", Arity::Fixed(2), "a's neighbours across the edge's two quads"),
+            fam("far-side", Arity::Fixed(2), "b's neighbours across the edge's two quads"),
+        ],
+        "the new vertex on edge a-b near a",
+    ),
+    rule(
+        "corner",
+        C,
+        Fixed(4),
+        &[
+            fam("near", ONE, "the quad's corner c_0"),
+            fam("side", Arity::Fixed(2), "the corners c_1 and c_3 next to it"),
+            fam("far", ONE, "the opposite corner c_2"),
+        ],
+        "the new interior vertex of a quad near its corner c_0",
+    ),
+];
+
+#[cfg(test)]
+mod tests {
+    use super::super::host_tests::{check_host, quad_torus};
+    use super::*;
+
+    /// Every quad becomes a 3 × 3 grid.
+    #[test]
+    fn states_its_growth_bound_and_rules() {
+        check_host(Host::Ternary, &quad_torus(4, 5), 9 * 20, true);
+    }
 }

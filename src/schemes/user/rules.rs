@@ -186,7 +186,7 @@ fn info_of(
     SchemeInfo {
         name,
         description,
-        topology: spec.topology,
+        topology: host,
         centre: spec.centre,
         sector: spec.sector,
         caps: Caps {
