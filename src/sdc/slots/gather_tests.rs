@@ -111,8 +111,8 @@ fn primal_quad_vertex_rule_gathers_the_one_ring_in_fan_order() {
         assert!(is_rotation(&edge, &e), "n = {n}: edge neighbours {edge:?}, counter-clockwise from any");
         // f_j is the corner opposite v in the quad [v, e_j, f_j, e_{j+1}]:
         // vertex 1 + n + j beside e_j = 1 + j
-        for j in 0..n {
-            assert_eq!(face[j], edge[j] + n, "n = {n}: f_{j} pairs with e_{j}");
+        for (j, (&f, &e)) in face.iter().zip(&edge).enumerate() {
+            assert_eq!(f, e + n, "n = {n}: f_{j} pairs with e_{j}");
         }
         assert!(p.slots.iter().all(|s| s.n == n && s.at == Some(0)), "every slot at the centre's valence");
         // over general polygons the fan faces' corners come too, each face
@@ -236,8 +236,8 @@ fn ternary_edge_rule_takes_the_side_vertices_next_to_each_end() {
                 assert!(cube_adjacent(x, b) && x != a && !cube_adjacent(x, a), "{a}->{b}: far side {x}");
             }
             // near side j and far side j lie on the same quad: adjacent
-            for j in 0..2 {
-                assert!(cube_adjacent(near[j], far[j]), "{a}->{b}: side {j}");
+            for (j, (&x, &y)) in near.iter().zip(&far).enumerate() {
+                assert!(cube_adjacent(x, y), "{a}->{b}: side {j}");
             }
         }
     }
