@@ -8,8 +8,8 @@
 //!   and the sine analogue, A_n = 1 + cos(2π/n) + cos(π/n) sqrt(2(9 + cos(2π/n)));
 //! - valence 4: the tensor product of the cubic B-spline's {1, 1/2, 1/4, 1/8, 1/8}.
 
+use crate::common;
 use approx::assert_abs_diff_eq;
-mod common;
 use common::*;
 use subdlab::neighbourhood::{NeighbourhoodKind, VertexKind};
 use subdlab::spectrum::stencils::{limit_stencil, tangent_stencils};

@@ -19,7 +19,7 @@
 //! by a few ulps (a route independent of the certificate's own Taylor
 //! enclosures of cos(2πk/n)).
 
-mod common;
+use crate::common;
 use common::subdlab;
 use subdlab::certify::matrix::Check;
 use subdlab::certify::{certify_spectrum, SpectrumCertificate, Verdict};

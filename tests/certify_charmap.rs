@@ -23,7 +23,7 @@
 //! - `schemes/loop-block2-dominant.toml` is built (its comment says how) so
 //!   that at valence 4 the subdominant 1/2 sits in block 2.
 
-mod common;
+use crate::common;
 use common::subdlab;
 use rayon::prelude::*;
 use subdlab::certify::charmap::RegularPart;

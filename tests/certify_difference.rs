@@ -20,7 +20,7 @@
 //!   second-difference scheme (that contraction proves the regular part C¹),
 //!   so the lattice bound must fail for it.
 
-mod common;
+use crate::common;
 use common::subdlab;
 use num_rational::BigRational;
 use subdlab::certify::charmap::RegularPart;
@@ -120,9 +120,9 @@ fn kobbelts_characteristic_map_is_proved_by_lemma_c9() {
 fn a_lemma_c9_proof_is_exported_with_its_lattice_data() {
     // the document carries what the checker re-derives lemma C9 from: the
     // regular mask, the windows and bases, and each face's window layout
-    let dir = std::env::temp_dir().join(format!("subdlab-c9-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let file = dir.join("sqrt3-5.json");
+    // a folder of its own: every test of the suite binary runs in this process
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("sqrt3-5.json");
     let out = subdlab(&["charmap", "sqrt3", "-n", "5", "--certify", "--certificate", file.to_str().unwrap()]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
@@ -136,5 +136,4 @@ fn a_lemma_c9_proof_is_exported_with_its_lattice_data() {
     for face in part["faces"].as_array().unwrap() {
         assert_eq!(face["window"].as_array().unwrap().len(), up);
     }
-    std::fs::remove_dir_all(&dir).ok();
 }

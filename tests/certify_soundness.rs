@@ -24,7 +24,7 @@
 //!   modulus 3/4 > λ1 among the analysis neighbourhood's outer points.
 //!   Certificates refuse the minimal set; on the analysis set DISPROVED.
 
-mod common;
+use crate::common;
 
 use subdlab::certify::{certify_analysis, certify_charmap, Verdict};
 use subdlab::charmap::{check_map, CharMapOptions};

@@ -1,7 +1,7 @@
 //! `subdlab charmap` and `subdlab plot` as a user runs them: JSON fields,
 //! figure files, one-line errors.
 
-mod common;
+use crate::common;
 use common::{fails, subdlab};
 
 #[test]

@@ -1,7 +1,7 @@
 //! The command line on the bi-2 schemes of Karčiauskas–Peters (pgs,
 //! polar-bi2, tps): listing, analysis commands, refinement, one-line errors.
 
-mod common;
+use crate::common;
 use common::{fails, subdlab};
 
 fn json(args: &[&str]) -> serde_json::Value {
@@ -53,9 +53,9 @@ fn spectrum_stencils_and_matrix_cover_the_bi2_schemes() {
 
 #[test]
 fn refine_runs_on_real_meshes_and_rejects_unsuitable_ones() {
-    let dir = std::env::temp_dir().join(format!("subdlab-bi2-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let out = |name: &str| dir.join(name).to_string_lossy().into_owned();
+    // a folder of its own: every test of the suite binary runs in this process
+    let dir = tempfile::tempdir().unwrap();
+    let out = |name: &str| dir.path().join(name).to_string_lossy().into_owned();
     let ok = |args: &[&str]| {
         let o = subdlab(args);
         assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
@@ -83,7 +83,6 @@ fn refine_runs_on_real_meshes_and_rejects_unsuitable_ones() {
     assert!(err.contains("quad mesh"), "{err}");
     let err = fails(&["refine", "meshes/cube.obj", "--scheme", "polar-bi2", "--levels", "1", "-o", &out("x.obj")]);
     assert!(err.contains("polar net"), "{err}");
-    std::fs::remove_dir_all(&dir).ok();
 }
 
 #[test]

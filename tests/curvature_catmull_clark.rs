@@ -21,7 +21,7 @@
 //! the largest of the closed forms above (other than λ), which fails if an
 //! outer eigenvalue were larger.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 

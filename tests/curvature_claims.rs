@@ -17,7 +17,6 @@
 //!   (m = 2, 4 at n = 6: two chains), and every weight is rational at n = 6,
 //!   so the exact nullities of S − I/4 and its square differ by two.
 
-mod common;
 use subdlab::claims::{evaluate, parse_file, Outcome, Verdict};
 
 fn run(body: &str) -> Outcome {

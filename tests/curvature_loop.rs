@@ -22,7 +22,7 @@
 //! for n = 3 blocks 1 and 2 both carry λ, and μ = max(λ², 1/8) = 1/8 since
 //! λ = 3/8 − 1/8 = 1/4, λ² = 1/16.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 

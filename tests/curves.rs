@@ -2,7 +2,7 @@
 //! derived by hand in the comments (symmetric/antisymmetric split of the
 //! local matrix), never copied from program output.
 
-mod common;
+use crate::common;
 #[allow(unused_imports)]
 use common::{fails, subdlab};
 

@@ -13,7 +13,7 @@
 //! enclosures' width (1e-18·cos(2π/n), irrational): the interval check would
 //! confirm the identity to overlap, the exact check refutes it.
 
-mod common;
+use crate::common;
 use common::{subdlab, Rng};
 use subdlab::certify::matrix::Check;
 use subdlab::certify::{certify_analysis, SpectrumCertificate, Verdict};

@@ -2,7 +2,7 @@
 //! the block spectra equals the spectrum of the full matrix, and the rotation
 //! permutation commutes with S.
 
-mod common;
+use crate::common;
 use common::*;
 use subdlab::neighbourhood::NeighbourhoodKind;
 use subdlab::spectrum::Method;
@@ -42,7 +42,9 @@ fn union_of_block_spectra_equals_full_spectrum_for_valences_3_to_12() {
 
 #[test]
 fn rotation_commutes_with_s_and_has_order_n() {
-    for scheme in ["catmull-clark", "loop", "doo-sabin"] {
+    // every built-in mesh scheme's rules commute with the rotation of its
+    // regular configuration
+    for scheme in mesh_scheme_names() {
         for n in 3..=9 {
             let a = run(scheme, n, NeighbourhoodKind::Analysis, None, false);
             let s = a.matrix.to_dense_f64();
@@ -65,8 +67,8 @@ fn rotation_commutes_with_s_and_has_order_n() {
 
 #[test]
 fn rows_of_s_sum_to_one() {
-    // affine invariance of every rule
-    for scheme in ["catmull-clark", "loop", "doo-sabin"] {
+    // affine invariance of every rule of every built-in mesh scheme
+    for scheme in mesh_scheme_names() {
         for n in [3, 5, 8, 13] {
             let a = run(scheme, n, NeighbourhoodKind::Analysis, None, false);
             for row in &a.matrix.rows {
@@ -78,13 +80,23 @@ fn rows_of_s_sum_to_one() {
 }
 
 /// The same agreement above valence 12, at primes and composites (13, 17,
-/// 24, 31), for the schemes of every refinement host with one symmetric
-/// configuration. Defective clusters (Doo–Sabin's 1/4, non-box's repeated
-/// eigenvalues) split by about √eps on the whole-matrix path, so the match
-/// tolerance is 1e-6 here.
+/// 24, 31), for one scheme of every refinement host (the registry's first
+/// mesh scheme on each). Defective clusters (Doo–Sabin's 1/4, non-box's
+/// repeated eigenvalues) split by about √eps on the whole-matrix path, so the
+/// match tolerance is 1e-6 here.
 #[test]
 fn union_of_block_spectra_equals_full_spectrum_above_valence_12() {
-    for scheme in ["catmull-clark", "loop", "doo-sabin", "non-box", "sqrt3", "polar-bi2", "tps"] {
+    let mut hosts = Vec::new();
+    let one_per_host: Vec<&str> = mesh_scheme_names()
+        .into_iter()
+        .filter(|name| {
+            let topology = common::scheme(name).topology();
+            let new = !hosts.contains(&topology);
+            hosts.push(topology);
+            new
+        })
+        .collect();
+    for scheme in one_per_host {
         for n in [13, 17, 24, 31] {
             let dft = run(scheme, n, NeighbourhoodKind::Analysis, Some(Method::Dft), false);
             let full = run(scheme, n, NeighbourhoodKind::Analysis, Some(Method::Full), false);

@@ -6,8 +6,8 @@
 //! - valence 4 is the biquadratic tensor product of Chaikin's local spectrum
 //!   {1, 1/2, 1/4, 1/4}.
 
+use crate::common;
 use approx::assert_abs_diff_eq;
-mod common;
 use common::*;
 use subdlab::neighbourhood::NeighbourhoodKind;
 use subdlab::spectrum::stencils::{limit_stencil, tangent_stencils};

@@ -2,7 +2,7 @@
 //! with the exact ones (characteristic polynomial over Q, exact ranks) wherever
 //! S is rational; both paths are independent computations.
 
-mod common;
+use crate::common;
 use common::*;
 use subdlab::neighbourhood::NeighbourhoodKind;
 use subdlab::spectrum::Method;

@@ -3,7 +3,7 @@
 //! embedded font, PNG signature and size), and an unknown extension refused;
 //! hostile titles and run-to-run determinism.
 
-mod common;
+use crate::common;
 use common::{fails, subdlab};
 
 /// (width, height) from the `<svg width=".." height="..">` header.

@@ -7,7 +7,7 @@
 //! matrix M uses α as 1 − centre weight. The scheme stores `centre_weight` (c);
 //! below, `alpha_m = 1 − c` wherever a statement is about M.
 
-mod common;
+use crate::common;
 use common::*;
 
 use std::collections::HashMap;

@@ -3,7 +3,7 @@
 //! CI user's path (exit statuses, ERROR verdicts, --check-expected, JUnit,
 //! versions, the example claim files). Big inputs are generated here.
 
-mod common;
+use crate::common;
 use common::{fails, subdlab};
 use std::path::Path;
 

@@ -42,7 +42,7 @@
 //! d ∈ {1, 2} (then cos > −1 for n ≥ 5); `kronecker(n − 2m)` keeps the division
 //! finite at m = n/2, where κ is multiplied by 1 + ω^m = 0 anyway.
 
-mod common;
+use crate::common;
 
 use subdlab::neighbourhood::{Configuration, NeighbourhoodKind};
 use subdlab::schemes;

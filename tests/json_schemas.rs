@@ -8,7 +8,7 @@
 //! object; a trailing `?` allows null (fields the README says may be null:
 //! numbers of a map that does not exist, an exact value not proven, ...).
 
-mod common;
+use crate::common;
 use common::subdlab;
 use serde_json::Value;
 

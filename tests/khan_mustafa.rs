@@ -19,7 +19,7 @@
 //! - cubic variant: vertex and face rules HOLD; each edge rule has one sign
 //!   wrong (sums to 9/8); the label p_{2i+2,j+1} is p_{2i,2j+1}.
 
-mod common;
+use crate::common;
 #[allow(unused_imports)]
 use common::{fails, subdlab};
 

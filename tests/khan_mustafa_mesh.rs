@@ -5,7 +5,7 @@
 //! with the masks; the mesh path's local matrix spectrum against the lattice
 //! engine's; the characteristic map of a scheme with linear precision.
 
-mod common;
+use crate::common;
 use common::{fails, subdlab};
 use subdlab::lattice::{self, LatticeScheme};
 use subdlab::mesh::PolyMesh;

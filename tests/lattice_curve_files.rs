@@ -5,7 +5,7 @@
 //! names the file, the line and the field, and the command line runs the files
 //! end to end.
 
-mod common;
+use crate::common;
 use common::{fails, subdlab};
 
 use std::path::{Path, PathBuf};

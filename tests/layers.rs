@@ -152,11 +152,12 @@ fn the_checker_sees_upward_imports() {
     assert_eq!(crate_paths("use crate::schemes::Scheme;"), vec!["schemes"]);
     assert_eq!(crate_paths("use crate::{cli, sdc::Origin};"), vec!["cli", "sdc"]);
     assert!(crate_paths("// see crate::schemes").is_empty());
-    let dir = std::env::temp_dir().join(format!("subdlab-layers-{}", std::process::id()));
-    std::fs::create_dir_all(dir.join("matrix")).unwrap();
-    std::fs::write(dir.join("matrix/local.rs"), "use crate::schemes::Scheme;\nuse crate::numeric::Weight;\n").unwrap();
-    let bad = violations(&dir);
-    std::fs::remove_dir_all(&dir).unwrap();
+    // a folder of its own: every test of the suite binary runs in this process
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::create_dir_all(dir.path().join("matrix")).unwrap();
+    std::fs::write(dir.path().join("matrix/local.rs"), "use crate::schemes::Scheme;\nuse crate::numeric::Weight;\n")
+        .unwrap();
+    let bad = violations(dir.path());
     assert_eq!(bad.len(), 1, "{bad:?}");
     assert!(bad[0].contains("matrix imports schemes"), "{bad:?}");
 }

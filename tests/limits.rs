@@ -4,7 +4,7 @@
 //! are asserted, never durations. Also the thread-count independence of the
 //! outputs.
 
-mod common;
+use crate::common;
 use common::*;
 
 fn stdout_of(args: &[&str]) -> String {

@@ -4,8 +4,8 @@
 //! - limit stencil: centre 1 − nχ, each neighbour χ = 1/(n + 3/(8β));
 //! - tangent stencils: cos(2πi/n), sin(2πi/n) on the one-ring.
 
+use crate::common;
 use approx::assert_abs_diff_eq;
-mod common;
 use common::*;
 use subdlab::neighbourhood::NeighbourhoodKind;
 use subdlab::spectrum::stencils::{limit_stencil, tangent_stencils};

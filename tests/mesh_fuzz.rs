@@ -4,7 +4,7 @@
 //! Sizes are capped before allocation (an oversized file is refused from its
 //! length alone).
 
-mod common;
+use crate::common;
 use common::Rng;
 use std::path::Path;
 use subdlab::mesh::obj::{parse_obj, read_obj_file, MAX_FILE_BYTES};

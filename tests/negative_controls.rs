@@ -43,7 +43,7 @@
 //!   typed by hand, tensor products of the cubic B-spline, the four-point
 //!   scheme with tension, the projections E and C, Huang's V-vertex rule).
 
-mod common;
+use crate::common;
 
 use subdlab::claims::{evaluate, parse_file, Outcome, Verdict};
 

@@ -8,7 +8,7 @@
 //! block m ≠ 0: 1/2 + (ω^m + ω^{−m})/8 = 1/2 + cos(2πm/k)/4. Block 0:
 //! [[1 − a, a], [1/4, 3/4]] with eigenvalues 1 and 3/4 − a.
 
-mod common;
+use crate::common;
 use common::*;
 use subdlab::neighbourhood::{Configuration, NeighbourhoodKind, VertexKind};
 use subdlab::schemes;

@@ -16,7 +16,7 @@
 //! The paper's 10n × 10n matrix uses a larger net (9 points per sector plus
 //! p replicated n times); its D_k of (5)-(6) add only zero roots to these.
 
-mod common;
+use crate::common;
 use common::*;
 use subdlab::mesh::obj::parse_obj;
 use subdlab::neighbourhood::{NeighbourhoodKind, VertexKind};

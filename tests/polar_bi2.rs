@@ -14,7 +14,7 @@
 //! 1/4 b̄, impossible; with ā = 0 the (p, ā) part forces p = 0. So only
 //! (0, 0, 1, 3) remains: 1/4 is a 2 × 2 Jordan block in block 0.
 
-mod common;
+use crate::common;
 use common::*;
 use subdlab::mesh::PolyMesh;
 use subdlab::neighbourhood::{Configuration, NeighbourhoodKind, VertexKind};

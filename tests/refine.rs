@@ -2,7 +2,7 @@
 //! positions from the schemes' published formulas (derived by hand below), and
 //! limit positions from the closed-form limit stencils.
 
-mod common;
+use crate::common;
 #[allow(unused_imports)]
 use common::{fails, subdlab};
 

@@ -2,7 +2,7 @@
 //! derivation independent of the claim machinery: hand-built matrices in
 //! exact rationals, closed-form counts, tensor products of univariate rules.
 
-mod common;
+use crate::common;
 use common::exact::{algebraic, q};
 
 use num_traits::{One, Zero};

@@ -7,7 +7,7 @@
 //! (`schemes/catmull-clark-folded-ring.toml`) and the general-n form of the
 //! identity claims.
 
-mod common;
+use crate::common;
 
 use std::collections::{BTreeMap, HashMap, HashSet};
 

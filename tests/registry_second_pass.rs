@@ -4,7 +4,7 @@
 //! the comments, tensor products of univariate rules, and (for the one
 //! floating-point refutation) a second method and a second neighbourhood.
 
-mod common;
+use crate::common;
 use common::exact::{algebraic, q, rank, shifted, Mat};
 
 use num_traits::{One, Zero};

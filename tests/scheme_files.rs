@@ -9,7 +9,7 @@
 //! circulant, the butterfly's stencil typed by hand), and negative controls
 //! show that a file with one wrong weight is told apart.
 
-mod common;
+use crate::common;
 use common::{assert_same_multiset, subdlab};
 use subdlab::curves::CurveDomain;
 use subdlab::lattice::LatticeDomain;

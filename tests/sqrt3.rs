@@ -10,7 +10,7 @@
 //! 2/3 − β = (2 + 2 cos(2π/n))/9 for Kobbelt's β = (4 − 2 cos(2π/n))/9, so the
 //! two-step block 0 has 1 and λ_1^2.
 
-mod common;
+use crate::common;
 use common::*;
 use subdlab::neighbourhood::{Configuration, NeighbourhoodKind};
 use subdlab::schemes;

@@ -3,7 +3,7 @@
 //! a_k > 1/4 − cos(2π/k)/4 derived in the paper (and in tests/non_box.rs)
 //! to within the grid step.
 
-mod common;
+use crate::common;
 use common::{fails, subdlab};
 
 fn json(args: &[&str]) -> serde_json::Value {

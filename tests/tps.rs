@@ -17,7 +17,7 @@
 //! q' = (1−α1−α2) q + α1 ā + α2 b̄, ā' = (14 q + 11 ā + 2 b̄)/27,
 //! b̄' = (4q + 4ā + b̄)/9: trace 1 − α1 − α2 + 14/27, eigenvalue 1.
 
-mod common;
+use crate::common;
 use common::*;
 use subdlab::mesh::obj::parse_obj;
 use subdlab::neighbourhood::{NeighbourhoodKind, VertexKind};

@@ -8,7 +8,7 @@
 //! `tests/user_schemes.rs` checks that `schemes/catmull-clark-edge-rule.toml`
 //! gives the built-in Catmull–Clark matrices, spectra and meshes.
 
-mod common;
+use crate::common;
 use common::{expanded, fails, subdlab};
 use subdlab::matrix::assemble;
 use subdlab::neighbourhood::{discover, Configuration, NeighbourhoodKind};

@@ -3,7 +3,7 @@
 //! exactly where the weights are rational; the parser must reject bad files
 //! with the line and the field, and survive random and mutated input.
 
-mod common;
+use crate::common;
 use common::{fails, subdlab, Rng};
 use subdlab::matrix::local::AssembleError;
 use subdlab::matrix::{assemble, LocalMatrix};

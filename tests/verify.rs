@@ -6,7 +6,7 @@
 //! own derivation), and
 //! users' own claim files drive the exit status.
 
-mod common;
+use crate::common;
 use common::{fails, subdlab};
 use subdlab::claims::{builtin_files, evaluate, Verdict};
 

@@ -6,7 +6,7 @@
 //! Every command that prints a certified verdict exits 0 (proved), 1 (not
 //! proved) or 2 (error), as `verify` does.
 
-mod common;
+use crate::common;
 use common::subdlab;
 use subdlab::claims::{builtin_files, evaluate, parse_file, Outcome, Verdict};
 

@@ -909,3 +909,6 @@ fn prune_around(mesh: &PolyMesh, region_faces: &[bool], margin: usize, period: u
     let (pruned, old) = mesh.restrict(&kept)?;
     Ok(Some((pruned, old, region)))
 }
+
+#[cfg(test)]
+mod tests;

@@ -555,3 +555,6 @@ pub fn classify(mesh: &PolyMesh, v: usize) -> Option<(Vec<Vec<usize>>, NodeType)
     };
     Some((fan, t))
 }
+
+#[cfg(test)]
+mod gather_tests;

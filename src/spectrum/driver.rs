@@ -201,3 +201,6 @@ pub fn solve(p: Problem) -> Result<Solved, Error> {
     };
     Ok(Solved { matrix, exact_matrix, spectrum })
 }
+
+#[cfg(test)]
+mod tests;

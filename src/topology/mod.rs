@@ -113,3 +113,6 @@ impl<'a> ChartBuilder<'a> {
         old_face_sector.unwrap_or(self.old.vertex_coords[corner_vertex].sector)
     }
 }
+
+#[cfg(test)]
+mod tests;

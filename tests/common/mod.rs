@@ -11,6 +11,12 @@ pub fn scheme(name: &str) -> Box<dyn Scheme> {
     schemes::build(name, &[]).unwrap()
 }
 
+/// Every built-in mesh scheme, from the scheme registry (so a new scheme is
+/// covered by the cross-scheme tests without editing a list).
+pub fn mesh_scheme_names() -> Vec<&'static str> {
+    schemes::registry::names_of(schemes::registry::Family::Mesh)
+}
+
 pub fn run(name: &str, n: usize, kind: NeighbourhoodKind, method: Option<Method>, exact: bool) -> Analysis {
     let s = scheme(name);
     let config = Configuration::regular(s.as_ref(), n).unwrap();

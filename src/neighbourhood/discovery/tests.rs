@@ -1,0 +1,197 @@
+//! Unit tests of neighbourhood discovery against the ring sizes known in
+//! closed form. Discovery only follows which old vertices a new one depends
+//! on, so the test schemes here have the stencil supports of Catmull–Clark,
+//! Loop and Doo–Sabin with uniform weights (1/size of each stencil; this
+//! layer may not import the scheme catalogue).
+//!
+//! Counting on the regular lattice around the centre (ring k+1: the corners
+//! of faces touching ring k):
+//! * Catmull–Clark, valence n: a quad sector of the 1-ring holds e_j and f_j,
+//!   so ring ≤ 1 is 2n + 1 points (the minimal set: the vertex and edge rules
+//!   reach exactly that far). The surface ring over the faces at the centre
+//!   depends on ring ≤ 2: per sector the 2 × 2 block of quads has 3 × 3
+//!   vertices, of which the centre is shared by all and the 2 on one spoke by
+//!   the next sector, leaving 6: 6n + 1.
+//! * Loop, valence n: ring ≤ 1 is n + 1; ring 2 adds per sector the spoke
+//!   point at distance 2 and the one between two spokes: 3n + 1.
+//! * Doo–Sabin, an n-gon: its n corners (the corner rule stays inside a
+//!   face); ring 1 adds per corner the two outer corners of the edge quad and
+//!   the far corner of the vertex quad: 4n.
+//!
+//! Besides the counts, each set is compared with the rings computed here
+//! from the patch itself.
+
+use super::discover;
+use crate::mesh::{PolyMesh, SectorKind};
+use crate::neighbourhood::configuration::Configuration;
+use crate::neighbourhood::NeighbourhoodKind;
+use crate::numeric::{Inexact, Weight};
+use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
+use crate::sdc::{Caps, CentreKind, Origin, Params, RuleResult, Rules, Scheme, SchemeInfo, Topology, TriangleSplit};
+
+/// A scheme with the given host's mandatory slots, each weighed 1/(number of
+/// slots of its rule): the stencil supports of the scheme the host is named
+/// after, affine.
+struct Support {
+    info: SchemeInfo,
+    host: Host,
+    params: Params,
+}
+
+impl Support {
+    fn new(name: &'static str, host: Host, topology: Topology, centre: CentreKind, sector: SectorKind) -> Self {
+        let info =
+            SchemeInfo { name, description: "test: uniform weights", topology, centre, sector, caps: Caps::NONE };
+        Support { info, host, params: Params::default() }
+    }
+    fn catmull_clark() -> Self {
+        let t = Topology::PrimalSplit(TriangleSplit::FacePointQuads);
+        Support::new("support-cc", Host::PrimalQuad, t, CentreKind::Vertex, SectorKind::Quad)
+    }
+    fn loop_() -> Self {
+        let t = Topology::PrimalSplit(TriangleSplit::FourTriangles);
+        Support::new("support-loop", Host::PrimalTriangle, t, CentreKind::Vertex, SectorKind::Tri)
+    }
+    fn doo_sabin() -> Self {
+        Support::new("support-ds", Host::Dual, Topology::Dual, CentreKind::Face, SectorKind::Quad)
+    }
+    /// Slots of `rule` at valence (or face size) n, as the host gathers them
+    /// without optional families.
+    fn slots(&self, rule: &str, n: usize) -> usize {
+        match (self.host, rule) {
+            (Host::PrimalQuad, "vertex") => 2 * n + 1,
+            (Host::PrimalQuad, "edge") => 6,
+            (Host::PrimalQuad, "face") => n,
+            (Host::PrimalTriangle, "vertex") => n + 1,
+            (Host::PrimalTriangle, "edge") => 4,
+            (Host::Dual, "corner") => n,
+            (h, r) => panic!("{h:?} has no rule {r} here"),
+        }
+    }
+}
+
+impl Wants for Support {
+    fn rule(&self, _: &str) -> bool {
+        false
+    }
+    fn family(&self, _: &str, _: &str) -> bool {
+        false
+    }
+}
+
+impl<W: Weight> Mask<W> for Support {
+    fn weight(&self, _: &PolyMesh, rule: &'static str, slot: &Slot) -> Result<W, Inexact> {
+        Ok(W::ratio(1, self.slots(rule, slot.n) as i64))
+    }
+}
+
+impl<W: Weight> Rules<W> for Support {
+    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+        weigh(self.host, mesh, origin, self, &W::one())
+    }
+}
+
+impl Scheme for Support {
+    fn info(&self) -> &SchemeInfo {
+        &self.info
+    }
+    fn params(&self) -> &Params {
+        &self.params
+    }
+}
+
+/// Ring of every vertex of `mesh` from `centre` (ring k+1: the unvisited
+/// corners of faces touching ring k); usize::MAX where unreached.
+fn rings_from(mesh: &PolyMesh, centre: &[usize]) -> Vec<usize> {
+    let mut ring = vec![usize::MAX; mesh.num_vertices()];
+    centre.iter().for_each(|&v| ring[v] = 0);
+    for k in 0.. {
+        let mut grew = false;
+        for face in mesh.faces() {
+            if face.iter().any(|&v| ring[v] == k) {
+                for &u in face {
+                    if ring[u] == usize::MAX {
+                        ring[u] = k + 1;
+                        grew = true;
+                    }
+                }
+            }
+        }
+        if !grew {
+            break;
+        }
+    }
+    ring
+}
+
+fn within(ring: &[usize], r: usize) -> Vec<usize> {
+    (0..ring.len()).filter(|&v| ring[v] <= r).collect()
+}
+
+fn sorted(set: &[usize]) -> Vec<usize> {
+    let mut s = set.to_vec();
+    s.sort();
+    s
+}
+
+/// The only vertex of the patch with a closed fan of n faces (n irregular).
+fn centre_vertex(mesh: &PolyMesh, n: usize) -> usize {
+    let found: Vec<usize> = (0..mesh.num_vertices()).filter(|&v| mesh.valence(v) == Some(n)).collect();
+    assert_eq!(found.len(), 1, "one vertex of valence {n}: {found:?}");
+    found[0]
+}
+
+/// Discovers both sets and checks them against rings ≤ `minimal_rings` and ≤
+/// `analysis_rings` of `centre` and the closed-form sizes.
+fn check(
+    scheme: &Support,
+    n: usize,
+    centre: impl Fn(&PolyMesh) -> Vec<usize>,
+    sizes: (usize, usize),
+    rings: (usize, usize),
+) {
+    let config = Configuration::regular(scheme, n).unwrap();
+    let d = discover(scheme, &config).unwrap();
+    let name = scheme.info.name;
+    assert_eq!(d.set(NeighbourhoodKind::Minimal).len(), sizes.0, "{name}, n = {n}: minimal set");
+    assert_eq!(d.set(NeighbourhoodKind::Analysis).len(), sizes.1, "{name}, n = {n}: analysis neighbourhood");
+    let ring = rings_from(&d.patch, &centre(&d.patch));
+    assert_eq!(
+        sorted(d.set(NeighbourhoodKind::Minimal)),
+        within(&ring, rings.0),
+        "{name}, n = {n}: minimal = ring ≤ {}",
+        rings.0
+    );
+    assert_eq!(
+        sorted(d.set(NeighbourhoodKind::Analysis)),
+        within(&ring, rings.1),
+        "{name}, n = {n}: analysis = ring ≤ {}",
+        rings.1
+    );
+}
+
+#[test]
+fn catmull_clark_supports_give_2n_plus_1_and_6n_plus_1() {
+    for n in [3, 5, 6, 8] {
+        check(&Support::catmull_clark(), n, |m| vec![centre_vertex(m, n)], (2 * n + 1, 6 * n + 1), (1, 2));
+    }
+}
+
+#[test]
+fn loop_supports_give_n_plus_1_and_3n_plus_1() {
+    for n in [3, 4, 5, 7] {
+        check(&Support::loop_(), n, |m| vec![centre_vertex(m, n)], (n + 1, 3 * n + 1), (1, 2));
+    }
+}
+
+#[test]
+fn doo_sabin_supports_give_n_and_4n() {
+    for n in [3, 5, 6] {
+        let central_face = |m: &PolyMesh| {
+            let faces: Vec<&Vec<usize>> = m.faces().iter().filter(|f| f.len() == n).collect();
+            assert_eq!(faces.len(), 1, "one {n}-gon");
+            faces[0].clone()
+        };
+        check(&Support::doo_sabin(), n, central_face, (n, 4 * n), (0, 1));
+    }
+}
