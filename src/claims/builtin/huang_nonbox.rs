@@ -13,7 +13,7 @@ use crate::numeric::exact::{q, QMatrix};
 use crate::numeric::Rational;
 use crate::refine::step_selected;
 use crate::schemes;
-use crate::spectrum::{analyse, Options};
+use crate::spectrum::{analyse_shared, Options};
 
 fn has_eigenvalue(m: &[[Rational; 2]; 2], lambda: &Rational) -> bool {
     let mut a = QMatrix::zeros(2);
@@ -99,7 +99,7 @@ pub fn nonbox_vector_mask(data: &toml::Value) -> Result<Finding, Error> {
 pub fn nonbox_negative_eigenvalues() -> Result<Finding, Error> {
     let scheme = schemes::build("non-box", &[("a".into(), "9/10".into())])?;
     let config = Configuration::regular(scheme.as_ref(), 5)?;
-    let s = analyse(scheme.as_ref(), &config, &Options { exact: false, ..Options::default() })?.spectrum;
+    let s = analyse_shared(scheme.as_ref(), &config, &Options { exact: false, ..Options::default() })?.spectrum.clone();
     let neg = s.eigenvalues.iter().filter(|e| e.is_real() && e.re < -1e-9).map(|e| e.display()).collect::<Vec<_>>();
     let dominant = s.eigenvalues[0].algebraic_multiplicity == 1
         && (s.eigenvalues[0].re - 1.0).abs() < 1e-9
@@ -147,7 +147,7 @@ pub fn matrix_nonnegative(data: &toml::Value) -> Result<Finding, Error> {
         let scheme = schemes::resolve(name, &p)?;
         for &n in &valences {
             let config = Configuration::regular(scheme.as_ref(), n as usize)?;
-            let a = analyse(scheme.as_ref(), &config, &Options { exact: false, ..Options::default() })?;
+            let a = analyse_shared(scheme.as_ref(), &config, &Options { exact: false, ..Options::default() })?;
             checked += 1;
             for (i, row) in a.matrix.to_dense_f64().iter().enumerate() {
                 for (j, w) in row.iter().enumerate() {

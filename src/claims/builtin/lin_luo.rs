@@ -13,7 +13,7 @@ use crate::neighbourhood::Configuration;
 use crate::numeric::exact::q;
 use crate::numeric::Rational;
 use crate::schemes;
-use crate::spectrum::{analyse, fmt_f, Options};
+use crate::spectrum::{analyse_shared, fmt_f, Options};
 
 /// Section 6: for C ∈ [0, 2], n > 3: λ0 = 1, λ1 = λ2 > λ3 = λ4; n = 3: λ0 = 1, λ1 = λ2 > λ3.
 /// Read generously: λ1 = λ2 real (Reif's condition, which the paper cites),
@@ -41,7 +41,7 @@ pub fn linluo_section6(data: Option<&toml::Value>) -> Result<Finding, Error> {
             let mut lead = Vec::new();
             for method in [crate::spectrum::Method::Dft, crate::spectrum::Method::Full] {
                 let opts = Options { exact: false, method: Some(method), ..Options::default() };
-                let sp = analyse(s.as_ref(), &config, &opts)?.spectrum;
+                let sp = analyse_shared(s.as_ref(), &config, &opts)?.spectrum.clone();
                 let l: Vec<faer::c64> = sp
                     .eigenvalues
                     .iter()

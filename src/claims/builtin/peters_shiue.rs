@@ -14,7 +14,7 @@ use crate::numeric::exact::q;
 use crate::numeric::Rational;
 use crate::refine::mesh::CompositeRows;
 use crate::schemes;
-use crate::spectrum::{analyse, fmt_f, Options};
+use crate::spectrum::{analyse_shared, fmt_f, Options};
 
 // ---------------------------------------------------------------- Peters–Shiue: M, E, C and the convex hull
 
@@ -180,7 +180,7 @@ pub fn fourthree_convex_hull(data: &toml::Value) -> Result<Finding, Error> {
     // regular limit stencils: weights of the centre, its edge neighbours and (quads) its diagonal neighbours
     let regular = |faces: &str| -> Result<(f64, f64, f64), Error> {
         let config = Configuration::with_faces(scheme.as_ref(), faces.len(), faces)?;
-        let a = analyse(scheme.as_ref(), &config, &Options { exact: false, ..Options::default() })?;
+        let a = analyse_shared(scheme.as_ref(), &config, &Options { exact: false, ..Options::default() })?;
         let l = limit_stencil(&a.spectrum)?;
         let (mut c, mut e, mut d) = (None::<f64>, None::<f64>, None::<f64>);
         for (w, lab) in l.iter().zip(&a.spectrum.labels) {

@@ -75,7 +75,7 @@ fn certified_map(
         let (scheme, config) = subject_config(subject, n)?;
         let options =
             crate::spectrum::Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
-        let analysis = crate::spectrum::analyse(scheme.as_ref(), &config, &options)?;
+        let analysis = crate::spectrum::analyse_shared(scheme.as_ref(), &config, &options)?;
         let most = levels.unwrap_or(crate::certify::charmap::DEFAULT_MAX_LEVELS);
         let c = crate::certify::certify_charmap(scheme.as_ref(), &analysis, most)?;
         if let Some(path) = names.path(subject, n) {

@@ -23,7 +23,7 @@ use crate::curvature::{curvature_of_analysis, Curvature as SecondOrder, Curvatur
 use crate::error::Error;
 use crate::neighbourhood::NeighbourhoodKind;
 use crate::numeric::Rational;
-use crate::spectrum::{analyse, fmt_f, Analysis, Options};
+use crate::spectrum::{analyse_shared, fmt_f, Options};
 
 /// `class = "bounded"` or `class = ["zero", "bounded"]` (any of them).
 #[derive(Clone, Debug, Deserialize)]
@@ -106,13 +106,13 @@ fn compute(subject: &Subject, n: usize, levels: usize) -> Result<Computed, Error
     let (scheme, config) = subject_config(subject, n)?;
     let opts = CurvatureOptions { levels, ..CurvatureOptions::default() };
     let options = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
-    let mut analysis: Analysis = analyse(scheme.as_ref(), &config, &options)?;
+    let mut analysis = analyse_shared(scheme.as_ref(), &config, &options)?;
     let mut c = curvature_of_analysis(scheme.as_ref(), &analysis, &opts)?;
     let readable = |x: f64| crate::numeric::recognise::recognise(x).is_some();
     let rational = analysis.spectrum.eigenvalues.get(1).is_some_and(|e| e.recognised.is_some())
         && c.mu.as_ref().is_some_and(|m| m.im == 0.0 && readable(m.re));
     if rational {
-        analysis = analyse(scheme.as_ref(), &config, &Options { exact: true, ..options })?;
+        analysis = analyse_shared(scheme.as_ref(), &config, &Options { exact: true, ..options })?;
         c = curvature_of_analysis(scheme.as_ref(), &analysis, &opts)?;
     }
     let at_lambda2 = c.mu_over_lambda_squared.is_some_and(|r| (r - 1.0).abs() <= EIG_TOL);

@@ -60,7 +60,7 @@ fn certified_c1(subject: &Subject, expect: &bool, names: CertificateNames) -> Re
     over_independent_valences(subject, |subject, n| {
         let (scheme, config) = subject_config(subject, n)?;
         let options = crate::spectrum::Options { neighbourhood: kind_of(subject)?, method: None, exact: false };
-        let analysis = crate::spectrum::analyse(scheme.as_ref(), &config, &options)?;
+        let analysis = crate::spectrum::analyse_shared(scheme.as_ref(), &config, &options)?;
         let c = crate::certify::certify_analysis(scheme.as_ref(), &analysis)?;
         if let Some(path) = names.path(subject, n) {
             crate::certify::export::write_spectrum(&path, scheme.as_ref(), &analysis, &c)?;

@@ -17,7 +17,7 @@ use crate::lattice;
 use crate::neighbourhood::{Configuration, NeighbourhoodKind, VertexKind};
 use crate::schemes;
 use crate::schemes::registry::{self, Family};
-use crate::spectrum::{analyse, Options, Spectrum};
+use crate::spectrum::{analyse_shared, Options, Spectrum};
 
 #[derive(Default)]
 pub struct Cache {
@@ -114,7 +114,9 @@ fn compute(s: &Subject, n: usize) -> Result<Spectrum, Error> {
         return Ok(lattice::analysis::analyse(scheme.as_ref(), kind, false)?.spectrum);
     }
     let (scheme, config) = subject_config(s, n)?;
-    Ok(analyse(scheme.as_ref(), &config, &Options { neighbourhood: kind, method: None, exact: false })?.spectrum)
+    Ok(analyse_shared(scheme.as_ref(), &config, &Options { neighbourhood: kind, method: None, exact: false })?
+        .spectrum
+        .clone())
 }
 
 pub fn expanded(spec: &Spectrum) -> Vec<Complex64> {
