@@ -492,12 +492,18 @@ fn folder_cycles(src: &Path) -> BTreeMap<String, Vec<Vec<String>>> {
     out
 }
 
-/// No file of `src/claims` imports itself through a chain of others (the
-/// check kinds and the paper files import the shared helpers, which import
-/// none of them). The other folders' cycles are printed (run with
-/// `--nocapture`), not failed on.
+/// Folders of `src` whose files still import each other in a cycle (a
+/// `mod.rs` that uses a child which uses an item of the `mod.rs`). The list
+/// only shrinks: a folder not listed must have no cycle, and a listed
+/// folder that has none any more fails the test until it is taken off.
+const FOLDERS_WITH_CYCLES: &[&str] = &["cli", "neighbourhood", "numeric", "schemes", "sdc", "spectrum", "topology"];
+
+/// No file of a folder of `src` imports itself through a chain of others,
+/// except in the folders still listed in [`FOLDERS_WITH_CYCLES`] (whose
+/// cycles are printed with `--nocapture`). In `src/claims` the check kinds
+/// and the paper files import the shared helpers, which import none of them.
 #[test]
-fn no_import_cycle_among_the_files_of_claims() {
+fn no_import_cycle_among_the_files_of_a_folder() {
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let cycles = folder_cycles(&src);
     for (dir, list) in &cycles {
@@ -505,8 +511,17 @@ fn no_import_cycle_among_the_files_of_claims() {
             eprintln!("import cycle in src/{dir}: {}", c.join(" -> "));
         }
     }
-    let claims: Vec<String> = cycles.get("claims").into_iter().flatten().map(|c| c.join(" -> ")).collect();
-    assert!(claims.is_empty(), "import cycles among the files of src/claims:\n{}", claims.join("\n"));
+    let new: Vec<String> = cycles
+        .iter()
+        .filter(|(dir, _)| !FOLDERS_WITH_CYCLES.contains(&dir.as_str()))
+        .flat_map(|(dir, list)| list.iter().map(move |c| format!("src/{dir}: {}", c.join(" -> "))))
+        .collect();
+    assert!(new.is_empty(), "import cycles among the files of a folder:\n{}", new.join("\n"));
+    let gone: Vec<&&str> = FOLDERS_WITH_CYCLES.iter().filter(|d| !cycles.contains_key(**d)).collect();
+    assert!(
+        gone.is_empty(),
+        "these folders have no import cycle any more; take them off FOLDERS_WITH_CYCLES: {gone:?}"
+    );
 }
 
 /// Negative control: the cycle checker finds a cycle through a parent

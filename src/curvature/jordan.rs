@@ -25,7 +25,7 @@ use crate::error::Error;
 use faer::c64;
 use serde::Serialize;
 
-use super::RingSampler;
+use super::sampler::RingSampler;
 use crate::numeric::exact::QMatrix;
 use crate::numeric::Rational;
 use crate::sdc::Scheme;

@@ -20,8 +20,9 @@
 
 use crate::error::Error;
 use crate::mesh::{PolyMesh, SectorKind};
+use crate::sdc::centre::CentreKind;
 use crate::sdc::slots::{Gather, HostSpec, Wants};
-use crate::sdc::{CentreKind, Origin};
+use crate::sdc::stencil::Origin;
 
 /// Every refinement host, by name: the registry's list of identities. Adding
 /// a host adds one variant here and one line to the table in

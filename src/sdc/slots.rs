@@ -20,7 +20,8 @@
 
 use crate::mesh::{FaceId, PolyMesh, SectorKind, VertexId};
 use crate::numeric::{Inexact, Weight};
-use crate::sdc::{CentreKind, Origin, RuleResult, Stencil};
+use crate::sdc::centre::CentreKind;
+use crate::sdc::stencil::{Origin, RuleResult, Stencil};
 
 pub use super::host::{Host, Registry, HOSTS};
 

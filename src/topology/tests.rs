@@ -15,7 +15,7 @@ use std::collections::{BTreeMap, BTreeSet};
 
 use super::Topology;
 use crate::mesh::PolyMesh;
-use crate::sdc::{Origin, TriangleSplit};
+use crate::sdc::Origin;
 
 type P = [f64; 3];
 
@@ -177,8 +177,9 @@ fn primal_quad_split_of_the_cube() {
     // every old edge two halves, every k-gon k inner edges
     let (m, p) = cube();
     let (v, e, f, corners) = (8, 12, 6, 24);
-    for split in [TriangleSplit::FourTriangles, TriangleSplit::FacePointQuads] {
-        let r = check_step(Topology::PrimalSplit(split), &m, &p, (v + e + f, 2 * e + corners, corners), "cube");
+    // on quads the mixed host's split is Catmull–Clark's
+    for host in [Topology::PrimalQuad, Topology::MixedQuadTriangle] {
+        let r = check_step(host, &m, &p, (v + e + f, 2 * e + corners, corners), "cube");
         assert!(r.faces().iter().all(|q| q.len() == 4), "Catmull–Clark's split gives quads only");
     }
 }
@@ -189,17 +190,10 @@ fn primal_triangle_splits_of_the_tetrahedron() {
     let (v, e, f) = (4, 6, 4);
     // Loop's 1 -> 4: a vertex per old vertex and edge; 2 halves per old edge
     // and 3 inner edges per triangle
-    let r =
-        check_step(Topology::PrimalSplit(TriangleSplit::FourTriangles), &m, &p, (v + e, 2 * e + 3 * f, 4 * f), "loop");
+    let r = check_step(Topology::PrimalTriangle, &m, &p, (v + e, 2 * e + 3 * f, 4 * f), "loop");
     assert!(r.faces().iter().all(|t| t.len() == 3));
     // a face point and 3 quads per triangle (Catmull–Clark on triangles)
-    let r = check_step(
-        Topology::PrimalSplit(TriangleSplit::FacePointQuads),
-        &m,
-        &p,
-        (v + e + f, 2 * e + 3 * f, 3 * f),
-        "catmull-clark on triangles",
-    );
+    let r = check_step(Topology::PrimalQuad, &m, &p, (v + e + f, 2 * e + 3 * f, 3 * f), "catmull-clark on triangles");
     assert!(r.faces().iter().all(|q| q.len() == 4));
 }
 
@@ -235,10 +229,10 @@ fn ternary_split_of_the_cube() {
     // quad; 3 pieces per old edge and the grid's 12 inner edges per quad
     let (m, p) = cube();
     let (v, e, f) = (8, 12, 6);
-    check_step(Topology::TernarySplit, &m, &p, (v + 2 * e + 4 * f, 3 * e + 12 * f, 9 * f), "ternary");
+    check_step(Topology::Ternary, &m, &p, (v + 2 * e + 4 * f, 3 * e + 12 * f, 9 * f), "ternary");
     // a triangle is refused with a message (the host needs a quad mesh)
     let (t, _) = tetrahedron();
-    assert!(Topology::TernarySplit.refine(&t).is_err());
+    assert!(Topology::Ternary.refine(&t).is_err());
 }
 
 #[test]
@@ -247,12 +241,12 @@ fn fcv_split_of_the_cube_with_face_control_vertices() {
     // face centres and each new quad gets a new FCV of its own
     let (m, p) = with_fcvs(cube().0, cube().1);
     let (v, e, f, corners) = (8, 12, 6, 24);
-    let refined = Topology::FcvSplit.refine(&m).unwrap();
+    let refined = Topology::Fcv.refine(&m).unwrap();
     assert!(refined.mesh.has_face_point_on_every_face(), "every new quad carries an FCV");
     assert_eq!(refined.mesh.num_vertices(), v + e + f + corners, "surface vertices plus one NFCV per quad");
-    check_step(Topology::FcvSplit, &m, &p, (v + e + f, 2 * e + corners, corners), "non-box");
+    check_step(Topology::Fcv, &m, &p, (v + e + f, 2 * e + corners, corners), "non-box");
     // without FCVs the host refuses
-    assert!(Topology::FcvSplit.refine(&cube().0).is_err());
+    assert!(Topology::Fcv.refine(&cube().0).is_err());
 }
 
 #[test]
@@ -280,8 +274,8 @@ fn polar_split_doubles_the_rings_and_keeps_the_spokes() {
     // n on each of the 4 rings, n between consecutive rings (3n)
     for n in [3, 4, 6] {
         let (m, p) = polar_net(n);
-        check_step(Topology::PolarSplit, &m, &p, (2 + 4 * n, 9 * n, 5 * n), &format!("polar n = {n}"));
-        let r = Topology::PolarSplit.refine(&m).unwrap();
+        check_step(Topology::Polar, &m, &p, (2 + 4 * n, 9 * n, 5 * n), &format!("polar n = {n}"));
+        let r = Topology::Polar.refine(&m).unwrap();
         for pole in [0, 1] {
             let new_pole = r.vertex_origins.iter().position(|o| *o == Origin::Vertex(pole)).expect("the pole stays");
             assert_eq!(r.mesh.valence(new_pole), Some(n), "n = {n}: the number of spokes never changes");
@@ -289,5 +283,5 @@ fn polar_split_doubles_the_rings_and_keeps_the_spokes() {
     }
     // a closed all-triangle mesh is no polar net: every vertex is a pole
     let (t, _) = tetrahedron();
-    assert!(Topology::PolarSplit.refine(&t).is_err());
+    assert!(Topology::Polar.refine(&t).is_err());
 }

@@ -27,7 +27,7 @@ use crate::neighbourhood::configuration::Configuration;
 use crate::neighbourhood::NeighbourhoodKind;
 use crate::numeric::{Inexact, Weight};
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
-use crate::sdc::{Caps, CentreKind, Origin, Params, RuleResult, Rules, Scheme, SchemeInfo, Topology, TriangleSplit};
+use crate::sdc::{Caps, CentreKind, MeshDomain, Origin, Params, RuleResult, Rules, Scheme, SchemeInfo, Topology};
 
 /// A scheme with the given host's mandatory slots, each weighed 1/(number of
 /// slots of its rule): the stencil supports of the scheme the host is named
@@ -45,11 +45,11 @@ impl Support {
         Support { info, host, params: Params::default() }
     }
     fn catmull_clark() -> Self {
-        let t = Topology::PrimalSplit(TriangleSplit::FacePointQuads);
+        let t = Topology::PrimalQuad;
         Support::new("support-cc", Host::PrimalQuad, t, CentreKind::Vertex, SectorKind::Quad)
     }
     fn loop_() -> Self {
-        let t = Topology::PrimalSplit(TriangleSplit::FourTriangles);
+        let t = Topology::PrimalTriangle;
         Support::new("support-loop", Host::PrimalTriangle, t, CentreKind::Vertex, SectorKind::Tri)
     }
     fn doo_sabin() -> Self {
@@ -85,8 +85,8 @@ impl<W: Weight> Mask<W> for Support {
     }
 }
 
-impl<W: Weight> Rules<W> for Support {
-    fn stencil(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+impl<W: Weight> Rules<MeshDomain, W> for Support {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         weigh(self.host, mesh, origin, self, &W::one())
     }
 }
