@@ -221,7 +221,6 @@ impl Scheme for FourThree {
     /// The first levels of a real mesh blend the eon rules in, so the level
     /// is part of what the rules are.
     fn identity(&self) -> Option<String> {
-        let params: Vec<String> = self.params.values.iter().map(|(k, v)| format!("{k}={}", v.text)).collect();
-        Some(format!("{} [{}] level {:?}", INFO.name, params.join(", "), self.level))
+        Some(format!("{} [{}] level {:?}", INFO.name, self.params.identity_text(), self.level))
     }
 }

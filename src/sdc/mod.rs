@@ -192,8 +192,7 @@ pub trait Scheme:
     /// whose rules depend on nothing else; a scheme read from a file (two files
     /// may share a name) or one with another input (a refinement level) says so.
     fn identity(&self) -> Option<String> {
-        let params: Vec<String> = self.params().values.iter().map(|(k, v)| format!("{k}={}", v.text)).collect();
-        Some(format!("{} [{}]", self.info().name, params.join(", ")))
+        Some(format!("{} [{}]", self.info().name, self.params().identity_text()))
     }
 }
 

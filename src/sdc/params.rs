@@ -22,6 +22,11 @@ pub struct Params {
 }
 
 impl Params {
+    /// The values as given (`name=text, ...`), for `Scheme::identity`.
+    pub fn identity_text(&self) -> String {
+        let given: Vec<String> = self.values.iter().map(|(k, v)| format!("{k}={}", v.text)).collect();
+        given.join(", ")
+    }
     pub fn get(&self, name: &str) -> Option<&ParamValue> {
         self.values.iter().find(|(n, _)| n == name).map(|(_, v)| v)
     }
