@@ -150,6 +150,31 @@ fn reduce(mut p: Vec<BigInt>, phi: &Phi) -> Vec<BigInt> {
     p
 }
 
+/// gcd(d, c_0, c_1, ...) for a positive d. Almost every denominator met in
+/// a subdivision matrix fits a machine word: then each c_i is reduced modulo
+/// the running gcd and the rest is word arithmetic, where `BigInt::gcd`
+/// would allocate on every step (it was a quarter of an exact row's cost).
+fn content_gcd(d: &BigInt, cs: &[BigInt]) -> BigInt {
+    let Some(mut g) = d.magnitude().to_u64() else {
+        let mut g = d.clone();
+        for c in cs {
+            if g.is_one() {
+                break;
+            }
+            g = g.gcd(c);
+        }
+        return g;
+    };
+    for c in cs {
+        if g <= 1 {
+            break;
+        }
+        let r = (c.magnitude() % g).to_u64().expect("a remainder modulo a word is a word");
+        g = g.gcd(&r);
+    }
+    BigInt::from(g)
+}
+
 /// lcm(a, b) when within [`MAX_ORDER`].
 fn common_order(a: u32, b: u32) -> Option<u32> {
     if a == b {
@@ -189,13 +214,7 @@ impl Cyclotomic {
             den = -den;
             num.iter_mut().for_each(|c| *c = -std::mem::take(c));
         }
-        let mut g = den.clone();
-        for c in &num {
-            if g.is_one() {
-                break;
-            }
-            g = g.gcd(c);
-        }
+        let g = content_gcd(&den, &num);
         if !g.is_one() {
             num.iter_mut().for_each(|c| *c /= &g);
             den /= &g;
@@ -389,8 +408,8 @@ impl Cyclotomic {
         };
         let (mut a, b) = (self.numerators_in(l), o.numerators_in(l));
         // a/da + b/db = (a·(db/g) + b·(da/g)) / (da·db/g), g = gcd(da, db)
-        let g = self.den.gcd(&o.den);
-        let (fa, fb) = (&o.den / &g, &self.den / &g);
+        let g = content_gcd(&self.den, std::slice::from_ref(&o.den));
+        let (fa, fb) = if g.is_one() { (o.den.clone(), self.den.clone()) } else { (&o.den / &g, &self.den / &g) };
         let den = &self.den * &fa;
         if !fa.is_one() {
             a.iter_mut().for_each(|c| *c *= &fa);
