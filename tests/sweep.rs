@@ -252,6 +252,40 @@ fn charmap_points_equal_single_point_runs() {
     fails(&[&base[..], &["--charmap", "--resolution", "5"]].concat());
 }
 
+/// The default characteristic-map levels follow the host's growth: a level
+/// is one analysis step, 4 faces per face on the binary hosts (4 levels) and
+/// 9 on the ternary host and sqrt(3)'s two steps (3 levels: 3³ = 27 subdivisions
+/// of an edge against 2⁴ = 16, the nearest resolution). A ternary sweep
+/// without `--levels` is the sweep at 3 levels, point for point.
+#[test]
+fn default_levels_follow_the_hosts_growth() {
+    for (scheme, levels) in [("catmull-clark", 4), ("loop", 4), ("doo-sabin", 4), ("tps", 3), ("sqrt3", 3)] {
+        let v = json(&["charmap", scheme, "-n", "5", "--json"]);
+        assert_eq!(v["levels"].as_u64(), Some(levels), "{scheme}");
+    }
+    let base = ["sweep", "tps", "--valences", "3..5", "--param", "e=1/4:2/5:3/20", "--charmap", "--json"];
+    let default = json(&base);
+    let three = json(&[&base[..], &["--levels", "3"]].concat());
+    assert_eq!(default["points"], three["points"]);
+    assert_eq!(default["admissible"], three["admissible"]);
+}
+
+/// Under a pipe the progress bar draws nothing; plain progress lines say the
+/// sweep is alive (every SUBDLAB_PROGRESS_SECONDS, 10 by default).
+#[test]
+fn a_piped_sweep_prints_plain_progress_lines() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_subdlab"))
+        .args(["sweep", "loop", "--valences", "3..6"])
+        .env("SUBDLAB_PROGRESS_SECONDS", "0")
+        .output()
+        .expect("binary runs");
+    assert!(out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    let lines: Vec<&str> = err.lines().filter(|l| l.starts_with("sweep: ")).collect();
+    assert!(!lines.is_empty(), "no progress line on a piped stderr: {err:?}");
+    assert!(lines.iter().all(|l| l.contains("/4 points")), "{lines:?}");
+}
+
 /// Loop's curvature class in closed form (derived in tests/curvature_loop.rs
 /// and rechecked here): λ = b(1), b(m) = 3/8 + cos(2πm/n)/4 the eigenvalue of
 /// Fourier block m on the 1-ring, λ² the second eigenvalue of block 0 (Loop's

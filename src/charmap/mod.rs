@@ -29,6 +29,8 @@ pub use spectral::SpectralStatus;
 
 /// Most analysis steps of refinement (a ring facet count grows 4^levels).
 pub const MAX_LEVELS: usize = 8;
+/// Levels of a host that splits a face into 4 per analysis step; other hosts
+/// get the level count of about the same resolution ([`default_levels`]).
 pub const DEFAULT_LEVELS: usize = 4;
 pub const DEFAULT_RESOLUTION: usize = 512;
 /// A winding number this far from an integer means the boundary is not closed
@@ -65,6 +67,25 @@ impl CharMapOptions {
         }
         Ok(())
     }
+}
+
+/// The default level count for `scheme`'s host: the one whose ring is about
+/// as finely resolved as [`DEFAULT_LEVELS`] steps of a 1-to-4 split. A level
+/// is one analysis step, which multiplies the faces by g (4 for the binary
+/// hosts; 9 for the ternary host and for sqrt(3)'s two steps), so its edges
+/// shrink by √g; the level count is 4 · ln 2 / ln √g, rounded: 4 for g = 4,
+/// 3 for g = 9 (where 4 levels refine 9⁴ = 6561 facets per face, 26 times a
+/// binary host's 256, and decided the same sweeps as 3). A host that grows
+/// more slowly (the polar split's 2) keeps [`DEFAULT_LEVELS`]: the default
+/// only ever lowers the cost.
+pub fn default_levels(scheme: &dyn Scheme) -> usize {
+    let host = scheme.topology();
+    let growth = (host.faces_per_face() as f64).powi(host.steps_per_analysis() as i32);
+    if growth <= 1.0 {
+        return DEFAULT_LEVELS;
+    }
+    let levels = (DEFAULT_LEVELS as f64 * 2f64.ln() / growth.sqrt().ln()).round() as usize;
+    levels.clamp(2, DEFAULT_LEVELS)
 }
 
 impl Default for CharMapOptions {

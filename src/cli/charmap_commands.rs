@@ -6,7 +6,7 @@ use clap::{Args, Subcommand};
 
 use super::commands::parse_params;
 use super::FigureArgs;
-use crate::charmap::{check_map, CharMap, CharMapOptions, DEFAULT_LEVELS, DEFAULT_RESOLUTION, MAX_LEVELS};
+use crate::charmap::{check_map, CharMap, CharMapOptions, DEFAULT_RESOLUTION, MAX_LEVELS};
 use crate::error::Error;
 use crate::io::print_json;
 use crate::neighbourhood::configuration::check_valence;
@@ -27,9 +27,10 @@ const FIGURE_LEVELS: usize = 3;
 pub struct CharmapArgs {
     #[command(flatten)]
     pub config: super::SchemeArgs,
-    /// analysis steps of refinement of the control net (1 to 8)
-    #[arg(long, default_value_t = DEFAULT_LEVELS)]
-    pub levels: usize,
+    /// analysis steps of refinement of the control net (1 to 8; default 4 on hosts that split a face into 4,
+    /// 3 where an analysis step splits it into 9: sqrt(3) and ternary hosts, about the same resolution)
+    #[arg(long)]
+    pub levels: Option<usize>,
     /// pixels per side when rasterising the ring (16 to 8192)
     #[arg(long, default_value_t = DEFAULT_RESOLUTION)]
     pub resolution: usize,
@@ -136,8 +137,8 @@ pub(super) fn check_out(path: &Path) -> Result<(), Error> {
 /// The flags of `charmap` that need no scheme, checked before the scheme is
 /// resolved (and again by [`charmap`], which is cheap).
 pub(super) fn check_flags(a: &CharmapArgs) -> Result<(), Error> {
-    if a.levels == 0 || a.levels > MAX_LEVELS {
-        return Err(Error::Input(format!("--levels must be between 1 and {MAX_LEVELS}, got {}", a.levels)));
+    if let Some(levels) = a.levels.filter(|&l| l == 0 || l > MAX_LEVELS) {
+        return Err(Error::Input(format!("--levels must be between 1 and {MAX_LEVELS}, got {levels}")));
     }
     if a.rings == 0 || a.rings > 12 {
         return Err(Error::Input(format!("--rings must be between 1 and 12, got {}", a.rings)));
@@ -165,10 +166,11 @@ pub fn charmap(a: &CharmapArgs, scheme: Box<dyn Scheme>) -> Result<i32, Error> {
     check_flags(a)?;
     let style = a.figure.style()?;
     let config = super::commands::configuration(scheme.as_ref(), &a.config)?;
+    let levels = a.levels.unwrap_or_else(|| crate::charmap::default_levels(scheme.as_ref()));
     let opts = CharMapOptions {
-        levels: a.levels,
+        levels,
         resolution: a.resolution,
-        display_levels: a.out.as_ref().map(|_| a.levels.min(FIGURE_LEVELS)),
+        display_levels: a.out.as_ref().map(|_| levels.min(FIGURE_LEVELS)),
     };
     if a.certify {
         crate::certify::charmap::check_levels(a.certify_levels, "--certify-levels")?;

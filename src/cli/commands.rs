@@ -547,7 +547,27 @@ fn sweep(args: &super::SweepArgs) -> Result<(), Error> {
             .map_err(|e| Error::Message(e.to_string()))?
             .progress_chars("=> "),
     );
-    let progress = |done: usize, _total: usize| bar.set_position(done as u64);
+    // under a pipe (CI, a notebook) the bar draws nothing: a plain line at
+    // most every 10 seconds (SUBDLAB_PROGRESS_SECONDS) says the sweep is
+    // alive and how far it got
+    let plain = !std::io::IsTerminal::is_terminal(&std::io::stderr());
+    let every = std::env::var("SUBDLAB_PROGRESS_SECONDS")
+        .ok()
+        .and_then(|s| s.trim().parse::<f64>().ok())
+        .filter(|s| s.is_finite() && *s >= 0.0)
+        .map_or(std::time::Duration::from_secs(10), std::time::Duration::from_secs_f64);
+    let started = std::time::Instant::now();
+    let last_line = std::sync::Mutex::new(started);
+    let progress = |done: usize, total: usize| {
+        bar.set_position(done as u64);
+        if plain {
+            let mut last = last_line.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+            if last.elapsed() >= every {
+                eprintln!("sweep: {done}/{total} points after {:.0} s", started.elapsed().as_secs_f64());
+                *last = std::time::Instant::now();
+            }
+        }
+    };
     let points = run_on(&grid, args.threads as usize, &progress)?;
     bar.finish_and_clear();
     let intervals = admissible(&points);

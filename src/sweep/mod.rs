@@ -97,7 +97,7 @@ impl Grid {
         }
         let faces = faces.map(str::to_string);
         let charmap_options = CharMapOptions::default();
-        let grid = Grid {
+        let mut grid = Grid {
             scheme: scheme.to_string(),
             valences,
             param,
@@ -116,6 +116,7 @@ impl Grid {
         }
         let first = schemes::resolve(scheme, &first)?;
         grid.configuration(first.as_ref(), grid.valences[0])?;
+        grid.charmap_options.levels = crate::charmap::default_levels(first.as_ref());
         Ok(grid)
     }
 
@@ -128,10 +129,12 @@ impl Grid {
     }
 
     /// Levels and resolution of the characteristic-map check, validated;
-    /// each left out keeps `subdlab charmap`'s default.
+    /// each left out keeps `subdlab charmap`'s default (levels: the scheme
+    /// host's, [`crate::charmap::default_levels`], set by [`Grid::parse`]).
     pub fn set_charmap_options(&mut self, levels: Option<usize>, resolution: Option<usize>) -> Result<(), Error> {
         let d = CharMapOptions::default();
-        self.charmap_options = CharMapOptions::checked(levels.unwrap_or(d.levels), resolution.unwrap_or(d.resolution))?;
+        let levels = levels.unwrap_or(self.charmap_options.levels);
+        self.charmap_options = CharMapOptions::checked(levels, resolution.unwrap_or(d.resolution))?;
         Ok(())
     }
 
