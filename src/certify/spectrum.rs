@@ -45,7 +45,7 @@ use crate::neighbourhood::NeighbourhoodKind;
 use crate::numeric::{Cyclotomic, Interval};
 use crate::sdc::Scheme;
 use crate::spectrum::{Analysis, Method};
-use faer::c64;
+use faer::{c64, Mat};
 use num_traits::ToPrimitive;
 use rayon::prelude::*;
 use serde::Serialize;
@@ -100,6 +100,33 @@ pub struct BlockEnclosure {
     /// discs' moduli. Absent when not computed.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub power_bound: Option<PowerBound>,
+}
+
+impl BlockEnclosure {
+    /// The enclosure of the complex-conjugate block, named `block`: every
+    /// disc, the diagonalisation's V and R conjugated; sizes, ε and the
+    /// failure unchanged (no power bound: it is computed per block later).
+    fn conjugate(&self, block: usize) -> BlockEnclosure {
+        let conj_discs = |discs: &[Disc]| discs.iter().map(|d| Disc { re: d.re, im: -d.im, radius: d.radius }).collect();
+        BlockEnclosure {
+            block,
+            size: self.size,
+            epsilon: self.epsilon,
+            components: self
+                .components
+                .iter()
+                .map(|c| Component { discs: conj_discs(&c.discs), count: c.count, rows: c.rows.clone() })
+                .collect(),
+            failure: self.failure.clone(),
+            diagonalisation: self.diagonalisation.as_ref().map(|d| Diagonalisation {
+                v: Mat::from_fn(d.v.nrows(), d.v.ncols(), |i, j| d.v[(i, j)].conj()),
+                r: Mat::from_fn(d.r.nrows(), d.r.ncols(), |i, j| d.r[(i, j)].conj()),
+                discs: conj_discs(&d.discs),
+                epsilon: d.epsilon,
+            }),
+            power_bound: None,
+        }
+    }
 }
 
 /// An enclosure of a real eigenvalue: lo ≤ λ ≤ hi.
@@ -328,8 +355,18 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
         ),
     };
     let max_entry_width = blocks.iter().map(|(_, b)| b.max_width()).fold(0.0, f64::max);
-    let enclosures: Vec<BlockEnclosure> = blocks
+    // S is real and the rotation acts freely off the centre, so block g − m
+    // is the complex conjugate of block m (its entries are the same real
+    // weights times ω^{−mτ} = conj ω^{mτ}): only blocks m ≤ g − m are
+    // enclosed; the conjugate of block m's enclosure — of its verified
+    // diagonalisation V, R and discs, and so of every eigenvalue it bounds —
+    // encloses block g − m's (outward rounding is symmetric under negating
+    // the imaginary parts, so the conjugated discs are as rigorous)
+    let g = blocks.len();
+    let mirrored = |m: usize| s.method == Method::Dft && m > g - m;
+    let computed: Vec<BlockEnclosure> = blocks
         .par_iter()
+        .filter(|(m, _)| !mirrored(*m))
         .map(|(m, b)| match enclose(b) {
             Ok(e) => BlockEnclosure {
                 block: *m,
@@ -350,6 +387,9 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
                 power_bound: None,
             },
         })
+        .collect();
+    let enclosures: Vec<BlockEnclosure> = (0..g)
+        .map(|m| if mirrored(m) { computed[g - m].conjugate(m) } else { computed[m].clone() })
         .collect();
     let enclosures = with_power_bounds(enclosures, &blocks, orbits.group_order, s.method);
     if !rotation.holds() {
