@@ -62,18 +62,22 @@ impl QMatrix {
                 }
                 let m = &h[at(r, col)] / &piv;
                 // row_r -= m * row_{col+1}
+                // (zero entries skipped before multiplying: local matrices
+                // are sparse, and a big-rational product allocates)
                 for j in 0..n {
-                    let t = &m * &h[at(col + 1, j)];
-                    if !t.is_zero() {
-                        h[at(r, j)] = &h[at(r, j)] - t;
+                    if h[at(col + 1, j)].is_zero() {
+                        continue;
                     }
+                    let t = &m * &h[at(col + 1, j)];
+                    h[at(r, j)] = &h[at(r, j)] - t;
                 }
                 // col_{col+1} += m * col_r  (keeps the similarity)
                 for i in 0..n {
-                    let t = &m * &h[at(i, r)];
-                    if !t.is_zero() {
-                        h[at(i, col + 1)] = &h[at(i, col + 1)] + t;
+                    if h[at(i, r)].is_zero() {
+                        continue;
                     }
+                    let t = &m * &h[at(i, r)];
+                    h[at(i, col + 1)] = &h[at(i, col + 1)] + t;
                 }
             }
         }
@@ -134,7 +138,11 @@ fn echelon(rows: usize, cols: usize, a: &mut [Rational], reduced: bool) -> Vec<u
         if rank == rows {
             break;
         }
-        let Some(p) = (rank..rows).find(|&r| !a[r * cols + c].is_zero()) else {
+        // the pivot of smallest height: the result does not depend on which
+        // row is chosen (the pivot columns and the reduced form are unique),
+        // but small pivots keep the fractions short
+        let Some(p) = (rank..rows).filter(|&r| !a[r * cols + c].is_zero()).min_by_key(|&r| height(&a[r * cols + c]))
+        else {
             continue;
         };
         for j in 0..cols {
@@ -147,13 +155,16 @@ fn echelon(rows: usize, cols: usize, a: &mut [Rational], reduced: bool) -> Vec<u
             }
         }
         let piv = a[rank * cols + c].clone();
+        // local matrices are sparse: only the pivot row's non-zero columns
+        // change the other rows
+        let support: Vec<usize> = (c..cols).filter(|&j| !a[rank * cols + j].is_zero()).collect();
         let others = if reduced { 0..rows } else { rank + 1..rows };
         for r in others {
             if r == rank || a[r * cols + c].is_zero() {
                 continue;
             }
             let m = &a[r * cols + c] / &piv;
-            for j in c..cols {
+            for &j in &support {
                 let t = &m * &a[rank * cols + j];
                 a[r * cols + j] = &a[r * cols + j] - t;
             }
