@@ -11,7 +11,7 @@
 
 use crate::mesh::IdMap;
 
-use super::Configuration;
+use super::configuration::Configuration;
 use crate::mesh::{Chart, LatticeCoord, PolyMesh, SectorKind};
 use crate::sdc::CentreKind;
 

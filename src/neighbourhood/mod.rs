@@ -6,6 +6,7 @@ pub mod builder;
 pub mod configuration;
 pub mod discovery;
 pub mod labels;
+pub mod valence_limit;
 
 pub use builder::build_patch;
 pub use configuration::Configuration;

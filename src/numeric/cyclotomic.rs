@@ -27,6 +27,7 @@
 //! [`Cyclotomic::is_defined`] (the certificate treats a row holding it as not
 //! exact).
 
+pub use super::cyclotomic_element::Cyclotomic;
 use super::exact::Poly;
 use super::weight::{gcd, rational_cos_2pi, Inexact, ParamValue, Rational, Weight};
 use num_bigint::BigInt;
@@ -41,18 +42,6 @@ use std::sync::{Arc, Mutex, OnceLock};
 /// to φ(N) ≤ N − 1): past it cosines are `Err(Inexact)` and combinations
 /// are undefined, so the cost of every operation stays bounded.
 pub const MAX_ORDER: u64 = 1024;
-
-/// An exact element of a cyclotomic field (see the module documentation).
-#[derive(Clone, Debug)]
-pub struct Cyclotomic {
-    /// N: the element is written in Q(ζ_N); 0 marks the undefined element
-    order: u32,
-    /// numerators of the coefficients of 1, ζ_N, ..., ζ_N^{φ(N)−1}, no
-    /// trailing zeros (empty: zero)
-    num: Vec<BigInt>,
-    /// the common denominator, positive, coprime to the numerators together
-    den: BigInt,
-}
 
 /// Φ_N: its degree, the dense coefficients (lowest first) and the nonzero
 /// terms below the leading one (x^d ≡ −Σ c_j x^j modulo Φ_N).

@@ -26,7 +26,7 @@ use std::collections::BTreeMap;
 use num_complex::Complex64;
 use num_traits::{One, ToPrimitive, Zero};
 
-use super::cyclotomic::Cyclotomic;
+use super::cyclotomic_element::Cyclotomic;
 use super::field::{AsInteger, Decision, EvalError, ExprField, IsZero, Question};
 use super::weight::Rational;
 use crate::error::Error;
@@ -51,11 +51,6 @@ pub enum Expr {
 /// The most terms one evaluation of an expression may add up, counting every
 /// term of nested sums: evaluation time stays bounded whatever the input.
 pub const MAX_SUM_TERMS: u64 = 10_000;
-/// Largest exact number an evaluation builds (bits of numerator plus
-/// denominator): past it the exact fields decline (`Unrepresentable`) and a
-/// scheme file's weight is read in floats, so the cost of every exact
-/// operation stays bounded.
-pub const MAX_EXACT_BITS: u64 = 4096;
 /// Deepest nesting of parentheses, signs, powers and calls.
 pub const MAX_DEPTH: usize = 200;
 /// Names the language itself gives a meaning (not usable as a sum variable).
@@ -379,7 +374,7 @@ impl Expr {
     /// Q(ζ_N), N ≤ `cyclotomic::MAX_ORDER`), `i`, the field operations,
     /// integer powers, `kronecker` (decided exactly), sums, and `sqrt`/`abs`
     /// of rationals. None otherwise (π itself, `cbrt`, square roots of
-    /// non-squares, elements larger than [`MAX_EXACT_BITS`]). What
+    /// non-squares, elements larger than [`MAX_EXACT_BITS`](super::field::MAX_EXACT_BITS)). What
     /// [`Expr::exact`] proves rational has the same value here.
     pub fn cyclotomic(&self, env: &Env) -> Option<Cyclotomic> {
         self.evaluate::<Cyclotomic>(env).ok()
@@ -672,7 +667,7 @@ mod tests {
 
     #[test]
     fn cyclotomic_evaluation_is_exact_where_cosines_are_irrational() {
-        use crate::numeric::{Cyclotomic, Weight};
+        use crate::numeric::{cyclotomic_element::Cyclotomic, weight::Weight};
         let at = |n: i64, j: i64| env_int(&[("n", n), ("j", j)]);
         let cy = |s: &str, n: i64, j: i64| Expr::parse(s).unwrap().cyclotomic(&at(n, j));
         let rational = |p: i64, d: i64| Some(Cyclotomic::ratio(p, d));

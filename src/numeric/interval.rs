@@ -17,7 +17,7 @@
 //! requires `Rules<Interval>`), so the certified matrix is assembled by the
 //! same rule code as the floating-point one.
 
-use super::cyclotomic::Cyclotomic;
+use super::cyclotomic_element::Cyclotomic;
 use super::weight::{gcd, Inexact, ParamValue, Rational, Weight};
 use num_bigint::BigInt;
 use num_traits::ToPrimitive;

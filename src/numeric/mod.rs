@@ -4,16 +4,19 @@
 //! rational recognition, and exact polynomial/matrix algebra.
 
 pub mod cyclotomic;
+pub mod cyclotomic_element;
 pub mod exact;
 pub mod expr;
 pub mod field;
 pub mod interval;
+pub mod reading;
 pub mod recognise;
 pub mod small;
 pub mod weight;
 
-pub use cyclotomic::Cyclotomic;
-pub use field::{EvalError, ExprField, Reading};
+pub use cyclotomic_element::Cyclotomic;
+pub use field::{EvalError, ExprField};
 pub use interval::Interval;
+pub use reading::Reading;
 pub use small::SmallRational;
 pub use weight::{Inexact, ParamValue, Rational, Weight};

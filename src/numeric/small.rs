@@ -12,7 +12,7 @@
 //! with big rationals ([`SmallRational::to_rational`] returns `None`). So a
 //! stencil computed this way is either the exact stencil or visibly not one.
 
-use super::cyclotomic::Cyclotomic;
+use super::cyclotomic_element::Cyclotomic;
 use super::weight::{rational_cos_2pi, Inexact, ParamValue, Rational, Weight};
 use num_bigint::BigInt;
 use num_rational::Ratio;

@@ -10,7 +10,7 @@
 //! (`numeric::cyclotomic`, where cos(2πk/n) is exact and only square roots of
 //! non-squares are `Err(Inexact)`).
 
-use super::cyclotomic::Cyclotomic;
+use super::cyclotomic_element::Cyclotomic;
 use crate::error::Error;
 use num_bigint::BigInt;
 use num_rational::BigRational;

@@ -12,55 +12,20 @@
 //! outside its file matches on which host it is.
 //!
 //! The registry is split over the two layers that must know it: the variant
-//! list of [`Host`] here (the identity scheme descriptions name), and the
-//! table that maps each variant to its unit in `crate::topology` (which sees
-//! every host file; [`Registry`] is the interface this layer calls it
-//! through, so `sdc` imports nothing from above). The table is an exhaustive
-//! match: a variant without a unit does not compile.
+//! list of [`Host`] (the identity scheme descriptions name; in
+//! `sdc::host_list`, re-exported here), and the table that maps each variant
+//! to its unit in `crate::topology` (which sees every host file; [`Registry`]
+//! is the interface this layer calls it through, so `sdc` imports nothing
+//! from above). The table is an exhaustive match: a variant without a unit
+//! does not compile.
 
 use crate::error::Error;
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::sdc::centre::CentreKind;
-use crate::sdc::slots::{Gather, HostSpec, Wants};
+use crate::sdc::gathered::{Gather, Wants};
+pub use crate::sdc::host_list::{Host, HOSTS};
+use crate::sdc::host_spec::HostSpec;
 use crate::sdc::stencil::Origin;
-
-/// Every refinement host, by name: the registry's list of identities. Adding
-/// a host adds one variant here and one line to the table in
-/// `crate::topology` (the compiler asks for the latter).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Host {
-    /// primal split, every face into quads around a face point (Catmull–Clark)
-    PrimalQuad,
-    /// primal split of triangles into 4 (Loop, butterfly)
-    PrimalTriangle,
-    /// primal split of quads and triangles together (4-3 subdivision)
-    MixedQuadTriangle,
-    /// quads around face control vertices (non-box)
-    Fcv,
-    /// dual split (Doo–Sabin)
-    Dual,
-    /// Kobbelt's sqrt(3) split
-    Sqrt3,
-    /// ternary quad split (TPS)
-    Ternary,
-    /// dual split plus central points (PGS)
-    AugmentedDual,
-    /// radial split of polar nets (polar bi-2)
-    Polar,
-}
-
-/// Every host, in the order scheme-file documentation lists them.
-pub const HOSTS: [Host; 9] = [
-    Host::PrimalQuad,
-    Host::PrimalTriangle,
-    Host::MixedQuadTriangle,
-    Host::Fcv,
-    Host::Dual,
-    Host::Sqrt3,
-    Host::Ternary,
-    Host::AugmentedDual,
-    Host::Polar,
-];
 
 /// The host a scheme runs on (the name scheme descriptions have always used).
 pub type Topology = Host;

@@ -13,7 +13,13 @@
 // what kind of point an analysis is centred on (its own file: the hosts
 // need it, and this file re-exports the hosts)
 pub mod centre;
+// what a host's gatherer gives
+pub mod gathered;
 pub mod host;
+// every host by name (the identity below everything about hosts)
+pub mod host_list;
+// what a host declares: its rules and their slot families
+pub mod host_spec;
 pub mod params;
 // per-host mask slots: the named neighbour positions a rule weighs
 pub mod slots;

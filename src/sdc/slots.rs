@@ -11,190 +11,29 @@
 //! file and the built-in masks of the same shape need no gathering of their
 //! own. Rules over general polygons weigh `face-corner` slots (every corner
 //! of a face, with the face's corner count `Slot::m`), so that Catmull–Clark's
-//! centroids of any m-gon are slot weights like the rest.
+//! centroids of any m-gon are slot weights like the rest. The declarations
+//! are in `sdc::host_spec`, what a gatherer returns in `sdc::gathered`
+//! (both re-exported here); this file gathers and weighs.
 //!
 //! Conventions: fans and rings run counter-clockwise as
 //! `PolyMesh::vertex_fan` gives them. Where a rule says its j is canonical,
 //! j = 0 is a definite neighbour (the edge's other end, the corner itself);
 //! elsewhere the first neighbour is arbitrary and weights may not depend on j.
 
-use crate::mesh::{FaceId, PolyMesh, SectorKind, VertexId};
+use crate::mesh::{FaceId, PolyMesh, VertexId};
 use crate::numeric::{Inexact, Weight};
-use crate::sdc::centre::CentreKind;
 use crate::sdc::stencil::{Origin, RuleResult, Stencil};
 
-pub use super::host::{Host, Registry, HOSTS};
-
-/// The kind of a refinement origin, without its mesh entities.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum OriginKind {
-    Vertex,
-    Edge,
-    Face,
-    Corner,
-}
-
-impl OriginKind {
-    pub fn of(origin: Origin) -> Self {
-        match origin {
-            Origin::Vertex(_) => OriginKind::Vertex,
-            Origin::Edge(..) => OriginKind::Edge,
-            Origin::Face(_) => OriginKind::Face,
-            Origin::Corner { .. } => OriginKind::Corner,
-        }
-    }
-}
-
-/// How many vertices a slot family holds.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Arity {
-    /// a fixed number of slots, j = 0..k-1
-    Fixed(usize),
-    /// k slots per index j = 0..n-1 (n the rule's valence or face size)
-    PerJ(usize),
-    /// k slots per quad of a vertex's fan (j = the fan face's index): as
-    /// many as the fan has quads, so their weights must sum to 0 per quad
-    /// for the rule to stay affine
-    PerQuad(usize),
-    /// one slot per corner of each face the rule names (j = the face's
-    /// index, the slot's `m` its corner count): `Some(k)` faces (the two
-    /// faces of an edge), `None` one per j = 0..n-1 (the fan of a vertex).
-    /// The faces may be any polygons, so a rule over general polygons (the
-    /// centroids in Catmull–Clark's rules) needs no rule per face size
-    FaceCorners(Option<usize>),
-}
-
-impl Arity {
-    /// Slots of the family at valence (or face size) n when every face it
-    /// names has m corners, for affine checks.
-    pub fn count(self, n: usize, m: usize) -> usize {
-        match self {
-            Arity::Fixed(k) => k,
-            Arity::PerJ(k) | Arity::PerQuad(k) => k * n,
-            Arity::FaceCorners(_) => self.js(n) * m,
-        }
-    }
-    /// The indices j a weight is asked for.
-    pub fn js(self, n: usize) -> usize {
-        match self {
-            Arity::Fixed(k) | Arity::FaceCorners(Some(k)) => k,
-            Arity::PerJ(_) | Arity::PerQuad(_) | Arity::FaceCorners(None) => n,
-        }
-    }
-}
-
-/// One family of slots of a rule.
-#[derive(Debug)]
-pub struct Family {
-    pub name: &'static str,
-    pub arity: Arity,
-    /// a file may leave it out (then it is not gathered: the rule keeps its
-    /// smaller stencil, e.g. the 1-ring edge rule without butterfly wings)
-    pub optional: bool,
-    /// the slots exist at quads only: in a rule that also has face-corner
-    /// slots (and so takes any polygons), a face of another size has none
-    pub quad_only: bool,
-    pub doc: &'static str,
-}
-
-/// What `n` means in a rule.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Valence {
-    /// the valence of the vertex (or the size of the face) concerned: a variable
-    Any,
-    /// no variable n; per-j families have this many slots
-    Fixed(usize),
-}
-
-/// One rule of a host: the origin kind it serves and its slots.
-#[derive(Debug)]
-pub struct RuleSlots {
-    pub name: &'static str,
-    pub origin: OriginKind,
-    pub families: &'static [Family],
-    /// the rule may be absent from a file (then a fallback rule applies)
-    pub optional: bool,
-    /// j = 0 is a definite neighbour, so weights may depend on j
-    pub canonical_j: bool,
-    pub valence: Valence,
-    pub doc: &'static str,
-}
-
-/// What a host is and which rules it has.
-pub struct HostSpec {
-    pub host: Host,
-    /// the name scheme files use (`topology = "..."`)
-    pub name: &'static str,
-    pub sector: SectorKind,
-    pub centre: CentreKind,
-    /// meshes carry a face control vertex per face
-    pub face_control: bool,
-    pub rules: &'static [RuleSlots],
-}
-
-impl HostSpec {
-    pub fn rule(&self, name: &str) -> Option<&'static RuleSlots> {
-        self.rules.iter().find(|r| r.name == name)
-    }
-    /// The origin kinds the host creates, each once, in rule order.
-    pub fn origins(&self) -> Vec<OriginKind> {
-        let mut out: Vec<OriginKind> = Vec::new();
-        for r in self.rules {
-            if !out.contains(&r.origin) {
-                out.push(r.origin);
-            }
-        }
-        out
-    }
-}
-
-pub(crate) const fn fam(name: &'static str, arity: Arity, doc: &'static str) -> Family {
-    Family { name, arity, optional: false, quad_only: false, doc }
-}
-
-/// A family of the primal quad host whose slots exist at quads only.
-pub(crate) const fn quad_fam(name: &'static str, arity: Arity, doc: &'static str) -> Family {
-    Family { quad_only: true, ..fam(name, arity, doc) }
-}
-
-/// The corners of the faces of a primal quad rule, for masks over general
-/// polygons. Optional: a mask without it keeps the quad-only rule (its
-/// gatherer refuses other faces, as the quad scheme files expect).
-pub(crate) const fn corner_family(arity: Arity, doc: &'static str) -> Family {
-    Family { optional: true, ..fam("face-corner", arity, doc) }
-}
-
-pub(crate) const ONE: Arity = Arity::Fixed(1);
-pub(crate) const PER_J: Arity = Arity::PerJ(1);
-
-pub(crate) const fn rule(
-    name: &'static str,
-    origin: OriginKind,
-    valence: Valence,
-    families: &'static [Family],
-    doc: &'static str,
-) -> RuleSlots {
-    RuleSlots { name, origin, families, optional: false, canonical_j: false, valence, doc }
-}
-
-/// An optional rule with a canonical j.
-pub(crate) const fn canonical(
-    name: &'static str,
-    origin: OriginKind,
-    families: &'static [Family],
-    optional: bool,
-    doc: &'static str,
-) -> RuleSlots {
-    RuleSlots { name, origin, families, optional, canonical_j: true, valence: Valence::Any, doc }
-}
-
-pub(crate) const QUAD_VERTEX: &[Family] = &[
-    fam("centre", ONE, "the vertex v"),
-    fam("edge", PER_J, "e_j, the other end of the j-th edge at v"),
-    fam("face", PER_J, "f_j, the corner opposite v in the quad [v, e_j, f_j, e_{j+1}]"),
-];
-pub(crate) const TRI_VERTEX: &[Family] =
-    &[fam("centre", ONE, "the vertex v"), fam("edge", PER_J, "e_j, v's j-th neighbour")];
+// the hosts' identities, declarations and gather results live below the
+// host interface (`sdc::host`), which the gatherer here calls; re-exported
+// under the paths the host files and the schemes name them by
+pub use crate::sdc::gathered::{Gather, GatherError, Gathered, Part, Slot, Target, Wants};
+pub use crate::sdc::host::Registry;
+pub use crate::sdc::host_list::{Host, HOSTS};
+pub(crate) use crate::sdc::host_spec::{
+    canonical, corner_family, fam, quad_fam, rule, ONE, PER_J, QUAD_VERTEX, TRI_VERTEX,
+};
+pub use crate::sdc::host_spec::{Arity, Family, HostSpec, OriginKind, RuleSlots, Valence};
 
 /// A mask: a weight for every slot of the rules it has. Built-in schemes and
 /// scheme files are both masks over the same slots, so neither gathers
@@ -255,129 +94,6 @@ fn fill<W: Weight>(
     }
     Ok(())
 }
-
-/// Which rules and optional families a mask has: the gatherer collects only
-/// what is weighed (a 2-ring family costs a larger neighbourhood).
-pub trait Wants {
-    fn rule(&self, rule: &str) -> bool;
-    fn family(&self, rule: &str, family: &str) -> bool;
-}
-
-/// Why an origin's slots could not be gathered.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum GatherError {
-    /// the mesh ends before the neighbourhood the rule weighs (boundary of a
-    /// truncated patch)
-    Truncated,
-    /// the neighbourhood is complete but of a shape the host's rules do not
-    /// cover (a face size or valence outside the host)
-    NotCovered,
-    /// the host never creates this kind of origin
-    Unsupported(Host, OriginKind),
-}
-
-impl std::fmt::Display for GatherError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            GatherError::Truncated => write!(f, "the neighbourhood is truncated"),
-            GatherError::NotCovered => write!(f, "no rule of the host covers this neighbourhood"),
-            GatherError::Unsupported(h, o) => write!(f, "host {} creates no {o:?} points", h.spec().name),
-        }
-    }
-}
-
-/// Where a slot's weight goes.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Target {
-    Vertex(VertexId),
-    /// a point that is itself a combination of mesh vertices (PGS: the central
-    /// point of a face that has none, given by the host's `point` rule)
-    Derived(Box<Part>),
-}
-
-#[derive(Clone, Debug, PartialEq)]
-pub struct Slot {
-    pub family: &'static str,
-    pub j: usize,
-    /// the valence (or face size) the slot's weight is evaluated at
-    pub n: usize,
-    /// the vertex concerned (whose valence n is, and whose per-vertex
-    /// parameters the weight takes): the centre of a vertex rule, the corner
-    /// P of a sqrt(3) face rule, the extraordinary end of an edge rule;
-    /// `None` where a rule concerns no single vertex (regular edges, faces)
-    pub at: Option<VertexId>,
-    /// the corner count of the face a face-corner slot lies in (its own for
-    /// each face of a vertex's fan or an edge); `None` for other slots
-    pub m: Option<usize>,
-    pub target: Target,
-}
-
-/// One rule applied to one neighbourhood, scaled by `scale` (num, den).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Part {
-    pub rule: &'static str,
-    pub n: usize,
-    /// the vertex concerned, for the slots put from now on (see `Slot::at`)
-    pub at: Option<VertexId>,
-    pub scale: (i64, i64),
-    pub slots: Vec<Slot>,
-}
-
-impl Part {
-    pub(crate) fn new(rule: &'static str, n: usize) -> Self {
-        Part { rule, n, at: None, scale: (1, 1), slots: Vec::new() }
-    }
-    /// A rule about vertex `v` (of valence n).
-    pub(crate) fn around(rule: &'static str, n: usize, v: VertexId) -> Self {
-        Part { at: Some(v), ..Part::new(rule, n) }
-    }
-    pub(crate) fn put(&mut self, family: &'static str, j: usize, v: VertexId) {
-        self.slots.push(Slot { family, j, n: self.n, at: self.at, m: None, target: Target::Vertex(v) });
-    }
-    /// A slot of the neighbourhood of vertex `at` (valence n) inside a larger rule.
-    pub(crate) fn put_around(&mut self, family: &'static str, j: usize, n: usize, at: VertexId, v: VertexId) {
-        self.slots.push(Slot { family, j, n, at: Some(at), m: None, target: Target::Vertex(v) });
-    }
-    pub(crate) fn put_target(&mut self, family: &'static str, target: Target) {
-        self.slots.push(Slot { family, j: 0, n: self.n, at: self.at, m: None, target });
-    }
-    /// The face-corner slots of face j: its corners from `start` on.
-    pub(crate) fn put_face_corners(&mut self, j: usize, face: &[VertexId], start: usize) {
-        let m = face.len();
-        for t in 0..m {
-            let target = Target::Vertex(face[(start + t) % m]);
-            self.slots.push(Slot { family: "face-corner", j, n: self.n, at: self.at, m: Some(m), target });
-        }
-    }
-    pub(crate) fn scaled(mut self, num: i64, den: i64) -> Self {
-        self.scale = (num, den);
-        self
-    }
-}
-
-/// The slots of one origin: the sum of `parts` and `extraordinary`.
-/// `extraordinary` holds the rules of extraordinary vertices that a mask may
-/// blend in over a real mesh's first steps (4-3): an edge at an
-/// extraordinary vertex (the mean of the two ends' rules where both are),
-/// then with `regular`, the regular rule of the same edge that they replace;
-/// 4-3's quad term (4a') at an eon.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Gathered {
-    pub parts: Vec<Part>,
-    pub extraordinary: Vec<Part>,
-    pub regular: Option<Part>,
-}
-
-impl Gathered {
-    pub(crate) fn one(part: Part) -> Self {
-        Gathered { parts: vec![part], extraordinary: Vec::new(), regular: None }
-    }
-    pub(crate) fn replacing(extraordinary: Vec<Part>, regular: Part) -> Self {
-        Gathered { parts: Vec::new(), extraordinary, regular: Some(regular) }
-    }
-}
-
-pub type Gather = Result<Gathered, GatherError>;
 
 /// The closed fan of v; `Truncated` when v is on the boundary.
 pub(crate) fn fan(mesh: &PolyMesh, v: VertexId) -> Result<Vec<Vec<VertexId>>, GatherError> {

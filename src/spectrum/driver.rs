@@ -18,14 +18,21 @@
 //!    without symmetry, else Fourier block 0);
 //! 4. Reif's spectral C¹ verdict.
 
+use super::decomposition::{decompose, decompose_dft, Decomposition};
+use super::eigenvalue::sort_eigenvalues;
 use super::exact::{self, ExactSummary};
-use super::{decompose, decompose_dft, sort_eigenvalues, verdict, Decomposition, Method, Spectrum, MAX_FULL_SIZE};
+use super::spectrum_result::{Method, Spectrum};
+use super::verdict;
 use crate::dft::{lazy_full_by_rotation, Orbits};
 use crate::error::Error;
 use crate::matrix::{FullMatrix, LocalMatrix};
 use crate::neighbourhood::{NeighbourhoodKind, VertexLabel};
 use crate::numeric::Rational;
 use crate::sdc::CentreKind;
+
+/// Largest matrix analysed whole (`Method::Full`): a dense eigenproblem of
+/// this size takes seconds; beyond, the request is refused up front.
+pub const MAX_FULL_SIZE: usize = 1500;
 
 /// Rows of S by label index, each over every column.
 pub type Rows<W> = Vec<Vec<(usize, W)>>;

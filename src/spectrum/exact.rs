@@ -8,7 +8,7 @@
 use num_bigint::BigInt;
 use serde::Serialize;
 
-use super::Eigenvalue;
+use super::eigenvalue::Eigenvalue;
 use crate::dft::blocks::{block_zero_exact, block_zero_exact_from_rows};
 use crate::dft::Orbits;
 use crate::engine::exact as engine_exact;

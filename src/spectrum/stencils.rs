@@ -10,7 +10,7 @@
 use faer::c64;
 use serde::Serialize;
 
-use super::Spectrum;
+use super::spectrum_result::Spectrum;
 use crate::error::Error;
 
 #[derive(Clone, Debug, Serialize)]

@@ -4,7 +4,7 @@
 
 use serde::Serialize;
 
-use super::Eigenvalue;
+use super::eigenvalue::{fmt_f, Eigenvalue};
 
 const TOL: f64 = 1e-9;
 
@@ -93,7 +93,7 @@ pub fn reif(eigs: &[Eigenvalue]) -> Verdict {
             ok = false;
             reasons.push(format!("|λ3| = {:.12} is not below λ1 = {:.12}", l3.modulus, l1.modulus));
         } else {
-            reasons.push(format!("|λ3| = {} < λ1", super::fmt_f(l3.modulus)));
+            reasons.push(format!("|λ3| = {} < λ1", fmt_f(l3.modulus)));
         }
     }
     v.c1_spectral = ok;

@@ -24,7 +24,7 @@
 use super::discover;
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::neighbourhood::configuration::Configuration;
-use crate::neighbourhood::NeighbourhoodKind;
+use crate::neighbourhood::discovery::NeighbourhoodKind;
 use crate::numeric::{Inexact, Weight};
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::{Caps, CentreKind, MeshDomain, Origin, Params, RuleResult, Rules, Scheme, SchemeInfo, Topology};

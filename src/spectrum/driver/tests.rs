@@ -11,8 +11,9 @@ use crate::matrix::LocalMatrix;
 use crate::neighbourhood::{NeighbourhoodKind, VertexKind, VertexLabel};
 use crate::numeric::Rational;
 use crate::sdc::CentreKind;
+use crate::spectrum::driver::MAX_FULL_SIZE;
 use crate::spectrum::exact::Candidates;
-use crate::spectrum::{Method, MAX_FULL_SIZE};
+use crate::spectrum::spectrum_result::Method;
 
 fn q(p: i64, d: i64) -> Rational {
     Rational::new(p.into(), d.into())

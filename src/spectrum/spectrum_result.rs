@@ -1,0 +1,135 @@
+//! What an analysis finds (`Spectrum`): whose spectrum it is, the method and
+//! blocks, the distinct eigenvalues, Reif's verdict and the exact summary,
+//! and the synthesis that maps block vectors to the labelled neighbourhood.
+
+use faer::c64;
+use faer::Mat;
+use serde::Serialize;
+
+use super::eigen;
+use super::eigenvalue::Eigenvalue;
+use super::exact::ExactSummary;
+use super::verdict::Verdict;
+use crate::dft::{omega_pow, Orbits};
+use crate::neighbourhood::{NeighbourhoodKind, VertexLabel};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Method {
+    /// Fourier blocks of the rotation-symmetric matrix
+    Dft,
+    /// the full matrix (no rotation symmetry, or forced)
+    Full,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct BlockInfo {
+    pub index: usize,
+    pub size: usize,
+}
+
+/// The blocks that were decomposed, and how block coordinates map to
+/// neighbourhood vertices.
+#[derive(Clone, Debug)]
+pub enum Synthesis {
+    /// block m's coordinate k is orbit `block_orbits[m][k]`
+    Dft { orbits: Orbits, block_orbits: Vec<Vec<usize>>, blocks: Vec<Mat<c64>> },
+    /// the single block is the whole matrix
+    Full { matrix: Mat<c64> },
+}
+
+impl Synthesis {
+    /// Fourier block `m`, or the whole matrix when there is no symmetry.
+    pub fn block(&self, m: usize) -> &Mat<c64> {
+        match self {
+            Synthesis::Dft { blocks, .. } => &blocks[m],
+            Synthesis::Full { matrix } => matrix,
+        }
+    }
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct Spectrum {
+    pub scheme: String,
+    pub valence: usize,
+    pub params: std::collections::BTreeMap<String, String>,
+    pub faces: String,
+    pub centre: crate::sdc::CentreKind,
+    pub neighbourhood: NeighbourhoodKind,
+    pub matrix_size: usize,
+    pub minimal_size: usize,
+    pub analysis_size: usize,
+    pub method: Method,
+    pub blocks: Vec<BlockInfo>,
+    pub eigenvalues: Vec<Eigenvalue>,
+    pub verdict: Verdict,
+    pub exact_analysis: Option<ExactSummary>,
+    #[serde(skip)]
+    pub labels: Vec<VertexLabel>,
+    #[serde(skip)]
+    pub synthesis: Synthesis,
+}
+
+impl Spectrum {
+    /// Right eigenvectors of `e` over the neighbourhood (S x = λ x).
+    pub fn right_vectors(&self, e: &Eigenvalue) -> Vec<Vec<c64>> {
+        self.map_vectors(e, false)
+    }
+    /// Left eigenvectors of `e` over the neighbourhood, as rows l with l S = λ l.
+    pub fn left_vectors(&self, e: &Eigenvalue) -> Vec<Vec<c64>> {
+        self.map_vectors(e, true)
+    }
+    fn map_vectors(&self, e: &Eigenvalue, left: bool) -> Vec<Vec<c64>> {
+        let mut out = Vec::new();
+        for vs in &e.vectors {
+            let list = if left {
+                let lambda = c64::new(e.re, e.im);
+                eigen::left_eigenvectors(self.synthesis.block(vs.block), lambda, vs.right.len()).unwrap_or_default()
+            } else {
+                vs.right.clone()
+            };
+            for x in &list {
+                out.push(match &self.synthesis {
+                    Synthesis::Full { .. } => {
+                        if left {
+                            x.iter().map(|z| z.conj()).collect()
+                        } else {
+                            x.clone()
+                        }
+                    }
+                    Synthesis::Dft { orbits, block_orbits, .. } => {
+                        synthesise(x, vs.block, &block_orbits[vs.block], orbits, self.matrix_size, left)
+                    }
+                });
+            }
+        }
+        out
+    }
+}
+
+/// Map one block vector to the whole neighbourhood: right vectors by
+/// X[(t,a)] = ω^{mt} x_a, left rows by l[(t,a)] = conj(y_a) ω^{-mt} / g (the
+/// dual basis of u_a^m); fixed points (the centre) carry their value as is.
+fn synthesise(x: &[c64], m: usize, block_orbits: &[usize], orbits: &Orbits, size: usize, left: bool) -> Vec<c64> {
+    let g = orbits.group_order;
+    let mut pos = vec![usize::MAX; orbits.num_orbits()];
+    for (k, &o) in block_orbits.iter().enumerate() {
+        pos[o] = k;
+    }
+    (0..size)
+        .map(|k| {
+            let (o, t) = orbits.member[k];
+            if pos[o] == usize::MAX {
+                return c64::new(0.0, 0.0);
+            }
+            let v = if left { x[pos[o]].conj() } else { x[pos[o]] };
+            if orbits.fixed[o] {
+                v
+            } else if left {
+                v * omega_pow(m, t, g).conj() / g as f64
+            } else {
+                v * omega_pow(m, t, g)
+            }
+        })
+        .collect()
+}
