@@ -5,8 +5,8 @@ use std::path::{Path, PathBuf};
 use clap::{Args, Subcommand};
 
 use super::commands::parse_params;
-use super::FigureArgs;
 use crate::charmap::{check_map, CharMap, CharMapOptions, DEFAULT_LEVELS, DEFAULT_RESOLUTION, MAX_LEVELS};
+use crate::cli::args::{FigureArgs, SchemeArgs};
 use crate::error::Error;
 use crate::io::print_json;
 use crate::neighbourhood::configuration::check_valence;
@@ -26,7 +26,7 @@ const FIGURE_LEVELS: usize = 3;
 #[derive(Args, Debug, Clone)]
 pub struct CharmapArgs {
     #[command(flatten)]
-    pub config: super::SchemeArgs,
+    pub config: SchemeArgs,
     /// analysis steps of refinement of the control net (1 to 8)
     #[arg(long, default_value_t = DEFAULT_LEVELS)]
     pub levels: usize,
