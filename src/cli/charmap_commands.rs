@@ -5,8 +5,8 @@ use std::path::{Path, PathBuf};
 use clap::{Args, Subcommand};
 
 use super::commands::parse_params;
-use super::FigureArgs;
 use crate::charmap::{check_map, CharMap, CharMapOptions, DEFAULT_RESOLUTION, MAX_LEVELS};
+use crate::cli::args::{FigureArgs, SchemeArgs};
 use crate::error::Error;
 use crate::io::print_json;
 use crate::neighbourhood::configuration::check_valence;
@@ -26,7 +26,7 @@ const FIGURE_LEVELS: usize = 3;
 #[derive(Args, Debug, Clone)]
 pub struct CharmapArgs {
     #[command(flatten)]
-    pub config: super::SchemeArgs,
+    pub config: SchemeArgs,
     /// analysis steps of refinement of the control net (1 to 8; default 4 on hosts that split a face into 4,
     /// 3 where an analysis step splits it into 9: sqrt(3) and ternary hosts, about the same resolution)
     #[arg(long)]

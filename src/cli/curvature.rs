@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use clap::Args;
 
 use super::charmap_commands::check_out;
+use crate::cli::args::{FigureArgs, SchemeArgs};
 use crate::curvature::{curvature, Curvature, CurvatureOptions, DEFAULT_LEVELS, MAX_LEVELS};
 use crate::error::Error;
 use crate::io::print_json;
@@ -14,7 +15,7 @@ use crate::plot::{self, curvature::CurvatureFigure, curvature::CurvatureFigureKi
 #[derive(Args, Debug, Clone)]
 pub struct CurvatureArgs {
     #[command(flatten)]
-    pub config: super::SchemeArgs,
+    pub config: SchemeArgs,
     /// analysis steps of refinement of the ring samples (1 to 6)
     #[arg(long, default_value_t = DEFAULT_LEVELS)]
     pub levels: usize,
@@ -35,7 +36,7 @@ pub struct CurvatureArgs {
     #[arg(long)]
     pub json: bool,
     #[command(flatten)]
-    pub style: super::FigureArgs,
+    pub style: FigureArgs,
 }
 
 /// The flags of `curvature` that need no scheme, checked before the scheme

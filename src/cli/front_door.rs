@@ -11,7 +11,8 @@
 //! names the domain.
 
 use super::commands::parse_params;
-use super::{Command, SchemeArgs};
+use crate::cli::args::SchemeArgs;
+use crate::cli::command_line::Command;
 use crate::error::Error;
 use crate::schemes::registry::{self, Built, Family};
 
@@ -139,7 +140,7 @@ fn run(cmd: &Command, analysis: Analysis, config: &SchemeArgs) -> Result<i32, Er
         (Route::Native, Built::Curve(scheme)) => super::lattice::curve(cmd, scheme.as_ref()).map(|()| 0),
         (_, built) => {
             let scheme = crate::schemes::on_mesh(built, &config.scheme)?;
-            super::commands::mesh_analysis(cmd, scheme)
+            super::mesh_analysis::mesh_analysis(cmd, scheme)
         }
     }
 }

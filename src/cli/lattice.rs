@@ -8,7 +8,8 @@
 //! scheme.
 
 use super::commands::out_text;
-use super::{AnalysisArgs, Command};
+use crate::cli::args::AnalysisArgs;
+use crate::cli::command_line::Command;
 use crate::curves::CurveScheme;
 use crate::error::Error;
 use crate::io::{print_json, write_atomic};

@@ -5,11 +5,12 @@
 //! vertex point = (Q + 2R + (n - 3) v) / n, Q = average of the adjacent face
 //!                points, R = average of the adjacent edge midpoints.
 
-use super::{Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
+use crate::schemes::entry::SchemeEntry;
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
+use crate::sdc::{Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeInfo};
 use crate::sdc::{Origin, RuleResult};
 
 pub struct CatmullClark {

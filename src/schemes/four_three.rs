@@ -33,11 +33,12 @@
 //! the edge at an eon is (σ−1)/σ (4b) + 1/σ (regular rule), after σ0 (4b) alone
 //! (section 2); the (4a') share is blended with the same factor (Lemma 3.8).
 
-use super::{Caps, CentreKind, MeshDomain, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
+use crate::schemes::entry::SchemeEntry;
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
+use crate::sdc::{Caps, CentreKind, MeshDomain, ParamSpec, Params, Rules, Scheme, SchemeInfo};
 use crate::sdc::{Origin, RuleResult};
 
 /// σ0 of section 2: the last refinement step that still blends (4b) with the

@@ -18,9 +18,9 @@
 //! Discussion section). They are separate names rather than a parameter because
 //! scheme parameters are numbers with a range, and the variant is a choice.
 
-use super::registry::LatticeEntry;
 use crate::lattice::{LatticeDomain, LatticeScheme, Parity, Point};
 use crate::numeric::Weight;
+use crate::schemes::entry::LatticeEntry;
 use crate::sdc::Rules;
 
 /// Weights given as integer numerators over a common denominator, with offsets

@@ -9,11 +9,11 @@
 //! is p_{2i,2j}, of a +i edge p_{2i+1,2j}, of a +j edge p_{2i,2j+1}, of a face
 //! p_{2i+1,2j+1} (with (i, j) the face's corner whose outgoing edge is +i).
 
-use super::{Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeInfo};
 use crate::lattice::{LatticeScheme, LatticeWeight};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Cyclotomic, Interval, Rational, SmallRational};
 use crate::sdc::Topology;
+use crate::sdc::{Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeInfo};
 use crate::sdc::{Origin, RuleResult, Stencil};
 
 pub struct LatticeOnMesh {

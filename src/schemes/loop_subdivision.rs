@@ -3,12 +3,13 @@
 //! vertex point: (1 - nβ) v + β Σ v_i,  β = (1/n) (5/8 - (3/8 + cos(2π/n)/4)^2)
 //! edge point:   3/8 (a + b) + 1/8 (c + d), c and d the opposite apexes
 
-use super::{Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Inexact;
 use crate::numeric::Weight;
+use crate::schemes::entry::SchemeEntry;
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
+use crate::sdc::{Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeInfo};
 use crate::sdc::{Origin, RuleResult};
 
 pub struct Loop {

@@ -13,11 +13,12 @@
 //! given, replaces a_k at every valence k ≠ 4 (vertices and k-gons); valence 4
 //! keeps 1/2 so that the regular part stays the spline.
 
-use super::{Caps, CentreKind, MeshDomain, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
+use crate::schemes::entry::SchemeEntry;
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
+use crate::sdc::{Caps, CentreKind, MeshDomain, ParamSpec, Params, Rules, Scheme, SchemeInfo};
 use crate::sdc::{Origin, RuleResult};
 
 pub struct NonBox {

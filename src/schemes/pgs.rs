@@ -19,12 +19,13 @@
 //! given, replace μ_n and λ_sub at every valence n ≠ 4 (valence 4 keeps the
 //! paper's values, which make a 4-gon's rules the biquadratic ones).
 
-use super::memo::WeightMemo;
-use super::{Caps, CentreKind, MeshDomain, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
+use crate::schemes::entry::SchemeEntry;
+use crate::schemes::memo::WeightMemo;
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
+use crate::sdc::{Caps, CentreKind, MeshDomain, ParamSpec, Params, Rules, Scheme, SchemeInfo};
 use crate::sdc::{Origin, RuleResult};
 use std::sync::Arc;
 

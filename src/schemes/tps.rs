@@ -35,12 +35,13 @@
 //! Valence 4 keeps the tensor-product rule, so regular regions stay the
 //! regular adjustable scheme.
 
-use super::memo::WeightMemo;
-use super::{Caps, CentreKind, MeshDomain, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
+use crate::schemes::entry::SchemeEntry;
+use crate::schemes::memo::WeightMemo;
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
+use crate::sdc::{Caps, CentreKind, MeshDomain, ParamSpec, Params, Rules, Scheme, SchemeInfo};
 use crate::sdc::{Origin, RuleResult};
 use std::sync::Arc;
 

@@ -16,12 +16,13 @@
 //! that. The expansions are implemented because they are the rules the paper
 //! states in full and because they reduce to Kobbelt's rules (1), (2) at α = 0.
 
-use super::memo::WeightMemo;
-use super::{Caps, CentreKind, MeshDomain, ParamSpec, Params, Rules, Scheme, SchemeEntry, SchemeInfo};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Inexact;
 use crate::numeric::Weight;
+use crate::schemes::entry::SchemeEntry;
+use crate::schemes::memo::WeightMemo;
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
+use crate::sdc::{Caps, CentreKind, MeshDomain, ParamSpec, Params, Rules, Scheme, SchemeInfo};
 use crate::sdc::{Origin, RuleResult, Stencil};
 use crate::sdc::{Topology, VertexParam};
 

@@ -14,12 +14,11 @@
 //! that derives a central point from the net. Regular part: the biquadratic
 //! B-spline (binary dual refinement of quads without central points).
 
-use super::{dual_split, Refined};
-use super::{RefinementHost, RegularSpline};
 use crate::error::Error;
 use crate::mesh::FaceId;
 use crate::mesh::SectorKind;
 use crate::mesh::{LatticeCoord, PolyMesh};
+use crate::sdc::host::{Refined, RefinementHost, RegularSpline};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::{Corner as C, Face as F};
 use crate::sdc::slots::Valence::{Any, Fixed};
@@ -29,6 +28,7 @@ use crate::sdc::slots::{
 };
 use crate::sdc::CentreKind;
 use crate::sdc::Origin;
+use crate::topology::dual_split;
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
     let base = dual_split::refine(mesh)?;

@@ -8,16 +8,16 @@
 
 use crate::mesh::IdMap;
 
-use super::{ChartBuilder, Refined};
-use super::{RefinementHost, RegularSpline};
 use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
+use crate::sdc::host::{Refined, RefinementHost, RegularSpline};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::Corner as C;
 use crate::sdc::slots::{canonical, fam, unsupported, Gather, Gathered, HostSpec, Part, RuleSlots, Wants, PER_J};
 use crate::sdc::CentreKind;
 use crate::sdc::Origin;
+use crate::topology::chart_builder::ChartBuilder;
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
     let mut origins = Vec::new();

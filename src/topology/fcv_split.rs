@@ -17,12 +17,11 @@
 
 use crate::mesh::IdMap;
 
-use super::{ChartBuilder, Refined};
-use super::{RefinementHost, RegularSpline};
 use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
 use crate::mesh::VertexId;
+use crate::sdc::host::{Refined, RefinementHost, RegularSpline};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::{Corner as C, Edge as E, Face as F, Vertex as V};
 use crate::sdc::slots::Valence::{Any, Fixed};
@@ -31,6 +30,7 @@ use crate::sdc::slots::{
 };
 use crate::sdc::CentreKind;
 use crate::sdc::Origin;
+use crate::topology::chart_builder::ChartBuilder;
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
     if !mesh.has_face_point_on_every_face() {

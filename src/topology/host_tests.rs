@@ -1,8 +1,8 @@
 //! Test meshes and the checks every host's own tests run on what its file
 //! states (the tests themselves sit beside each host, in its file).
 
-use super::{Host, Registry, RegularSpline};
 use crate::mesh::PolyMesh;
+use crate::sdc::host::{Host, Registry, RegularSpline};
 use crate::sdc::slots::{OriginKind, Wants};
 
 /// Grid point (i, j) of an m × n torus.

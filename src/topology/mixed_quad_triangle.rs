@@ -7,10 +7,9 @@
 //! A_4 (or bicubic) over quads, the three-direction quartic box spline over
 //! triangles.
 
-use super::primal_split;
-use super::{Refined, RefinementHost, RegularSpline, TriangleSplit};
 use crate::error::Error;
 use crate::mesh::{PolyMesh, SectorKind, VertexId};
+use crate::sdc::host::{Refined, RefinementHost, RegularSpline, TriangleSplit};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::{Edge as E, Face as F, Vertex as V};
 use crate::sdc::slots::Valence::{Any, Fixed};
@@ -19,6 +18,7 @@ use crate::sdc::slots::{
     Gather, GatherError, Gathered, HostSpec, NodeType, Part, RuleSlots, Wants, ONE, PER_J, QUAD_VERTEX, TRI_VERTEX,
 };
 use crate::sdc::{CentreKind, Origin};
+use crate::topology::primal_split;
 
 pub struct MixedQuadTriangle;
 

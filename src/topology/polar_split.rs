@@ -22,11 +22,10 @@
 
 use crate::mesh::IdMap;
 
-use super::{ChartBuilder, Refined};
-use super::{RefinementHost, RegularSpline};
 use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
+use crate::sdc::host::{Refined, RefinementHost, RegularSpline};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::{Edge as E, Vertex as V};
 use crate::sdc::slots::Valence::{Any, Fixed};
@@ -35,6 +34,7 @@ use crate::sdc::slots::{
 };
 use crate::sdc::CentreKind;
 use crate::sdc::Origin;
+use crate::topology::chart_builder::ChartBuilder;
 
 /// A pole: an interior vertex whose faces are all triangles.
 pub fn is_pole(mesh: &PolyMesh, v: usize) -> bool {

@@ -7,10 +7,9 @@
 //! n-gon. Regular part: the bicubic B-spline or the four-direction box spline
 //! A_4 (binary primal refinement of quads).
 
-use super::primal_split::{self, primal_edge};
-use super::{Refined, RefinementHost, RegularSpline, TriangleSplit};
 use crate::error::Error;
 use crate::mesh::{PolyMesh, SectorKind, VertexId};
+use crate::sdc::host::{Refined, RefinementHost, RegularSpline, TriangleSplit};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::{Edge as E, Face as F, Vertex as V};
 use crate::sdc::slots::Valence::{Any, Fixed};
@@ -19,6 +18,7 @@ use crate::sdc::slots::{
     GatherError, Gathered, HostSpec, Part, RuleSlots, Wants, ONE, PER_J, QUAD_VERTEX,
 };
 use crate::sdc::{CentreKind, Origin};
+use crate::topology::primal_split::{self, primal_edge};
 
 pub struct PrimalQuad;
 

@@ -6,11 +6,12 @@
 
 use crate::mesh::IdMap;
 
-use super::{ChartBuilder, Refined, TriangleSplit};
 use crate::error::Error;
 use crate::mesh::{PolyMesh, VertexId};
+use crate::sdc::host::{Refined, TriangleSplit};
 use crate::sdc::slots::{ev_part, sized, Gather, GatherError, Gathered, Part, Wants};
 use crate::sdc::Origin;
+use crate::topology::chart_builder::ChartBuilder;
 
 pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, Error> {
     let nv = mesh.num_vertices();

@@ -6,10 +6,9 @@
 //! three-direction quartic box spline (binary primal refinement of
 //! triangles) where the rules are Loop's.
 
-use super::primal_split::{self, primal_edge};
-use super::{Refined, RefinementHost, RegularSpline, TriangleSplit};
 use crate::error::Error;
 use crate::mesh::{PolyMesh, SectorKind};
+use crate::sdc::host::{Refined, RefinementHost, RegularSpline, TriangleSplit};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::{Edge as E, Vertex as V};
 use crate::sdc::slots::Valence::{Any, Fixed};
@@ -18,6 +17,7 @@ use crate::sdc::slots::{
     TRI_VERTEX,
 };
 use crate::sdc::{CentreKind, Origin};
+use crate::topology::primal_split::{self, primal_edge};
 
 pub struct PrimalTriangle;
 

@@ -17,12 +17,11 @@
 //! step (the lattice turns back); no box spline: a triangle ring is bounded
 //! by the difference scheme (`certify::difference`).
 
-use super::{ChartBuilder, Refined};
-use super::{RefinementHost, RegularSpline};
 use crate::error::Error;
 use crate::mesh::FaceId;
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
+use crate::sdc::host::{Refined, RefinementHost, RegularSpline};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::{Face as F, Vertex as V};
 use crate::sdc::slots::Valence::Any;
@@ -32,6 +31,7 @@ use crate::sdc::slots::{
 };
 use crate::sdc::CentreKind;
 use crate::sdc::Origin;
+use crate::topology::chart_builder::ChartBuilder;
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
     let nv = mesh.num_vertices();

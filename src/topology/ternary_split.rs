@@ -16,11 +16,10 @@
 
 use crate::mesh::IdMap;
 
-use super::{ChartBuilder, Refined};
-use super::{RefinementHost, RegularSpline};
 use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
+use crate::sdc::host::{Refined, RefinementHost, RegularSpline};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::{Corner as C, Edge as E, Vertex as V};
 use crate::sdc::slots::Valence::{Any, Fixed};
@@ -30,6 +29,7 @@ use crate::sdc::slots::{
 };
 use crate::sdc::CentreKind;
 use crate::sdc::Origin;
+use crate::topology::chart_builder::ChartBuilder;
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
     if let Some(f) = (0..mesh.num_faces()).find(|&f| mesh.face(f).len() != 4) {

@@ -3,7 +3,7 @@
 
 use crate::curves::{CurveDomain, CurveMask, CurveScheme};
 use crate::numeric::{Inexact, Weight};
-use crate::schemes::registry::CurveEntry;
+use crate::schemes::entry::CurveEntry;
 use crate::sdc::Params;
 use crate::sdc::Rules;
 

@@ -8,9 +8,9 @@
 //! side from the B-spline's own rules (no weight is restated), so comparing it
 //! with a four-point step tests the paper's claim.
 
-use super::cubic_bspline;
 use crate::curves::{refine_closed, CurveWeight};
 use crate::numeric::Inexact;
+use crate::schemes::curves::cubic_bspline;
 
 /// A refined closed polygon built by relation (3): old points kept at even
 /// positions, P^3_i at odd positions. Compare with a four-point step.

@@ -12,7 +12,7 @@
 
 use crate::curves::{CurveDomain, CurveMask, CurveScheme};
 use crate::numeric::{Inexact, Weight};
-use crate::schemes::registry::CurveEntry;
+use crate::schemes::entry::CurveEntry;
 use crate::sdc::Rules;
 use crate::sdc::{ParamSpec, Params};
 

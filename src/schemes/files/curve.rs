@@ -26,12 +26,14 @@ use std::collections::BTreeMap;
 use serde::Deserialize;
 use toml::Spanned;
 
-use super::MAX_FILE_BYTES;
-use super::{evaluate, intern, line_of, not_affine, offset_key, rule_terms, toml_error, Head, ParamDoc, Section, Term};
 use crate::curves::{CurveDomain, CurveMask, CurveScheme};
 use crate::error::Error;
 use crate::numeric::{Inexact, Rational};
-use crate::schemes::Params;
+use crate::schemes::files::shared_format::MAX_FILE_BYTES;
+use crate::schemes::files::shared_format::{
+    evaluate, intern, line_of, not_affine, offset_key, rule_terms, toml_error, Head, ParamDoc, Section, Term,
+};
+use crate::sdc::Params;
 use crate::sdc::Rules;
 
 #[derive(Deserialize)]

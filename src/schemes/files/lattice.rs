@@ -25,15 +25,15 @@ use std::collections::BTreeMap;
 use serde::Deserialize;
 use toml::Spanned;
 
-use super::MAX_FILE_BYTES;
-use super::{
-    evaluate, field_error, intern, line_of, not_affine, offset_key, rule_terms, toml_error, Head, ParamDoc, Section,
-    Term,
-};
 use crate::error::Error;
 use crate::lattice::{LatticeDomain, LatticeScheme, Parity, Point};
 use crate::numeric::{Rational, Weight};
-use crate::schemes::Params;
+use crate::schemes::files::shared_format::MAX_FILE_BYTES;
+use crate::schemes::files::shared_format::{
+    evaluate, field_error, intern, line_of, not_affine, offset_key, rule_terms, toml_error, Head, ParamDoc, Section,
+    Term,
+};
+use crate::sdc::Params;
 use crate::sdc::Rules;
 
 /// The section names of the masks, indexed [α][β].

@@ -12,15 +12,15 @@ use toml::Spanned;
 use super::weights::eval_f64;
 use crate::numeric::expr::{Env, Expr};
 use crate::numeric::ParamValue;
-use crate::schemes::files::{
-    line_of, parameter_env, parameter_table, read_scheme_file, substitute, ParamDoc, WeightSite,
+use crate::schemes::files::shared_format::{
+    line_of, parameter_env, parameter_table, read_scheme_file, substitute, ParamDoc, UserParam, WeightSite,
 };
 use crate::sdc::slots::{Arity, Host, HostSpec, OriginKind, RuleSlots, Valence, HOSTS};
 
-// the caps every scheme file has (one place: `schemes::files`)
+// the caps every scheme file has (one place: `schemes::files::shared_format`)
 use crate::error::Error;
-use crate::schemes::files::{MAX_DESCRIPTION_CHARS, MAX_NAME_CHARS};
-pub use crate::schemes::files::{MAX_EXPR_CHARS, MAX_FILE_BYTES};
+use crate::schemes::files::shared_format::{MAX_DESCRIPTION_CHARS, MAX_NAME_CHARS};
+pub use crate::schemes::files::shared_format::{MAX_EXPR_CHARS, MAX_FILE_BYTES};
 /// Most refinement steps an extraordinary edge rule may be blended over.
 const MAX_BLEND_LEVELS: i64 = 12;
 /// Valences (and face sizes) at which weights are checked at load time.
@@ -118,20 +118,6 @@ pub(super) struct RuleDef {
     pub spec: &'static RuleSlots,
     pub line: usize,
     pub fields: Vec<Field>,
-}
-
-#[derive(Clone, Debug)]
-pub struct UserParam {
-    pub name: String,
-    /// the default value; empty text (and no value) when `rule` is the default
-    pub default: ParamValue,
-    /// a default that is an expression in the valence n (a built-in's
-    /// "scheme rule" default): the parameter is absent until given, and the
-    /// expression stands in for it in every weight
-    pub rule: Option<Expr>,
-    pub min: f64,
-    pub max: f64,
-    pub description: String,
 }
 
 /// A parsed scheme file, before parameter values are fixed.
@@ -439,7 +425,7 @@ impl Cx<'_> {
             ));
         }
         // output and claims identify schemes by name: a file must not pass for a built-in
-        if crate::schemes::known_names().contains(&name.as_str()) {
+        if crate::schemes::builtins::known_names().contains(&name.as_str()) {
             return Err(self.err(
                 self.line(doc_name.span()),
                 "name",

@@ -33,11 +33,12 @@ mod weights;
 
 use std::path::Path;
 
-pub use file::{load_def, UserParam, UserSchemeDef, MAX_EXPR_CHARS, MAX_FILE_BYTES};
+pub use crate::schemes::files::shared_format::UserParam;
+pub use file::{load_def, UserSchemeDef, MAX_EXPR_CHARS, MAX_FILE_BYTES};
 pub use rules::UserScheme;
 
-use super::Scheme;
 use crate::error::Error;
+use crate::sdc::Scheme;
 
 /// Load a scheme file with `name=value` parameter overrides.
 pub fn load(path: &Path, overrides: &[(String, String)]) -> Result<Box<dyn Scheme>, Error> {

@@ -10,10 +10,10 @@ use super::weights::WeightTable;
 use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::numeric::{Inexact, Weight};
-use crate::schemes::files::{given_values, intern};
-use crate::schemes::{Caps, MeshDomain, Params, Rules, Scheme, SchemeInfo};
+use crate::schemes::files::shared_format::{given_values, intern};
 use crate::sdc::slots::{weigh, Arity, Host, Mask, Slot, Wants};
 use crate::sdc::VertexParam;
+use crate::sdc::{Caps, MeshDomain, Params, Rules, Scheme, SchemeInfo};
 use crate::sdc::{Origin, RuleResult, Stencil};
 
 /// What all refinement levels of one built file share.

@@ -1,0 +1,303 @@
+//! The subcommands: `verify` first, the analysis commands through the front
+//! door (`front_door`), and every other command here.
+
+use crate::cli::args::SweepArgs;
+use crate::cli::command_line::Command;
+use crate::cli::commands::{out_text, parse_params};
+use crate::error::Error;
+use crate::io::print_json;
+use crate::schemes;
+
+/// Runs a command; Ok holds the exit status: 0, or 1 from a command whose
+/// verdict did not hold (`verify`: a claim not as required; `spectrum
+/// --certify`, `charmap --certify`: not proved unconditionally).
+pub fn dispatch(cmd: Command) -> Result<i32, Error> {
+    if let Command::Verify { paper, claims, json, junit, check_expected, certificates, slowest } = cmd {
+        let opts = super::verify::VerifyOptions { json, junit, check_expected, certificates, slowest };
+        return super::verify::run(paper, &claims, &opts);
+    }
+    // the analysis commands: one front door resolves the scheme and routes it by its domain
+    if let Some(result) = super::front_door::dispatch(&cmd) {
+        return result;
+    }
+    dispatch_other(cmd).map(|()| 0)
+}
+
+fn dispatch_other(cmd: Command) -> Result<(), Error> {
+    match cmd {
+        Command::Verify { .. } => unreachable!("verify is dispatched first"),
+        Command::Spectrum { .. }
+        | Command::Stencils(_)
+        | Command::Matrix { .. }
+        | Command::Charmap(_)
+        | Command::Curvature(_) => unreachable!("the analysis commands go through the front door"),
+        Command::Sweep(a) => sweep(&a),
+        Command::Report { out } => {
+            crate::report::check_destination(&out)?;
+            let files = crate::report::build()?;
+            crate::report::write(&out, &files)?;
+            out_text(&format!("wrote {} files to {}\n", files.len(), out.display()))
+        }
+        Command::Schemes { files, json } => list_schemes(&files, json),
+        Command::Refine { mesh, scheme, levels, params, output, fcv_scale, four_directional, vertex_params } => {
+            let opts = super::mesh_commands::MeshOptions { fcv_scale, four_directional, vertex_params };
+            super::mesh_commands::refine(&mesh, &scheme, levels, &params, &output, &opts)
+        }
+        Command::Curve { scheme, params, neighbourhood, json } => {
+            super::mesh_commands::curve(&scheme, &params, &neighbourhood, json)
+        }
+        Command::Plot { what } => super::charmap_commands::plot(&what),
+    }
+}
+
+fn list_schemes(files: &[std::path::PathBuf], json: bool) -> Result<(), Error> {
+    #[derive(serde::Serialize)]
+    struct Param {
+        name: String,
+        /// empty when the scheme's own rule applies
+        default: String,
+        min: f64,
+        max: f64,
+        description: String,
+    }
+    #[derive(serde::Serialize)]
+    struct Entry {
+        name: String,
+        description: String,
+        /// the file a user scheme was read from, and the topology it names
+        file: Option<String>,
+        topology: Option<&'static str>,
+        params: Vec<Param>,
+    }
+    let builtin = |p: crate::schemes::ParamSpec| Param {
+        name: p.name.into(),
+        default: p.default.into(),
+        min: p.min,
+        max: p.max,
+        description: p.description.into(),
+    };
+    let list: Vec<Entry> = if files.is_empty() {
+        // every family from the one registry: mesh, then lattice, then curve schemes
+        schemes::registry::entries()
+            .into_iter()
+            .map(|e| Entry {
+                name: e.name().into(),
+                description: e.description().into(),
+                file: None,
+                topology: None,
+                params: e.params().into_iter().map(builtin).collect(),
+            })
+            .collect()
+    } else {
+        files
+            .iter()
+            .map(|f| {
+                let def = crate::schemes::files::describe(f)?;
+                Ok(Entry {
+                    name: def.name,
+                    description: def.description,
+                    file: Some(f.display().to_string()),
+                    topology: Some(def.topology),
+                    params: def
+                        .params
+                        .into_iter()
+                        .map(|p| Param {
+                            name: p.name,
+                            default: p.default.text,
+                            min: p.min,
+                            max: p.max,
+                            description: p.description,
+                        })
+                        .collect(),
+                })
+            })
+            .collect::<Result<_, Error>>()?
+    };
+    if json {
+        return print_json(&list);
+    }
+    let w = list.iter().map(|e| e.name.chars().count() + 1).max().unwrap_or(0).max(16);
+    let mut text = String::new();
+    // names and descriptions come from files: shown with control characters escaped
+    let shown = crate::io::printable;
+    for e in &list {
+        text += &format!("{:<w$} {}\n", shown(&e.name), shown(&e.description));
+        if let (Some(f), Some(t)) = (&e.file, e.topology) {
+            text += &format!("{:<w$} file {}, topology {t}\n", "", shown(f));
+        }
+        if e.params.is_empty() {
+            text += &format!("{:<w$} (no parameters)\n", "");
+        }
+        for p in &e.params {
+            let default = if p.default.is_empty() { "(scheme rule)" } else { p.default.as_str() };
+            text += &format!(
+                "{:<w$} --param {}=VALUE  default {}  range [{}, {}]  {}\n",
+                "",
+                shown(&p.name),
+                shown(default),
+                p.min,
+                p.max,
+                shown(&p.description)
+            );
+        }
+    }
+    out_text(&text)
+}
+
+fn sweep(args: &SweepArgs) -> Result<(), Error> {
+    use crate::sweep::{admissible, convergent, run_on, Grid};
+    let (scheme, json, csv) = (args.scheme.as_str(), args.json, args.csv);
+    if json && csv {
+        return Err(Error::Input("choose one of --json and --csv".into()));
+    }
+    if args.plot.is_some() && !args.curvature && !args.params.iter().any(|p| p.contains(':')) {
+        return Err(Error::Input(
+            "--plot needs a swept parameter NAME=START:END:STEP or --curvature (for valences alone use \
+             `plot spectrum`)"
+                .into(),
+        ));
+    }
+    if !args.bounds.is_empty() && args.plot.is_none() {
+        return Err(Error::Input("--bound is drawn on the figure; give --plot FILE.svg too".into()));
+    }
+    if args.figure.is_set() && args.plot.is_none() {
+        return Err(Error::Input("the style flags shape the figure; give --plot FILE.svg|pdf|png too".into()));
+    }
+    if let Some(path) = &args.plot {
+        super::charmap_commands::check_out(path)?;
+    }
+    let style = args.figure.style()?;
+    if !args.charmap && (args.levels.is_some() || args.resolution.is_some()) {
+        return Err(Error::Input(
+            "--levels and --resolution set the characteristic-map check; give --charmap too".into(),
+        ));
+    }
+    let mut grid =
+        Grid::parse(scheme, &args.valences, args.faces.as_deref(), &parse_params(&args.params)?, args.charmap)?;
+    grid.set_charmap_options(args.levels, args.resolution)?;
+    grid.curvature = args.curvature;
+    let bounds = crate::plot::sweep::Bound::all_of(&grid, &args.bounds)?;
+    let total = grid.len();
+    // indicatif draws only when standard error is a terminal
+    let bar = indicatif::ProgressBar::new(total as u64);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} points, eta {eta}")
+            .map_err(|e| Error::Message(e.to_string()))?
+            .progress_chars("=> "),
+    );
+    // under a pipe (CI, a notebook) the bar draws nothing: a plain line at
+    // most every 10 seconds (SUBDLAB_PROGRESS_SECONDS) says the sweep is
+    // alive and how far it got
+    let plain = !std::io::IsTerminal::is_terminal(&std::io::stderr());
+    let every = std::env::var("SUBDLAB_PROGRESS_SECONDS")
+        .ok()
+        .and_then(|s| s.trim().parse::<f64>().ok())
+        .filter(|s| s.is_finite() && *s >= 0.0)
+        .map_or(std::time::Duration::from_secs(10), std::time::Duration::from_secs_f64);
+    let started = std::time::Instant::now();
+    let last_line = std::sync::Mutex::new(started);
+    let progress = |done: usize, total: usize| {
+        bar.set_position(done as u64);
+        if plain {
+            let mut last = last_line.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+            if last.elapsed() >= every {
+                eprintln!("sweep: {done}/{total} points after {:.0} s", started.elapsed().as_secs_f64());
+                *last = std::time::Instant::now();
+            }
+        }
+    };
+    let points = run_on(&grid, args.threads as usize, &progress)?;
+    bar.finish_and_clear();
+    let intervals = admissible(&points);
+    let converging = convergent(&points);
+    if let Some(path) = &args.plot {
+        let name = grid.param.as_ref().map(|p| p.0.as_str());
+        let mut fig = crate::plot::sweep::SweepFigure::new(scheme, name, &points, grid.charmap, bounds)?;
+        fig.style = style;
+        crate::plot::save(&fig, path)?;
+    }
+    if json {
+        #[derive(serde::Serialize)]
+        struct Out<'a> {
+            scheme: &'a str,
+            parameter: Option<&'a str>,
+            points: &'a [crate::sweep::Point],
+            admissible: &'a [crate::sweep::Interval],
+            convergent: &'a [crate::sweep::Interval],
+        }
+        let parameter = grid.param.as_ref().map(|p| p.0.as_str());
+        return print_json(&Out {
+            scheme,
+            parameter,
+            points: &points,
+            admissible: &intervals,
+            convergent: &converging,
+        });
+    }
+    let name = grid.param.as_ref().map(|p| p.0.clone()).unwrap_or_default();
+    // one row of cells per point; CSV joins them (the error, then the
+    // columns added later, so the older columns keep their positions), the
+    // table pads them
+    const WIDTHS: [usize; 11] = [7, 10, 14, 14, 14, 14, 5, 5, 8, 14, 10];
+    let mut text = String::new();
+    let mut print_row = |cells: &[String], error: &str, added: &[String]| {
+        if csv {
+            text += &format!("{},{},{}\n", cells.join(","), error.replace(',', ";"), added.join(","));
+        } else {
+            let all = cells.iter().chain(added);
+            let padded: Vec<String> = all.zip(WIDTHS).map(|(c, w)| format!("{c:>w$}")).collect();
+            let note = if error.is_empty() { String::new() } else { format!("  ({error})") };
+            text += &format!("{}{note}\n", padded.join(" "));
+        }
+    };
+    if csv {
+        print_row(
+            &[format!("valence,{name},lambda0,lambda1,lambda2,lambda3,convergent,c1_spectral,charmap")],
+            "error",
+            &["curvature_class,lp_limit".into()],
+        );
+    } else {
+        let head = ["valence", name.as_str(), "|λ0|", "|λ1|", "|λ2|", "|λ3|", "conv", "C1", "charmap"];
+        // the table shows the curvature columns only when they were computed
+        let added: &[String] = if grid.curvature { &["curvature".into(), "L_p: p <".into()] } else { &[] };
+        print_row(&head.map(String::from), "", added);
+    }
+    for p in &points {
+        let l = |k: usize| p.lambda.get(k).map(|x| crate::spectrum::fmt_f(*x)).unwrap_or_default();
+        let cells = [
+            p.valence.to_string(),
+            p.param.clone().unwrap_or_default(),
+            l(0),
+            l(1),
+            l(2),
+            l(3),
+            p.convergent.to_string(),
+            p.c1_spectral.to_string(),
+            p.charmap.map(|b| b.to_string()).unwrap_or_default(),
+        ];
+        // CSV: the L_p limit in full precision, empty for "every finite p" or
+        // not computed; the table reads "any" for every finite p
+        let lp = match (p.curvature_class, p.lp_limit) {
+            (_, Some(x)) if csv => format!("{x}"),
+            (_, Some(x)) => crate::spectrum::fmt_f(x),
+            (Some(c), None) if !csv && c != crate::curvature::CurvatureClass::NotApplicable => "any".into(),
+            _ => String::new(),
+        };
+        let added = [p.curvature_class.map(|c| c.name().to_string()).unwrap_or_default(), lp];
+        print_row(&cells, p.error.as_deref().unwrap_or_default(), if csv || grid.curvature { &added } else { &[] });
+    }
+    if !csv && grid.param.is_some() {
+        // runs of grid points, not intervals: the true ends lie between a
+        // run's end and the next grid point
+        let step = grid.step();
+        for (what, list) in
+            [("convergent (λ0 = 1 simple and dominant)", &converging), ("admissible (every computed test)", &intervals)]
+        {
+            text += &format!("\ngrid points of {name} where the scheme is {what}:\n");
+            for i in list {
+                text += &format!("  valence {:>4}: {}\n", i.valence, i.grid_points(step.as_deref()));
+            }
+        }
+    }
+    out_text(&text)
+}

@@ -1,0 +1,213 @@
+//! The analysis commands on the mesh pipeline (the front door's mesh route):
+//! `spectrum` (and `--certify`), `stencils`, `matrix`, `charmap`, `curvature`.
+
+use crate::cli::args::AnalysisArgs;
+use crate::cli::command_line::Command;
+use crate::cli::commands::{
+    certified_status, configuration, kind_name, matrix_format, out_text, spectrum_table, stencil_table,
+};
+use crate::error::Error;
+use crate::io::{print_json, write_atomic};
+use crate::matrix::export::{to_matrix_market, MatrixJson};
+use crate::neighbourhood::NeighbourhoodKind;
+use crate::schemes::Scheme;
+use crate::spectrum::stencils::stencils;
+use crate::spectrum::{analyse, Analysis, Method, Options, Spectrum};
+
+/// An analysis command on the mesh pipeline, with the scheme the front door
+/// resolved (a mesh scheme, or a lattice scheme on oriented quad meshes).
+/// Ok holds the exit status.
+pub(super) fn mesh_analysis(cmd: &Command, scheme: Box<dyn Scheme>) -> Result<i32, Error> {
+    match cmd {
+        Command::Spectrum { common: a, certify: true, certificate } => {
+            certified_spectrum(a, scheme, certificate.as_deref())
+        }
+        Command::Charmap(a) => super::charmap_commands::charmap(a, scheme),
+        Command::Curvature(a) => super::curvature::run(a, scheme).map(|()| 0),
+        Command::Spectrum { common: a, certify: false, .. } => {
+            let (_, analysis) = run_analysis(a, scheme)?;
+            if a.json {
+                print_json(&analysis.spectrum)?;
+            } else {
+                out_text(&spectrum_table(&analysis.spectrum))?;
+            }
+            Ok(0)
+        }
+        Command::Stencils(a) => {
+            let (_, analysis) = run_analysis(a, scheme)?;
+            let st = stencils(&analysis.spectrum)?;
+            if a.json {
+                print_json(&st)?;
+            } else {
+                out_text(&stencil_table(&st))?;
+            }
+            Ok(0)
+        }
+        Command::Matrix { common, format, output } => {
+            let format = matrix_format(format.as_deref(), common.json)?;
+            let (scheme, analysis) = run_analysis(common, scheme)?;
+            let text = match format {
+                "mtx" => to_matrix_market(
+                    &analysis.matrix,
+                    &format!(
+                        "subdlab local subdivision matrix: scheme {} valence {} faces {} neighbourhood {}",
+                        scheme.name(),
+                        common.config.valence,
+                        analysis.spectrum.faces,
+                        kind_name(analysis.spectrum.neighbourhood)
+                    ),
+                ),
+                "json" => {
+                    let m = &analysis.matrix;
+                    let j = MatrixJson {
+                        scheme: scheme.name(),
+                        valence: common.config.valence,
+                        neighbourhood: m.kind,
+                        size: m.size(),
+                        labels: m.labels.iter().map(|l| l.name.as_str()).collect(),
+                        vertices: &m.labels,
+                        matrix: m.to_dense_f64(),
+                        exact: analysis.exact_matrix.as_ref().map(|q| {
+                            (0..q.size()).map(|i| (0..q.size()).map(|j| q.get(i, j).to_string()).collect()).collect()
+                        }),
+                    };
+                    crate::io::json_text(&j)? + "\n"
+                }
+                other => return Err(Error::Input(format!("unknown matrix format '{other}'; use mtx or json"))),
+            };
+            match output {
+                Some(p) => write_atomic(p, text.as_bytes())?,
+                None => out_text(&text)?,
+            }
+            Ok(0)
+        }
+        _ => Err(Error::Input("not an analysis command".into())),
+    }
+}
+
+fn run_analysis(a: &AnalysisArgs, scheme: Box<dyn Scheme>) -> Result<(Box<dyn Scheme>, Analysis), Error> {
+    let config = configuration(scheme.as_ref(), &a.config)?;
+    let neighbourhood: NeighbourhoodKind = a.neighbourhood.parse()?;
+    let method = match a.method.as_deref() {
+        None => None,
+        Some("dft") => Some(Method::Dft),
+        Some("full") => Some(Method::Full),
+        Some(m) => return Err(Error::Input(format!("unknown method '{m}'; use dft or full"))),
+    };
+    if method == Some(Method::Dft) && config.symmetry_period() == config.valence() {
+        return Err(Error::Input("this configuration has no rotation symmetry; use --method full".into()));
+    }
+    let opts = Options { neighbourhood, method, exact: !a.no_exact };
+    let analysis = analyse(scheme.as_ref(), &config, &opts)?;
+    Ok((scheme, analysis))
+}
+
+/// `spectrum --certify`: the floating-point spectrum and, beside it, the
+/// certificate (`certify::spectrum`) from the same discovery and labels.
+/// `spectrum --certify`: the table and the certificate; Ok holds the exit
+/// status ([`certified_status`]).
+fn certified_spectrum(
+    a: &AnalysisArgs,
+    scheme: Box<dyn Scheme>,
+    document: Option<&std::path::Path>,
+) -> Result<i32, Error> {
+    let (scheme, analysis) = run_analysis(a, scheme)?;
+    let certificate = crate::certify::certify_analysis(scheme.as_ref(), &analysis)?;
+    if let Some(path) = document {
+        crate::certify::export::write_spectrum(path, scheme.as_ref(), &analysis, &certificate)?;
+    }
+    if a.json {
+        #[derive(serde::Serialize)]
+        struct Certified<'a> {
+            #[serde(flatten)]
+            spectrum: &'a Spectrum,
+            certificate: &'a crate::certify::SpectrumCertificate,
+        }
+        print_json(&Certified { spectrum: &analysis.spectrum, certificate: &certificate })?;
+    } else {
+        out_text(&format!("{}\n{}", spectrum_table(&analysis.spectrum), certificate_table(&certificate)))?;
+    }
+    Ok(certified_status(&certificate.verdict, certificate.conditional))
+}
+
+/// The certificate as text: the verdict, the premises and the margins.
+pub(super) fn certificate_table(c: &crate::certify::SpectrumCertificate) -> String {
+    use crate::certify::matrix::Check;
+    let mut out = format!(
+        "certified spectral C1 conditions: {}{}\n",
+        c.verdict.display(),
+        if c.conditional { ", given the premises marked 'identity' below" } else { "" }
+    );
+    out += &format!("  statement: {}\n", c.statement);
+    out += "  (the floating-point table above observes; where it disagrees with this certificate, the certificate \
+            decides)\n";
+    if let Some(p) = &c.premises {
+        let field = p.field.as_deref().unwrap_or("Q");
+        let show = |x: &Check| match x {
+            Check::Exact => format!("exact, in {field}"),
+            Check::Overlap => "identity of the rules' formulas, confirmed to interval overlap only".to_string(),
+            Check::Fails(w) => format!("fails: {w}"),
+        };
+        out += &format!("  premise row sums = 1: {}\n", show(&p.row_sums_one));
+        out += &format!("  premise mirror symmetry: {}\n", show(&p.mirror_symmetry));
+        out += &format!("  premise rotation symmetry: {}\n", show(&p.rotation_symmetry));
+    }
+    if let Some(e) = &c.exact_route {
+        let lambda1 = e.lambda1.as_deref().unwrap_or("-");
+        out += &if e.proved {
+            format!(
+                "  exact route (lemma S7): det(xI − S) over Q ({} × {}): 1 simple, λ1 = {lambda1} a double root with \
+                 a two-dimensional eigenspace, the other {} roots inside |x| < {} (Schur–Cohn)\n",
+                e.size,
+                e.size,
+                e.cofactor_degree,
+                e.others_below.as_deref().unwrap_or("-")
+            )
+        } else if e.one_multiplicity != 1 {
+            format!(
+                "  exact route (lemma S7): det(xI − S) over Q ({} × {}): 1 is a root of multiplicity {}\n",
+                e.size, e.size, e.one_multiplicity
+            )
+        } else {
+            format!(
+                "  exact route (lemma S7): det(xI − S) over Q ({} × {}): λ1 = {lambda1} dominant (the other {} roots \
+                 inside |x| < {lambda1}, Schur–Cohn), of algebraic multiplicity {} and geometric multiplicity {}\n",
+                e.size, e.size, e.cofactor_degree, e.algebraic, e.geometric
+            )
+        };
+    }
+    let m = &c.margins;
+    let f = |x: Option<f64>| x.map_or("-".to_string(), |v| format!("{v:.12e}"));
+    if let Some(l) = m.lambda0 {
+        out += &format!("  λ0 ∈ [{:.15}, {:.15}]\n", l.lo, l.hi);
+    }
+    if let Some(l) = m.lambda1 {
+        out += &format!("  λ1 ∈ [{:.15}, {:.15}]\n", l.lo, l.hi);
+    }
+    out += &format!(
+        "  max |other eigenvalue| ≤ {}; gap λ1 − max|other| ≥ {}\n  largest disc radius {:.3e} (λ0, λ1: {}); widest block entry {:.3e}\n",
+        f(m.others_max_modulus),
+        f(m.gap_lower_bound),
+        m.max_radius,
+        f(m.lambda_radius),
+        m.max_entry_width
+    );
+    for &b in &m.power_bounded {
+        if let Some(p) = c.blocks.iter().find(|e| e.block == b).and_then(|e| e.power_bound) {
+            out += &format!(
+                "  block {b} by lemma S6 (no eigenvectors): ρ ≤ ‖B^{}‖∞^(1/{}) ≤ {:.9} (‖B^{}‖∞ ≤ {:.6e})\n",
+                p.k, p.k, p.radius, p.k, p.norm
+            );
+        }
+    }
+    if let Some(w) = &c.witness {
+        out += &format!(
+            "  witness: block {}, {} eigenvalue(s) with modulus in [{:.12}, {:.12}]\n",
+            w.block,
+            w.component.count,
+            w.component.min_modulus(),
+            w.component.max_modulus()
+        );
+    }
+    out
+}
