@@ -26,6 +26,8 @@ pub mod polar_bi2;
 // and files (`registry`)
 pub mod builtins;
 pub mod registry;
+// where each analysis runs, by the scheme's domain (the CLI and the claims)
+pub mod route;
 // mesh schemes by name or file (`build`, `resolve`, ...), re-exported here
 pub mod lookup;
 pub mod tps;

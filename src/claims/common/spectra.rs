@@ -16,7 +16,8 @@ use crate::error::Error;
 use crate::lattice;
 use crate::neighbourhood::{Configuration, NeighbourhoodKind, VertexKind};
 use crate::schemes;
-use crate::schemes::registry::{self, Family};
+use crate::schemes::registry::{self, Built};
+use crate::schemes::route::{refusal, route, space, Analysis, Route};
 use crate::spectrum::{analyse_shared, Options, Spectrum};
 
 #[derive(Default)]
@@ -96,27 +97,46 @@ pub fn kind_of(s: &Subject) -> Result<NeighbourhoodKind, Error> {
 /// The scheme (with parameters evaluated at valence n) and configuration.
 pub fn subject_config(s: &Subject, n: usize) -> Result<(Box<dyn schemes::Scheme>, Configuration), Error> {
     let scheme = schemes::resolve(&s.scheme, &subject_params(s, n)?)?;
-    let config = match s.faces_for(n) {
-        Some(f) => Configuration::with_faces(scheme.as_ref(), n, f)?,
-        None => Configuration::regular(scheme.as_ref(), n)?,
-    };
+    let config = configuration(s, scheme.as_ref(), n)?;
     Ok((scheme, config))
+}
+
+/// The subject's configuration at valence n: its face sequence, or regular.
+fn configuration(s: &Subject, scheme: &dyn schemes::Scheme, n: usize) -> Result<Configuration, Error> {
+    match s.faces_for(n) {
+        Some(f) => Configuration::with_faces(scheme, n, f),
+        None => Configuration::regular(scheme, n),
+    }
 }
 
 fn compute(s: &Subject, n: usize) -> Result<Spectrum, Error> {
     let kind = kind_of(s)?;
-    // lattice schemes (built-in or files) are analysed on Z², not on a mesh
-    if registry::family_of(&s.scheme) == Ok(Family::Lattice) {
-        if n != 4 {
-            return Err(Error::Claim(format!("{} is defined on the regular lattice only (valence 4)", s.scheme)));
+    // the scheme's domain decides where its spectrum is computed, by the
+    // table the command line's front door consults (`schemes::route`): a
+    // lattice scheme's on its Z² window, a mesh scheme's on the mesh
+    let built = registry::resolve(&s.scheme, &subject_params(s, n)?)?;
+    let domain = built.family();
+    match (route(domain, Analysis::Spectrum), built) {
+        (Route::Refused(why), _) => Err(Error::Claim(refusal(Analysis::Spectrum, &s.scheme, domain, why))),
+        (Route::Native, Built::Lattice(scheme)) => {
+            if n != 4 {
+                return Err(Error::Claim(format!("{} is defined on the regular lattice only (valence 4)", s.scheme)));
+            }
+            Ok(lattice::analysis::analyse(scheme.as_ref(), kind, false)?.spectrum)
         }
-        let scheme = registry::lattice(&s.scheme, &subject_params(s, n)?)?;
-        return Ok(lattice::analysis::analyse(scheme.as_ref(), kind, false)?.spectrum);
+        (Route::Native, Built::Curve(_)) => Err(Error::Claim(format!(
+            "'{}' is a curve scheme (domain: {}): claims speak about surfaces; its spectrum is `subdlab spectrum {0}`'s",
+            s.scheme,
+            space(domain)
+        ))),
+        (Route::Mesh, built) | (Route::Native, built @ Built::Mesh(_)) => {
+            let scheme = schemes::on_mesh(built, &s.scheme)?;
+            let config = configuration(s, scheme.as_ref(), n)?;
+            Ok(analyse_shared(scheme.as_ref(), &config, &Options { neighbourhood: kind, method: None, exact: false })?
+                .spectrum
+                .clone())
+        }
     }
-    let (scheme, config) = subject_config(s, n)?;
-    Ok(analyse_shared(scheme.as_ref(), &config, &Options { neighbourhood: kind, method: None, exact: false })?
-        .spectrum
-        .clone())
 }
 
 pub fn expanded(spec: &Spectrum) -> Vec<Complex64> {
