@@ -107,7 +107,8 @@ impl BlockEnclosure {
     /// disc, the diagonalisation's V and R conjugated; sizes, ε and the
     /// failure unchanged (no power bound: it is computed per block later).
     fn conjugate(&self, block: usize) -> BlockEnclosure {
-        let conj_discs = |discs: &[Disc]| discs.iter().map(|d| Disc { re: d.re, im: -d.im, radius: d.radius }).collect();
+        let conj_discs =
+            |discs: &[Disc]| discs.iter().map(|d| Disc { re: d.re, im: -d.im, radius: d.radius }).collect();
         BlockEnclosure {
             block,
             size: self.size,
@@ -388,9 +389,8 @@ pub fn certify_spectrum(scheme: &dyn Scheme, analysis: &Analysis, period: usize)
             },
         })
         .collect();
-    let enclosures: Vec<BlockEnclosure> = (0..g)
-        .map(|m| if mirrored(m) { computed[g - m].conjugate(m) } else { computed[m].clone() })
-        .collect();
+    let enclosures: Vec<BlockEnclosure> =
+        (0..g).map(|m| if mirrored(m) { computed[g - m].conjugate(m) } else { computed[m].clone() }).collect();
     let enclosures = with_power_bounds(enclosures, &blocks, orbits.group_order, s.method);
     if !rotation.holds() {
         return Ok(not_proved(format!("the Fourier blocks need S to commute with the rotation: {rotation:?}")));

@@ -526,7 +526,11 @@ mod tests {
                 let by_signs = a * b;
                 // below TINY a corner's bounds are widened blindly, so a
                 // corner that is not extreme may widen the hull by an ulp
-                let underflows = [a.lo, a.hi].iter().any(|x| [b.lo, b.hi].iter().any(|y| (x * y).abs() <= TINY && x * y != 0.0 || (*x != 0.0 && *y != 0.0 && x * y == 0.0)));
+                let underflows = [a.lo, a.hi].iter().any(|x| {
+                    [b.lo, b.hi]
+                        .iter()
+                        .any(|y| (x * y).abs() <= TINY && x * y != 0.0 || (*x != 0.0 && *y != 0.0 && x * y == 0.0))
+                });
                 if !underflows {
                     assert_eq!(by_signs, corner_hull(a, b, mul_bounds), "{a:?} · {b:?}");
                 }
