@@ -181,7 +181,7 @@ fn refine_with_margin<W: SchemeWeight, T: Combine<W> + Clone>(
     for k in 0..steps {
         let r = &d.refinements()[k];
         let points = first(k, &net.points)?;
-        net = descend(&net, &r.mesh, &r.vertex_origins, &r.face_parents, points);
+        net = descend(&net, r.mesh.clone(), &r.vertex_origins, &r.face_parents, points);
     }
     let centre1: HashSet<usize> = centre0
         .iter()
@@ -216,7 +216,7 @@ fn refine_with_margin<W: SchemeWeight, T: Combine<W> + Clone>(
         }
         let Step { refined: r, stencils } = step::<W>(scheme, &net.mesh)?;
         let points = apply(&stencils, &net.points);
-        net = descend(&net, &r.mesh, &r.vertex_origins, &r.face_parents, points);
+        net = descend(&net, r.mesh, &r.vertex_origins, &r.face_parents, points);
         if net.refinements == 2 * steps {
             if let (Some(coords), Some(chart)) = (&centre_coords, net.mesh.chart.as_ref().filter(|c| c.scale == 1)) {
                 let centre2: HashSet<usize> =
@@ -272,7 +272,9 @@ fn refuse_beyond_limit(
     )))
 }
 
-fn descend<T>(old: &Net<T>, mesh: &PolyMesh, origins: &[Origin], parents: &[Origin], points: Vec<Option<T>>) -> Net<T> {
+/// The net one refinement down: the refined mesh (taken, not copied: the
+/// deeper levels hold most of a certificate's faces) with the flags carried.
+fn descend<T>(old: &Net<T>, mesh: PolyMesh, origins: &[Origin], parents: &[Origin], points: Vec<Option<T>>) -> Net<T> {
     let carry = |flags: &[bool]| -> Vec<bool> {
         let ents = crate::neighbourhood::discovery::region_entities(&old.mesh, flags);
         let from: Vec<bool> = origins.iter().map(|o| ents.contains(o)).collect();
@@ -282,7 +284,7 @@ fn descend<T>(old: &Net<T>, mesh: &PolyMesh, origins: &[Origin], parents: &[Orig
         outer: carry(&old.outer),
         inner: carry(&old.inner),
         inner2: carry(&old.inner2),
-        mesh: mesh.clone(),
+        mesh,
         points,
         refinements: old.refinements + 1,
     }
@@ -353,7 +355,9 @@ fn prune<T: Clone>(net: Net<T>, margin: usize) -> Result<Net<T>, Error> {
     let keep: Vec<usize> = (0..mesh.num_faces()).filter(|&f| mesh.face(f).iter().any(|&v| near[v])).collect();
     // carry every attribute (charts, FCVs, face centres, lattice directions)
     let (new_mesh, old) = mesh.restrict(&keep)?;
-    let points: Vec<Option<T>> = old.iter().map(|&v| net.points[v].clone()).collect();
+    // each kept vertex appears once in `old`: its row is moved, not cloned
+    let mut all_points = net.points;
+    let points: Vec<Option<T>> = old.iter().map(|&v| all_points[v].take()).collect();
     Ok(Net {
         outer: keep.iter().map(|&f| net.outer[f]).collect(),
         inner: keep.iter().map(|&f| net.inner[f]).collect(),
