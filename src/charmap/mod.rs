@@ -156,6 +156,19 @@ pub fn characteristic_map(
 
 /// The check on a finished analysis (analysis neighbourhood).
 pub fn check_map(scheme: &dyn Scheme, analysis: &Analysis, opts: &CharMapOptions) -> Result<CharMap, Error> {
+    check_map_over(scheme, analysis, opts, None)
+}
+
+/// [`check_map`], reading the refined map off `rows` (the analysis's unit
+/// rows refined `opts.levels` analysis steps, as the curvature analysis
+/// holds them) instead of refining the eigenvectors again; `None`, or rows
+/// of another level, refine as `check_map` does.
+pub fn check_map_over(
+    scheme: &dyn Scheme,
+    analysis: &Analysis,
+    opts: &CharMapOptions,
+    rows: Option<&net::Net<crate::refine::SparseRow<f64>>>,
+) -> Result<CharMap, Error> {
     let spec = &analysis.spectrum;
     if spec.neighbourhood != NeighbourhoodKind::Analysis {
         return Err(Error::Input("the characteristic map needs the analysis neighbourhood".into()));
@@ -197,7 +210,11 @@ pub fn check_map(scheme: &dyn Scheme, analysis: &Analysis, opts: &CharMapOptions
     }
     let d = &analysis.discovered;
     let level0 = net::initial_points(d, &pair.values)?;
-    let mut fine = net::refine_net(scheme, d, level0.clone(), opts.levels)?;
+    let steps = scheme.topology().steps_per_analysis();
+    let mut fine = match rows.filter(|r| r.refinements == opts.levels * steps) {
+        Some(rows) => rows.evaluate(&pair.values),
+        None => net::refine_net(scheme, d, level0.clone(), opts.levels)?,
+    };
     // an eigenvector pair is fixed only up to a linear map; a nearly parallel
     // pair (possible from the full matrix) would squash the ring to a few
     // pixels, so first make its outer boundary isotropic (regularity and
@@ -335,4 +352,52 @@ fn control_net(patch: &crate::mesh::PolyMesh, pts: &[Option<[f64; 2]>]) -> Vec<V
 pub fn characteristic_map_of(scheme: &dyn Scheme, valence: usize, opts: &CharMapOptions) -> Result<CharMap, Error> {
     let config = Configuration::regular(scheme, valence)?;
     characteristic_map(scheme, &config, opts)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    /// The map read off refined unit rows (as `curvature` does) is the map
+    /// refined from the eigenvectors: the same verdict, facets and pixel
+    /// counts, and ring points equal up to rounding (a composed row and a
+    /// step-by-step refinement sum in different orders). Catmull–Clark n = 5
+    /// (quads, 4 faces per face) and Loop n = 7 (triangles).
+    #[test]
+    fn the_map_from_unit_rows_is_the_refined_map() {
+        for (name, n) in [("catmull-clark", 5), ("loop", 7)] {
+            let scheme = crate::schemes::build(name, &[]).unwrap();
+            let config = Configuration::regular(scheme.as_ref(), n).unwrap();
+            let options = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
+            let analysis = analyse_shared(scheme.as_ref(), &config, &options).unwrap();
+            let opts = CharMapOptions::checked(3, 128).unwrap();
+            let rows = net::refine_net(
+                scheme.as_ref(),
+                &analysis.discovered,
+                {
+                    let mut level0 = vec![None; analysis.discovered.patch.num_vertices()];
+                    for (k, &v) in analysis.discovered.analysis.iter().enumerate() {
+                        level0[v] = Some(crate::refine::SparseRow::<f64>::unit(k));
+                    }
+                    level0
+                },
+                3,
+            )
+            .unwrap();
+            let direct = check_map(scheme.as_ref(), &analysis, &opts).unwrap();
+            let read = check_map_over(scheme.as_ref(), &analysis, &opts, Some(&rows)).unwrap();
+            assert!(direct.injective && read.injective, "{name} n = {n}: the map is injective either way");
+            assert_eq!(direct.ring_facets, read.ring_facets);
+            assert_eq!(direct.ring_pixels, read.ring_pixels);
+            let (a, b) = (direct.ring.unwrap(), read.ring.unwrap());
+            assert_eq!(a.ring.len(), b.ring.len());
+            for (s, t) in a.ring.iter().zip(&b.ring) {
+                for (p, q) in s.iter().zip(t) {
+                    assert_relative_eq!(p[0], q[0], epsilon = 1e-12);
+                    assert_relative_eq!(p[1], q[1], epsilon = 1e-12);
+                }
+            }
+        }
+    }
 }

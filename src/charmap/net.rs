@@ -51,6 +51,41 @@ pub struct Net<T = [f64; 2]> {
     pub refinements: usize,
 }
 
+impl Net<crate::refine::SparseRow<f64>> {
+    /// The net of level-0 data `values` (analysis order, as the unit rows
+    /// of a net refined from `SparseRow::unit(k)` at analysis vertex k):
+    /// every point its row applied to the data. The same mesh, flags and
+    /// defined points as refining the data itself (definedness and pruning
+    /// depend on the rules and the mesh only), at the cost of one dot
+    /// product per vertex: the curvature analysis refines unit rows once
+    /// and reads the characteristic map off them instead of refining again.
+    pub fn evaluate<const D: usize>(&self, values: &[[f64; D]]) -> Net<[f64; D]> {
+        let points = self
+            .points
+            .iter()
+            .map(|row| {
+                row.as_ref().map(|row| {
+                    let mut p = [0.0; D];
+                    for (k, w) in &row.entries {
+                        for (c, x) in p.iter_mut().zip(&values[*k]) {
+                            *c += w * x;
+                        }
+                    }
+                    p
+                })
+            })
+            .collect();
+        Net {
+            mesh: self.mesh.clone(),
+            points,
+            outer: self.outer.clone(),
+            inner: self.inner.clone(),
+            inner2: self.inner2.clone(),
+            refinements: self.refinements,
+        }
+    }
+}
+
 /// Apply a linear map to every defined point.
 pub fn transform(points: &mut [Option<[f64; 2]>], m: Matrix2<f64>) {
     for p in points.iter_mut().flatten() {

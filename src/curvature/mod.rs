@@ -93,7 +93,7 @@ use num_bigint::BigInt;
 use serde::Serialize;
 
 use crate::charmap::spectral::{subdominant_pair, SpectralStatus};
-use crate::charmap::{check_map, CharMapOptions};
+use crate::charmap::{check_map_over, CharMapOptions};
 use crate::error::Error;
 use crate::neighbourhood::{Configuration, NeighbourhoodKind};
 use crate::numeric::Rational;
@@ -386,7 +386,14 @@ pub fn curvature_of_analysis(
         }
         return Ok(out);
     }
-    let map = check_map(scheme, analysis, &CharMapOptions::checked(opts.levels.max(2), CHARMAP_RESOLUTION)?)?;
+    // the ring samples are the unit rows refined `levels` steps; where the
+    // map is checked at that level too, it is read off them (one refinement
+    // instead of two). A sampler that cannot be built leaves the map to
+    // refine on its own, so its failure is reported as before.
+    let map_levels = opts.levels.max(2);
+    let sampled = RingSampler::shared(scheme, &analysis.discovered, opts.levels).ok();
+    let rows = sampled.as_ref().filter(|_| map_levels == opts.levels).map(|s| &s.net);
+    let map = check_map_over(scheme, analysis, &CharMapOptions::checked(map_levels, CHARMAP_RESOLUTION)?, rows)?;
     out.charmap_injective = Some(map.injective);
     if !map.injective {
         out.reasons.push("not applicable: the characteristic map is not regular and injective".into());
