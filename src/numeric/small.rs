@@ -77,10 +77,100 @@ macro_rules! checked_operation {
     };
 }
 
-checked_operation!(Add, add, checked_add);
-checked_operation!(Sub, sub, checked_sub);
-checked_operation!(Mul, mul, checked_mul);
 checked_operation!(Div, div, checked_div);
+
+// Sums and products of fractions whose parts fit in 64 bits — nearly every
+// weight a rule multiplies (1/4, 3/8, 1/n², 1/m · 1/4 ...) — in 64-bit gcds
+// and 128-bit products, which cannot overflow; `Ratio<i128>`'s checked
+// operations reduce by 128-bit gcds and divisions (a software routine), and
+// the rule check spent most of its arithmetic there. Larger parts take the
+// checked 128-bit route. Both give the reduced fraction, so the results are
+// equal (the tests compare them with the big rationals).
+impl Add for SmallRational {
+    type Output = Self;
+    fn add(self, b: Self) -> Self {
+        match (self.parts64(), b.parts64()) {
+            (Some(x), Some(y)) => sum64(x, y),
+            _ => Self::checked(self, b, |x, y| x.checked_add(y)),
+        }
+    }
+}
+
+impl Sub for SmallRational {
+    type Output = Self;
+    fn sub(self, b: Self) -> Self {
+        match (self.parts64(), b.parts64()) {
+            // −c fits: c > i64::MIN, as `parts64` only gives such numerators
+            (Some(x), Some((c, d))) => sum64(x, (-c, d)),
+            _ => Self::checked(self, b, |x, y| x.checked_sub(y)),
+        }
+    }
+}
+
+impl Mul for SmallRational {
+    type Output = Self;
+    fn mul(self, b: Self) -> Self {
+        match (self.parts64(), b.parts64()) {
+            // (a/b)(c/d) with a/b and c/d reduced: cancel a with d and c with
+            // b first, and the product of the rest is reduced
+            (Some((a, b)), Some((c, d))) => {
+                let (g1, g2) = (gcd64(a.unsigned_abs(), d as u64) as i64, gcd64(c.unsigned_abs(), b as u64) as i64);
+                let (a, d, c, b) = (a / g1, d / g1, c / g2, b / g2);
+                SmallRational(Some(Ratio::new_raw(a as i128 * c as i128, b as i128 * d as i128)))
+            }
+            _ => Self::checked(self, b, |x, y| x.checked_mul(y)),
+        }
+    }
+}
+
+impl SmallRational {
+    /// Numerator and denominator when both fit in 64 bits (the numerator
+    /// above `i64::MIN`, so that it can be negated): the fast operations'
+    /// domain. A `Ratio` is kept reduced with a positive denominator.
+    fn parts64(&self) -> Option<(i64, i64)> {
+        let r = self.0.as_ref()?;
+        let (p, q) = (i64::try_from(*r.numer()).ok()?, i64::try_from(*r.denom()).ok()?);
+        (p != i64::MIN).then_some((p, q))
+    }
+}
+
+/// a/b + c/d for reduced fractions with 64-bit parts (Knuth, TAOCP 4.5.1):
+/// with g = gcd(b, d), t = a·(d/g) + c·(b/g) and h = gcd(t, g), the reduced
+/// sum is (t/h) / ((b/g)·(d/h)). Every product is of two 64-bit numbers, and
+/// |t| < 2^127, so nothing overflows 128 bits.
+fn sum64((a, b): (i64, i64), (c, d): (i64, i64)) -> SmallRational {
+    let g = gcd64(b as u64, d as u64) as i64;
+    let t = a as i128 * (d / g) as i128 + c as i128 * (b / g) as i128;
+    if t == 0 {
+        return SmallRational(Some(Ratio::new_raw(0, 1)));
+    }
+    // gcd(t, g) = gcd(t mod g, g): one 128-bit remainder, then 64-bit
+    let h = gcd64((t % g as i128).unsigned_abs() as u64, g as u64) as i128;
+    SmallRational(Some(Ratio::new_raw(t / h, (b / g) as i128 * (d as i128 / h))))
+}
+
+/// gcd of two 64-bit integers, not both zero (binary: shifts and
+/// subtractions, no division).
+fn gcd64(mut u: u64, mut v: u64) -> u64 {
+    if u == 0 {
+        return v;
+    }
+    if v == 0 {
+        return u;
+    }
+    let shift = (u | v).trailing_zeros();
+    u >>= u.trailing_zeros();
+    loop {
+        v >>= v.trailing_zeros();
+        if u > v {
+            std::mem::swap(&mut u, &mut v);
+        }
+        v -= u;
+        if v == 0 {
+            return u << shift;
+        }
+    }
+}
 
 impl Neg for SmallRational {
     type Output = Self;
@@ -148,6 +238,44 @@ mod tests {
         assert_eq!(q(2, 1).sqrt(), Err(Inexact));
         assert_eq!(SmallRational::cos_2pi(1, 6).map(|r| r.to_rational()), Ok(Some(Rational::ratio(1, 2))));
         assert_eq!(SmallRational::cos_2pi(1, 5), Err(Inexact));
+    }
+
+    /// The 64-bit fast paths against the big rationals on a grid of
+    /// fractions (signs, common factors, parts near 2^63, zero), and the
+    /// result reduced exactly as `Ratio` keeps it.
+    #[test]
+    fn the_fast_paths_are_the_rational_operations() {
+        let near = i64::MAX as i128;
+        let parts: [i128; 12] = [0, 1, -1, 2, -3, 12, -45, 64, 360, near, -near, near - 1];
+        let dens: [i128; 7] = [1, 2, 3, 16, 90, near, near - 2];
+        let mut values = Vec::new();
+        for &p in &parts {
+            for &q in &dens {
+                values.push(SmallRational::new(p, q));
+            }
+        }
+        let exact = |x: &SmallRational| x.to_rational().unwrap();
+        for x in &values {
+            for y in &values {
+                let (ex, ey) = (exact(x), exact(y));
+                for (got, want) in [(*x + *y, &ex + &ey), (*x - *y, &ex - &ey), (*x * *y, &ex * &ey)] {
+                    match got.to_rational() {
+                        Some(g) => {
+                            assert_eq!(g, want, "{x:?} {y:?}");
+                            let r = got.0.unwrap();
+                            assert!(*r.denom() > 0, "positive denominator");
+                            let reduced = Ratio::new(*r.numer(), *r.denom());
+                            assert_eq!((reduced.numer(), reduced.denom()), (r.numer(), r.denom()), "kept reduced");
+                        }
+                        // spoiled only when the exact value does not fit
+                        None => assert!(SmallRational::from_rational(&want).is_spoiled(), "{x:?} {y:?}"),
+                    }
+                }
+            }
+        }
+        assert_eq!(gcd64(0, 7), 7);
+        assert_eq!(gcd64(12, 18), 6);
+        assert_eq!(gcd64(1 << 40, 3 << 20), 1 << 20);
     }
 
     #[test]
