@@ -35,7 +35,19 @@ impl PartialEq for SmallRational {
 impl SmallRational {
     /// p/q, spoiled when q = 0.
     pub fn new(p: i128, q: i128) -> Self {
-        SmallRational((q != 0).then(|| Ratio::new(p, q)))
+        if q == 0 {
+            return SmallRational(None);
+        }
+        // the rules build their weights from small integers (1/n², 3/8 ...):
+        // reduced by a 64-bit gcd, not `Ratio::new`'s 128-bit one
+        if let (Ok(a), Ok(b)) = (i64::try_from(p), i64::try_from(q)) {
+            if a != i64::MIN && b != i64::MIN {
+                let g = gcd64(a.unsigned_abs(), b.unsigned_abs()) as i64;
+                let sign = if b < 0 { -1 } else { 1 };
+                return SmallRational(Some(Ratio::new_raw((sign * (a / g)) as i128, (sign * (b / g)) as i128)));
+            }
+        }
+        SmallRational(Some(Ratio::new(p, q)))
     }
 
     /// The value, when it was never spoiled.
@@ -272,6 +284,11 @@ mod tests {
                     }
                 }
             }
+        }
+        // construction reduces and puts the sign on the numerator
+        for (p, q) in [(6i128, -4i128), (-6, -4), (0, -5), (near, -near), (-near, 3 * near)] {
+            let r = SmallRational::new(p, q).0.unwrap();
+            assert_eq!((*r.numer(), *r.denom()), (*Ratio::new(p, q).numer(), *Ratio::new(p, q).denom()), "{p}/{q}");
         }
         assert_eq!(gcd64(0, 7), 7);
         assert_eq!(gcd64(12, 18), 6);
