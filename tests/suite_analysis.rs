@@ -14,6 +14,7 @@
 mod common;
 
 mod charmap;
+mod charmap_from_rows;
 mod curvature_catmull_clark;
 mod curvature_central_ring;
 mod curvature_generalised;
