@@ -60,8 +60,21 @@ impl Net<crate::refine::SparseRow<f64>> {
     /// product per vertex: the curvature analysis refines unit rows once
     /// and reads the characteristic map off them instead of refining again.
     pub fn evaluate<const D: usize>(&self, values: &[[f64; D]]) -> Net<[f64; D]> {
-        let points = self
-            .points
+        let points = self.evaluate_points(values);
+        Net {
+            mesh: self.mesh.clone(),
+            points,
+            outer: self.outer.clone(),
+            inner: self.inner.clone(),
+            inner2: self.inner2.clone(),
+            refinements: self.refinements,
+        }
+    }
+
+    /// Every net vertex's row applied to level-0 data `values` (analysis
+    /// order); `None` where the row is undefined.
+    pub fn evaluate_points<const D: usize>(&self, values: &[[f64; D]]) -> Vec<Option<[f64; D]>> {
+        self.points
             .iter()
             .map(|row| {
                 row.as_ref().map(|row| {
@@ -74,15 +87,7 @@ impl Net<crate::refine::SparseRow<f64>> {
                     p
                 })
             })
-            .collect();
-        Net {
-            mesh: self.mesh.clone(),
-            points,
-            outer: self.outer.clone(),
-            inner: self.inner.clone(),
-            inner2: self.inner2.clone(),
-            refinements: self.refinements,
-        }
+            .collect()
     }
 }
 

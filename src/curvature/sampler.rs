@@ -125,21 +125,7 @@ impl RingSampler {
 
     /// Level-0 points refined to every net vertex (`None` where undefined).
     pub fn points<const D: usize>(&self, data: &[[f64; D]]) -> Vec<Option<[f64; D]>> {
-        self.net
-            .points
-            .iter()
-            .map(|r| {
-                r.as_ref().map(|r| {
-                    let mut p = [0.0; D];
-                    for (k, w) in &r.entries {
-                        for (c, x) in p.iter_mut().zip(&data[*k]) {
-                            *c += w * x;
-                        }
-                    }
-                    p
-                })
-            })
-            .collect()
+        self.net.evaluate_points(data)
     }
 
     /// The ring's facets as triangles of net vertex ids.
