@@ -240,20 +240,20 @@ struct SkewLoop {
 impl<W: SchemeWeight> Rules<MeshDomain, W> for SkewLoop {
     fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         if let Origin::Edge(a, b) = origin {
-            let (Some(va), Some(vb)) = (mesh.valence(a), mesh.valence(b)) else { return Ok(Err(GatherError::Truncated)) };
+            let (Some(va), Some(vb)) = (mesh.valence(a), mesh.valence(b)) else {
+                return Ok(Err(GatherError::Truncated));
+            };
             if va != 6 || vb != 6 {
                 let (v, p) = if va != 6 { (a, b) } else { (b, a) };
                 let (Some((fl, kl)), Some((fr, kr))) = (mesh.half_edge(a, b), mesh.half_edge(b, a)) else {
                     return Ok(Err(GatherError::Truncated));
                 };
                 let (c, d) = (mesh.face_from(fl, kl)[2], mesh.face_from(fr, kr)[2]);
-                return Ok(Ok(
-                    Stencil::new()
-                        .with(v, W::ratio(1, 2))
-                        .with(p, W::ratio(5, 8))
-                        .with(c, W::ratio(-1, 16))
-                        .with(d, W::ratio(-1, 16)),
-                ));
+                return Ok(Ok(Stencil::new()
+                    .with(v, W::ratio(1, 2))
+                    .with(p, W::ratio(5, 8))
+                    .with(c, W::ratio(-1, 16))
+                    .with(d, W::ratio(-1, 16))));
             }
         }
         W::rule(self.base.as_ref(), mesh, origin)
@@ -373,7 +373,9 @@ struct JordanCc {
 impl<W: SchemeWeight> Rules<MeshDomain, W> for JordanCc {
     fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         if let Origin::Edge(a, b) = origin {
-            let (Some(va), Some(vb)) = (mesh.valence(a), mesh.valence(b)) else { return Ok(Err(GatherError::Truncated)) };
+            let (Some(va), Some(vb)) = (mesh.valence(a), mesh.valence(b)) else {
+                return Ok(Err(GatherError::Truncated));
+            };
             if va != 4 || vb != 4 {
                 let (v, p) = if va != 4 { (a, b) } else { (b, a) };
                 let n = mesh.valence(v).unwrap() as i64;
@@ -394,15 +396,13 @@ impl<W: SchemeWeight> Rules<MeshDomain, W> for JordanCc {
                 let t = x1 - W::ratio(1, 4);
                 let d = W::zero() - t.clone() * t / k;
                 let a = W::one() - b.clone() - W::int(2) * c.clone() - W::int(2) * d.clone();
-                return Ok(Ok(
-                    Stencil::new()
-                        .with(v, a)
-                        .with(p, b)
-                        .with(left[3], c.clone())
-                        .with(right[2], c)
-                        .with(left[2], d.clone())
-                        .with(right[3], d),
-                ));
+                return Ok(Ok(Stencil::new()
+                    .with(v, a)
+                    .with(p, b)
+                    .with(left[3], c.clone())
+                    .with(right[2], c)
+                    .with(left[2], d.clone())
+                    .with(right[3], d)));
             }
         }
         W::rule(self.base.as_ref(), mesh, origin)
