@@ -13,12 +13,16 @@
 //! and of assembly (`matrix::local::AssembleError`) are typed too and convert
 //! into `Error`: a dependency's own error keeps its variant.
 //! `Error::Message` remains for internal failures that none of the other
-//! variants describes (rendering, serialisation).
+//! variants describes (rendering, serialisation). There is no `From<String>`
+//! or `From<&str>`: a plain string cannot become an error without its site
+//! saying which variant it is.
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum Error {
-    /// A message from a stage that still reports plain strings (see the
-    /// module documentation); its category is not known here.
+    /// An internal failure that none of the other variants describes
+    /// (rendering, serialisation, a broken invariant of the program itself):
+    /// never the user's input. There is no conversion from a plain string;
+    /// every site names its variant.
     Message(String),
     /// The caller asked for something out of range or unknown: a valence
     /// below 3 or too large, an unknown scheme, parameter or option value,
@@ -94,18 +98,6 @@ impl std::fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
-impl From<String> for Error {
-    fn from(m: String) -> Self {
-        Error::Message(m)
-    }
-}
-
-impl From<&str> for Error {
-    fn from(m: &str) -> Self {
-        Error::Message(m.to_string())
-    }
-}
-
 impl From<Error> for String {
     fn from(e: Error) -> Self {
         e.to_string()
@@ -177,16 +169,53 @@ pub fn shorten_echoes(message: &str) -> String {
     out
 }
 
+/// Peak memory one command may be estimated to need before it is refused.
+/// A fixed budget rather than a fraction of the memory available now, so
+/// that the same request is accepted or refused on every machine (and in
+/// every test run) alike; 4 GiB fits the machines subdlab is run on, and
+/// each estimate is calibrated to lie above the measured peaks.
+pub const MEMORY_BUDGET: f64 = (4u64 << 30) as f64;
+
+/// The one refusal of work estimated to need more than [`MEMORY_BUDGET`]:
+/// made before the work, with the estimate, so a request that cannot fit
+/// fails in milliseconds instead of after minutes of paging or an abort by
+/// the allocator. `what` names the work ("polar-bi2 at valence 10000000"),
+/// `basis` says what the estimate rests on, `hint` what fits instead.
+pub fn check_memory(bytes: f64, what: &str, basis: &str, hint: &str) -> Result<()> {
+    if bytes <= MEMORY_BUDGET {
+        return Ok(());
+    }
+    Err(Error::Input(format!(
+        "{what} would need about {} of memory ({basis}), above the supported {}; {hint}",
+        format_bytes(bytes),
+        format_bytes(MEMORY_BUDGET)
+    )))
+}
+
+/// A byte count as the refusals print it: MiB below a GiB, else GiB (TiB
+/// for the absurd).
+pub fn format_bytes(bytes: f64) -> String {
+    const MIB: f64 = (1u64 << 20) as f64;
+    const GIB: f64 = (1u64 << 30) as f64;
+    const TIB: f64 = (1u64 << 40) as f64;
+    if bytes < GIB {
+        format!("{:.0} MiB", bytes / MIB)
+    } else if bytes < TIB {
+        format!("{:.1} GiB", bytes / GIB)
+    } else {
+        format!("{:.0} TiB", bytes / TIB)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
     fn display_is_the_one_line_message() {
-        assert_eq!(Error::from("valence 2 is below 3").to_string(), "valence 2 is below 3");
+        assert_eq!(Error::Input("valence 2 is below 3".into()).to_string(), "valence 2 is below 3");
         let e = Error::Write { path: "a.svg".into(), reason: "permission denied".into() };
         assert_eq!(String::from(e), "cannot write a.svg: permission denied");
-        assert!(matches!(Error::from("x"), Error::Message(_)));
         assert_eq!(Error::Numeric("no convergence".into()).to_string(), "no convergence");
         assert_eq!(Error::Claim("missing field 'n'".into()).to_string(), "missing field 'n'");
     }
@@ -231,43 +260,5 @@ mod tests {
         assert_eq!(e, Error::NotDetermined("a vertex (level 2)".into()));
         let w = Error::Write { path: "a.svg".into(), reason: "disk full".into() }.context("figure");
         assert_eq!(w.to_string(), "figure: cannot write a.svg: disk full");
-    }
-}
-
-/// Peak memory one command may be estimated to need before it is refused.
-/// A fixed budget rather than a fraction of the memory available now, so
-/// that the same request is accepted or refused on every machine (and in
-/// every test run) alike; 4 GiB fits the machines subdlab is run on, and
-/// each estimate is calibrated to lie above the measured peaks.
-pub const MEMORY_BUDGET: f64 = (4u64 << 30) as f64;
-
-/// The one refusal of work estimated to need more than [`MEMORY_BUDGET`]:
-/// made before the work, with the estimate, so a request that cannot fit
-/// fails in milliseconds instead of after minutes of paging or an abort by
-/// the allocator. `what` names the work ("polar-bi2 at valence 10000000"),
-/// `basis` says what the estimate rests on, `hint` what fits instead.
-pub fn check_memory(bytes: f64, what: &str, basis: &str, hint: &str) -> Result<()> {
-    if bytes <= MEMORY_BUDGET {
-        return Ok(());
-    }
-    Err(Error::Input(format!(
-        "{what} would need about {} of memory ({basis}), above the supported {}; {hint}",
-        format_bytes(bytes),
-        format_bytes(MEMORY_BUDGET)
-    )))
-}
-
-/// A byte count as the refusals print it: MiB below a GiB, else GiB (TiB
-/// for the absurd).
-pub fn format_bytes(bytes: f64) -> String {
-    const MIB: f64 = (1u64 << 20) as f64;
-    const GIB: f64 = (1u64 << 30) as f64;
-    const TIB: f64 = (1u64 << 40) as f64;
-    if bytes < GIB {
-        format!("{:.0} MiB", bytes / MIB)
-    } else if bytes < TIB {
-        format!("{:.1} GiB", bytes / GIB)
-    } else {
-        format!("{:.0} TiB", bytes / TIB)
     }
 }

@@ -244,7 +244,13 @@ fn step_against_closed_form(
         let bump_here = !bumped && bump.is_some_and(|b| b(origin));
         bumped |= bump_here;
         let want = closed_form(faces, *origin, bump_here);
-        let got: Row = stencil.as_ref().ok_or(format!("{origin:?}: no stencil"))?.terms.iter().cloned().collect();
+        let got: Row = stencil
+            .stencil()
+            .ok_or(format!("{origin:?}: no stencil ({:?})", stencil.cause()))?
+            .terms
+            .iter()
+            .cloned()
+            .collect();
         if got != want {
             return Err(format!("{origin:?}: {got:?} against the closed form {want:?}"));
         }

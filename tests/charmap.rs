@@ -7,7 +7,7 @@ use std::f64::consts::PI;
 use subdlab::charmap::{characteristic_map_of, net, raster, regularity, ring, wedge, CharMapOptions, SpectralStatus};
 use subdlab::mesh::{PolyMesh, SectorKind};
 use subdlab::neighbourhood::{Configuration, NeighbourhoodKind};
-use subdlab::refine::{Origin, RuleResult, Stencil};
+use subdlab::refine::{GatherError, Origin, RuleResult, Stencil};
 use subdlab::schemes::{self, Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeInfo, SchemeWeight};
 use subdlab::sdc::Topology;
 use subdlab::spectrum::{analyse, Options};
@@ -240,20 +240,20 @@ struct SkewLoop {
 impl<W: SchemeWeight> Rules<MeshDomain, W> for SkewLoop {
     fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         if let Origin::Edge(a, b) = origin {
-            let (Some(va), Some(vb)) = (mesh.valence(a), mesh.valence(b)) else { return Ok(None) };
+            let (Some(va), Some(vb)) = (mesh.valence(a), mesh.valence(b)) else {
+                return Ok(Err(GatherError::Truncated));
+            };
             if va != 6 || vb != 6 {
                 let (v, p) = if va != 6 { (a, b) } else { (b, a) };
                 let (Some((fl, kl)), Some((fr, kr))) = (mesh.half_edge(a, b), mesh.half_edge(b, a)) else {
-                    return Ok(None);
+                    return Ok(Err(GatherError::Truncated));
                 };
                 let (c, d) = (mesh.face_from(fl, kl)[2], mesh.face_from(fr, kr)[2]);
-                return Ok(Some(
-                    Stencil::new()
-                        .with(v, W::ratio(1, 2))
-                        .with(p, W::ratio(5, 8))
-                        .with(c, W::ratio(-1, 16))
-                        .with(d, W::ratio(-1, 16)),
-                ));
+                return Ok(Ok(Stencil::new()
+                    .with(v, W::ratio(1, 2))
+                    .with(p, W::ratio(5, 8))
+                    .with(c, W::ratio(-1, 16))
+                    .with(d, W::ratio(-1, 16))));
             }
         }
         W::rule(self.base.as_ref(), mesh, origin)
@@ -373,18 +373,20 @@ struct JordanCc {
 impl<W: SchemeWeight> Rules<MeshDomain, W> for JordanCc {
     fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         if let Origin::Edge(a, b) = origin {
-            let (Some(va), Some(vb)) = (mesh.valence(a), mesh.valence(b)) else { return Ok(None) };
+            let (Some(va), Some(vb)) = (mesh.valence(a), mesh.valence(b)) else {
+                return Ok(Err(GatherError::Truncated));
+            };
             if va != 4 || vb != 4 {
                 let (v, p) = if va != 4 { (a, b) } else { (b, a) };
                 let n = mesh.valence(v).unwrap() as i64;
                 let (Some((fl, kl)), Some((fr, kr))) = (mesh.half_edge(v, p), mesh.half_edge(p, v)) else {
-                    return Ok(None);
+                    return Ok(Err(GatherError::Truncated));
                 };
                 // [v, p, f_i, p_{i+1}] and [p, v, p_{i-1}, f_{i-1}]
                 let left = mesh.face_from(fl, kl);
                 let right = mesh.face_from(fr, kr);
                 if left.len() != 4 || right.len() != 4 {
-                    return Ok(None);
+                    return Ok(Err(GatherError::NotCovered));
                 }
                 let cos = W::cos_2pi(1, n)?;
                 let c = W::ratio(-1, 5);
@@ -394,15 +396,13 @@ impl<W: SchemeWeight> Rules<MeshDomain, W> for JordanCc {
                 let t = x1 - W::ratio(1, 4);
                 let d = W::zero() - t.clone() * t / k;
                 let a = W::one() - b.clone() - W::int(2) * c.clone() - W::int(2) * d.clone();
-                return Ok(Some(
-                    Stencil::new()
-                        .with(v, a)
-                        .with(p, b)
-                        .with(left[3], c.clone())
-                        .with(right[2], c)
-                        .with(left[2], d.clone())
-                        .with(right[3], d),
-                ));
+                return Ok(Ok(Stencil::new()
+                    .with(v, a)
+                    .with(p, b)
+                    .with(left[3], c.clone())
+                    .with(right[2], c)
+                    .with(left[2], d.clone())
+                    .with(right[3], d)));
             }
         }
         W::rule(self.base.as_ref(), mesh, origin)

@@ -235,10 +235,10 @@ impl<W: SchemeWeight> Rules<MeshDomain, W> for RootLoop {
     fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         let stencil = W::rule(self.base.as_ref(), mesh, origin)?;
         match (origin, stencil) {
-            (Origin::Vertex(v), Some(s)) if mesh.valence(v) != Some(6) => {
+            (Origin::Vertex(v), Ok(s)) if mesh.valence(v) != Some(6) => {
                 let terms =
                     s.terms.into_iter().map(|(u, w)| Ok((u, (w.clone() * w).sqrt()?))).collect::<Result<_, _>>()?;
-                Ok(Some(Stencil { terms }))
+                Ok(Ok(Stencil { terms }))
             }
             (_, s) => Ok(s),
         }
@@ -295,14 +295,14 @@ impl<W: SchemeWeight> Rules<MeshDomain, W> for TwistedDooSabin {
     fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
         let stencil = W::rule(self.base.as_ref(), mesh, origin)?;
         match (origin, stencil) {
-            (Origin::Corner { face, corner: 2 }, Some(mut s)) if mesh.face(face).len() != 4 => {
+            (Origin::Corner { face, corner: 2 }, Ok(mut s)) if mesh.face(face).len() != 4 => {
                 let n = mesh.face(face).len() as i64;
                 let tiny =
                     W::ratio(1, 1_000_000_000_000_000_000) * W::cos_2pi(1, n).map_err(|_| subdlab::numeric::Inexact)?;
                 let (a, b) = (mesh.face(face)[2], mesh.face(face)[3]);
                 s.terms.push((a, tiny.clone()));
                 s.terms.push((b, -tiny));
-                Ok(Some(s.merged()))
+                Ok(Ok(s.merged()))
             }
             (_, s) => Ok(s),
         }

@@ -52,7 +52,7 @@ use crate::charmap::net::{self, Net};
 use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::numeric::{Interval, Rational, SmallRational, Weight};
-use crate::refine::{connectivity, stencil_at, Origin};
+use crate::refine::{connectivity, stencil_at, GatherError, Origin};
 use crate::sdc::host::RegularSpline;
 use crate::sdc::Scheme;
 use crate::spectrum::Analysis;
@@ -962,16 +962,18 @@ type Mask = HashMap<usize, SmallRational>;
 /// exact stencil either way.
 fn exact_stencil(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> Result<Mask, String> {
     let irrational = |_| "a rule over the ring has an irrational weight".to_string();
-    let missing = "a rule over the ring cannot be evaluated on the net";
+    // the gatherer's reason names what the net lacks (a truncated margin, a
+    // face the host's rules do not cover)
+    let missing = |cause: GatherError| format!("a rule over the ring cannot be evaluated on the net: {cause}");
     // `stencil_at` gives the stencil merged (repeated points summed, zeros
     // dropped), so it only has to be keyed by point here
-    let small = stencil_at::<SmallRational>(scheme, mesh, origin).map_err(irrational)?.ok_or(missing)?;
+    let small = stencil_at::<SmallRational>(scheme, mesh, origin).map_err(irrational)?.map_err(missing)?;
     if small.terms.iter().all(|(_, w)| !w.is_spoiled()) {
         return Ok(small.terms.into_iter().collect());
     }
     // an intermediate left the machine integers: the big rationals decide,
     // and a final weight that still does not fit stays spoiled
-    let big = stencil_at::<Rational>(scheme, mesh, origin).map_err(irrational)?.ok_or(missing)?;
+    let big = stencil_at::<Rational>(scheme, mesh, origin).map_err(irrational)?.map_err(missing)?;
     Ok(big.terms.iter().map(|(v, w)| (*v, SmallRational::from_rational(w))).collect())
 }
 

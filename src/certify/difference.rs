@@ -170,7 +170,7 @@ pub fn regular_mask(scheme: &dyn Scheme) -> Result<RegularMask, String> {
             new_pos.push(((first.0 + sum.0 / k).rem_euclid(period), (first.1 + sum.1 / k).rem_euclid(period)));
             let stencil = stencil_at::<Rational>(scheme, &mesh, origin)
                 .map_err(|_| "a regular rule has an irrational weight".to_string())?
-                .ok_or("a regular rule cannot be evaluated on the regular torus")?;
+                .map_err(|cause| format!("a regular rule cannot be evaluated on the regular torus: {cause}"))?;
             let mut composed: HashMap<usize, Rational> = HashMap::new();
             for (v, w) in &stencil.terms {
                 for (x, wx) in &stencils[*v] {
@@ -799,8 +799,8 @@ fn compose<'a>(
                 if !cache[step].contains_key(&u) {
                     let s = stencil_at::<Rational>(scheme, mesh, origins[u])
                         .map_err(|_| RingFailure::Final("a rule over the ring has an irrational weight".into()))?
-                        .ok_or_else(|| {
-                            RingFailure::Level("a rule over the ring cannot be evaluated on the net".into())
+                        .map_err(|cause| {
+                            RingFailure::Level(format!("a rule over the ring cannot be evaluated on the net: {cause}"))
                         })?;
                     cache[step].insert(u, s.terms);
                 }

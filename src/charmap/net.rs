@@ -23,7 +23,7 @@ use crate::mesh::PolyMesh;
 use crate::neighbourhood::Discovered;
 
 use crate::error::Error;
-use crate::refine::{apply, step, Combine, Step};
+use crate::refine::{apply, step, Combine, Step, StepStencil};
 use crate::sdc::{Origin, Scheme, SchemeWeight};
 
 /// Largest number of faces of a refined net: peak memory is about 1 KB per
@@ -146,7 +146,8 @@ pub fn refine_net<T: Combine<f64> + Clone>(
     analysis_steps: usize,
 ) -> Result<Net<T>, Error> {
     // the first analysis step reuses discovery's float stencils
-    let first = |k: usize, points: &[Option<T>]| Ok(apply(&d.float_stencils(scheme)[k], points));
+    let first =
+        |k: usize, points: &[Option<T>]| Ok(apply(d.float_stencils(scheme)[k].iter().map(Option::as_ref), points));
     refine_net_in::<f64, T>(scheme, d, level0, analysis_steps, &first)
 }
 
@@ -169,7 +170,9 @@ pub fn refine_net_exactly_as<W: SchemeWeight, T: Combine<W> + Clone>(
                 })
             })
             .collect::<Result<Vec<_>, Error>>()?;
-        Ok(apply(&stencils, points))
+        // a missing stencil leaves its point undefined; `check_defined` and
+        // pruning decide whether that matters
+        Ok(apply(stencils.iter().map(|s| s.as_ref().ok()), points))
     };
     refine_net_in::<W, T>(scheme, d, level0, analysis_steps, &first)
 }
@@ -255,7 +258,7 @@ fn refine_with_margin<W: SchemeWeight, T: Combine<W> + Clone>(
             )));
         }
         let Step { refined: r, stencils } = step::<W>(scheme, &net.mesh)?;
-        let points = apply(&stencils, &net.points);
+        let points = apply(stencils.iter().map(StepStencil::stencil), &net.points);
         net = descend(&net, r.mesh, &r.vertex_origins, &r.face_parents, points);
         if net.refinements == 2 * steps {
             if let (Some(coords), Some(chart)) = (&centre_coords, net.mesh.chart.as_ref().filter(|c| c.scale == 1)) {

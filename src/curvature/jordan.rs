@@ -186,7 +186,10 @@ pub fn growth_test(
     } else {
         let r = nalgebra::DMatrix::<f64>::from_columns(&right);
         let l = nalgebra::DMatrix::<f64>::from_columns(&left);
-        let g = (l.transpose() * &r).try_inverse().ok_or("the left and right eigenvectors above λ² are not dual")?;
+        let g = (l.transpose() * &r).try_inverse().ok_or_else(|| {
+            // a singular pairing of valid eigenvectors: a numerical failure
+            Error::Numeric("the left and right eigenvectors above λ² are not dual".into())
+        })?;
         nalgebra::DMatrix::<f64>::identity(s, s) - &r * g * l.transpose()
     };
     // the step: x ← P S x / ν

@@ -159,7 +159,8 @@ fn label(k: usize, &i: &i64) -> VertexLabel {
 /// eigenvalue is a proven rational root, the eigenvalues reported are the
 /// exact ones, with multiplicities from the polynomial and exact ranks.
 pub fn curve_spectrum(scheme: &dyn CurveScheme, kind: NeighbourhoodKind) -> Result<CurveSpectrum, Error> {
-    let mask = <f64 as CurveWeight>::mask(scheme).map_err(|_| "a weight is not representable".to_string())?;
+    let mask =
+        <f64 as CurveWeight>::mask(scheme).map_err(|_| Error::Numeric("a weight is not representable".into()))?;
     let exact_mask = <Rational as CurveWeight>::mask(scheme).ok();
     // windows from the exact mask when there is one, so that a weight that is
     // zero only up to rounding is not mistaken for a dependency (or vice versa)

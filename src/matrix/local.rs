@@ -63,7 +63,7 @@ pub fn assemble_rows<W: SchemeWeight>(
     let raw = step_rows::<W>(d.refinements().len(), &targets, |k, v| {
         crate::refine::new_stencil::<W>(scheme, d.mesh_before(k), &d.refinements()[k], v)
             .map_err(|Inexact| AssembleError::Inexact)?
-            .ok_or(AssembleError::Missing)
+            .map_err(|_| AssembleError::Missing)
     })?;
     restrict(set, raw)
 }
@@ -105,7 +105,7 @@ pub fn step_rows_of<W: SchemeWeight>(
     step_rows::<W>(d.refinements().len(), &targets, |k, v| {
         crate::refine::new_stencil::<W>(scheme, d.mesh_before(k), &d.refinements()[k], v)
             .map_err(|Inexact| AssembleError::Inexact)?
-            .ok_or(AssembleError::Missing)
+            .map_err(|_| AssembleError::Missing)
     })
 }
 

@@ -350,7 +350,7 @@ fn first_patch_rings(scheme: &dyn Scheme, config: &Configuration) -> usize {
 /// A float stencil as one refinement step evaluates it; None when the rule
 /// cannot be evaluated on this mesh.
 fn stencil_f64(scheme: &dyn Scheme, mesh: &PolyMesh, o: Origin) -> Option<Stencil<f64>> {
-    crate::refine::stencil_at::<f64>(scheme, mesh, o).ok().flatten()
+    crate::refine::stencil_at::<f64>(scheme, mesh, o).ok().and_then(Result::ok)
 }
 
 /// The rotation of a charted mesh by `period` sectors (the configuration's

@@ -6,9 +6,10 @@
 //! Boundary rules are not implemented by the built-in schemes, so the mesh must
 //! be closed; any vertex, edge or face where a rule does not apply (boundary,
 //! or a face type the scheme does not cover, e.g. a quad for Loop) is reported
-//! by name instead of being guessed.
+//! by name, with the reason the host's gatherer gave (`GatherError`), instead
+//! of being guessed.
 
-use super::{apply, step, Origin, Stencil, Step};
+use super::{apply, step, GatherError, Origin, Stencil, Step, StepStencil};
 use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::sdc::Scheme;
@@ -69,11 +70,12 @@ pub fn refine_mesh(
         let step_rules = scheme.at_level(level);
         let rules: &dyn Scheme = step_rules.as_deref().unwrap_or(scheme);
         let Step { refined, stencils } = step::<f64>(rules, &mesh)?;
-        // a closed mesh must have every rule apply; name the first that does not
-        if let Some(k) = stencils.iter().position(Option::is_none) {
-            return Err(not_applicable(scheme, &mesh, refined.vertex_origins[k], level));
+        // a closed mesh must have every rule apply; name the first that does
+        // not, and why (every new vertex was selected, so none is NotSelected)
+        if let Some((k, cause)) = stencils.iter().enumerate().find_map(|(k, s)| Some((k, s.cause()?))) {
+            return Err(not_applicable(scheme, &mesh, refined.vertex_origins[k], cause, level));
         }
-        let new_points = apply(&stencils, &points);
+        let new_points = apply(stencils.iter().map(StepStencil::stencil), &points);
         if new_points.iter().any(|p| p.is_none_or(|p| !p.iter().all(|x| x.is_finite()))) {
             return Err(Error::Input(format!(
                 "level {level}: a refined position is not finite (coordinates too large?)"
@@ -87,7 +89,8 @@ pub fn refine_mesh(
             let rules: Vec<Option<Stencil<f64>>> =
                 refined.vertex_origins.iter().map(|&o| scheme.vertex_param_rule(&mesh, o)).collect();
             let old: Vec<Option<[f64; 1]>> = params.iter().map(|&a| Some([a])).collect();
-            let new: Option<Vec<f64>> = apply(&rules, &old).into_iter().map(|a| a.map(|a| a[0])).collect();
+            let new: Option<Vec<f64>> =
+                apply(rules.iter().map(Option::as_ref), &old).into_iter().map(|a| a.map(|a| a[0])).collect();
             next.vertex_params =
                 Some(new.ok_or_else(|| {
                     Error::Input(format!("{}: no rule refines the per-vertex {name}", scheme.name()))
@@ -120,53 +123,71 @@ pub fn composite_weights(
         let step_rules = scheme.at_level(level);
         let rules: &dyn Scheme = step_rules.as_deref().unwrap_or(scheme);
         let Step { refined, stencils } = step::<f64>(rules, &mesh)?;
-        rows = apply(&stencils, &rows);
+        rows = apply(stencils.iter().map(StepStencil::stencil), &rows);
         mesh = refined.mesh;
     }
     Ok((mesh, rows))
 }
 
-/// Why the rule for `origin` does not apply, as one line.
-fn not_applicable(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin, level: usize) -> Error {
+/// Why the rule for `origin` does not apply, as one line. The gatherer's
+/// `cause` decides what is said; the mesh is read only to name the place (the
+/// vertex, the edge, the face sizes the host's rules do not cover).
+fn not_applicable(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin, cause: GatherError, level: usize) -> Error {
     let name = scheme.name();
+    let needs = requirement(scheme);
     let at_level = if level == 1 { String::new() } else { format!(" (at refinement level {level})") };
     let sizes = |faces: &[usize]| faces.iter().map(|&f| mesh.face(f).len().to_string()).collect::<Vec<_>>().join(", ");
-    let open = mesh.edges().into_iter().find(|&(a, b)| !mesh.is_interior_edge(a, b));
-    let reason = match origin {
-        Origin::Vertex(v) => {
-            let around = mesh.faces_around(v);
-            if around.is_empty() {
+    let (rule, place) = match origin {
+        Origin::Vertex(v) => ("vertex", format!("vertex {}", v + 1)),
+        Origin::Edge(a, b) => ("edge", format!("edge {}-{}", a + 1, b + 1)),
+        Origin::Face(f) => ("face", format!("face {}", f + 1)),
+        Origin::Corner { face, corner } => ("corner", format!("corner {} of face {}", corner + 1, face + 1)),
+    };
+    let reason = match cause {
+        // the rule's neighbourhood is cut off: the mesh ends there, or (a
+        // vertex in no face) has no neighbourhood at all
+        GatherError::Truncated => match origin {
+            Origin::Vertex(v) if mesh.faces_around(v).is_empty() => {
                 format!("vertex {} is not used by any face", v + 1)
-            } else if mesh.vertex_fan(v).is_none() {
-                format!("vertex {} is on the boundary", v + 1)
-            } else {
-                format!("its vertex rule does not apply at vertex {} (face sizes around it: {})", v + 1, sizes(&around))
             }
-        }
-        Origin::Edge(a, b) => {
-            if !mesh.is_interior_edge(a, b) {
+            Origin::Vertex(v) if mesh.vertex_fan(v).is_none() => format!("vertex {} is on the boundary", v + 1),
+            Origin::Edge(a, b) if !mesh.is_interior_edge(a, b) => {
                 format!("edge {}-{} is on the boundary", a + 1, b + 1)
-            } else {
-                let faces: Vec<usize> =
-                    [mesh.half_edge(a, b), mesh.half_edge(b, a)].into_iter().flatten().map(|h| h.0).collect();
-                format!(
-                    "its edge rule does not apply at edge {}-{} (adjacent face sizes: {})",
-                    a + 1,
-                    b + 1,
-                    sizes(&faces)
-                )
             }
+            _ => format!("the mesh ends inside the neighbourhood its {rule} rule weighs at {place}"),
+        },
+        // the neighbourhood is complete but of a shape the host's rules do
+        // not cover: name the shape
+        GatherError::NotCovered => {
+            let shape = match origin {
+                Origin::Vertex(v) => {
+                    let around = mesh.faces_around(v);
+                    format!("valence {}, face sizes around it: {}", around.len(), sizes(&around))
+                }
+                Origin::Edge(a, b) => {
+                    let faces: Vec<usize> =
+                        [mesh.half_edge(a, b), mesh.half_edge(b, a)].into_iter().flatten().map(|h| h.0).collect();
+                    format!("adjacent face sizes: {}", sizes(&faces))
+                }
+                Origin::Face(f) | Origin::Corner { face: f, .. } => {
+                    format!("a face of {} vertices", mesh.face(f).len())
+                }
+            };
+            format!("its {rule} rule does not cover {place} ({shape})")
         }
-        Origin::Face(f) => format!("its face rule does not apply to face {} ({} vertices)", f + 1, mesh.face(f).len()),
-        Origin::Corner { face, corner } => {
-            format!("its corner rule does not apply at corner {} of face {}", corner + 1, face + 1)
+        // the host's topology asked for a point its own rules never create:
+        // not the mesh's fault, so not an input error
+        GatherError::Unsupported(host, kind) => {
+            return Error::Message(format!(
+                "{name}{at_level}: the {} host creates no {} points, yet the refinement asked for one at {place}",
+                host.spec().name,
+                format!("{kind:?}").to_lowercase()
+            ));
         }
     };
-    let needs = requirement(scheme);
-    let boundary_note = match open {
-        Some(_) => "; boundary rules are not implemented",
-        None => "",
-    };
+    // only a mesh that ends somewhere would need boundary rules
+    let open = cause == GatherError::Truncated && mesh.edges().into_iter().any(|(a, b)| !mesh.is_interior_edge(a, b));
+    let boundary_note = if open { "; boundary rules are not implemented" } else { "" };
     Error::Input(format!("{name} needs {needs}{at_level}: {reason}{boundary_note}"))
 }
 
@@ -221,4 +242,141 @@ pub fn four_directional(mesh: &PolyMesh, points: Vec<[f64; 3]>) -> Result<(PolyM
         }
     }
     Ok((PolyMesh::new(points.len(), faces).map_err(|e| Error::Input(e.to_string()))?, points))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::SectorKind;
+    use crate::numeric::{Inexact, Weight};
+    use crate::sdc::slots::{weigh, Host, Mask, OriginKind, Slot, Wants};
+    use crate::sdc::{Caps, CentreKind, MeshDomain, Params, RuleResult, Rules, SchemeInfo, Topology};
+
+    /// Loop's host with every mandatory slot weighed 1: which stencils exist
+    /// depends on the host's gatherer alone, which is what these tests are about.
+    struct OnLoopsHost {
+        info: SchemeInfo,
+        params: Params,
+    }
+
+    impl OnLoopsHost {
+        fn new() -> Self {
+            let info = SchemeInfo {
+                name: "ones",
+                description: "test: weight 1 on every slot of Loop's host",
+                topology: Topology::PrimalTriangle,
+                centre: CentreKind::Vertex,
+                sector: SectorKind::Tri,
+                caps: Caps::NONE,
+            };
+            OnLoopsHost { info, params: Params::default() }
+        }
+    }
+
+    impl Wants for OnLoopsHost {
+        fn rule(&self, _: &str) -> bool {
+            false
+        }
+        fn family(&self, _: &str, _: &str) -> bool {
+            false
+        }
+    }
+
+    impl<W: Weight> Mask<W> for OnLoopsHost {
+        fn weight(&self, _: &PolyMesh, _: &'static str, _: &Slot) -> Result<W, Inexact> {
+            Ok(W::one())
+        }
+    }
+
+    impl<W: Weight> Rules<MeshDomain, W> for OnLoopsHost {
+        fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
+            weigh(Host::PrimalTriangle, mesh, origin, self, &W::one())
+        }
+    }
+
+    impl Scheme for OnLoopsHost {
+        fn info(&self) -> &SchemeInfo {
+            &self.info
+        }
+        fn params(&self) -> &Params {
+            &self.params
+        }
+    }
+
+    /// The octahedron (vertex 2a + s is ±1 on axis a) without its face
+    /// (0, 2, 4): vertices 0, 2, 4 lie on the boundary, 1, 3, 5 keep their
+    /// closed fans of four triangles.
+    fn open_octahedron() -> PolyMesh {
+        let mut faces = Vec::new();
+        for sx in 0..2 {
+            for sy in 0..2 {
+                for sz in 0..2 {
+                    let (x, y, z) = (sx, 2 + sy, 4 + sz);
+                    if (sx, sy, sz) != (0, 0, 0) {
+                        faces.push(if (sx + sy + sz) % 2 == 0 { vec![x, y, z] } else { vec![x, z, y] });
+                    }
+                }
+            }
+        }
+        PolyMesh::new(6, faces).unwrap()
+    }
+
+    /// A step keeps the gatherer's reason per new vertex: the vertex rule is
+    /// cut off at the three boundary vertices and applies at the others.
+    #[test]
+    fn a_step_holds_why_a_rule_does_not_apply() {
+        let mesh = open_octahedron();
+        let Step { refined, stencils } = step::<f64>(&OnLoopsHost::new(), &mesh).unwrap();
+        let mut seen = 0;
+        for (origin, s) in refined.vertex_origins.iter().zip(&stencils) {
+            if let Origin::Vertex(v) = *origin {
+                seen += 1;
+                if [0, 2, 4].contains(&v) {
+                    assert_eq!(s, &StepStencil::Missing(GatherError::Truncated), "vertex {v}");
+                } else {
+                    // centre and its four neighbours, weight 1 each
+                    assert_eq!(s.stencil().map(|s| s.terms.len()), Some(5), "vertex {v}");
+                }
+            }
+        }
+        assert_eq!(seen, 6);
+    }
+
+    /// The message says what the typed cause says: the same vertex of the
+    /// same open mesh is "on the boundary" (and boundary rules are missing)
+    /// when its neighbourhood is truncated, and of an uncovered shape when
+    /// the host's rules do not cover it.
+    #[test]
+    fn not_applicable_starts_from_the_typed_cause() {
+        let (scheme, mesh) = (OnLoopsHost::new(), open_octahedron());
+        let e = not_applicable(&scheme, &mesh, Origin::Vertex(0), GatherError::Truncated, 1);
+        assert_eq!(
+            e,
+            Error::Input(
+                "ones needs a closed triangle mesh: vertex 1 is on the boundary; boundary rules are not implemented"
+                    .into()
+            )
+        );
+        // an interior place whose rule reaches the boundary: the open mesh is named too
+        let e = not_applicable(&scheme, &mesh, Origin::Vertex(1), GatherError::Truncated, 2);
+        assert_eq!(
+            e.to_string(),
+            "ones needs a closed triangle mesh (at refinement level 2): the mesh ends inside the neighbourhood \
+             its vertex rule weighs at vertex 2; boundary rules are not implemented"
+        );
+        // vertex 1 (0-based) has four triangles around it
+        let e = not_applicable(&scheme, &mesh, Origin::Vertex(1), GatherError::NotCovered, 1);
+        assert_eq!(
+            e,
+            Error::Input(
+                "ones needs a closed triangle mesh: its vertex rule does not cover vertex 2 \
+                 (valence 4, face sizes around it: 3, 3, 3, 3)"
+                    .into()
+            )
+        );
+        // a host asked for a point it never creates is an internal failure
+        let cause = GatherError::Unsupported(Host::PrimalTriangle, OriginKind::Corner);
+        let e = not_applicable(&scheme, &mesh, Origin::Corner { face: 0, corner: 1 }, cause, 1);
+        assert!(matches!(&e, Error::Message(m) if m.contains("creates no corner points")), "{e:?}");
+    }
 }

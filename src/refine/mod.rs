@@ -13,7 +13,7 @@ pub use combine::{Combine, SparseRow};
 
 // Origins and stencils are part of the scheme description (`crate::sdc`);
 // re-exported because every consumer of a refinement step uses them.
-pub use crate::sdc::{Origin, RuleResult, Stencil};
+pub use crate::sdc::{GatherError, Origin, RuleResult, Stencil};
 
 use crate::error::Error;
 use crate::mesh::PolyMesh;
@@ -22,12 +22,17 @@ use crate::sdc::{Scheme, SchemeWeight};
 use crate::topology::Refined;
 
 /// Evaluate stencils on data; a new value is `None` when its stencil is missing
-/// or touches a missing old value.
-pub fn apply<W: Weight, T: Combine<W>>(stencils: &[Option<Stencil<W>>], data: &[Option<T>]) -> Vec<Option<T>> {
+/// or touches a missing old value. Takes the stencils as an iterator so that a
+/// step's [`StepStencil`]s (`.iter().map(StepStencil::stencil)`) and plain
+/// optional stencils (`.iter().map(Option::as_ref)`) are applied alike.
+pub fn apply<'s, W: Weight + 's, T: Combine<W>>(
+    stencils: impl IntoIterator<Item = Option<&'s Stencil<W>>>,
+    data: &[Option<T>],
+) -> Vec<Option<T>> {
     stencils
-        .iter()
+        .into_iter()
         .map(|st| {
-            let st = st.as_ref()?;
+            let st = st?;
             let mut terms = Vec::with_capacity(st.terms.len());
             for (v, w) in &st.terms {
                 terms.push((w.clone(), data.get(*v)?.as_ref()?));
@@ -38,15 +43,52 @@ pub fn apply<W: Weight, T: Combine<W>>(stencils: &[Option<Stencil<W>>], data: &[
 }
 
 /// One refinement step of a mesh: the host's refined connectivity and, per
-/// new vertex, its stencil over the old vertices (`None` where the rule
-/// cannot be evaluated on this mesh, e.g. at the rim of a truncated patch or
-/// a pruned net, or where the step was asked for some new vertices only).
+/// new vertex, its stencil over the old vertices, or why there is none.
 /// This is the one place where a host and a scheme's rules meet; discovery,
 /// characteristic-map nets, mesh refinement, strip matrices and the claims'
 /// mask sums all step through it.
 pub struct Step<W> {
     pub refined: Refined,
-    pub stencils: Vec<Option<Stencil<W>>>,
+    pub stencils: Vec<StepStencil<W>>,
+}
+
+/// What a step holds for one new vertex.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StepStencil<W> {
+    /// the rule applied: the new vertex's weights on old vertices
+    Stencil(Stencil<W>),
+    /// the rule does not apply on this mesh, and the gatherer's reason (the
+    /// rim of a truncated patch or a pruned net, a face the host's rules do
+    /// not cover, an origin the host never creates)
+    Missing(GatherError),
+    /// the step was asked for other new vertices only ([`step_selected`])
+    NotSelected,
+}
+
+impl<W> StepStencil<W> {
+    /// The stencil, if the rule was evaluated and applied.
+    pub fn stencil(&self) -> Option<&Stencil<W>> {
+        match self {
+            StepStencil::Stencil(s) => Some(s),
+            StepStencil::Missing(_) | StepStencil::NotSelected => None,
+        }
+    }
+    /// Why the rule does not apply, if it was evaluated and did not.
+    pub fn cause(&self) -> Option<GatherError> {
+        match self {
+            StepStencil::Missing(cause) => Some(*cause),
+            StepStencil::Stencil(_) | StepStencil::NotSelected => None,
+        }
+    }
+}
+
+impl<W> From<Result<Stencil<W>, GatherError>> for StepStencil<W> {
+    fn from(rule: Result<Stencil<W>, GatherError>) -> Self {
+        match rule {
+            Ok(s) => StepStencil::Stencil(s),
+            Err(cause) => StepStencil::Missing(cause),
+        }
+    }
 }
 
 /// Refine `mesh` once with `rules` (a scheme, or its rules at one level for
@@ -57,7 +99,7 @@ pub fn step<W: SchemeWeight>(rules: &dyn Scheme, mesh: &PolyMesh) -> Result<Step
 }
 
 /// [`step`] with stencils for the new vertices that `select` picks from the
-/// refined connectivity only (the others are `None`): a window of a large
+/// refined connectivity only (the others are [`StepStencil::NotSelected`]): a window of a large
 /// patch needs a few stencils, and an exact weight elsewhere on the patch may
 /// be irrational without concerning it. `select` may fail (a position it needs
 /// is not on the refined mesh); a vertex selected twice is evaluated once.
@@ -67,14 +109,15 @@ pub fn step_selected<W: SchemeWeight>(
     select: impl FnOnce(&Refined) -> Result<Vec<usize>, Error>,
 ) -> Result<Step<W>, Error> {
     let refined = connectivity(rules, mesh)?;
-    let mut stencils: Vec<Option<Stencil<W>>> = vec![None; refined.vertex_origins.len()];
+    let mut stencils: Vec<StepStencil<W>> = vec![StepStencil::NotSelected; refined.vertex_origins.len()];
     let mut done = vec![false; stencils.len()];
     for v in select(&refined)? {
         if std::mem::replace(&mut done[v], true) {
             continue;
         }
         stencils[v] = new_stencil(rules, mesh, &refined, v)
-            .map_err(|Inexact| Error::Numeric(format!("{}: a weight is not representable exactly", rules.name())))?;
+            .map_err(|Inexact| Error::Numeric(format!("{}: a weight is not representable exactly", rules.name())))?
+            .into();
     }
     Ok(Step { refined, stencils })
 }

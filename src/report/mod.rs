@@ -244,7 +244,7 @@ const SURFACE_RINGS: usize = 3;
 
 /// The second-order figures of `subdlab curvature --figure central-ring` and
 /// `--figure surface` at the spec's valence, with the class and its evidence.
-fn curvature_figures(spec: &FigureSpec) -> Result<(String, Files), String> {
+fn curvature_figures(spec: &FigureSpec) -> Result<(String, Files), Error> {
     use crate::curvature::{curvature, CurvatureOptions, DEFAULT_LEVELS};
     use crate::plot::curvature::{CurvatureFigure, CurvatureFigureKind};
     let params: Vec<(String, String)> = spec.params.iter().map(|(k, v)| (k.clone(), v.clone())).collect();

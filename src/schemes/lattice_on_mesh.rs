@@ -12,8 +12,9 @@
 use crate::lattice::{LatticeScheme, LatticeWeight};
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Cyclotomic, Interval, Rational, SmallRational};
-use crate::sdc::Topology;
+use crate::sdc::slots::OriginKind;
 use crate::sdc::{Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeInfo};
+use crate::sdc::{GatherError, Topology};
 use crate::sdc::{Origin, RuleResult, Stencil};
 
 pub struct LatticeOnMesh {
@@ -44,13 +45,18 @@ impl LatticeOnMesh {
     }
 
     fn masks_on_mesh<W: LatticeWeight>(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<W> {
-        let Some(((alpha, beta), base)) = parity_and_base(mesh, origin) else { return Ok(None) };
+        let ((alpha, beta), base) = match parity_and_base(mesh, origin) {
+            Ok(found) => found,
+            Err(cause) => return Ok(Err(cause)),
+        };
         let mut s = Stencil::new();
         for ((r, t), w) in W::mask_of(self.inner.as_ref(), alpha, beta) {
-            let Some(v) = walk(mesh, base, r, t) else { return Ok(None) };
-            s.add(v, w);
+            match walk(mesh, base, r, t) {
+                Ok(v) => s.add(v, w),
+                Err(cause) => return Ok(Err(cause)),
+            }
         }
-        Ok(Some(s))
+        Ok(Ok(s))
     }
 }
 
@@ -78,21 +84,23 @@ fn edge_dir(mesh: &PolyMesh, f: usize, k: usize) -> Option<u8> {
     Some(((local + s) % 4) as u8)
 }
 
-/// The neighbour of v in direction `dir`, if v's fan is complete there.
-fn step(mesh: &PolyMesh, v: usize, dir: u8) -> Option<usize> {
+/// The neighbour of v in direction `dir`: `Truncated` when v's fan has no
+/// face there (the rim of a patch), `NotCovered` when a face around v is not
+/// a quad with lattice directions.
+fn step(mesh: &PolyMesh, v: usize, dir: u8) -> Result<usize, GatherError> {
     for f in mesh.faces_around(v) {
         let face = mesh.face(f);
-        let k = face.iter().position(|&u| u == v)?;
-        if edge_dir(mesh, f, k)? == dir {
-            return Some(face[(k + 1) % face.len()]);
+        let k = face.iter().position(|&u| u == v).ok_or(GatherError::NotCovered)?;
+        if edge_dir(mesh, f, k).ok_or(GatherError::NotCovered)? == dir {
+            return Ok(face[(k + 1) % face.len()]);
         }
     }
-    None
+    Err(GatherError::Truncated)
 }
 
 /// The vertex at lattice offset (r, s) from v (i first, then j: on a regular
 /// grid any path gives the same vertex).
-fn walk(mesh: &PolyMesh, v: usize, r: i64, s: i64) -> Option<usize> {
+fn walk(mesh: &PolyMesh, v: usize, r: i64, s: i64) -> Result<usize, GatherError> {
     let mut v = v;
     for _ in 0..r.unsigned_abs() {
         v = step(mesh, v, if r > 0 { 0 } else { 2 })?;
@@ -100,27 +108,30 @@ fn walk(mesh: &PolyMesh, v: usize, r: i64, s: i64) -> Option<usize> {
     for _ in 0..s.unsigned_abs() {
         v = step(mesh, v, if s > 0 { 1 } else { 3 })?;
     }
-    Some(v)
+    Ok(v)
 }
 
-/// The mask parity of the new vertex and the old vertex (i, j) it is based at.
-fn parity_and_base(mesh: &PolyMesh, origin: Origin) -> Option<((u8, u8), usize)> {
+/// The mask parity of the new vertex and the old vertex (i, j) it is based
+/// at; `NotCovered` where the faces at the origin carry no lattice
+/// directions, `Unsupported` for a corner (the quad split creates none).
+fn parity_and_base(mesh: &PolyMesh, origin: Origin) -> Result<((u8, u8), usize), GatherError> {
+    let uncovered = GatherError::NotCovered;
     match origin {
-        Origin::Vertex(v) => Some(((0, 0), v)),
+        Origin::Vertex(v) => Ok(((0, 0), v)),
         Origin::Edge(a, b) => {
             let (f, k, reversed) = match mesh.half_edge(a, b) {
                 Some((f, k)) => (f, k, false),
                 None => {
-                    let (f, k) = mesh.half_edge(b, a)?;
+                    let (f, k) = mesh.half_edge(b, a).ok_or(uncovered)?;
                     (f, k, true)
                 }
             };
-            let mut d = edge_dir(mesh, f, k)?;
+            let mut d = edge_dir(mesh, f, k).ok_or(uncovered)?;
             if reversed {
                 d = (d + 2) % 4;
             }
             // a -> b has direction d
-            Some(match d {
+            Ok(match d {
                 0 => ((1, 0), a),
                 2 => ((1, 0), b),
                 1 => ((0, 1), a),
@@ -128,10 +139,10 @@ fn parity_and_base(mesh: &PolyMesh, origin: Origin) -> Option<((u8, u8), usize)>
             })
         }
         Origin::Face(f) => {
-            let k = (0..4).find(|&k| edge_dir(mesh, f, k) == Some(0))?;
-            Some(((1, 1), mesh.face(f)[k]))
+            let k = (0..4).find(|&k| edge_dir(mesh, f, k) == Some(0)).ok_or(uncovered)?;
+            Ok(((1, 1), mesh.face(f)[k]))
         }
-        Origin::Corner { .. } => None,
+        Origin::Corner { .. } => Err(GatherError::Unsupported(Topology::PrimalQuad, OriginKind::of(origin))),
     }
 }
 

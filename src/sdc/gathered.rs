@@ -5,8 +5,10 @@
 //! entry point and the weighing are in `sdc::slots`.
 
 use crate::mesh::VertexId;
+use crate::numeric::Inexact;
 use crate::sdc::host_list::Host;
 use crate::sdc::host_spec::OriginKind;
+use crate::sdc::stencil::Stencil;
 
 /// Which rules and optional families a mask has: the gatherer collects only
 /// what is weighed (a 2-ring family costs a larger neighbourhood).
@@ -130,3 +132,12 @@ impl Gathered {
 }
 
 pub type Gather = Result<Gathered, GatherError>;
+
+/// What a mask returns for one origin: `Ok(Ok(stencil))`; `Ok(Err(cause))`
+/// when the old mesh does not hold a neighbourhood the rule applies to, with
+/// the gatherer's reason (a truncated patch, a face size or valence the host's
+/// rules do not cover, an origin the host never creates), so that whoever
+/// reports the missing stencil can say why; `Err(Inexact)` when the weights
+/// are not representable in `W`. Declared here, beside `GatherError`, rather
+/// than with `Stencil`: the stencil file stays below the hosts' declarations.
+pub type RuleResult<W> = Result<Result<Stencil<W>, GatherError>, Inexact>;

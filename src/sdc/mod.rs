@@ -26,9 +26,10 @@ pub mod slots;
 pub mod stencil;
 
 pub use centre::CentreKind;
+pub use gathered::{GatherError, RuleResult};
 pub use host::{Topology, TriangleSplit};
 pub use params::{ParamSpec, Params};
-pub use stencil::{Origin, RuleResult, Stencil};
+pub use stencil::{Origin, Stencil};
 
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Cyclotomic, Interval, Rational, SmallRational, Weight};
@@ -258,7 +259,7 @@ pub trait SchemeWeight: RuleWeight<MeshDomain> {
         Self::rule_of(scheme, mesh, origin)
     }
     fn stencil(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> RuleResult<Self> {
-        Ok(Self::rule(scheme, mesh, origin)?.map(|s| s.merged()))
+        Ok(Self::rule(scheme, mesh, origin)?.map(Stencil::merged))
     }
 }
 

@@ -22,12 +22,12 @@
 
 use crate::mesh::{FaceId, PolyMesh, VertexId};
 use crate::numeric::{Inexact, Weight};
-use crate::sdc::stencil::{Origin, RuleResult, Stencil};
+use crate::sdc::stencil::{Origin, Stencil};
 
 // the hosts' identities, declarations and gather results live below the
 // host interface (`sdc::host`), which the gatherer here calls; re-exported
 // under the paths the host files and the schemes name them by
-pub use crate::sdc::gathered::{Gather, GatherError, Gathered, Part, Slot, Target, Wants};
+pub use crate::sdc::gathered::{Gather, GatherError, Gathered, Part, RuleResult, Slot, Target, Wants};
 pub use crate::sdc::host::Registry;
 pub use crate::sdc::host_list::{Host, HOSTS};
 pub(crate) use crate::sdc::host_spec::{
@@ -48,8 +48,9 @@ pub trait Mask<W: Weight>: Wants {
 /// origin, weighed. `extraordinary_share` is the share of the rules of
 /// extraordinary vertices that replace a regular rule (1 for stationary
 /// rules; less over the first steps of a real mesh where a scheme blends
-/// them in, as 4-3 does). `Ok(None)` where the neighbourhood is truncated,
-/// not covered by the host's rules, or of an origin the host never creates.
+/// them in, as 4-3 does). `Ok(Err(cause))` where the neighbourhood is
+/// truncated, not covered by the host's rules, or of an origin the host
+/// never creates: the gatherer's reason is passed on, not dropped.
 pub fn weigh<W: Weight>(
     host: Host,
     mesh: &PolyMesh,
@@ -57,7 +58,10 @@ pub fn weigh<W: Weight>(
     mask: &dyn Mask<W>,
     extraordinary_share: &W,
 ) -> RuleResult<W> {
-    let Ok(g) = gather(host, mesh, origin, mask) else { return Ok(None) };
+    let g = match gather(host, mesh, origin, mask) {
+        Ok(g) => g,
+        Err(cause) => return Ok(Err(cause)),
+    };
     // one term per direct slot (a derived point adds its own): no regrowth
     let slots = g.parts.iter().chain(&g.extraordinary).chain(&g.regular).map(|p| p.slots.len()).sum();
     let mut s = Stencil { terms: Vec::with_capacity(slots) };
@@ -73,7 +77,7 @@ pub fn weigh<W: Weight>(
             fill(mask, mesh, &mut s, regular, &rest)?;
         }
     }
-    Ok(Some(s))
+    Ok(Ok(s))
 }
 
 /// Add `scale` times the weighed slots of `part` to `s`.

@@ -2,7 +2,7 @@
 //! stencil, a weighted sum of old vertices.
 
 use crate::mesh::{FaceId, VertexId};
-use crate::numeric::{Inexact, Weight};
+use crate::numeric::Weight;
 
 /// Where a new vertex (or a new face) comes from in the old mesh.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -67,9 +67,3 @@ impl<W: Weight> Stencil<W> {
         self.terms.iter().filter(|t| !t.1.is_zero()).map(|t| t.0)
     }
 }
-
-/// What a mask returns for one origin: `Ok(None)` when the old mesh does not
-/// hold the neighbourhood the rule needs (boundary of a truncated patch, or a
-/// face type the rule does not cover); `Err(Inexact)` when the weights are not
-/// representable in `W`.
-pub type RuleResult<W> = Result<Option<Stencil<W>>, Inexact>;

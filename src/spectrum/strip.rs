@@ -25,7 +25,7 @@ use crate::engine::closure::{assemble, ClosureError, Refinement};
 use crate::error::Error;
 use crate::neighbourhood::{build_patch, Configuration};
 use crate::numeric::Rational;
-use crate::refine::{step_selected, Step};
+use crate::refine::{step_selected, Step, StepStencil};
 use crate::sdc::Scheme;
 
 /// Planar integer position of a chart point: sector s point (i, j) is
@@ -53,9 +53,16 @@ impl Shifted<'_> {
     fn stencil(&self, at: &[i64; 2]) -> Result<Vec<([i64; 2], Rational)>, Error> {
         // a point or rule missing on the patch: not determined by it
         let v = *self.fine.get(at).ok_or_else(|| Error::NotDetermined(format!("no refined point at {at:?}")))?;
-        let st = self.step.stencils[v]
-            .as_ref()
-            .ok_or_else(|| Error::NotDetermined(format!("no rule for the refined point at {at:?}")))?;
+        let st = match &self.step.stencils[v] {
+            StepStencil::Stencil(st) => st,
+            StepStencil::Missing(cause) => {
+                return Err(Error::NotDetermined(format!("no rule for the refined point at {at:?}: {cause}")))
+            }
+            // the step selected every window position: a lookup outside it is ours
+            StepStencil::NotSelected => {
+                return Err(Error::Message(format!("the refined point at {at:?} was not selected for a stencil")))
+            }
+        };
         Ok(st.terms.iter().map(|(u, w)| (self.coarse[u], w.clone())).collect())
     }
 }

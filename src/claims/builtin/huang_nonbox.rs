@@ -72,7 +72,11 @@ pub fn nonbox_vector_mask(data: &toml::Value) -> Result<Finding, Error> {
     let mut t = [[q(0, 1), q(0, 1)], [q(0, 1), q(0, 1)]];
     for v in cells {
         let i = usize::from(!fcv1.contains(&v));
-        let st = step.stencils[v].as_ref().ok_or_else(|| Error::Undecided("rule not evaluable".into()))?;
+        // every cell was selected, so a missing stencil is the rule's: say why
+        let st = step.stencils[v].stencil().ok_or_else(|| match step.stencils[v].cause() {
+            Some(cause) => Error::Undecided(format!("rule not evaluable: {cause}")),
+            None => Error::Message("a selected cell has no stencil".into()),
+        })?;
         for (u, w) in &st.terms {
             let j = usize::from(!fcv0.contains(u));
             t[i][j] = &t[i][j] + w;

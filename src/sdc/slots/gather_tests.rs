@@ -293,3 +293,55 @@ fn polar_rules_take_the_pole_ring_turned_to_the_spoke() {
         assert_eq!((p.rule, family(&p, "near"), family(&p, "far")), ("radial", vec![r(k)], vec![o(k)]));
     }
 }
+
+/// A mask over the mandatory slots that weighs every slot 1: the stencil of
+/// an origin then lists each gathered vertex once, with weight 1.
+struct Ones;
+impl Wants for Ones {
+    fn rule(&self, _: &str) -> bool {
+        false
+    }
+    fn family(&self, _: &str, _: &str) -> bool {
+        false
+    }
+}
+impl super::Mask<f64> for Ones {
+    fn weight(&self, _: &PolyMesh, _: &'static str, _: &super::Slot) -> Result<f64, crate::numeric::Inexact> {
+        Ok(1.0)
+    }
+}
+
+/// A pyramid over a pentagon: apex 0 (five triangles around it, valence 5),
+/// base corners 1..=5, and the pentagon closing the base.
+fn pentagonal_pyramid() -> PolyMesh {
+    let mut faces: Vec<Vec<usize>> = (0..5).map(|j| vec![0, 1 + j, 1 + (j + 1) % 5]).collect();
+    faces.push(vec![5, 4, 3, 2, 1]);
+    PolyMesh::new(6, faces).unwrap()
+}
+
+#[test]
+fn weigh_passes_the_gatherers_reason_on() {
+    use super::weigh;
+    let one = 1.0;
+    // the quad star's centre has its closed fan: centre, n edge and n face
+    // neighbours, each weighed 1
+    let star = quad_star(5);
+    let s = weigh(Host::PrimalQuad, &star, Origin::Vertex(0), &Ones, &one).unwrap().unwrap().merged();
+    assert_eq!(s.terms, (0..11).map(|v| (v, 1.0)).collect::<Vec<_>>());
+    // an outer vertex of the star lies on the rim: its fan is cut off
+    let r = weigh(Host::PrimalQuad, &star, Origin::Vertex(1), &Ones, &one).unwrap();
+    assert_eq!(r, Err(GatherError::Truncated));
+    // under Loop's host, the apex (triangles only) has a rule, but a base
+    // corner (two triangles and the pentagon) and an edge of the pentagon are
+    // complete neighbourhoods of a shape no triangle rule covers
+    let pyramid = pentagonal_pyramid();
+    let s = weigh(Host::PrimalTriangle, &pyramid, Origin::Vertex(0), &Ones, &one).unwrap().unwrap().merged();
+    assert_eq!(s.terms.len(), 6, "the apex and its five neighbours");
+    for origin in [Origin::Vertex(1), Origin::Edge(1, 2)] {
+        let r = weigh(Host::PrimalTriangle, &pyramid, origin, &Ones, &one).unwrap();
+        assert_eq!(r, Err(GatherError::NotCovered), "{origin:?}");
+    }
+    // a primal host never creates points at the corners of a face
+    let r = weigh(Host::PrimalTriangle, &pyramid, Origin::Corner { face: 0, corner: 0 }, &Ones, &one).unwrap();
+    assert_eq!(r, Err(GatherError::Unsupported(Host::PrimalTriangle, OriginKind::Corner)));
+}
