@@ -15,8 +15,8 @@
 //! at the all-quad valence-4 eon (QQQQ, the regular A_4 lattice) the
 //! characteristic map is linear and refining a sampled quadratic reproduces
 //! it up to a constant, so the figure's sign must be the input's own sign on
-//! every face; at QQQQQ (n = 5) the hyperbolic inputs must stay hyperbolic on
-//! every face whose control net is regular.
+//! every face. (At QQQQQ there is no exact reference here: the ring's map is
+//! not linear and the box spline's patches are not written out.)
 
 use std::collections::BTreeMap;
 
@@ -197,5 +197,34 @@ fn four_three_quad_eons_keep_the_input_sign() {
         for ring in &signs {
             assert!(!ring.is_empty() && ring.iter().all(|&s| s == q.sign()), "QQQQ {}: {ring:?}", q.label());
         }
+    }
+}
+
+/// The central-ring figure marks Jordan chain tops. At 4-3's all-quad eon,
+/// block m ≥ 2 of the 1-ring (e, f) is [[1/4, 0], [(1 + ω)/4, 1/4]] with
+/// ω = e^{2πim/n} (derived in tests/curvature_jordan.rs): a chain whenever
+/// ω ≠ −1, whose top is the pure f-direction; at even n block n/2 has
+/// ω = −1 and no chain, and blocks 0 and 1 have none at 1/4 either.
+#[test]
+fn four_three_central_ring_marks_the_chain_tops() {
+    let scheme = subdlab::schemes::build("four-three", &[]).unwrap();
+    for faces in ["QQQQQ", "QQQQQQ"] {
+        let n = faces.len();
+        let config = Configuration::with_faces(scheme.as_ref(), n, faces).unwrap();
+        let analysis = analysis_of(scheme.as_ref(), &config);
+        let opts = CurvatureOptions { figures: true, exact: false, ..CurvatureOptions::default() };
+        let c = curvature_of_analysis(scheme.as_ref(), &analysis, &opts).unwrap();
+        let labels: Vec<String> = c.figures.unwrap().mu_functions.into_iter().map(|(l, _)| l).collect();
+        let block = |l: &str| -> usize {
+            let rest = &l[l.find("block ").expect("a block") + 6..];
+            rest[..rest.find(',').unwrap()].parse().unwrap()
+        };
+        for l in &labels {
+            let m = block(l);
+            let chain = m >= 2 && 2 * m != n;
+            assert_eq!(l.contains("Jordan chain top"), chain, "{faces}: {l}");
+        }
+        // block 2 is drawn (its conjugate n − 2 is not)
+        assert!(labels.iter().any(|l| block(l) == 2), "{faces}: {labels:?}");
     }
 }

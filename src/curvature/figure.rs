@@ -119,8 +119,10 @@ pub struct FigureData {
     /// ring triangles in the characteristic map's plane
     pub triangles: Vec<[[f64; 2]; 3]>,
     /// μ-eigenfunctions: (label, value at each triangle corner); the label
-    /// says "Jordan chain top" for an eigenvector at the top of a Jordan
-    /// chain (S^m multiplies it by m ν^(m−1) on top of ν^m)
+    /// says "Jordan chain top (× m)" for an eigenvector at the top of a
+    /// Jordan chain (S^m w2 = ν^m w2 + m ν^(m−1) w1 puts the factor m on the
+    /// top w1) and "block with a Jordan chain" for another eigenvector of a
+    /// block that has one ([`chain_tops`])
     pub mu_functions: Vec<(String, Vec<[f64; 3]>)>,
     /// limit-surface rings: one list per input quadratic
     pub surface: Vec<SurfaceRows>,
@@ -179,7 +181,7 @@ pub(super) fn figure_data(
                     continue;
                 }
             }
-            let top = kind.is_empty() && tops.get(i).copied().unwrap_or(false);
+            let top = if kind.is_empty() { tops.get(i).copied().flatten() } else { None };
             for (part, f) in
                 [("re", x.iter().map(|z| z.re).collect::<Vec<f64>>()), ("im", x.iter().map(|z| z.im).collect())]
             {
@@ -193,8 +195,10 @@ pub(super) fn figure_data(
                     continue;
                 }
                 let mut label = format!("μ = {}, block {block}, {kind}{part}", fmt_c(e.re, e.im));
-                if top {
-                    label += ", Jordan chain top (× m)";
+                match top {
+                    Some(true) => label += ", Jordan chain top (× m)",
+                    Some(false) => label += ", block with a Jordan chain",
+                    None => {}
                 }
                 let per: Vec<[f64; 3]> = tris_ids
                     .iter()
@@ -212,14 +216,16 @@ pub(super) fn figure_data(
     Ok(FigureData { triangles, mu_functions, surface })
 }
 
-/// For each eigenvector of `e` (in the order of `vectors_with_blocks`):
-/// whether it lies at the top of a Jordan chain, in the span of N·G (N = B −
-/// νI on its block B, G the block's generalised eigenspace), within 1e-6 of
-/// its norm. All false for a non-defective eigenvalue.
-pub fn chain_tops(spec: &Spectrum, e: &Eigenvalue) -> Vec<bool> {
+/// For each eigenvector of `e` (in the order of `Spectrum::right_vectors`):
+/// None when its block has no Jordan chain, else whether it lies at the top
+/// of one, in the span of N·G (N = B − νI on its block B, G the block's
+/// generalised eigenspace) within 1e-6 of its norm. (In a block whose
+/// eigenspace is larger than its chains' tops, a computed eigenvector can
+/// mix a top with a chain-free eigenvector: Some(false).)
+pub fn chain_tops(spec: &Spectrum, e: &Eigenvalue) -> Vec<Option<bool>> {
     let count: usize = e.vectors.iter().map(|v| v.right.len()).sum();
     if !e.defective {
-        return vec![false; count];
+        return vec![None; count];
     }
     let nu = c64::new(e.re, e.im);
     let mut out = Vec::with_capacity(count);
@@ -245,7 +251,7 @@ pub fn chain_tops(spec: &Spectrum, e: &Eigenvalue) -> Vec<bool> {
                 }
             }
             let rn = r.iter().map(|z| z.norm_sqr()).sum::<f64>().sqrt();
-            out.push(!basis.is_empty() && xn > 0.0 && rn <= 1e-6 * xn);
+            out.push((!basis.is_empty()).then_some(xn > 0.0 && rn <= 1e-6 * xn));
         }
     }
     out
