@@ -111,6 +111,9 @@ fn table(c: &Curvature) -> String {
         opt(c.mu.as_ref().map(|m| m.modulus)),
         opt(c.mu_over_lambda_squared)
     );
+    if let Some(note) = super::commands::unused_centre_weight(&c.scheme, &c.params, &c.faces) {
+        out += &format!("{note}\n");
+    }
     out += &format!("curvature class  {}  (evidence: {})\n", c.class.name(), c.evidence.name());
     out += &format!(
         "L_p limit        {}\n",
@@ -132,7 +135,13 @@ fn table(c: &Curvature) -> String {
     if let Some(t) = &c.c2 {
         out += &format!(
             "C² test (Reif)   {}  (quadratic {}, spans x², xy, y²: {}, largest residual {})\n",
-            if t.holds { "holds" } else { "fails" },
+            // the flat-spot class passes only with zero curvature at the
+            // centre: say so rather than a bare "holds" (JSON keeps holds)
+            match (t.holds, c.class) {
+                (true, crate::curvature::CurvatureClass::Zero) => "C² (flat: curvature → 0)",
+                (true, _) => "holds",
+                (false, _) => "fails",
+            },
             t.quadratic,
             t.spans_quadratics,
             t.max_residual.map_or("-".into(), |r| format!("{r:.3e}"))
