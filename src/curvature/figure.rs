@@ -522,3 +522,59 @@ fn polar_ring_signs(sampler: &RingSampler, pts: &[Option<[f64; 3]>]) -> Option<V
     }
     Some(out)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// z = q_{t,θ} sampled on a scattered patch: the fitted Hessian is q's own
+    /// (2·rotation of diag(1, t)), so the sign is t's, at any θ, also with a
+    /// linear part and a constant added.
+    #[test]
+    fn fitted_sign_is_the_quadratics() {
+        for t in [0.5, -0.5, 0.1, -1.0, 1.0] {
+            for theta in [0.0, 23.0, 45.0, 100.0] {
+                let q = Quadratic { t, theta_degrees: theta };
+                let pts: Vec<[f64; 3]> = (0..16)
+                    .map(|i| {
+                        let (x, y) = (0.3 + 0.1 * (i % 4) as f64 + 0.01 * i as f64, -0.2 + 0.1 * (i / 4) as f64);
+                        [x, y, q.eval(x, y) + 0.7 * x - 0.2 * y + 3.0]
+                    })
+                    .collect();
+                assert_eq!(fitted_sign(&pts), q.sign(), "t = {t}, θ = {theta}");
+            }
+        }
+        // too few points, or all on a line: no sign
+        assert_eq!(fitted_sign(&[[0.0; 3]; 5]), 0);
+        let line: Vec<[f64; 3]> = (0..8).map(|i| [i as f64, 2.0 * i as f64, (i * i) as f64]).collect();
+        assert_eq!(fitted_sign(&line), 0);
+    }
+
+    /// q_{t,θ}: value 1 one unit along θ, t one unit along θ + 90°.
+    #[test]
+    fn quadratic_directions_and_parse() {
+        let q = Quadratic { t: -0.5, theta_degrees: 30.0 };
+        let (s, c) = 30f64.to_radians().sin_cos();
+        assert!((q.eval(c, s) - 1.0).abs() < 1e-15);
+        assert!((q.eval(-s, c) + 0.5).abs() < 1e-15);
+        assert_eq!(Quadratic::parse(" -0.5 , 30 ").unwrap(), q);
+        for bad in ["1.01,0", "-2,0", "nan,0", "0,inf", "0", "x,1", ""] {
+            assert!(Quadratic::parse(bad).is_err(), "{bad}");
+        }
+        assert!(Quadratic::defaults().iter().map(|q| q.sign()).eq([1, -1]));
+    }
+
+    /// Chaikin on a closed polygon keeps the centroid (each point's weights
+    /// ¾ + ¼ sum to one over the two new points it enters) and doubles it.
+    #[test]
+    fn chaikin_closed_keeps_the_centroid() {
+        let p = [[0.0, 0.0, 1.0], [1.0, 0.0, 2.0], [0.0, 1.0, 0.0]];
+        let c = chaikin_closed(&p);
+        assert_eq!(c.len(), 6);
+        assert_eq!(c[0], [0.25, 0.0, 1.25]);
+        assert_eq!(c[5], [0.0, 0.25, 0.75]);
+        let mean = |v: &[[f64; 3]]| [0, 1, 2].map(|k| v.iter().map(|x| x[k]).sum::<f64>() / v.len() as f64);
+        let (a, b) = (mean(&p), mean(&c));
+        assert!((0..3).all(|k| (a[k] - b[k]).abs() < 1e-15));
+    }
+}
