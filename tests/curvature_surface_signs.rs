@@ -178,7 +178,14 @@ fn catmull_clark_n5_signs_match_the_bicubic_patches() {
             *counts.entry((s, figure[k][i])).or_default() += 1;
         }
         let wrong: Vec<_> = exact.iter().filter(|(k, i, s, _)| figure[*k][*i] != *s).collect();
-        assert!(wrong.is_empty(), "{}: {} of {} faces disagree ((exact, figure): count {counts:?}); first {:?}", q.label(), wrong.len(), exact.len(), wrong.first());
+        assert!(
+            wrong.is_empty(),
+            "{}: {} of {} faces disagree ((exact, figure): count {counts:?}); first {:?}",
+            q.label(),
+            wrong.len(),
+            exact.len(),
+            wrong.first()
+        );
     }
 }
 

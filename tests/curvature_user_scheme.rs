@@ -157,7 +157,15 @@ fn cli_surface_input() {
     let dir = tmp();
     let one = dir.path().join("one.svg");
     let (ok, _, err) = subdlab(&[
-        "curvature", "catmull-clark", "-n", "5", "--figure", "surface", "--input", "-0.25,40", "-o",
+        "curvature",
+        "catmull-clark",
+        "-n",
+        "5",
+        "--figure",
+        "surface",
+        "--input",
+        "-0.25,40",
+        "-o",
         one.to_str().unwrap(),
     ]);
     assert!(ok, "{err}");
@@ -165,7 +173,8 @@ fn cli_surface_input() {
     assert!(text.contains("t = -0.25") && text.contains("θ = 40°") && text.contains("hyperbolic"));
     assert!(!text.contains("t = 0.5"));
     let two = dir.path().join("two.svg");
-    let (ok, _, err) = subdlab(&["curvature", "catmull-clark", "-n", "5", "--figure", "surface", "-o", two.to_str().unwrap()]);
+    let (ok, _, err) =
+        subdlab(&["curvature", "catmull-clark", "-n", "5", "--figure", "surface", "-o", two.to_str().unwrap()]);
     assert!(ok, "{err}");
     let text = std::fs::read_to_string(&two).unwrap();
     assert!(text.contains("t = 0.5") && text.contains("t = -0.5") && text.contains("θ = 23°"));

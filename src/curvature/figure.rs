@@ -282,7 +282,13 @@ fn orthonormal(vs: &[Vec<c64>]) -> Vec<Vec<c64>> {
 /// The level-0 input net of `q` over the characteristic map (normalised to
 /// unit size) and its images under the subdivision matrix: entry k is the
 /// net of ring k, its plane coordinates divided by λ^k.
-pub fn surface_nets(analysis: &Analysis, pair: &[[f64; 2]], lambda: f64, rings: usize, q: Quadratic) -> Vec<Vec<[f64; 3]>> {
+pub fn surface_nets(
+    analysis: &Analysis,
+    pair: &[[f64; 2]],
+    lambda: f64,
+    rings: usize,
+    q: Quadratic,
+) -> Vec<Vec<[f64; 3]>> {
     let s = &*analysis.matrix;
     let r = pair.iter().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max).max(1e-300);
     let mut data: Vec<[f64; 3]> = pair.iter().map(|p| [p[0] / r, p[1] / r, q.eval(p[0] / r, p[1] / r)]).collect();
@@ -338,7 +344,7 @@ pub fn fitted_sign(points: &[[f64; 3]]) -> i8 {
     // centred and scaled for conditioning: the Hessian's sign is unchanged
     let c = points.iter().fold([0.0; 2], |a, p| [a[0] + p[0] / m as f64, a[1] + p[1] / m as f64]);
     let h = points.iter().map(|p| (p[0] - c[0]).hypot(p[1] - c[1])).fold(0.0, f64::max);
-    if !(h > 0.0) {
+    if h.is_nan() || h <= 0.0 {
         return 0;
     }
     let uv = |p: &[f64; 3]| [(p[0] - c[0]) / h, (p[1] - c[1]) / h];
@@ -393,8 +399,9 @@ fn ring_signs(sampler: &RingSampler, pts: &[Option<[f64; 3]>]) -> Vec<(Vec<[f64;
 fn polar_grid(sampler: &RingSampler) -> Option<Vec<Vec<usize>>> {
     let mesh = &sampler.net.mesh;
     let vf = mesh.vertex_faces();
-    let pole = (0..mesh.num_vertices())
-        .find(|&v| !vf[v].is_empty() && vf[v].iter().all(|&f| mesh.face(f).len() == 3) && mesh.fan_corners(v).is_some())?;
+    let pole = (0..mesh.num_vertices()).find(|&v| {
+        !vf[v].is_empty() && vf[v].iter().all(|&f| mesh.face(f).len() == 3) && mesh.fan_corners(v).is_some()
+    })?;
     // neighbours of each vertex
     let mut nb: Vec<BTreeSet<usize>> = vec![BTreeSet::new(); mesh.num_vertices()];
     for f in 0..mesh.num_faces() {

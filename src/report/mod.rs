@@ -252,7 +252,13 @@ fn curvature_figures(spec: &FigureSpec) -> Result<(String, Files), String> {
     let (tag, title) = tag_and_title(&spec.scheme, &params);
     let n = spec.valence;
     let config = Configuration::regular(scheme.as_ref(), n)?;
-    let opts = CurvatureOptions { levels: DEFAULT_LEVELS, figures: true, surface_rings: SURFACE_RINGS, input: None, exact: true };
+    let opts = CurvatureOptions {
+        levels: DEFAULT_LEVELS,
+        figures: true,
+        surface_rings: SURFACE_RINGS,
+        input: None,
+        exact: true,
+    };
     let c = curvature(scheme.as_ref(), &config, &opts)?;
     let f = crate::spectrum::fmt_f;
     let mut summary = format!("Curvature class **{}** (evidence: {}", c.class.name(), c.evidence.name());
