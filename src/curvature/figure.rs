@@ -45,7 +45,10 @@ use std::collections::BTreeSet;
 
 use faer::c64;
 
-use super::{figure_vectors, fmt_c, jordan, EigenInfo, RingSampler, EIG_TOL, VANISH_TOL};
+// the siblings only: mod.rs calls this file, and hands it what it needs
+// from there (the vectors to draw, the vanishing tolerance)
+use super::jordan;
+use super::sampler::RingSampler;
 use crate::error::Error;
 use crate::spectrum::{Analysis, Eigenvalue, Spectrum, Synthesis};
 
@@ -153,11 +156,26 @@ pub struct SurfaceInput<'a> {
     pub polar: bool,
 }
 
-/// Samples for the central-ring and limit-surface figures.
+/// The vectors the central-ring figure draws for one eigenvalue of modulus
+/// |μ| (from `curvature::figure_vectors`), with what their labels need.
+pub struct MuVectors {
+    /// the eigenvalue, formatted
+    pub value: String,
+    pub blocks: Vec<usize>,
+    /// (block, vector over the neighbourhood, label prefix)
+    pub vectors: Vec<(usize, Vec<c64>, &'static str)>,
+    /// [`chain_tops`] of the eigenvectors (the first entries of `vectors`)
+    pub tops: Vec<Option<bool>>,
+}
+
+/// Samples for the central-ring and limit-surface figures; a function whose
+/// refined values on the ring are at most `vanish` times its largest entry
+/// is not drawn.
 pub(super) fn figure_data(
     spec: &Spectrum,
     sampler: &RingSampler,
-    mu: &EigenInfo,
+    mu: &[MuVectors],
+    vanish: f64,
     surface: &SurfaceInput,
     inputs: &[Quadratic],
 ) -> Result<FigureData, Error> {
@@ -171,9 +189,9 @@ pub(super) fn figure_data(
     // generalised eigenvectors of that block, which then carry what the ring
     // shows (see `examine`)
     let mut mu_functions = Vec::new();
-    for e in spec.eigenvalues.iter().filter(|e| (e.modulus - mu.modulus).abs() <= EIG_TOL * mu.modulus.max(1e-300)) {
-        let tops = chain_tops(spec, e);
-        for (i, (block, x, kind)) in figure_vectors(spec, sampler, e).into_iter().enumerate() {
+    for e in mu {
+        for (i, (block, x, kind)) in e.vectors.iter().enumerate() {
+            let block = *block;
             // a block m > g/2 whose conjugate block g − m is drawn repeats its functions
             if let Synthesis::Dft { orbits, .. } = &spec.synthesis {
                 let g = orbits.group_order;
@@ -181,7 +199,7 @@ pub(super) fn figure_data(
                     continue;
                 }
             }
-            let top = if kind.is_empty() { tops.get(i).copied().flatten() } else { None };
+            let top = if kind.is_empty() { e.tops.get(i).copied().flatten() } else { None };
             for (part, f) in
                 [("re", x.iter().map(|z| z.re).collect::<Vec<f64>>()), ("im", x.iter().map(|z| z.im).collect())]
             {
@@ -191,10 +209,10 @@ pub(super) fn figure_data(
                 let vals: Vec<Option<f64>> = (0..sampler.net.points.len()).map(|v| sampler.value(v, &f)).collect();
                 let size = sampler.ring_vertices.iter().filter_map(|&v| vals[v]).map(f64::abs).fold(0.0, f64::max);
                 let scale = f.iter().map(|v| v.abs()).fold(0.0, f64::max);
-                if size <= VANISH_TOL * scale.max(1e-300) {
+                if size <= vanish * scale.max(1e-300) {
                     continue;
                 }
-                let mut label = format!("μ = {}, block {block}, {kind}{part}", fmt_c(e.re, e.im));
+                let mut label = format!("μ = {}, block {block}, {kind}{part}", e.value);
                 match top {
                     Some(true) => label += ", Jordan chain top (× m)",
                     Some(false) => label += ", block with a Jordan chain",

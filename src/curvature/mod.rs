@@ -507,7 +507,18 @@ pub fn curvature_of_analysis(
             polar: scheme.centre_kind() == crate::sdc::CentreKind::Polar,
         };
         let inputs = opts.input.map_or_else(Quadratic::defaults, |q| vec![q]);
-        out.figures = Some(figure::figure_data(spec, &sampler, &m, &surface, &inputs)?);
+        let mu_vectors: Vec<figure::MuVectors> = spec
+            .eigenvalues
+            .iter()
+            .filter(|e| (e.modulus - m.modulus).abs() <= EIG_TOL * m.modulus.max(1e-300))
+            .map(|e| figure::MuVectors {
+                value: fmt_c(e.re, e.im),
+                blocks: e.blocks.clone(),
+                vectors: figure_vectors(spec, &sampler, e),
+                tops: figure::chain_tops(spec, e),
+            })
+            .collect();
+        out.figures = Some(figure::figure_data(spec, &sampler, &mu_vectors, VANISH_TOL, &surface, &inputs)?);
     }
     Ok(out)
 }
