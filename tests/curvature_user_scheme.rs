@@ -136,10 +136,83 @@ fn cli_bad_input_is_one_line() {
         vec!["curvature", "loop", "--valence", "5", "--figure", "chart", "-o", "x.svg"],
         vec!["curvature", "loop", "--valence", "5", "-o", "x.eps"],
         vec!["curvature", "loop", "--valence", "5", "-o", "/no/such/dir/x.svg"],
+        // --input: T outside [−1, 1], not finite, not a pair
+        vec!["curvature", "loop", "--valence", "5", "--input", "1.5,0"],
+        vec!["curvature", "loop", "--valence", "5", "--input", "-0.5,inf"],
+        vec!["curvature", "loop", "--valence", "5", "--input", "NaN,10"],
+        vec!["curvature", "loop", "--valence", "5", "--input", "0.5"],
+        vec!["curvature", "loop", "--valence", "5", "--input", "a,b"],
     ] {
         let (ok, _, err) = subdlab(&args);
         assert!(!ok, "{args:?} succeeded");
         assert_eq!(err.trim().lines().count(), 1, "{args:?}: {err}");
         assert!(!err.contains("panicked"), "{args:?}: {err}");
     }
+}
+
+/// `--input T,THETA` picks one surface row, labelled with its t and θ; the
+/// default draws two (t = ±1/2 at θ = 23°).
+#[test]
+fn cli_surface_input() {
+    let dir = tmp();
+    let one = dir.path().join("one.svg");
+    let (ok, _, err) = subdlab(&[
+        "curvature",
+        "catmull-clark",
+        "-n",
+        "5",
+        "--figure",
+        "surface",
+        "--input",
+        "-0.25,40",
+        "-o",
+        one.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    let text = std::fs::read_to_string(&one).unwrap();
+    assert!(text.contains("t = -0.25") && text.contains("θ = 40°") && text.contains("hyperbolic"));
+    assert!(!text.contains("t = 0.5"));
+    let two = dir.path().join("two.svg");
+    let (ok, _, err) =
+        subdlab(&["curvature", "catmull-clark", "-n", "5", "--figure", "surface", "-o", two.to_str().unwrap()]);
+    assert!(ok, "{err}");
+    let text = std::fs::read_to_string(&two).unwrap();
+    assert!(text.contains("t = 0.5") && text.contains("t = -0.5") && text.contains("θ = 23°"));
+}
+
+/// 4-3's centre_weight is the eon rule's; a QQQQ centre is a regular quad
+/// vertex (four quads: rule 1a, `sdc::slots::classify`) and ignores it, which
+/// the table says. Catmull–Clark n = 3 (|μ| < λ², the flat-spot class)
+/// prints its C² test as flat, and its JSON keeps `holds`.
+#[test]
+fn cli_curvature_notes() {
+    let (ok, out, err) =
+        subdlab(&["curvature", "four-three", "-n", "4", "--faces", "QQQQ", "--param", "centre_weight=0.3"]);
+    assert!(ok, "{err}");
+    assert!(out.contains("centre_weight has no effect") && out.contains("regular quad vertex"), "{out}");
+    let (ok, out, err) =
+        subdlab(&["curvature", "four-three", "-n", "5", "--faces", "QQQQQ", "--param", "centre_weight=0.3"]);
+    assert!(ok, "{err}");
+    assert!(!out.contains("no effect"), "an eon uses centre_weight: {out}");
+    // the note's premise: the QQQQ spectrum does not move with centre_weight
+    // (it does at the QQQQQ eon)
+    let eigs = |faces: &str, w: &str| -> Vec<f64> {
+        let n = faces.len().to_string();
+        let param = format!("centre_weight={w}");
+        let (ok, out, err) =
+            subdlab(&["spectrum", "four-three", "-n", &n, "--faces", faces, "--param", &param, "--json"]);
+        assert!(ok, "{err}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        v["eigenvalues"].as_array().unwrap().iter().map(|e| e["modulus"].as_f64().unwrap()).collect()
+    };
+    assert_eq!(eigs("QQQQ", "0.3"), eigs("QQQQ", "0.7"));
+    assert_ne!(eigs("QQQQQ", "0.3"), eigs("QQQQQ", "0.7"));
+    let (ok, out, err) = subdlab(&["curvature", "catmull-clark", "-n", "3"]);
+    assert!(ok, "{err}");
+    assert!(out.contains("C² (flat: curvature → 0)"), "{out}");
+    let (ok, out, _) = subdlab(&["curvature", "catmull-clark", "-n", "3", "--json"]);
+    assert!(ok);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["class"], "zero");
+    assert_eq!(v["c2"]["holds"], true);
 }

@@ -20,6 +20,7 @@ mod curvature_central_ring;
 mod curvature_generalised;
 mod curvature_jordan;
 mod curvature_loop;
+mod curvature_surface_signs;
 mod dft_blocks;
 mod dft_representative_rows;
 mod exact_vs_float;

@@ -2,6 +2,8 @@
 //! from the flags, the exit status of a certified verdict, and the tables and
 //! formats the analyses print. Imports no command's file.
 
+use std::collections::BTreeMap;
+
 use crate::cli::args::SchemeArgs;
 use crate::error::Error;
 use crate::neighbourhood::{Configuration, NeighbourhoodKind};
@@ -60,6 +62,30 @@ pub(super) fn configuration(scheme: &dyn Scheme, a: &SchemeArgs) -> Result<Confi
     }
 }
 
+/// 4-3's `centre_weight` is the weight of an eon's own point (rule 4a); a
+/// centre that is a regular quad vertex (4 quads), a regular triangle vertex
+/// (6 triangles) or a transition vertex (2 adjacent quads and 3 triangles)
+/// takes its fixed rule instead (`sdc::slots::classify`), so the parameter
+/// has no effect there: a one-line note for the human output.
+pub(super) fn unused_centre_weight(scheme: &str, params: &BTreeMap<String, String>, faces: &str) -> Option<String> {
+    if scheme != "four-three" || !params.contains_key("centre_weight") {
+        return None;
+    }
+    let f: Vec<char> = faces.chars().filter(|c| matches!(c, 'Q' | 'T')).collect();
+    let n = f.len();
+    let quads: Vec<usize> = (0..n).filter(|&i| f[i] == 'Q').collect();
+    let rule = if n == 4 && quads.len() == 4 {
+        "a regular quad vertex (rule 1a)"
+    } else if n == 6 && quads.is_empty() {
+        "a regular triangle vertex (rule 3a)"
+    } else if n == 5 && quads.len() == 2 && (quads[0] + 1 == quads[1] || (quads[0] == 0 && quads[1] == 4)) {
+        "a transition vertex (rule 2a)"
+    } else {
+        return None;
+    };
+    Some(format!("note: centre_weight has no effect here: the centre of {faces} is {rule}, not an eon"))
+}
+
 pub(super) fn spectrum_table(s: &Spectrum) -> String {
     let mut out = String::new();
     out += &format!(
@@ -77,6 +103,9 @@ pub(super) fn spectrum_table(s: &Spectrum) -> String {
             "parameters: {}\n",
             s.params.iter().map(|(k, v)| format!("{k}={v}")).collect::<Vec<_>>().join(", ")
         );
+    }
+    if let Some(note) = unused_centre_weight(&s.scheme, &s.params, &s.faces) {
+        out += &format!("{note}\n");
     }
     out += &format!(
         "method {}: blocks {}\n\n",

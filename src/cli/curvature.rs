@@ -7,7 +7,7 @@ use clap::Args;
 
 use super::charmap_commands::check_out;
 use crate::cli::args::{FigureArgs, SchemeArgs};
-use crate::curvature::{curvature, Curvature, CurvatureOptions, DEFAULT_LEVELS, MAX_LEVELS};
+use crate::curvature::{curvature, Curvature, CurvatureOptions, Quadratic, DEFAULT_LEVELS, MAX_LEVELS};
 use crate::error::Error;
 use crate::io::print_json;
 use crate::plot::{self, curvature::CurvatureFigure, curvature::CurvatureFigureKind};
@@ -29,6 +29,11 @@ pub struct CurvatureArgs {
     /// rings of the surface figure (1 to 8)
     #[arg(long, default_value_t = 4)]
     pub rings: usize,
+    /// the surface figure's input quadratic q = (x cos θ + y sin θ)² +
+    /// T (−x sin θ + y cos θ)², as T,THETA (T in [−1, 1], THETA in degrees);
+    /// default: two rows, T = 0.5 and T = −0.5 at THETA = 23
+    #[arg(long, value_name = "T,THETA", allow_hyphen_values = true)]
+    pub input: Option<String>,
     /// skip the exact rational confirmation (evidence is then floating-point)
     #[arg(long)]
     pub no_exact: bool,
@@ -57,6 +62,9 @@ fn figure_kind(a: &CurvatureArgs) -> Result<CurvatureFigureKind, Error> {
         "surface" => CurvatureFigureKind::Surface,
         other => return Err(Error::Input(format!("unknown figure '{other}'; use central-ring or surface"))),
     };
+    if let Some(q) = &a.input {
+        Quadratic::parse(q)?;
+    }
     a.style.style()?;
     if let Some(out) = &a.out {
         check_out(out)?;
@@ -73,6 +81,7 @@ pub fn run(a: &CurvatureArgs, scheme: Box<dyn crate::schemes::Scheme>) -> Result
         levels: a.levels,
         figures: a.out.is_some(),
         surface_rings: if a.out.is_some() && kind == CurvatureFigureKind::Surface { a.rings } else { 0 },
+        input: a.input.as_deref().map(Quadratic::parse).transpose()?,
         exact: !a.no_exact,
     };
     let c = curvature(scheme.as_ref(), &config, &opts)?;
@@ -102,6 +111,9 @@ fn table(c: &Curvature) -> String {
         opt(c.mu.as_ref().map(|m| m.modulus)),
         opt(c.mu_over_lambda_squared)
     );
+    if let Some(note) = super::commands::unused_centre_weight(&c.scheme, &c.params, &c.faces) {
+        out += &format!("{note}\n");
+    }
     out += &format!("curvature class  {}  (evidence: {})\n", c.class.name(), c.evidence.name());
     out += &format!(
         "L_p limit        {}\n",
@@ -123,7 +135,13 @@ fn table(c: &Curvature) -> String {
     if let Some(t) = &c.c2 {
         out += &format!(
             "C² test (Reif)   {}  (quadratic {}, spans x², xy, y²: {}, largest residual {})\n",
-            if t.holds { "holds" } else { "fails" },
+            // the flat-spot class passes only with zero curvature at the
+            // centre: say so rather than a bare "holds" (JSON keeps holds)
+            match (t.holds, c.class) {
+                (true, crate::curvature::CurvatureClass::Zero) => "C² (flat: curvature → 0)",
+                (true, _) => "holds",
+                (false, _) => "fails",
+            },
             t.quadratic,
             t.spans_quadratics,
             t.max_residual.map_or("-".into(), |r| format!("{r:.3e}"))

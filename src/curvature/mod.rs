@@ -82,6 +82,7 @@
 //! space is span{x², xy, y², 1}. The relative residual ‖ψ − fit‖/‖ψ‖ is
 //! reported; the fit passes below [`C2_TOL`].
 
+pub mod figure;
 pub mod jordan;
 pub mod sampler;
 
@@ -99,6 +100,7 @@ use crate::neighbourhood::{Configuration, NeighbourhoodKind};
 use crate::numeric::Rational;
 use crate::sdc::Scheme;
 use crate::spectrum::{analyse_shared, Analysis, Eigenvalue, Method, Options, Spectrum, Synthesis};
+pub use figure::{FigureData, Quadratic, SurfaceRows};
 pub use sampler::RingSampler;
 
 /// Relative tolerance for equal eigenvalue moduli (|μ| against λ²).
@@ -167,6 +169,9 @@ pub struct CurvatureOptions {
     pub figures: bool,
     /// rings of the limit-surface figure (0: not computed; needs `figures`)
     pub surface_rings: usize,
+    /// the limit-surface figure's input quadratic; None: the two defaults
+    /// ([`Quadratic::defaults`], an elliptic and a hyperbolic one)
+    pub input: Option<Quadratic>,
     /// confirm λ and μ in exact arithmetic when both read as small rationals
     /// and S is rational (the `exact` evidence; [`curvature`] only, a given
     /// [`Analysis`] is used as it is)
@@ -175,7 +180,7 @@ pub struct CurvatureOptions {
 
 impl Default for CurvatureOptions {
     fn default() -> Self {
-        CurvatureOptions { levels: DEFAULT_LEVELS, figures: false, surface_rings: 0, exact: true }
+        CurvatureOptions { levels: DEFAULT_LEVELS, figures: false, surface_rings: 0, input: None, exact: true }
     }
 }
 
@@ -291,28 +296,6 @@ pub struct Curvature {
     pub reasons: Vec<String>,
     #[serde(skip)]
     pub figures: Option<FigureData>,
-}
-
-/// Samples for the figures (`plot::curvature`).
-#[derive(Clone, Debug, Default)]
-pub struct FigureData {
-    /// ring triangles in the characteristic map's plane
-    pub triangles: Vec<[[f64; 2]; 3]>,
-    /// μ-eigenfunctions: (label, value at each triangle corner)
-    pub mu_functions: Vec<(String, Vec<[f64; 3]>)>,
-    /// limit-surface rings: one list per input quadratic
-    pub surface: Vec<SurfaceRows>,
-}
-
-/// The refined rings of one input quadratic.
-#[derive(Clone, Debug)]
-pub struct SurfaceRows {
-    /// "z = x² + y²" or "z = x² − y²"
-    pub input: String,
-    /// ring k: its faces in the plane (normalised by λ^k) with the sign of the
-    /// discrete Gaussian curvature (angle defect) of the refined net: +1, −1,
-    /// or 0 when no corner has a closed fan
-    pub rings: Vec<Vec<(Vec<[f64; 2]>, i8)>>,
 }
 
 /// Analyse `scheme` at `config` (analysis neighbourhood, exact confirmation
@@ -516,7 +499,26 @@ pub fn curvature_of_analysis(
     out.c2 = Some(c2_test(spec, &sampler, &pair.values, &counted, lam2, out.class));
     out.mu = Some(m.clone());
     if opts.figures {
-        out.figures = Some(figure_data(spec, analysis, &sampler, &pair.values, &m, lambda, opts.surface_rings)?);
+        let surface = figure::SurfaceInput {
+            analysis,
+            pair: &pair.values,
+            lambda,
+            rings: opts.surface_rings,
+            polar: scheme.centre_kind() == crate::sdc::CentreKind::Polar,
+        };
+        let inputs = opts.input.map_or_else(Quadratic::defaults, |q| vec![q]);
+        let mu_vectors: Vec<figure::MuVectors> = spec
+            .eigenvalues
+            .iter()
+            .filter(|e| (e.modulus - m.modulus).abs() <= EIG_TOL * m.modulus.max(1e-300))
+            .map(|e| figure::MuVectors {
+                value: fmt_c(e.re, e.im),
+                blocks: e.blocks.clone(),
+                vectors: figure_vectors(spec, &sampler, e),
+                tops: figure::chain_tops(spec, e),
+            })
+            .collect();
+        out.figures = Some(figure::figure_data(spec, &sampler, &mu_vectors, VANISH_TOL, &surface, &inputs)?);
     }
     Ok(out)
 }
@@ -835,141 +837,4 @@ fn c2_test(
         reasons.push("the λ²-eigenfunctions do not span all quadratics x², xy, y²".into());
     }
     C2Test { holds, quadratic, spans_quadratics: spans, tolerance: C2_TOL, max_residual, fits, reasons }
-}
-
-/// Samples for the central-ring and limit-surface figures.
-fn figure_data(
-    spec: &Spectrum,
-    analysis: &Analysis,
-    sampler: &RingSampler,
-    pair: &[[f64; 2]],
-    mu: &EigenInfo,
-    lambda: f64,
-    surface_rings: usize,
-) -> Result<FigureData, Error> {
-    let pts = sampler.points(pair);
-    let tris_ids = sampler.ring_triangles();
-    let corner = |v: usize| pts[v].unwrap_or([f64::NAN; 2]);
-    let triangles: Vec<[[f64; 2]; 3]> = tris_ids.iter().map(|t| [corner(t[0]), corner(t[1]), corner(t[2])]).collect();
-    // μ-eigenfunctions: every vector of every non-vanishing eigenvalue of
-    // modulus |μ|, real parts (and imaginary parts); where a defective
-    // eigenvalue's eigenvectors of a block all vanish on the ring, the
-    // generalised eigenvectors of that block, which then carry what the ring
-    // shows (see `examine`)
-    let mut mu_functions = Vec::new();
-    for e in spec.eigenvalues.iter().filter(|e| (e.modulus - mu.modulus).abs() <= EIG_TOL * mu.modulus.max(1e-300)) {
-        for (block, x, kind) in figure_vectors(spec, sampler, e) {
-            // a block m > g/2 whose conjugate block g − m is drawn repeats its functions
-            if let Synthesis::Dft { orbits, .. } = &spec.synthesis {
-                let g = orbits.group_order;
-                if 2 * block > g && e.blocks.contains(&(g - block)) {
-                    continue;
-                }
-            }
-            for (part, f) in
-                [("re", x.iter().map(|z| z.re).collect::<Vec<f64>>()), ("im", x.iter().map(|z| z.im).collect())]
-            {
-                if mu_functions.len() >= 6 {
-                    break;
-                }
-                let vals: Vec<Option<f64>> = (0..sampler.net.points.len()).map(|v| sampler.value(v, &f)).collect();
-                let size = sampler.ring_vertices.iter().filter_map(|&v| vals[v]).map(f64::abs).fold(0.0, f64::max);
-                let scale = f.iter().map(|v| v.abs()).fold(0.0, f64::max);
-                if size <= VANISH_TOL * scale.max(1e-300) {
-                    continue;
-                }
-                let label = format!("μ = {}, block {block}, {kind}{part}", fmt_c(e.re, e.im));
-                let per: Vec<[f64; 3]> = tris_ids
-                    .iter()
-                    .map(|t| [vals[t[0]].unwrap_or(0.0), vals[t[1]].unwrap_or(0.0), vals[t[2]].unwrap_or(0.0)])
-                    .collect();
-                mu_functions.push((label, per));
-            }
-        }
-    }
-    let mut surface = Vec::new();
-    if surface_rings > 0 {
-        let s = &*analysis.matrix;
-        for (input, sign) in [("z = x² + y²", 1.0), ("z = x² − y²", -1.0)] {
-            // the characteristic map's control points, normalised to unit size
-            let r = pair.iter().map(|p| p[0].hypot(p[1])).fold(0.0, f64::max).max(1e-300);
-            let mut data: Vec<[f64; 3]> =
-                pair.iter().map(|p| [p[0] / r, p[1] / r, (p[0] * p[0] + sign * p[1] * p[1]) / (r * r)]).collect();
-            let mut rings = Vec::new();
-            let mut scale = 1.0;
-            for _ in 0..surface_rings {
-                rings.push(ring_signs(sampler, &data, scale));
-                data = s
-                    .rows
-                    .iter()
-                    .map(|row| {
-                        let mut p = [0.0; 3];
-                        for (j, w) in row {
-                            for c in 0..3 {
-                                p[c] += w * data[*j][c];
-                            }
-                        }
-                        p
-                    })
-                    .collect();
-                scale *= lambda;
-            }
-            surface.push(SurfaceRows { input: input.into(), rings });
-        }
-    }
-    Ok(FigureData { triangles, mu_functions, surface })
-}
-
-/// The ring faces of the refined net of `data` with the sign of the angle
-/// defect (discrete Gaussian curvature) averaged over their corners. The
-/// plane coordinates are divided by `scale` (λ^k for ring k); heights are
-/// rescaled to unit size, which keeps the sign of the Gaussian curvature of
-/// a graph.
-fn ring_signs(sampler: &RingSampler, data: &[[f64; 3]], scale: f64) -> Vec<(Vec<[f64; 2]>, i8)> {
-    let zmax = data.iter().map(|p| p[2].abs()).fold(0.0, f64::max).max(1e-300);
-    let norm: Vec<[f64; 3]> = data.iter().map(|p| [p[0] / scale, p[1] / scale, p[2] / zmax]).collect();
-    let pts = sampler.points(&norm);
-    let mesh = &sampler.net.mesh;
-    let vf = mesh.vertex_faces();
-    let defect = |v: usize| -> Option<f64> {
-        let p = pts[v]?;
-        let mut sum = 0.0;
-        let mut count: BTreeMap<usize, usize> = BTreeMap::new();
-        for &f in &vf[v] {
-            let face = mesh.face(f);
-            let k = face.iter().position(|&u| u == v)?;
-            let a = pts[face[(k + face.len() - 1) % face.len()]]?;
-            let b = pts[face[(k + 1) % face.len()]]?;
-            *count.entry(face[(k + 1) % face.len()]).or_default() += 1;
-            *count.entry(face[(k + face.len() - 1) % face.len()]).or_default() += 1;
-            let u = [a[0] - p[0], a[1] - p[1], a[2] - p[2]];
-            let w = [b[0] - p[0], b[1] - p[1], b[2] - p[2]];
-            let dot = u[0] * w[0] + u[1] * w[1] + u[2] * w[2];
-            let cross = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]];
-            let cn = (cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]).sqrt();
-            sum += cn.atan2(dot);
-        }
-        // a closed fan: every neighbour is shared by two faces
-        (!count.is_empty() && count.values().all(|&c| c == 2)).then_some(2.0 * std::f64::consts::PI - sum)
-    };
-    let defects: Vec<Option<f64>> =
-        (0..mesh.num_vertices()).map(|v| if pts[v].is_some() { defect(v) } else { None }).collect();
-    sampler
-        .ring_faces
-        .iter()
-        .map(|&f| {
-            let face = mesh.face(f);
-            let poly: Vec<[f64; 2]> = face.iter().map(|&v| pts[v].map_or([f64::NAN; 2], |p| [p[0], p[1]])).collect();
-            let ds: Vec<f64> = face.iter().filter_map(|&v| defects[v]).collect();
-            let mean = ds.iter().sum::<f64>() / ds.len().max(1) as f64;
-            let sign = if ds.is_empty() || mean == 0.0 {
-                0
-            } else if mean > 0.0 {
-                1
-            } else {
-                -1
-            };
-            (poly, sign)
-        })
-        .collect()
 }

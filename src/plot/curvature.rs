@@ -1,9 +1,11 @@
 //! Second-order figures (`subdlab curvature --out`): the central ring (each
 //! μ-eigenfunction as a colour map of heights over the characteristic ring,
-//! one panel per eigenfunction) and the limit-surface curvature rings (input
-//! nets sampled from z = x² + y² and z = x² − y² over the characteristic map,
-//! refined with the scheme's rules, each ring's faces coloured by the sign
-//! of the discrete Gaussian curvature of the refined net).
+//! one panel per eigenfunction; a Jordan chain's top says so in its title)
+//! and the limit-surface curvature rings (input nets sampled from rotated
+//! quadratics q_{t,θ} over the characteristic map, refined with the scheme's
+//! rules, each ring's faces coloured by the sign of the Gaussian curvature
+//! of a quadratic fitted to the refined control points around the face:
+//! `curvature::figure`).
 
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -64,8 +66,10 @@ impl CurvatureFigure<'_> {
                 (cols * 420 + 20, rows * 440 + 90)
             }
             CurvatureFigureKind::Surface => {
-                let rings = self.c.figures.as_ref().and_then(|f| f.surface.first()).map_or(1, |s| s.rings.len().max(1));
-                (rings as u32 * 300 + 140, 2 * 320 + 110)
+                let surface = self.c.figures.as_ref().map(|f| &f.surface);
+                let rings = surface.and_then(|s| s.first()).map_or(1, |s| s.rings.len().max(1));
+                let rows = surface.map_or(2, |s| s.len().max(1));
+                (rings as u32 * 300 + 140, rows as u32 * 320 + 110)
             }
         }
     }
@@ -140,7 +144,7 @@ impl CurvatureFigure<'_> {
             CurvatureFigureKind::Surface => {
                 top.draw(&Text::new(
                     "limit surface from sampled quadratics, ring k (scaled by 1/λ^k): sign of Gaussian curvature \
-                     (red > 0 elliptic, blue < 0 hyperbolic)",
+                     of a fitted quadratic (red > 0 elliptic, blue < 0 hyperbolic)",
                     subtitle_at,
                     (FONT, font(15)).into_font(),
                 ))
@@ -154,9 +158,24 @@ impl CurvatureFigure<'_> {
                 let label_rows = labels.split_evenly((rows, 1));
                 let panels = grid.split_evenly((rows, cols));
                 for (r, s) in data.surface.iter().enumerate() {
-                    label_rows[r]
-                        .draw(&Text::new(s.input.clone(), (10, 150), (FONT, font(16)).into_font()))
-                        .map_err(err)?;
+                    // the input (t, θ) and its own sign, which a ring far from the centre shows
+                    let own = match s.quadratic.sign() {
+                        1 => "elliptic",
+                        -1 => "hyperbolic",
+                        _ => "parabolic",
+                    };
+                    for (i, line) in [
+                        format!("t = {}", s.quadratic.t),
+                        format!("θ = {}°", s.quadratic.theta_degrees),
+                        format!("({own})"),
+                    ]
+                    .into_iter()
+                    .enumerate()
+                    {
+                        label_rows[r]
+                            .draw(&Text::new(line, (10, 130 + 22 * i as i32), (FONT, font(16)).into_font()))
+                            .map_err(err)?;
+                    }
                     for (k, ring) in s.rings.iter().enumerate() {
                         let area = &panels[r * cols + k];
                         let (center, half) = window(ring.iter().flat_map(|(p, _)| p.iter().copied()))

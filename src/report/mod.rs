@@ -252,7 +252,13 @@ fn curvature_figures(spec: &FigureSpec) -> Result<(String, Files), Error> {
     let (tag, title) = tag_and_title(&spec.scheme, &params);
     let n = spec.valence;
     let config = Configuration::regular(scheme.as_ref(), n)?;
-    let opts = CurvatureOptions { levels: DEFAULT_LEVELS, figures: true, surface_rings: SURFACE_RINGS, exact: true };
+    let opts = CurvatureOptions {
+        levels: DEFAULT_LEVELS,
+        figures: true,
+        surface_rings: SURFACE_RINGS,
+        input: None,
+        exact: true,
+    };
     let c = curvature(scheme.as_ref(), &config, &opts)?;
     let f = crate::spectrum::fmt_f;
     let mut summary = format!("Curvature class **{}** (evidence: {}", c.class.name(), c.evidence.name());
@@ -314,9 +320,11 @@ fn curvature_figures(spec: &FigureSpec) -> Result<(String, Files), Error> {
         writeln!(
             md,
             "![limit-surface rings of {title} at valence {n}]({name})\n\nLimit-surface rings of {title}, valence {n} \
-             ({}): control points sampled from z = x² + y² (top) and z = x² − y² \
-             (bottom) over the characteristic map, refined with the scheme, rings 0..{} scaled by 1/λ^k, each face \
-             coloured by the sign of the discrete Gaussian curvature of the refined net (red > 0, blue < 0). \
+             ({}): control points sampled from the rotated quadratics q = (x cos θ + y sin θ)² + t (−x sin θ + \
+             y cos θ)² with t = 1/2 (top, elliptic) and t = −1/2 (bottom, hyperbolic) at θ = 23° over the \
+             characteristic map, refined with the scheme, rings 0..{} scaled by 1/λ^k, each face coloured by the \
+             sign of the Gaussian curvature of a quadratic fitted to the refined control points around it \
+             (red > 0, blue < 0). \
              {summary}.\n",
             command("surface"),
             SURFACE_RINGS - 1
