@@ -234,8 +234,10 @@ pub fn growth_test(
         let g = tail.as_slice();
         let gs = inf_norm(g).max(1e-300);
         for l in 1..=levels {
-            let sm = RingSampler::shared(scheme, &analysis.discovered, l)?;
-            top_levels.push(ring_size(&sm, g) / gs);
+            // one function at levels nothing else samples: refine it, not
+            // the unit rows
+            let ring = RingSampler::ring_values_once(scheme, &analysis.discovered, l, g)?;
+            top_levels.push(ring.iter().map(|v| v.abs()).fold(0.0, f64::max) / gs);
         }
         let last = top_levels.len();
         if last >= 3 {

@@ -60,6 +60,27 @@ fn check_memory(bytes: f64, levels: usize, size: usize) -> Result<(), Error> {
     )
 }
 
+/// The characteristic ring of a refined net: its faces (descendants of the
+/// first ring that are not descendants of the first ring one analysis step
+/// later) and their vertices (corners and face points, ascending), every one
+/// of them determined by the neighbourhood.
+fn ring_of<T>(net: &Net<T>) -> Result<(Vec<usize>, Vec<usize>), Error> {
+    let ring_faces: Vec<usize> = (0..net.mesh.num_faces()).filter(|&f| net.outer[f] && !net.inner[f]).collect();
+    if ring_faces.is_empty() {
+        return Err(Error::Numeric("the characteristic ring is empty at this level".into()));
+    }
+    let mut ring_vertices: Vec<usize> =
+        ring_faces.iter().flat_map(|&f| net.mesh.face(f).iter().copied().chain(net.mesh.face_point(f))).collect();
+    ring_vertices.sort_unstable();
+    ring_vertices.dedup();
+    if ring_vertices.iter().any(|&v| net.points[v].is_none()) {
+        return Err(Error::NotDetermined(
+            "a vertex of the characteristic ring is not determined by the neighbourhood".into(),
+        ));
+    }
+    Ok((ring_faces, ring_vertices))
+}
+
 impl RingSampler {
     /// Refine unit rows `levels` analysis steps.
     /// [`RingSampler::new`], made once per discovery and level count and
@@ -86,20 +107,33 @@ impl RingSampler {
             check_memory(estimate_bytes(&first) * growth, levels, d.analysis.len())?;
         }
         let net = refine_net(scheme, d, level0, levels)?;
-        let ring_faces: Vec<usize> = (0..net.mesh.num_faces()).filter(|&f| net.outer[f] && !net.inner[f]).collect();
-        if ring_faces.is_empty() {
-            return Err(Error::Numeric("the characteristic ring is empty at this level".into()));
-        }
-        let mut ring_vertices: Vec<usize> =
-            ring_faces.iter().flat_map(|&f| net.mesh.face(f).iter().copied().chain(net.mesh.face_point(f))).collect();
-        ring_vertices.sort_unstable();
-        ring_vertices.dedup();
-        if ring_vertices.iter().any(|&v| net.points[v].is_none()) {
-            return Err(Error::NotDetermined(
-                "a vertex of the characteristic ring is not determined by the neighbourhood".into(),
-            ));
-        }
+        let (ring_faces, ring_vertices) = ring_of(&net)?;
         Ok(RingSampler { net, ring_faces, ring_vertices, size: d.analysis.len() })
+    }
+
+    /// The ring values of one level-0 function `x` (analysis order) after
+    /// `levels` analysis steps, refining the function itself rather than
+    /// unit rows: a single value per vertex instead of a row over the
+    /// neighbourhood, for a function sampled once at a level no other
+    /// question asks for (the growth test's growing direction at levels
+    /// 1..5). Equal to `RingSampler::new(..).ring_values(x)`: the same
+    /// rules, mesh and pruning, applied to the data instead of the rows.
+    pub fn ring_values_once(scheme: &dyn Scheme, d: &Discovered, levels: usize, x: &[f64]) -> Result<Vec<f64>, Error> {
+        let mut level0 = vec![None; d.patch.num_vertices()];
+        for (k, &v) in d.analysis.iter().enumerate() {
+            level0[v] = Some([x[k]]);
+        }
+        if levels > 1 {
+            // one value per vertex: the memory is the net's faces, which
+            // grow with the host's faces per face at every refinement
+            let first = refine_net(scheme, d, level0.clone(), 1)?;
+            let refinements = scheme.topology().steps_per_analysis() * (levels - 1);
+            let growth = (scheme.topology().faces_per_face() as f64).powi(refinements as i32);
+            check_memory(first.mesh.num_faces() as f64 * FACE_BYTES * growth, levels, d.analysis.len())?;
+        }
+        let net = refine_net(scheme, d, level0, levels)?;
+        let (_, ring_vertices) = ring_of(&net)?;
+        Ok(ring_vertices.iter().map(|&v| net.points[v].expect("ring vertices are defined")[0]).collect())
     }
 
     /// The value at net vertex `v` of level-0 data `x` (analysis order).
