@@ -257,24 +257,33 @@ pub enum NodeType {
 /// The fan of an interior vertex whose faces are all quads or triangles, and its
 /// node type; `None` on the boundary or next to a face of another size.
 pub fn classify(mesh: &PolyMesh, v: usize) -> Option<(Vec<Vec<usize>>, NodeType)> {
-    let fan = mesh.vertex_fan(v)?;
-    if fan.iter().any(|f| f.len() != 3 && f.len() != 4) {
+    let t = node_type(mesh, v)?;
+    Some((mesh.vertex_fan(v)?, t))
+}
+
+/// The node type of [`classify`] alone, read off the mesh's cached fan
+/// without building the fan's faces: an edge rule asks it of both ends of
+/// every edge, and that allocation was most of a 4-3 refinement step.
+pub fn node_type(mesh: &PolyMesh, v: usize) -> Option<NodeType> {
+    let fan = mesh.fan_corners(v)?;
+    let size = |&(f, _): &(usize, usize)| mesh.face(f).len();
+    if fan.iter().map(size).any(|s| s != 3 && s != 4) {
         return None;
     }
     let n = fan.len();
-    let quads: Vec<usize> = (0..n).filter(|&i| fan[i].len() == 4).collect();
-    let t = if quads.len() == n && n == 4 {
+    let is_quad = |i: usize| size(&fan[i]) == 4;
+    let quads = (0..n).filter(|&i| is_quad(i)).count();
+    Some(if quads == n && n == 4 {
         NodeType::RegularQuad
-    } else if quads.is_empty() && n == 6 {
+    } else if quads == 0 && n == 6 {
         NodeType::RegularTri
-    } else if n == 5 && quads.len() == 2 && (quads[0] + 1 == quads[1] || (quads[0] == 0 && quads[1] == 4)) {
+    } else if n == 5 && quads == 2 && (0..n).any(|k| is_quad(k) && is_quad((k + 1) % n)) {
         // the quads are cyclically adjacent; k is the first of the two, CCW
-        let k = if quads[0] + 1 == quads[1] { quads[0] } else { 4 };
+        let k = (0..n).find(|&k| is_quad(k) && is_quad((k + 1) % n)).expect("checked above");
         NodeType::Transition { k }
     } else {
         NodeType::Eon
-    };
-    Some((fan, t))
+    })
 }
 
 #[cfg(test)]

@@ -14,8 +14,9 @@ use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::{Edge as E, Face as F, Vertex as V};
 use crate::sdc::slots::Valence::{Any, Fixed};
 use crate::sdc::slots::{
-    canonical, classify, edge_faces, ev_part, face_corners, fam, rule, unsupported, vertex_fan_part, Arity, Family,
-    Gather, GatherError, Gathered, HostSpec, NodeType, Part, RuleSlots, Wants, ONE, PER_J, QUAD_VERTEX, TRI_VERTEX,
+    canonical, classify, edge_faces, ev_part, face_corners, fam, node_type, rule, unsupported, vertex_fan_part, Arity,
+    Family, Gather, GatherError, Gathered, HostSpec, NodeType, Part, RuleSlots, Wants, ONE, PER_J, QUAD_VERTEX,
+    TRI_VERTEX,
 };
 use crate::sdc::{CentreKind, Origin};
 use crate::topology::primal_split;
@@ -199,7 +200,7 @@ fn mixed_edge(mesh: &PolyMesh, a: VertexId, b: VertexId, wants: &dyn Wants) -> G
         return Err(GatherError::NotCovered);
     }
     // whether an end is an eon decides the rule: both ends must be classifiable
-    let kind = |v: VertexId| classify(mesh, v).map(|(_, t)| t).ok_or(GatherError::Truncated);
+    let kind = |v: VertexId| node_type(mesh, v).ok_or(GatherError::Truncated);
     let (ta, tb) = (kind(a)?, kind(b)?);
     let regular = match (l.len(), r.len()) {
         (4, 4) => {
