@@ -48,10 +48,11 @@ fn the_map_from_unit_rows_is_the_refined_map() {
     }
 }
 
-/// One function refined as data (`RingSampler::ring_values_once`, the Jordan
+/// One function refined as data, once for levels 1..3
+/// (`RingSampler::ring_values_each_level`, the Jordan
 /// growth test's route at levels nothing else samples) has on the ring the
-/// values its unit rows give (`RingSampler::ring_values`): the same rules,
-/// mesh and pruning applied to the data instead of the rows, so the same
+/// values its unit rows refined to that level give
+/// (`RingSampler::ring_values`): the same rules, mesh and pruning applied to the data instead of the rows, so the same
 /// ring vertices in the same order and values equal up to rounding.
 /// Catmull–Clark n = 5, Loop n = 7 and a 4-3 eon of quads and triangles,
 /// levels 1..3, on a function with no symmetry (so a wrong vertex order
@@ -69,9 +70,10 @@ fn a_function_refined_as_data_has_the_ring_values_of_its_rows() {
         let analysis = analyse_shared(scheme.as_ref(), &config, &options).unwrap();
         let d = &analysis.discovered;
         let x: Vec<f64> = (0..d.analysis.len()).map(|k| ((k * 7 + 3) % 11) as f64 - 4.5 + 0.1 * k as f64).collect();
-        for levels in 1..=3 {
+        let each = RingSampler::ring_values_each_level(scheme.as_ref(), d, 3, &x).unwrap();
+        assert_eq!(each.len(), 3, "{name} n = {n}: one ring per level");
+        for (levels, once) in (1..=3).zip(each) {
             let rows = RingSampler::new(scheme.as_ref(), d, levels).unwrap().ring_values(&x);
-            let once = RingSampler::ring_values_once(scheme.as_ref(), d, levels, &x).unwrap();
             assert_eq!(rows.len(), once.len(), "{name} n = {n}, {levels} levels: one value per ring vertex");
             for (a, b) in rows.iter().zip(&once) {
                 assert_relative_eq!(*a, *b, epsilon = 1e-11, max_relative = 1e-11);

@@ -148,7 +148,27 @@ pub fn refine_net<T: Combine<f64> + Clone>(
     // the first analysis step reuses discovery's float stencils
     let first =
         |k: usize, points: &[Option<T>]| Ok(apply(d.float_stencils(scheme)[k].iter().map(Option::as_ref), points));
-    refine_net_in::<f64, T>(scheme, d, level0, analysis_steps, &first)
+    refine_net_in::<f64, T>(scheme, d, level0, analysis_steps, &first, &mut |_, _| Ok(()))
+}
+
+/// [`refine_net`] to `analysis_steps` levels, showing the net after each
+/// whole analysis step 1, 2, ..., `analysis_steps` to `visit` (with the
+/// level): one refinement for a question asked at every level (the Jordan
+/// growth test's ring sizes at levels 1..5), instead of one per level, each
+/// repeating the ones below. The net shown at level l is the net
+/// `refine_net(.., l)` returns (the same steps and pruning); a level may be
+/// shown again when a wider pruning margin is tried, so `visit` should
+/// overwrite what it keeps per level.
+pub fn refine_net_visiting<T: Combine<f64> + Clone>(
+    scheme: &dyn Scheme,
+    d: &Discovered,
+    level0: Vec<Option<T>>,
+    analysis_steps: usize,
+    visit: &mut dyn FnMut(usize, &Net<T>) -> Result<(), Error>,
+) -> Result<Net<T>, Error> {
+    let first =
+        |k: usize, points: &[Option<T>]| Ok(apply(d.float_stencils(scheme)[k].iter().map(Option::as_ref), points));
+    refine_net_in::<f64, T>(scheme, d, level0, analysis_steps, &first, visit)
 }
 
 /// [`refine_net`] with weights of type `W` (e.g. outward-rounded intervals
@@ -174,10 +194,11 @@ pub fn refine_net_exactly_as<W: SchemeWeight, T: Combine<W> + Clone>(
         // pruning decide whether that matters
         Ok(apply(stencils.iter().map(|s| s.as_ref().ok()), points))
     };
-    refine_net_in::<W, T>(scheme, d, level0, analysis_steps, &first)
+    refine_net_in::<W, T>(scheme, d, level0, analysis_steps, &first, &mut |_, _| Ok(()))
 }
 
 type FirstStep<'a, T> = dyn Fn(usize, &[Option<T>]) -> Result<Vec<Option<T>>, Error> + 'a;
+type Visit<'a, T> = dyn FnMut(usize, &Net<T>) -> Result<(), Error> + 'a;
 
 fn refine_net_in<W: SchemeWeight, T: Combine<W> + Clone>(
     scheme: &dyn Scheme,
@@ -185,10 +206,11 @@ fn refine_net_in<W: SchemeWeight, T: Combine<W> + Clone>(
     level0: Vec<Option<T>>,
     analysis_steps: usize,
     first: &FirstStep<T>,
+    visit: &mut Visit<T>,
 ) -> Result<Net<T>, Error> {
     let mut last = Err(Error::Message("no pruning margin tried".into()));
     for margin in MARGINS {
-        last = refine_with_margin::<W, T>(scheme, d, level0.clone(), analysis_steps, margin, first);
+        last = refine_with_margin::<W, T>(scheme, d, level0.clone(), analysis_steps, margin, first, visit);
         // only a point left undetermined by the pruned margin is worth a
         // wider margin; every other failure is final
         if !matches!(last, Err(Error::NotDetermined(_))) {
@@ -205,6 +227,7 @@ fn refine_with_margin<W: SchemeWeight, T: Combine<W> + Clone>(
     analysis_steps: usize,
     margin: usize,
     first: &FirstStep<T>,
+    visit: &mut Visit<T>,
 ) -> Result<Net<T>, Error> {
     if analysis_steps == 0 {
         return Err(Error::Input("the characteristic ring needs at least one analysis step".into()));
@@ -241,6 +264,7 @@ fn refine_with_margin<W: SchemeWeight, T: Combine<W> + Clone>(
         d.patch.chart.as_ref().map(|c| centre0.iter().map(|&v| c.vertex_coords[v]).collect());
     check_defined(&net)?;
     net = prune(net, margin)?;
+    visit(1, &net)?;
     let region = net.outer.iter().filter(|&&o| o).count();
     refuse_beyond_limit(
         region,
@@ -271,6 +295,9 @@ fn refine_with_margin<W: SchemeWeight, T: Combine<W> + Clone>(
         }
         check_defined(&net)?;
         net = prune(net, margin)?;
+        if net.refinements % steps == 0 {
+            visit(net.refinements / steps, &net)?;
+        }
     }
     Ok(net)
 }

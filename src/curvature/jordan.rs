@@ -233,10 +233,9 @@ pub fn growth_test(
     if grows {
         let g = tail.as_slice();
         let gs = inf_norm(g).max(1e-300);
-        for l in 1..=levels {
-            // one function at levels nothing else samples: refine it, not
-            // the unit rows
-            let ring = RingSampler::ring_values_once(scheme, &analysis.discovered, l, g)?;
+        // one function at levels nothing else samples: refine it (not the
+        // unit rows), once for every level
+        for ring in RingSampler::ring_values_each_level(scheme, &analysis.discovered, levels, g)? {
             top_levels.push(ring.iter().map(|v| v.abs()).fold(0.0, f64::max) / gs);
         }
         let last = top_levels.len();

@@ -10,7 +10,7 @@
 
 use faer::c64;
 
-use crate::charmap::net::{facet_triangles, refine_net, Net};
+use crate::charmap::net::{facet_triangles, refine_net, refine_net_visiting, Net};
 use crate::error::Error;
 use crate::neighbourhood::Discovered;
 use crate::refine::SparseRow;
@@ -112,13 +112,19 @@ impl RingSampler {
     }
 
     /// The ring values of one level-0 function `x` (analysis order) after
-    /// `levels` analysis steps, refining the function itself rather than
-    /// unit rows: a single value per vertex instead of a row over the
-    /// neighbourhood, for a function sampled once at a level no other
-    /// question asks for (the growth test's growing direction at levels
-    /// 1..5). Equal to `RingSampler::new(..).ring_values(x)`: the same
-    /// rules, mesh and pruning, applied to the data instead of the rows.
-    pub fn ring_values_once(scheme: &dyn Scheme, d: &Discovered, levels: usize, x: &[f64]) -> Result<Vec<f64>, Error> {
+    /// each of 1, 2, ..., `levels` analysis steps, refining the function
+    /// itself rather than unit rows (a single value per vertex instead of a
+    /// row over the neighbourhood) and once for all levels: for a function
+    /// sampled once at levels no other question asks for (the growth test's
+    /// growing direction at levels 1..5). Entry l − 1 equals
+    /// `RingSampler::new(.., l).ring_values(x)`: the same rules, mesh and
+    /// pruning, applied to the data instead of the rows.
+    pub fn ring_values_each_level(
+        scheme: &dyn Scheme,
+        d: &Discovered,
+        levels: usize,
+        x: &[f64],
+    ) -> Result<Vec<Vec<f64>>, Error> {
         let mut level0 = vec![None; d.patch.num_vertices()];
         for (k, &v) in d.analysis.iter().enumerate() {
             level0[v] = Some([x[k]]);
@@ -131,9 +137,14 @@ impl RingSampler {
             let growth = (scheme.topology().faces_per_face() as f64).powi(refinements as i32);
             check_memory(first.mesh.num_faces() as f64 * FACE_BYTES * growth, levels, d.analysis.len())?;
         }
-        let net = refine_net(scheme, d, level0, levels)?;
-        let (_, ring_vertices) = ring_of(&net)?;
-        Ok(ring_vertices.iter().map(|&v| net.points[v].expect("ring vertices are defined")[0]).collect())
+        let mut each = vec![Vec::new(); levels];
+        refine_net_visiting(scheme, d, level0, levels, &mut |level, net: &Net<[f64; 1]>| {
+            let (_, ring_vertices) = ring_of(net)?;
+            each[level - 1] =
+                ring_vertices.iter().map(|&v| net.points[v].expect("ring vertices are defined")[0]).collect();
+            Ok(())
+        })?;
+        Ok(each)
     }
 
     /// The value at net vertex `v` of level-0 data `x` (analysis order).
