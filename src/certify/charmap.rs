@@ -428,6 +428,8 @@ fn geometric_half(
             difference: lattice.clone(),
         });
         if positive > 0 && negative > 0 {
+            // the witnesses quote the tightest bounds: the pairwise ones
+            let bounds: Vec<Interval> = windows.iter().map(Window::jacobian_pairwise_bound).collect();
             let centre = |f: usize| {
                 let face = net.mesh.face(f);
                 let mut c = [0.0; 2];
@@ -852,6 +854,40 @@ impl Window {
         if let Some(j) = self.jacobian {
             return if j.is_finite() { j } else { Interval::new(f64::NEG_INFINITY, f64::INFINITY) };
         }
+        // First a cheap enclosure: the hull of the v-edges, paired with each
+        // u-edge (2·|U| products instead of 2·|U|·|V|). It contains every
+        // det(u, v), so a sign it decides is the sign the pairwise bound
+        // decides (which lies inside it); only an undecided face pays for
+        // the pairwise bound, which keeps the correlation within each pair.
+        if let Some(cheap) = self.jacobian_hull_bound() {
+            if cheap.lo > 0.0 || cheap.hi < 0.0 {
+                return cheap;
+            }
+        }
+        self.jacobian_pairwise_bound()
+    }
+
+    /// An enclosure of det(u, v) over u ∈ `along_u` and v in the hull of
+    /// `along_v` (None when a bound is not finite).
+    fn jacobian_hull_bound(&self) -> Option<Interval> {
+        let first = self.along_v.first()?;
+        let (mut v0, mut v1) = (first[0], first[1]);
+        for v in &self.along_v[1..] {
+            v0 = v0.hull(&v[0]);
+            v1 = v1.hull(&v[1]);
+        }
+        let mut out: Option<Interval> = None;
+        for u in &self.along_u {
+            let det = u[0] * v1 - u[1] * v0;
+            out = Some(out.map_or(det, |o| o.hull(&det)));
+        }
+        out.filter(|j| j.lo.is_finite() && j.hi.is_finite())
+    }
+
+    /// The pairwise enclosure: the hull over every pair (u, v) of the
+    /// window's edge vectors of det(u, v); the whole line when a bound is
+    /// not finite, which decides no sign.
+    fn jacobian_pairwise_bound(&self) -> Interval {
         let mut lo = f64::INFINITY;
         let mut hi = f64::NEG_INFINITY;
         for u in &self.along_u {
