@@ -52,20 +52,7 @@ fn ring_nets(analysis: &Analysis, sampler: &RingSampler, q: Quadratic) -> Vec<Ve
     let mut out = Vec::new();
     for _ in 0..RINGS {
         out.push(sampler.points(&data));
-        data = analysis
-            .matrix
-            .rows
-            .iter()
-            .map(|row| {
-                let mut p = [0.0; 3];
-                for (j, w) in row {
-                    for c in 0..3 {
-                        p[c] += w * data[*j][c];
-                    }
-                }
-                p
-            })
-            .collect();
+        data = analysis.matrix.apply_points(&data);
     }
     out
 }

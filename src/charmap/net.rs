@@ -145,10 +145,7 @@ pub fn refine_net<T: Combine<f64> + Clone>(
     level0: Vec<Option<T>>,
     analysis_steps: usize,
 ) -> Result<Net<T>, Error> {
-    // the first analysis step reuses discovery's float stencils
-    let first =
-        |k: usize, points: &[Option<T>]| Ok(apply(d.float_stencils(scheme)[k].iter().map(Option::as_ref), points));
-    refine_net_in::<f64, T>(scheme, d, level0, analysis_steps, &first, &mut |_, _| Ok(()))
+    refine_net_visiting(scheme, d, level0, analysis_steps, &mut |_, _| Ok(()))
 }
 
 /// [`refine_net`] to `analysis_steps` levels, showing the net after each
@@ -164,8 +161,9 @@ pub fn refine_net_visiting<T: Combine<f64> + Clone>(
     d: &Discovered,
     level0: Vec<Option<T>>,
     analysis_steps: usize,
-    visit: &mut dyn FnMut(usize, &Net<T>) -> Result<(), Error>,
+    visit: &mut Visit<T>,
 ) -> Result<Net<T>, Error> {
+    // the first analysis step reuses discovery's float stencils
     let first =
         |k: usize, points: &[Option<T>]| Ok(apply(d.float_stencils(scheme)[k].iter().map(Option::as_ref), points));
     refine_net_in::<f64, T>(scheme, d, level0, analysis_steps, &first, visit)

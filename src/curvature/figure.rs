@@ -314,19 +314,7 @@ pub fn surface_nets(
     let mut scale = 1.0;
     for _ in 0..rings {
         out.push(data.iter().map(|p| [p[0] / scale, p[1] / scale, p[2]]).collect());
-        data = s
-            .rows
-            .iter()
-            .map(|row| {
-                let mut p = [0.0; 3];
-                for (j, w) in row {
-                    for c in 0..3 {
-                        p[c] += w * data[*j][c];
-                    }
-                }
-                p
-            })
-            .collect();
+        data = s.apply_points(&data);
         scale *= lambda;
     }
     out

@@ -13,7 +13,7 @@ use faer::c64;
 use crate::charmap::net::{facet_triangles, refine_net, refine_net_visiting, Net};
 use crate::error::Error;
 use crate::neighbourhood::Discovered;
-use crate::refine::SparseRow;
+use crate::refine::{Combine, SparseRow};
 use crate::sdc::Scheme;
 use std::sync::Arc;
 
@@ -60,6 +60,36 @@ fn check_memory(bytes: f64, levels: usize, size: usize) -> Result<(), Error> {
     )
 }
 
+/// Level-0 data on the patch: `value(k)` at the k-th analysis vertex, the
+/// other patch vertices undefined.
+fn on_analysis_vertices<T: Clone>(d: &Discovered, value: impl Fn(usize) -> T) -> Vec<Option<T>> {
+    let mut level0 = vec![None; d.patch.num_vertices()];
+    for (k, &v) in d.analysis.iter().enumerate() {
+        level0[v] = Some(value(k));
+    }
+    level0
+}
+
+/// Refuse up front a net that cannot fit: one step is cheap (it reuses
+/// discovery's refinements) and the last level is about the host's
+/// faces-per-face to the power of the remaining refinements times as large
+/// as that step's net, whose bytes `bytes` estimates.
+fn refuse_beyond_memory<T: Combine<f64> + Clone>(
+    scheme: &dyn Scheme,
+    d: &Discovered,
+    level0: &[Option<T>],
+    levels: usize,
+    bytes: impl Fn(&Net<T>) -> f64,
+) -> Result<(), Error> {
+    if levels <= 1 {
+        return Ok(());
+    }
+    let first = refine_net(scheme, d, level0.to_vec(), 1)?;
+    let refinements = scheme.topology().steps_per_analysis() * (levels - 1);
+    let growth = (scheme.topology().faces_per_face() as f64).powi(refinements as i32);
+    check_memory(bytes(&first) * growth, levels, d.analysis.len())
+}
+
 /// The characteristic ring of a refined net: its faces (descendants of the
 /// first ring that are not descendants of the first ring one analysis step
 /// later) and their vertices (corners and face points, ascending), every one
@@ -92,20 +122,8 @@ impl RingSampler {
     }
 
     pub fn new(scheme: &dyn Scheme, d: &Discovered, levels: usize) -> Result<Self, Error> {
-        let mut level0 = vec![None; d.patch.num_vertices()];
-        for (k, &v) in d.analysis.iter().enumerate() {
-            level0[v] = Some(SparseRow::<f64>::unit(k));
-        }
-        if levels > 1 {
-            // refused up front when it cannot fit: one step is cheap (it
-            // reuses discovery's refinements) and the last level is about
-            // the host's faces-per-face to the power of the remaining
-            // refinements times as large
-            let first = refine_net(scheme, d, level0.clone(), 1)?;
-            let refinements = scheme.topology().steps_per_analysis() * (levels - 1);
-            let growth = (scheme.topology().faces_per_face() as f64).powi(refinements as i32);
-            check_memory(estimate_bytes(&first) * growth, levels, d.analysis.len())?;
-        }
+        let level0 = on_analysis_vertices(d, SparseRow::<f64>::unit);
+        refuse_beyond_memory(scheme, d, &level0, levels, estimate_bytes)?;
         let net = refine_net(scheme, d, level0, levels)?;
         let (ring_faces, ring_vertices) = ring_of(&net)?;
         Ok(RingSampler { net, ring_faces, ring_vertices, size: d.analysis.len() })
@@ -125,18 +143,9 @@ impl RingSampler {
         levels: usize,
         x: &[f64],
     ) -> Result<Vec<Vec<f64>>, Error> {
-        let mut level0 = vec![None; d.patch.num_vertices()];
-        for (k, &v) in d.analysis.iter().enumerate() {
-            level0[v] = Some([x[k]]);
-        }
-        if levels > 1 {
-            // one value per vertex: the memory is the net's faces, which
-            // grow with the host's faces per face at every refinement
-            let first = refine_net(scheme, d, level0.clone(), 1)?;
-            let refinements = scheme.topology().steps_per_analysis() * (levels - 1);
-            let growth = (scheme.topology().faces_per_face() as f64).powi(refinements as i32);
-            check_memory(first.mesh.num_faces() as f64 * FACE_BYTES * growth, levels, d.analysis.len())?;
-        }
+        let level0 = on_analysis_vertices(d, |k| [x[k]]);
+        // one value per vertex: the memory is the net's faces
+        refuse_beyond_memory(scheme, d, &level0, levels, |net| net.mesh.num_faces() as f64 * FACE_BYTES)?;
         let mut each = vec![Vec::new(); levels];
         refine_net_visiting(scheme, d, level0, levels, &mut |level, net: &Net<[f64; 1]>| {
             let (_, ring_vertices) = ring_of(net)?;

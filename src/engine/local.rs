@@ -66,6 +66,26 @@ impl<P, W, K> LocalMatrix<P, W, K> {
     }
 }
 
+impl<P, K> LocalMatrix<P, f64, K> {
+    /// S applied to points of dimension D (one per column): the control
+    /// points one subdivision step later, e.g. a net of 3-D points taken
+    /// ring by ring towards the centre.
+    pub fn apply_points<const D: usize>(&self, data: &[[f64; D]]) -> Vec<[f64; D]> {
+        self.rows
+            .iter()
+            .map(|row| {
+                let mut p = [0.0; D];
+                for (j, w) in row {
+                    for (c, x) in p.iter_mut().enumerate() {
+                        *x += w * data[*j][c];
+                    }
+                }
+                p
+            })
+            .collect()
+    }
+}
+
 impl<P: PartialEq, W, K> LocalMatrix<P, W, K> {
     /// The row (and column) of point `p`.
     pub fn position(&self, p: &P) -> Option<usize> {
