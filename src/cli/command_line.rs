@@ -4,7 +4,7 @@
 use clap::{Parser, Subcommand};
 
 use crate::cli::args::{AnalysisArgs, SweepArgs};
-use crate::cli::{charmap_commands, curvature};
+use crate::cli::{charmap_commands, curvature, shape_chart};
 
 #[derive(Parser, Debug)]
 #[command(name = "subdlab", version = env!("SUBDLAB_VERSION_LONG"), about = "Eigenanalysis and smoothness verification of subdivision surfaces")]
@@ -159,6 +159,10 @@ pub enum Command {
     /// Second order at the centre: curvature class, L_p limit, F(μ) and shapes, Reif's C² test
     #[command(after_help = OBSERVED_EXIT)]
     Curvature(curvature::CurvatureArgs),
+    /// Shape chart: which quadratic input shapes (elliptic, parabolic, hyperbolic, rotated) the
+    /// scheme reproduces, keeps the sign of, flattens or turns into the wrong sign at the centre
+    #[command(name = "shape-chart")]
+    ShapeChart(shape_chart::ShapeChartArgs),
     /// Figures (SVG, PDF or PNG by the file extension)
     Plot {
         #[command(subcommand)]
