@@ -99,7 +99,14 @@ where
             .label_style((FONT, font(14)))
             .axis_desc_style((FONT, font(15)))
             .x_label_formatter(&|x| super::tick_label(*x, 2.0))
-            .y_label_formatter(&|y| super::tick_label(*y, (y1 - y0).max(1.0)))
+            // whole valences and whole degrees without a decimal point
+            .y_label_formatter(&|y| {
+                if (y - y.round()).abs() < 1e-9 {
+                    format!("{y:.0}")
+                } else {
+                    super::tick_label(*y, (y1 - y0).max(1.0))
+                }
+            })
             .draw()
             .map_err(err)?;
         for (y, cells) in rows {
