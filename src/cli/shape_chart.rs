@@ -27,8 +27,9 @@ pub struct ShapeChartArgs {
     pub valences: Option<String>,
     #[command(flatten)]
     pub setup: SchemeSetup,
-    /// analysis steps of refinement of the ring samples (1 to 6, as `curvature --levels`)
-    #[arg(long, default_value_t = crate::curvature::DEFAULT_LEVELS)]
+    /// analysis steps of refinement of the ring samples (1 to 6, as `curvature --levels`;
+    /// more levels: finer sign fractions, more time)
+    #[arg(long, default_value_t = shape_chart::DEFAULT_LEVELS)]
     pub levels: usize,
     /// number of values of t, evenly from −1 to 1 (2 to 201)
     #[arg(long, default_value_t = 21)]
@@ -147,9 +148,11 @@ pub fn run(a: &ShapeChartArgs) -> Result<(), Error> {
     let built = registry::resolve(&a.scheme, &params)?;
     let domain = built.family();
     if let Route::Refused(why) = route(domain, Analysis::Curvature) {
-        return Err(Error::Input(
-            refusal(Analysis::Curvature, &a.scheme, domain, why).replace("curvature", "shape-chart"),
-        ));
+        return Err(Error::Input(refusal(Analysis::Curvature, &a.scheme, domain, why).replacen(
+            "`curvature`",
+            "`shape-chart`",
+            1,
+        )));
     }
     let scheme = crate::schemes::on_mesh(built, &a.scheme)?;
     let configure = |n: usize| match &a.setup.faces {
