@@ -309,7 +309,7 @@ pub fn chart_of_analysis(scheme: &dyn Scheme, analysis: &Analysis, opts: &ChartO
                 if central[k].is_some() {
                     continue;
                 }
-                central[k] = central_shape(&dense, &sampler, &below, &components, group, t, tol, lam2);
+                central[k] = central_shape(&dense, &sampler, &below, &components, group, t, tol);
             }
         }
         for (k, &t) in opts.ts.iter().enumerate() {
@@ -376,9 +376,7 @@ fn central_shape(
     group: &[usize],
     t: f64,
     tol: f64,
-    lam2: f64,
 ) -> Option<Central> {
-    let _ = lam2;
     let ring_size = |v: &[c64]| sampler.ring_values_c(v).iter().map(|z| z.norm()).fold(0.0, f64::max);
     // per entry: the chain v, N v, N² v, ... and its highest visible power
     let mut best: Option<(usize, f64, usize)> = None; // (j, size, entry)
