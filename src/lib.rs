@@ -60,6 +60,7 @@ pub mod lattice;
 pub mod certify;
 
 pub mod schemes;
+pub mod shape_chart;
 
 pub mod claims;
 pub mod sweep;

@@ -37,6 +37,8 @@ const LAYERS: &[(&str, u32)] = &[
     ("certify", 11),
     // the scheme catalogue: nothing below may import it
     ("schemes", 12),
+    // the shape chart: second-order projections on top of the curvature pipeline
+    ("shape_chart", 12),
     ("claims", 13),
     ("sweep", 13),
     ("plot", 14),

@@ -26,3 +26,4 @@ mod dft_representative_rows;
 mod exact_vs_float;
 mod jordan_irrational;
 mod local_matrix;
+mod shape_chart;

@@ -25,6 +25,7 @@ mod limits;
 mod mesh_fuzz;
 mod non_box_refine;
 mod refine;
+mod shape_chart_cli;
 mod sqrt3_refine;
 mod sweep;
 mod typed_errors;

@@ -61,6 +61,15 @@ pub struct SchemeArgs {
     /// valence of the extraordinary vertex (or face); regular-lattice schemes: 4, curve schemes: 2
     #[arg(long, short = 'n')]
     pub valence: usize,
+    #[command(flatten)]
+    pub setup: SchemeSetup,
+}
+
+/// The scheme's parameters and the faces around the centre: shared by
+/// [`SchemeArgs`] and the commands that run over a range of valences
+/// (`shape-chart`).
+#[derive(Args, Debug, Clone, Default)]
+pub struct SchemeSetup {
     /// scheme parameter NAME=VALUE (3/8, 0.375 and 1e-3 are accepted); repeatable
     #[arg(long = "param", short = 'p')]
     pub params: Vec<String>,

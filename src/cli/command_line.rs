@@ -4,7 +4,7 @@
 use clap::{Parser, Subcommand};
 
 use crate::cli::args::{AnalysisArgs, SweepArgs};
-use crate::cli::{charmap_commands, curvature};
+use crate::cli::{charmap_commands, curvature, shape_chart};
 
 #[derive(Parser, Debug)]
 #[command(name = "subdlab", version = env!("SUBDLAB_VERSION_LONG"), about = "Eigenanalysis and smoothness verification of subdivision surfaces")]
@@ -159,9 +159,22 @@ pub enum Command {
     /// Second order at the centre: curvature class, L_p limit, F(μ) and shapes, Reif's C² test
     #[command(after_help = OBSERVED_EXIT)]
     Curvature(curvature::CurvatureArgs),
+    /// Shape chart: which quadratic input shapes (elliptic, parabolic, hyperbolic, rotated) the
+    /// scheme reproduces, keeps the sign of, flattens or turns into the wrong sign at the centre
+    #[command(name = "shape-chart", after_help = SHAPE_CHART_HELP)]
+    ShapeChart(shape_chart::ShapeChartArgs),
     /// Figures (SVG, PDF or PNG by the file extension)
     Plot {
         #[command(subcommand)]
         what: charmap_commands::PlotWhat,
     },
 }
+
+/// How to read `subdlab shape-chart` (its `--help` epilogue).
+const SHAPE_CHART_HELP: &str =
+    "Inputs q = (x cos θ + y sin θ)² + t (−x sin θ + y cos θ)² sampled over the characteristic \
+map's control points; per input, ν* is the largest eigenvalue below λ whose component shows on the ring, \
+g = |ν*|/λ². Letters per cell (valence down, t from −1 to 1 across; panels m = 0, a middle m, ∞): \
+C correct shape, R right sign of K, F flat (m = ∞, g < 1), D degenerate (t = 0), M mixed sign, W wrong sign; \
+lower case: divergent (g > 1 or a Jordan chain at λ²). Example: subdlab shape-chart catmull-clark --valences 3..12 \
+-o chart.svg --theta-out theta.png --theta-valence 5";

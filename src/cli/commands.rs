@@ -56,7 +56,7 @@ pub(super) fn parse_params(list: &[String]) -> Result<Vec<(String, String)>, Err
 /// valence (regular, or the `--faces` sequence), as every analysis command
 /// reads them.
 pub(super) fn configuration(scheme: &dyn Scheme, a: &SchemeArgs) -> Result<Configuration, Error> {
-    match a.faces.as_deref() {
+    match a.setup.faces.as_deref() {
         None => Configuration::regular(scheme, a.valence),
         Some(faces) => Configuration::with_faces(scheme, a.valence, faces),
     }

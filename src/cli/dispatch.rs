@@ -32,6 +32,7 @@ fn dispatch_other(cmd: Command) -> Result<(), Error> {
         | Command::Charmap(_)
         | Command::Curvature(_) => unreachable!("the analysis commands go through the front door"),
         Command::Sweep(a) => sweep(&a),
+        Command::ShapeChart(a) => super::shape_chart::run(&a),
         Command::Report { out } => {
             crate::report::check_destination(&out)?;
             let files = crate::report::build()?;

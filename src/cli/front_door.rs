@@ -47,7 +47,7 @@ fn run(cmd: &Command, analysis: Analysis, config: &SchemeArgs) -> Result<i32, Er
         Command::Curvature(a) => super::curvature::check_flags(a)?,
         _ => {}
     }
-    let built = registry::resolve(&config.scheme, &parse_params(&config.params)?)?;
+    let built = registry::resolve(&config.scheme, &parse_params(&config.setup.params)?)?;
     let domain = built.family();
     match (route(domain, analysis), built) {
         (Route::Refused(why), _) => Err(Error::Input(refusal(analysis, &config.scheme, domain, why))),

@@ -32,7 +32,7 @@ pub(super) fn curve(cmd: &Command, scheme: &dyn CurveScheme) -> Result<(), Error
             "'{name}' is a curve scheme: a curve vertex has two neighbours (use --valence 2)"
         )));
     }
-    if a.config.faces.is_some() {
+    if a.config.setup.faces.is_some() {
         return Err(Error::Input(format!("scheme '{name}' takes no --faces: it is a curve scheme")));
     }
     match a.method.as_deref() {
@@ -220,7 +220,7 @@ fn prepare(
     if a.config.valence != 4 {
         return Err(Error::Input(format!("{name} is defined on the regular quad lattice only (valence 4)")));
     }
-    if a.config.faces.is_some() {
+    if a.config.setup.faces.is_some() {
         return Err(Error::Input(format!("scheme '{name}' takes no --faces: it lives on the regular quad lattice")));
     }
     match a.method.as_deref() {

@@ -16,6 +16,7 @@ mod front_door;
 mod lattice;
 mod mesh_analysis;
 mod mesh_commands;
+mod shape_chart;
 mod verify;
 
 pub use args::{AnalysisArgs, FigureArgs, SchemeArgs, SweepArgs};

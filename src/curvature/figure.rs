@@ -328,15 +328,23 @@ fn surface_rows(sampler: &RingSampler, input: &SurfaceInput, q: Quadratic) -> Su
             // curvature of a graph does not change
             let zmax = data.iter().map(|p| p[2].abs()).fold(0.0, f64::max).max(1e-300);
             let norm: Vec<[f64; 3]> = data.iter().map(|p| [p[0], p[1], p[2] / zmax]).collect();
-            let pts = sampler.points(&norm);
-            if input.polar {
-                polar_ring_signs(sampler, &pts).unwrap_or_else(|| ring_signs(sampler, &pts))
-            } else {
-                ring_signs(sampler, &pts)
-            }
+            face_signs(sampler, &sampler.points(&norm), input.polar)
         })
         .collect();
     SurfaceRows { input: q.label(), quadratic: q, rings }
+}
+
+/// The ring faces of refined points (x, y, z) in the plane, each with the
+/// sign of the Gaussian curvature of the graph z(x, y) from the fitted
+/// quadratic ([`fitted_sign`], see the module documentation); polar nets
+/// (`polar`) refined around first. The shape chart (`shape_chart::measure`)
+/// reads its sign fractions from here too.
+pub fn face_signs(sampler: &RingSampler, pts: &[Option<[f64; 3]>], polar: bool) -> Vec<(Vec<[f64; 2]>, i8)> {
+    if polar {
+        polar_ring_signs(sampler, pts).unwrap_or_else(|| ring_signs(sampler, pts))
+    } else {
+        ring_signs(sampler, pts)
+    }
 }
 
 /// The sign of det Hess of the least-squares quadratic z ≈ 1, x, y, x², xy,

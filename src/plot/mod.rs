@@ -20,6 +20,7 @@ pub mod charmap;
 pub mod compare;
 pub mod curvature;
 pub mod lines;
+pub mod shape_chart;
 pub mod spectrum;
 pub mod sweep;
 
