@@ -19,6 +19,7 @@
 pub mod charmap;
 pub mod compare;
 pub mod curvature;
+pub mod layout;
 pub mod lines;
 pub mod spectrum;
 pub mod sweep;
@@ -77,6 +78,34 @@ pub trait Figure {
     fn draw<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> Result<(), Error>
     where
         DB::ErrorType: 'static;
+    /// The plotted numbers as CSV: a header line, then one row per drawn
+    /// point (`--data`).
+    fn data_csv(&self) -> Result<String, Error> {
+        Err(Error::Input("this figure has no --data export".into()))
+    }
+}
+
+/// A CSV field: quoted when it holds a comma, a quote or a line break.
+pub fn csv_field(text: &str) -> String {
+    if text.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_string()
+    }
+}
+
+/// A CSV number: shortest round-trip form (`{}`), so the file holds the
+/// plotted values exactly.
+pub fn csv_number(v: f64) -> String {
+    format!("{v}")
+}
+
+/// Write the figure's plotted numbers to `path` (a `.csv`), atomically.
+pub fn save_data<F: Figure>(fig: &F, path: Option<&Path>) -> Result<(), Error> {
+    match path {
+        Some(path) => crate::io::write_atomic(path, fig.data_csv()?.as_bytes()),
+        None => Ok(()),
+    }
 }
 
 /// The SVG text of a figure.
@@ -237,6 +266,25 @@ pub struct Style {
     pub font_size: Option<u32>,
     /// dots per inch of a PNG (None: [`DEFAULT_DPI`]); SVG and PDF are vector
     pub dpi: Option<f64>,
+    /// where the legend goes (None: the figure's own choice, `Auto`)
+    pub legend: Option<layout::LegendPosition>,
+    /// the x and y axes' ranges (None: the data's); numeric axes only
+    pub xlim: Option<(f64, f64)>,
+    pub ylim: Option<(f64, f64)>,
+    /// legend texts of the curves in order, replacing their own (valence charts)
+    pub labels: Vec<String>,
+}
+
+/// An axis range `A:B` (`--xlim`, `--ylim`): two finite numbers, A < B.
+pub fn parse_limits(flag: &str, text: &str) -> Result<(f64, f64), Error> {
+    let bad = || Error::Input(format!("{flag} '{text}': give A:B, two numbers with A < B, e.g. 0:1.5"));
+    let (a, b) = text.split_once(':').ok_or_else(bad)?;
+    let (a, b): (f64, f64) = (a.trim().parse().map_err(|_| bad())?, b.trim().parse().map_err(|_| bad())?);
+    if a.is_finite() && b.is_finite() && a < b {
+        Ok((a, b))
+    } else {
+        Err(bad())
+    }
 }
 
 /// The PNG resolution when none is given: sharp on screen and in print drafts.
