@@ -229,3 +229,77 @@ fn svg_files_named_in_the_environment() {
     }
     assert_clean(faults);
 }
+
+/// `--data` writes the plotted numbers: two identical Loop curves (drawn
+/// with different line styles and markers, so both stay visible) whose
+/// values are Loop's closed-form λ1 = 3/8 + cos(2π/n)/4, and `--label`
+/// names them in the CSV as in the legend.
+#[test]
+fn data_export_of_two_identical_curves_and_their_labels() {
+    let dir = tempfile::tempdir().unwrap();
+    let (svg, csv) = (dir.path().join("c.svg"), dir.path().join("c.csv"));
+    let out = crate::common::subdlab(&[
+        "plot",
+        "compare",
+        "--curve",
+        "loop",
+        "--curve",
+        "loop",
+        "--label",
+        "first",
+        "--label",
+        "second",
+        "--valences",
+        "3..8",
+        "--width",
+        "240",
+        "--height",
+        "160",
+        "--font-size",
+        "8",
+        "-o",
+        svg.to_str().unwrap(),
+        "--data",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("kind,series,valence,value"));
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 12, "6 valences × 2 curves");
+    for (k, label) in ["first", "second"].iter().enumerate() {
+        for (i, n) in (3..=8).enumerate() {
+            let row = &rows[6 * k + i];
+            assert_eq!((row[0], row[1], row[2]), ("curve", *label, n.to_string().as_str()));
+            let closed = 3.0 / 8.0 + (2.0 * std::f64::consts::PI / n as f64).cos() / 4.0;
+            let v: f64 = row[3].parse().unwrap();
+            assert!((v - closed).abs() < 1e-10, "n = {n}: {v} vs {closed}");
+        }
+    }
+    let drawn = std::fs::read_to_string(&svg).unwrap();
+    assert!(drawn.contains(">first<") && drawn.contains(">second<"), "the labels are the legend's");
+    assert!(layout_faults(&drawn).is_empty());
+}
+
+/// Bad values of the new flags: one line on stderr, non-zero exit.
+#[test]
+fn bad_legend_limits_labels_and_data_are_one_line_errors() {
+    let out = |ext: &str| std::env::temp_dir().join(format!("subdlab-layout-never-written.{ext}"));
+    let svg = out("svg");
+    let svg = svg.to_str().unwrap();
+    for (extra, needle) in [
+        (vec!["--legend", "sideways"], "--legend"),
+        (vec!["--xlim", "5:3"], "--xlim"),
+        (vec!["--ylim", "0:nan"], "--ylim"),
+        (vec!["--label", "a", "--label", "b"], "--label"),
+        (vec!["--data", "numbers.txt"], ".csv"),
+    ] {
+        let mut args = vec!["plot", "compare", "--curve", "loop", "--valences", "3..5", "-o", svg];
+        args.extend(extra.iter());
+        let err = crate::common::fails(&args);
+        assert!(err.contains(needle), "{extra:?}: {err}");
+    }
+    let err = crate::common::fails(&["curvature", "loop", "-n", "7", "-o", svg, "--xlim", "0:1"]);
+    assert!(err.contains("--xlim"), "{err}");
+}

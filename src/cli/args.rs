@@ -13,10 +13,10 @@ pub struct FigureArgs {
     /// the figure's title (an empty text: no title); default: names the scheme
     #[arg(long)]
     pub title: Option<String>,
-    /// figure width in points (SVG user units, PDF points), 200 to 6000
+    /// figure width in points (SVG user units, PDF points), 120 to 6000
     #[arg(long)]
     pub width: Option<u32>,
-    /// figure height in points (SVG user units, PDF points), 200 to 6000
+    /// figure height in points (SVG user units, PDF points), 120 to 6000
     #[arg(long)]
     pub height: Option<u32>,
     /// base font size (tick labels) in points, 6 to 72; other text scales with it

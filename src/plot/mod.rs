@@ -294,8 +294,9 @@ pub const DEFAULT_DPI: f64 = 150.0;
 pub const DPI_RANGE: std::ops::RangeInclusive<f64> = 36.0..=1200.0;
 
 /// Sizes accepted for `Style`: a figure smaller than this has no room for
-/// its axes, a larger one is not a figure of a paper.
-pub const SIZE_RANGE: std::ops::RangeInclusive<u32> = 200..=6000;
+/// its axes even with the smallest text (`layout::fit`), a larger one is not
+/// a figure of a paper. 160 pt high is a one-column figure's usual height.
+pub const SIZE_RANGE: std::ops::RangeInclusive<u32> = 120..=6000;
 pub const FONT_RANGE: std::ops::RangeInclusive<u32> = 6..=72;
 
 impl Style {
