@@ -278,7 +278,7 @@ fn data_export_of_two_identical_curves_and_their_labels() {
         }
     }
     let drawn = std::fs::read_to_string(&svg).unwrap();
-    assert!(drawn.contains(">first<") && drawn.contains(">second<"), "the labels are the legend's");
+    assert!(drawn.contains("\nfirst\n") && drawn.contains("\nsecond\n"), "the labels are the legend's");
     assert!(layout_faults(&drawn).is_empty());
 }
 
