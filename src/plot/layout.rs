@@ -402,9 +402,10 @@ impl Legend {
                     draw_marker(area, marker, ((l + r) / 2, mid), half.min(4), colour)?;
                 }
                 Swatch::Patch { fill, edge } => {
-                    let rect = [(l, mid - half), (r, mid + half)];
-                    area.draw(&Rectangle::new(rect, fill.filled())).map_err(err)?;
-                    area.draw(&Rectangle::new(rect, edge.stroke_width(1))).map_err(err)?;
+                    // the edge is a box one point larger under the fill
+                    let outer = [(l - 1, mid - half - 1), (r + 1, mid + half + 1)];
+                    area.draw(&Rectangle::new(outer, edge.filled())).map_err(err)?;
+                    area.draw(&Rectangle::new([(l, mid - half), (r, mid + half)], fill.filled())).map_err(err)?;
                 }
                 Swatch::Dot(colour) => {
                     area.draw(&Circle::new(((l + r) / 2, mid), half.min(4), colour.filled())).map_err(err)?

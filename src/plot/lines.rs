@@ -48,11 +48,12 @@ pub const COLOURS: [RGBColor; 6] = [
     RGBColor(86, 180, 233),
 ];
 
-/// The line style of the k-th curve (on, off in points; None: solid): with
-/// the marker, a second cue besides colour, and where two curves coincide
-/// the later one's gaps show the earlier one.
-pub const DASHES: [Option<(u32, u32)>; 6] =
-    [None, Some((9, 4)), Some((3, 3)), Some((12, 4)), Some((2, 5)), Some((6, 6))];
+/// The stroke width of curve k of `count`: earlier curves are wider, so
+/// where two curves coincide the later one runs inside the earlier one and
+/// both colours show (with the markers, a second cue besides colour).
+pub fn stroke(k: usize, count: usize) -> u32 {
+    2 + (count.saturating_sub(1 + k)).min(4) as u32
+}
 
 /// The marker of the k-th curve.
 pub const MARKERS: [Marker; 6] =
@@ -133,7 +134,12 @@ impl ValenceChart<'_> {
             .map(|(k, _)| {
                 let k6 = k % COLOURS.len();
                 (
-                    Swatch::Line { colour: COLOURS[k6], width: 2, dash: DASHES[k6], marker: MARKERS[k6] },
+                    Swatch::Line {
+                        colour: COLOURS[k6],
+                        width: stroke(k, self.lines.len()),
+                        dash: None,
+                        marker: MARKERS[k6],
+                    },
                     self.label(k).to_string(),
                 )
             })
@@ -192,14 +198,8 @@ impl ValenceChart<'_> {
         for (k, line) in self.lines.iter().enumerate() {
             let k6 = k % COLOURS.len();
             let colour = COLOURS[k6];
-            let style = colour.stroke_width(2);
-            match DASHES[k6] {
-                None => chart.draw_series(LineSeries::new(line.points.clone(), style)).map(|_| ()),
-                Some((on, off)) => {
-                    chart.draw_series(DashedLineSeries::new(line.points.clone(), on, off, style)).map(|_| ())
-                }
-            }
-            .map_err(err)?;
+            let style = colour.stroke_width(stroke(k, self.lines.len()));
+            chart.draw_series(LineSeries::new(line.points.clone(), style)).map_err(err)?;
             // markers of later curves are smaller, so coinciding points show
             // every curve's marker
             let inside =
