@@ -532,10 +532,21 @@ fn tick_candidates(axis: &Axis, most: usize) -> Vec<Vec<(f64, String)>> {
             let mut out: Vec<Vec<(f64, String)>> = Vec::new();
             for n in (2..=most.max(2)).rev() {
                 let points = coord.key_points(n);
-                if out.last().is_some_and(|l| l.len() == points.len()) {
+                if out.last().is_some_and(|l: &Vec<(f64, String)>| l.len() == points.len()) {
                     continue;
                 }
-                out.push(points.into_iter().map(|v| (v, fmt(v))).collect());
+                let ticks: Vec<(f64, String)> = points.into_iter().map(|v| (v, fmt(v))).collect();
+                // a label must read as its value: the formatter's decimals
+                // (chosen for the range) may be too few for a fine step
+                let exact = |(v, t): &(f64, String)| {
+                    t.parse::<f64>().map_or(true, |x| (x - v).abs() <= 1e-9 * (b - a).abs().max(1e-300))
+                };
+                if ticks.iter().all(exact) {
+                    out.push(ticks);
+                }
+            }
+            if out.is_empty() {
+                out.push(coord.key_points(2).into_iter().map(|v| (v, fmt(v))).collect());
             }
             out
         }
