@@ -8,11 +8,11 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use super::layout::MARGIN;
 use super::layout::{
     block_height, draw_lines, em, fit, place_inside, place_outside, plan_axes, region_area, title_lines, Axis, Legend,
     LegendPosition, Swatch, Ticks,
 };
-use super::lines::MARGIN;
 use super::{err, square_window, tick_label, Figure, Style};
 use crate::charmap::{wedge, CharMap};
 use crate::error::Error;

@@ -10,10 +10,10 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use super::layout::MARGIN;
 use super::layout::{
     block_height, draw_lines, em, fit, plan_axes, region_area, text_width, title_lines, Axis, NoFit, Ticks,
 };
-use super::lines::MARGIN;
 use super::{err, square_window as window, tick_label, Figure, Style};
 use crate::curvature::Curvature;
 use crate::error::Error;

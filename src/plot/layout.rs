@@ -24,8 +24,20 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::{err, FONT};
 use crate::error::Error;
+
+/// The family name figures use for text (the embedded font is registered
+/// under it; `plot` re-exports it).
+pub const FONT: &str = "sans-serif";
+
+/// The outer margin of a figure, in points.
+pub const MARGIN: f64 = 8.0;
+
+/// A plotters error as one line (as `plot::err`; kept here so that this
+/// file imports nothing of its folder).
+fn err<E: std::fmt::Display>(e: E) -> Error {
+    Error::Message(format!("cannot draw the figure: {e}"))
+}
 
 /// The smallest base font size the layout shrinks text to before refusing.
 pub const MIN_BASE_FONT: f64 = 5.0;

@@ -8,7 +8,7 @@ use plotters::prelude::*;
 
 use super::layout::{
     block_height, draw_lines, draw_marker, em, fit, place_inside, place_outside, plan_axes, region_area, title_lines,
-    AxesPlan, Axis, Legend, LegendPosition, LegendShape, Marker, NoFit, Swatch, Ticks,
+    AxesPlan, Axis, Legend, LegendPosition, LegendShape, Marker, NoFit, Swatch, Ticks, MARGIN,
 };
 use super::sweep::Bound;
 use super::{err, Style};
@@ -76,9 +76,6 @@ struct Plan {
     region: (f64, f64, f64, f64),
     axes: AxesPlan,
 }
-
-/// The outer margin of a figure.
-pub const MARGIN: f64 = 8.0;
 
 impl ValenceChart<'_> {
     /// The plotted numbers: one row per point of every curve and reference

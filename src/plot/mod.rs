@@ -31,8 +31,7 @@ use crate::error::Error;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-/// The family name figures use for text.
-pub const FONT: &str = "sans-serif";
+pub use layout::FONT;
 static FONT_BYTES: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
 static REGISTER: Once = Once::new();
 

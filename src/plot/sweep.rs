@@ -10,11 +10,11 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use super::layout::MARGIN;
 use super::layout::{
     block_height, draw_lines, em, fit, place_inside, place_outside, plan_axes, region_area, title_lines, AxesPlan,
     Axis, Legend, LegendPosition, LegendShape, Marker, NoFit, Swatch, Ticks,
 };
-use super::lines::MARGIN;
 use super::{err, Figure, Style};
 use crate::curvature::CurvatureClass;
 use crate::error::Error;
