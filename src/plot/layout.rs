@@ -430,6 +430,9 @@ impl Legend {
     }
 }
 
+/// A legend's shape and its top-left corner.
+pub type Placed = (LegendShape, (f64, f64));
+
 /// Where a legend outside the plot goes: the margins it takes from the
 /// figure's area (left, top, right, bottom, grown) and its top-left corner.
 /// `Auto`: right of the plot when one column takes at most 40 % of the
@@ -439,7 +442,7 @@ pub fn place_outside(
     position: LegendPosition,
     (w, h): (f64, f64),
     region: &mut (f64, f64, f64, f64),
-) -> Result<Option<(LegendShape, (f64, f64))>, NoFit> {
+) -> Result<Option<Placed>, NoFit> {
     if legend.entries.is_empty() {
         return Ok(None);
     }
@@ -472,7 +475,7 @@ pub fn place_inside(
     legend: &mut Legend,
     position: LegendPosition,
     (x0, y0, x1, y1): (f64, f64, f64, f64),
-) -> Result<Option<(LegendShape, (f64, f64))>, NoFit> {
+) -> Result<Option<Placed>, NoFit> {
     if !position.inside() || legend.entries.is_empty() {
         return Ok(None);
     }
