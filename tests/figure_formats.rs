@@ -584,7 +584,9 @@ fn sweep_figure_takes_the_style_flags_and_draws_the_computed_points() {
         d.rects
             .iter()
             .filter(|r| r.1 < t.0 && (r.2 - t.1).abs() < 20.0)
-            .min_by(|a, b| (t.0 - a.1).total_cmp(&(t.0 - b.1)))
+            // nearest on the left, and of those at the same distance the
+            // one at the text's height (legend rows may be under 20 apart)
+            .min_by(|a, b| (t.0 - a.1).total_cmp(&(t.0 - b.1)).then((a.2 - t.1).abs().total_cmp(&(b.2 - t.1).abs())))
             .unwrap()
             .0
             .clone()

@@ -18,6 +18,7 @@ mod cli;
 mod cli_bi2;
 mod curvature_user_scheme;
 mod figure_formats;
+mod figure_layout;
 mod hardening;
 mod json_schemas;
 mod khan_mustafa_mesh;

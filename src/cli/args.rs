@@ -13,10 +13,10 @@ pub struct FigureArgs {
     /// the figure's title (an empty text: no title); default: names the scheme
     #[arg(long)]
     pub title: Option<String>,
-    /// figure width in points (SVG user units, PDF points), 200 to 6000
+    /// figure width in points (SVG user units, PDF points), 120 to 6000
     #[arg(long)]
     pub width: Option<u32>,
-    /// figure height in points (SVG user units, PDF points), 200 to 6000
+    /// figure height in points (SVG user units, PDF points), 120 to 6000
     #[arg(long)]
     pub height: Option<u32>,
     /// base font size (tick labels) in points, 6 to 72; other text scales with it
@@ -26,6 +26,20 @@ pub struct FigureArgs {
     /// width × dpi / 72 pixels; SVG and PDF are vector and ignore it
     #[arg(long)]
     pub dpi: Option<f64>,
+    /// where the legend goes: auto (right of the plot when it fits, else
+    /// below), right, below, upper-right, upper-left, lower-right, lower-left
+    /// (inside the plot, over the data) or none
+    #[arg(long)]
+    pub legend: Option<String>,
+    /// the x axis's range A:B (figures with a numeric x axis: not the curvature figures)
+    #[arg(long, value_name = "A:B", allow_hyphen_values = true)]
+    pub xlim: Option<String>,
+    /// the y axis's range A:B (figures with a numeric y axis: not the curvature figures)
+    #[arg(long, value_name = "A:B", allow_hyphen_values = true)]
+    pub ylim: Option<String>,
+    /// also write the plotted numbers to FILE.csv (a header line, then one row per point)
+    #[arg(long, value_name = "FILE.csv")]
+    pub data: Option<std::path::PathBuf>,
 }
 
 impl FigureArgs {
@@ -36,14 +50,33 @@ impl FigureArgs {
             || self.height.is_some()
             || self.font_size.is_some()
             || self.dpi.is_some()
+            || self.legend.is_some()
+            || self.data.is_some()
+            || self.xlim.is_some()
+            || self.ylim.is_some()
+    }
+    /// The `--data` file, which must end in `.csv` (any case).
+    pub fn data_path(&self) -> Result<Option<&std::path::Path>, crate::error::Error> {
+        match &self.data {
+            Some(p) if p.extension().and_then(|e| e.to_str()).is_some_and(|e| e.eq_ignore_ascii_case("csv")) => {
+                Ok(Some(p.as_path()))
+            }
+            Some(p) => Err(crate::error::Error::Input(format!("--data {}: the file must end in .csv", p.display()))),
+            None => Ok(None),
+        }
     }
     pub fn style(&self) -> Result<crate::plot::Style, crate::error::Error> {
+        self.data_path()?;
         crate::plot::Style {
             title: self.title.clone(),
             width: self.width,
             height: self.height,
             font_size: self.font_size,
             dpi: self.dpi,
+            legend: self.legend.as_deref().map(crate::plot::layout::LegendPosition::parse).transpose()?,
+            xlim: self.xlim.as_deref().map(|t| crate::plot::parse_limits("--xlim", t)).transpose()?,
+            ylim: self.ylim.as_deref().map(|t| crate::plot::parse_limits("--ylim", t)).transpose()?,
+            labels: Vec::new(),
         }
         .checked()
     }

@@ -87,6 +87,10 @@ pub enum PlotWhat {
         /// output figure (.svg, .pdf or .png)
         #[arg(short, long)]
         out: PathBuf,
+        /// legend text of the k-th drawn branch (in the legend's order), replacing
+        /// its own; repeatable
+        #[arg(long = "label")]
+        labels: Vec<String>,
         #[command(flatten)]
         figure: FigureArgs,
     },
@@ -109,6 +113,10 @@ pub enum PlotWhat {
         /// output figure (.svg, .pdf or .png)
         #[arg(short, long)]
         out: PathBuf,
+        /// legend text of the k-th --curve, replacing its own (NAME and parameters);
+        /// repeatable, at most one per curve
+        #[arg(long = "label")]
+        labels: Vec<String>,
         #[command(flatten)]
         figure: FigureArgs,
         /// worker threads (0, the default: one per available core)
@@ -195,7 +203,9 @@ pub fn charmap(a: &CharmapArgs, scheme: Box<dyn Scheme>) -> Result<i32, Error> {
         if map.ring.is_none() {
             return Err(Error::Input(format!("no figure written: {}", map.explanation)));
         }
-        plot::save(&RingFigure { map: &map, copies: a.rings, wedge: a.wedge, sectors: a.sectors, style }, out)?;
+        let fig = RingFigure { map: &map, copies: a.rings, wedge: a.wedge, sectors: a.sectors, style };
+        plot::save(&fig, out)?;
+        plot::save_data(&fig, a.figure.data_path()?)?;
     }
     let status = certificate
         .as_ref()
@@ -315,11 +325,14 @@ fn parse_range(s: &str) -> Result<(usize, usize), Error> {
 
 pub fn plot(what: &PlotWhat) -> Result<(), Error> {
     match what {
-        PlotWhat::Spectrum { scheme, valences, params, count, references, out, figure } => {
+        PlotWhat::Spectrum { scheme, valences, params, count, references, out, labels, figure } => {
             if *count == 0 || *count > 6 {
                 return Err(Error::Input(format!("--count must be between 1 and 6, got {count}")));
             }
-            let style = figure.style()?;
+            if labels.len() > *count {
+                return Err(Error::Input(format!("{} --label texts for {count} branches (--count)", labels.len())));
+            }
+            let style = crate::plot::Style { labels: labels.clone(), ..figure.style()? };
             check_out(out)?;
             let (a, b) = parse_range(valences)?;
             let valences: Vec<usize> = (a..=b).collect();
@@ -327,14 +340,18 @@ pub fn plot(what: &PlotWhat) -> Result<(), Error> {
             let s = build_scheme(scheme, params)?;
             let rows = crate::plot::spectrum::leading_moduli(s.as_ref(), a..=b)?;
             let fig = SpectrumFigure { scheme: s.name().to_string(), rows, count: *count, references, style };
-            plot::save(&fig, out)
+            plot::save(&fig, out)?;
+            plot::save_data(&fig, figure.data_path()?)
         }
-        PlotWhat::Compare { curves, valences, quantity, references, out, figure, threads } => {
+        PlotWhat::Compare { curves, valences, quantity, references, out, labels, figure, threads } => {
             use crate::plot::compare::{compare_lines, CompareFigure, CurveSpec, Quantity};
             if curves.len() > MAX_COMPARED {
                 return Err(Error::Input(format!("at most {MAX_COMPARED} curves per figure, got {}", curves.len())));
             }
-            let style = figure.style()?;
+            if labels.len() > curves.len() {
+                return Err(Error::Input(format!("{} --label texts for {} curves", labels.len(), curves.len())));
+            }
+            let style = crate::plot::Style { labels: labels.clone(), ..figure.style()? };
             check_out(out)?;
             let quantity = Quantity::parse(quantity)?;
             let specs: Vec<CurveSpec> = curves.iter().map(|c| CurveSpec::parse(c)).collect::<Result<_, _>>()?;
@@ -343,7 +360,9 @@ pub fn plot(what: &PlotWhat) -> Result<(), Error> {
             let references = Bound::over(references, &[], &range)?;
             // the sweep's own reading of the range (A..B)
             let lines = compare_lines(&specs, &format!("{a}..{b}"), quantity, *threads as usize)?;
-            plot::save(&CompareFigure { quantity, lines, references, valences: (a, b), style }, out)
+            let fig = CompareFigure { quantity, lines, references, valences: (a, b), style };
+            plot::save(&fig, out)?;
+            plot::save_data(&fig, figure.data_path()?)
         }
     }
 }

@@ -65,7 +65,12 @@ fn figure_kind(a: &CurvatureArgs) -> Result<CurvatureFigureKind, Error> {
     if let Some(q) = &a.input {
         Quadratic::parse(q)?;
     }
-    a.style.style()?;
+    let style = a.style.style()?;
+    if style.xlim.is_some() || style.ylim.is_some() {
+        return Err(Error::Input(
+            "--xlim/--ylim set a numeric axis; the curvature figures' panels share the ring's own window".into(),
+        ));
+    }
     if let Some(out) = &a.out {
         check_out(out)?;
     }
@@ -89,7 +94,9 @@ pub fn run(a: &CurvatureArgs, scheme: Box<dyn crate::schemes::Scheme>) -> Result
         if c.figures.is_none() {
             return Err(Error::Input(format!("no figure written: the curvature class is {}", c.class.name())));
         }
-        plot::save(&CurvatureFigure { c: &c, kind, style }, out)?;
+        let fig = CurvatureFigure { c: &c, kind, style };
+        plot::save(&fig, out)?;
+        plot::save_data(&fig, a.style.data_path()?)?;
     }
     if a.json {
         print_json(&c)

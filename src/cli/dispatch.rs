@@ -216,6 +216,7 @@ fn sweep(args: &SweepArgs) -> Result<(), Error> {
         let mut fig = crate::plot::sweep::SweepFigure::new(scheme, name, &points, grid.charmap, bounds)?;
         fig.style = style;
         crate::plot::save(&fig, path)?;
+        crate::plot::save_data(&fig, args.figure.data_path()?)?;
     }
     if json {
         #[derive(serde::Serialize)]

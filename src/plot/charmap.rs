@@ -8,9 +8,15 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::{err, square_window, tick_label, Figure, Style, FONT};
+use super::layout::MARGIN;
+use super::layout::{
+    block_height, draw_lines, em, fit, place_inside, place_outside, plan_axes, region_area, title_lines, Axis, Legend,
+    LegendPosition, Swatch, Ticks,
+};
+use super::{err, square_window, tick_label, Figure, Style};
 use crate::charmap::{wedge, CharMap};
 use crate::error::Error;
+use plotters::style::text_anchor::HPos;
 
 pub struct RingFigure<'a> {
     pub map: &'a CharMap,
@@ -74,15 +80,10 @@ impl Figure for RingFigure<'_> {
         DB::ErrorType: 'static,
     {
         let m = self.map;
-        let ring = m
-            .display
-            .as_ref()
-            .or(m.ring.as_ref())
-            .ok_or_else(|| Error::Input("no characteristic ring to draw".into()))?;
+        let (polys, net) = self.shapes()?;
         root.fill(&WHITE).map_err(err)?;
         // the verdict is not drawn: it belongs to the caption of the paper
         // and to the command's table and JSON
-        let font = |own: u32| self.style.font(own, BASE_FONT);
         let title = self.style.title(format!(
             "{} n = {}: characteristic {}, λ₁ = {:.6}",
             m.scheme,
@@ -90,15 +91,104 @@ impl Figure for RingFigure<'_> {
             if self.wedge { "wedge (normalised)" } else { "rings" },
             m.lambda1
         ));
-        let rest = match title {
-            Some(title) => {
-                let (top, rest) = root.split_vertically(font(24) as i32 + 24);
-                top.draw(&Text::new(title, (20, 12), (FONT, font(24)).into_font())).map_err(err)?;
-                rest
+        // equal scales on both axes: a square window around everything drawn
+        let (c, half) =
+            square_window(polys.iter().flat_map(|(p, _, _)| p.iter()).chain(net.iter().flatten()).map(|p| [p.0, p.1]))
+                .ok_or_else(|| Error::Input("nothing to draw".into()))?;
+        let (xr, yr) =
+            (self.style.xlim.unwrap_or((c.0 - half, c.0 + half)), self.style.ylim.unwrap_or((c.1 - half, c.1 + half)));
+        let span = (xr.1 - xr.0).max(yr.1 - yr.0);
+        let fmt = |v: f64| tick_label(v, span);
+        let size = self.size();
+        let entries = self.legend_entries(&polys);
+        let plan = fit(self.style.font(BASE_FONT, BASE_FONT) as f64, size, |scale| {
+            let font = |own: u32| self.style.font(own, BASE_FONT) as f64 * scale;
+            let (w, h) = (size.0 as f64, size.1 as f64);
+            let title_size = font(24);
+            let lines = match &title {
+                Some(t) => title_lines(t, title_size, w - 2.0 * MARGIN, 3)?,
+                None => Vec::new(),
+            };
+            let title_h =
+                if lines.is_empty() { 0.0 } else { block_height(lines.len(), title_size) + 0.4 * em(title_size) };
+            let mut legend = Legend { entries: entries.clone(), size: font(14) };
+            let position = self.style.legend.unwrap_or(LegendPosition::Auto);
+            let mut region = (MARGIN, MARGIN + title_h, MARGIN, MARGIN);
+            let mut placed = place_outside(&mut legend, position, (w, h), &mut region)?;
+            let x = Axis { range: xr, desc: Some("x".into()), ticks: Ticks::Auto(&fmt) };
+            let y = Axis { range: yr, desc: Some("y".into()), ticks: Ticks::Auto(&fmt) };
+            let axes = plan_axes((w - region.0 - region.2, h - region.1 - region.3), &x, &y, font(16), font(18), true)?;
+            let (x0, y0, x1, y1) = axes.plot;
+            if let Some(inside) =
+                place_inside(&mut legend, position, (x0 + region.0, y0 + region.1, x1 + region.0, y1 + region.1))?
+            {
+                placed = Some(inside);
             }
-            None => root.clone(),
-        };
+            Ok((lines, title_size, placed.map(|(s, at)| (legend, s, at)), region, axes))
+        })?;
+        let (title_text, title_size, legend, region, axes) = plan;
+        draw_lines(root, &title_text, title_size, (size.0 as f64 / 2.0, MARGIN), HPos::Center)?;
+        let area = region_area(root, region);
+        axes.draw(&area, xr, yr, false)?;
+        let mut chart = axes.chart(&area, xr, yr)?;
+        let grey = RGBColor(150, 150, 150);
+        for f in &net {
+            let mut closed = f.clone();
+            closed.push(f[0]);
+            chart.draw_series(std::iter::once(PathElement::new(closed, grey.stroke_width(1)))).map_err(err)?;
+        }
+        for (p, k, outline) in &polys {
+            let fill = if self.sectors && !self.wedge {
+                SECTOR_COLOURS[sector_colour(sector_of(p, m.valence), m.valence)]
+            } else {
+                FILLS[*k]
+            };
+            chart.draw_series(std::iter::once(Polygon::new(p.clone(), fill.filled()))).map_err(err)?;
+            if *outline {
+                let mut closed = p.clone();
+                closed.push(p[0]);
+                chart.draw_series(std::iter::once(PathElement::new(closed, LINES[*k].stroke_width(1)))).map_err(err)?;
+            }
+        }
+        if !self.wedge {
+            let dots: Vec<(f64, f64)> = net.iter().flatten().copied().collect();
+            chart.draw_series(dots.into_iter().map(|p| Circle::new(p, 3, BLACK.filled()))).map_err(err)?;
+        }
+        if let Some((legend, shape, at)) = &legend {
+            legend.draw(root, *shape, *at)?;
+        }
+        Ok(())
+    }
+    fn data_csv(&self) -> Result<String, Error> {
+        use super::csv_number;
+        let (polys, net) = self.shapes()?;
+        // the faces as painted (the ring and its scaled copies, or the
+        // wedge), then the control net's faces
+        let mut out = String::from("kind,polygon,vertex,x,y\n");
+        for (i, (p, _, _)) in polys.iter().enumerate() {
+            for (j, q) in p.iter().enumerate() {
+                out += &format!("face,{i},{j},{},{}\n", csv_number(q.0), csv_number(q.1));
+            }
+        }
+        for (i, f) in net.iter().enumerate() {
+            for (j, q) in f.iter().enumerate() {
+                out += &format!("control net,{i},{j},{},{}\n", csv_number(q.0), csv_number(q.1));
+            }
+        }
+        Ok(out)
+    }
+}
 
+impl RingFigure<'_> {
+    /// What is drawn: the painted polygons and the control net's faces.
+    #[allow(clippy::type_complexity)]
+    fn shapes(&self) -> Result<(Vec<Painted>, Vec<Vec<(f64, f64)>>), Error> {
+        let m = self.map;
+        let ring = m
+            .display
+            .as_ref()
+            .or(m.ring.as_ref())
+            .ok_or_else(|| Error::Input("no characteristic ring to draw".into()))?;
         // (polygon, colour, outlined). Copies are painted from the largest
         // down, each with the faces inside it: the next copy covers them, so
         // what shows of copy k is λ1^k times (the refined first ring minus its
@@ -133,54 +223,22 @@ impl Figure for RingFigure<'_> {
         } else {
             m.control_net.iter().map(|f| f.iter().map(|p| (p[0], p[1])).collect()).collect()
         };
-        // equal scales on both axes: a square window around everything drawn
-        let (c, half) =
-            square_window(polys.iter().flat_map(|(p, _, _)| p.iter()).chain(net.iter().flatten()).map(|p| [p.0, p.1]))
-                .ok_or_else(|| Error::Input("nothing to draw".into()))?;
-        // equal scales: the plot area is a square (the larger side of the
-        // area is left as margin)
-        let (w, h) = rest.dim_in_pixel();
-        let (label_x, label_y) = (font(16) as i32 * 3, font(16) as i32 * 4);
-        let side = (w as i32 - label_y).min(h as i32 - label_x).max(1);
-        let (_, area) = rest.split_horizontally(((w as i32 - label_y - side) / 2).max(0));
-        let (area, _) = area.split_horizontally((side + label_y).min(w as i32));
-        let (area, _) = area.split_vertically((side + label_x).min(h as i32));
-        let mut chart = ChartBuilder::on(&area)
-            .margin(10)
-            .x_label_area_size(label_x)
-            .y_label_area_size(label_y)
-            .build_cartesian_2d(c.0 - half..c.0 + half, c.1 - half..c.1 + half)
-            .map_err(err)?;
-        let span = 2.0 * half;
-        chart
-            .configure_mesh()
-            .disable_mesh()
-            .x_desc("x")
-            .y_desc("y")
-            .label_style((FONT, font(16)))
-            .axis_desc_style((FONT, font(18)))
-            .x_label_formatter(&|v| tick_label(*v, span))
-            .y_label_formatter(&|v| tick_label(*v, span))
-            .draw()
-            .map_err(err)?;
-        let grey = RGBColor(150, 150, 150);
-        for f in &net {
-            let mut closed = f.clone();
-            closed.push(f[0]);
-            chart.draw_series(std::iter::once(PathElement::new(closed, grey.stroke_width(1)))).map_err(err)?;
-        }
-        // one legend entry per colour: the ring (k even) and the copies
-        // between (k odd) alternate, so copy 0 is the ring itself
+        Ok((polys, net))
+    }
+
+    /// The legend: one entry per colour drawn (the ring and the copies
+    /// between alternate, so copy 0 is the ring itself; with sectors one per
+    /// sector while each has its own colour, else one for the scheme, sector
+    /// 0 naming where the turn starts), and the control net's dots.
+    fn legend_entries(&self, polys: &[Painted]) -> Vec<(Swatch, String)> {
+        let m = self.map;
+        let mut entries = Vec::new();
         let mut labelled = [false; 2];
         let mut sector_labelled = vec![false; SECTOR_COLOURS.len()];
-        for (p, k, outline) in &polys {
+        for (p, k, _) in polys {
             if self.sectors && !self.wedge {
                 let sector = sector_of(p, m.valence);
                 let colour = sector_colour(sector, m.valence);
-                let fill = SECTOR_COLOURS[colour];
-                let series = chart.draw_series(std::iter::once(Polygon::new(p.clone(), fill.filled()))).map_err(err)?;
-                // one entry per sector while each has its own colour, else
-                // one for the scheme (sector 0 names where the turn starts)
                 let entry = if m.valence <= SECTOR_COLOURS.len() {
                     Some(format!("sector {sector}"))
                 } else if sector == 0 {
@@ -190,56 +248,23 @@ impl Figure for RingFigure<'_> {
                 };
                 if let Some(name) = entry.filter(|_| !sector_labelled[colour]) {
                     sector_labelled[colour] = true;
-                    series.label(name).legend(move |(x, y)| {
-                        EmptyElement::at((x, y))
-                            + Rectangle::new([(0, -6), (18, 6)], fill.filled())
-                            + Rectangle::new([(0, -6), (18, 6)], BLACK.stroke_width(1))
-                    });
+                    entries.push((Swatch::Patch { fill: SECTOR_COLOURS[colour], edge: BLACK }, name));
                 }
-            } else {
-                let series =
-                    chart.draw_series(std::iter::once(Polygon::new(p.clone(), FILLS[*k].filled()))).map_err(err)?;
-                if !labelled[*k] {
-                    labelled[*k] = true;
-                    let (fill, line) = (FILLS[*k], LINES[*k]);
-                    let name = match (self.wedge, *k, self.copies) {
-                        (true, _, _) => "sector 0 of the ring, angles stretched by n/4",
-                        (false, 0, 0..=2) => "characteristic ring",
-                        (false, 0, _) => "ring, copies scaled by λ₁², λ₁⁴, …",
-                        (false, _, 2) => "copy scaled by λ₁",
-                        _ => "copies scaled by λ₁, λ₁³, …",
-                    };
-                    series.label(name).legend(move |(x, y)| {
-                        EmptyElement::at((x, y))
-                            + Rectangle::new([(0, -6), (18, 6)], fill.filled())
-                            + Rectangle::new([(0, -6), (18, 6)], line.stroke_width(1))
-                    });
-                }
-            }
-            if *outline {
-                let mut closed = p.clone();
-                closed.push(p[0]);
-                chart.draw_series(std::iter::once(PathElement::new(closed, LINES[*k].stroke_width(1)))).map_err(err)?;
+            } else if !labelled[*k] {
+                labelled[*k] = true;
+                let name = match (self.wedge, *k, self.copies) {
+                    (true, _, _) => "sector 0 of the ring, angles stretched by n/4",
+                    (false, 0, 0..=2) => "characteristic ring",
+                    (false, 0, _) => "ring, copies scaled by λ₁², λ₁⁴, …",
+                    (false, _, 2) => "copy scaled by λ₁",
+                    _ => "copies scaled by λ₁, λ₁³, …",
+                };
+                entries.push((Swatch::Patch { fill: FILLS[*k], edge: LINES[*k] }, name.to_string()));
             }
         }
         if !self.wedge {
-            let dots: Vec<(f64, f64)> = net.iter().flatten().copied().collect();
-            chart
-                .draw_series(dots.into_iter().map(|p| Circle::new(p, 3, BLACK.filled())))
-                .map_err(err)?
-                .label("control net (subdominant eigenvectors)")
-                .legend(move |(x, y)| Circle::new((x + 9, y), 3, BLACK.filled()));
+            entries.push((Swatch::Dot(BLACK), "control net (subdominant eigenvectors)".to_string()));
         }
-        {
-            chart
-                .configure_series_labels()
-                .position(SeriesLabelPosition::UpperRight)
-                .label_font((FONT, font(14)))
-                .background_style(WHITE.mix(0.85))
-                .border_style(BLACK)
-                .draw()
-                .map_err(err)?;
-        }
-        Ok(())
+        entries
     }
 }

@@ -152,14 +152,22 @@ impl Figure for CompareFigure {
         DB::ErrorType: 'static,
     {
         let axis = self.quantity.axis();
+        self.chart(&axis).draw(root)
+    }
+    fn data_csv(&self) -> Result<String, Error> {
+        Ok(self.chart(&self.quantity.axis()).csv())
+    }
+}
+
+impl CompareFigure {
+    fn chart<'a>(&'a self, axis: &'a str) -> ValenceChart<'a> {
         ValenceChart {
             title: format!("{axis} against valence"),
-            y_desc: &axis,
+            y_desc: axis,
             lines: &self.lines,
             references: &self.references,
             style: &self.style,
             valences: self.valences,
         }
-        .draw(root)
     }
 }

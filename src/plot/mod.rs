@@ -19,6 +19,7 @@
 pub mod charmap;
 pub mod compare;
 pub mod curvature;
+pub mod layout;
 pub mod lines;
 pub mod shape_chart;
 pub mod spectrum;
@@ -31,8 +32,7 @@ use crate::error::Error;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-/// The family name figures use for text.
-pub const FONT: &str = "sans-serif";
+pub use layout::FONT;
 static FONT_BYTES: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
 static REGISTER: Once = Once::new();
 
@@ -78,6 +78,34 @@ pub trait Figure {
     fn draw<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> Result<(), Error>
     where
         DB::ErrorType: 'static;
+    /// The plotted numbers as CSV: a header line, then one row per drawn
+    /// point (`--data`).
+    fn data_csv(&self) -> Result<String, Error> {
+        Err(Error::Input("this figure has no --data export".into()))
+    }
+}
+
+/// A CSV field: quoted when it holds a comma, a quote or a line break.
+pub fn csv_field(text: &str) -> String {
+    if text.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_string()
+    }
+}
+
+/// A CSV number: shortest round-trip form (`{}`), so the file holds the
+/// plotted values exactly.
+pub fn csv_number(v: f64) -> String {
+    format!("{v}")
+}
+
+/// Write the figure's plotted numbers to `path` (a `.csv`), atomically.
+pub fn save_data<F: Figure>(fig: &F, path: Option<&Path>) -> Result<(), Error> {
+    match path {
+        Some(path) => crate::io::write_atomic(path, fig.data_csv()?.as_bytes()),
+        None => Ok(()),
+    }
 }
 
 /// The SVG text of a figure.
@@ -238,6 +266,25 @@ pub struct Style {
     pub font_size: Option<u32>,
     /// dots per inch of a PNG (None: [`DEFAULT_DPI`]); SVG and PDF are vector
     pub dpi: Option<f64>,
+    /// where the legend goes (None: the figure's own choice, `Auto`)
+    pub legend: Option<layout::LegendPosition>,
+    /// the x and y axes' ranges (None: the data's); numeric axes only
+    pub xlim: Option<(f64, f64)>,
+    pub ylim: Option<(f64, f64)>,
+    /// legend texts of the curves in order, replacing their own (valence charts)
+    pub labels: Vec<String>,
+}
+
+/// An axis range `A:B` (`--xlim`, `--ylim`): two finite numbers, A < B.
+pub fn parse_limits(flag: &str, text: &str) -> Result<(f64, f64), Error> {
+    let bad = || Error::Input(format!("{flag} '{text}': give A:B, two numbers with A < B, e.g. 0:1.5"));
+    let (a, b) = text.split_once(':').ok_or_else(bad)?;
+    let (a, b): (f64, f64) = (a.trim().parse().map_err(|_| bad())?, b.trim().parse().map_err(|_| bad())?);
+    if a.is_finite() && b.is_finite() && a < b {
+        Ok((a, b))
+    } else {
+        Err(bad())
+    }
 }
 
 /// The PNG resolution when none is given: sharp on screen and in print drafts.
@@ -247,8 +294,9 @@ pub const DEFAULT_DPI: f64 = 150.0;
 pub const DPI_RANGE: std::ops::RangeInclusive<f64> = 36.0..=1200.0;
 
 /// Sizes accepted for `Style`: a figure smaller than this has no room for
-/// its axes, a larger one is not a figure of a paper.
-pub const SIZE_RANGE: std::ops::RangeInclusive<u32> = 200..=6000;
+/// its axes even with the smallest text (`layout::fit`), a larger one is not
+/// a figure of a paper. 160 pt high is a one-column figure's usual height.
+pub const SIZE_RANGE: std::ops::RangeInclusive<u32> = 120..=6000;
 pub const FONT_RANGE: std::ops::RangeInclusive<u32> = 6..=72;
 
 impl Style {

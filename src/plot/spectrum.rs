@@ -112,12 +112,19 @@ impl Figure for SpectrumFigure {
     where
         DB::ErrorType: 'static,
     {
-        let (n0, n1) = (
-            self.rows.first().map(|r| r.0).ok_or_else(|| Error::Input("no valences to plot".into()))?,
-            self.rows.last().map(|r| r.0).ok_or_else(|| Error::Input("no valences to plot".into()))?,
-        );
-        let lines: Vec<Line> = self
-            .branches()
+        let lines = self.lines();
+        self.chart(&lines)?.draw(root)
+    }
+    fn data_csv(&self) -> Result<String, Error> {
+        let lines = self.lines();
+        Ok(self.chart(&lines)?.csv())
+    }
+}
+
+impl SpectrumFigure {
+    /// The drawn curves: the branches, λ1's named as such.
+    fn lines(&self) -> Vec<Line> {
+        self.branches()
             .into_iter()
             .map(|(branch, points)| Line {
                 label: if branch == (Branch { block: 1, rank: 0 }) {
@@ -127,15 +134,20 @@ impl Figure for SpectrumFigure {
                 },
                 points,
             })
-            .collect();
-        ValenceChart {
+            .collect()
+    }
+    fn chart<'a>(&'a self, lines: &'a [Line]) -> Result<ValenceChart<'a>, Error> {
+        let (n0, n1) = (
+            self.rows.first().map(|r| r.0).ok_or_else(|| Error::Input("no valences to plot".into()))?,
+            self.rows.last().map(|r| r.0).ok_or_else(|| Error::Input("no valences to plot".into()))?,
+        );
+        Ok(ValenceChart {
             title: format!("{}: leading eigenvalue moduli against valence", self.scheme),
             y_desc: "|λ|",
-            lines: &lines,
+            lines,
             references: &self.references,
             style: &self.style,
             valences: (n0, n1),
-        }
-        .draw(root)
+        })
     }
 }

@@ -10,10 +10,16 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::{err, Figure, Style, FONT};
+use super::layout::MARGIN;
+use super::layout::{
+    block_height, draw_lines, em, fit, place_inside, place_outside, plan_axes, region_area, title_lines, AxesPlan,
+    Axis, Legend, LegendPosition, LegendShape, Marker, NoFit, Swatch, Ticks,
+};
+use super::{err, Figure, Style};
 use crate::curvature::CurvatureClass;
 use crate::error::Error;
 use crate::sweep::Point;
+use plotters::style::text_anchor::HPos;
 
 /// What a grid point passed, in increasing order of strength.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -194,6 +200,76 @@ const BOUND_COLOURS: [RGBColor; 4] =
 /// Base font size of the figure (tick labels), which `Style::font_size` replaces.
 const BASE_FONT: u32 = 17;
 
+/// Everything placed before drawing (see `lines::Plan`).
+struct Plan {
+    title: Vec<String>,
+    title_size: f64,
+    legend: Option<(Legend, LegendShape, (f64, f64))>,
+    region: (f64, f64, f64, f64),
+    axes: AxesPlan,
+}
+
+impl SweepFigure {
+    fn ranges(&self) -> ((f64, f64), (f64, f64)) {
+        let h = self.half_step();
+        let (x0, x1) = self.cells.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| (a.min(c.1), b.max(c.1)));
+        let (n0, n1) = self.cells.iter().fold((usize::MAX, 0), |(a, b), c| (a.min(c.0), b.max(c.0)));
+        (self.style.xlim.unwrap_or((x0 - h, x1 + h)), self.style.ylim.unwrap_or((n0 as f64 - 0.5, n1 as f64 + 0.5)))
+    }
+    fn legend(&self, size: f64) -> Legend {
+        let mut entries: Vec<(Swatch, String)> = self
+            .statuses()
+            .into_iter()
+            .map(|s| {
+                (Swatch::Patch { fill: s.colour(), edge: RGBColor(90, 90, 90) }, s.label(self.charmap).to_string())
+            })
+            .collect();
+        for (k, bound) in self.bounds.iter().enumerate() {
+            let colour = BOUND_COLOURS[k % BOUND_COLOURS.len()];
+            entries.push((
+                Swatch::Line { colour, width: 3, dash: None, marker: Marker::None },
+                format!("bound {}", bound.label),
+            ));
+        }
+        Legend { entries, size }
+    }
+    fn plan(&self, scale: f64, x_fmt: &dyn Fn(f64) -> String) -> Result<Plan, NoFit> {
+        let font = |own: u32| self.style.font(own, BASE_FONT) as f64 * scale;
+        let (w, h) = self.size();
+        let (w, h) = (w as f64, h as f64);
+        let caption = match (&self.param, self.curvature) {
+            (Some(p), false) => format!("{}: admissible {p} per valence", self.scheme),
+            (Some(p), true) => format!("{}: curvature class over {p} per valence", self.scheme),
+            (None, _) => format!("{}: curvature class per valence", self.scheme),
+        };
+        let title_size = font(26);
+        let title = match self.style.title(caption) {
+            Some(t) => title_lines(&t, title_size, w - 2.0 * MARGIN, 3)?,
+            None => Vec::new(),
+        };
+        let title_h = if title.is_empty() { 0.0 } else { block_height(title.len(), title_size) + 0.4 * em(title_size) };
+        let mut legend = self.legend(font(17));
+        // the legend's own place is outside the grid, so it never hides cells
+        let position = self.style.legend.unwrap_or(LegendPosition::Auto);
+        let mut region = (MARGIN, MARGIN + title_h, MARGIN, MARGIN);
+        let mut placed = place_outside(&mut legend, position, (w, h), &mut region)?;
+        let (xr, yr) = self.ranges();
+        let x = match &self.param {
+            Some(p) => Axis { range: xr, desc: Some(format!("parameter {p}")), ticks: Ticks::Auto(x_fmt) },
+            None => Axis { range: xr, desc: Some("(no swept parameter)".into()), ticks: Ticks::None },
+        };
+        let y = Axis { range: yr, desc: Some("valence n".into()), ticks: Ticks::Integers };
+        let axes = plan_axes((w - region.0 - region.2, h - region.1 - region.3), &x, &y, font(17), font(20), false)?;
+        let (x0, y0, x1, y1) = axes.plot;
+        if let Some(inside) =
+            place_inside(&mut legend, position, (x0 + region.0, y0 + region.1, x1 + region.0, y1 + region.1))?
+        {
+            placed = Some(inside);
+        }
+        Ok(Plan { title, title_size, legend: placed.map(|(s, at)| (legend, s, at)), region, axes })
+    }
+}
+
 impl Figure for SweepFigure {
     fn size(&self) -> (u32, u32) {
         self.style.size((1100, 760))
@@ -206,53 +282,18 @@ impl Figure for SweepFigure {
         DB::ErrorType: 'static,
     {
         root.fill(&WHITE).map_err(err)?;
-        // the legend gets its own strip under the chart so it never hides cells
-        let statuses = self.statuses();
-        let legend_rows = statuses.len().max(self.bounds.len()) as u32;
-        let font = |own: u32| self.style.font(own, BASE_FONT);
-        let row_height = font(17) + 9;
-        let (w, h_px) = self.size();
-        let legend_height = (30 + row_height * legend_rows).min(h_px / 2);
-        let (plot_area, legend_area) = root.split_vertically(h_px - legend_height);
+        let (xr, yr) = self.ranges();
+        let span = xr.1 - xr.0 - 2.0 * self.half_step();
+        let x_fmt = |x: f64| super::tick_label(x, span);
+        let size = self.size();
+        let plan = fit(self.style.font(BASE_FONT, BASE_FONT) as f64, size, |scale| self.plan(scale, &x_fmt))?;
+        draw_lines(root, &plan.title, plan.title_size, (size.0 as f64 / 2.0, MARGIN), HPos::Center)?;
+        let area = region_area(root, plan.region);
+        plan.axes.draw(&area, xr, yr, false)?;
+        let mut chart = plan.axes.chart(&area, xr, yr)?;
         let h = self.half_step();
-        let (x0, x1) = self.cells.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), c| (a.min(c.1), b.max(c.1)));
-        let (n0, n1) = self.cells.iter().fold((usize::MAX, 0), |(a, b), c| (a.min(c.0), b.max(c.0)));
-        let caption = match (&self.param, self.curvature) {
-            (Some(p), false) => format!("{}: admissible {p} per valence", self.scheme),
-            (Some(p), true) => format!("{}: curvature class over {p} per valence", self.scheme),
-            (None, _) => format!("{}: curvature class per valence", self.scheme),
-        };
-        let x_desc = match &self.param {
-            Some(p) => format!("parameter {p}"),
-            None => "(no swept parameter)".to_string(),
-        };
-        let swept = self.param.is_some();
-        let mut builder = ChartBuilder::on(&plot_area);
-        if let Some(title) = self.style.title(caption) {
-            builder.caption(title, (FONT, font(26)));
-        }
-        let mut chart = builder
-            .margin(20)
-            .x_label_area_size(font(17) * 3 + 4)
-            .y_label_area_size(font(17) * 4)
-            .build_cartesian_2d(x0 - h..x1 + h, n0 as f64 - 0.5..n1 as f64 + 0.5)
-            .map_err(err)?;
-        chart
-            .configure_mesh()
-            .disable_mesh()
-            .x_desc(x_desc)
-            // the mesh's default (11) with a swept parameter; none without one
-            .x_labels(if swept { 11 } else { 0 })
-            .y_desc("valence n")
-            .label_style((FONT, font(17)))
-            .axis_desc_style((FONT, font(20)))
-            .x_label_formatter(&|x| super::tick_label(*x, x1 - x0))
-            // rows are whole valences: a tick between two rows has no label
-            .y_label_formatter(&|y| if (y - y.round()).abs() < 1e-9 { format!("{y:.0}") } else { String::new() })
-            .draw()
-            .map_err(err)?;
         // rows get thinner with many valences; keep a hairline gap between them
-        let gap = if n1 - n0 < 40 { 0.06 } else { 0.0 };
+        let gap = if yr.1 - yr.0 < 41.0 { 0.06 } else { 0.0 };
         chart
             .draw_series(self.cells.iter().map(|&(n, x, status)| {
                 let n = n as f64;
@@ -269,28 +310,23 @@ impl Figure for SweepFigure {
             let colour = BOUND_COLOURS[k % BOUND_COLOURS.len()];
             chart.draw_series(std::iter::once(PathElement::new(path, colour.stroke_width(2)))).map_err(err)?;
         }
-        // legend: statuses in the left column, reference bounds in the right
-        let text = TextStyle::from((FONT, font(17)).into_font()).color(&BLACK);
-        let (row, size) = (row_height as i32, font(17) as i32);
-        let row_y = |k: usize| 10 + row * k as i32;
-        for (k, status) in statuses.iter().enumerate() {
-            let y = row_y(k);
-            legend_area
-                .draw(&Rectangle::new([(90, y), (90 + size, y + size)], status.colour().filled()))
-                .map_err(err)?;
-            legend_area.draw(&Text::new(status.label(self.charmap), (100 + size, y), text.clone())).map_err(err)?;
-        }
-        let x_col = w as i32 / 2 + 40;
-        for (k, bound) in self.bounds.iter().enumerate() {
-            let y = row_y(k) + size / 2;
-            let colour = BOUND_COLOURS[k % BOUND_COLOURS.len()];
-            legend_area
-                .draw(&PathElement::new(vec![(x_col, y), (x_col + 24, y)], colour.stroke_width(3)))
-                .map_err(err)?;
-            legend_area
-                .draw(&Text::new(format!("bound {}", bound.label), (x_col + 32, y - size / 2), text.clone()))
-                .map_err(err)?;
+        if let Some((legend, shape, at)) = &plan.legend {
+            legend.draw(root, *shape, *at)?;
         }
         Ok(())
+    }
+    fn data_csv(&self) -> Result<String, Error> {
+        use super::{csv_field, csv_number};
+        let mut out = String::from("kind,valence,value,status\n");
+        for &(n, x, status) in &self.cells {
+            let value = if self.param.is_some() { csv_number(x) } else { String::new() };
+            out += &format!("cell,{n},{value},{}\n", csv_field(status.label(self.charmap)));
+        }
+        for bound in &self.bounds {
+            for &(n, v) in &bound.values {
+                out += &format!("bound,{n},{},{}\n", csv_number(v), csv_field(&format!("bound {}", bound.label)));
+            }
+        }
+        Ok(out)
     }
 }
