@@ -195,6 +195,84 @@ fn curvature_figures_fit_every_size() {
     assert_clean(faults);
 }
 
+#[test]
+fn shape_chart_figures_fit_every_size() {
+    use subdlab::plot::shape_chart::{HeatMap, ThetaChart};
+    use subdlab::shape_chart::{chart, ChartOptions, ShapeChart};
+    let scheme = subdlab::schemes::build("catmull-clark", &[]).unwrap();
+    let opts = ChartOptions {
+        ts: (0..9).map(|i| -1.0 + i as f64 / 4.0).collect(),
+        thetas: 3,
+        steps: vec![0, 3],
+        levels: 1,
+    }
+    .checked()
+    .unwrap();
+    let valences: Vec<_> = (3..=6)
+        .map(|n| chart(scheme.as_ref(), &Configuration::regular(scheme.as_ref(), n).unwrap(), &opts).unwrap())
+        .collect();
+    let sc = ShapeChart {
+        scheme: "catmull-clark".into(),
+        params: Default::default(),
+        ts: opts.ts.clone(),
+        steps: opts.steps.clone(),
+        levels: opts.levels,
+        theta_chart: None,
+        valences,
+    };
+    let mut faults = check_grid("shape chart", &|style| HeatMap { chart: &sc, style });
+    faults.extend(check_grid("t × θ chart", &|style| ThetaChart { chart: &sc, valence: &sc.valences[2], style }));
+    assert_clean(faults);
+}
+
+/// The pixels of an SVG rasterised by resvg at 1 px per point, with the
+/// embedded font or with no font at all (a viewer that has none of ours).
+fn raster(svg: &str, with_font: bool) -> Vec<u8> {
+    let mut options = usvg::Options::default();
+    if with_font {
+        let font = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/assets/fonts/DejaVuSans.ttf")).unwrap();
+        options.fontdb_mut().load_font_data(font);
+        options.fontdb_mut().set_sans_serif_family("DejaVu Sans");
+    }
+    let tree = usvg::Tree::from_str(svg, &options).unwrap();
+    let (w, h) = (tree.size().width().ceil() as u32, tree.size().height().ceil() as u32);
+    let mut pixmap = resvg::tiny_skia::Pixmap::new(w, h).unwrap();
+    pixmap.fill(resvg::tiny_skia::Color::WHITE);
+    resvg::render(&tree, resvg::tiny_skia::Transform::identity(), &mut pixmap.as_mut());
+    pixmap.data().to_vec()
+}
+
+/// How many pixels differ by more than a faint anti-aliasing step.
+fn differing_pixels(a: &[u8], b: &[u8]) -> usize {
+    assert_eq!(a.len(), b.len());
+    a.chunks(4).zip(b.chunks(4)).filter(|(p, q)| p.iter().zip(q.iter()).any(|(x, y)| x.abs_diff(*y) > 48)).count()
+}
+
+/// A saved SVG draws its text as the embedded font's glyph outlines: a
+/// viewer with no font at all shows it as the plain SVG looks with the
+/// embedded font. The control: the plain SVG (text elements only) in that
+/// viewer loses its text, so the comparison can fail.
+#[test]
+fn saved_svg_text_is_outlined_and_looks_the_same_without_any_font() {
+    let scheme = subdlab::schemes::build("loop", &[]).unwrap();
+    let rows = leading_moduli(scheme.as_ref(), 3..=9).unwrap();
+    let fig = SpectrumFigure { scheme: "loop".into(), rows, count: 4, references: Vec::new(), style: Style::default() };
+    let plain = render_svg(&fig).unwrap();
+    let saved = subdlab::plot::render_svg_outlined(&fig).unwrap();
+    let reference = raster(&plain, true);
+    let text_pixels = differing_pixels(&raster(&plain, false), &reference);
+    assert!(text_pixels > 2000, "the control: without a font the plain SVG loses its text ({text_pixels} pixels)");
+    let off = differing_pixels(&raster(&saved, false), &reference);
+    assert!(off * 100 < text_pixels, "the outlined SVG without a font differs in {off} pixels (text: {text_pixels})");
+    // every text is still there, invisible, for search and scripts, and
+    // laid out as before
+    let texts = |svg: &str| svg.matches("<text").count();
+    assert_eq!(texts(&saved), texts(&plain));
+    assert_eq!(saved.matches("<text fill-opacity=\"0\"").count(), texts(&plain));
+    assert!(texts(&plain) >= 10);
+    assert!(layout_faults(&saved).is_empty() && text_boxes(&saved).0.len() == text_boxes(&plain).0.len());
+}
+
 /// The checker itself: two texts drawn on top of each other, and one past
 /// the right edge, are caught; two texts side by side are not.
 #[test]

@@ -131,6 +131,13 @@ fn checked(a: &ShapeChartArgs) -> Result<(Vec<usize>, ChartOptions), Error> {
         return Err(Error::Input("the style flags shape a figure; give -o FILE or --theta-out FILE too".into()));
     }
     a.style.style()?;
+    if a.style.data.is_some() && a.out.is_some() && a.theta_out.is_some() {
+        return Err(Error::Input(
+            "--data writes one figure's numbers: give it with -o or with --theta-out, not both \
+             (--csv writes every row of both)"
+                .into(),
+        ));
+    }
     for p in [&a.out, &a.theta_out].into_iter().flatten() {
         check_out(p)?;
     }
@@ -188,11 +195,19 @@ pub fn run(a: &ShapeChartArgs) -> Result<(), Error> {
         valences: charts,
         theta_chart,
     };
+    // --data goes with the heat map, or with the t × θ chart when that is the only figure
+    let data = a.style.data_path()?;
     if let Some(out) = &a.out {
-        crate::plot::save(&crate::plot::shape_chart::HeatMap { chart: &chart, style: style.clone() }, out)?;
+        let fig = crate::plot::shape_chart::HeatMap { chart: &chart, style: style.clone() };
+        crate::plot::save(&fig, out)?;
+        crate::plot::save_data(&fig, data)?;
     }
     if let (Some(out), Some(tc)) = (&a.theta_out, &chart.theta_chart) {
-        crate::plot::save(&crate::plot::shape_chart::ThetaChart { chart: &chart, valence: tc, style }, out)?;
+        let fig = crate::plot::shape_chart::ThetaChart { chart: &chart, valence: tc, style };
+        crate::plot::save(&fig, out)?;
+        if a.out.is_none() {
+            crate::plot::save_data(&fig, data)?;
+        }
     }
     if a.json {
         crate::io::print_json(&chart)

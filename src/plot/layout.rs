@@ -642,7 +642,9 @@ pub fn plan_axes(
     let x_ticks = pick_x_ticks(&x_cands, x.range, pw, label_size).ok_or_else(|| NoFit("the x tick labels".into()))?;
     // the descriptions must fit along their axes
     if let Some(d) = &x.desc {
-        if text_width(d, desc_size) > pw + left {
+        // centred under the plot: half on either side of its middle, inside the area
+        let middle = x0 + pw / 2.0;
+        if text_width(d, desc_size) > 2.0 * middle.min(w - middle) {
             return Err(NoFit(format!("the axis description '{d}'")));
         }
     }

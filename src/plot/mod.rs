@@ -120,6 +120,50 @@ pub fn render_svg<F: Figure>(fig: &F) -> Result<String, Error> {
     Ok(xml_safe(svg))
 }
 
+/// The SVG of a figure as it is saved: every text drawn as the embedded
+/// font's glyph outlines (paths), as in the PDF, so the figure looks the same
+/// in every viewer whatever fonts it has. Each text stays in the file beside
+/// its outlines as an invisible `<text>` (fill opacity 0), so the figure can
+/// still be searched, its text selected and read by screen readers and
+/// scripts; everything else is the SVG as drawn.
+pub fn render_svg_outlined<F: Figure>(fig: &F) -> Result<String, Error> {
+    outline_text(&render_svg(fig)?)
+}
+
+/// An SVG text (as figures render it) with each `<text>` element preceded by
+/// its glyph outlines and made invisible (see [`render_svg_outlined`]).
+pub fn outline_text(svg: &str) -> Result<String, Error> {
+    let head_end = svg.find('>').ok_or_else(|| Error::Message("the figure's SVG has no root element".into()))?;
+    let head = &svg[..=head_end];
+    let mut out = String::with_capacity(svg.len() * 4);
+    let mut rest = svg;
+    while let Some(start) = rest.find("<text") {
+        let Some(len) = rest[start..].find("</text>") else { break };
+        let end = start + len + "</text>".len();
+        let text = &rest[start..end];
+        out += &rest[..start];
+        out += &glyph_outlines(head, text)?;
+        out += "<text fill-opacity=\"0\"";
+        out += &text["<text".len()..];
+        rest = &rest[end..];
+    }
+    out += rest;
+    Ok(out)
+}
+
+/// The paths of one `<text>` element's glyphs, laid out by usvg with the
+/// embedded font in a document of the figure's size (`head`: the figure's
+/// `<svg ...>` start tag), as SVG elements to put where the text was.
+fn glyph_outlines(head: &str, text: &str) -> Result<String, Error> {
+    use svg2pdf::usvg::WriteOptions;
+    let tree = svg_tree(&format!("{head}{text}</svg>"))?;
+    // the writer turns text into paths (WriteOptions::preserve_text is false)
+    let written = tree.to_string(&WriteOptions { indent: svg2pdf::usvg::Indent::None, ..WriteOptions::default() });
+    let body_start = written.find('>').map_or(0, |i| i + 1);
+    let body_end = written.rfind("</svg>").unwrap_or(written.len());
+    Ok(written[body_start..body_end].replace("<defs/>", "").trim().to_string() + "\n")
+}
+
 /// Whether XML 1.0 can carry `c` at all (its `Char` production): not the
 /// C0 controls other than tab, line feed and carriage return, nor U+FFFE
 /// and U+FFFF, even escaped as `&#1;`.
@@ -247,7 +291,7 @@ pub fn render_png<F: Figure>(fig: &F, dpi: f64) -> Result<Vec<u8>, Error> {
 /// at the figure's resolution.
 pub fn save<F: Figure>(fig: &F, path: &Path) -> Result<(), Error> {
     let bytes = match format_of(path)? {
-        Format::Svg => render_svg(fig)?.into_bytes(),
+        Format::Svg => render_svg_outlined(fig)?.into_bytes(),
         Format::Pdf => render_pdf(fig)?,
         Format::Png => render_png(fig, fig.dpi().unwrap_or(DEFAULT_DPI))?,
     };

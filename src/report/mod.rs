@@ -391,7 +391,7 @@ fn sweep_figure(spec: &crate::claims::SweepFigureSpec) -> Result<(String, Files)
 }
 
 fn svg<F: plot::Figure>(fig: &F) -> Result<Vec<u8>, Error> {
-    plot::render_svg(fig).map(|s| s.into_bytes())
+    plot::render_svg_outlined(fig).map(|s| s.into_bytes())
 }
 
 /// Fails early, before the report's work (tens of seconds of analyses), when
