@@ -158,7 +158,14 @@ fn glyph_outlines(head: &str, text: &str) -> Result<String, Error> {
     use svg2pdf::usvg::WriteOptions;
     let tree = svg_tree(&format!("{head}{text}</svg>"))?;
     // the writer turns text into paths (WriteOptions::preserve_text is false)
-    let written = tree.to_string(&WriteOptions { indent: svg2pdf::usvg::Indent::None, ..WriteOptions::default() });
+    // a thousandth of a point is far below what any viewer or printer shows
+    let options = WriteOptions {
+        indent: svg2pdf::usvg::Indent::None,
+        coordinates_precision: 3,
+        transforms_precision: 4,
+        ..WriteOptions::default()
+    };
+    let written = tree.to_string(&options);
     let body_start = written.find('>').map_or(0, |i| i + 1);
     let body_end = written.rfind("</svg>").unwrap_or(written.len());
     Ok(written[body_start..body_end].replace("<defs/>", "").trim().to_string() + "\n")

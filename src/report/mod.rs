@@ -148,6 +148,22 @@ fn paper_page(f: &ClaimFile, outcomes: &[Outcome]) -> Result<(String, Files), Er
         page += "## Second order (curvature)\n\n";
         page += &second;
     }
+    // the shape chart: once per scheme (and parameters) of the page
+    let mut charted: Vec<(&str, &BTreeMap<String, String>)> = Vec::new();
+    let mut charts = String::new();
+    for spec in &f.figures {
+        if charted.contains(&(spec.scheme.as_str(), &spec.params)) {
+            continue;
+        }
+        charted.push((spec.scheme.as_str(), &spec.params));
+        let (md, figs) = shape_chart_figure(spec)?;
+        charts += &md;
+        files.extend(figs);
+    }
+    if !charts.is_empty() {
+        page += "## Shape chart\n\n";
+        page += &charts;
+    }
     for spec in &f.sweeps {
         let (md, figs) = sweep_figure(spec)?;
         page += &md;
@@ -331,6 +347,74 @@ fn curvature_figures(spec: &FigureSpec) -> Result<(String, Files), Error> {
         )
         .ok();
     }
+    Ok((md, files))
+}
+
+/// Valences of the shape charts in the reports.
+const SHAPE_CHART_VALENCES: std::ops::RangeInclusive<usize> = 3..=8;
+
+/// The shape chart (`subdlab shape-chart`, default settings) of the spec's
+/// scheme over [`SHAPE_CHART_VALENCES`], with what it says at m = ∞.
+fn shape_chart_figure(spec: &FigureSpec) -> Result<(String, Files), Error> {
+    use crate::plot::shape_chart::HeatMap;
+    use crate::shape_chart::{chart, worst_over_theta, Category, ChartOptions, ShapeChart};
+    let params: Vec<(String, String)> = spec.params.iter().map(|(k, v)| (k.clone(), v.clone())).collect();
+    let scheme = schemes::build(&spec.scheme, &params)?;
+    let (tag, title) = tag_and_title(&spec.scheme, &params);
+    let opts = ChartOptions::default();
+    let mut valences = Vec::new();
+    for n in SHAPE_CHART_VALENCES {
+        valences.push(chart(scheme.as_ref(), &Configuration::regular(scheme.as_ref(), n)?, &opts)?);
+    }
+    let sc = ShapeChart {
+        scheme: title.clone(),
+        params: spec.params.clone(),
+        ts: opts.ts.clone(),
+        steps: opts.steps.clone(),
+        levels: opts.levels,
+        valences,
+        theta_chart: None,
+    };
+    // per valence, the central shape's worst category over the non-degenerate inputs
+    let mut lines = String::new();
+    for v in &sc.valences {
+        let cells: Vec<(Category, bool)> =
+            sc.ts.iter().filter(|t| **t != 0.0).filter_map(|&t| worst_over_theta(v, t, "inf")).collect();
+        let count = |c: Category| cells.iter().filter(|x| x.0 == c).count();
+        let divergent = cells.iter().filter(|x| x.1).count();
+        let mut parts: Vec<String> = Category::ALL
+            .iter()
+            .filter(|c| count(**c) > 0)
+            .map(|c| format!("{} {}", count(*c), c.name()))
+            .collect();
+        if divergent > 0 {
+            parts.push(format!("{divergent} divergent"));
+        }
+        match &v.error {
+            Some(e) => writeln!(lines, "- n = {}: not charted ({})", v.n, cell(e)).ok(),
+            None => writeln!(lines, "- n = {}: {}", v.n, parts.join(", ")).ok(),
+        };
+    }
+    let name = format!("figures/{tag}-shape-chart.svg");
+    let mut files = Files::new();
+    files.insert(name.clone(), svg(&HeatMap { chart: &sc, style: Default::default() })?);
+    let p: String = params.iter().map(|(k, v)| format!(" --param {k}={v}")).collect();
+    let mut md = String::new();
+    writeln!(
+        md,
+        "![shape chart of {title}]({name})\n\nShape chart of {title}, valences {}..{} (`subdlab shape-chart {}{p} \
+         --valences {}..{}`): the input quadratics q = (x cos θ + y sin θ)² + t (−x sin θ + y cos θ)², t from −1 \
+         (hyperbolic) to 1 (elliptic), each cell the worst category over θ; the shape after m steps (m = 0, 3) and the \
+         central shape (m = ∞, the dominant second-order eigencomponent on the ring). Central shapes of the \
+         inputs t ≠ 0 (floating point; sign fractions sampled on the ring after {} refinement steps):\n\n{lines}",
+        SHAPE_CHART_VALENCES.start(),
+        SHAPE_CHART_VALENCES.end(),
+        spec.scheme,
+        SHAPE_CHART_VALENCES.start(),
+        SHAPE_CHART_VALENCES.end(),
+        opts.levels,
+    )
+    .ok();
     Ok((md, files))
 }
 
