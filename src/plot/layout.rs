@@ -151,6 +151,16 @@ pub fn block_height(n: usize, size: f64) -> f64 {
     }
 }
 
+/// A figure's title (None: no title) wrapped to the figure's width less its
+/// margins in at most three lines, and the height it takes with the gap
+/// below it.
+pub fn title_block(title: Option<String>, size: f64, figure_width: f64) -> Result<(Vec<String>, f64), NoFit> {
+    let Some(t) = title else { return Ok((Vec::new(), 0.0)) };
+    let lines = title_lines(&t, size, figure_width - 2.0 * MARGIN, 3)?;
+    let height = if lines.is_empty() { 0.0 } else { block_height(lines.len(), size) + 0.4 * em(size) };
+    Ok((lines, height))
+}
+
 /// A title (or subtitle) wrapped to `width`, or no fit when it would take
 /// more than `max_lines` lines.
 pub fn title_lines(text: &str, size: f64, width: f64, max_lines: usize) -> Result<Vec<String>, NoFit> {

@@ -7,8 +7,8 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::layout::{
-    block_height, draw_lines, draw_marker, em, fit, place_inside, place_outside, plan_axes, region_area, title_lines,
-    AxesPlan, Axis, Legend, LegendPosition, LegendShape, Marker, NoFit, Swatch, Ticks, MARGIN,
+    draw_lines, draw_marker, em, fit, place_inside, place_outside, plan_axes, region_area, title_block, AxesPlan, Axis,
+    Legend, LegendPosition, LegendShape, Marker, NoFit, Swatch, Ticks, MARGIN,
 };
 use super::sweep::Bound;
 use super::{err, Style};
@@ -155,11 +155,7 @@ impl ValenceChart<'_> {
         let (w, h) = self.style.size(SIZE);
         let (w, h) = (w as f64, h as f64);
         let title_size = font(26);
-        let title = match self.style.title(self.title.clone()) {
-            Some(t) => title_lines(&t, title_size, w - 2.0 * MARGIN, 3)?,
-            None => Vec::new(),
-        };
-        let title_h = if title.is_empty() { 0.0 } else { block_height(title.len(), title_size) + 0.4 * em(title_size) };
+        let (title, title_h) = title_block(self.style.title(self.title.clone()), title_size, w)?;
         let mut legend = self.legend(font(17));
         let position = self.style.legend.unwrap_or(LegendPosition::Auto);
         let mut region = (MARGIN, MARGIN + title_h, MARGIN, MARGIN);

@@ -14,7 +14,7 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::HPos;
 
 use super::layout::{
-    block_height, draw_lines, em, fit, line_step, place_outside, plan_axes, region_area, title_lines, AxesPlan, Axis,
+    draw_lines, em, fit, line_step, place_outside, plan_axes, region_area, text_width, title_block, AxesPlan, Axis,
     Legend, LegendPosition, LegendShape, NoFit, Swatch, Ticks, MARGIN,
 };
 use super::{csv_field, csv_number, err, Figure, Style};
@@ -121,11 +121,7 @@ impl Grids<'_> {
         let font = |own: u32| style.font(own, BASE_FONT) as f64 * scale;
         let (w, h) = (size.0 as f64, size.1 as f64);
         let title_size = font(22);
-        let title = match style.title(self.title.clone()) {
-            Some(t) => title_lines(&t, title_size, w - 2.0 * MARGIN, 3)?,
-            None => Vec::new(),
-        };
-        let title_h = if title.is_empty() { 0.0 } else { block_height(title.len(), title_size) + 0.4 * em(title_size) };
+        let (title, title_h) = title_block(style.title(self.title.clone()), title_size, w)?;
         let mut legend = self.legend(font(14));
         // below the panels unless asked otherwise: right of three panels would squeeze them
         let position = match style.legend.unwrap_or(LegendPosition::Below) {
@@ -149,7 +145,7 @@ impl Grids<'_> {
             let top = region.1 + caption_h;
             // the long description where a panel has room for it (with its y labels beside)
             let long = "t (hyperbolic < 0 < elliptic)";
-            let desc = if super::layout::text_width(long, font(15)) < 0.7 * panel_w { long } else { "t" };
+            let desc = if text_width(long, font(15)) < 0.7 * panel_w { long } else { "t" };
             let x = Axis { range: xr, desc: Some(desc.into()), ticks: Ticks::Auto(fmt) };
             let y = Axis {
                 range: (yr.1, yr.0),
@@ -163,13 +159,18 @@ impl Grids<'_> {
             let m = self.grids.get(k).map_or(String::new(), |g| g.0.clone());
             let caption = [panel_label(&m), short_panel_label(&m)]
                 .into_iter()
-                .find(|c| super::layout::text_width(c, caption_size) <= room)
+                .find(|c| text_width(c, caption_size) <= room)
                 .ok_or_else(|| NoFit(format!("the panel caption '{}'", panel_label(&m))))?;
             panels.push(((centre, region.1), caption, (left, top, w - left - panel_w, region.3), axes));
         }
         Ok(Plan { title, title_size, caption_size, legend: placed.map(|(s, at)| (legend, s, at)), panels })
     }
-    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, style: &Style, size: (u32, u32)) -> Result<(), Error>
+    fn draw<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        style: &Style,
+        size: (u32, u32),
+    ) -> Result<(), Error>
     where
         DB::ErrorType: 'static,
     {
@@ -198,7 +199,9 @@ impl Grids<'_> {
                     let rect = [(t - ht, row - hy), (t + ht, row + hy)];
                     chart.draw_series(std::iter::once(Rectangle::new(rect, colour(*c).filled()))).map_err(err)?;
                     if *divergent {
-                        chart.draw_series(std::iter::once(Circle::new((*t, *row), dot, BLACK.filled()))).map_err(err)?;
+                        chart
+                            .draw_series(std::iter::once(Circle::new((*t, *row), dot, BLACK.filled())))
+                            .map_err(err)?;
                     }
                 }
             }

@@ -12,8 +12,8 @@ use plotters::prelude::*;
 
 use super::layout::MARGIN;
 use super::layout::{
-    block_height, draw_lines, em, fit, place_inside, place_outside, plan_axes, region_area, title_lines, AxesPlan,
-    Axis, Legend, LegendPosition, LegendShape, Marker, NoFit, Swatch, Ticks,
+    draw_lines, fit, place_inside, place_outside, plan_axes, region_area, title_block, AxesPlan, Axis, Legend,
+    LegendPosition, LegendShape, Marker, NoFit, Swatch, Ticks,
 };
 use super::{err, Figure, Style};
 use crate::curvature::CurvatureClass;
@@ -243,11 +243,7 @@ impl SweepFigure {
             (None, _) => format!("{}: curvature class per valence", self.scheme),
         };
         let title_size = font(26);
-        let title = match self.style.title(caption) {
-            Some(t) => title_lines(&t, title_size, w - 2.0 * MARGIN, 3)?,
-            None => Vec::new(),
-        };
-        let title_h = if title.is_empty() { 0.0 } else { block_height(title.len(), title_size) + 0.4 * em(title_size) };
+        let (title, title_h) = title_block(self.style.title(caption), title_size, w)?;
         let mut legend = self.legend(font(17));
         // the legend's own place is outside the grid, so it never hides cells
         let position = self.style.legend.unwrap_or(LegendPosition::Auto);

@@ -120,45 +120,29 @@ fn paper_page(f: &ClaimFile, outcomes: &[Outcome]) -> Result<(String, Files), Er
         page += "## Figures\n\n";
         // the spectrum plot depends on the scheme and its parameters only:
         // drawn for the first figure of each, so no page shows it twice
-        let mut spectra: Vec<(&str, &BTreeMap<String, String>)> = Vec::new();
+        let firsts = first_per_scheme(&f.figures);
         for spec in &f.figures {
-            let first = !spectra.contains(&(spec.scheme.as_str(), &spec.params));
-            if first {
-                spectra.push((spec.scheme.as_str(), &spec.params));
-            }
+            let first = firsts.iter().any(|s| std::ptr::eq(*s, spec));
             let (md, figs) = figures(spec, first)?;
             page += &md;
             files.extend(figs);
         }
     }
-    // second order: once per scheme (and parameters) of the page, at the
-    // valence of its first figure
-    let mut seen: Vec<(&str, &BTreeMap<String, String>)> = Vec::new();
+    // second order and the shape chart: once per scheme (and parameters) of
+    // the page, at the valence of its first figure
     let mut second = String::new();
-    for spec in &f.figures {
-        if seen.contains(&(spec.scheme.as_str(), &spec.params)) {
-            continue;
-        }
-        seen.push((spec.scheme.as_str(), &spec.params));
+    let mut charts = String::new();
+    for spec in first_per_scheme(&f.figures) {
         let (md, figs) = curvature_figures(spec)?;
         second += &md;
+        files.extend(figs);
+        let (md, figs) = shape_chart_figure(spec)?;
+        charts += &md;
         files.extend(figs);
     }
     if !second.is_empty() {
         page += "## Second order (curvature)\n\n";
         page += &second;
-    }
-    // the shape chart: once per scheme (and parameters) of the page
-    let mut charted: Vec<(&str, &BTreeMap<String, String>)> = Vec::new();
-    let mut charts = String::new();
-    for spec in &f.figures {
-        if charted.contains(&(spec.scheme.as_str(), &spec.params)) {
-            continue;
-        }
-        charted.push((spec.scheme.as_str(), &spec.params));
-        let (md, figs) = shape_chart_figure(spec)?;
-        charts += &md;
-        files.extend(figs);
     }
     if !charts.is_empty() {
         page += "## Shape chart\n\n";
@@ -201,6 +185,18 @@ fn paper_page(f: &ClaimFile, outcomes: &[Outcome]) -> Result<(String, Files), Er
         writeln!(page, "- evidence: {}\n", cell(&o.detail)).ok();
     }
     Ok((page, files))
+}
+
+/// The first figure spec of each scheme (with its parameters), in order:
+/// what depends on the scheme alone is drawn once per page.
+fn first_per_scheme(specs: &[FigureSpec]) -> Vec<&FigureSpec> {
+    let mut firsts: Vec<&FigureSpec> = Vec::new();
+    for spec in specs {
+        if !firsts.iter().any(|s| s.scheme == spec.scheme && s.params == spec.params) {
+            firsts.push(spec);
+        }
+    }
+    firsts
 }
 
 /// The characteristic rings at the given valence and, with `spectrum`, the
@@ -382,11 +378,8 @@ fn shape_chart_figure(spec: &FigureSpec) -> Result<(String, Files), Error> {
             sc.ts.iter().filter(|t| **t != 0.0).filter_map(|&t| worst_over_theta(v, t, "inf")).collect();
         let count = |c: Category| cells.iter().filter(|x| x.0 == c).count();
         let divergent = cells.iter().filter(|x| x.1).count();
-        let mut parts: Vec<String> = Category::ALL
-            .iter()
-            .filter(|c| count(**c) > 0)
-            .map(|c| format!("{} {}", count(*c), c.name()))
-            .collect();
+        let mut parts: Vec<String> =
+            Category::ALL.iter().filter(|c| count(**c) > 0).map(|c| format!("{} {}", count(*c), c.name())).collect();
         if divergent > 0 {
             parts.push(format!("{divergent} divergent"));
         }
