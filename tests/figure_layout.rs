@@ -200,10 +200,15 @@ fn shape_chart_figures_fit_every_size() {
     use subdlab::plot::shape_chart::{HeatMap, ThetaChart};
     use subdlab::shape_chart::{chart, ChartOptions, ShapeChart};
     let scheme = subdlab::schemes::build("catmull-clark", &[]).unwrap();
-    let opts =
-        ChartOptions { ts: (0..9).map(|i| -1.0 + i as f64 / 4.0).collect(), thetas: 3, steps: vec![0, 3], levels: 1 }
-            .checked()
-            .unwrap();
+    let opts = ChartOptions {
+        ts: (0..9).map(|i| -1.0 + i as f64 / 4.0).collect(),
+        thetas: 3,
+        steps: vec![0, 3],
+        levels: 1,
+        iterated: None,
+    }
+    .checked()
+    .unwrap();
     let valences: Vec<_> = (3..=6)
         .map(|n| chart(scheme.as_ref(), &Configuration::regular(scheme.as_ref(), n).unwrap(), &opts).unwrap())
         .collect();

@@ -141,9 +141,14 @@ fn checked(a: &ShapeChartArgs) -> Result<(Vec<usize>, ChartOptions), Error> {
     for p in [&a.out, &a.theta_out].into_iter().flatten() {
         check_out(p)?;
     }
-    let opts =
-        ChartOptions { ts: t_grid(a.t_samples), thetas: a.thetas, steps: parse_steps(&a.steps)?, levels: a.levels }
-            .checked()?;
+    let opts = ChartOptions {
+        ts: t_grid(a.t_samples),
+        thetas: a.thetas,
+        steps: parse_steps(&a.steps)?,
+        levels: a.levels,
+        iterated: None,
+    }
+    .checked()?;
     Ok((valences, opts))
 }
 

@@ -35,6 +35,12 @@ pub const RIGHT_SIGN: f64 = 0.99;
 /// Largest fraction of ring area with sign K = sign t for "wrong sign".
 pub const WRONG_SIGN: f64 = 0.01;
 
+/// The deflated iteration's growth rate below 1 − RATE_TOL reads as flat
+/// (`super::Iterated`): the rate estimates g from two finite steps, so it
+/// is held to a looser tolerance than g itself; a g in between leaves the
+/// routes disagreeing, and a claim built on them undecided.
+pub const RATE_TOL: f64 = 1e-3;
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Category {

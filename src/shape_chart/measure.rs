@@ -86,6 +86,22 @@ impl<'a> Ring<'a> {
         }
         (fit / rest, c * scale)
     }
+
+    /// The size (Euclidean norm over the ring vertices) of the ring values
+    /// of h left after the least-squares affine fit a + b·χ: what of h is
+    /// not a plane, the part whose decay or growth is the curvature's.
+    pub fn curved_size(&self, h: &[f64]) -> f64 {
+        let values = self.sampler.ring_values(h);
+        let b = nalgebra::DVector::<f64>::from_column_slice(&values);
+        let a = nalgebra::DMatrix::<f64>::from_fn(self.chi.len(), 3, |i, j| match j {
+            0 => 1.0,
+            _ => self.chi[i][j - 1],
+        });
+        match a.clone().svd(true, true).solve(&b, 1e-13) {
+            Ok(x) => (&b - &a * &x).norm(),
+            Err(_) => f64::NAN,
+        }
+    }
 }
 
 /// |area| of a polygon (shoelace).

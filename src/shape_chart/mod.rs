@@ -72,6 +72,9 @@ pub struct ChartOptions {
     pub steps: Vec<usize>,
     /// analysis steps of refinement of the ring samples (as `curvature --levels`)
     pub levels: usize,
+    /// the second route to the central shapes ([`Iterated`]): deflated
+    /// iteration to steps (m1, m2), m1 < m2; None: not run
+    pub iterated: Option<(usize, usize)>,
 }
 
 /// The default t grid: −1 to 1 in steps of 0.1.
@@ -81,6 +84,8 @@ pub fn default_ts() -> Vec<f64> {
 
 /// Default finite steps: m = 0 (the input itself), 3 (a middle step), 6.
 pub const DEFAULT_STEPS: [usize; 3] = [0, 3, 6];
+/// Largest step of the deflated iteration ([`ChartOptions::iterated`]).
+pub const MAX_ITERATED: usize = 200;
 /// Default number of angles over the fundamental range.
 pub const DEFAULT_THETAS: usize = 3;
 /// Default analysis steps of refinement of the ring samples: one fewer than
@@ -92,7 +97,13 @@ pub const DEFAULT_LEVELS: usize = 2;
 
 impl Default for ChartOptions {
     fn default() -> Self {
-        ChartOptions { ts: default_ts(), thetas: DEFAULT_THETAS, steps: DEFAULT_STEPS.to_vec(), levels: DEFAULT_LEVELS }
+        ChartOptions {
+            ts: default_ts(),
+            thetas: DEFAULT_THETAS,
+            steps: DEFAULT_STEPS.to_vec(),
+            levels: DEFAULT_LEVELS,
+            iterated: None,
+        }
     }
 }
 
@@ -109,6 +120,13 @@ impl ChartOptions {
         }
         if self.steps.iter().any(|&m| m > 60) {
             return Err(Error::Input("finite steps m must be at most 60".into()));
+        }
+        if let Some((m1, m2)) = self.iterated {
+            if m1 == 0 || m1 >= m2 || m2 > MAX_ITERATED {
+                return Err(Error::Input(format!(
+                    "the iterated steps must satisfy 0 < m1 < m2 <= {MAX_ITERATED}, got ({m1}, {m2})"
+                )));
+            }
         }
         Ok(self)
     }
@@ -161,6 +179,10 @@ pub struct ValenceChart {
     pub theta_range_degrees: f64,
     pub thetas: Vec<f64>,
     pub rows: Vec<Row>,
+    /// the second route's shapes ([`ChartOptions::iterated`]), one per
+    /// input (t, θ); empty when not asked for
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub iterated: Vec<Iterated>,
     /// why there is no chart (the first-order test fails, ...)
     pub error: Option<String>,
 }
@@ -208,6 +230,7 @@ pub fn chart_of_analysis(scheme: &dyn Scheme, analysis: &Analysis, opts: &ChartO
         theta_range_degrees: range,
         thetas: thetas.clone(),
         rows: Vec::new(),
+        iterated: Vec::new(),
         error: None,
     };
     let pair = subdominant_pair(spec);
@@ -272,6 +295,7 @@ pub fn chart_of_analysis(scheme: &dyn Scheme, analysis: &Analysis, opts: &ChartO
         z
     };
 
+    let fourier = FourierParts::new(&spec.synthesis);
     for &theta in &thetas {
         let (s, c) = theta.to_radians().sin_cos();
         let za: Vec<f64> = unit.iter().map(|p| (p[0] * c + p[1] * s).powi(2)).collect();
@@ -289,6 +313,28 @@ pub fn chart_of_analysis(scheme: &dyn Scheme, analysis: &Analysis, opts: &ChartO
             xa = dense.apply(&xa).iter().map(|v| v / lam2).collect();
             xb = dense.apply(&xb).iter().map(|v| v / lam2).collect();
         }
+        // the second route: deflated iteration of each Fourier part of the
+        // input (blocks 0 and ±2, [`FourierParts`]) on its own, the affine
+        // part and anything outside the part's blocks removed after every
+        // step: rounding left there would otherwise grow like λ^(-m) or like
+        // a larger block's eigenvalue, and swamp h_m at large m
+        let iterated: Vec<[Vec<f64>; 4]> = match opts.iterated {
+            None => Vec::new(),
+            Some((m1, m2)) => {
+                let mut x = [fourier.part(&za, 0), fourier.part(&zb, 0), fourier.part(&za, 2), fourier.part(&zb, 2)];
+                let mut at = Vec::new();
+                for m in 1..=m2 {
+                    for (i, v) in x.iter_mut().enumerate() {
+                        let next = remove_affine(&dense.apply(v).iter().map(|y| y / lam2).collect::<Vec<_>>());
+                        *v = fourier.part(&next, if i < 2 { 0 } else { 2 });
+                    }
+                    if m == m1 || m == m2 {
+                        at.push(x.clone());
+                    }
+                }
+                at
+            }
+        };
         // the central shape of each t
         let mut central: Vec<Option<Central>> = vec![None; opts.ts.len()];
         let mut components: Vec<Option<(Vec<c64>, Vec<c64>)>> = (0..below.len()).map(|_| None).collect();
@@ -353,9 +399,116 @@ pub fn chart_of_analysis(scheme: &dyn Scheme, analysis: &Analysis, opts: &ChartO
                 row(m.to_string(), Some(&h));
             }
             row("inf".into(), cs.as_ref().map(|c| c.shape.as_slice()));
+            if let (Some((m1, m2)), [x1, x2]) = (opts.iterated, iterated.as_slice()) {
+                // the input's block-±2 part, when it has one (at t = 1 on a
+                // symmetric net, x² + y², it has none: only rounding)
+                let block2 = fourier
+                    .part(&za, 2)
+                    .iter()
+                    .zip(fourier.part(&zb, 2))
+                    .map(|(a, b)| (a + t * b).abs())
+                    .fold(0.0, f64::max)
+                    > tol;
+                let h = |x: &[Vec<f64>; 4]| -> Vec<f64> {
+                    (0..x[0].len())
+                        .map(|i| x[0][i] + t * x[1][i] + if block2 { x[2][i] + t * x[3][i] } else { 0.0 })
+                        .collect()
+                };
+                let (h1, h2) = (h(x1), h(x2));
+                let rate = (ring.curved_size(&h2) / ring.curved_size(&h1)).powf(1.0 / (m2 - m1) as f64);
+                let sign_fraction = ring.sign_fraction(&h2, sign);
+                let (residual, _) = ring.residual(&h2, q);
+                let category = if rate < 1.0 - classify::RATE_TOL {
+                    Category::Flat
+                } else {
+                    classify::categorise(t, false, g, jordan, sign_fraction, residual)
+                };
+                out.iterated.push(Iterated {
+                    t,
+                    theta_degrees: theta,
+                    steps: (m1, m2),
+                    rate,
+                    sign_fraction,
+                    residual,
+                    category,
+                });
+            }
         }
     }
     Ok(out)
+}
+
+/// The parts of a vector in the Fourier blocks ±k of a rotation-symmetric
+/// configuration, from the rotation by one sector itself (a permutation of
+/// the matrix indices read from the orbits), not from the blocks'
+/// eigenvectors: P_±k x = (1/g) Σ_r c_k(r) R^r x with c_k(r) = 2 cos(2πkr/g)
+/// (one cos where k ≡ −k). Without symmetry (g = 1) every part is x.
+struct FourierParts {
+    group_order: usize,
+    /// index i goes to rotate[i] under the rotation by one sector
+    rotate: Vec<usize>,
+}
+
+impl FourierParts {
+    fn new(synthesis: &Synthesis) -> FourierParts {
+        let Synthesis::Dft { orbits, .. } = synthesis else {
+            return FourierParts { group_order: 1, rotate: Vec::new() };
+        };
+        let g = orbits.group_order.max(1);
+        let mut at = std::collections::HashMap::new();
+        for (i, &(o, t)) in orbits.member.iter().enumerate() {
+            at.insert((o, t), i);
+        }
+        let rotate = orbits
+            .member
+            .iter()
+            .enumerate()
+            .map(|(i, &(o, t))| if orbits.fixed[o] { i } else { at.get(&(o, (t + 1) % g)).copied().unwrap_or(i) })
+            .collect();
+        FourierParts { group_order: g, rotate }
+    }
+
+    fn part(&self, x: &[f64], k: usize) -> Vec<f64> {
+        let g = self.group_order;
+        if g == 1 {
+            return x.to_vec();
+        }
+        let k = k % g;
+        let single = (2 * k) % g == 0;
+        let mut out = vec![0.0; x.len()];
+        let mut r_x = x.to_vec();
+        for r in 0..g {
+            let c = (2.0 * std::f64::consts::PI * (k * r) as f64 / g as f64).cos() * if single { 1.0 } else { 2.0 };
+            for (o, v) in out.iter_mut().zip(&r_x) {
+                *o += c * v / g as f64;
+            }
+            let mut next = vec![0.0; x.len()];
+            for (i, &j) in self.rotate.iter().enumerate() {
+                next[j] = r_x[i];
+            }
+            r_x = next;
+        }
+        out
+    }
+}
+
+/// The second route to one input's central shape: h_m2 of the deflated
+/// iteration h_(m+1) = (I − P_affine) S h_m / λ² (no eigenvector of ν*
+/// enters), its categories measured as the central shape's are, and the
+/// growth rate of its non-affine part, an estimate of g = |ν*|/λ² (a Jordan
+/// chain adds the factor (m2/m1)^(j/(m2−m1))). Flat when the rate is below
+/// 1 − [`classify::RATE_TOL`].
+#[derive(Clone, Debug, Serialize)]
+pub struct Iterated {
+    pub t: f64,
+    pub theta_degrees: f64,
+    pub steps: (usize, usize),
+    /// (‖h_m2‖ / ‖h_m1‖)^(1/(m2 − m1)), ‖·‖ the size of the ring values
+    /// left after the best affine fit
+    pub rate: f64,
+    pub sign_fraction: f64,
+    pub residual: f64,
+    pub category: Category,
 }
 
 #[derive(Clone)]

@@ -13,6 +13,7 @@
 //! tests/negative_controls.rs).
 
 pub mod builtin;
+pub mod central_shape;
 pub mod characteristic_map;
 pub mod curvature;
 pub mod eigenvalues;
@@ -98,6 +99,7 @@ check_kinds! {
     "characteristic-map" => CharacteristicMap(characteristic_map::CharacteristicMap),
     "spectral-c1" => SpectralC1(spectral_c1::SpectralC1),
     "curvature" => Curvature(curvature::CurvatureCheck),
+    "central-shape" => CentralShape(central_shape::CentralShapeCheck),
     "identity" => Identity(identity::Identity),
     "matrix-eigenvalues" => MatrixEigenvalues(matrix_eigenvalues::MatrixEigenvalues),
     "lattice-matrix" => LatticeMatrix(lattice_matrix::LatticeMatrix),
