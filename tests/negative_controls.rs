@@ -531,3 +531,36 @@ fn nonnegative_weights_range_needs_affine_weights() {
     assert!(o.detail.contains("only if: not decided (S not affine in t"), "{}", o.detail);
     assert!(o.detail.contains("at t = 1/2 is 3/4, off the line 1 - t"), "{}", o.detail);
 }
+
+/// The `central-shape` kind. Catmull–Clark at n = 4 is the bicubic
+/// B-spline, which reproduces quadratics: every input's central shape is
+/// the input (correct), and none is flat (λ = 1/2 and the quadratics'
+/// eigenvalue 1/4 = λ², so the curvature neither fades nor grows).
+/// Doo–Sabin's central face has the eigenvalues 1, 1/2 and 1/4 (Doo–Sabin
+/// 1978) and λ = 1/2, so at n = 5 the quadratics' part sits at 1/4 = λ²
+/// (g = 1) and no convex input comes out flat: the statement "some convex
+/// input is flat" is false.
+#[test]
+fn central_shape() {
+    holds("check = \"central-shape\"\nscheme = \"catmull-clark\"\nvalences = [4]\nt = [-1, 0.5, 1]\nshape = \"correct\"\n");
+    refuted(
+        "check = \"central-shape\"\nscheme = \"catmull-clark\"\nvalences = [4]\nt = [0.5, 1]\nshape = \"flat\"\nquantifier = \"some\"\n",
+        "none of the",
+    );
+    refuted(
+        "check = \"central-shape\"\nscheme = \"doo-sabin\"\nvalences = [5]\nt = [0.5, 1]\nshape = \"flat\"\nquantifier = \"some\"\n",
+        "g = 1",
+    );
+    holds("check = \"central-shape\"\nscheme = \"doo-sabin\"\nvalences = [5]\nt = [0.5, 1]\nshape = [\"correct\", \"right-sign\", \"mixed-sign\", \"wrong-sign\"]\n");
+    // a claim that asserts nothing, or names no category, is an ERROR
+    for bad in [
+        "t = []\nshape = \"flat\"\n",
+        "t = [1]\nshape = []\n",
+        "t = [1]\nshape = \"convex\"\n",
+        "t = [1]\nshape = \"flat\"\nquantifier = \"most\"\n",
+        "t = [2]\nshape = \"flat\"\n",
+    ] {
+        let o = run(&format!("check = \"central-shape\"\nscheme = \"doo-sabin\"\nvalences = [5]\n{bad}"));
+        assert_eq!(o.verdict, Verdict::Error, "{bad}: {}", o.detail);
+    }
+}

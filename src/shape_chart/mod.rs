@@ -451,9 +451,13 @@ struct FourierParts {
 
 impl FourierParts {
     fn new(synthesis: &Synthesis) -> FourierParts {
-        let Synthesis::Dft { orbits, .. } = synthesis else {
-            return FourierParts { group_order: 1, rotate: Vec::new() };
-        };
+        match synthesis {
+            Synthesis::Dft { orbits, .. } => FourierParts::of(orbits),
+            _ => FourierParts { group_order: 1, rotate: Vec::new() },
+        }
+    }
+
+    fn of(orbits: &crate::dft::blocks::Orbits) -> FourierParts {
         let g = orbits.group_order.max(1);
         let mut at = std::collections::HashMap::new();
         for (i, &(o, t)) in orbits.member.iter().enumerate() {
@@ -620,4 +624,38 @@ pub fn panels(steps: &[usize]) -> Vec<String> {
     }
     out.push("inf".into());
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::dft::blocks::Orbits;
+
+    /// A centre fixed by the rotation and one orbit of four points: the
+    /// parts of blocks 0, ±1 and 2 add up to x, block 0 is the average over
+    /// the rotations, and a rotation-invariant x has no other part.
+    #[test]
+    fn fourier_parts_split_a_vector() {
+        let orbits = Orbits {
+            group_order: 4,
+            member: vec![(0, 0), (1, 0), (1, 1), (1, 2), (1, 3)],
+            representative: vec![0, 1],
+            fixed: vec![true, false],
+        };
+        let f = FourierParts::of(&orbits);
+        let x = [5.0, 1.0, 2.0, 4.0, 8.0];
+        let (p0, p1, p2) = (f.part(&x, 0), f.part(&x, 1), f.part(&x, 2));
+        for i in 0..5 {
+            approx::assert_abs_diff_eq!(p0[i] + p1[i] + p2[i], x[i], epsilon = 1e-12);
+        }
+        approx::assert_abs_diff_eq!(p0[0], 5.0, epsilon = 1e-12);
+        for v in &p0[1..] {
+            approx::assert_abs_diff_eq!(*v, 15.0 / 4.0, epsilon = 1e-12);
+        }
+        // block 2 of four points: the alternating pattern (1 − 2 + 4 − 8)/4 · (1, −1, 1, −1)
+        approx::assert_abs_diff_eq!(p2[1], -5.0 / 4.0, epsilon = 1e-12);
+        approx::assert_abs_diff_eq!(p2[2], 5.0 / 4.0, epsilon = 1e-12);
+        let invariant = [1.0, 3.0, 3.0, 3.0, 3.0];
+        assert!(f.part(&invariant, 1).iter().chain(&f.part(&invariant, 2)).all(|v| v.abs() < 1e-12));
+    }
 }
