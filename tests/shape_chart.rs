@@ -115,6 +115,41 @@ fn catmull_clark_three_is_flat_at_the_centre() {
     }
 }
 
+/// The second route (deflated iteration, `ChartOptions::iterated`) reads
+/// the same g from growth alone: on CC its rate (‖h_96‖/‖h_48‖)^(1/48) is
+/// the closed-form ν*/λ² of the tests above — μ0/λ² < 1 at n = 3 (flat) and
+/// μ2/λ² > 1 at n = 5 for inputs with a block-2 part (t < 1), μ0/λ² for
+/// x² + y² (t = 1, no block-2 part: the restriction to the input's Fourier
+/// blocks keeps rounding from seeding the larger μ2).
+#[test]
+fn the_iterated_route_grows_like_the_closed_form_g() {
+    for n in [3, 5] {
+        let s = schemes::build("catmull-clark", &[]).unwrap();
+        let config = Configuration::regular(s.as_ref(), n).unwrap();
+        let opts =
+            ChartOptions { ts: vec![-1.0, 0.5, 1.0], thetas: 2, steps: vec![], iterated: Some((48, 96)), ..options() };
+        let c = chart(s.as_ref(), &config, &opts).unwrap();
+        let k = cc(n);
+        let l2 = k.lambda * k.lambda;
+        assert_eq!(c.iterated.len(), 6);
+        for it in &c.iterated {
+            let want = if n == 3 {
+                (if it.t == -1.0 { k.mu2 } else { k.mu0 }) / l2
+            } else if it.t == 1.0 {
+                k.mu0 / l2
+            } else {
+                k.mu2 / l2
+            };
+            assert!((it.rate - want).abs() < 1e-3 * want, "n = {n} t = {}: rate {} against g = {want}", it.t, it.rate);
+            if n == 3 {
+                assert_eq!(it.category, Category::Flat, "{it:?}");
+            } else {
+                assert_ne!(it.category, Category::Flat, "{it:?}");
+            }
+        }
+    }
+}
+
 /// CC n ≥ 5: the block-2 root exceeds the block-0 root, which exceeds λ²
 /// (μ2 > μ0 > λ²). Every input with a block-2 part (t < 1) has the block-2
 /// eigenfunction alone as its central shape — a frequency-2 height, a saddle
