@@ -4,6 +4,8 @@
 pub mod lattice;
 pub mod obj;
 pub mod polymesh;
+pub mod tags;
 
 pub use lattice::{Chart, LatticeCoord, SectorKind};
 pub use polymesh::{FaceId, IdMap, IdSet, PolyMesh, VertexId};
+pub use tags::{Tags, VertexTag};

@@ -10,6 +10,7 @@ use std::hash::{BuildHasherDefault, Hasher};
 use std::sync::OnceLock;
 
 use super::lattice::Chart;
+use super::tags::{Tags, VertexTag};
 use crate::error::Error;
 
 pub type VertexId = usize;
@@ -190,6 +191,9 @@ pub struct PolyMesh {
     /// per quad, the lattice direction of its first edge (corner 0 → 1) as
     /// 0 = +i, 1 = +j, 2 = −i, 3 = −j; edge k then has direction (d + k) mod 4.
     pub lattice_dirs: Option<Vec<u8>>,
+    /// Boundary, crease and corner tags (`mesh::tags`); `None`: an open edge
+    /// is where a patch was cut off, not a boundary.
+    pub tags: Option<Tags>,
 }
 
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -271,6 +275,7 @@ impl PolyMesh {
             face_points: Vec::new(),
             vertex_params: None,
             lattice_dirs: None,
+            tags: None,
         })
     }
 
@@ -388,6 +393,7 @@ impl PolyMesh {
         }
         m.lattice_dirs = self.lattice_dirs.as_ref().map(|d| keep.iter().map(|&f| d[f]).collect());
         m.vertex_params = self.vertex_params.as_ref().map(|p| old.iter().map(|&v| p[v]).collect());
+        m.tags = self.tags.as_ref().map(|t| t.renumbered(&old));
         m.chart = self.chart.as_ref().map(|c| Chart {
             sector_kinds: c.sector_kinds.clone(),
             scale: c.scale,
@@ -409,6 +415,7 @@ impl PolyMesh {
         }
         m.lattice_dirs = self.lattice_dirs.as_ref().map(|d| keep.iter().map(|&f| d[f]).collect());
         m.vertex_params = self.vertex_params.clone();
+        m.tags = self.tags.clone();
         m.chart = self.chart.as_ref().map(|c| Chart {
             sector_kinds: c.sector_kinds.clone(),
             scale: c.scale,
@@ -539,5 +546,57 @@ impl PolyMesh {
             }
         }
         out
+    }
+}
+
+impl PolyMesh {
+    // Tags (`mesh::tags`): boundaries, creases, corners.
+
+    /// Tag every open edge sharp (a real open mesh: its open edges are its
+    /// boundary), keeping tags already there.
+    pub fn tag_open_edges(&mut self) {
+        let open: Vec<(VertexId, VertexId)> =
+            self.edges().into_iter().filter(|&(a, b)| !self.is_interior_edge(a, b)).collect();
+        let tags = self.tags.get_or_insert_with(Tags::new);
+        for (a, b) in open {
+            tags.mark_sharp(a, b);
+        }
+    }
+
+    /// Whether the edge {a, b} is tagged sharp (never on an untagged mesh).
+    pub fn is_sharp(&self, a: VertexId, b: VertexId) -> bool {
+        self.tags.as_ref().is_some_and(|t| t.is_sharp(a, b))
+    }
+
+    /// The neighbours of `v` across sharp edges, in the order the faces
+    /// around v first meet them (each once).
+    pub fn sharp_neighbours(&self, v: VertexId) -> Vec<VertexId> {
+        let Some(tags) = self.tags.as_ref() else { return Vec::new() };
+        let mut out = Vec::new();
+        for face in self.faces() {
+            if let Some(k) = face.iter().position(|&c| c == v) {
+                let m = face.len();
+                for w in [face[(k + 1) % m], face[(k + m - 1) % m]] {
+                    if tags.is_sharp(v, w) && !out.contains(&w) {
+                        out.push(w);
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// The kind of vertex `v` for the vertex rules (`Smooth` on an untagged mesh).
+    pub fn vertex_tag(&self, v: VertexId) -> VertexTag {
+        let Some(tags) = self.tags.as_ref() else { return VertexTag::Smooth };
+        if tags.is_corner(v) {
+            return VertexTag::Corner;
+        }
+        match self.sharp_neighbours(v)[..] {
+            [] => VertexTag::Smooth,
+            [_] => VertexTag::Dart,
+            [a, b] => VertexTag::Crease(a, b),
+            _ => VertexTag::Corner,
+        }
     }
 }
