@@ -96,6 +96,12 @@ pub struct SchemeArgs {
     pub valence: usize,
     #[command(flatten)]
     pub setup: SchemeSetup,
+    /// a tagged vertex instead of an interior one (schemes with crease
+    /// rules): boundary (the valence counts the faces of the open fan, from
+    /// 1), corner (the same, the centre kept in place), crease:K (sharp rays
+    /// at sectors 0 and K of a closed fan) or dart (one sharp ray)
+    #[arg(long)]
+    pub tag: Option<String>,
 }
 
 /// The scheme's parameters and the faces around the centre: shared by

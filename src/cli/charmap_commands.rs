@@ -174,6 +174,7 @@ pub fn charmap(a: &CharmapArgs, scheme: Box<dyn Scheme>) -> Result<i32, Error> {
     check_flags(a)?;
     let style = a.figure.style()?;
     let config = super::commands::configuration(scheme.as_ref(), &a.config)?;
+    super::commands::refuse_tagged("charmap", &config)?;
     let levels = a.levels.unwrap_or_else(|| crate::charmap::default_levels(scheme.as_ref()));
     let opts = CharMapOptions {
         levels,

@@ -6,7 +6,7 @@ use std::collections::BTreeMap;
 
 use crate::cli::args::SchemeArgs;
 use crate::error::Error;
-use crate::neighbourhood::{Configuration, NeighbourhoodKind};
+use crate::neighbourhood::{Configuration, NeighbourhoodKind, Tagging};
 use crate::schemes::Scheme;
 use crate::spectrum::{Method, Spectrum};
 
@@ -56,9 +56,25 @@ pub(super) fn parse_params(list: &[String]) -> Result<Vec<(String, String)>, Err
 /// valence (regular, or the `--faces` sequence), as every analysis command
 /// reads them.
 pub(super) fn configuration(scheme: &dyn Scheme, a: &SchemeArgs) -> Result<Configuration, Error> {
-    match a.setup.faces.as_deref() {
-        None => Configuration::regular(scheme, a.valence),
-        Some(faces) => Configuration::with_faces(scheme, a.valence, faces),
+    match (a.tag.as_deref(), a.setup.faces.as_deref()) {
+        (Some(tag), faces) => Configuration::tagged(scheme, a.valence, faces, Tagging::parse(tag)?),
+        (None, None) => Configuration::regular(scheme, a.valence),
+        (None, Some(faces)) => Configuration::with_faces(scheme, a.valence, faces),
+    }
+}
+
+/// The one-line refusal of an analysis that is not available at a tagged
+/// vertex yet (`--tag`): the characteristic map, curvature and proofs use
+/// the interior criteria (Reif's), and the sector criteria of a boundary,
+/// crease or corner vertex (Zorin; Biermann–Levin–Zorin) are not built.
+pub(super) fn refuse_tagged(command: &str, config: &Configuration) -> Result<(), Error> {
+    match config.tagging {
+        None => Ok(()),
+        Some(t) => Err(Error::Input(format!(
+            "{command} --tag {}: not available at tagged vertices yet (the sector criteria of boundary, \
+             crease and corner vertices are not implemented); spectrum, stencils and matrix accept --tag",
+            t.name()
+        ))),
     }
 }
 
@@ -89,8 +105,12 @@ pub(super) fn unused_centre_weight(scheme: &str, params: &BTreeMap<String, Strin
 pub(super) fn spectrum_table(s: &Spectrum) -> String {
     let mut out = String::new();
     out += &format!(
-        "scheme {}  valence {}  faces {}  neighbourhood {} ({} vertices; minimal {}, analysis {})\n",
+        "scheme {}  {} {}  faces {}  neighbourhood {} ({} vertices; minimal {}, analysis {})\n",
         s.scheme,
+        match &s.tagging {
+            None => "valence".to_string(),
+            Some(t) => format!("{t} vertex, sectors"),
+        },
         s.valence,
         short_faces(&s.faces),
         kind_name(s.neighbourhood),
@@ -142,7 +162,11 @@ pub(super) fn spectrum_table(s: &Spectrum) -> String {
             if x.agrees_with_float { "" } else { "  (DISAGREES with floating point multiplicities)" }
         );
     }
-    out += &format!("\nReif spectral C1 criterion: {}\n", if s.verdict.c1_spectral { "PASSES" } else { "FAILS" });
+    let criterion = match s.verdict.criterion {
+        "sector" => "Spectral part of the C1 criterion at a tagged vertex (Zorin 2000)",
+        _ => "Reif spectral C1 criterion",
+    };
+    out += &format!("\n{criterion}: {}\n", if s.verdict.c1_spectral { "PASSES" } else { "FAILS" });
     for r in &s.verdict.reasons {
         out += &format!("  - {r}\n");
     }

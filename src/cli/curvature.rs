@@ -82,6 +82,7 @@ pub fn run(a: &CurvatureArgs, scheme: Box<dyn crate::schemes::Scheme>) -> Result
     let kind = figure_kind(a)?;
     let style = a.style.style()?;
     let config = super::commands::configuration(scheme.as_ref(), &a.config)?;
+    super::commands::refuse_tagged("curvature", &config)?;
     let opts = CurvatureOptions {
         levels: a.levels,
         figures: a.out.is_some(),

@@ -94,7 +94,7 @@ fn run_analysis(a: &AnalysisArgs, scheme: Box<dyn Scheme>) -> Result<(Box<dyn Sc
         Some("full") => Some(Method::Full),
         Some(m) => return Err(Error::Input(format!("unknown method '{m}'; use dft or full"))),
     };
-    if method == Some(Method::Dft) && config.symmetry_period() == config.valence() {
+    if method == Some(Method::Dft) && config.symmetry_period() >= config.valence() {
         return Err(Error::Input("this configuration has no rotation symmetry; use --method full".into()));
     }
     let opts = Options { neighbourhood, method, exact: !a.no_exact };
@@ -112,6 +112,7 @@ fn certified_spectrum(
     document: Option<&std::path::Path>,
 ) -> Result<i32, Error> {
     let (scheme, analysis) = run_analysis(a, scheme)?;
+    super::commands::refuse_tagged("spectrum --certify", &analysis.discovered.config)?;
     let certificate = crate::certify::certify_analysis(scheme.as_ref(), &analysis)?;
     if let Some(path) = document {
         crate::certify::export::write_spectrum(path, scheme.as_ref(), &analysis, &certificate)?;

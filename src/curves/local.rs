@@ -181,6 +181,7 @@ pub fn curve_spectrum(scheme: &dyn CurveScheme, kind: NeighbourhoodKind) -> Resu
     let params: BTreeMap<String, String> =
         scheme.params().values.iter().map(|(k, v)| (k.clone(), v.text.clone())).collect();
     let identity = Identity {
+        tagging: None,
         scheme: scheme.name().to_string(),
         valence: 2,
         params: params.clone(),

@@ -84,6 +84,7 @@ pub fn analyse(scheme: &dyn LatticeScheme, kind: NeighbourhoodKind, exact: bool)
         exact: Some(to_local::<Rational>(scheme, &window, kind)?),
     };
     let identity = Identity {
+        tagging: None,
         scheme: scheme.name().to_string(),
         valence: 4,
         params: scheme.params().values.iter().map(|(k, v)| (k.clone(), v.text.clone())).collect(),

@@ -11,8 +11,8 @@
 
 use crate::mesh::IdMap;
 
-use super::configuration::Configuration;
-use crate::mesh::{Chart, LatticeCoord, PolyMesh, SectorKind};
+use super::configuration::{Configuration, Tagging};
+use crate::mesh::{Chart, LatticeCoord, PolyMesh, SectorKind, Tags};
 use crate::sdc::CentreKind;
 
 struct PatchBuilder {
@@ -46,13 +46,14 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
     let r = rings as i64;
     // lattice points are doubled when FCVs sit at face centres
     let k: i64 = if config.face_control { 2 } else { 1 };
+    // an open (boundary or corner) fan gets one empty chart sector after its
+    // last, so that its last ray is not sector 0's (`Configuration::chart_sectors`)
+    let mut sector_kinds = config.sectors.clone();
+    if config.tagging.is_some_and(|t| t.is_open()) {
+        sector_kinds.push(*config.sectors.last().expect("a configuration has a sector"));
+    }
     let mut b = PatchBuilder {
-        chart: Chart {
-            sector_kinds: config.sectors.clone(),
-            scale: k,
-            vertex_coords: Vec::new(),
-            face_sector: Vec::new(),
-        },
+        chart: Chart { sector_kinds, scale: k, vertex_coords: Vec::new(), face_sector: Vec::new() },
         ids: IdMap::default(),
         faces: Vec::new(),
     };
@@ -125,6 +126,7 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
             fcv.push(b.vertex(s, si / 4, sj / 4));
         }
     }
+    let tags = config.tagging.map(|t| ray_tags(&b, t, n, rings as i64));
     let mut mesh = PolyMesh::new(b.chart.vertex_coords.len(), b.faces).expect("patch is a manifold disc");
     if config.face_control {
         mesh = mesh.with_face_points(fcv.into_iter().map(Some).collect()).expect("one FCV per face");
@@ -134,6 +136,28 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
         centres[0] = centre_set.last().copied();
         mesh = mesh.with_face_points(centres).expect("the centre is a vertex of no face");
     }
+    mesh.tags = tags;
     mesh.chart = Some(b.chart);
     (mesh, centre_set)
+}
+
+/// The tags of a tagged configuration's patch: its sharp rays (the edges
+/// from the centre out along the i-axis of each sharp sector, as far as the
+/// patch reaches) and, at a corner, the centre. The patch's outer rim stays
+/// untagged: it is where the patch was cut off, not a boundary.
+fn ray_tags(b: &PatchBuilder, tagging: Tagging, n: usize, rings: i64) -> Tags {
+    let mut tags = Tags::new();
+    for s in tagging.sharp_rays(n) {
+        let at = |i: i64| b.chart.canonical(s, i, 0).and_then(|c| b.ids.get(&c).copied());
+        for i in 0..rings {
+            if let (Some(p), Some(q)) = (at(i), at(i + 1)) {
+                tags.mark_sharp(p, q);
+            }
+        }
+    }
+    if tagging == Tagging::Corner {
+        let centre = b.ids[&LatticeCoord::CENTRE];
+        tags.mark_corner(centre);
+    }
+    tags
 }

@@ -319,6 +319,7 @@ pub fn bytes_per_sector(scheme: &dyn Scheme) -> f64 {
         centre: scheme.centre_kind(),
         sectors: vec![scheme.sector_kind(); PROBE_VALENCE],
         face_control: scheme.face_control(),
+        tagging: None,
     };
     match discover_shared(scheme, &probe) {
         Ok(d) => {

@@ -9,6 +9,6 @@ pub mod labels;
 pub mod valence_limit;
 
 pub use builder::build_patch;
-pub use configuration::Configuration;
+pub use configuration::{Configuration, Tagging};
 pub use discovery::{discover, discover_shared, discover_with_rings, Discovered, NeighbourhoodKind};
 pub use labels::{VertexKind, VertexLabel};

@@ -4,10 +4,10 @@
 //! scheme's neighbourhood at a small valence (`discovery::bytes_per_sector`),
 //! so this sits above both `configuration` and `discovery`.
 
-use super::configuration::{check_valence, Configuration, MAX_VALENCE};
+use super::configuration::{check_tagged, check_valence, Configuration, Tagging, MAX_VALENCE};
 use crate::error::Error;
 use crate::mesh::SectorKind;
-use crate::sdc::Scheme;
+use crate::sdc::{CentreKind, Scheme};
 
 /// Valences up to this are accepted without an estimate: every built-in
 /// scheme needs under 100 MB there (README, "Every analysis command"), and
@@ -29,6 +29,7 @@ impl Configuration {
             centre: scheme.centre_kind(),
             sectors: vec![scheme.sector_kind(); n],
             face_control: scheme.face_control(),
+            tagging: None,
         })
     }
 
@@ -37,36 +38,63 @@ impl Configuration {
     /// that accept face sequences (4-3 subdivision).
     pub fn with_faces(scheme: &dyn Scheme, n: usize, faces: &str) -> Result<Self, Error> {
         check_valence_for(scheme, n)?;
-        if !scheme.face_sequences() {
-            return Err(Error::Input(format!(
-                "scheme '{}' takes no --faces: its configurations are all {}",
-                scheme.name(),
-                match scheme.sector_kind() {
-                    SectorKind::Quad => "quads",
-                    SectorKind::Tri => "triangles",
-                }
-            )));
-        }
-        let sectors = faces
-            .chars()
-            .enumerate()
-            .map(|(k, c)| match c {
-                'Q' => Ok(SectorKind::Quad),
-                'T' => Ok(SectorKind::Tri),
-                _ => Err(Error::Input(format!(
-                    "--faces '{faces}': character {} ('{c}') is neither Q (quad) nor T (triangle)",
-                    k + 1
-                ))),
-            })
-            .collect::<Result<Vec<_>, _>>()?;
-        if sectors.len() != n {
-            return Err(Error::Input(format!(
-                "--faces '{faces}' has {} letters but the valence is {n}",
-                sectors.len()
-            )));
-        }
-        Ok(Configuration { centre: scheme.centre_kind(), sectors, face_control: scheme.face_control() })
+        let sectors = parse_faces(scheme, n, faces)?;
+        Ok(Configuration { centre: scheme.centre_kind(), sectors, face_control: scheme.face_control(), tagging: None })
     }
+
+    /// The configuration of a tagged vertex (`--tag`): k sectors of a
+    /// boundary or corner vertex (an open fan, k >= 1), or n sectors around
+    /// a crease or dart, all of the scheme's face kind or as `faces` lists
+    /// them. The scheme's rules must have crease and corner rules, and its
+    /// refinement must carry tags (the discovery says so where they do not).
+    pub fn tagged(scheme: &dyn Scheme, n: usize, faces: Option<&str>, tagging: Tagging) -> Result<Self, Error> {
+        check_tagged(n, tagging)?;
+        if scheme.centre_kind() != CentreKind::Vertex || scheme.face_control() {
+            return Err(Error::Input(format!(
+                "--tag {}: tagged configurations are vertex-centred, but {} is {}",
+                tagging.name(),
+                scheme.name(),
+                if scheme.face_control() { "a face-control-vertex scheme" } else { "centred on a face or a pole" }
+            )));
+        }
+        let sectors = match faces {
+            Some(f) => parse_faces(scheme, n, f)?,
+            None => vec![scheme.sector_kind(); n],
+        };
+        check_memory_for(scheme, n)?;
+        Ok(Configuration { centre: CentreKind::Vertex, sectors, face_control: false, tagging: Some(tagging) })
+    }
+}
+
+/// The sectors of a `--faces` sequence of `n` letters (Q a quad, T a
+/// triangle), for schemes that accept face sequences (4-3 subdivision).
+fn parse_faces(scheme: &dyn Scheme, n: usize, faces: &str) -> Result<Vec<SectorKind>, Error> {
+    if !scheme.face_sequences() {
+        return Err(Error::Input(format!(
+            "scheme '{}' takes no --faces: its configurations are all {}",
+            scheme.name(),
+            match scheme.sector_kind() {
+                SectorKind::Quad => "quads",
+                SectorKind::Tri => "triangles",
+            }
+        )));
+    }
+    let sectors: Vec<SectorKind> = faces
+        .chars()
+        .enumerate()
+        .map(|(k, c)| match c {
+            'Q' => Ok(SectorKind::Quad),
+            'T' => Ok(SectorKind::Tri),
+            _ => Err(Error::Input(format!(
+                "--faces '{faces}': character {} ('{c}') is neither Q (quad) nor T (triangle)",
+                k + 1
+            ))),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    if sectors.len() != n {
+        return Err(Error::Input(format!("--faces '{faces}' has {} letters but the valence is {n}", sectors.len())));
+    }
+    Ok(sectors)
 }
 
 /// [`check_valence`] and the memory the analysis of `scheme` at valence `n`
@@ -80,6 +108,12 @@ impl Configuration {
 /// `Configuration::with_faces`).
 pub fn check_valence_for(scheme: &dyn Scheme, n: usize) -> Result<(), Error> {
     check_valence(n)?;
+    check_memory_for(scheme, n)
+}
+
+/// The memory part of [`check_valence_for`], for `n` sectors of any
+/// configuration (tagged ones have their own lower bound on n).
+fn check_memory_for(scheme: &dyn Scheme, n: usize) -> Result<(), Error> {
     if n <= UNESTIMATED_VALENCE {
         return Ok(());
     }

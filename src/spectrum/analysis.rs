@@ -100,10 +100,13 @@ pub fn analyse(scheme: &dyn Scheme, config: &Configuration, opts: &Options) -> R
             neighbourhood: kind,
             minimal_size: discovered.minimal.len(),
             analysis_size: discovered.analysis.len(),
+            tagging: config.tagging.map(|t| t.name()),
         },
         labels: set_labels(&discovered, kind),
         period: config.rotation_period(scheme),
-        sectors: n,
+        // the chart's sectors: a tagged configuration's period is all of
+        // them (an open fan has one empty sector more than its valence)
+        sectors: config.chart_sectors(),
         method: opts.method,
         exact: opts.exact,
         candidates: exact::Candidates::Recognised,

@@ -84,6 +84,9 @@ pub struct Identity {
     pub neighbourhood: NeighbourhoodKind,
     pub minimal_size: usize,
     pub analysis_size: usize,
+    /// the tagging of a tagged vertex (`neighbourhood::Tagging::name`),
+    /// whose spectral criterion is the sector one (`verdict::sector`)
+    pub tagging: Option<String>,
 }
 
 /// One local eigenproblem, whatever its domain.
@@ -186,8 +189,11 @@ pub fn solve(p: Problem) -> Result<Solved, Error> {
             None => (None, None),
         }
     };
-    let verdict = verdict::reif(&eigenvalues);
     let id = p.identity;
+    let verdict = match id.tagging {
+        None => verdict::reif(&eigenvalues),
+        Some(_) => verdict::sector(&eigenvalues),
+    };
     let spectrum = Spectrum {
         scheme: id.scheme,
         valence: id.valence,
@@ -198,6 +204,7 @@ pub fn solve(p: Problem) -> Result<Solved, Error> {
         matrix_size: size,
         minimal_size: id.minimal_size,
         analysis_size: id.analysis_size,
+        tagging: id.tagging,
         method,
         blocks,
         eigenvalues,

@@ -59,6 +59,9 @@ pub struct Spectrum {
     pub matrix_size: usize,
     pub minimal_size: usize,
     pub analysis_size: usize,
+    /// the tagging of a tagged vertex (`--tag`); absent for interior points
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tagging: Option<String>,
     pub method: Method,
     pub blocks: Vec<BlockInfo>,
     pub eigenvalues: Vec<Eigenvalue>,

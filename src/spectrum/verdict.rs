@@ -10,6 +10,9 @@ const TOL: f64 = 1e-9;
 
 #[derive(Clone, Debug, Serialize)]
 pub struct Verdict {
+    /// which criterion: "reif" (an interior point: λ1 = λ2 double) or
+    /// "sector" (a tagged vertex: see [`sector`])
+    pub criterion: &'static str,
     pub c1_spectral: bool,
     /// λ0 = 1 simple and strictly dominant: the spectral condition for the
     /// scheme to converge at the extraordinary point
@@ -25,10 +28,29 @@ pub struct Verdict {
     pub lambda3_over_lambda1_squared: Option<f64>,
 }
 
+/// λ0 = 1 and simple (the first eigenvalue, by modulus), with the reason.
+fn dominant_one(eigs: &[Eigenvalue], reasons: &mut Vec<String>) -> bool {
+    let Some(l0) = eigs.first() else {
+        reasons.push("empty spectrum".into());
+        return false;
+    };
+    if (l0.re - 1.0).abs() > TOL || l0.im.abs() > TOL {
+        reasons.push(format!("dominant eigenvalue is {} (modulus {:.6}), not 1", l0.display(), l0.modulus));
+        false
+    } else if l0.algebraic_multiplicity != 1 {
+        reasons.push(format!("eigenvalue 1 has multiplicity {}, not 1", l0.algebraic_multiplicity));
+        false
+    } else {
+        reasons.push("λ0 = 1 is simple".into());
+        true
+    }
+}
+
 pub fn reif(eigs: &[Eigenvalue]) -> Verdict {
     let mut reasons = Vec::new();
     let mut ok = true;
     let mut v = Verdict {
+        criterion: "reif",
         c1_spectral: false,
         convergent: false,
         reasons: Vec::new(),
@@ -37,19 +59,11 @@ pub fn reif(eigs: &[Eigenvalue]) -> Verdict {
         sub_subdominant: None,
         lambda3_over_lambda1_squared: None,
     };
-    let Some(l0) = eigs.first() else {
+    if eigs.is_empty() {
         v.reasons.push("empty spectrum".into());
         return v;
-    };
-    if (l0.re - 1.0).abs() > TOL || l0.im.abs() > TOL {
-        ok = false;
-        reasons.push(format!("dominant eigenvalue is {} (modulus {:.6}), not 1", l0.display(), l0.modulus));
-    } else if l0.algebraic_multiplicity != 1 {
-        ok = false;
-        reasons.push(format!("eigenvalue 1 has multiplicity {}, not 1", l0.algebraic_multiplicity));
-    } else {
-        reasons.push("λ0 = 1 is simple".into());
     }
+    ok &= dominant_one(eigs, &mut reasons);
     let dominant_one = ok;
     v.convergent = dominant_one && eigs.get(1).is_none_or(|l1| l1.modulus < 1.0 - TOL);
     let Some(l1) = eigs.get(1) else {
@@ -96,6 +110,78 @@ pub fn reif(eigs: &[Eigenvalue]) -> Verdict {
             reasons.push(format!("|λ3| = {} < λ1", fmt_f(l3.modulus)));
         }
     }
+    v.c1_spectral = ok;
+    v.reasons = reasons;
+    v
+}
+
+/// The spectral part of the C¹ criterion at a tagged (boundary, corner,
+/// crease or dart) vertex (Zorin 2000, "A method for analysis of
+/// C¹-continuity of subdivision surfaces", for piecewise smooth surfaces;
+/// Biermann–Levin–Zorin 2000; Biermann–Grundel–Zorin 2015): λ0 = 1 simple
+/// and dominant; two real positive subdominant eigenvalues λ1 ≥ λ2,
+/// non-defective, which need not be equal (the characteristic map
+/// (φ1, φ2) is then scaled by λ1 and λ2 separately); every other eigenvalue
+/// strictly smaller in modulus than λ2. The characteristic map's regularity
+/// and injectivity on the sectors, the other half of the criterion, is
+/// not decided here.
+pub fn sector(eigs: &[Eigenvalue]) -> Verdict {
+    let mut v = reif(eigs);
+    v.criterion = "sector";
+    v.subdominant_blocks.clear();
+    v.lambda3_over_lambda1_squared = None;
+    let mut reasons = Vec::new();
+    let mut ok = dominant_one(eigs, &mut reasons);
+    let Some(l1) = eigs.get(1) else {
+        reasons.push("no subdominant eigenvalue".into());
+        v.c1_spectral = false;
+        v.reasons = reasons;
+        return v;
+    };
+    // the subdominant pair: λ1 twice, or λ1 > λ2 once each
+    let (pair, next): (Vec<&Eigenvalue>, Option<&Eigenvalue>) = match l1.algebraic_multiplicity {
+        2 => (vec![l1], eigs.get(2)),
+        1 => (eigs.get(2).into_iter().chain([l1]).collect(), eigs.get(3)),
+        m => {
+            ok = false;
+            reasons.push(format!("subdominant eigenvalue {} has algebraic multiplicity {m}, not 1 or 2", l1.display()));
+            (vec![l1], None)
+        }
+    };
+    for e in &pair {
+        if !e.is_real() || e.re <= 0.0 {
+            ok = false;
+            reasons.push(format!("subdominant eigenvalue {} is not real and positive", e.display()));
+        } else if e.geometric_multiplicity != e.algebraic_multiplicity {
+            ok = false;
+            reasons.push(format!("subdominant eigenvalue {} is defective", e.display()));
+        }
+    }
+    let l2 = pair.iter().map(|e| e.modulus).fold(f64::INFINITY, f64::min);
+    if l1.algebraic_multiplicity == 1 && pair.len() == 2 && pair[0].algebraic_multiplicity != 1 {
+        ok = false;
+        reasons.push(format!(
+            "λ2 = {} has multiplicity {}: no single second subdominant eigenvalue",
+            pair[0].display(),
+            pair[0].algebraic_multiplicity
+        ));
+    }
+    if ok {
+        reasons.push(match pair[..] {
+            [e] => format!("λ1 = λ2 = {} real, positive, non-defective", e.display()),
+            _ => format!("λ1 = {} > λ2 = {} real, positive, simple", l1.display(), fmt_f(l2)),
+        });
+    }
+    v.sub_subdominant = next.map(|e| e.modulus);
+    match next {
+        Some(e) if e.modulus >= l2 * (1.0 - TOL) => {
+            ok = false;
+            reasons.push(format!("|λ3| = {:.12} is not below λ2 = {:.12}", e.modulus, l2));
+        }
+        Some(e) => reasons.push(format!("|λ3| = {} < λ2", fmt_f(e.modulus))),
+        None => {}
+    }
+    reasons.push("not decided here: the characteristic map's regularity and injectivity on the sectors".into());
     v.c1_spectral = ok;
     v.reasons = reasons;
     v

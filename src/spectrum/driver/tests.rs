@@ -34,6 +34,7 @@ fn label(sector: usize, i: i64, j: i64) -> VertexLabel {
 
 fn identity(size: usize) -> Identity {
     Identity {
+        tagging: None,
         scheme: "test".into(),
         valence: 1,
         params: BTreeMap::new(),
