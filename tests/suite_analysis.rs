@@ -27,3 +27,4 @@ mod exact_vs_float;
 mod jordan_irrational;
 mod local_matrix;
 mod shape_chart;
+mod tagged_vertices;
