@@ -77,7 +77,10 @@ fn the_boundary_rows_are_the_cubic_b_spline_curve_alone() {
                 let s = a.exact_matrix.as_ref().expect("rational rules");
                 let pos: Vec<Option<i64>> = s.labels.iter().map(|l| curve_position(l.sector, l.i, l.j, k)).collect();
                 let on_curve = pos.iter().filter(|p| p.is_some()).count();
-                assert!(on_curve >= 3, "{scheme} {k} {tagging:?}: the curve has {on_curve} points in the neighbourhood");
+                assert!(
+                    on_curve >= 3,
+                    "{scheme} {k} {tagging:?}: the curve has {on_curve} points in the neighbourhood"
+                );
                 for (r, pr) in pos.iter().enumerate() {
                     let Some(to) = *pr else { continue };
                     for (c, pc) in pos.iter().enumerate() {

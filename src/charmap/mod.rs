@@ -100,6 +100,17 @@ impl Default for CharMapOptions {
 pub struct CharMap {
     pub scheme: String,
     pub valence: usize,
+    /// the tagging of a tagged vertex (`--tag`), whose map is checked on its
+    /// sectors: regular, and injective by the raster (an open fan's ring
+    /// does not wind around the centre, so there is no winding number)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tagging: Option<String>,
+    /// at a tagged vertex, the angle (degrees, counter-clockwise) from the
+    /// image of the first sharp ray to that of the last one, next to the
+    /// centre: 180 for a smooth boundary or crease, the corner's angle at a
+    /// corner (convex below 180, concave above)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ray_angle_degrees: Option<f64>,
     pub params: std::collections::BTreeMap<String, String>,
     /// the subdominant eigenvalue λ1
     pub lambda1: f64,
@@ -173,8 +184,11 @@ pub fn check_map_over(
     if spec.neighbourhood != NeighbourhoodKind::Analysis {
         return Err(Error::Input("the characteristic map needs the analysis neighbourhood".into()));
     }
-    let pair = spectral::subdominant_pair(spec);
+    let tagged = spec.tagging.is_some();
+    let pair = if tagged { spectral::sector_pair(spec) } else { spectral::subdominant_pair(spec) };
     let mut out = CharMap {
+        tagging: spec.tagging.clone(),
+        ray_angle_degrees: None,
         scheme: spec.scheme.clone(),
         valence: spec.valence,
         params: spec.params.clone(),
@@ -258,24 +272,37 @@ pub fn check_map_over(
             reg.folded_facets, reg.facets, reg.min_jacobian_ratio, reg.min_jacobian_at[0], reg.min_jacobian_at[1]
         ));
     }
-    match (outer_w, out.winding_number) {
-        (Some(_), Some(1)) => reasons.push("the ring's outer boundary winds once around the centre".into()),
-        (Some(_), Some(w)) => reasons.push(format!("the ring's outer boundary winds {w} times around the centre")),
-        (Some(w), None) => reasons.push(format!("the outer boundary's winding number {w:.4} is not an integer")),
-        (None, _) => reasons.push("the outer boundary passes through the centre".into()),
-    }
-    if out.inner_winding_number != Some(1) {
-        reasons.push(format!("the ring's inner boundary winds {:?} times around the centre", out.inner_winding_number));
+    if tagged {
+        // an open fan's ring has the centre on its boundary: no winding
+        // number; injectivity is the raster's (no pixel twice, none shared
+        // with the inner copy) on a regular map
+        out.winding_number = None;
+        out.inner_winding_number = None;
+        let normalised: Vec<[f64; 2]> = pair.values.iter().map(|&p| net::apply_linear(&m, p)).collect();
+        out.ray_angle_degrees = ray_angle(d, &normalised);
+        if let Some(a) = out.ray_angle_degrees {
+            reasons.push(format!("the sharp rays' images meet at {a:.4}° at the centre"));
+        }
+    } else {
+        match (outer_w, out.winding_number) {
+            (Some(_), Some(1)) => reasons.push("the ring's outer boundary winds once around the centre".into()),
+            (Some(_), Some(w)) => reasons.push(format!("the ring's outer boundary winds {w} times around the centre")),
+            (Some(w), None) => reasons.push(format!("the outer boundary's winding number {w:.4} is not an integer")),
+            (None, _) => reasons.push("the outer boundary passes through the centre".into()),
+        }
+        if out.inner_winding_number != Some(1) {
+            reasons.push(format!(
+                "the ring's inner boundary winds {:?} times around the centre",
+                out.inner_winding_number
+            ));
+        }
     }
     reasons.push(format!(
         "{} of {} ring pixels covered more than once; {} pixels shared with the scaled copy (resolution {})",
         cov.overlap_pixels, cov.ring_pixels, cov.copy_overlap_pixels, opts.resolution
     ));
-    out.injective = reg.regular
-        && out.winding_number == Some(1)
-        && out.inner_winding_number == Some(1)
-        && cov.overlap_pixels == 0
-        && cov.copy_overlap_pixels == 0;
+    let winds_once = tagged || (out.winding_number == Some(1) && out.inner_winding_number == Some(1));
+    out.injective = reg.regular && winds_once && cov.overlap_pixels == 0 && cov.copy_overlap_pixels == 0;
     reasons.push(if out.injective {
         "injective: the characteristic map passes (regular and injective)".into()
     } else {
@@ -317,6 +344,27 @@ fn normalisation(d: &crate::neighbourhood::Discovered, values: &[[f64; 2]], raw:
     let k = if radius > 0.0 { 1.0 / radius } else { 1.0 };
     // rotate by −θ after flipping y
     Matrix2::new(k * c, k * s * flip, -k * s, k * c * flip)
+}
+
+/// The angle (degrees in [0, 360), counter-clockwise) from the image of the
+/// first sharp ray's vertex next to the centre to that of the last sharp
+/// ray's, `values` over the analysis set; None with fewer than two sharp
+/// rays (a dart) or an image at the centre.
+fn ray_angle(d: &crate::neighbourhood::Discovered, values: &[[f64; 2]]) -> Option<f64> {
+    let tagging = d.config.tagging?;
+    let rays = tagging.sharp_rays(d.config.valence());
+    let (first, last) = (*rays.first()?, *rays.last()?);
+    if first == last {
+        return None;
+    }
+    let at = |sector: usize| {
+        d.analysis.iter().zip(values).find_map(|(&v, p)| {
+            let l = &d.labels[v];
+            (l.sector == sector && l.i == 1 && l.j == 0 && p[0].hypot(p[1]) > 0.0).then_some(*p)
+        })
+    };
+    let (a, b) = (Vector2::from(at(first)?), Vector2::from(at(last)?));
+    Some(a.perp(&b).atan2(a.dot(&b)).to_degrees().rem_euclid(360.0))
 }
 
 /// M^(-1/2) for the second-moment matrix M of the ring's outer boundary

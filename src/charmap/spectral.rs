@@ -184,3 +184,64 @@ fn independent(a: &[f64], b: &[f64]) -> bool {
     let (aa, bb, ab) = (dot(a, a), dot(b, b), dot(a, b));
     aa > 0.0 && bb > 0.0 && (aa * bb - ab * ab) > INDEPENDENCE_TOL * aa * bb
 }
+
+/// The characteristic map's pair at a tagged vertex (the spectrum's
+/// `sector` verdict): the eigenvectors of λ1 = λ2 (a double eigenvalue, as
+/// at an interior point), or of λ1 > λ2, one each (Zorin's sector
+/// criterion allows two different subdominant eigenvalues: the map is then
+/// scaled by λ1 in one direction and λ2 in the other). `lambda` is λ1.
+pub fn sector_pair(spec: &Spectrum) -> Pair {
+    let mut pair = Pair {
+        status: SpectralStatus::Missing,
+        explanation: String::new(),
+        lambda: f64::NAN,
+        blocks: Vec::new(),
+        values: Vec::new(),
+    };
+    let Some(l1) = spec.eigenvalues.get(1) else {
+        pair.explanation = "the spectrum has no subdominant eigenvalue".into();
+        return pair;
+    };
+    pair.lambda = l1.re;
+    if !spec.verdict.c1_spectral {
+        pair.status = SpectralStatus::NotDominant;
+        pair.explanation = format!(
+            "the spectral part of the sector criterion fails ({}), so there is no characteristic map",
+            spec.verdict
+                .reasons
+                .iter()
+                .filter(|r| !r.starts_with("not decided"))
+                .cloned()
+                .collect::<Vec<_>>()
+                .join("; ")
+        );
+        return pair;
+    }
+    let values = if l1.algebraic_multiplicity == 2 {
+        real_pair(&spec.right_vectors(l1))
+    } else {
+        // λ1 > λ2, each simple and real: one real vector each
+        let l2 = &spec.eigenvalues[2];
+        let real = |e| spec.right_vectors(e).first().map(|v| v.iter().map(|z| z.re).collect::<Vec<f64>>());
+        match (real(l1), real(l2)) {
+            (Some(a), Some(b)) if independent(&a, &b) => Some(a.into_iter().zip(b).map(|(x, y)| [x, y]).collect()),
+            _ => None,
+        }
+    };
+    let Some(values) = values else {
+        pair.status = SpectralStatus::Defective;
+        pair.explanation = "the subdominant eigenvectors do not span two real directions".into();
+        return pair;
+    };
+    pair.values = values;
+    pair.status = SpectralStatus::Ok;
+    pair.explanation = match l1.algebraic_multiplicity {
+        2 => format!("λ1 = λ2 = {} at a tagged vertex", l1.display()),
+        _ => format!(
+            "λ1 = {} > λ2 = {} at a tagged vertex (the map scales by each in its own direction)",
+            l1.display(),
+            spec.eigenvalues[2].display()
+        ),
+    };
+    pair
+}

@@ -174,7 +174,9 @@ pub fn charmap(a: &CharmapArgs, scheme: Box<dyn Scheme>) -> Result<i32, Error> {
     check_flags(a)?;
     let style = a.figure.style()?;
     let config = super::commands::configuration(scheme.as_ref(), &a.config)?;
-    super::commands::refuse_tagged("charmap", &config)?;
+    if a.certify {
+        super::commands::refuse_tagged("charmap --certify", &config)?;
+    }
     let levels = a.levels.unwrap_or_else(|| crate::charmap::default_levels(scheme.as_ref()));
     let opts = CharMapOptions {
         levels,
@@ -277,8 +279,12 @@ fn certificate_table(c: &crate::certify::CharMapCertificate) -> String {
 
 fn table(m: &CharMap) -> String {
     let mut out = format!(
-        "scheme {}  valence {}  λ1 = {}  blocks {}\nlevels {} ({} refinements)  resolution {}\n\n",
+        "scheme {}  {} {}  λ1 = {}  blocks {}\nlevels {} ({} refinements)  resolution {}\n\n",
         m.scheme,
+        match &m.tagging {
+            None => "valence".to_string(),
+            Some(t) => format!("{t} vertex, sectors"),
+        },
         m.valence,
         crate::spectrum::fmt_f(m.lambda1),
         m.subdominant_blocks.iter().map(|b| b.to_string()).collect::<Vec<_>>().join(", "),
@@ -288,6 +294,9 @@ fn table(m: &CharMap) -> String {
     );
     let yes = |b: bool| if b { "yes" } else { "NO" };
     out += &format!("regular    {}\ninjective  {}\n", yes(m.regular), yes(m.injective));
+    if let Some(a) = m.ray_angle_degrees {
+        out += &format!("sharp rays' images at {a:.4}°\n");
+    }
     if let Some(w) = m.winding_number {
         let inner = m.inner_winding_number.map(|x| x.to_string()).unwrap_or_else(|| "-".into());
         out += &format!("winding number {w} (inner boundary {inner})\n");

@@ -72,7 +72,7 @@ pub(super) fn refuse_tagged(command: &str, config: &Configuration) -> Result<(),
         None => Ok(()),
         Some(t) => Err(Error::Input(format!(
             "{command} --tag {}: not available at tagged vertices yet (the sector criteria of boundary, \
-             crease and corner vertices are not implemented); spectrum, stencils and matrix accept --tag",
+             crease and corner vertices are not implemented); spectrum, stencils, matrix and charmap accept --tag",
             t.name()
         ))),
     }
