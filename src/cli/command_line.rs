@@ -110,9 +110,11 @@ pub enum Command {
         #[arg(short = 'o', long = "out", visible_alias = "output")]
         output: Option<std::path::PathBuf>,
     },
-    /// Refine a closed OBJ mesh with a scheme (the same rules as the analysis); writes OBJ
+    /// Refine an OBJ mesh with a scheme (the same rules as the analysis); writes OBJ.
+    /// Open meshes and creases (`#crease i j`, `#corner i` lines) need a scheme with
+    /// boundary rules (catmull-clark, loop)
     Refine {
-        /// input mesh (Wavefront OBJ, closed)
+        /// input mesh (Wavefront OBJ; closed, or open for schemes with boundary rules)
         mesh: std::path::PathBuf,
         /// scheme name (see `subdlab schemes`) or a scheme file (.toml, see schemes/)
         #[arg(long)]
@@ -138,6 +140,10 @@ pub enum Command {
         /// one value per line for each input vertex, in order ('#' starts a comment)
         #[arg(long)]
         vertex_params: Option<std::path::PathBuf>,
+        /// boundary, crease and corner tags besides those in the OBJ file: lines
+        /// `crease i j [k ...]` and `corner i [j ...]` (1-based vertex indices)
+        #[arg(long)]
+        tags: Option<std::path::PathBuf>,
     },
     /// Curve schemes of Lin–Luo section 3: local subdivision matrix at a vertex and its spectrum
     Curve {

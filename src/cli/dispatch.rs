@@ -40,8 +40,8 @@ fn dispatch_other(cmd: Command) -> Result<(), Error> {
             out_text(&format!("wrote {} files to {}\n", files.len(), out.display()))
         }
         Command::Schemes { files, json } => list_schemes(&files, json),
-        Command::Refine { mesh, scheme, levels, params, output, fcv_scale, four_directional, vertex_params } => {
-            let opts = super::mesh_commands::MeshOptions { fcv_scale, four_directional, vertex_params };
+        Command::Refine { mesh, scheme, levels, params, output, fcv_scale, four_directional, vertex_params, tags } => {
+            let opts = super::mesh_commands::MeshOptions { fcv_scale, four_directional, vertex_params, tags };
             super::mesh_commands::refine(&mesh, &scheme, levels, &params, &output, &opts)
         }
         Command::Curve { scheme, params, neighbourhood, json } => {

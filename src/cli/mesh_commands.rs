@@ -7,7 +7,7 @@ use super::commands::parse_params;
 use crate::curves::local::{curve_spectrum, CurveSpectrum};
 use crate::error::Error;
 use crate::io::{print_json, write_atomic};
-use crate::mesh::obj::{read_obj_file, write_obj};
+use crate::mesh::obj::{read_obj_file, read_tags, write_obj, MAX_TAG_FILE_BYTES};
 use crate::neighbourhood::NeighbourhoodKind;
 use crate::refine::mesh::{add_face_control_vertices, four_directional, refine_mesh};
 use crate::schemes;
@@ -18,6 +18,8 @@ pub struct MeshOptions {
     pub fcv_scale: f64,
     pub four_directional: bool,
     pub vertex_params: Option<std::path::PathBuf>,
+    /// a side file of boundary, crease and corner tags (`mesh::obj::read_tags`)
+    pub tags: Option<std::path::PathBuf>,
 }
 
 pub fn refine(
@@ -52,6 +54,15 @@ pub fn refine(
         )));
     }
     let (mut m, mut points) = read_obj_file(mesh)?;
+    if let Some(path) = &opts.tags {
+        let text = super::verify::read_capped(path, MAX_TAG_FILE_BYTES as u64, "file of tags")?;
+        read_tags(&text, &mut m, &path.display().to_string())?;
+    }
+    // a real mesh's open edges are its boundary: tagged sharp, so that the
+    // boundary rules apply (hosts without them refuse the mesh in one line)
+    if m.tags.is_some() || m.edges().into_iter().any(|(a, b)| !m.is_interior_edge(a, b)) {
+        m.tag_open_edges();
+    }
     if let Some(path) = &opts.vertex_params {
         m.vertex_params = Some(read_vertex_params(path, scheme.as_ref(), m.num_vertices())?);
     }

@@ -6,6 +6,21 @@
 //! negative (relative to the vertices read so far); only the position index is
 //! used.
 //!
+//! Boundary, crease and corner tags (`mesh::tags`) are comment lines, so
+//! that other programs read the file as a plain mesh:
+//!
+//! * `#crease i j [k ...]`: the edges i–j (j–k, ...) are sharp (crease
+//!   edges); a chain of any length, each step an edge of the mesh;
+//! * `#corner i [j ...]`: the vertices are corners (interpolated).
+//!
+//! Indices are 1-based, as in `f` lines (no relative indices); the keyword
+//! follows `#` without a space (`# crease` is an ordinary comment). A mesh
+//! with tag lines is read with `PolyMesh::tags` set (open edges are not
+//! tagged here: the `refine` command tags them as the boundary). A side file
+//! of tags ([`read_tags`]) has the same lines without the `#`. The writer
+//! puts the sharp edges between two faces (creases) and the corners back as
+//! such lines; boundary edges are not written (they are the open edges).
+//!
 //! The reader is meant to face files from anywhere, so every defect gives a
 //! one-line error that names the line, and every size is capped before it is
 //! allocated (see the `MAX_*` constants): a hostile file cannot make it panic,
@@ -19,7 +34,7 @@ use std::path::Path;
 
 use crate::error::Error;
 
-use super::PolyMesh;
+use super::{PolyMesh, Tags};
 
 /// Largest OBJ file read, in bytes (the file is read whole, so this bounds memory).
 pub const MAX_FILE_BYTES: u64 = 256 * 1024 * 1024;
@@ -76,9 +91,15 @@ fn parse_text(text: &str) -> Result<ObjMesh, Error> {
     let mut faces: Vec<Vec<usize>> = Vec::new();
     let mut face_line: Vec<usize> = Vec::new();
     let mut corners = 0usize;
+    // tag lines (`#crease`, `#corner`), applied once the mesh is built
+    let mut tag_lines: Vec<(usize, &str)> = Vec::new();
     for (k, raw) in text.lines().enumerate() {
         let line_no = k + 1;
         let err = |msg: String| Error::File(format!("line {line_no}: {msg}"));
+        if let Some(tag) = raw.trim_start().strip_prefix('#').filter(|t| is_tag_line(t)) {
+            tag_lines.push((line_no, tag));
+            continue;
+        }
         // a comment may follow a statement on the same line
         let content = raw.split('#').next().unwrap_or("");
         let mut tokens = content.split_whitespace();
@@ -163,8 +184,87 @@ fn parse_text(text: &str) -> Result<ObjMesh, Error> {
         ));
     }
     validate(&points, &vertex_line, &faces, &face_line)?;
-    let mesh = PolyMesh::new(points.len(), faces).map_err(|e| Error::File(format!("invalid mesh: {e}")))?;
+    let mut mesh = PolyMesh::new(points.len(), faces).map_err(|e| Error::File(format!("invalid mesh: {e}")))?;
+    if !tag_lines.is_empty() {
+        let mut tags = Tags::new();
+        for (line_no, line) in tag_lines {
+            tag_line(&mesh, &mut tags, line).map_err(|e| Error::File(format!("line {line_no}: {e}")))?;
+        }
+        mesh.tags = Some(tags);
+    }
     Ok((mesh, points))
+}
+
+/// Whether the text after a `#` is a tag line (`crease ...`, `corner ...`).
+fn is_tag_line(t: &str) -> bool {
+    matches!(t.split_whitespace().next(), Some("crease" | "corner")) && !t.starts_with(char::is_whitespace)
+}
+
+/// Apply one tag line (`crease i j [k ...]` or `corner i [j ...]`, 1-based
+/// indices) to `tags`; the error names what is wrong, without the line.
+fn tag_line(mesh: &PolyMesh, tags: &mut Tags, line: &str) -> Result<(), String> {
+    let mut tokens = line.split_whitespace();
+    let keyword = tokens.next().unwrap_or("");
+    let nv = mesh.num_vertices();
+    let mut ids = Vec::new();
+    for tok in tokens {
+        let i: u64 = tok
+            .parse()
+            .map_err(|_| format!("{keyword}: '{tok}' is not a vertex index (a whole number from 1, as in f lines)"))?;
+        if i == 0 || i > nv as u64 {
+            return Err(format!("{keyword}: vertex index {i} is out of range (the mesh has {nv} vertices, from 1)"));
+        }
+        ids.push(i as usize - 1);
+    }
+    match keyword {
+        "crease" => {
+            if ids.len() < 2 {
+                return Err(format!("crease: needs at least two vertex indices (an edge), got {}", ids.len()));
+            }
+            for w in ids.windows(2) {
+                let (a, b) = (w[0], w[1]);
+                if mesh.half_edge(a, b).is_none() && mesh.half_edge(b, a).is_none() {
+                    return Err(format!("crease: {}-{} is not an edge of the mesh", a + 1, b + 1));
+                }
+                tags.mark_sharp(a, b);
+            }
+        }
+        "corner" => {
+            if ids.is_empty() {
+                return Err("corner: needs at least one vertex index".into());
+            }
+            for v in ids {
+                if mesh.incident_faces(v).is_empty() {
+                    return Err(format!("corner: vertex {} is not used by any face", v + 1));
+                }
+                tags.mark_corner(v);
+            }
+        }
+        other => return Err(format!("unknown tag '{other}' (expected crease or corner)")),
+    }
+    Ok(())
+}
+
+/// Largest file of tags read, in bytes.
+pub const MAX_TAG_FILE_BYTES: usize = 64 * 1024 * 1024;
+
+/// Add the tags of a side file (`crease i j [k ...]` and `corner i [j ...]`
+/// lines, 1-based vertex indices, `#` starting a comment) to `mesh`'s tags;
+/// `source` names the file in errors, which are one line naming the line.
+pub fn read_tags(text: &str, mesh: &mut PolyMesh, source: &str) -> Result<(), Error> {
+    if text.len() > MAX_TAG_FILE_BYTES {
+        return Err(Error::File(format!("{source}: larger than {MAX_TAG_FILE_BYTES} bytes")));
+    }
+    let mut tags = mesh.tags.clone().unwrap_or_default();
+    for (k, raw) in text.lines().enumerate() {
+        let content = raw.split('#').next().unwrap_or("");
+        if content.trim().is_empty() {
+            continue;
+        }
+        tag_line(mesh, &mut tags, content).map_err(|e| Error::File(format!("{source} line {}: {e}", k + 1)))?;
+    }
+    mesh.tags = Some(tags);
+    Ok(())
 }
 
 /// Checks that PolyMesh::new would also make, but reported with line numbers,
@@ -274,6 +374,16 @@ pub fn write_obj(mesh: &PolyMesh, points: &[[f64; 3]], header: &str) -> String {
             out.push_str(&format!(" {}", v + 1));
         }
         out.push('\n');
+    }
+    if let Some(tags) = &mesh.tags {
+        // creases (sharp edges between two faces) and corners; the boundary
+        // is the open edges, tagged again on reading
+        for (a, b) in tags.sharp_edges().into_iter().filter(|&(a, b)| mesh.is_interior_edge(a, b)) {
+            out.push_str(&format!("#crease {} {}\n", a + 1, b + 1));
+        }
+        for c in tags.corners() {
+            out.push_str(&format!("#corner {}\n", c + 1));
+        }
     }
     out
 }

@@ -171,6 +171,9 @@ pub struct PolyMesh {
     /// centre once per face or edge around it, and rebuilding it by half-edge
     /// walks each time made discovery quadratic in the valence.
     fans: Vec<OnceLock<Fan>>,
+    /// The faces at each vertex in face order, built on first use (the tag
+    /// queries of a tagged mesh ask at every vertex and edge point).
+    incident: OnceLock<Box<[Box<[FaceId]>]>>,
     /// `face_points` holds a point for every face (cached: FCV rules ask on
     /// every stencil, and scanning all faces each time was quadratic).
     every_face_has_point: bool,
@@ -270,6 +273,7 @@ impl PolyMesh {
             half_edges,
             vertex_corner,
             fans: (0..num_vertices).map(|_| OnceLock::new()).collect(),
+            incident: OnceLock::new(),
             every_face_has_point: false,
             chart: None,
             face_points: Vec::new(),
@@ -537,6 +541,23 @@ impl PolyMesh {
         self.faces.iter().enumerate().filter(|(_, f)| f.contains(&v)).map(|(i, _)| i).collect()
     }
 
+    /// The faces that have `v` as a corner, in face order ([`Self::faces_around`]
+    /// from a cache built for all vertices at the first call).
+    pub fn incident_faces(&self, v: VertexId) -> &[FaceId] {
+        let all = self.incident.get_or_init(|| {
+            let mut out = vec![Vec::new(); self.num_vertices];
+            for (fi, face) in self.faces.iter().enumerate() {
+                for &c in face {
+                    if out[c].last() != Some(&fi) {
+                        out[c].push(fi);
+                    }
+                }
+            }
+            out.into_iter().map(Vec::into_boxed_slice).collect()
+        });
+        all.get(v).map_or(&[], |f| f)
+    }
+
     /// For every vertex, the list of faces incident to it.
     pub fn vertex_faces(&self) -> Vec<Vec<FaceId>> {
         let mut out = vec![Vec::new(); self.num_vertices];
@@ -573,7 +594,8 @@ impl PolyMesh {
     pub fn sharp_neighbours(&self, v: VertexId) -> Vec<VertexId> {
         let Some(tags) = self.tags.as_ref() else { return Vec::new() };
         let mut out = Vec::new();
-        for face in self.faces() {
+        for &f in self.incident_faces(v) {
+            let face = &self.faces[f];
             if let Some(k) = face.iter().position(|&c| c == v) {
                 let m = face.len();
                 for w in [face[(k + 1) % m], face[(k + m - 1) % m]] {

@@ -3,11 +3,17 @@
 //! matrix, applied here to 3-D points. No rule is restated in this file, so a
 //! refined mesh and the matrix analysis cannot disagree about the scheme.
 //!
-//! Boundary rules are not implemented by the built-in schemes, so the mesh must
-//! be closed; any vertex, edge or face where a rule does not apply (boundary,
-//! or a face type the scheme does not cover, e.g. a quad for Loop) is reported
-//! by name, with the reason the host's gatherer gave (`GatherError`), instead
-//! of being guessed.
+//! An open edge must be tagged sharp (`PolyMesh::tag_open_edges`: a real open
+//! mesh's boundary, which the `refine` command tags on reading); an untagged
+//! one is a cut, and the mesh is refused. A tagged mesh (boundaries, creases,
+//! corners: `mesh::tags`) needs a host with boundary/crease rules (the primal
+//! quad and triangle hosts) and a scheme that weighs them (Catmull–Clark,
+//! Loop, scheme files with the `[vertex-crease]`, `[vertex-corner]` and
+//! `[edge-crease]` rules); the tags are refined with the mesh. Any vertex,
+//! edge or face where a rule does not apply (a face type the scheme does not
+//! cover, e.g. a quad for Loop; a tagged vertex whose rule the scheme lacks)
+//! is reported by name, with the reason the host's gatherer gave
+//! (`GatherError`), instead of being guessed.
 
 use super::{apply, step, GatherError, Origin, Stencil, Step, StepStencil};
 use crate::error::Error;
@@ -37,10 +43,13 @@ pub fn refine_mesh(
     // Doo–Sabin's corner rule would happily shrink an open mesh away from its
     // boundary; without boundary rules that is not the scheme, so every scheme
     // requires a closed mesh
-    if let Some((a, b)) = mesh.edges().into_iter().find(|&(a, b)| !mesh.is_interior_edge(a, b)) {
+    // (a tagged boundary is a boundary: its edges are sharp)
+    if let Some((a, b)) = mesh.edges().into_iter().find(|&(a, b)| !mesh.is_interior_edge(a, b) && !mesh.is_sharp(a, b))
+    {
         return Err(Error::Input(format!(
-            "{} needs {}: vertex {} is on the boundary (edge {}-{} has a face on one side only); \
-             boundary rules are not implemented{}",
+            "{} needs {}: vertex {} is on the boundary (edge {}-{} has a face on one side only) and the boundary \
+             is not tagged (an untagged open edge is a cut: tag it, as `subdlab refine` does, where the scheme \
+             has boundary rules){}",
             scheme.name(),
             requirement(scheme),
             a + 1,
@@ -49,8 +58,10 @@ pub fn refine_mesh(
             scheme.boundary_note().map(|n| format!(" ({n})")).unwrap_or_default()
         )));
     }
-    // refuse before any work: the first level's size, then the host's growth per level
+    // refuse before any work: tags on a host without boundary/crease rules,
+    // the first level's size, then the host's growth per level
     let host = scheme.topology();
+    host.check_tags(mesh).map_err(|e| e.context(scheme.name()))?;
     let estimate = (1..levels).fold(host.size_bound(mesh), |size, _| size.saturating_mul(host.growth_per_level()));
     if estimate > MAX_REFINED_FACES {
         return Err(Error::Input(format!(
@@ -184,6 +195,18 @@ fn not_applicable(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin, cause: G
                 format!("{kind:?}").to_lowercase()
             ));
         }
+        // a tagged vertex or sharp edge whose rule the scheme does not weigh
+        GatherError::MissingRule(_, missing) => {
+            let what = match origin {
+                Origin::Vertex(_) if missing == "vertex-corner" => "a corner",
+                Origin::Vertex(_) => "a crease or boundary vertex",
+                _ => "a sharp (boundary or crease) edge",
+            };
+            return Error::Input(format!(
+                "{name}{at_level} has no {missing} rule (boundary/crease rules are not available in this scheme), \
+                 and {place} is {what}"
+            ));
+        }
     };
     // only a mesh that ends somewhere would need boundary rules
     let open = cause == GatherError::Truncated && mesh.edges().into_iter().any(|(a, b)| !mesh.is_interior_edge(a, b));
@@ -222,9 +245,11 @@ pub fn add_face_control_vertices(
         fcv.push(Some(pts.len()));
         pts.push([scale * c[0], scale * c[1], scale * c[2]]);
     }
-    let m = PolyMesh::new(pts.len(), mesh.faces().to_vec())
+    let mut m = PolyMesh::new(pts.len(), mesh.faces().to_vec())
         .map_err(|e| Error::Input(e.to_string()))?
         .with_face_points(fcv)?;
+    // the old vertices keep their ids, and so their tags
+    m.tags = mesh.tags.clone();
     Ok((m, pts))
 }
 

@@ -4,6 +4,16 @@
 //! edge point  = (a + b + F_left + F_right) / 4
 //! vertex point = (Q + 2R + (n - 3) v) / n, Q = average of the adjacent face
 //!                points, R = average of the adjacent edge midpoints.
+//!
+//! Boundaries, creases and corners (Hoppe et al. 1994; OpenSubdiv's crease
+//! rules at infinite sharpness), on a tagged mesh (`mesh::tags`):
+//!
+//! crease/boundary vertex = 3/4 v + 1/8 (a + b), a and b its sharp neighbours
+//! corner vertex = v
+//! sharp edge point = (a + b) / 2
+//!
+//! (the cubic B-spline rules along the crease; a dart, and every edge that is
+//! not sharp, keeps the smooth rule).
 
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
@@ -43,12 +53,17 @@ pub fn entry() -> SchemeEntry {
 // same scheme on any closed polygon mesh.
 impl Wants for CatmullClark {
     fn rule(&self, rule: &str) -> bool {
-        matches!(rule, "vertex" | "edge" | "face")
+        matches!(rule, "vertex" | "edge" | "face" | "vertex-crease" | "vertex-corner" | "edge-crease")
     }
     fn family(&self, rule: &str, family: &str) -> bool {
         matches!(
             (rule, family),
-            ("vertex", "centre" | "edge" | "face-corner") | ("edge", "ends" | "face-corner") | ("face", "corner")
+            ("vertex", "centre" | "edge" | "face-corner")
+                | ("edge", "ends" | "face-corner")
+                | ("face", "corner")
+                | ("vertex-crease", "centre" | "crease")
+                | ("vertex-corner", "centre")
+                | ("edge-crease", "ends")
         )
     }
 }
@@ -69,6 +84,11 @@ impl<W: Weight> Mask<W> for CatmullClark {
             ("edge", "face-corner", Some(m)) => W::ratio(1, m as i64) * W::ratio(1, 4),
             // the face point: the centroid of the n corners
             ("face", "corner", _) => W::ratio(1, n),
+            // the cubic B-spline along a crease or boundary; corners interpolate
+            ("vertex-crease", "centre", _) => W::ratio(3, 4),
+            ("vertex-crease", "crease", _) => W::ratio(1, 8),
+            ("vertex-corner", "centre", _) => W::one(),
+            ("edge-crease", "ends", _) => W::ratio(1, 2),
             // no weight on slots the mask does not use
             _ => W::zero(),
         })

@@ -2,6 +2,12 @@
 //!
 //! vertex point: (1 - nβ) v + β Σ v_i,  β = (1/n) (5/8 - (3/8 + cos(2π/n)/4)^2)
 //! edge point:   3/8 (a + b) + 1/8 (c + d), c and d the opposite apexes
+//!
+//! Boundaries, creases and corners (Hoppe et al. 1994; OpenSubdiv's crease
+//! rules at infinite sharpness), on a tagged mesh (`mesh::tags`): a crease or
+//! boundary vertex 3/4 v + 1/8 (a + b) over its two sharp neighbours, a
+//! corner v, a sharp edge (a + b)/2; darts and edges that are not sharp keep
+//! the smooth rules.
 
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Inexact;
@@ -45,10 +51,17 @@ pub fn loop_beta<W: Weight>(n: i64) -> Result<W, crate::numeric::Inexact> {
 // the mask only weighs them, exactly as a scheme file on that host does.
 impl Wants for Loop {
     fn rule(&self, rule: &str) -> bool {
-        matches!(rule, "vertex" | "edge")
+        matches!(rule, "vertex" | "edge" | "vertex-crease" | "vertex-corner" | "edge-crease")
     }
     fn family(&self, rule: &str, family: &str) -> bool {
-        matches!((rule, family), ("vertex", "centre" | "edge") | ("edge", "ends" | "opposite"))
+        matches!(
+            (rule, family),
+            ("vertex", "centre" | "edge")
+                | ("edge", "ends" | "opposite")
+                | ("vertex-crease", "centre" | "crease")
+                | ("vertex-corner", "centre")
+                | ("edge-crease", "ends")
+        )
     }
 }
 
@@ -60,6 +73,11 @@ impl<W: Weight> Mask<W> for Loop {
             ("vertex", "edge") => loop_beta(n)?,
             ("edge", "ends") => W::ratio(3, 8),
             ("edge", "opposite") => W::ratio(1, 8),
+            // the cubic B-spline along a crease or boundary; corners interpolate
+            ("vertex-crease", "centre") => W::ratio(3, 4),
+            ("vertex-crease", "crease") => W::ratio(1, 8),
+            ("vertex-corner", "centre") => W::one(),
+            ("edge-crease", "ends") => W::ratio(1, 2),
             // no weight on slots the mask does not use
             _ => W::zero(),
         })

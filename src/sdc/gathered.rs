@@ -28,6 +28,10 @@ pub enum GatherError {
     NotCovered,
     /// the host never creates this kind of origin
     Unsupported(Host, OriginKind),
+    /// the origin is a tagged boundary, crease or corner vertex or a sharp
+    /// edge, and the mask has no weights for the host's rule there (the rule
+    /// named: `vertex-crease`, `vertex-corner`, `edge-crease`)
+    MissingRule(Host, &'static str),
 }
 
 impl std::fmt::Display for GatherError {
@@ -36,6 +40,9 @@ impl std::fmt::Display for GatherError {
             GatherError::Truncated => write!(f, "the neighbourhood is truncated"),
             GatherError::NotCovered => write!(f, "no rule of the host covers this neighbourhood"),
             GatherError::Unsupported(h, o) => write!(f, "host {} creates no {o:?} points", h.spec().name),
+            GatherError::MissingRule(h, rule) => {
+                write!(f, "the mask has no {rule} rule of host {} (boundary/crease rules)", h.spec().name)
+            }
         }
     }
 }

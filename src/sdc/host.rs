@@ -20,7 +20,7 @@
 //! does not compile.
 
 use crate::error::Error;
-use crate::mesh::{PolyMesh, SectorKind};
+use crate::mesh::{PolyMesh, SectorKind, Tags};
 use crate::sdc::centre::CentreKind;
 use crate::sdc::gathered::{Gather, Wants};
 pub use crate::sdc::host_list::{Host, HOSTS};
@@ -83,6 +83,13 @@ pub trait RefinementHost: Sync {
     fn spec(&self) -> &'static HostSpec;
     /// One refinement step of the connectivity (the split).
     fn refine(&self, mesh: &PolyMesh) -> Result<Refined, Error>;
+    /// What one split does to boundary, crease and corner tags
+    /// (`mesh::tags`): the refined mesh's tags, given the new vertices'
+    /// origins (`None` for a mesh without tags). A host without
+    /// boundary/crease rules refuses a mesh with tags ([`refuse_tags`]);
+    /// asked with no origins, the method says whether the host takes the
+    /// mesh at all, before any work.
+    fn refine_tags(&self, mesh: &PolyMesh, vertex_origins: &[Origin]) -> Result<Option<Tags>, Error>;
     /// The slots of `origin`'s rule mapped to mesh vertices, only the rules
     /// and optional families `wants` names.
     fn gather(&self, mesh: &PolyMesh, origin: Origin, wants: &dyn Wants) -> Gather;
@@ -103,6 +110,20 @@ pub trait RefinementHost: Sync {
     fn regular_spline(&self) -> RegularSpline;
 }
 
+/// [`RefinementHost::refine_tags`] of a host without boundary/crease rules:
+/// a mesh with tags is refused in one line naming the host; an untagged mesh
+/// stays untagged (and an empty tag set, open edges as cuts, stays empty).
+pub fn refuse_tags(host: Host, mesh: &PolyMesh) -> Result<Option<Tags>, Error> {
+    match &mesh.tags {
+        Some(t) if !t.is_empty() => Err(Error::Input(format!(
+            "the {} host has no boundary or crease rules: boundary/crease rules are not available there, so a mesh \
+             with boundary edges or tagged creases or corners cannot be refined on it",
+            host.spec().name
+        ))),
+        tags => Ok(tags.as_ref().map(|_| Tags::new())),
+    }
+}
+
 /// The table from a host's identity to its unit. Implemented for [`Host`] by
 /// `crate::topology` (the one place that sees every host file); this layer
 /// only calls it.
@@ -119,8 +140,21 @@ impl Host {
     pub fn by_name(name: &str) -> Option<Host> {
         HOSTS.iter().copied().find(|h| h.spec().name == name)
     }
+    /// One split, tags included ([`RefinementHost::refine_tags`]): a host
+    /// without boundary/crease rules refuses a tagged mesh before splitting.
     pub fn refine(self, mesh: &PolyMesh) -> Result<Refined, Error> {
-        self.unit().refine(mesh)
+        let unit = self.unit();
+        if mesh.tags.is_some() {
+            unit.refine_tags(mesh, &[])?;
+        }
+        let mut refined = unit.refine(mesh)?;
+        refined.mesh.tags = unit.refine_tags(mesh, &refined.vertex_origins)?;
+        Ok(refined)
+    }
+    /// Whether the host refines `mesh`'s tags (an error naming the host if
+    /// it has no boundary/crease rules and the mesh has tags).
+    pub fn check_tags(self, mesh: &PolyMesh) -> Result<(), Error> {
+        self.unit().refine_tags(mesh, &[]).map(|_| ())
     }
     pub fn steps_per_analysis(self) -> usize {
         self.unit().steps_per_analysis()

@@ -17,8 +17,9 @@
 use crate::error::Error;
 use crate::mesh::FaceId;
 use crate::mesh::SectorKind;
+use crate::mesh::Tags;
 use crate::mesh::{LatticeCoord, PolyMesh};
-use crate::sdc::host::{Refined, RefinementHost, RegularSpline};
+use crate::sdc::host::{refuse_tags, Refined, RefinementHost, RegularSpline};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::{Corner as C, Face as F};
 use crate::sdc::slots::Valence::{Any, Fixed};
@@ -89,6 +90,9 @@ impl RefinementHost for AugmentedDual {
     }
     fn refine(&self, mesh: &PolyMesh) -> Result<Refined, Error> {
         refine(mesh)
+    }
+    fn refine_tags(&self, mesh: &PolyMesh, _: &[Origin]) -> Result<Option<Tags>, Error> {
+        refuse_tags(Host::AugmentedDual, mesh)
     }
     fn gather(&self, mesh: &PolyMesh, origin: Origin, _wants: &dyn Wants) -> Gather {
         match origin {

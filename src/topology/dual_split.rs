@@ -11,7 +11,8 @@ use crate::mesh::IdMap;
 use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
-use crate::sdc::host::{Refined, RefinementHost, RegularSpline};
+use crate::mesh::Tags;
+use crate::sdc::host::{refuse_tags, Refined, RefinementHost, RegularSpline};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::Corner as C;
 use crate::sdc::slots::{canonical, fam, unsupported, Gather, Gathered, HostSpec, Part, RuleSlots, Wants, PER_J};
@@ -123,6 +124,9 @@ impl RefinementHost for DualSplit {
     }
     fn refine(&self, mesh: &PolyMesh) -> Result<Refined, Error> {
         refine(mesh)
+    }
+    fn refine_tags(&self, mesh: &PolyMesh, _: &[Origin]) -> Result<Option<Tags>, Error> {
+        refuse_tags(Host::Dual, mesh)
     }
     fn gather(&self, mesh: &PolyMesh, origin: Origin, _wants: &dyn Wants) -> Gather {
         match origin {

@@ -20,8 +20,9 @@ use crate::mesh::IdMap;
 use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
+use crate::mesh::Tags;
 use crate::mesh::VertexId;
-use crate::sdc::host::{Refined, RefinementHost, RegularSpline};
+use crate::sdc::host::{refuse_tags, Refined, RefinementHost, RegularSpline};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::{Corner as C, Edge as E, Face as F, Vertex as V};
 use crate::sdc::slots::Valence::{Any, Fixed};
@@ -139,6 +140,9 @@ impl RefinementHost for FcvSplit {
     }
     fn refine(&self, mesh: &PolyMesh) -> Result<Refined, Error> {
         refine(mesh)
+    }
+    fn refine_tags(&self, mesh: &PolyMesh, _: &[Origin]) -> Result<Option<Tags>, Error> {
+        refuse_tags(Host::Fcv, mesh)
     }
     fn gather(&self, mesh: &PolyMesh, origin: Origin, _wants: &dyn Wants) -> Gather {
         fcv(mesh, origin).map(Gathered::one)

@@ -8,8 +8,9 @@
 //! triangles.
 
 use crate::error::Error;
+use crate::mesh::Tags;
 use crate::mesh::{PolyMesh, SectorKind, VertexId};
-use crate::sdc::host::{Refined, RefinementHost, RegularSpline, TriangleSplit};
+use crate::sdc::host::{refuse_tags, Refined, RefinementHost, RegularSpline, TriangleSplit};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::{Edge as E, Face as F, Vertex as V};
 use crate::sdc::slots::Valence::{Any, Fixed};
@@ -38,6 +39,9 @@ impl RefinementHost for MixedQuadTriangle {
     }
     fn refine(&self, mesh: &PolyMesh) -> Result<Refined, Error> {
         primal_split::refine(mesh, TriangleSplit::FourTriangles)
+    }
+    fn refine_tags(&self, mesh: &PolyMesh, _: &[Origin]) -> Result<Option<Tags>, Error> {
+        refuse_tags(Host::MixedQuadTriangle, mesh)
     }
     fn gather(&self, mesh: &PolyMesh, origin: Origin, wants: &dyn Wants) -> Gather {
         match origin {

@@ -8,7 +8,7 @@
 //! A_4 (binary primal refinement of quads).
 
 use crate::error::Error;
-use crate::mesh::{PolyMesh, SectorKind, VertexId};
+use crate::mesh::{PolyMesh, SectorKind, Tags, VertexId};
 use crate::sdc::host::{Refined, RefinementHost, RegularSpline, TriangleSplit};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::{Edge as E, Face as F, Vertex as V};
@@ -18,7 +18,7 @@ use crate::sdc::slots::{
     GatherError, Gathered, HostSpec, Part, RuleSlots, Wants, ONE, PER_J, QUAD_VERTEX,
 };
 use crate::sdc::{CentreKind, Origin};
-use crate::topology::primal_split::{self, primal_edge};
+use crate::topology::primal_split::{self, primal_edge, tagged, EDGE_CREASE, VERTEX_CORNER, VERTEX_CREASE};
 
 pub struct PrimalQuad;
 
@@ -38,7 +38,14 @@ impl RefinementHost for PrimalQuad {
     fn refine(&self, mesh: &PolyMesh) -> Result<Refined, Error> {
         primal_split::refine(mesh, TriangleSplit::FacePointQuads)
     }
+    fn refine_tags(&self, mesh: &PolyMesh, vertex_origins: &[Origin]) -> Result<Option<Tags>, Error> {
+        primal_split::refine_tags(mesh, vertex_origins)
+    }
     fn gather(&self, mesh: &PolyMesh, origin: Origin, wants: &dyn Wants) -> Gather {
+        // boundary, crease and corner rules at tagged origins
+        if let Some(g) = tagged(Host::PrimalQuad, mesh, origin, wants) {
+            return g;
+        }
         match origin {
             // a mask that weighs the fan faces' corners takes any polygons;
             // without them the rule is written for quads and refuses others
@@ -107,6 +114,9 @@ const RULES: &[RuleSlots] = &[
         "the edge point seen from an extraordinary end v (valence n != 4); e_0 is the edge's other end",
     ),
     rule("face", F, Any, &[fam("corner", PER_J, "corner j of the n-gon")], "the face point of an n-gon"),
+    VERTEX_CREASE,
+    VERTEX_CORNER,
+    EDGE_CREASE,
 ];
 
 /// The primal quad vertex rule over any polygons: per fan face j its

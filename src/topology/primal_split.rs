@@ -2,14 +2,20 @@
 //! (1 -> 4 triangles) refinement, and any mixture (4-3 subdivision). The
 //! split, its counting rule and the edge gatherer shared by the three primal
 //! hosts (`primal_quad`, `primal_triangle`, `mixed_quad_triangle`), which
-//! state which triangle split they use.
+//! state which triangle split they use; and the boundary, crease and corner
+//! rules of the primal quad and triangle hosts (declarations, the gatherer's
+//! routing of tagged origins, and what a split does to tags).
 
 use crate::mesh::IdMap;
 
 use crate::error::Error;
-use crate::mesh::{PolyMesh, VertexId};
+use crate::mesh::{PolyMesh, Tags, VertexId, VertexTag};
 use crate::sdc::host::{Refined, TriangleSplit};
-use crate::sdc::slots::{ev_part, sized, Gather, GatherError, Gathered, Part, Wants};
+use crate::sdc::slots::OriginKind::{Edge as E, Vertex as V};
+use crate::sdc::slots::Valence::{Any, Fixed};
+use crate::sdc::slots::{
+    ev_part, fam, rule, sized, Arity, Gather, GatherError, Gathered, Host, Part, RuleSlots, Wants, ONE,
+};
 use crate::sdc::Origin;
 use crate::topology::chart_builder::ChartBuilder;
 
@@ -104,6 +110,124 @@ pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, Error> {
     Ok(Refined { mesh: new_mesh, vertex_origins: origins, face_parents: parents })
 }
 
+// Boundary, crease and corner rules (Hoppe et al. 1994; OpenSubdiv's
+// Sdc::Crease at infinite sharpness), declared once for the primal quad and
+// triangle hosts. A tagged mesh (`mesh::tags`) routes a vertex by its kind
+// (smooth and dart: the host's smooth vertex rule; crease: `vertex-crease`;
+// corner: `vertex-corner`) and a sharp edge to `edge-crease`; an edge
+// between a crease vertex and a smooth one keeps the smooth edge rule.
+
+/// The rule of a crease or boundary vertex (two sharp edges).
+pub(crate) const VERTEX_CREASE: RuleSlots = RuleSlots {
+    optional: true,
+    ..rule(
+        "vertex-crease",
+        V,
+        Any,
+        &[
+            fam("centre", ONE, "the vertex v"),
+            fam(
+                "crease",
+                Arity::Fixed(2),
+                "the neighbours of v across its two sharp (boundary or crease) edges, j = 0, 1",
+            ),
+        ],
+        "the new vertex point of a crease or boundary vertex v (two sharp edges; n: the number of faces at v)",
+    )
+};
+/// The rule of a corner vertex (a corner tag, or three or more sharp edges).
+pub(crate) const VERTEX_CORNER: RuleSlots = RuleSlots {
+    optional: true,
+    ..rule(
+        "vertex-corner",
+        V,
+        Any,
+        &[fam("centre", ONE, "the vertex v")],
+        "the new vertex point of a corner v (a corner tag or three or more sharp edges; n: the number of faces at v)",
+    )
+};
+/// The rule of a sharp (boundary or crease) edge.
+pub(crate) const EDGE_CREASE: RuleSlots = RuleSlots {
+    optional: true,
+    ..rule(
+        "edge-crease",
+        E,
+        Fixed(2),
+        &[fam("ends", Arity::Fixed(2), "the edge's two ends")],
+        "the new edge point of a sharp (boundary or crease) edge",
+    )
+};
+
+/// The slots of a tagged origin on a primal quad or triangle host: `None`
+/// where the host's smooth rules apply (an untagged mesh, a smooth or dart
+/// vertex, an edge that is not sharp, a face), else the boundary, crease or
+/// corner rule's slots, or `MissingRule` when the mask has no weights for it.
+pub(crate) fn tagged(host: Host, mesh: &PolyMesh, origin: Origin, wants: &dyn Wants) -> Option<Gather> {
+    mesh.tags.as_ref()?;
+    let part = match origin {
+        Origin::Vertex(v) => {
+            // a vertex of no face has no rule at all (the smooth gatherer says why)
+            let n = mesh.incident_faces(v).len();
+            match mesh.vertex_tag(v) {
+                VertexTag::Smooth | VertexTag::Dart => return None,
+                _ if n == 0 => return None,
+                VertexTag::Crease(a, b) => {
+                    let mut p = Part::around(VERTEX_CREASE.name, n, v);
+                    p.put("centre", 0, v);
+                    p.put("crease", 0, a);
+                    p.put("crease", 1, b);
+                    p
+                }
+                VertexTag::Corner => {
+                    let mut p = Part::around(VERTEX_CORNER.name, n, v);
+                    p.put("centre", 0, v);
+                    p
+                }
+            }
+        }
+        Origin::Edge(a, b) if mesh.is_sharp(a, b) => {
+            let mut p = Part::new(EDGE_CREASE.name, 2);
+            p.put("ends", 0, a);
+            p.put("ends", 1, b);
+            p
+        }
+        Origin::Edge(..) | Origin::Face(_) | Origin::Corner { .. } => return None,
+    };
+    Some(match wants.rule(part.rule) {
+        true => Ok(Gathered::one(part)),
+        false => Err(GatherError::MissingRule(host, part.rule)),
+    })
+}
+
+/// The tags after a primal split (the primal quad and triangle hosts'
+/// `refine_tags`): a new vertex of an old vertex c is a corner iff c is; the
+/// two halves vertex(a)–edge(a, b) and edge(a, b)–vertex(b) of a sharp edge
+/// a–b are sharp. No other new edge is sharp.
+pub(crate) fn refine_tags(mesh: &PolyMesh, vertex_origins: &[Origin]) -> Result<Option<Tags>, Error> {
+    let Some(tags) = mesh.tags.as_ref() else { return Ok(None) };
+    let mut of_vertex = vec![None; mesh.num_vertices()];
+    for (i, o) in vertex_origins.iter().enumerate() {
+        if let Origin::Vertex(c) = *o {
+            of_vertex[c] = Some(i);
+        }
+    }
+    let new = |c: VertexId| {
+        of_vertex[c].ok_or_else(|| Error::Message(format!("the primal split has no new vertex of vertex {c}")))
+    };
+    let mut out = Tags::new();
+    for (i, o) in vertex_origins.iter().enumerate() {
+        match *o {
+            Origin::Vertex(c) if tags.is_corner(c) => out.mark_corner(i),
+            Origin::Edge(a, b) if tags.is_sharp(a, b) => {
+                out.mark_sharp(new(a)?, i);
+                out.mark_sharp(i, new(b)?);
+            }
+            _ => {}
+        }
+    }
+    Ok(Some(out))
+}
+
 /// The larger of the face and vertex counts after one primal split of `mesh`:
 /// a face with a face point becomes one quad per corner, a triangle without
 /// one 4 triangles; old vertices, one per edge, one per face point.
@@ -117,7 +241,13 @@ pub(crate) fn size_bound(mesh: &PolyMesh, tri: TriangleSplit) -> usize {
 /// Whether vertex v is extraordinary for a primal host: a closed fan of
 /// `size`-gons whose count is not the regular valence. (Vertices with open
 /// fans, such as the rim of a truncated neighbourhood, lie in the regular part.)
+///
+/// A crease or corner vertex of a tagged mesh is not: the edges at it keep
+/// the smooth edge rule (as OpenSubdiv's do at sharpness 0).
 fn extraordinary(mesh: &PolyMesh, v: VertexId, size: usize) -> bool {
+    if mesh.tags.is_some() && matches!(mesh.vertex_tag(v), VertexTag::Crease(..) | VertexTag::Corner) {
+        return false;
+    }
     let regular = if size == 4 { 4 } else { 6 };
     // from the cached fan: every edge at v asks, so copying the fan would cost valence²
     mesh.fan_corners(v).is_some_and(|fan| fan.len() != regular && fan.iter().all(|&(f, _)| mesh.face(f).len() == size))

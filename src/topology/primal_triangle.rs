@@ -7,7 +7,7 @@
 //! triangles) where the rules are Loop's.
 
 use crate::error::Error;
-use crate::mesh::{PolyMesh, SectorKind};
+use crate::mesh::{PolyMesh, SectorKind, Tags};
 use crate::sdc::host::{Refined, RefinementHost, RegularSpline, TriangleSplit};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::{Edge as E, Vertex as V};
@@ -17,7 +17,7 @@ use crate::sdc::slots::{
     TRI_VERTEX,
 };
 use crate::sdc::{CentreKind, Origin};
-use crate::topology::primal_split::{self, primal_edge};
+use crate::topology::primal_split::{self, primal_edge, tagged, EDGE_CREASE, VERTEX_CORNER, VERTEX_CREASE};
 
 pub struct PrimalTriangle;
 
@@ -37,7 +37,14 @@ impl RefinementHost for PrimalTriangle {
     fn refine(&self, mesh: &PolyMesh) -> Result<Refined, Error> {
         primal_split::refine(mesh, TriangleSplit::FourTriangles)
     }
+    fn refine_tags(&self, mesh: &PolyMesh, vertex_origins: &[Origin]) -> Result<Option<Tags>, Error> {
+        primal_split::refine_tags(mesh, vertex_origins)
+    }
     fn gather(&self, mesh: &PolyMesh, origin: Origin, wants: &dyn Wants) -> Gather {
+        // boundary, crease and corner rules at tagged origins
+        if let Some(g) = tagged(Host::PrimalTriangle, mesh, origin, wants) {
+            return g;
+        }
         match origin {
             Origin::Vertex(v) => vertex_fan_part("vertex", mesh, v, Some(3)).map(Gathered::one),
             Origin::Edge(a, b) => primal_edge(mesh, a, b, 3, wants),
@@ -88,6 +95,9 @@ const RULES: &[RuleSlots] = &[
         true,
         "the edge point seen from an extraordinary end v (valence n != 6); e_0 is the edge's other end",
     ),
+    VERTEX_CREASE,
+    VERTEX_CORNER,
+    EDGE_CREASE,
 ];
 
 #[cfg(test)]

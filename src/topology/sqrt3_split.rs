@@ -21,7 +21,8 @@ use crate::error::Error;
 use crate::mesh::FaceId;
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
-use crate::sdc::host::{Refined, RefinementHost, RegularSpline};
+use crate::mesh::Tags;
+use crate::sdc::host::{refuse_tags, Refined, RefinementHost, RegularSpline};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::{Face as F, Vertex as V};
 use crate::sdc::slots::Valence::Any;
@@ -116,6 +117,9 @@ impl RefinementHost for Sqrt3Split {
     }
     fn refine(&self, mesh: &PolyMesh) -> Result<Refined, Error> {
         refine(mesh)
+    }
+    fn refine_tags(&self, mesh: &PolyMesh, _: &[Origin]) -> Result<Option<Tags>, Error> {
+        refuse_tags(Host::Sqrt3, mesh)
     }
     fn gather(&self, mesh: &PolyMesh, origin: Origin, _wants: &dyn Wants) -> Gather {
         match origin {

@@ -19,7 +19,8 @@ use crate::mesh::IdMap;
 use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
-use crate::sdc::host::{Refined, RefinementHost, RegularSpline};
+use crate::mesh::Tags;
+use crate::sdc::host::{refuse_tags, Refined, RefinementHost, RegularSpline};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::{Corner as C, Edge as E, Vertex as V};
 use crate::sdc::slots::Valence::{Any, Fixed};
@@ -123,6 +124,9 @@ impl RefinementHost for TernarySplit {
     }
     fn refine(&self, mesh: &PolyMesh) -> Result<Refined, Error> {
         refine(mesh)
+    }
+    fn refine_tags(&self, mesh: &PolyMesh, _: &[Origin]) -> Result<Option<Tags>, Error> {
+        refuse_tags(Host::Ternary, mesh)
     }
     fn gather(&self, mesh: &PolyMesh, origin: Origin, _wants: &dyn Wants) -> Gather {
         match origin {
