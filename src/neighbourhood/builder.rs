@@ -46,12 +46,11 @@ pub fn build_patch(config: &Configuration, rings: usize) -> (PolyMesh, Vec<usize
     let r = rings as i64;
     // lattice points are doubled when FCVs sit at face centres
     let k: i64 = if config.face_control { 2 } else { 1 };
-    // an open (boundary or corner) fan gets one empty chart sector after its
+    // an open (boundary or corner) fan gets empty chart sectors after its
     // last, so that its last ray is not sector 0's (`Configuration::chart_sectors`)
     let mut sector_kinds = config.sectors.clone();
-    if config.tagging.is_some_and(|t| t.is_open()) {
-        sector_kinds.push(*config.sectors.last().expect("a configuration has a sector"));
-    }
+    let last = *config.sectors.last().expect("a configuration has a sector");
+    sector_kinds.resize(config.chart_sectors(), last);
     let mut b = PatchBuilder {
         chart: Chart { sector_kinds, scale: k, vertex_coords: Vec::new(), face_sector: Vec::new() },
         ids: IdMap::default(),

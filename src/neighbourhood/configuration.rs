@@ -124,10 +124,19 @@ impl Configuration {
     }
 
     /// Sectors of the configuration's lattice charts: an open (boundary or
-    /// corner) fan of k sectors has one more, empty, after its last, so that
-    /// the last boundary ray is a ray of its own and not sector 0's.
+    /// corner) fan of k sectors has k + 1 more, empty, after its last, so
+    /// that its last ray is a ray of its own (not sector 0's) and the
+    /// charts' "short way round" between two of its sectors never crosses
+    /// the gap (`Chart::in_chart` goes forward when that is at most half
+    /// the chart: with one empty sector, k = 1 would see its last ray from
+    /// the wrong side).
     pub fn chart_sectors(&self) -> usize {
-        self.sectors.len() + usize::from(self.tagging.is_some_and(Tagging::is_open))
+        let n = self.sectors.len();
+        if self.tagging.is_some_and(Tagging::is_open) {
+            2 * n + 1
+        } else {
+            n
+        }
     }
 }
 
