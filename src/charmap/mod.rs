@@ -106,9 +106,9 @@ pub struct CharMap {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tagging: Option<String>,
     /// at a tagged vertex, the angle (degrees, counter-clockwise) from the
-    /// image of the first sharp ray to that of the last one, next to the
-    /// centre: 180 for a smooth boundary or crease, the corner's angle at a
-    /// corner (convex below 180, concave above)
+    /// image of the first sharp ray's vertex next to the centre to that of
+    /// the last sharp ray's (level 0; a limit tangent angle only where both
+    /// rays' images are straight, as when λ1 = λ2 is the curve's 1/2)
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ray_angle_degrees: Option<f64>,
     pub params: std::collections::BTreeMap<String, String>,
@@ -223,6 +223,12 @@ pub fn check_map_over(
         return Ok(out);
     }
     let d = &analysis.discovered;
+    if let Some(why) = collapsed_rays(d, &pair.values) {
+        out.spectral_status = SpectralStatus::NotDominant;
+        out.explanation = why.clone();
+        out.reasons.push(format!("no characteristic map: {why}"));
+        return Ok(out);
+    }
     let level0 = net::initial_points(d, &pair.values)?;
     let steps = scheme.topology().steps_per_analysis();
     let mut fine = match rows.filter(|r| r.refinements == opts.levels * steps) {
@@ -344,6 +350,38 @@ fn normalisation(d: &crate::neighbourhood::Discovered, values: &[[f64; 2]], raw:
     let k = if radius > 0.0 { 1.0 / radius } else { 1.0 };
     // rotate by −θ after flipping y
     Matrix2::new(k * c, k * s * flip, -k * s, k * c * flip)
+}
+
+/// Why a tagged vertex's map would send its sharp rays to the centre, if it
+/// would. The rows of the vertices on a sharp curve read only that curve
+/// (the crease rules), so S is block triangular and an eigenvector of an
+/// eigenvalue that is not the curve's vanishes on the curve: when λ1 and
+/// λ2 are not among the curve's eigenvalues (Hoppe's rules at larger k),
+/// the map collapses every sharp ray to a point and cannot be injective.
+/// Decided on the level-0 values (largest ray value against the largest
+/// value, relative tolerance 1e-9).
+fn collapsed_rays(d: &crate::neighbourhood::Discovered, values: &[[f64; 2]]) -> Option<String> {
+    let tagging = d.config.tagging?;
+    let rays = tagging.sharp_rays(d.config.valence());
+    let size = |p: &[f64; 2]| p[0].hypot(p[1]);
+    let all = values.iter().map(size).fold(0.0, f64::max);
+    let on_rays = d
+        .analysis
+        .iter()
+        .zip(values)
+        .filter(|(&v, _)| {
+            let l = &d.labels[v];
+            l.j == 0 && l.i > 0 && rays.contains(&l.sector)
+        })
+        .map(|(_, p)| size(p))
+        .fold(0.0, f64::max);
+    (on_rays <= 1e-9 * all).then(|| {
+        format!(
+            "the subdominant eigenvectors vanish on the sharp rays (largest value there {on_rays:.3e} against \
+             {all:.3e}): λ1 and λ2 are not eigenvalues of the sharp curve's rows, so the map sends the \
+             rays to the centre and is not injective"
+        )
+    })
 }
 
 /// The angle (degrees in [0, 360), counter-clockwise) from the image of the
