@@ -26,6 +26,7 @@ mod limits;
 mod mesh_fuzz;
 mod non_box_refine;
 mod refine;
+mod refine_boundary;
 mod shape_chart_cli;
 mod sqrt3_refine;
 mod sweep;

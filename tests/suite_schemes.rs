@@ -12,6 +12,7 @@
 
 mod common;
 
+mod boundary_rules;
 mod catmull_clark;
 mod curves;
 mod doo_sabin;

@@ -95,34 +95,5 @@ impl Tags {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::mesh::PolyMesh;
-
-    /// A 2 x 1 strip of quads: every open edge becomes sharp, the middle
-    /// edge does not; the four outer corners have two sharp edges (a
-    /// boundary "crease" unless tagged corner), the middle boundary vertices
-    /// too, and a corner tag wins.
-    #[test]
-    fn open_edges_tag_as_boundary_and_vertices_read_their_kind() {
-        // 0 1 2 / 3 4 5
-        let mut m = PolyMesh::new(6, vec![vec![0, 1, 4, 3], vec![1, 2, 5, 4]]).unwrap();
-        assert_eq!(m.vertex_tag(1), VertexTag::Smooth, "untagged mesh");
-        m.tag_open_edges();
-        assert!(m.is_sharp(0, 1) && m.is_sharp(1, 0) && m.is_sharp(2, 5));
-        assert!(!m.is_sharp(1, 4), "the shared edge is interior");
-        assert_eq!(m.tags.as_ref().unwrap().sharp_edges().len(), 6);
-        match m.vertex_tag(1) {
-            VertexTag::Crease(a, b) => assert_eq!([a.min(b), a.max(b)], [0, 2]),
-            t => panic!("{t:?}"),
-        }
-        m.tags.as_mut().unwrap().mark_corner(0);
-        assert_eq!(m.vertex_tag(0), VertexTag::Corner);
-        // one more sharp edge at 1 makes it a corner; at an interior vertex, a dart
-        m.tags.as_mut().unwrap().mark_sharp(1, 4);
-        assert_eq!(m.vertex_tag(1), VertexTag::Corner);
-        let t = m.tags.as_ref().unwrap().renumbered(&[1, 4]);
-        assert!(t.is_sharp(0, 1) && t.sharp_edges().len() == 1 && t.corners().is_empty());
-    }
-}
+// tested beside the `PolyMesh` queries that read the tags (`mesh::polymesh`):
+// this file imports nothing of the mesh, not even in its tests

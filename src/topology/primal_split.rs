@@ -324,3 +324,49 @@ pub(crate) fn primal_edge(mesh: &PolyMesh, a: VertexId, b: VertexId, size: usize
     };
     Ok(Gathered::replacing(parts, p))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sdc::host::Registry;
+    use crate::topology::host_tests::All;
+
+    /// A 2 x 1 strip of quads with its open edges sharp and a corner at 0:
+    /// the refined tags halve every sharp edge and keep the corner, and the
+    /// gatherer routes each origin by its tag.
+    #[test]
+    fn a_split_refines_tags_and_the_gatherer_routes_by_them() {
+        // 0 1 2 / 3 4 5
+        let mut m = PolyMesh::new(6, vec![vec![0, 1, 4, 3], vec![1, 2, 5, 4]]).unwrap();
+        m.tag_open_edges();
+        m.tags.as_mut().unwrap().mark_corner(0);
+        for host in [Host::PrimalQuad, Host::PrimalTriangle] {
+            let r = host.refine(&m).unwrap();
+            let tags = r.mesh.tags.as_ref().unwrap();
+            assert_eq!(tags.sharp_edges().len(), 2 * 6, "{host:?}");
+            assert_eq!(tags.corners(), vec![0]);
+            for (a, b) in m.tags.as_ref().unwrap().sharp_edges() {
+                let e = r.vertex_origins.iter().position(|o| *o == Origin::Edge(a, b) || *o == Origin::Edge(b, a));
+                let e = e.unwrap();
+                assert!(tags.is_sharp(a, e) && tags.is_sharp(e, b));
+            }
+        }
+        let unit = Host::PrimalQuad.unit();
+        let rule = |o: Origin| unit.gather(&m, o, &All).map(|g| g.parts[0].rule);
+        assert_eq!(rule(Origin::Vertex(0)), Ok("vertex-corner"));
+        assert_eq!(rule(Origin::Vertex(1)), Ok("vertex-crease"));
+        assert_eq!(rule(Origin::Edge(0, 1)), Ok("edge-crease"));
+        // the middle edge is not sharp: the smooth edge rule reaches over the open rim
+        assert_eq!(rule(Origin::Edge(1, 4)), Ok("edge"));
+        assert_eq!(rule(Origin::Face(0)), Ok("face"));
+        let slots = unit.gather(&m, Origin::Vertex(1), &All).unwrap().parts[0].slots.clone();
+        let targets: Vec<_> = slots.iter().map(|s| (s.family, s.j, s.target.clone())).collect();
+        use crate::sdc::slots::Target::Vertex as T;
+        let VertexTag::Crease(a, b) = m.vertex_tag(1) else { panic!() };
+        assert_eq!(targets, vec![("centre", 0, T(1)), ("crease", 0, T(a)), ("crease", 1, T(b))]);
+        // another host refuses the tagged mesh in one line naming it
+        let e = Host::Dual.refine(&m).unwrap_err().to_string();
+        assert!(e.contains("dual host") && e.contains("boundary/crease rules are not available"), "{e}");
+        assert!(Host::Dual.check_tags(&PolyMesh::new(3, vec![vec![0, 1, 2]]).unwrap()).is_ok());
+    }
+}
