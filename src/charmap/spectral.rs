@@ -49,19 +49,25 @@ pub struct Pair {
     pub values: Vec<[f64; 2]>,
 }
 
+impl Pair {
+    /// No pair (yet), with the reason.
+    fn missing(why: &str) -> Pair {
+        Pair {
+            status: SpectralStatus::Missing,
+            explanation: why.to_string(),
+            lambda: f64::NAN,
+            blocks: Vec::new(),
+            values: Vec::new(),
+        }
+    }
+}
+
 /// The subdominant pair of `spec`, or the reason there is none.
 pub fn subdominant_pair(spec: &Spectrum) -> Pair {
-    let mut pair = Pair {
-        status: SpectralStatus::Missing,
-        explanation: String::new(),
-        lambda: f64::NAN,
-        blocks: Vec::new(),
-        values: Vec::new(),
-    };
     let Some(l1) = spec.eigenvalues.get(1) else {
-        pair.explanation = "the spectrum has no subdominant eigenvalue".into();
-        return pair;
+        return Pair::missing("the spectrum has no subdominant eigenvalue");
     };
+    let mut pair = Pair::missing("");
     pair.lambda = l1.re;
     pair.blocks = l1.blocks.clone();
     let (status, why) = if !l1.is_real() || l1.re <= 0.0 {
@@ -191,17 +197,10 @@ fn independent(a: &[f64], b: &[f64]) -> bool {
 /// criterion allows two different subdominant eigenvalues: the map is then
 /// scaled by λ1 in one direction and λ2 in the other). `lambda` is λ1.
 pub fn sector_pair(spec: &Spectrum) -> Pair {
-    let mut pair = Pair {
-        status: SpectralStatus::Missing,
-        explanation: String::new(),
-        lambda: f64::NAN,
-        blocks: Vec::new(),
-        values: Vec::new(),
-    };
     let Some(l1) = spec.eigenvalues.get(1) else {
-        pair.explanation = "the spectrum has no subdominant eigenvalue".into();
-        return pair;
+        return Pair::missing("the spectrum has no subdominant eigenvalue");
     };
+    let mut pair = Pair::missing("");
     pair.lambda = l1.re;
     if !spec.verdict.c1_spectral {
         pair.status = SpectralStatus::NotDominant;
