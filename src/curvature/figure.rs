@@ -351,61 +351,121 @@ pub fn face_signs(sampler: &RingSampler, pts: &[Option<[f64; 3]>], polar: bool) 
 /// y² through `points` (0 when fewer than 6 points, rank-deficient, or the
 /// determinant is at rounding level).
 pub fn fitted_sign(points: &[[f64; 3]]) -> i8 {
-    let m = points.len();
-    if m < 6 {
-        return 0;
+    let xy: Vec<[f64; 2]> = points.iter().map(|p| [p[0], p[1]]).collect();
+    let z: Vec<f64> = points.iter().map(|p| p[2]).collect();
+    QuadraticFit::new(&xy).sign(&z)
+}
+
+/// The least-squares fit z ≈ 1, x, y, x², xy, y² over fixed plane points,
+/// prepared once: the SVD of the design matrix depends on the points only,
+/// so the shape chart, which fits dozens of heights over one characteristic
+/// ring, factors each face's matrix once and solves per height.
+pub struct QuadraticFit {
+    /// None: fewer than 6 points, all at one place, or rank-deficient (the
+    /// fit then reads no sign)
+    svd: Option<nalgebra::SVD<f64, nalgebra::Dyn, nalgebra::Dyn>>,
+}
+
+impl QuadraticFit {
+    pub fn new(xy: &[[f64; 2]]) -> QuadraticFit {
+        let m = xy.len();
+        if m < 6 {
+            return QuadraticFit { svd: None };
+        }
+        // centred and scaled for conditioning: the Hessian's sign is unchanged
+        let c = xy.iter().fold([0.0; 2], |a, p| [a[0] + p[0] / m as f64, a[1] + p[1] / m as f64]);
+        let h = xy.iter().map(|p| (p[0] - c[0]).hypot(p[1] - c[1])).fold(0.0, f64::max);
+        if h.is_nan() || h <= 0.0 {
+            return QuadraticFit { svd: None };
+        }
+        let uv = |p: &[f64; 2]| [(p[0] - c[0]) / h, (p[1] - c[1]) / h];
+        let a = nalgebra::DMatrix::<f64>::from_fn(m, 6, |i, j| {
+            let [u, v] = uv(&xy[i]);
+            [1.0, u, v, u * u, u * v, v * v][j]
+        });
+        let svd = a.svd(true, true);
+        let top = svd.singular_values.iter().cloned().fold(0.0, f64::max);
+        let full_rank = !svd.singular_values.iter().any(|s| *s <= 1e-10 * top);
+        QuadraticFit { svd: full_rank.then_some(svd) }
     }
-    // centred and scaled for conditioning: the Hessian's sign is unchanged
-    let c = points.iter().fold([0.0; 2], |a, p| [a[0] + p[0] / m as f64, a[1] + p[1] / m as f64]);
-    let h = points.iter().map(|p| (p[0] - c[0]).hypot(p[1] - c[1])).fold(0.0, f64::max);
-    if h.is_nan() || h <= 0.0 {
-        return 0;
-    }
-    let uv = |p: &[f64; 3]| [(p[0] - c[0]) / h, (p[1] - c[1]) / h];
-    let a = nalgebra::DMatrix::<f64>::from_fn(m, 6, |i, j| {
-        let [u, v] = uv(&points[i]);
-        [1.0, u, v, u * u, u * v, v * v][j]
-    });
-    let b = nalgebra::DVector::<f64>::from_iterator(m, points.iter().map(|p| p[2]));
-    let svd = a.svd(true, true);
-    let top = svd.singular_values.iter().cloned().fold(0.0, f64::max);
-    if svd.singular_values.iter().any(|s| *s <= 1e-10 * top) {
-        return 0;
-    }
-    let Ok(x) = svd.solve(&b, 0.0) else { return 0 };
-    let (p, r, s) = (x[3], x[4], x[5]);
-    let det = 4.0 * p * s - r * r;
-    if !det.is_finite() || det.abs() <= 1e-10 * (p * p + r * r + s * s).max(1e-300) {
-        0
-    } else if det > 0.0 {
-        1
-    } else {
-        -1
+
+    /// The sign of det Hess of the fit to heights `z` (one per point, in the
+    /// points' order); 0 where the fit reads none.
+    pub fn sign(&self, z: &[f64]) -> i8 {
+        let Some(svd) = &self.svd else { return 0 };
+        let b = nalgebra::DVector::<f64>::from_column_slice(z);
+        let Ok(x) = svd.solve(&b, 0.0) else { return 0 };
+        let (p, r, s) = (x[3], x[4], x[5]);
+        let det = 4.0 * p * s - r * r;
+        if !det.is_finite() || det.abs() <= 1e-10 * (p * p + r * r + s * s).max(1e-300) {
+            0
+        } else if det > 0.0 {
+            1
+        } else {
+            -1
+        }
     }
 }
 
 /// The sampler's ring faces in the plane with the fitted sign of each
 /// (the neighbourhood: every face sharing a corner, its corners and face point).
 fn ring_signs(sampler: &RingSampler, pts: &[Option<[f64; 3]>]) -> Vec<(Vec<[f64; 2]>, i8)> {
-    let mesh = &sampler.net.mesh;
-    let vf = mesh.vertex_faces();
-    sampler
-        .ring_faces
-        .iter()
-        .map(|&f| {
-            let face = mesh.face(f);
-            let poly: Vec<[f64; 2]> = face.iter().map(|&v| pts[v].map_or([f64::NAN; 2], |p| [p[0], p[1]])).collect();
-            let mut near = BTreeSet::new();
-            for &v in face {
-                for &g in &vf[v] {
-                    near.extend(mesh.face(g).iter().copied().chain(mesh.face_point(g)));
+    let xy: Vec<Option<[f64; 2]>> = pts.iter().map(|p| p.map(|p| [p[0], p[1]])).collect();
+    let z: Vec<f64> = pts.iter().map(|p| p.map_or(f64::NAN, |p| p[2])).collect();
+    let fits = RingFits::new(sampler, &xy);
+    fits.faces.iter().map(|f| (f.poly.clone(), f.sign(&z))).collect()
+}
+
+/// The fits of every ring face of a sampler over one plane map (the refined
+/// points' x, y), prepared for many heights over the same map
+/// ([`QuadraticFit`]). Non-polar nets only: a polar net's faces come from
+/// circles refined around per height ([`face_signs`]).
+pub struct RingFits {
+    pub faces: Vec<FaceFit>,
+}
+
+/// One ring face: its polygon in the plane, the net vertices its fit reads
+/// (the defined corners and face points of every face sharing a corner with
+/// it) and the prepared fit over their plane positions.
+pub struct FaceFit {
+    pub poly: Vec<[f64; 2]>,
+    sample: Vec<usize>,
+    fit: QuadraticFit,
+}
+
+impl FaceFit {
+    /// The fitted sign for heights `z` over the net's vertices.
+    pub fn sign(&self, z: &[f64]) -> i8 {
+        let heights: Vec<f64> = self.sample.iter().map(|&v| z[v]).collect();
+        self.fit.sign(&heights)
+    }
+}
+
+impl RingFits {
+    /// `xy`: the refined points in the plane, None where undefined.
+    pub fn new(sampler: &RingSampler, xy: &[Option<[f64; 2]>]) -> RingFits {
+        let mesh = &sampler.net.mesh;
+        let vf = mesh.vertex_faces();
+        let faces = sampler
+            .ring_faces
+            .iter()
+            .map(|&f| {
+                let face = mesh.face(f);
+                let poly: Vec<[f64; 2]> = face.iter().map(|&v| xy[v].unwrap_or([f64::NAN; 2])).collect();
+                let mut near = BTreeSet::new();
+                for &v in face {
+                    for &g in &vf[v] {
+                        near.extend(mesh.face(g).iter().copied().chain(mesh.face_point(g)));
+                    }
                 }
-            }
-            near.extend(mesh.face_point(f));
-            let sample: Vec<[f64; 3]> = near.iter().filter_map(|&v| pts[v]).collect();
-            (poly, fitted_sign(&sample))
-        })
-        .collect()
+                near.extend(mesh.face_point(f));
+                let sample: Vec<usize> = near.into_iter().filter(|&v| xy[v].is_some()).collect();
+                let plane: Vec<[f64; 2]> = sample.iter().filter_map(|&v| xy[v]).collect();
+                FaceFit { poly, fit: QuadraticFit::new(&plane), sample }
+            })
+            .collect();
+        RingFits { faces }
+    }
 }
 
 /// A polar net's (ring, spoke) grid: `grid[r][j]` the vertex on ring r of

@@ -12,7 +12,7 @@
 //! divides by the part of h that is not affine: 0 means h is the input
 //! quadratic up to a factor c and an affine part, 1 that h has nothing of q.
 
-use crate::curvature::figure::face_signs;
+use crate::curvature::figure::{face_signs, RingFits};
 use crate::curvature::{Quadratic, RingSampler};
 
 /// The characteristic ring with what every cell's measures need.
@@ -23,6 +23,9 @@ pub struct Ring<'a> {
     /// χ at the ring vertices (refined control values)
     pub chi: Vec<[f64; 2]>,
     pub polar: bool,
+    /// every ring face's fit over χ, prepared once for all heights (None:
+    /// a polar net, whose faces are refined around per height)
+    fits: Option<RingFits>,
 }
 
 impl<'a> Ring<'a> {
@@ -30,15 +33,29 @@ impl<'a> Ring<'a> {
         let xs = sampler.ring_values(&pair.iter().map(|p| p[0]).collect::<Vec<_>>());
         let ys = sampler.ring_values(&pair.iter().map(|p| p[1]).collect::<Vec<_>>());
         let chi = xs.iter().zip(&ys).map(|(x, y)| [*x, *y]).collect();
-        Ring { sampler, pair, chi, polar }
+        let fits = (!polar).then(|| RingFits::new(sampler, &sampler.points(&pair)));
+        Ring { sampler, pair, chi, polar, fits }
     }
 
     /// Fraction of ring area (in the plane of χ) whose fitted K has sign
     /// `sign` (for t = 0: where the fit reads K = 0).
     pub fn sign_fraction(&self, h: &[f64], sign: i8) -> f64 {
         let scale = h.iter().map(|v| v.abs()).fold(0.0, f64::max).max(1e-300);
-        let data: Vec<[f64; 3]> = self.pair.iter().zip(h).map(|(p, v)| [p[0], p[1], v / scale]).collect();
-        let faces = face_signs(self.sampler, &self.sampler.points(&data), self.polar);
+        let mut faces: Vec<(&[[f64; 2]], i8)> = Vec::new();
+        let polar_faces;
+        if let Some(fits) = &self.fits {
+            let z: Vec<f64> = self
+                .sampler
+                .points(&h.iter().map(|v| [v / scale]).collect::<Vec<_>>())
+                .iter()
+                .map(|p| p.map_or(f64::NAN, |p| p[0]))
+                .collect();
+            faces.extend(fits.faces.iter().map(|f| (f.poly.as_slice(), f.sign(&z))));
+        } else {
+            let data: Vec<[f64; 3]> = self.pair.iter().zip(h).map(|(p, v)| [p[0], p[1], v / scale]).collect();
+            polar_faces = face_signs(self.sampler, &self.sampler.points(&data), self.polar);
+            faces.extend(polar_faces.iter().map(|(poly, s)| (poly.as_slice(), *s)));
+        }
         let (mut agree, mut total) = (0.0, 0.0);
         for (poly, s) in &faces {
             let a = area(poly);
