@@ -180,6 +180,54 @@ pub fn check_map_over(
     opts: &CharMapOptions,
     rows: Option<&net::Net<crate::refine::SparseRow<f64>>>,
 ) -> Result<CharMap, Error> {
+    // `subdlab verify` checks one configuration's map several times (a
+    // curvature claim on the float and again on the exact analysis, several
+    // claims of one paper): the check is a function of the scheme, the
+    // configuration (which fixes the discovered patch), the subdominant pair
+    // and the options, so it is memoised on exactly those. Whether the
+    // refined map was read off given rows is part of the key: that route
+    // rounds differently, and a shared result must not depend on which
+    // caller came first.
+    let Some(identity) = scheme.identity() else {
+        return check_map_uncached(scheme, analysis, opts, rows);
+    };
+    let spec = &analysis.spectrum;
+    let tagged = spec.tagging.is_some();
+    let pair = if tagged { spectral::sector_pair(spec) } else { spectral::subdominant_pair(spec) };
+    let steps = scheme.topology().steps_per_analysis();
+    let reads_rows = rows.is_some_and(|r| r.refinements == opts.levels * steps);
+    let key = format!(
+        "{identity} {:?} {:?} c1={} rows={reads_rows} {:?} {} {:?} {:?} {:?}",
+        analysis.discovered.config,
+        opts,
+        spec.verdict.c1_spectral,
+        pair.status,
+        pair.explanation,
+        pair.lambda.to_bits(),
+        pair.blocks,
+        pair.values.iter().map(|p| [p[0].to_bits(), p[1].to_bits()]).collect::<Vec<_>>(),
+    );
+    CHECKED_MAPS
+        .get_or_try_insert(key, || check_map_uncached(scheme, analysis, opts, rows), charmap_bytes)
+        .map(|m| (*m).clone())
+}
+
+/// Checked maps, shared by every caller in the process (see
+/// [`check_map_over`]).
+static CHECKED_MAPS: crate::engine::memo::Memo<CharMap> = crate::engine::memo::Memo::new(64 << 20);
+
+/// What a memoised [`CharMap`] holds, roughly.
+fn charmap_bytes(m: &CharMap) -> usize {
+    1024 + m.control_net.iter().map(|ring| ring.len() * 16).sum::<usize>()
+        + m.reasons.iter().map(String::len).sum::<usize>()
+}
+
+fn check_map_uncached(
+    scheme: &dyn Scheme,
+    analysis: &Analysis,
+    opts: &CharMapOptions,
+    rows: Option<&net::Net<crate::refine::SparseRow<f64>>>,
+) -> Result<CharMap, Error> {
     let spec = &analysis.spectrum;
     if spec.neighbourhood != NeighbourhoodKind::Analysis {
         return Err(Error::Input("the characteristic map needs the analysis neighbourhood".into()));
