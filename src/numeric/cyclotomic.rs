@@ -600,6 +600,44 @@ thread_local! {
 const COSINE_CACHE: usize = 4096;
 
 impl Weight for Cyclotomic {
+    const SUMS_IN_BATCHES: bool = true;
+
+    /// One common denominator and one normalisation for the whole sum,
+    /// where adding in turn takes a gcd of every partial sum's content (the
+    /// rows of a cyclotomic local matrix are long sums of products). Only
+    /// when the terms lie in Q(ζ_l) for one l (rationals and elements of one
+    /// field): the result is then the normalised element of Q(ζ_l), or a
+    /// rational, exactly what adding in turn gives. Terms from several
+    /// fields are added in turn, so the field the sum is written in stays
+    /// the one adding in turn reaches.
+    fn sum_all(terms: Vec<Self>) -> Self {
+        if terms.iter().any(|t| !t.is_defined()) {
+            return Cyclotomic::undefined();
+        }
+        let terms: Vec<Cyclotomic> = terms.into_iter().filter(|t| !t.is_zero()).collect();
+        let mut orders = terms.iter().map(|t| t.order).filter(|&o| o != 1);
+        let l = orders.next().unwrap_or(1);
+        if terms.len() < 3 || orders.any(|o| o != l) {
+            return terms.into_iter().fold(Cyclotomic::zero(), |a, b| a + b);
+        }
+        let mut den = BigInt::one();
+        for t in &terms {
+            let g = den.gcd(&t.den);
+            den = &den / &g * &t.den;
+        }
+        let mut num: Vec<BigInt> = Vec::new();
+        for t in &terms {
+            let factor = &den / &t.den;
+            if num.len() < t.num.len() {
+                num.resize(t.num.len(), BigInt::zero());
+            }
+            for (acc, c) in num.iter_mut().zip(&t.num) {
+                *acc += c * &factor;
+            }
+        }
+        Cyclotomic::make(l, num, den)
+    }
+
     fn zero() -> Self {
         Cyclotomic { order: 1, num: Vec::new(), den: BigInt::one() }
     }
@@ -672,6 +710,30 @@ mod tests {
     }
     fn cos(k: i64, n: i64) -> Cyclotomic {
         Cyclotomic::cos_2pi(k, n).unwrap()
+    }
+
+    /// A batch sum is the same element, written the same way (field,
+    /// numerators, denominator), as adding in turn: 1 + 2cos(2π/5) +
+    /// 2cos(4π/5) = 0 (the sum of the fifth roots of unity), plus 1/2, collapses to a
+    /// rational; terms of two fields take the in-turn path.
+    #[test]
+    fn sums_at_once_are_sums_in_turn() {
+        let in_turn = |t: &[Cyclotomic]| t.iter().cloned().fold(Cyclotomic::zero(), |a, b| a + b);
+        let cases: Vec<Vec<Cyclotomic>> = vec![
+            vec![q(1, 3), cos(1, 7) * q(5, 4), cos(2, 7), q(-2, 9), cos(3, 7) * q(1, 6)],
+            vec![q(1, 1), cos(1, 5) * q(2, 1), cos(2, 5) * q(2, 1), q(0, 1), q(1, 2)],
+            vec![cos(1, 5), cos(1, 3), cos(1, 4), q(3, 8)],
+            vec![q(1, 2), q(1, 3), q(1, 6)],
+            vec![cos(1, 9), -cos(1, 9), cos(2, 9) * q(7, 3)],
+        ];
+        for t in &cases {
+            let (a, b) = (Cyclotomic::sum_all(t.clone()), in_turn(t));
+            assert!(a.identical(&b), "{t:?}: {a:?} vs {b:?}");
+        }
+        let five = Cyclotomic::sum_all(cases[1].clone());
+        assert!(five.identical(&q(1, 2)), "{five:?}"); // 0 + 0 + 1/2
+        let undefined = Cyclotomic::sum_all(vec![q(1, 2), q(1, 0), cos(1, 7)]);
+        assert!(!undefined.is_defined());
     }
 
     #[test]

@@ -52,6 +52,16 @@ pub trait Weight:
     /// weight that is not rational); `Err(Inexact)` when this type cannot
     /// represent it (the rationals).
     fn from_cyclotomic(c: &Cyclotomic) -> Result<Self, Inexact>;
+    /// Whether [`Weight::sum_all`] is cheaper than summing in turn, so that
+    /// a long sum should be collected first (exact types that normalise
+    /// after every addition). Sums of types that keep the default are made
+    /// in turn, in the terms' order, so floats round as they always did.
+    const SUMS_IN_BATCHES: bool = false;
+    /// Σ terms, added in turn from zero in the terms' order (the exact
+    /// types may sum at once: their sums do not depend on the order).
+    fn sum_all(terms: Vec<Self>) -> Self {
+        terms.into_iter().fold(Self::zero(), |a, b| a + b)
+    }
 }
 
 impl Weight for f64 {

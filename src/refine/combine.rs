@@ -58,7 +58,22 @@ impl<W: Weight> Combine<W> for SparseRow<W> {
             return SparseRow { entries: Vec::new() };
         };
         let mut entries: Vec<(usize, W)> = Vec::new();
-        if max < 4 * count + 64 {
+        if W::SUMS_IN_BATCHES {
+            // each index's products collected, then summed at once
+            let mut all: Vec<(usize, W)> = Vec::with_capacity(count);
+            for (w, row) in terms {
+                all.extend(row.entries.iter().map(|(i, x)| (*i, w.clone() * x.clone())));
+            }
+            all.sort_by_key(|e| e.0);
+            let mut all = all.into_iter().peekable();
+            while let Some((i, first)) = all.next() {
+                let mut group = vec![first];
+                while let Some((_, v)) = all.next_if(|e| e.0 == i) {
+                    group.push(v);
+                }
+                entries.push((i, W::sum_all(group)));
+            }
+        } else if max < 4 * count + 64 {
             let mut acc: Vec<Option<W>> = vec![None; max + 1];
             for (w, row) in terms {
                 for (i, x) in &row.entries {
