@@ -171,6 +171,10 @@ pub struct SweepArgs {
     /// points are not the answer)
     #[arg(long)]
     pub exact: bool,
+    /// with --exact: decide each piece with the interval certificate as well (slower; else the
+    /// floating-point spectrum decides)
+    #[arg(long)]
+    pub certify: bool,
     /// draw the admissible intervals (valence x swept value; with --curvature coloured by
     /// curvature class, and also for valences alone) into FILE.svg, FILE.pdf or FILE.png
     #[arg(short = 'o', long = "out", visible_alias = "plot")]

@@ -173,7 +173,7 @@ fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
         return Err(Error::Input(format!("--exact: the range {range} is empty (need START < END)")));
     }
     let fixed = params.iter().filter(|(k, _)| k != name).cloned().collect();
-    let sweep = ExactSweep { scheme: args.scheme.clone(), valences: grid.valences.clone(), param: name.clone(), lo, hi, fixed };
+    let sweep = ExactSweep { scheme: args.scheme.clone(), valences: grid.valences.clone(), param: name.clone(), lo, hi, fixed, certify: args.certify };
     let started = std::time::Instant::now();
     let sets = run(&sweep)?;
     let seconds = started.elapsed().as_secs_f64();
@@ -240,6 +240,9 @@ fn sweep(args: &SweepArgs) -> Result<(), Error> {
     }
     if args.exact {
         return sweep_exact(args);
+    }
+    if args.certify {
+        return Err(Error::Input("--certify decides the pieces of --exact; give --exact too".into()));
     }
     if args.plot.is_some() && !args.curvature && !args.params.iter().any(|p| p.contains(':')) {
         return Err(Error::Input(

@@ -61,6 +61,10 @@ pub struct ExactSweep {
     pub lo: Rational,
     pub hi: Rational,
     pub fixed: Vec<(String, String)>,
+    /// decide the pieces with the interval certificate too (else the
+    /// floating-point spectrum alone: the certificate costs seconds per
+    /// point at higher valences)
+    pub certify: bool,
 }
 
 /// A real algebraic endpoint, exactly and as a decimal.
@@ -136,7 +140,9 @@ type CPoly = Vec<Cyclotomic>;
 /// Progress of the stages on standard error (SUBDLAB_EXACT_TRACE=1).
 fn trace(what: impl FnOnce() -> String) {
     if std::env::var_os("SUBDLAB_EXACT_TRACE").is_some() {
-        eprintln!("sweep --exact: {}", what());
+        static START: std::sync::OnceLock<std::time::Instant> = std::sync::OnceLock::new();
+        let t = START.get_or_init(std::time::Instant::now).elapsed().as_secs_f64();
+        eprintln!("sweep --exact [{t:.2} s]: {}", what());
     }
 }
 
@@ -306,6 +312,7 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
         }
         samples.push(sturm::simplest_between(&a.hi, &b.lo));
     }
+    trace(|| format!("n = {n}: {} pieces to decide", samples.len()));
     // decide: pieces, range ends, candidates
     let mut decisions = Vec::new();
     let mut piece = Vec::new();
@@ -362,6 +369,7 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
         at_cand.push(d.clone());
         decisions.push(d);
     }
+    trace(|| format!("n = {n}: decided"));
     let exact = not_exact.is_empty();
     let sets = |pick: fn(&Decision) -> bool| -> Vec<ExactInterval> {
         // the sequence lo, piece 0, cand 0, piece 1, ..., piece k, hi
@@ -454,7 +462,8 @@ fn decide(s: &ExactSweep, n: usize, t: &Rational) -> Result<Decision, Error> {
     let v = &analysis.spectrum.verdict;
     let (mut convergent, mut c1) = (v.convergent, v.c1_spectral);
     let mut evidence = "floating point".to_string();
-    if let Ok(cert) = certify_analysis(scheme.as_ref(), &analysis) {
+    let cert = if s.certify { certify_analysis(scheme.as_ref(), &analysis).ok() } else { None };
+    if let Some(cert) = cert {
         match cert.verdict {
             CertVerdict::Proved => {
                 c1 = true;
@@ -586,28 +595,6 @@ fn cdeg(p: &CPoly) -> usize {
     p.len().saturating_sub(1)
 }
 
-/// Degree of the gcd of two nonzero polynomials over Q(ζ).
-fn gcd_degree(a: &CPoly, b: &CPoly) -> usize {
-    let (mut a, mut b) = (a.clone(), b.clone());
-    while !b.is_empty() {
-        // a mod b
-        let lead = b[b.len() - 1].clone();
-        while a.len() >= b.len() && !a.is_empty() {
-            let f = a[a.len() - 1].clone() / lead.clone();
-            let shift = a.len() - b.len();
-            for (i, bc) in b.iter().enumerate() {
-                a[i + shift] = a[i + shift].clone() - f.clone() * bc.clone();
-            }
-            a.pop();
-            while a.last().is_some_and(Weight::is_zero) {
-                a.pop();
-            }
-        }
-        std::mem::swap(&mut a, &mut b);
-    }
-    cdeg(&a)
-}
-
 /// The j-th principal subresultant coefficient of a (degree m) and b
 /// (degree n): the determinant of the (m+n−2j)-square matrix of the
 /// coefficients of x^i a (i < n − j) and x^i b (i < m − j) at the powers
@@ -685,19 +672,31 @@ fn first_subresultant(a: &BiPoly, b: &BiPoly) -> Result<Option<CPoly>, Error> {
         }
     }
     let e = weight_slope(a).max(weight_slope(b));
-    let bound = |j: usize| -> usize { (e.clone() * q(((m - j) * (n - j)) as i64, 1)).floor().to_usize().unwrap_or(usize::MAX) };
+    // two bounds of deg_t psc_j: isobaric weight (m − j)(n − j) times the
+    // slope, and row by row (n − j rows of a's coefficients, m − j of b's)
+    let (da, db) = (a.iter().map(TPoly::degree).max().unwrap_or(0), b.iter().map(TPoly::degree).max().unwrap_or(0));
+    let bound = |j: usize| -> usize {
+        let weight = (e.clone() * q(((m - j) * (n - j)) as i64, 1)).floor().to_usize().unwrap_or(usize::MAX);
+        weight.min((n - j) * da + (m - j) * db)
+    };
     let d0 = bound(0);
     if d0 + 1 > MAX_POINTS {
         return Err(Error::Message(format!("a subresultant of degree up to {d0} in t: beyond the exact sweep's bound")));
     }
-    // deg gcd at d0 + 1 points: psc_j vanishes at all of them for j below
-    // the minimum, and has degree ≤ d0, so vanishes identically
-    let points: Vec<Rational> = (0..=d0).map(|i| q(i as i64, 1)).collect();
+    // psc_j has degree ≤ bound(j) in t: one nonzero value shows it is not
+    // identically zero, bound(j) + 1 zeros that it is; the points 0, −1, 1,
+    // −2, 2, ... keep the numbers small
+    let points: Vec<Rational> =
+        (0..=d0 as i64).map(|i| if i % 2 == 0 { q(i / 2, 1) } else { q(-(i + 1) / 2, 1) }).collect();
     let evals: Vec<(CPoly, CPoly)> = points.iter().map(|t| (eval_x(a, t), eval_x(b, t))).collect();
-    let k = evals.iter().map(|(x, y)| gcd_degree(x, y)).min().unwrap_or(0);
-    let dk = bound(k);
-    let values: Vec<Cyclotomic> = evals[..=dk].iter().map(|(x, y)| psc(x, y, k)).collect();
-    Ok(Some(interpolate(&points[..=dk], &values)))
+    for j in 0..=m.min(n) {
+        let dj = bound(j);
+        let values: Vec<Cyclotomic> = evals[..=dj].iter().map(|(x, y)| psc(x, y, j)).collect();
+        if values.iter().any(|v| !Weight::is_zero(v)) {
+            return Ok(Some(interpolate(&points[..=dj], &values)));
+        }
+    }
+    Err(Error::Message("no principal subresultant coefficient is nonzero (not a polynomial pair)".into()))
 }
 
 /// The polynomial of degree < len through (x_i, y_i) (Newton form, then
