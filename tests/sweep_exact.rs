@@ -130,7 +130,16 @@ fn assert_endpoint_is(e: &serde_json::Value, a: &BigRational, b: &BigRational, k
 
 /// The float spectrum's C¹ and convergence verdicts at one value.
 fn verdict(scheme: &str, param: &str, n: usize, value: f64) -> (bool, bool) {
-    let v = json(&["spectrum", scheme, "--valence", &n.to_string(), "--param", &format!("{param}={value:.12}"), "--json", "--no-exact"]);
+    let v = json(&[
+        "spectrum",
+        scheme,
+        "--valence",
+        &n.to_string(),
+        "--param",
+        &format!("{param}={value:.12}"),
+        "--json",
+        "--no-exact",
+    ]);
     (v["verdict"]["c1_spectral"].as_bool().unwrap(), v["verdict"]["convergent"].as_bool().unwrap())
 }
 

@@ -173,7 +173,15 @@ fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
         return Err(Error::Input(format!("--exact: the range {range} is empty (need START < END)")));
     }
     let fixed = params.iter().filter(|(k, _)| k != name).cloned().collect();
-    let sweep = ExactSweep { scheme: args.scheme.clone(), valences: grid.valences.clone(), param: name.clone(), lo, hi, fixed, certify: args.certify };
+    let sweep = ExactSweep {
+        scheme: args.scheme.clone(),
+        valences: grid.valences.clone(),
+        param: name.clone(),
+        lo,
+        hi,
+        fixed,
+        certify: args.certify,
+    };
     let started = std::time::Instant::now();
     let sets = run(&sweep)?;
     let seconds = started.elapsed().as_secs_f64();

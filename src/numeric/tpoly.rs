@@ -335,8 +335,10 @@ impl ExprField for TPoly {
         let k = num_traits::ToPrimitive::to_i64(&k.to_integer()).unwrap_or(i64::MAX);
         if k < 0 || k > MAX_T_DEGREE as i64 {
             return match x.as_constant() {
-                Some(c) => <Cyclotomic as ExprField>::power(c, Cyclotomic::from_rational(&Rational::from_integer(k.into())))
-                    .map(TPoly::constant),
+                Some(c) => {
+                    <Cyclotomic as ExprField>::power(c, Cyclotomic::from_rational(&Rational::from_integer(k.into())))
+                        .map(TPoly::constant)
+                }
                 None => {
                     note_non_polynomial();
                     unrepresentable("a negative (or huge) power of an expression in the swept parameter".into())

@@ -171,7 +171,10 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
     let t0 = marker(&s.lo, &s.hi);
     let scheme = resolve(s, &t0)?;
     if !scheme.rotation_symmetric() {
-        return Err(Error::Input(format!("sweep --exact needs Fourier blocks; '{}' is not rotation symmetric", s.scheme)));
+        return Err(Error::Input(format!(
+            "sweep --exact needs Fourier blocks; '{}' is not rotation symmetric",
+            s.scheme
+        )));
     }
     let config = Configuration::regular(scheme.as_ref(), n)?;
     let opts = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
@@ -258,10 +261,23 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
             pairs.push((pa.clone(), negated(pb)));
         }
     }
-    trace(|| format!("n = {n}: {} block polynomials, degrees {:?}", polys.len(), polys.iter().map(|p| (p.len() - 1, p.iter().map(TPoly::degree).max())).collect::<Vec<_>>()));
+    trace(|| {
+        format!(
+            "n = {n}: {} block polynomials, degrees {:?}",
+            polys.len(),
+            polys.iter().map(|p| (p.len() - 1, p.iter().map(TPoly::degree).max())).collect::<Vec<_>>()
+        )
+    });
     for (a, b) in &pairs {
         let r = first_subresultant(a, b)?;
-        trace(|| format!("n = {n}: pair ({}, {}): subresultant of degree {:?}", a.len() - 1, b.len() - 1, r.as_ref().map(|r| r.len())));
+        trace(|| {
+            format!(
+                "n = {n}: pair ({}, {}): subresultant of degree {:?}",
+                a.len() - 1,
+                b.len() - 1,
+                r.as_ref().map(|r| r.len())
+            )
+        });
         let Some(r) = r else { continue };
         let r = rational_norm(&r)?;
         if r.degree() == 0 {
@@ -421,7 +437,10 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
     Ok(ValenceSets {
         valence: n,
         field_order,
-        block_polynomials: polys.iter().map(|p| [p.len() - 1, p.iter().map(TPoly::degree).max().unwrap_or(0)]).collect(),
+        block_polynomials: polys
+            .iter()
+            .map(|p| [p.len() - 1, p.iter().map(TPoly::degree).max().unwrap_or(0)])
+            .collect(),
         candidates: merged.iter().map(endpoint).collect(),
         convergent,
         c1_spectral,
@@ -517,7 +536,13 @@ fn poly_text(c: &[num_bigint::BigInt]) -> String {
             1 => "t".to_string(),
             _ => format!("t^{k}"),
         };
-        let term = if coef.is_empty() { mono } else if mono.is_empty() { coef } else { format!("{coef} {mono}") };
+        let term = if coef.is_empty() {
+            mono
+        } else if mono.is_empty() {
+            coef
+        } else {
+            format!("{coef} {mono}")
+        };
         if out.is_empty() {
             out = if sign == "-" { format!("-{term}") } else { term };
         } else {
@@ -548,7 +573,8 @@ fn fourier_blocks(rows: &[Vec<(usize, TPoly)>], orbits: &Orbits) -> Vec<Vec<Vec<
                     if pos[ob] == usize::MAX {
                         continue;
                     }
-                    let z = Cyclotomic::root_of_unity((m * tau) as i64, g as i64).unwrap_or_else(|_| Cyclotomic::undefined());
+                    let z = Cyclotomic::root_of_unity((m * tau) as i64, g as i64)
+                        .unwrap_or_else(|_| Cyclotomic::undefined());
                     let e = std::mem::replace(&mut b[ra][pos[ob]], TPoly::zero());
                     b[ra][pos[ob]] = e + w.clone() * TPoly::constant(z);
                 }
@@ -607,7 +633,8 @@ fn psc(a: &CPoly, b: &CPoly, j: usize) -> Cyclotomic {
     }
     let top = m + n - j - 1;
     let mut mat: Vec<Vec<Cyclotomic>> = Vec::with_capacity(size);
-    let coef = |p: &CPoly, k: isize| if k >= 0 && (k as usize) < p.len() { p[k as usize].clone() } else { Cyclotomic::zero() };
+    let coef =
+        |p: &CPoly, k: isize| if k >= 0 && (k as usize) < p.len() { p[k as usize].clone() } else { Cyclotomic::zero() };
     for i in 0..n - j {
         mat.push((0..size).map(|col| coef(a, (top - col) as isize - i as isize)).collect());
     }
@@ -681,7 +708,9 @@ fn first_subresultant(a: &BiPoly, b: &BiPoly) -> Result<Option<CPoly>, Error> {
     };
     let d0 = bound(0);
     if d0 + 1 > MAX_POINTS {
-        return Err(Error::Message(format!("a subresultant of degree up to {d0} in t: beyond the exact sweep's bound")));
+        return Err(Error::Message(format!(
+            "a subresultant of degree up to {d0} in t: beyond the exact sweep's bound"
+        )));
     }
     // psc_j has degree ≤ bound(j) in t: one nonzero value shows it is not
     // identically zero, bound(j) + 1 zeros that it is; the points 0, −1, 1,
@@ -798,7 +827,8 @@ fn all_real(polys: &[BiPoly], t: &Rational) -> bool {
         }
         // Cauchy's bound on the moduli of the roots
         let lead = sq.coeffs[sq.degree()].abs();
-        let bound = sq.coeffs.iter().map(|x| x.abs() / &lead).fold(<Rational as Zero>::zero(), |a, b| a.max(b)) + <Rational as One>::one();
+        let bound = sq.coeffs.iter().map(|x| x.abs() / &lead).fold(<Rational as Zero>::zero(), |a, b| a.max(b))
+            + <Rational as One>::one();
         let chain = sturm::sturm_chain(&sq);
         sturm::count_roots(&chain, &-bound.clone(), &bound) == sq.degree()
     })
