@@ -30,4 +30,5 @@ mod refine_boundary;
 mod shape_chart_cli;
 mod sqrt3_refine;
 mod sweep;
+mod sweep_exact;
 mod typed_errors;

@@ -166,6 +166,15 @@ pub struct SweepArgs {
     /// comma-separated values, one row per point
     #[arg(long)]
     pub csv: bool,
+    /// exact sets of the swept parameter per valence: convergence and spectral C¹ as unions of
+    /// intervals with exact algebraic endpoints (the grid's START and END bound the range; its
+    /// points are not the answer)
+    #[arg(long)]
+    pub exact: bool,
+    /// with --exact: decide each piece with the interval certificate as well (slower; else the
+    /// floating-point spectrum decides)
+    #[arg(long)]
+    pub certify: bool,
     /// draw the admissible intervals (valence x swept value; with --curvature coloured by
     /// curvature class, and also for valences alone) into FILE.svg, FILE.pdf or FILE.png
     #[arg(short = 'o', long = "out", visible_alias = "plot")]

@@ -145,11 +145,112 @@ fn list_schemes(files: &[std::path::PathBuf], json: bool) -> Result<(), Error> {
     out_text(&text)
 }
 
+/// `sweep --exact`: the exact sets of the swept parameter (`sweep::exact`).
+fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
+    use crate::sweep::exact::{run, ExactSweep};
+    use crate::sweep::Grid;
+    if args.charmap || args.curvature || args.csv || args.plot.is_some() || args.faces.is_some() {
+        return Err(Error::Input(
+            "--exact gives the exact sets of convergence and spectral C¹; it takes none of --charmap, --curvature, \
+             --csv, --plot, --faces"
+                .into(),
+        ));
+    }
+    let params = parse_params(&args.params)?;
+    let Some((name, range)) = params.iter().find(|(_, v)| v.contains(':')) else {
+        return Err(Error::Input("--exact needs a swept parameter --param NAME=START:END:STEP".into()));
+    };
+    // the grid's checks: the scheme, the valences, the range's ends
+    let grid = Grid::parse(&args.scheme, &args.valences, None, &params, false)?;
+    let parts: Vec<&str> = range.split(':').collect();
+    let exact = |t: &str| {
+        crate::numeric::ParamValue::parse(t)?
+            .exact
+            .ok_or_else(|| Error::Input(format!("--exact: '{t}' is not an exact number (use 3/8 or 0.375)")))
+    };
+    let (lo, hi) = (exact(parts[0])?, exact(parts[1])?);
+    if lo >= hi {
+        return Err(Error::Input(format!("--exact: the range {range} is empty (need START < END)")));
+    }
+    let fixed = params.iter().filter(|(k, _)| k != name).cloned().collect();
+    let sweep = ExactSweep {
+        scheme: args.scheme.clone(),
+        valences: grid.valences.clone(),
+        param: name.clone(),
+        lo,
+        hi,
+        fixed,
+        certify: args.certify,
+    };
+    let started = std::time::Instant::now();
+    let sets = run(&sweep)?;
+    let seconds = started.elapsed().as_secs_f64();
+    if args.json {
+        #[derive(serde::Serialize)]
+        struct Out<'a> {
+            scheme: &'a str,
+            parameter: &'a str,
+            range: [String; 2],
+            valences: &'a [crate::sweep::exact::ValenceSets],
+            seconds: f64,
+        }
+        let out = Out {
+            scheme: &args.scheme,
+            parameter: name,
+            range: [sweep.lo.to_string(), sweep.hi.to_string()],
+            valences: &sets,
+            seconds,
+        };
+        return print_json(&out);
+    }
+    let mut text = format!("exact sweep of {} over {name} in [{}, {}]\n", args.scheme, sweep.lo, sweep.hi);
+    let show = |i: &crate::sweep::exact::ExactInterval| {
+        format!(
+            "{}{}, {}{}  ≈ {}{:.12}, {:.12}{}  [{}]",
+            if i.from_closed { "[" } else { "(" },
+            i.from.text,
+            i.to.text,
+            if i.to_closed { "]" } else { ")" },
+            if i.from_closed { "[" } else { "(" },
+            i.from.decimal,
+            i.to.decimal,
+            if i.to_closed { "]" } else { ")" },
+            i.evidence
+        )
+    };
+    for v in &sets {
+        text.push_str(&format!("n = {}\n", v.valence));
+        for (label, list) in [("convergent", &v.convergent), ("C1 spectral", &v.c1_spectral)] {
+            if list.is_empty() {
+                text.push_str(&format!("  {label}: nowhere in the range\n"));
+            }
+            for i in list {
+                text.push_str(&format!("  {label}: {}\n", show(i)));
+            }
+        }
+        if v.exact {
+            text.push_str("  endpoints: exact (the candidate set is complete)\n");
+        } else {
+            for why in &v.not_exact_because {
+                text.push_str(&format!("  NOT PROVED EXACT: {why}\n"));
+            }
+        }
+    }
+    text.push_str(&format!("({seconds:.2} s)\n"));
+    out_text(&text)
+}
+
 fn sweep(args: &SweepArgs) -> Result<(), Error> {
     use crate::sweep::{admissible, convergent, run_on, Grid};
     let (scheme, json, csv) = (args.scheme.as_str(), args.json, args.csv);
     if json && csv {
         return Err(Error::Input("choose one of --json and --csv".into()));
+    }
+    if args.exact {
+        return sweep_exact(args);
+    }
+    if args.certify {
+        return Err(Error::Input("--certify decides the pieces of --exact; give --exact too".into()));
     }
     if args.plot.is_some() && !args.curvature && !args.params.iter().any(|p| p.contains(':')) {
         return Err(Error::Input(

@@ -12,6 +12,8 @@ pub mod interval;
 pub mod reading;
 pub mod recognise;
 pub mod small;
+pub mod sturm;
+pub mod tpoly;
 pub mod weight;
 
 pub use cyclotomic_element::Cyclotomic;
@@ -19,4 +21,5 @@ pub use field::{EvalError, ExprField};
 pub use interval::Interval;
 pub use reading::Reading;
 pub use small::SmallRational;
+pub use tpoly::TPoly;
 pub use weight::{Inexact, ParamValue, Rational, Weight};

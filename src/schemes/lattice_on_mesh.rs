@@ -11,7 +11,7 @@
 
 use crate::lattice::{LatticeScheme, LatticeWeight};
 use crate::mesh::{PolyMesh, SectorKind};
-use crate::numeric::{Cyclotomic, Interval, Rational, SmallRational};
+use crate::numeric::{Cyclotomic, Interval, Rational, SmallRational, TPoly};
 use crate::sdc::slots::OriginKind;
 use crate::sdc::{Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeInfo};
 use crate::sdc::{GatherError, Topology};
@@ -181,6 +181,16 @@ impl Rules<MeshDomain, Cyclotomic> for LatticeOnMesh {
     fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<Cyclotomic> {
         let exact = self.masks_on_mesh::<Rational>(mesh, origin)?;
         Ok(exact.map(|s| Stencil { terms: s.terms.iter().map(|(v, w)| (*v, Cyclotomic::from_rational(w))).collect() }))
+    }
+}
+
+/// No polynomial rows in a swept parameter: the lattice masks are read as
+/// numbers, so every weight is the undefined element and the exact sweep
+/// refuses the scheme (rather than take a parameter for a constant).
+impl Rules<MeshDomain, TPoly> for LatticeOnMesh {
+    fn rule(&self, mesh: &PolyMesh, origin: Origin) -> RuleResult<TPoly> {
+        let exact = self.masks_on_mesh::<Rational>(mesh, origin)?;
+        Ok(exact.map(|s| Stencil { terms: s.terms.iter().map(|(v, _)| (*v, TPoly::undefined())).collect() }))
     }
 }
 

@@ -32,7 +32,7 @@ pub use params::{ParamSpec, Params};
 pub use stencil::{Origin, Stencil};
 
 use crate::mesh::{PolyMesh, SectorKind};
-use crate::numeric::{Cyclotomic, Interval, Rational, SmallRational, Weight};
+use crate::numeric::{Cyclotomic, Interval, Rational, SmallRational, TPoly, Weight};
 
 /// A domain subdivision acts on: meshes with an extraordinary vertex or face
 /// ([`MeshDomain`]), the regular lattice Z² (`lattice::LatticeDomain`), the
@@ -101,7 +101,7 @@ impl Domain for MeshDomain {
     type Scheme<'a> = dyn Scheme + 'a;
 }
 
-rule_weights!(MeshDomain: f64, Rational, SmallRational, Interval, Cyclotomic);
+rule_weights!(MeshDomain: f64, Rational, SmallRational, Interval, Cyclotomic, TPoly);
 
 /// What a scheme is, as data: its identity, the host it refines on, the
 /// centre it is analysed at, and what it can do beyond the common case. Every
@@ -177,6 +177,7 @@ pub trait Scheme:
     + Rules<MeshDomain, SmallRational>
     + Rules<MeshDomain, Interval>
     + Rules<MeshDomain, Cyclotomic>
+    + Rules<MeshDomain, TPoly>
     + Send
     + Sync
 {

@@ -5,6 +5,8 @@
 //! limit of the second-order analysis (`Grid::curvature`, from the same
 //! analysis), and the admissible intervals of the swept parameter per valence.
 
+pub mod exact;
+
 use serde::Serialize;
 
 use crate::charmap::{check_map, CharMapOptions};

@@ -12,7 +12,7 @@ use std::sync::Mutex;
 
 use crate::error::Error;
 use crate::numeric::expr::{Env, Expr};
-use crate::numeric::{Cyclotomic, Inexact, ParamValue, Reading, Weight};
+use crate::numeric::{Cyclotomic, Inexact, ParamValue, Reading, TPoly, Weight};
 
 /// Entries the weight cache holds before it starts afresh (a sweep over many
 /// valences must not grow it without bound).
@@ -93,6 +93,14 @@ impl WeightTable {
         let j = if self.uses_j[k] { j } else { 0 };
         // m is a variable of face-corner fields only (a face-corner slot always has one)
         let m = if self.face_corner[k] { Some(m.ok_or(Inexact)?) } else { None };
+        // the exact sweep's polynomials in the swept parameter: the
+        // expression itself in that arithmetic (a number read at the
+        // parameter's marker value would be a constant), never cached
+        if TypeId::of::<W>() == TypeId::of::<TPoly>() {
+            let value = self.exprs[k].evaluate::<TPoly>(&with_nj(&self.env, n, j, m)).map_err(|_| Inexact)?;
+            let any: Box<dyn std::any::Any> = Box::new(value);
+            return any.downcast::<W>().map(|w| *w).map_err(|_| Inexact);
+        }
         // one reading serves every weight type: the float stencils see the
         // exact value rounded, so they cannot describe another scheme than
         // the exact and interval ones

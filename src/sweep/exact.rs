@@ -1,0 +1,861 @@
+//! The exact parameter sweep (`subdlab sweep --exact`): for one free
+//! parameter t and each valence n, the set of t where the scheme converges
+//! (λ0 = 1 simple and strictly dominant) and where it is spectrally C¹ (λ1
+//! real, positive, double from Fourier blocks 1 and n − 1, strictly
+//! dominant over the rest), as unions of intervals whose endpoints are exact
+//! real algebraic numbers. ARCHITECTURE.md ("The exact sweep") gives the
+//! method; in short:
+//!
+//! 1. the rows of S(t) exactly, as polynomials in t over Q(ζ_N) (the rules
+//!    in the weight type `numeric::TPoly`), re-checked against the ordinary
+//!    exact rows at two rational points;
+//! 2. the Fourier blocks B_m(t) and their characteristic polynomials
+//!    P_m(x, t) (Berkowitz, division-free, over Q(ζ_N)[t]);
+//! 3. the candidate endpoints: where two root branches of one block meet
+//!    (P_m, ∂P_m/∂x), where a branch of P_a meets one of P_b (P_a(x),
+//!    P_b(x)), or its negative (P_a(x), P_b(−x)): for each pair, the first
+//!    principal subresultant coefficient that is not identically zero in t
+//!    (its vanishing is exactly a change of the gcd's degree), computed by
+//!    evaluation at integer points and interpolation (its degree in t is
+//!    bounded by isobaric weight), taken to Q[t] by the product of its
+//!    Galois conjugates, made square-free, and its real roots in the swept
+//!    range isolated by Sturm sequences; coinciding roots merged exactly;
+//! 4. every open piece between candidates decided at one rational interior
+//!    point (certified spectrum where it decides, else floating point), and
+//!    each candidate itself: both conditions are open in t, so a candidate
+//!    next to a failing piece fails; between two passing pieces it is
+//!    decided at the point (exactly there when it is rational).
+//!
+//! The candidates are complete (no order change of moduli is missed) when
+//! every block polynomial has real coefficients and every root is real at
+//! each piece's point: real roots change modulus order only by meeting
+//! each other or each other's negatives. Moduli of complex pairs are not
+//! followed: where a piece has a non-real eigenvalue, the output says its
+//! intervals are not proved exact.
+
+use num_traits::{One, Signed, ToPrimitive, Zero};
+use serde::Serialize;
+
+use crate::certify::spectrum::analysis_orbits;
+use crate::certify::{certify_analysis, Verdict as CertVerdict};
+use crate::dft::Orbits;
+use crate::error::Error;
+use crate::matrix::assemble_rows;
+use crate::neighbourhood::{Configuration, NeighbourhoodKind};
+use crate::numeric::exact::Poly;
+use crate::numeric::sturm::{self, RealRoot};
+use crate::numeric::tpoly::{take_non_polynomial, SymbolGuard};
+use crate::numeric::{Cyclotomic, Rational, TPoly, Weight};
+use crate::schemes;
+use crate::spectrum::{analyse, Options};
+
+/// Most evaluation points of one subresultant (a bound on work).
+pub const MAX_POINTS: usize = 2000;
+
+/// What the exact sweep is asked.
+#[derive(Clone, Debug)]
+pub struct ExactSweep {
+    pub scheme: String,
+    pub valences: Vec<usize>,
+    pub param: String,
+    pub lo: Rational,
+    pub hi: Rational,
+    pub fixed: Vec<(String, String)>,
+    /// decide the pieces with the interval certificate too (else the
+    /// floating-point spectrum alone: the certificate costs seconds per
+    /// point at higher valences)
+    pub certify: bool,
+}
+
+/// A real algebraic endpoint, exactly and as a decimal.
+#[derive(Clone, Debug, Serialize)]
+pub struct Endpoint {
+    /// the endpoint when it is rational ("p/q")
+    pub rational: Option<String>,
+    /// otherwise: the one root of this square-free integer polynomial
+    /// (coefficients from the constant term up) in `isolating_interval`
+    pub polynomial: Option<Vec<String>>,
+    /// open interval (lo, hi) of rationals holding exactly one root
+    pub isolating_interval: Option<[String; 2]>,
+    pub decimal: f64,
+    /// the polynomial as text, "16 t^2 - 8 t - 1"
+    pub text: String,
+}
+
+/// One interval of a condition's set.
+#[derive(Clone, Debug, Serialize)]
+pub struct ExactInterval {
+    pub from: Endpoint,
+    pub to: Endpoint,
+    pub from_closed: bool,
+    pub to_closed: bool,
+    /// how the condition was decided inside: "certified" (interval
+    /// certificate), "floating point", or "exact" where every piece is
+    pub evidence: String,
+    /// the endpoints are proved to be where the condition changes (the
+    /// candidate set is complete for this interval's pieces)
+    pub endpoints_exact: bool,
+}
+
+/// The exact sets at one valence.
+#[derive(Clone, Debug, Serialize)]
+pub struct ValenceSets {
+    pub valence: usize,
+    /// N of the cyclotomic field Q(ζ_N) of the block polynomials
+    pub field_order: u64,
+    /// distinct characteristic polynomials of the Fourier blocks, with their
+    /// degrees in x and in t
+    pub block_polynomials: Vec<[usize; 2]>,
+    /// every candidate endpoint inside the swept range
+    pub candidates: Vec<Endpoint>,
+    pub convergent: Vec<ExactInterval>,
+    pub c1_spectral: Vec<ExactInterval>,
+    /// whether the candidate set is proved complete over the whole range
+    pub exact: bool,
+    /// why not, when not
+    pub not_exact_because: Vec<String>,
+    /// the pieces and candidate points decided, with what evidence
+    pub decisions: Vec<Decision>,
+}
+
+/// The verdict at one point of t.
+#[derive(Clone, Debug, Serialize)]
+pub struct Decision {
+    /// the point ("p/q"), or "≈ decimal" near an irrational candidate
+    pub at: String,
+    /// "piece" (interior point), "candidate", or "range end"
+    pub kind: &'static str,
+    pub convergent: bool,
+    pub c1_spectral: bool,
+    pub evidence: String,
+    /// every eigenvalue real here (None: not checked, at a candidate)
+    pub all_real: Option<bool>,
+}
+
+/// A polynomial in x (lowest first) with coefficients polynomials in t.
+type BiPoly = Vec<TPoly>;
+/// A polynomial in x over Q(ζ) (lowest first).
+type CPoly = Vec<Cyclotomic>;
+
+/// Progress of the stages on standard error (SUBDLAB_EXACT_TRACE=1).
+fn trace(what: impl FnOnce() -> String) {
+    if std::env::var_os("SUBDLAB_EXACT_TRACE").is_some() {
+        static START: std::sync::OnceLock<std::time::Instant> = std::sync::OnceLock::new();
+        let t = START.get_or_init(std::time::Instant::now).elapsed().as_secs_f64();
+        eprintln!("sweep --exact [{t:.2} s]: {}", what());
+    }
+}
+
+fn q(p: i64, d: i64) -> Rational {
+    Rational::new(p.into(), d.into())
+}
+
+/// Run the exact sweep over every valence.
+pub fn run(s: &ExactSweep) -> Result<Vec<ValenceSets>, Error> {
+    s.valences.iter().map(|&n| valence(s, n)).collect()
+}
+
+fn resolve(s: &ExactSweep, value: &Rational) -> Result<Box<dyn schemes::Scheme>, Error> {
+    let mut params = s.fixed.clone();
+    params.push((s.param.clone(), value.to_string()));
+    schemes::resolve(&s.scheme, &params)
+}
+
+/// The marker: a rational inside the range that no scheme writes as a
+/// constant (denominator a large prime).
+fn marker(lo: &Rational, hi: &Rational) -> Rational {
+    lo + (hi - lo) * q(500_009, 1_000_003)
+}
+
+fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
+    let t0 = marker(&s.lo, &s.hi);
+    let scheme = resolve(s, &t0)?;
+    if !scheme.rotation_symmetric() {
+        return Err(Error::Input(format!(
+            "sweep --exact needs Fourier blocks; '{}' is not rotation symmetric",
+            s.scheme
+        )));
+    }
+    let config = Configuration::regular(scheme.as_ref(), n)?;
+    let opts = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
+    let analysis = analyse(scheme.as_ref(), &config, &opts)?;
+    let orbits = analysis_orbits(scheme.as_ref(), &analysis);
+    orbits.check_free().map_err(|e| Error::Message(format!("valence {n}: no Fourier blocks ({e})")))?;
+    let (d, kind) = (&analysis.discovered, analysis.spectrum.neighbourhood);
+    let which = orbits.representative.clone();
+    let rows = {
+        let _guard = SymbolGuard::new(&t0);
+        let rows = assemble_rows::<TPoly>(scheme.as_ref(), d, kind, &which);
+        let asked = take_non_polynomial();
+        match rows {
+            Ok(r) if !asked && r.iter().all(|row| row.iter().all(|(_, w)| w.is_defined())) => r,
+            _ => {
+                return Err(Error::Input(format!(
+                    "sweep --exact: the rows of S at valence {n} are not polynomials in {} over a cyclotomic field \
+                     (a quotient by, a root or a discontinuous function of the parameter, or a weight known in \
+                     floating point only)",
+                    s.param
+                )))
+            }
+        }
+    };
+    // the polynomial rows are the scheme's rows at rational points
+    for point in [t0.clone(), s.lo.clone() + (&s.hi - &s.lo) * q(1, 3)] {
+        let at = resolve(s, &point)?;
+        let exact = assemble_rows::<Cyclotomic>(at.as_ref(), d, kind, &which).map_err(|_| {
+            Error::Input(format!("sweep --exact: no exact rows at {} = {point} (valence {n})", s.param))
+        })?;
+        for (prow, erow) in rows.iter().zip(&exact) {
+            let mut diff: std::collections::HashMap<usize, Cyclotomic> = std::collections::HashMap::new();
+            for (c, w) in prow {
+                let e = diff.remove(c).unwrap_or_else(Cyclotomic::zero);
+                diff.insert(*c, e + w.eval(&point));
+            }
+            for (c, w) in erow {
+                let e = diff.remove(c).unwrap_or_else(Cyclotomic::zero);
+                diff.insert(*c, e - w.clone());
+            }
+            if diff.values().any(|v| !Weight::is_zero(v)) {
+                return Err(Error::Input(format!(
+                    "sweep --exact: the rows of S in {} disagree with the scheme's rows at {} = {point} (the rules \
+                     depend on the parameter other than polynomially)",
+                    s.param, s.param
+                )));
+            }
+        }
+    }
+    trace(|| format!("n = {n}: rows checked"));
+    let blocks = fourier_blocks(&rows, &orbits);
+    let mut polys: Vec<BiPoly> = Vec::new();
+    for b in &blocks {
+        let p = charpoly(b);
+        if !p.iter().all(TPoly::is_defined) {
+            return Err(Error::Message(format!("valence {n}: a block polynomial left the polynomials in t")));
+        }
+        if !polys.contains(&p) {
+            polys.push(p);
+        }
+    }
+    let field_order = polys.iter().flatten().fold(1u64, |l, c| {
+        let m = c.field_order();
+        l / crate::numeric::weight::gcd(l as i64, m as i64) as u64 * m
+    });
+    let mut not_exact = Vec::new();
+    if polys.iter().any(|p| !p.iter().all(TPoly::is_real)) {
+        not_exact.push("a block's characteristic polynomial has non-real coefficients".to_string());
+    }
+    // candidates
+    let mut cands: Vec<RealRoot> = Vec::new();
+    let deriv = |p: &BiPoly| -> BiPoly {
+        p.iter().enumerate().skip(1).map(|(k, c)| c.clone() * TPoly::int(k as i64)).collect()
+    };
+    let negated = |p: &BiPoly| -> BiPoly {
+        p.iter().enumerate().map(|(k, c)| if k % 2 == 1 { -c.clone() } else { c.clone() }).collect()
+    };
+    let mut pairs: Vec<(BiPoly, BiPoly)> = Vec::new();
+    for (a, pa) in polys.iter().enumerate() {
+        pairs.push((pa.clone(), deriv(pa)));
+        pairs.push((pa.clone(), negated(pa)));
+        for pb in &polys[a + 1..] {
+            pairs.push((pa.clone(), pb.clone()));
+            pairs.push((pa.clone(), negated(pb)));
+        }
+    }
+    trace(|| {
+        format!(
+            "n = {n}: {} block polynomials, degrees {:?}",
+            polys.len(),
+            polys.iter().map(|p| (p.len() - 1, p.iter().map(TPoly::degree).max())).collect::<Vec<_>>()
+        )
+    });
+    for (a, b) in &pairs {
+        let r = first_subresultant(a, b)?;
+        trace(|| {
+            format!(
+                "n = {n}: pair ({}, {}): subresultant of degree {:?}",
+                a.len() - 1,
+                b.len() - 1,
+                r.as_ref().map(|r| r.len())
+            )
+        });
+        let Some(r) = r else { continue };
+        let r = rational_norm(&r)?;
+        if r.degree() == 0 {
+            continue;
+        }
+        trace(|| format!("n = {n}: norm of degree {}", r.degree()));
+        for root in sturm::isolate(&r, &s.lo, &s.hi) {
+            cands.push(root);
+        }
+    }
+    trace(|| format!("n = {n}: {} candidates before merging", cands.len()));
+    // merge equal candidates, drop the range ends
+    let mut merged: Vec<RealRoot> = Vec::new();
+    'next: for mut c in cands {
+        if c.rational.as_ref().is_some_and(|x| x == &s.lo || x == &s.hi) {
+            continue;
+        }
+        for m in merged.iter_mut() {
+            if sturm::same_root(m, &mut c) {
+                // keep the common factor as the defining polynomial
+                let g = sturm::primitive(&m.poly.gcd(&c.poly));
+                if g.degree() >= 1 && g.degree() < m.poly.degree() {
+                    m.poly = g;
+                }
+                continue 'next;
+            }
+        }
+        merged.push(c);
+    }
+    for c in merged.iter_mut() {
+        c.recognise_rational();
+    }
+    merged.sort_by(|a, b| a.mid().cmp(&b.mid()));
+    trace(|| format!("n = {n}: {} candidates", merged.len()));
+    // sample points of the open pieces
+    let lo_root = RealRoot::exact(s.lo.clone());
+    let hi_root = RealRoot::exact(s.hi.clone());
+    let mut fences: Vec<RealRoot> = vec![lo_root];
+    fences.extend(merged.iter().cloned());
+    fences.push(hi_root);
+    let mut samples = Vec::new();
+    for k in 0..fences.len() - 1 {
+        let (left, right) = fences.split_at_mut(k + 1);
+        let (a, b) = (&mut left[k], &mut right[0]);
+        while a.hi >= b.lo {
+            a.bisect();
+            b.bisect();
+        }
+        samples.push(sturm::simplest_between(&a.hi, &b.lo));
+    }
+    trace(|| format!("n = {n}: {} pieces to decide", samples.len()));
+    // decide: pieces, range ends, candidates
+    let mut decisions = Vec::new();
+    let mut piece = Vec::new();
+    for t in &samples {
+        let mut d = decide(s, n, t)?;
+        d.kind = "piece";
+        d.all_real = Some(all_real(&polys, t));
+        if d.all_real == Some(false) {
+            let why = format!(
+                "a non-real eigenvalue at {} = {t}: moduli of complex pairs are not followed, so the pieces' ends are \
+                 not proved exact",
+                s.param
+            );
+            if !not_exact.contains(&why) {
+                not_exact.push(why);
+            }
+        }
+        piece.push(d.clone());
+        decisions.push(d);
+    }
+    let mut at_lo = decide(s, n, &s.lo)?;
+    at_lo.kind = "range end";
+    let mut at_hi = decide(s, n, &s.hi)?;
+    at_hi.kind = "range end";
+    decisions.push(at_lo.clone());
+    decisions.push(at_hi.clone());
+    let mut at_cand = Vec::new();
+    for (k, c) in merged.iter().enumerate() {
+        let (l, r) = (&piece[k], &piece[k + 1]);
+        let mut d = Decision {
+            at: endpoint(c).text,
+            kind: "candidate",
+            convergent: false,
+            c1_spectral: false,
+            evidence: "exact (the condition is open in t and fails next to it)".into(),
+            all_real: None,
+        };
+        if (l.convergent && r.convergent) || (l.c1_spectral && r.c1_spectral) {
+            let (t, label) = match &c.rational {
+                Some(x) => (x.clone(), x.to_string()),
+                None => (c.mid(), format!("≈ {:.17}", c.to_f64())),
+            };
+            let here = decide(s, n, &t)?;
+            let near = if c.rational.is_some() { "" } else { " (at a rational within 1e-30 of the candidate)" };
+            if l.convergent && r.convergent {
+                d.convergent = here.convergent;
+            }
+            if l.c1_spectral && r.c1_spectral {
+                d.c1_spectral = here.c1_spectral;
+            }
+            d.evidence = format!("{}{near}", here.evidence);
+            d.at = label;
+        }
+        at_cand.push(d.clone());
+        decisions.push(d);
+    }
+    trace(|| format!("n = {n}: decided"));
+    let exact = not_exact.is_empty();
+    let sets = |pick: fn(&Decision) -> bool| -> Vec<ExactInterval> {
+        // the sequence lo, piece 0, cand 0, piece 1, ..., piece k, hi
+        let mut seq: Vec<(Option<&RealRoot>, &Decision)> = Vec::new();
+        seq.push((Some(&fences[0]), &at_lo));
+        for k in 0..piece.len() {
+            seq.push((None, &piece[k]));
+            if k < at_cand.len() {
+                seq.push((Some(&merged[k]), &at_cand[k]));
+            }
+        }
+        seq.push((Some(&fences[fences.len() - 1]), &at_hi));
+        let mut out = Vec::new();
+        let mut k = 0;
+        while k < seq.len() {
+            if !pick(seq[k].1) {
+                k += 1;
+                continue;
+            }
+            let start = k;
+            while k + 1 < seq.len() && pick(seq[k + 1].1) {
+                k += 1;
+            }
+            let end = k;
+            // ends: a point entry is closed; a piece entry is open at the fence before/after it
+            let (from, from_closed) = match seq[start].0 {
+                Some(r) => (r, true),
+                None => (seq[start - 1].0.expect("a piece follows a fence"), false),
+            };
+            let (to, to_closed) = match seq[end].0 {
+                Some(r) => (r, true),
+                None => (seq[end + 1].0.expect("a piece precedes a fence"), false),
+            };
+            let evidence = weakest(seq[start..=end].iter().map(|e| e.1.evidence.as_str()));
+            out.push(ExactInterval {
+                from: endpoint(from),
+                to: endpoint(to),
+                from_closed,
+                to_closed,
+                evidence,
+                endpoints_exact: exact,
+            });
+            k += 1;
+        }
+        out
+    };
+    let convergent = sets(|d| d.convergent);
+    let c1_spectral = sets(|d| d.c1_spectral);
+    Ok(ValenceSets {
+        valence: n,
+        field_order,
+        block_polynomials: polys
+            .iter()
+            .map(|p| [p.len() - 1, p.iter().map(TPoly::degree).max().unwrap_or(0)])
+            .collect(),
+        candidates: merged.iter().map(endpoint).collect(),
+        convergent,
+        c1_spectral,
+        exact,
+        not_exact_because: not_exact,
+        decisions,
+    })
+}
+
+/// The weakest evidence of several: floating point < certified < exact.
+fn weakest<'a>(kinds: impl Iterator<Item = &'a str>) -> String {
+    let mut rank = 3;
+    for k in kinds {
+        let r = if k.starts_with("floating") {
+            1
+        } else if k.starts_with("certified") {
+            2
+        } else {
+            3
+        };
+        rank = rank.min(r);
+    }
+    match rank {
+        1 => "floating point",
+        2 => "certified",
+        _ => "exact",
+    }
+    .to_string()
+}
+
+/// The spectral verdicts at one rational t: the interval certificate where it
+/// decides C¹, else the floating-point spectrum.
+fn decide(s: &ExactSweep, n: usize, t: &Rational) -> Result<Decision, Error> {
+    let scheme = resolve(s, t)?;
+    let config = Configuration::regular(scheme.as_ref(), n)?;
+    let opts = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
+    let analysis = analyse(scheme.as_ref(), &config, &opts)?;
+    let v = &analysis.spectrum.verdict;
+    let (mut convergent, mut c1) = (v.convergent, v.c1_spectral);
+    let mut evidence = "floating point".to_string();
+    let cert = if s.certify { certify_analysis(scheme.as_ref(), &analysis).ok() } else { None };
+    if let Some(cert) = cert {
+        match cert.verdict {
+            CertVerdict::Proved => {
+                c1 = true;
+                convergent = true;
+                evidence = "certified (C¹ proved by interval enclosures)".into();
+            }
+            CertVerdict::Disproved(_) => {
+                c1 = false;
+                evidence = "certified (C¹ disproved by interval enclosures; convergence in floating point)".into();
+            }
+            CertVerdict::NotProved(_) => {}
+        }
+    }
+    Ok(Decision { at: t.to_string(), kind: "piece", convergent, c1_spectral: c1, evidence, all_real: None })
+}
+
+fn endpoint(r: &RealRoot) -> Endpoint {
+    match &r.rational {
+        Some(x) => Endpoint {
+            rational: Some(x.to_string()),
+            polynomial: None,
+            isolating_interval: None,
+            decimal: r.to_f64(),
+            text: x.to_string(),
+        },
+        None => {
+            let ints = sturm::integer_coefficients(&r.poly);
+            let text = poly_text(&ints);
+            Endpoint {
+                rational: None,
+                polynomial: Some(ints.iter().map(|c| c.to_string()).collect()),
+                isolating_interval: Some([r.lo.to_string(), r.hi.to_string()]),
+                decimal: r.to_f64(),
+                text: format!("the root of {text} in ({}, {})", r.lo, r.hi),
+            }
+        }
+    }
+}
+
+fn poly_text(c: &[num_bigint::BigInt]) -> String {
+    let mut out = String::new();
+    for (k, x) in c.iter().enumerate().rev() {
+        if x.is_zero() {
+            continue;
+        }
+        let sign = if x.is_negative() { "-" } else { "+" };
+        let a = x.abs();
+        let coef = if a.is_one() && k > 0 { String::new() } else { a.to_string() };
+        let mono = match k {
+            0 => String::new(),
+            1 => "t".to_string(),
+            _ => format!("t^{k}"),
+        };
+        let term = if coef.is_empty() {
+            mono
+        } else if mono.is_empty() {
+            coef
+        } else {
+            format!("{coef} {mono}")
+        };
+        if out.is_empty() {
+            out = if sign == "-" { format!("-{term}") } else { term };
+        } else {
+            out = format!("{out} {sign} {term}");
+        }
+    }
+    if out.is_empty() {
+        "0".into()
+    } else {
+        out
+    }
+}
+
+/// The Fourier blocks B_m[a][b] = Σ_τ S[(0,a),(τ,b)] ζ_g^{mτ} over Q(ζ)[t].
+fn fourier_blocks(rows: &[Vec<(usize, TPoly)>], orbits: &Orbits) -> Vec<Vec<Vec<TPoly>>> {
+    let g = orbits.group_order;
+    (0..g)
+        .map(|m| {
+            let list = orbits.block_orbits(m);
+            let mut pos = vec![usize::MAX; orbits.num_orbits()];
+            for (k, &o) in list.iter().enumerate() {
+                pos[o] = k;
+            }
+            let mut b = vec![vec![TPoly::zero(); list.len()]; list.len()];
+            for (ra, &a) in list.iter().enumerate() {
+                for (col, w) in &rows[a] {
+                    let (ob, tau) = orbits.member[*col];
+                    if pos[ob] == usize::MAX {
+                        continue;
+                    }
+                    let z = Cyclotomic::root_of_unity((m * tau) as i64, g as i64)
+                        .unwrap_or_else(|_| Cyclotomic::undefined());
+                    let e = std::mem::replace(&mut b[ra][pos[ob]], TPoly::zero());
+                    b[ra][pos[ob]] = e + w.clone() * TPoly::constant(z);
+                }
+            }
+            b
+        })
+        .collect()
+}
+
+/// det(xI − A) by Berkowitz's division-free algorithm (coefficients lowest
+/// first, monic), over any commutative ring of weights.
+pub fn charpoly<W: Weight>(a: &[Vec<W>]) -> Vec<W> {
+    let n = a.len();
+    // c: coefficients highest first
+    let mut c: Vec<W> = vec![W::one()];
+    for r in 0..n {
+        // T = [1, −a_rr, −R C, −R M C, ..., −R M^{r−1} C]
+        let mut t = vec![W::one(), -a[r][r].clone()];
+        let mut v: Vec<W> = (0..r).map(|i| a[i][r].clone()).collect();
+        for _ in 0..r {
+            let rv = (0..r).fold(W::zero(), |s, j| s + a[r][j].clone() * v[j].clone());
+            t.push(-rv);
+            v = (0..r).map(|i| (0..r).fold(W::zero(), |s, j| s + a[i][j].clone() * v[j].clone())).collect();
+        }
+        // new c = Toeplitz(T) (r+2 × r+1) · c
+        let new: Vec<W> = (0..r + 2)
+            .map(|i| (0..(r + 1).min(i + 1)).fold(W::zero(), |s, j| s + t[i - j].clone() * c[j].clone()))
+            .collect();
+        c = new;
+    }
+    c.reverse();
+    c
+}
+
+fn eval_x(p: &BiPoly, t: &Rational) -> CPoly {
+    let mut c: CPoly = p.iter().map(|w| w.eval(t)).collect();
+    while c.last().is_some_and(Weight::is_zero) {
+        c.pop();
+    }
+    c
+}
+
+fn cdeg(p: &CPoly) -> usize {
+    p.len().saturating_sub(1)
+}
+
+/// The j-th principal subresultant coefficient of a (degree m) and b
+/// (degree n): the determinant of the (m+n−2j)-square matrix of the
+/// coefficients of x^i a (i < n − j) and x^i b (i < m − j) at the powers
+/// x^{m+n−j−1} down to x^j.
+fn psc(a: &CPoly, b: &CPoly, j: usize) -> Cyclotomic {
+    let (m, n) = (cdeg(a), cdeg(b));
+    let size = m + n - 2 * j;
+    if size == 0 {
+        return Cyclotomic::one();
+    }
+    let top = m + n - j - 1;
+    let mut mat: Vec<Vec<Cyclotomic>> = Vec::with_capacity(size);
+    let coef =
+        |p: &CPoly, k: isize| if k >= 0 && (k as usize) < p.len() { p[k as usize].clone() } else { Cyclotomic::zero() };
+    for i in 0..n - j {
+        mat.push((0..size).map(|col| coef(a, (top - col) as isize - i as isize)).collect());
+    }
+    for i in 0..m - j {
+        mat.push((0..size).map(|col| coef(b, (top - col) as isize - i as isize)).collect());
+    }
+    determinant(mat)
+}
+
+fn determinant(mut m: Vec<Vec<Cyclotomic>>) -> Cyclotomic {
+    let n = m.len();
+    let mut det = Cyclotomic::one();
+    for c in 0..n {
+        let Some(p) = (c..n).find(|&r| !Weight::is_zero(&m[r][c])) else { return Cyclotomic::zero() };
+        if p != c {
+            m.swap(p, c);
+            det = -det;
+        }
+        let pivot = m[c][c].clone();
+        det = det * pivot.clone();
+        let inv = Cyclotomic::one() / pivot;
+        for r in c + 1..n {
+            if Weight::is_zero(&m[r][c]) {
+                continue;
+            }
+            let f = m[r][c].clone() * inv.clone();
+            for k in c..n {
+                let v = m[r][k].clone() - f.clone() * m[c][k].clone();
+                m[r][k] = v;
+            }
+        }
+    }
+    det
+}
+
+/// max over k ≥ 1 of deg_t(c_k)/k, c_k the coefficient of x^{d−k} (the
+/// isobaric weight bound of the degree in t).
+fn weight_slope(p: &BiPoly) -> Rational {
+    let d = p.len() - 1;
+    let mut e = <Rational as Zero>::zero();
+    for k in 1..=d {
+        let w = q(p[d - k].degree() as i64, k as i64);
+        if w > e {
+            e = w;
+        }
+    }
+    e
+}
+
+/// The first principal subresultant coefficient of a and b (polynomials in
+/// x whose leading coefficients are nonzero constants) that is not
+/// identically zero, as a polynomial in t over Q(ζ); `None` when neither
+/// depends on t (nothing changes).
+fn first_subresultant(a: &BiPoly, b: &BiPoly) -> Result<Option<CPoly>, Error> {
+    let (m, n) = (a.len() - 1, b.len() - 1);
+    if m == 0 || n == 0 || (a.iter().all(TPoly::is_constant) && b.iter().all(TPoly::is_constant)) {
+        return Ok(None);
+    }
+    for p in [a, b] {
+        if !p[p.len() - 1].is_constant() || Weight::is_zero(&p[p.len() - 1]) {
+            return Err(Error::Message("a block polynomial's leading coefficient depends on t".into()));
+        }
+    }
+    let e = weight_slope(a).max(weight_slope(b));
+    // two bounds of deg_t psc_j: isobaric weight (m − j)(n − j) times the
+    // slope, and row by row (n − j rows of a's coefficients, m − j of b's)
+    let (da, db) = (a.iter().map(TPoly::degree).max().unwrap_or(0), b.iter().map(TPoly::degree).max().unwrap_or(0));
+    let bound = |j: usize| -> usize {
+        let weight = (e.clone() * q(((m - j) * (n - j)) as i64, 1)).floor().to_usize().unwrap_or(usize::MAX);
+        weight.min((n - j) * da + (m - j) * db)
+    };
+    let d0 = bound(0);
+    if d0 + 1 > MAX_POINTS {
+        return Err(Error::Message(format!(
+            "a subresultant of degree up to {d0} in t: beyond the exact sweep's bound"
+        )));
+    }
+    // psc_j has degree ≤ bound(j) in t: one nonzero value shows it is not
+    // identically zero, bound(j) + 1 zeros that it is; the points 0, −1, 1,
+    // −2, 2, ... keep the numbers small
+    let points: Vec<Rational> =
+        (0..=d0 as i64).map(|i| if i % 2 == 0 { q(i / 2, 1) } else { q(-(i + 1) / 2, 1) }).collect();
+    let evals: Vec<(CPoly, CPoly)> = points.iter().map(|t| (eval_x(a, t), eval_x(b, t))).collect();
+    for j in 0..=m.min(n) {
+        let dj = bound(j);
+        let values: Vec<Cyclotomic> = evals[..=dj].iter().map(|(x, y)| psc(x, y, j)).collect();
+        if values.iter().any(|v| !Weight::is_zero(v)) {
+            return Ok(Some(interpolate(&points[..=dj], &values)));
+        }
+    }
+    Err(Error::Message("no principal subresultant coefficient is nonzero (not a polynomial pair)".into()))
+}
+
+/// The polynomial of degree < len through (x_i, y_i) (Newton form, then
+/// expanded), coefficients lowest first.
+fn interpolate(x: &[Rational], y: &[Cyclotomic]) -> CPoly {
+    let n = x.len();
+    let mut dd: Vec<Cyclotomic> = y.to_vec();
+    for level in 1..n {
+        for i in (level..n).rev() {
+            let den = Cyclotomic::from_rational(&(&x[i] - &x[i - level]));
+            dd[i] = (dd[i].clone() - dd[i - 1].clone()) / den;
+        }
+    }
+    // Horner on the Newton form
+    let mut p: CPoly = vec![dd[n - 1].clone()];
+    for i in (0..n - 1).rev() {
+        // p = p·(t − x_i) + dd[i]
+        let xi = Cyclotomic::from_rational(&x[i]);
+        let mut next = vec![Cyclotomic::zero(); p.len() + 1];
+        for (k, c) in p.iter().enumerate() {
+            next[k + 1] = next[k + 1].clone() + c.clone();
+            next[k] = next[k].clone() - c.clone() * xi.clone();
+        }
+        next[0] = next[0].clone() + dd[i].clone();
+        p = next;
+    }
+    while p.last().is_some_and(Weight::is_zero) {
+        p.pop();
+    }
+    p
+}
+
+/// σ_a(c): ζ_N ↦ ζ_N^a on an element of order dividing N (a coprime to N).
+fn conjugate(c: &Cyclotomic, a: u64) -> Cyclotomic {
+    let Some(order) = c.order() else { return Cyclotomic::undefined() };
+    if order <= 2 {
+        return c.clone();
+    }
+    c.coefficients().fold(Cyclotomic::zero(), |s, (i, r)| {
+        let z = Cyclotomic::root_of_unity((i as u64 * a % order as u64) as i64, order as i64)
+            .unwrap_or_else(|_| Cyclotomic::undefined());
+        s + z * Cyclotomic::from_rational(&r)
+    })
+}
+
+fn cmul(a: &CPoly, b: &CPoly) -> CPoly {
+    if a.is_empty() || b.is_empty() {
+        return Vec::new();
+    }
+    let mut out = vec![Cyclotomic::zero(); a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] = out[i + j].clone() + x.clone() * y.clone();
+        }
+    }
+    out
+}
+
+/// A polynomial over Q with the same roots and more: the product of the
+/// distinct Galois conjugates of p (their product is fixed by the Galois
+/// group, so rational).
+fn rational_norm(p: &CPoly) -> Result<Poly, Error> {
+    let order = p.iter().fold(1u64, |l, c| {
+        let m = c.order().unwrap_or(1) as u64;
+        l / crate::numeric::weight::gcd(l as i64, m as i64) as u64 * m
+    });
+    let mut conjugates: Vec<CPoly> = Vec::new();
+    for a in 1..order.max(2) {
+        if crate::numeric::weight::gcd(a as i64, order as i64) != 1 {
+            continue;
+        }
+        let c: CPoly = p.iter().map(|x| conjugate(x, a)).collect();
+        if !conjugates.contains(&c) {
+            conjugates.push(c);
+        }
+    }
+    let prod = conjugates.iter().fold(vec![Cyclotomic::one()], |acc, c| cmul(&acc, c));
+    let coeffs: Option<Vec<Rational>> = prod.iter().map(Cyclotomic::to_rational).collect();
+    let coeffs = coeffs.ok_or_else(|| Error::Message("a norm over the Galois group is not rational".into()))?;
+    let mut poly = Poly { coeffs };
+    while poly.coeffs.len() > 1 && poly.coeffs.last().is_some_and(|c| Zero::is_zero(c)) {
+        poly.coeffs.pop();
+    }
+    if poly.coeffs.is_empty() {
+        poly.coeffs.push(<Rational as Zero>::zero());
+    }
+    Ok(poly)
+}
+
+/// Every root of every block polynomial at t is real (exactly: the rational
+/// norm of each, square-free, has as many real roots as its degree).
+fn all_real(polys: &[BiPoly], t: &Rational) -> bool {
+    polys.iter().all(|p| {
+        let c = eval_x(p, t);
+        let Ok(norm) = rational_norm(&c) else { return false };
+        let sq = sturm::squarefree(&norm);
+        if sq.degree() == 0 {
+            return true;
+        }
+        // Cauchy's bound on the moduli of the roots
+        let lead = sq.coeffs[sq.degree()].abs();
+        let bound = sq.coeffs.iter().map(|x| x.abs() / &lead).fold(<Rational as Zero>::zero(), |a, b| a.max(b))
+            + <Rational as One>::one();
+        let chain = sturm::sturm_chain(&sq);
+        sturm::count_roots(&chain, &-bound.clone(), &bound) == sq.degree()
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn berkowitz_on_a_small_matrix() {
+        // [[2, 1], [1, 2]]: x² − 4x + 3
+        let a = vec![vec![q(2, 1), q(1, 1)], vec![q(1, 1), q(2, 1)]];
+        assert_eq!(charpoly(&a), vec![q(3, 1), q(-4, 1), q(1, 1)]);
+        let b = vec![vec![q(1, 1), q(2, 1), q(0, 1)], vec![q(0, 1), q(3, 1), q(1, 1)], vec![q(4, 1), q(0, 1), q(1, 1)]];
+        // det(xI − B) = x³ − 5x² + 7x − 11 (trace 5, principal minors 3 + 1 + 3, det 11)
+        assert_eq!(charpoly(&b), vec![q(-11, 1), q(7, 1), q(-5, 1), q(1, 1)]);
+    }
+
+    #[test]
+    fn subresultants_find_where_roots_meet() {
+        // a = x² − t, b = x − 1: common root at t = 1
+        let c = |x: i64| TPoly::int(x);
+        let a = vec![-TPoly::variable(), c(0), c(1)];
+        let b = vec![c(-1), c(1)];
+        let r = first_subresultant(&a, &b).unwrap().unwrap();
+        let r = rational_norm(&r).unwrap();
+        assert_eq!(sturm::squarefree(&r), sturm::primitive(&Poly { coeffs: vec![q(-1, 1), q(1, 1)] }));
+    }
+}

@@ -1,0 +1,255 @@
+//! `subdlab sweep --exact`: the sets of the swept parameter where a scheme
+//! converges and is spectrally C¹, with exact algebraic endpoints, checked
+//! against closed forms derived here (never against numbers the program
+//! printed): Huang's non-box scheme's G¹/C¹ bound a > 1/4 − cos(2π/k)/4, and
+//! a Loop variant with a free vertex weight whose spectrum is written down by
+//! hand. Every endpoint is also re-checked with the ordinary floating-point
+//! spectrum just inside and just outside.
+
+use crate::common;
+use common::{fails, subdlab};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::Zero;
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let out = subdlab(args);
+    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+fn rat(s: &str) -> BigRational {
+    let (p, q) = s.split_once('/').unwrap_or((s, "1"));
+    BigRational::new(p.parse::<BigInt>().unwrap(), q.parse::<BigInt>().unwrap())
+}
+
+/// Polynomials over Q, lowest degree first.
+type P = Vec<BigRational>;
+
+fn trim(mut p: P) -> P {
+    while p.last().is_some_and(|c| c.is_zero()) {
+        p.pop();
+    }
+    p
+}
+
+fn mul(a: &P, b: &P) -> P {
+    if a.is_empty() || b.is_empty() {
+        return Vec::new();
+    }
+    let mut out = vec![BigRational::zero(); a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] += x * y;
+        }
+    }
+    trim(out)
+}
+
+fn add(a: &P, b: &P) -> P {
+    let n = a.len().max(b.len());
+    let z = BigRational::zero();
+    trim((0..n).map(|k| a.get(k).unwrap_or(&z) + b.get(k).unwrap_or(&z)).collect())
+}
+
+/// p(u) for a polynomial u: Horner.
+fn compose(p: &P, u: &P) -> P {
+    p.iter().rev().fold(Vec::new(), |acc, c| add(&mul(&acc, u), &vec![c.clone()]))
+}
+
+/// The remainder of a modulo a monic m.
+fn rem(a: &P, m: &P) -> P {
+    let mut r = trim(a.clone());
+    let d = m.len() - 1;
+    while r.len() > d {
+        let k = r.len() - 1 - d;
+        let c = r[r.len() - 1].clone();
+        for (i, mc) in m.iter().enumerate() {
+            r[i + k] -= &c * mc;
+        }
+        r = trim(r);
+    }
+    r
+}
+
+/// The minimal polynomial of y = 2 cos(2π/k) over Q, from its definition:
+/// ∏ (y − 2 cos(2πj/k)) over 1 ≤ j < k/2 coprime to k (and j = k/2 for
+/// k = 2), whose coefficients are integers (the conjugates of 2 cos(2π/k)
+/// are exactly these), so rounding the floating-point product is exact for
+/// small k.
+fn min_poly_2cos(k: i64) -> P {
+    let gcd = |mut a: i64, mut b: i64| {
+        while b != 0 {
+            (a, b) = (b, a % b);
+        }
+        a
+    };
+    let mut c: Vec<f64> = vec![1.0];
+    for j in 1..=k / 2 {
+        if gcd(j, k) != 1 || 2 * j == k && k > 2 {
+            continue;
+        }
+        let r = 2.0 * (2.0 * std::f64::consts::PI * j as f64 / k as f64).cos();
+        let mut next = vec![0.0; c.len() + 1];
+        for (i, x) in c.iter().enumerate() {
+            next[i + 1] += x;
+            next[i] -= r * x;
+        }
+        c = next;
+    }
+    c.iter().map(|x| BigRational::from_integer(BigInt::from(x.round() as i64))).collect()
+}
+
+/// The endpoint `e` (JSON) is exactly a + b·cos(2π/k), a and b rational:
+/// its polynomial p vanishes there (p(a + b y/2) ≡ 0 modulo the minimal
+/// polynomial of y = 2cos(2π/k)), its isolating interval holds the value,
+/// and the decimal agrees; a rational endpoint must equal the value itself.
+fn assert_endpoint_is(e: &serde_json::Value, a: &BigRational, b: &BigRational, k: i64, what: &str) {
+    let value = num_traits::ToPrimitive::to_f64(a).unwrap()
+        + num_traits::ToPrimitive::to_f64(b).unwrap() * (2.0 * std::f64::consts::PI / k as f64).cos();
+    assert!((e["decimal"].as_f64().unwrap() - value).abs() < 1e-12, "{what}: {e} ≠ {value}");
+    let m = min_poly_2cos(k);
+    if let Some(r) = e["rational"].as_str() {
+        // then cos(2π/k) is rational (degree-1 minimal polynomial): compare exactly
+        assert_eq!(m.len(), 2, "{what}: a rational endpoint {r} where the closed form is irrational");
+        let y = -&m[0] / &m[1];
+        let exact = a + b * y / BigRational::from_integer(2.into());
+        assert_eq!(rat(r), exact, "{what}");
+        return;
+    }
+    let p: P = e["polynomial"].as_array().unwrap().iter().map(|c| rat(c.as_str().unwrap())).collect();
+    let half_b = b / BigRational::from_integer(2.into());
+    let u: P = vec![a.clone(), half_b];
+    assert!(rem(&compose(&p, &u), &m).is_empty(), "{what}: {e} does not vanish at {a} + {b} cos(2π/{k})");
+    let iv = e["isolating_interval"].as_array().unwrap();
+    let (lo, hi) = (rat(iv[0].as_str().unwrap()), rat(iv[1].as_str().unwrap()));
+    assert!(lo < hi, "{what}");
+    let (lo, hi) = (num_traits::ToPrimitive::to_f64(&lo).unwrap(), num_traits::ToPrimitive::to_f64(&hi).unwrap());
+    assert!(lo <= value + 1e-14 && value - 1e-14 <= hi, "{what}: ({lo}, {hi}) misses {value}");
+}
+
+/// The float spectrum's C¹ and convergence verdicts at one value.
+fn verdict(scheme: &str, param: &str, n: usize, value: f64) -> (bool, bool) {
+    let v = json(&[
+        "spectrum",
+        scheme,
+        "--valence",
+        &n.to_string(),
+        "--param",
+        &format!("{param}={value:.12}"),
+        "--json",
+        "--no-exact",
+    ]);
+    (v["verdict"]["c1_spectral"].as_bool().unwrap(), v["verdict"]["convergent"].as_bool().unwrap())
+}
+
+fn intervals<'a>(v: &'a serde_json::Value, n: usize, key: &str) -> &'a Vec<serde_json::Value> {
+    let set = v["valences"].as_array().unwrap().iter().find(|s| s["valence"].as_u64() == Some(n as u64)).unwrap();
+    assert_eq!(set["exact"], true, "n = {n}: {}", set["not_exact_because"]);
+    set[key].as_array().unwrap()
+}
+
+/// Huang's non-box scheme: the paper's bound (tests/non_box.rs derives it)
+/// a > 1/4 − cos(2π/k)/4 is the lower end of the spectral C¹ set, exactly,
+/// open, at every k = 3..12 but the regular k = 4 (whose rules do not read
+/// a); just above it the float spectrum is C¹, just below it is not.
+#[test]
+fn non_box_lower_end_is_the_papers_bound_exactly() {
+    let v = json(&["sweep", "non-box", "--valences", "3..12", "--param", "a=0:1:1/10", "--exact", "--json"]);
+    let quarter = BigRational::new(1.into(), 4.into());
+    for k in (3..=12).filter(|&k| k != 4) {
+        let c1 = intervals(&v, k, "c1_spectral");
+        assert_eq!(c1.len(), 1, "k = {k}: {c1:?}");
+        let from = &c1[0]["from"];
+        assert_eq!(c1[0]["from_closed"], false, "k = {k}: a strict bound");
+        assert_endpoint_is(from, &quarter, &-quarter.clone(), k as i64, &format!("non-box k = {k}"));
+        let x = from["decimal"].as_f64().unwrap();
+        assert!(verdict("non-box", "a", k, x + 1e-6).0, "k = {k}: C¹ just above {x}");
+        assert!(!verdict("non-box", "a", k, x - 1e-6).0, "k = {k}: not C¹ just below {x}");
+    }
+}
+
+/// A Loop variant with a free vertex weight w (tests/data/
+/// loop-free-vertex-weight.toml): v' = (1 − w) v + (w/n) Σ e_j at the
+/// extraordinary vertex, Loop's edge rule e_j' = 3/8 v + 3/8 e_j +
+/// 1/8 (e_{j−1} + e_{j+1}), regular vertices Loop's. On the centre and its
+/// ring the Fourier block 0 (v and the ring's mean ē) is
+///     [[1 − w, w], [3/8, 5/8]]: trace 13/8 − w, determinant 5/8 − w,
+/// eigenvalues 1 and 5/8 − w; block m ≥ 1 is the ring's circulant,
+///     3/8 + (ζ^m + ζ^{−m})/8 = 3/8 + cos(2πm/n)/4,
+/// largest at m = 1 and n − 1: λ1 = 3/8 + c/4, c = cos(2π/n), ≥ 1/4; the
+/// outer rings of the neighbourhood add the regular rules' 1/8 and below.
+/// Hence convergence iff |5/8 − w| < 1: w ∈ [0, 13/8) in the range [0, 2]
+/// (0 itself: 5/8 < 1); spectral C¹ iff |5/8 − w| < 3/8 + c/4:
+///     1/4 − c/4 < w < 1 + c/4 (both ends open).
+/// At n = 6 the rules do not read w (regular Loop): both sets are [0, 2].
+#[test]
+fn loop_free_vertex_weight_matches_the_hand_derived_sets() {
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/loop-free-vertex-weight.toml");
+    let v = json(&["sweep", file, "--valences", "3..8", "--param", "w=0:2:1/8", "--exact", "--json"]);
+    let r = |p: i64, q: i64| BigRational::new(p.into(), q.into());
+    for n in 3..=8usize {
+        let conv = intervals(&v, n, "convergent");
+        let c1 = intervals(&v, n, "c1_spectral");
+        assert_eq!(conv.len(), 1, "n = {n}");
+        assert_eq!(c1.len(), 1, "n = {n}");
+        assert_eq!(conv[0]["from"]["rational"], "0");
+        assert_eq!(conv[0]["from_closed"], true);
+        if n == 6 {
+            for set in [&conv[0], &c1[0]] {
+                assert_eq!(set["to"]["rational"], "2");
+                assert_eq!(set["to_closed"], true);
+            }
+            assert_eq!(c1[0]["from"]["rational"], "0");
+            continue;
+        }
+        assert_eq!(conv[0]["to"]["rational"], "13/8", "n = {n}");
+        assert_eq!(conv[0]["to_closed"], false, "n = {n}");
+        assert_eq!(c1[0]["from_closed"], false);
+        assert_eq!(c1[0]["to_closed"], false);
+        let what = format!("loop-w n = {n}");
+        assert_endpoint_is(&c1[0]["from"], &r(1, 4), &r(-1, 4), n as i64, &format!("{what} lower"));
+        assert_endpoint_is(&c1[0]["to"], &r(1, 1), &r(1, 4), n as i64, &format!("{what} upper"));
+        // just inside and just outside, in floating point
+        let (lo, hi) = (c1[0]["from"]["decimal"].as_f64().unwrap(), c1[0]["to"]["decimal"].as_f64().unwrap());
+        assert!(verdict(file, "w", n, lo + 1e-6).0 && verdict(file, "w", n, hi - 1e-6).0, "{what}: C¹ inside");
+        assert!(!verdict(file, "w", n, lo - 1e-6).0 && !verdict(file, "w", n, hi + 1e-6).0, "{what}: not outside");
+        assert!(verdict(file, "w", n, 13.0 / 8.0 - 1e-6).1 && !verdict(file, "w", n, 13.0 / 8.0 + 1e-6).1, "{what}");
+    }
+    // the text names the sets with their exact ends
+    let out = subdlab(&["sweep", file, "--valences", "3..3", "--param", "w=0:2:1/8", "--exact"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("C1 spectral: (3/8, 7/8)"), "{text}");
+    assert!(text.contains("convergent: [0, 13/8)"), "{text}");
+    // the certified path decides the same sets
+    let c = json(&["sweep", file, "--valences", "4..4", "--param", "w=0:2:1/8", "--exact", "--certify", "--json"]);
+    let c1 = intervals(&c, 4, "c1_spectral");
+    assert_eq!((c1[0]["from"]["rational"].as_str(), c1[0]["to"]["rational"].as_str()), (Some("1/4"), Some("1")));
+    assert!(c1[0]["evidence"].as_str().unwrap().starts_with("certified"), "{}", c1[0]);
+}
+
+/// Bad input: one clear line, non-zero exit.
+#[test]
+fn exact_sweep_refuses_what_it_cannot_do() {
+    let err = fails(&["sweep", "non-box", "--valences", "3..4", "--exact"]);
+    assert!(err.contains("--param NAME=START:END:STEP"), "{err}");
+    fails(&["sweep", "non-box", "--valences", "3..4", "--param", "a=0:1:1/2", "--exact", "--charmap"]);
+    fails(&["sweep", "non-box", "--valences", "3..4", "--param", "a=0:1:1/2", "--certify"]);
+    let dir = tempfile::tempdir().unwrap();
+    for (name, centre, edge) in [
+        ("quotient", "1 - w/(1 + w)", "w/((1 + w) n)"),
+        ("kronecker", "1 - w + kronecker(w - 1/2)/8", "(w - kronecker(w - 1/2)/8) / n"),
+    ] {
+        let file = dir.path().join(format!("{name}.toml"));
+        std::fs::write(
+            &file,
+            format!(
+                "name = \"{name}\"\ntopology = \"primal-triangle\"\n[params.w]\ndefault = \"3/8\"\nmin = 0\nmax = 2\n\
+                 [vertex]\ncentre = \"{centre}\"\nedge = \"{edge}\"\n[edge]\nends = \"3/8\"\nopposite = \"1/8\"\n"
+            ),
+        )
+        .unwrap();
+        let err = fails(&["sweep", file.to_str().unwrap(), "--valences", "5..5", "--param", "w=0:1:1/4", "--exact"]);
+        assert!(err.contains("not polynomials in w"), "{name}: {err}");
+    }
+}
