@@ -549,3 +549,69 @@ fn the_regular_boundary_passes_with_literature_values() {
         assert!(map.regular && map.injective, "{kind:?}: {:?}", map.reasons);
     }
 }
+
+/// Biermann–Levin–Zorin's γ (`-p blz=1`) where Hoppe's rules fail
+/// (Catmull–Clark k = 4: 1/2 defective, k = 5, 6: rays collapsed; Loop
+/// k = 6: 1/2 defective, k = 7: rays collapsed). By the derivation the mode
+/// m = 1 is 1/2 exactly, every other mode below it, and 1/2 is double and
+/// non-defective (m = 1 is odd): shown exactly over Q(√d) where cos(π/k) is
+/// in one (k ≤ 6); at Loop k = 7 (cos(π/7) is a cubic irrational) the mode
+/// argument and the raster stand. ρ(C) < 1/2, so λ1 = λ2 = 1/2 and |λ3| is
+/// the largest other mode. The program's verdict must pass there, the
+/// raster find the map regular and injective, and Hoppe's rules at the same
+/// k must not pass both.
+#[test]
+fn blz_rules_pass_where_hoppe_rules_fail() {
+    for (kind, k) in
+        [(Kind::CatmullClark, 4), (Kind::CatmullClark, 5), (Kind::CatmullClark, 6), (Kind::Loop, 6), (Kind::Loop, 7)]
+    {
+        let f = facts(kind, k, true, q(1, 2));
+        assert!(
+            (f.spec_a[1] - 0.5).abs() < 1e-12 && (f.spec_a[2] - 0.5).abs() < 1e-12,
+            "{kind:?} k = {k}: {:?}",
+            f.spec_a
+        );
+        assert!(f.spec_a[3] < 0.5 - 1e-3, "{kind:?} k = {k}: {:?}", f.spec_a);
+        if k <= 6 {
+            assert_eq!(nullities(&f.a, &Qd::r(1, 2)), (2, 2), "{kind:?} k = {k}: 1/2 double, non-defective");
+        }
+        let an = boundary(kind, k, true);
+        let v = &an.spectrum.verdict;
+        assert!(v.c1_spectral, "{kind:?} k = {k}: {:?}", v.reasons);
+        let e = &an.spectrum.eigenvalues;
+        assert!((e[1].re - 0.5).abs() < 1e-10 && e[1].algebraic_multiplicity == 2 && e[1].geometric_multiplicity == 2);
+        assert!(
+            (v.sub_subdominant.unwrap() - f.spec_a[3]).abs() < 1e-10,
+            "{kind:?} k = {k}: |λ3| against {}",
+            f.spec_a[3]
+        );
+        let map = charmap_of(kind, k, true);
+        assert!(map.regular && map.injective, "{kind:?} k = {k}: {:?}", map.reasons);
+        // Hoppe's rules at the same configuration: no C¹ verdict
+        let hoppe_spectral = boundary(kind, k, false).spectrum.verdict.c1_spectral;
+        let hoppe_map = charmap_of(kind, k, false);
+        assert!(!(hoppe_spectral && hoppe_map.regular && hoppe_map.injective), "{kind:?} k = {k}: Hoppe passes");
+    }
+}
+
+/// At the regular boundary BLZ's γ is Hoppe's (Catmull–Clark k = 2:
+/// 3/8 − cos(π/2)/4 = 3/8; Loop k = 3: 1/2 − cos(π/3)/4 = 3/8), so S is the
+/// same matrix exactly, and so it is at one sector (no edge at the centre
+/// is interior; the ray vertices' sectors are regular); `blz = 0` is
+/// Hoppe's rules (Loop k = 6 still fails); a value
+/// outside [0, 1] is refused in one line.
+#[test]
+fn blz_is_hoppe_at_the_regular_boundary_and_checks_its_range() {
+    for (kind, k) in [(Kind::CatmullClark, 2), (Kind::Loop, 3), (Kind::CatmullClark, 1), (Kind::Loop, 1)] {
+        let hoppe = boundary(kind, k, false);
+        let blz = boundary(kind, k, true);
+        let (h, b) = (hoppe.exact_matrix.as_ref().unwrap(), blz.exact_matrix.as_ref().unwrap());
+        assert_eq!(h.labels.len(), b.labels.len());
+        assert_eq!(h.rows, b.rows, "{kind:?} k = {k}");
+    }
+    let zero = schemes::build("loop", &[("blz".into(), "0".into())]).unwrap();
+    let config = Configuration::tagged(zero.as_ref(), 6, None, Tagging::Boundary).unwrap();
+    assert!(!analyse(zero.as_ref(), &config, &Options::default()).unwrap().spectrum.verdict.c1_spectral);
+    let e = schemes::build("catmull-clark", &[("blz".into(), "2".into())]).err().unwrap().to_string();
+    assert!(e.contains("blz") && e.contains("out of range") && !e.contains('\n'), "{e}");
+}
