@@ -615,3 +615,35 @@ fn blz_is_hoppe_at_the_regular_boundary_and_checks_its_range() {
     let e = schemes::build("catmull-clark", &[("blz".into(), "2".into())]).err().unwrap().to_string();
     assert!(e.contains("blz") && e.contains("out of range") && !e.contains('\n'), "{e}");
 }
+
+/// The claims file recording these verdicts (subject key `tag`) verifies
+/// with every verdict the one it records; a tagged curvature claim is
+/// refused in one line.
+#[test]
+fn the_boundary_claims_file_verifies() {
+    let exe = env!("CARGO_BIN_EXE_subdlab");
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/claims/boundary-blz.toml");
+    let out = std::process::Command::new(exe)
+        .args(["verify", "--check-expected", "--claims", file, "--json"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let claims = v[0]["claims"].as_array().unwrap();
+    assert_eq!(claims.len(), 11);
+    for c in claims {
+        assert_eq!(c["verdict"], "HOLDS", "{c}");
+    }
+    let dir = std::env::temp_dir().join(format!("subdlab-tagged-claims-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("tagged-curvature.toml");
+    std::fs::write(
+        &bad,
+        "paper = \"t\"\ntitle = \"t\"\n[[claim]]\nid = \"c\"\nlocation = \"-\"\nstatement = \"-\"\ncheck = \"curvature\"\nscheme = \"loop\"\ntag = \"boundary\"\nvalences = [3]\nclass = \"bounded\"\n",
+    )
+    .unwrap();
+    let out = std::process::Command::new(exe).args(["verify", "--claims", bad.to_str().unwrap()]).output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout).to_string() + &String::from_utf8_lossy(&out.stderr);
+    assert!(text.contains("not available at tagged vertices"), "{text}");
+    std::fs::remove_dir_all(&dir).ok();
+}

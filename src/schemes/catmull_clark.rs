@@ -70,7 +70,7 @@ impl Wants for CatmullClark {
                 | ("vertex-crease", "centre" | "crease")
                 | ("vertex-corner", "centre")
                 | ("edge-crease", "ends")
-                | ("edge-sector", "ends" | "side")
+                | ("edge-sector", "crease-end" | "other-end" | "side")
         )
     }
 }
@@ -97,14 +97,8 @@ impl<W: Weight> Mask<W> for CatmullClark {
             ("vertex-corner", "centre", _) => W::one(),
             ("edge-crease", "ends", _) => W::ratio(1, 2),
             // BLZ next to a crease vertex (slot.n = k): (3/4 − γ) v0 + γ v_j, sides 1/16
-            ("edge-sector", "ends", _) => {
-                let g = blz::gamma(&self.params, W::ratio(3, 8), slot.n)?;
-                if slot.j == 0 {
-                    W::ratio(3, 4) - g
-                } else {
-                    g
-                }
-            }
+            ("edge-sector", "crease-end", _) => W::ratio(3, 4) - blz::gamma(&self.params, W::ratio(3, 8), slot.n)?,
+            ("edge-sector", "other-end", _) => blz::gamma(&self.params, W::ratio(3, 8), slot.n)?,
             ("edge-sector", "side", _) => W::ratio(1, 16),
             // no weight on slots the mask does not use
             _ => W::zero(),

@@ -67,7 +67,7 @@ impl Wants for Loop {
                 | ("vertex-crease", "centre" | "crease")
                 | ("vertex-corner", "centre")
                 | ("edge-crease", "ends")
-                | ("edge-sector", "ends" | "opposite")
+                | ("edge-sector", "crease-end" | "other-end" | "opposite")
         )
     }
 }
@@ -86,14 +86,8 @@ impl<W: Weight> Mask<W> for Loop {
             ("vertex-corner", "centre") => W::one(),
             ("edge-crease", "ends") => W::ratio(1, 2),
             // BLZ next to a crease vertex (slot.n = k): (3/4 − γ) v0 + γ v_j, apexes 1/8
-            ("edge-sector", "ends") => {
-                let g = blz::gamma(&self.params, W::ratio(1, 2), slot.n)?;
-                if slot.j == 0 {
-                    W::ratio(3, 4) - g
-                } else {
-                    g
-                }
-            }
+            ("edge-sector", "crease-end") => W::ratio(3, 4) - blz::gamma(&self.params, W::ratio(1, 2), slot.n)?,
+            ("edge-sector", "other-end") => blz::gamma(&self.params, W::ratio(1, 2), slot.n)?,
             ("edge-sector", "opposite") => W::ratio(1, 8),
             // no weight on slots the mask does not use
             _ => W::zero(),

@@ -172,7 +172,8 @@ pub(crate) const EDGE_SECTOR_QUAD: RuleSlots = RuleSlots {
         E,
         Any,
         &[
-            fam("ends", Arity::Fixed(2), "the crease or boundary end v0 (j = 0) and the other end (j = 1)"),
+            fam("crease-end", ONE, "the crease or boundary end v0"),
+            fam("other-end", ONE, "the edge's other end"),
             fam("side", Arity::Fixed(4), "the two other corners of each of the edge's two quads"),
         ],
         "the new point of an edge that is not sharp at a crease or boundary vertex v0 (n: the faces of v0's sector holding the edge)",
@@ -186,7 +187,8 @@ pub(crate) const EDGE_SECTOR_TRIANGLE: RuleSlots = RuleSlots {
         E,
         Any,
         &[
-            fam("ends", Arity::Fixed(2), "the crease or boundary end v0 (j = 0) and the other end (j = 1)"),
+            fam("crease-end", ONE, "the crease or boundary end v0"),
+            fam("other-end", ONE, "the edge's other end"),
             fam("opposite", Arity::Fixed(2), "the apexes of the edge's two triangles"),
         ],
         "the new point of an edge that is not sharp at a crease or boundary vertex v0 (n: the faces of v0's sector holding the edge)",
@@ -240,8 +242,8 @@ fn sector_edge(mesh: &PolyMesh, v: VertexId, w: VertexId, size: usize) -> Result
     let k = sector_faces(mesh, v, w)?;
     let at = |face: &[VertexId], k: usize, t: usize| face[(k + t) % face.len()];
     let mut p = Part::around(EDGE_SECTOR_QUAD.name, k, v);
-    p.put("ends", 0, v);
-    p.put("ends", 1, w);
+    p.put("crease-end", 0, v);
+    p.put("other-end", 0, w);
     if size == 4 {
         p.put("side", 0, at(l, kl, 2));
         p.put("side", 1, at(l, kl, 3));
