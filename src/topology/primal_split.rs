@@ -468,10 +468,10 @@ mod tests {
         assert_eq!(rule(Origin::Edge(0, 1)), Ok("edge-crease"));
         // the middle edge is not sharp, between two crease vertices: a mask
         // that weighs every rule (All) takes BLZ's edge-sector from each end,
-        // each sector one face (k = 1)
+        // each sector the strip's two faces (k = 2)
         assert_eq!(rule(Origin::Edge(1, 4)), Ok("edge-sector"));
         let g = unit.gather(&m, Origin::Edge(1, 4), &All).unwrap();
-        assert_eq!(g.parts.iter().map(|p| (p.n, p.scale)).collect::<Vec<_>>(), vec![(1, (1, 2)), (1, (1, 2))]);
+        assert_eq!(g.parts.iter().map(|p| (p.n, p.scale)).collect::<Vec<_>>(), vec![(2, (1, 2)), (2, (1, 2))]);
         assert_eq!(rule(Origin::Face(0)), Ok("face"));
         let slots = unit.gather(&m, Origin::Vertex(1), &All).unwrap().parts[0].slots.clone();
         let targets: Vec<_> = slots.iter().map(|s| (s.family, s.j, s.target.clone())).collect();
