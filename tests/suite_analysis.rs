@@ -27,4 +27,5 @@ mod exact_vs_float;
 mod jordan_irrational;
 mod local_matrix;
 mod shape_chart;
+mod tagged_verdicts;
 mod tagged_vertices;

@@ -12,7 +12,7 @@ use crate::error::Error;
 pub const COMMON_KEYS: &[&str] = &["id", "location", "statement", "convention", "expected", "by_construction", "check"];
 /// Keys of the checks that analyse a scheme (`CheckKind::TAKES_SUBJECT`:
 /// all but identity, matrix-eigenvalues, lattice-matrix and builtin).
-pub const SUBJECT_KEYS: &[&str] = &["scheme", "valences", "faces", "params", "neighbourhood", "vars"];
+pub const SUBJECT_KEYS: &[&str] = &["scheme", "valences", "faces", "params", "neighbourhood", "tag", "vars"];
 
 /// The built-in registry: one file per source paper, compiled in.
 pub const BUILTIN: &[(&str, &str)] = &[

@@ -53,6 +53,12 @@ pub struct Subject {
     /// "minimal" or "analysis" (default analysis)
     #[serde(default)]
     pub neighbourhood: Option<String>,
+    /// a tagged vertex (`--tag`): `boundary`, `corner`, `crease:K` or
+    /// `dart`; the valences then count what `--tag` says (the faces of an
+    /// open fan at a boundary or corner), and the spectral verdict is the
+    /// sector criterion (`spectrum::verdict::sector`)
+    #[serde(default)]
+    pub tag: Option<String>,
     /// extra variables for the stated expressions, as expressions in n
     /// (e.g. `a = "3/4 - (1/2 + cos(2 pi / n)/4)^2"`)
     #[serde(default)]
@@ -73,6 +79,7 @@ impl Subject {
             faces: Vec::new(),
             params: Default::default(),
             neighbourhood: None,
+            tag: None,
             vars: vars.clone(),
         }
     }
@@ -105,11 +112,23 @@ impl Subject {
     }
 
     /// How a configuration is named in verdicts: `n = 5`, or `n = 5
-    /// (QQTQT)` for a face sequence.
+    /// (QQTQT)` for a face sequence, `n = 4 (boundary)` for a tagged vertex.
     pub fn label(&self, n: usize) -> String {
-        match self.faces_for(n) {
-            Some(f) => format!("n = {n} ({f})"),
-            None => format!("n = {n}"),
+        let mut notes: Vec<&str> = self.faces_for(n).into_iter().collect();
+        notes.extend(self.tag.as_deref());
+        match notes[..] {
+            [] => format!("n = {n}"),
+            _ => format!("n = {n} ({})", notes.join(", ")),
+        }
+    }
+
+    /// The checks the tagged configurations do not have yet (the certified
+    /// spectrum and map, curvature) refuse a `tag` in one line, as the
+    /// command line refuses `--tag` there.
+    pub fn refuse_tag(&self, what: &str) -> Result<(), Error> {
+        match &self.tag {
+            Some(t) => Err(Error::Claim(format!("tag = \"{t}\": {what} is not available at tagged vertices yet"))),
+            None => Ok(()),
         }
     }
 }

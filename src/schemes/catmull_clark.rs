@@ -14,9 +14,14 @@
 //!
 //! (the cubic B-spline rules along the crease; a dart, and every edge that is
 //! not sharp, keeps the smooth rule).
+//!
+//! With the parameter `blz` (`schemes::blz`): an edge that is not sharp at a
+//! crease or boundary vertex v0 of k sectors takes Biermann–Levin–Zorin's
+//! (3/4 − γ) v0 + γ v_j + 1/16 (sides), γ = 3/8 − cos(π/k)/4.
 
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::{Inexact, Weight};
+use crate::schemes::blz;
 use crate::schemes::entry::SchemeEntry;
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
@@ -40,7 +45,7 @@ pub fn entry() -> SchemeEntry {
     SchemeEntry {
         name: INFO.name,
         description: INFO.description,
-        params: Vec::new,
+        params: || vec![blz::BLZ],
         build: |params| Box::new(CatmullClark { params }),
     }
 }
@@ -54,6 +59,7 @@ pub fn entry() -> SchemeEntry {
 impl Wants for CatmullClark {
     fn rule(&self, rule: &str) -> bool {
         matches!(rule, "vertex" | "edge" | "face" | "vertex-crease" | "vertex-corner" | "edge-crease")
+            || (rule == blz::RULE && blz::share(&self.params).is_some())
     }
     fn family(&self, rule: &str, family: &str) -> bool {
         matches!(
@@ -64,6 +70,7 @@ impl Wants for CatmullClark {
                 | ("vertex-crease", "centre" | "crease")
                 | ("vertex-corner", "centre")
                 | ("edge-crease", "ends")
+                | ("edge-sector", "crease-end" | "other-end" | "side")
         )
     }
 }
@@ -89,6 +96,10 @@ impl<W: Weight> Mask<W> for CatmullClark {
             ("vertex-crease", "crease", _) => W::ratio(1, 8),
             ("vertex-corner", "centre", _) => W::one(),
             ("edge-crease", "ends", _) => W::ratio(1, 2),
+            // BLZ next to a crease vertex (slot.n = k): (3/4 − γ) v0 + γ v_j, sides 1/16
+            ("edge-sector", "crease-end", _) => W::ratio(3, 4) - blz::gamma(&self.params, W::ratio(3, 8), slot.n)?,
+            ("edge-sector", "other-end", _) => blz::gamma(&self.params, W::ratio(3, 8), slot.n)?,
+            ("edge-sector", "side", _) => W::ratio(1, 16),
             // no weight on slots the mask does not use
             _ => W::zero(),
         })

@@ -8,10 +8,15 @@
 //! boundary vertex 3/4 v + 1/8 (a + b) over its two sharp neighbours, a
 //! corner v, a sharp edge (a + b)/2; darts and edges that are not sharp keep
 //! the smooth rules.
+//!
+//! With the parameter `blz` (`schemes::blz`): an edge that is not sharp at a
+//! crease or boundary vertex v0 of k sectors takes Biermann–Levin–Zorin's
+//! (3/4 − γ) v0 + γ v_j + 1/8 (c + d), γ = 1/2 − cos(π/k)/4.
 
 use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Inexact;
 use crate::numeric::Weight;
+use crate::schemes::blz;
 use crate::schemes::entry::SchemeEntry;
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
@@ -35,7 +40,7 @@ pub fn entry() -> SchemeEntry {
     SchemeEntry {
         name: INFO.name,
         description: INFO.description,
-        params: Vec::new,
+        params: || vec![blz::BLZ],
         build: |params| Box::new(Loop { params }),
     }
 }
@@ -52,6 +57,7 @@ pub fn loop_beta<W: Weight>(n: i64) -> Result<W, crate::numeric::Inexact> {
 impl Wants for Loop {
     fn rule(&self, rule: &str) -> bool {
         matches!(rule, "vertex" | "edge" | "vertex-crease" | "vertex-corner" | "edge-crease")
+            || (rule == blz::RULE && blz::share(&self.params).is_some())
     }
     fn family(&self, rule: &str, family: &str) -> bool {
         matches!(
@@ -61,6 +67,7 @@ impl Wants for Loop {
                 | ("vertex-crease", "centre" | "crease")
                 | ("vertex-corner", "centre")
                 | ("edge-crease", "ends")
+                | ("edge-sector", "crease-end" | "other-end" | "opposite")
         )
     }
 }
@@ -78,6 +85,10 @@ impl<W: Weight> Mask<W> for Loop {
             ("vertex-crease", "crease") => W::ratio(1, 8),
             ("vertex-corner", "centre") => W::one(),
             ("edge-crease", "ends") => W::ratio(1, 2),
+            // BLZ next to a crease vertex (slot.n = k): (3/4 − γ) v0 + γ v_j, apexes 1/8
+            ("edge-sector", "crease-end") => W::ratio(3, 4) - blz::gamma(&self.params, W::ratio(1, 2), slot.n)?,
+            ("edge-sector", "other-end") => blz::gamma(&self.params, W::ratio(1, 2), slot.n)?,
+            ("edge-sector", "opposite") => W::ratio(1, 8),
             // no weight on slots the mask does not use
             _ => W::zero(),
         })

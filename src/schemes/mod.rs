@@ -5,6 +5,8 @@
 //! scalar so that the same code gives float and exact stencils; most are
 //! masks over their refinement host's slots (`sdc::slots`).
 
+// Biermann–Levin–Zorin's edge rule at crease vertices, a parameter of catmull_clark and loop
+pub mod blz;
 pub mod catmull_clark;
 // the curve schemes of Lin–Luo section 3 (the Z domain)
 pub mod curves;

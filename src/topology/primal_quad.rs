@@ -18,7 +18,9 @@ use crate::sdc::slots::{
     GatherError, Gathered, HostSpec, Part, RuleSlots, Wants, ONE, PER_J, QUAD_VERTEX,
 };
 use crate::sdc::{CentreKind, Origin};
-use crate::topology::primal_split::{self, primal_edge, tagged, EDGE_CREASE, VERTEX_CORNER, VERTEX_CREASE};
+use crate::topology::primal_split::{
+    self, primal_edge, tagged, EDGE_CREASE, EDGE_SECTOR_QUAD, VERTEX_CORNER, VERTEX_CREASE,
+};
 
 pub struct PrimalQuad;
 
@@ -117,6 +119,7 @@ const RULES: &[RuleSlots] = &[
     VERTEX_CREASE,
     VERTEX_CORNER,
     EDGE_CREASE,
+    EDGE_SECTOR_QUAD,
 ];
 
 /// The primal quad vertex rule over any polygons: per fan face j its

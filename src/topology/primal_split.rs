@@ -158,6 +158,104 @@ pub(crate) const EDGE_CREASE: RuleSlots = RuleSlots {
     )
 };
 
+/// The edge rule next to a crease or boundary vertex v0 (Biermann, Levin
+/// and Zorin 2000; `schemes::blz`): an edge v0–v that is not sharp, seen
+/// from v0, `n` the number k of faces of v0's sector (between its two sharp
+/// edges) that holds the edge, since BLZ's weights depend on θ_k = π/k.
+/// Where both ends are crease vertices the mean of the two ends' rules
+/// applies (our choice, as for two extraordinary ends). Gathered only for a
+/// mask that weighs it; otherwise the smooth edge rule stays (Hoppe).
+pub(crate) const EDGE_SECTOR_QUAD: RuleSlots = RuleSlots {
+    optional: true,
+    ..rule(
+        "edge-sector",
+        E,
+        Any,
+        &[
+            fam("crease-end", ONE, "the crease or boundary end v0"),
+            fam("other-end", ONE, "the edge's other end"),
+            fam("side", Arity::Fixed(4), "the two other corners of each of the edge's two quads"),
+        ],
+        "the new point of an edge that is not sharp at a crease or boundary vertex v0 (n: the faces of v0's sector holding the edge)",
+    )
+};
+/// [`EDGE_SECTOR_QUAD`] on the triangle host: the two apexes instead of the sides.
+pub(crate) const EDGE_SECTOR_TRIANGLE: RuleSlots = RuleSlots {
+    optional: true,
+    ..rule(
+        "edge-sector",
+        E,
+        Any,
+        &[
+            fam("crease-end", ONE, "the crease or boundary end v0"),
+            fam("other-end", ONE, "the edge's other end"),
+            fam("opposite", Arity::Fixed(2), "the apexes of the edge's two triangles"),
+        ],
+        "the new point of an edge that is not sharp at a crease or boundary vertex v0 (n: the faces of v0's sector holding the edge)",
+    )
+};
+
+/// The number of faces of crease vertex v's sector that holds the edge v–w
+/// (not sharp): around v from the edge both ways to a sharp edge. A walk
+/// that leaves the mesh first is a cut patch (`Truncated`).
+fn sector_faces(mesh: &PolyMesh, v: VertexId, w: VertexId) -> Result<usize, GatherError> {
+    let limit = mesh.incident_faces(v).len();
+    let mut count = 0;
+    // forwards: the face of v -> u, whose other edge at v comes into v
+    let mut u = w;
+    loop {
+        let (f, k) = mesh.half_edge(v, u).ok_or(GatherError::Truncated)?;
+        let face = mesh.face(f);
+        u = face[(k + face.len() - 1) % face.len()];
+        count += 1;
+        if mesh.is_sharp(v, u) {
+            break;
+        }
+        if count > limit {
+            return Err(GatherError::NotCovered);
+        }
+    }
+    // backwards: the face of u -> v, whose other edge at v leaves v
+    let mut u = w;
+    loop {
+        let (f, k) = mesh.half_edge(u, v).ok_or(GatherError::Truncated)?;
+        let face = mesh.face(f);
+        u = face[(k + 2) % face.len()];
+        count += 1;
+        if mesh.is_sharp(v, u) {
+            break;
+        }
+        if count > limit {
+            return Err(GatherError::NotCovered);
+        }
+    }
+    Ok(count)
+}
+
+/// The `edge-sector` part of the edge v–w seen from crease vertex v.
+fn sector_edge(mesh: &PolyMesh, v: VertexId, w: VertexId, size: usize) -> Result<Part, GatherError> {
+    let (Some((fl, kl)), Some((fr, kr))) = (mesh.half_edge(v, w), mesh.half_edge(w, v)) else {
+        return Err(GatherError::Truncated);
+    };
+    let (l, r) = (mesh.face(fl), mesh.face(fr));
+    sized([l, r], size)?;
+    let k = sector_faces(mesh, v, w)?;
+    let at = |face: &[VertexId], k: usize, t: usize| face[(k + t) % face.len()];
+    let mut p = Part::around(EDGE_SECTOR_QUAD.name, k, v);
+    p.put("crease-end", 0, v);
+    p.put("other-end", 0, w);
+    if size == 4 {
+        p.put("side", 0, at(l, kl, 2));
+        p.put("side", 1, at(l, kl, 3));
+        p.put("side", 2, at(r, kr, 2));
+        p.put("side", 3, at(r, kr, 3));
+    } else {
+        p.put("opposite", 0, at(l, kl, 2));
+        p.put("opposite", 1, at(r, kr, 2));
+    }
+    Ok(p)
+}
+
 /// The slots of a tagged origin on a primal quad or triangle host: `None`
 /// where the host's smooth rules apply (an untagged mesh, a smooth or dart
 /// vertex, an edge that is not sharp, a face), else the boundary, crease or
@@ -190,6 +288,18 @@ pub(crate) fn tagged(host: Host, mesh: &PolyMesh, origin: Origin, wants: &dyn Wa
             p.put("ends", 0, a);
             p.put("ends", 1, b);
             p
+        }
+        Origin::Edge(a, b) if wants.rule(EDGE_SECTOR_QUAD.name) => {
+            let crease = |v| matches!(mesh.vertex_tag(v), VertexTag::Crease(..));
+            let ends: Vec<(VertexId, VertexId)> = [(a, b), (b, a)].into_iter().filter(|&(v, _)| crease(v)).collect();
+            if ends.is_empty() {
+                return None;
+            }
+            let size = if host == Host::PrimalQuad { 4 } else { 3 };
+            let share = ends.len() as i64;
+            let parts: Result<Vec<Part>, GatherError> =
+                ends.iter().map(|&(v, w)| sector_edge(mesh, v, w, size).map(|p| p.scaled(1, share))).collect();
+            return Some(parts.map(|parts| Gathered { parts, extraordinary: Vec::new(), regular: None }));
         }
         Origin::Edge(..) | Origin::Face(_) | Origin::Corner { .. } => return None,
     };
@@ -356,8 +466,12 @@ mod tests {
         assert_eq!(rule(Origin::Vertex(0)), Ok("vertex-corner"));
         assert_eq!(rule(Origin::Vertex(1)), Ok("vertex-crease"));
         assert_eq!(rule(Origin::Edge(0, 1)), Ok("edge-crease"));
-        // the middle edge is not sharp: the smooth edge rule reaches over the open rim
-        assert_eq!(rule(Origin::Edge(1, 4)), Ok("edge"));
+        // the middle edge is not sharp, between two crease vertices: a mask
+        // that weighs every rule (All) takes BLZ's edge-sector from each end,
+        // each sector the strip's two faces (k = 2)
+        assert_eq!(rule(Origin::Edge(1, 4)), Ok("edge-sector"));
+        let g = unit.gather(&m, Origin::Edge(1, 4), &All).unwrap();
+        assert_eq!(g.parts.iter().map(|p| (p.n, p.scale)).collect::<Vec<_>>(), vec![(2, (1, 2)), (2, (1, 2))]);
         assert_eq!(rule(Origin::Face(0)), Ok("face"));
         let slots = unit.gather(&m, Origin::Vertex(1), &All).unwrap().parts[0].slots.clone();
         let targets: Vec<_> = slots.iter().map(|s| (s.family, s.j, s.target.clone())).collect();

@@ -17,7 +17,9 @@ use crate::sdc::slots::{
     TRI_VERTEX,
 };
 use crate::sdc::{CentreKind, Origin};
-use crate::topology::primal_split::{self, primal_edge, tagged, EDGE_CREASE, VERTEX_CORNER, VERTEX_CREASE};
+use crate::topology::primal_split::{
+    self, primal_edge, tagged, EDGE_CREASE, EDGE_SECTOR_TRIANGLE, VERTEX_CORNER, VERTEX_CREASE,
+};
 
 pub struct PrimalTriangle;
 
@@ -98,6 +100,7 @@ const RULES: &[RuleSlots] = &[
     VERTEX_CREASE,
     VERTEX_CORNER,
     EDGE_CREASE,
+    EDGE_SECTOR_TRIANGLE,
 ];
 
 #[cfg(test)]

@@ -71,6 +71,7 @@ fn certified_map(
     levels: &Option<usize>,
     names: CertificateNames,
 ) -> Result<Finding, Error> {
+    subject.refuse_tag("the certified characteristic map")?;
     over_independent_valences(subject, |subject, n| {
         let (scheme, config) = subject_config(subject, n)?;
         let options =

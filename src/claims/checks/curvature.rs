@@ -103,6 +103,7 @@ fn compute(subject: &Subject, n: usize, levels: usize) -> Result<Computed, Error
             "the curvature check uses the analysis neighbourhood; leave 'neighbourhood' out".into(),
         ));
     }
+    subject.refuse_tag("the curvature check")?;
     let (scheme, config) = subject_config(subject, n)?;
     let opts = CurvatureOptions { levels, ..CurvatureOptions::default() };
     let options = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };

@@ -57,6 +57,7 @@ impl CheckKind for SpectralC1 {
 
 /// The certified spectral test at every configuration side by side.
 fn certified_c1(subject: &Subject, expect: &bool, names: CertificateNames) -> Result<Finding, Error> {
+    subject.refuse_tag("the certified spectral test")?;
     over_independent_valences(subject, |subject, n| {
         let (scheme, config) = subject_config(subject, n)?;
         let options = crate::spectrum::Options { neighbourhood: kind_of(subject)?, method: None, exact: false };

@@ -14,7 +14,7 @@ use crate::claims::schedule;
 use crate::claims::subject::Subject;
 use crate::error::Error;
 use crate::lattice;
-use crate::neighbourhood::{Configuration, NeighbourhoodKind, VertexKind};
+use crate::neighbourhood::{Configuration, NeighbourhoodKind, Tagging, VertexKind};
 use crate::schemes;
 use crate::schemes::registry::{self, Built};
 use crate::schemes::route::{refusal, route, space, Analysis, Route};
@@ -59,7 +59,7 @@ impl Cache {
     }
 
     fn key(s: &Subject, n: usize) -> String {
-        format!("{}|{:?}|{n}|{:?}|{:?}", s.scheme, s.params, s.neighbourhood, s.faces_for(n))
+        format!("{}|{:?}|{n}|{:?}|{:?}|{:?}", s.scheme, s.params, s.neighbourhood, s.faces_for(n), s.tag)
     }
 
     pub fn spectrum(&mut self, s: &Subject, n: usize) -> Result<Arc<Spectrum>, Error> {
@@ -101,8 +101,11 @@ pub fn subject_config(s: &Subject, n: usize) -> Result<(Box<dyn schemes::Scheme>
     Ok((scheme, config))
 }
 
-/// The subject's configuration at valence n: its face sequence, or regular.
+/// The subject's configuration at valence n: tagged, its face sequence, or regular.
 fn configuration(s: &Subject, scheme: &dyn schemes::Scheme, n: usize) -> Result<Configuration, Error> {
+    if let Some(tag) = &s.tag {
+        return Configuration::tagged(scheme, n, s.faces_for(n), Tagging::parse(tag)?);
+    }
     match s.faces_for(n) {
         Some(f) => Configuration::with_faces(scheme, n, f),
         None => Configuration::regular(scheme, n),
