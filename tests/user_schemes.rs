@@ -188,6 +188,8 @@ fn the_command_line_takes_a_file_where_it_takes_a_name() {
     let e = fails(&["stencils", bad.to_str().unwrap(), "--valence", "5"]);
     assert!(e.contains("line 4, field vertex.centre: unknown variable 'q'"), "{e}");
     let e = fails(&["spectrum", &path("schemes/loop.toml"), "--valence", "5", "--param", "a=1"]);
+    assert!(e.contains("has no parameter 'a'; its parameters: blz"), "{e}");
+    let e = fails(&["spectrum", &path("schemes/doo-sabin.toml"), "--valence", "5", "--param", "a=1"]);
     assert!(e.contains("has no parameters"), "{e}");
 }
 
