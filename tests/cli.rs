@@ -145,8 +145,10 @@ fn non_numeric_valence_is_rejected() {
 
 #[test]
 fn unknown_and_malformed_parameters_are_rejected() {
-    let err = fails(&["spectrum", "catmull-clark", "-n", "5", "--param", "a=1/2"]);
+    let err = fails(&["spectrum", "doo-sabin", "-n", "5", "--param", "a=1/2"]);
     assert!(err.contains("no parameters"), "{err}");
+    let err = fails(&["spectrum", "catmull-clark", "-n", "5", "--param", "a=1/2"]);
+    assert!(err.contains("no parameter 'a'; its parameters: blz"), "{err}");
     let err = fails(&["spectrum", "catmull-clark", "-n", "5", "--param", "a"]);
     assert!(err.contains("NAME=VALUE"), "{err}");
 }
