@@ -3,6 +3,7 @@
 //! outward-rounded intervals, exact elements of cyclotomic fields),
 //! rational recognition, and exact polynomial/matrix algebra.
 
+pub mod berkowitz;
 pub mod cyclotomic;
 pub mod cyclotomic_element;
 pub mod exact;
