@@ -414,25 +414,25 @@ pub fn rational_roots(p: &Poly, candidates: &[Rational]) -> (Vec<(Rational, usiz
 /// Whether every root of `p` lies strictly inside the disc |x| < r (r > 0),
 /// decided exactly by the Schur–Cohn recursion, on f(x) = p(r·x):
 ///
-/// make f monic (degree d, constant term c). If |c| ≥ 1, not every root lies
-/// inside: |c| is the product of the roots' moduli. Otherwise g = f − c·f*
-/// (f*(x) = x^d f(1/x), the reversed polynomial) has as many roots inside the
-/// unit disc as f (Rouché: |c·f*| < |f| on |x| = 1, where |f*| = |f|), and
-/// g(0) = c − c = 0, so g = x·h with h of degree d − 1: f has all d roots
-/// inside if and only if h has all d − 1. A non-zero constant has no roots.
-/// The zero polynomial is `false`.
+/// with c the ratio of f's constant term to its leading one: if |c| ≥ 1,
+/// not every root lies inside (|c| is the product of the roots' moduli).
+/// Otherwise g = f − c·f* (f*(x) = x^d f(1/x), the reversed polynomial) has
+/// as many roots inside the unit disc as f (Rouché: |c·f*| < |f| on |x| = 1,
+/// where |f*| = |f|), and g(0) = 0, so g = x·h with h of degree d − 1: f has
+/// all d roots inside if and only if h has all d − 1. A non-zero constant
+/// has no roots. The zero polynomial is `false`.
+///
+/// The recursion runs on integer polynomials: f is scaled to integer
+/// coefficients (a positive factor moves no root), each step takes
+/// h = (f_d·f − f_0·f*)/x — the monic step times f_d², again a positive
+/// factor — and divides out the coefficients' content. In rationals every
+/// coefficient of every step paid a big-integer gcd and the numbers grew
+/// with each step's common denominators; here one content gcd per step
+/// keeps them the size of the Schur–Cohn minors, and the answer is the same
+/// (the two recursions differ by positive factors only).
 pub fn roots_inside_disc(p: &Poly, r: &Rational) -> bool {
     assert!(r.is_positive(), "the disc's radius must be positive");
-    let mut power = Rational::one();
-    let mut f: Vec<Rational> = p
-        .coeffs
-        .iter()
-        .map(|c| {
-            let t = c * &power;
-            power = &power * r;
-            t
-        })
-        .collect();
+    let mut f = scaled_integer_coefficients(p, r);
     loop {
         while f.len() > 1 && f.last().is_some_and(|c| c.is_zero()) {
             f.pop();
@@ -442,16 +442,44 @@ pub fn roots_inside_disc(p: &Poly, r: &Rational) -> bool {
             1 => return !f[0].is_zero(),
             _ => {}
         }
-        let lead = f.last().expect("non-empty").clone();
-        f.iter_mut().for_each(|c| *c = &*c / &lead);
         let d = f.len() - 1;
-        let c = f[0].clone();
-        if c.abs() >= Rational::one() {
+        let (lead, c) = (f[d].clone(), f[0].clone());
+        if c.abs() >= lead.abs() {
             return false;
         }
-        // h_k = g_{k+1} = f_{k+1} − c·f_{d−k−1}, k = 0..d−1 (leading 1 − c² > 0)
-        f = (1..=d).map(|k| &f[k] - &c * &f[d - k]).collect();
+        // h_k = f_d·f_{k+1} − f_0·f_{d−k−1}, k = 0..d−1: f_d² times the
+        // monic recursion's step, whatever f_d's sign
+        let mut h: Vec<BigInt> = (1..=d).map(|k| &lead * &f[k] - &c * &f[d - k]).collect();
+        let g = h.iter().fold(BigInt::zero(), |g, x| if g.is_one() { g } else { num_integer::Integer::gcd(&g, x) });
+        if !g.is_zero() && !g.is_one() {
+            h.iter_mut().for_each(|x| *x /= &g);
+        }
+        f = h;
     }
+}
+
+/// The coefficients of p(r·x) times a positive integer that clears every
+/// denominator (r = a/b: b^d · p(a x / b), then the lcm of p's denominators).
+fn scaled_integer_coefficients(p: &Poly, r: &Rational) -> Vec<BigInt> {
+    let d = p.coeffs.len().saturating_sub(1);
+    let (a, b) = (r.numer().clone(), r.denom().clone());
+    let lcm = p.coeffs.iter().fold(BigInt::one(), |l, c| num_integer::Integer::lcm(&l, c.denom()));
+    let mut a_pow = BigInt::one();
+    let mut b_pow: Vec<BigInt> = Vec::with_capacity(d + 1);
+    let mut bp = BigInt::one();
+    for _ in 0..=d {
+        b_pow.push(bp.clone());
+        bp *= &b;
+    }
+    p.coeffs
+        .iter()
+        .enumerate()
+        .map(|(k, c)| {
+            let t = (c.numer() * (&lcm / c.denom())) * &a_pow * &b_pow[d - k];
+            a_pow *= &a;
+            t
+        })
+        .collect()
 }
 
 pub fn q(p: i64, qd: i64) -> Rational {
@@ -487,6 +515,42 @@ mod tests {
         let p = Poly::from_roots(&roots);
         assert!(roots_inside_disc(&p, &q(91, 200)));
         assert!(!roots_inside_disc(&p, &q(9, 20)));
+    }
+
+    /// A degree-24 polynomial with roots of known moduli: ±k/37 (k = 1..9),
+    /// a pair (1 ± i)/4 of modulus √2/4 ≈ 0.35355, a pair ±(3/10)i and a
+    /// double root 1/3. The largest modulus is √2/4: the test must flip
+    /// between 0.3535 and 0.3536, and the scaled integer recursion must keep
+    /// up with 24 steps of growing coefficients.
+    #[test]
+    fn schur_cohn_on_a_long_polynomial_flips_at_the_largest_modulus() {
+        let mut roots: Vec<Rational> = (1..=9).flat_map(|k| [q(k, 37), q(-k, 37)]).collect();
+        roots.extend([q(1, 3), q(1, 3)]);
+        let real = Poly::from_roots(&roots);
+        // (x − (1+i)/4)(x − (1−i)/4) = x² − x/2 + 1/8; (x² + 9/100)
+        let pair = Poly { coeffs: vec![q(1, 8), q(-1, 2), q(1, 1)] };
+        let imaginary = Poly { coeffs: vec![q(9, 100), q(0, 1), q(1, 1)] };
+        let mul = |a: &Poly, b: &Poly| {
+            let mut c = vec![q(0, 1); a.coeffs.len() + b.coeffs.len() - 1];
+            for (i, x) in a.coeffs.iter().enumerate() {
+                for (j, y) in b.coeffs.iter().enumerate() {
+                    c[i + j] = &c[i + j] + x * y;
+                }
+            }
+            Poly { coeffs: c }
+        };
+        let p = mul(&mul(&real, &pair), &imaginary);
+        assert_eq!(p.degree(), 24);
+        assert!(roots_inside_disc(&p, &q(3536, 10000)));
+        assert!(!roots_inside_disc(&p, &q(3535, 10000)));
+        // a negative leading coefficient changes nothing
+        let negated = p.scale(&q(-7, 3));
+        assert!(roots_inside_disc(&negated, &q(3536, 10000)));
+        assert!(!roots_inside_disc(&negated, &q(3535, 10000)));
+        // the double root 1/3 alone: inside 34/100, not inside 1/3
+        let double = Poly::from_roots(&[q(1, 3), q(1, 3)]);
+        assert!(roots_inside_disc(&double, &q(34, 100)));
+        assert!(!roots_inside_disc(&double, &q(1, 3)));
     }
 
     #[test]
