@@ -164,6 +164,57 @@ fn content_gcd(d: &BigInt, cs: &[BigInt]) -> BigInt {
     BigInt::from(g)
 }
 
+/// The numerators of a·b reduced modulo Φ_l, computed in machine words when
+/// every numerator fits an i64 (the rows of a local subdivision matrix are
+/// products of small fractions: 1/4, 3/8, cosines' halves): the convolution
+/// and the reduction in checked i128, `None` as soon as a step would
+/// overflow, and then the caller multiplies in big integers. The same
+/// integers either way — only where they are computed differs.
+fn product_in_words(a: &[BigInt], b: &[BigInt], l: u32) -> Option<Vec<BigInt>> {
+    let words = |v: &[BigInt]| v.iter().map(|x| x.to_i64().map(i128::from)).collect::<Option<Vec<i128>>>();
+    let (a, b) = (words(a)?, words(b)?);
+    let mut c = vec![0i128; a.len() + b.len() - 1];
+    for (i, &x) in a.iter().enumerate().filter(|(_, x)| **x != 0) {
+        for (j, &y) in b.iter().enumerate().filter(|(_, y)| **y != 0) {
+            c[i + j] = c[i + j].checked_add(x * y)?;
+        }
+    }
+    let phi = phi(l);
+    let d = phi.degree;
+    if c.len() > d {
+        for i in (d..c.len()).rev() {
+            let top = std::mem::take(&mut c[i]);
+            if top == 0 {
+                continue;
+            }
+            for &(j, a) in &phi.low {
+                let t = &mut c[i - d + j];
+                *t = t.checked_sub(top.checked_mul(a as i128)?)?;
+            }
+        }
+        c.truncate(d);
+    }
+    Some(c.into_iter().map(BigInt::from).collect())
+}
+
+/// Σ t.num · (den / t.den) over the terms (one field, `den` a common
+/// multiple of their denominators) in checked i128 when every numerator and
+/// factor fits an i64; `None` when one does not or a sum leaves i128, and
+/// the caller sums in big integers (see [`product_in_words`]).
+fn sum_in_words(terms: &[Cyclotomic], den: &BigInt) -> Option<Vec<BigInt>> {
+    let mut num: Vec<i128> = Vec::new();
+    for t in terms {
+        let factor = i128::from((den / &t.den).to_i64()?);
+        if num.len() < t.num.len() {
+            num.resize(t.num.len(), 0);
+        }
+        for (acc, c) in num.iter_mut().zip(&t.num) {
+            *acc = acc.checked_add(i128::from(c.to_i64()?) * factor)?;
+        }
+    }
+    Some(num.into_iter().map(BigInt::from).collect())
+}
+
 /// lcm(a, b) when within [`MAX_ORDER`].
 fn common_order(a: u32, b: u32) -> Option<u32> {
     if a == b {
@@ -443,12 +494,15 @@ impl Cyclotomic {
             return Cyclotomic::undefined();
         };
         let (a, b) = (self.numerators_in(l), o.numerators_in(l));
-        let mut c = vec![BigInt::zero(); a.len() + b.len() - 1];
-        for (i, x) in a.iter().enumerate().filter(|(_, x)| !Zero::is_zero(*x)) {
-            for (j, y) in b.iter().enumerate().filter(|(_, y)| !Zero::is_zero(*y)) {
-                c[i + j] += x * y;
+        let c = product_in_words(&a, &b, l).unwrap_or_else(|| {
+            let mut c = vec![BigInt::zero(); a.len() + b.len() - 1];
+            for (i, x) in a.iter().enumerate().filter(|(_, x)| !Zero::is_zero(*x)) {
+                for (j, y) in b.iter().enumerate().filter(|(_, y)| !Zero::is_zero(*y)) {
+                    c[i + j] += x * y;
+                }
             }
-        }
+            c
+        });
         let p = Cyclotomic::make(l, c, &self.den * &o.den);
         RECENT_PRODUCTS.with(|r| {
             let mut r = r.borrow_mut();
@@ -625,16 +679,22 @@ impl Weight for Cyclotomic {
             let g = den.gcd(&t.den);
             den = &den / &g * &t.den;
         }
-        let mut num: Vec<BigInt> = Vec::new();
-        for t in &terms {
-            let factor = &den / &t.den;
-            if num.len() < t.num.len() {
-                num.resize(t.num.len(), BigInt::zero());
+        let num = match sum_in_words(&terms, &den) {
+            Some(num) => num,
+            None => {
+                let mut num: Vec<BigInt> = Vec::new();
+                for t in &terms {
+                    let factor = &den / &t.den;
+                    if num.len() < t.num.len() {
+                        num.resize(t.num.len(), BigInt::zero());
+                    }
+                    for (acc, c) in num.iter_mut().zip(&t.num) {
+                        *acc += c * &factor;
+                    }
+                }
+                num
             }
-            for (acc, c) in num.iter_mut().zip(&t.num) {
-                *acc += c * &factor;
-            }
-        }
+        };
         Cyclotomic::make(l, num, den)
     }
 
@@ -710,6 +770,43 @@ mod tests {
     }
     fn cos(k: i64, n: i64) -> Cyclotomic {
         Cyclotomic::cos_2pi(k, n).unwrap()
+    }
+
+    /// The word-size product is the big-integer product: the same reduced
+    /// numerators for small inputs in fields with Φ_N of coefficients other
+    /// than ±1 (N = 105, the first such), and `None` — never a wrapped
+    /// value — where a step leaves i128.
+    #[test]
+    fn products_in_words_are_the_big_integer_products() {
+        let big = |a: &[BigInt], b: &[BigInt], l: u32| {
+            let mut c = vec![BigInt::zero(); a.len() + b.len() - 1];
+            for (i, x) in a.iter().enumerate() {
+                for (j, y) in b.iter().enumerate() {
+                    c[i + j] += x * y;
+                }
+            }
+            let phi = phi(l);
+            if c.len() > phi.degree {
+                c = reduce(c, &phi);
+            }
+            c
+        };
+        for l in [5u32, 12, 23, 105] {
+            let d = phi(l).degree;
+            let a: Vec<BigInt> = (0..d).map(|i| BigInt::from((i as i64 * 7919) % 23 - 11)).collect();
+            let b: Vec<BigInt> = (0..d).map(|i| BigInt::from((i as i64 * 104729) % 17 - 8)).collect();
+            assert_eq!(product_in_words(&a, &b, l), Some(big(&a, &b, l)), "Q(ζ_{l})");
+        }
+        // i64::MAX² summed twice leaves i128: refused, not wrapped
+        let huge = vec![BigInt::from(i64::MAX); 3];
+        assert_eq!(product_in_words(&huge, &huge, 5), None);
+        // a numerator beyond i64 is refused before any product
+        let beyond = vec![BigInt::from(i64::MAX) * 2, BigInt::one()];
+        assert_eq!(product_in_words(&beyond, &[BigInt::one(), BigInt::one()], 5), None);
+        // and the element product still goes through: (2^64 − 2 + ζ)(1 + ζ) by the big path
+        let x = Cyclotomic::make(5, beyond.clone(), BigInt::one());
+        let y = Cyclotomic::make(5, vec![BigInt::one(), BigInt::one()], BigInt::one());
+        assert_eq!(Cyclotomic::make(5, big(&beyond, &[BigInt::one(), BigInt::one()], 5), BigInt::one()), x * y);
     }
 
     /// A batch sum is the same element, written the same way (field,
