@@ -123,10 +123,7 @@ pub fn table(r: &Report) -> String {
             );
         }
         if let Some(b) = &p.block0 {
-            out += &format!(
-                "    block 0: eigenvalues other than 1 real and inside |x| < {} ≤ λ1 for {}\n",
-                b.radius, b.range
-            );
+            out += &format!("    block 0: eigenvalues other than 1 real and of modulus below λ1 for {}\n", b.range);
         }
     }
     let proved = r.per_valence.iter().filter(|a| a.verdict == Verdict::Proved && !a.conditional).count();

@@ -18,20 +18,21 @@
 //! checked equal at two valences). Covered: r a polynomial in one variable
 //! t — h = 1/n ∈ [0, 1/N] (Catmull–Clark) or c ∈ [q_N, 1] (Loop).
 //!
-//! Decision, exactly, for a radius ρ ≤ μ(q_N) ≤ λ1 (`tail`): every root of
-//! q(·, t) is real and inside (−ρ, ρ) for every t in the range. The roots
-//! are real on a piece between the real roots of the subresultant of
-//! (q, ∂q/∂x) when they are at one point of it (they leave the real line
-//! only through a double root) and then, by continuity, at its ends; no root
-//! crosses ±ρ when q(ρ, t) and q(−ρ, t) have no root in the closed range;
-//! then one point where all roots lie in (−ρ, ρ) decides the whole range.
+//! Decision, exactly (`decide`): every root of q(·, t) is real and of
+//! modulus below μ̃(t) ≤ λ1 for every t of the range, μ̃ the top root of
+//! P(·, c) at c = t (Loop: the same c as block 1's) or at c = γ(h) =
+//! 1 − 2(355/113)²h² ≤ cos(2πh) (Catmull–Clark: μ increases, `tail`, so
+//! μ(γ(1/n)) ≤ λ1(n); both tend to μ(1) as n → ∞, so no fixed radius
+//! separates them). Roots leave the real line only through a double root
+//! and meet ±μ̃ only at a common root of q(x) and P̃(±x): the subresultants
+//! of those pairs have their real roots outside the range once N is large
+//! enough (the end n = ∞ excluded), and one point of the range decides.
 
 use std::collections::BTreeMap;
 
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 use crate::numeric::berkowitz::charpoly;
-use crate::numeric::exact::Poly;
 use crate::numeric::expr::{Env, Expr};
 use crate::numeric::sturm;
 use crate::numeric::{Cyclotomic, Rational, TPoly};
@@ -40,7 +41,7 @@ type W = Cyclotomic;
 use crate::sweep::exact::{all_real, first_subresultant, rational_norm, BiPoly};
 
 use super::laurent::chebyshev;
-use super::tail::{at, real_roots};
+use super::tail::{at, compare, negated, real_roots};
 
 /// A Laurent polynomial in n with coefficients in Q[c, π]: (power of n,
 /// power of c, power of π) ↦ coefficient. π appears only inside angles.
@@ -236,71 +237,102 @@ pub fn block0_poly(m: &[Vec<Rational>], r: &[Vec<Rational>]) -> BiPoly {
     charpoly(&a)
 }
 
-/// Every root of q(·, t) real and inside (−ρ, ρ) for every t in [lo, hi]:
-/// Ok(()) or the reason it is not shown.
-pub fn inside(qp: &BiPoly, rho: &Rational, lo: &Rational, hi: &Rational) -> Result<(), String> {
-    // no root at ±ρ anywhere in the range
-    for s in [rho.clone(), -rho.clone()] {
-        let mut coeffs: Vec<Rational> = vec![Rational::zero()];
-        let mut power = Rational::one();
-        for c in qp {
-            let cq: Vec<Rational> = c.coeffs().iter().map(|x| x.to_rational().expect("rational")).collect();
-            for (k, x) in cq.iter().enumerate() {
-                if coeffs.len() <= k {
-                    coeffs.resize(k + 1, Rational::zero());
-                }
-                coeffs[k] = &coeffs[k] + x * &power;
-            }
-            power = &power * &s;
-        }
-        let p = Poly { coeffs };
-        if p.coeffs.iter().all(Zero::is_zero) {
-            return Err(format!("block 0 has the eigenvalue {s} throughout"));
-        }
-        if p.degree() > 0 && !sturm::isolate(&p, lo, hi).is_empty() {
-            return Err(format!("an eigenvalue of block 0 reaches {s} for some valence ≥ N"));
-        }
-        if p.degree() == 0 && p.coeffs[0].is_zero() {
-            return Err(format!("block 0 has the eigenvalue {s}"));
+/// λ1's polynomial in the block-0 variable: P(x, c) itself for c, and
+/// P(x, γ(h)) for h, γ(h) = 1 − 2(355/113)²h² ≤ cos(2πh) (so μ(γ(1/n)) ≤
+/// μ(cos 2π/n) = λ1, μ being increasing).
+pub fn lambda1_poly(p: &BiPoly, variable: Variable) -> BiPoly {
+    match variable {
+        Variable::Cosine => p.clone(),
+        Variable::InverseValence => {
+            let pi_up = Rational::new(355.into(), 113.into());
+            let gamma = tpoly(&[Rational::one(), Rational::zero(), -Rational::from_integer(2.into()) * &pi_up * &pi_up]);
+            p.iter()
+                .map(|coef| {
+                    // Horner in c at γ(h)
+                    coef.coeffs().iter().rev().fold(tpoly(&[Rational::zero()]), |acc, a| {
+                        acc * gamma.clone() + TPoly::from_coeffs(vec![a.clone()])
+                    })
+                })
+                .collect()
         }
     }
-    // real roots on every piece between the double-root candidates
+}
+
+/// The range of the block-0 variable for valences n ≥ `n`: (lo, hi, the
+/// end that no valence reaches: h = 0 or c = 1).
+pub fn range(variable: Variable, n: usize) -> (Rational, Rational, Rational) {
+    match variable {
+        Variable::InverseValence => (Rational::zero(), Rational::new(1.into(), (n as i64).into()), Rational::zero()),
+        Variable::Cosine => (super::tail::cos_lower(n), Rational::one(), Rational::one()),
+    }
+}
+
+/// The least valence N' ≥ `n_min` from which every eigenvalue of block 0
+/// other than 1 is real and of modulus below the top root μ̃(t) of `lambda1`
+/// (≤ λ1) for every t of the range; or why not. The roots of q(·, t) are
+/// real and no root meets ±μ̃(t) away from the real roots of the
+/// subresultants of (q, ∂q/∂x), (q, λ1's polynomial), (q(x), its value at
+/// −x): N' puts them all outside the range (except its unreached end), and
+/// one point of the range then decides.
+pub fn decide(qp: &BiPoly, lambda1: &BiPoly, variable: Variable, n_min: usize) -> Result<(usize, String), String> {
+    let (lo, hi, unreached) = range(variable, n_min);
     let dx: BiPoly = qp.iter().enumerate().skip(1).map(|(k, c)| c.clone() * <TPoly as crate::numeric::Weight>::int(k as i64)).collect();
-    let mut fences = vec![sturm::RealRoot::exact(lo.clone())];
-    if let Some(r) = first_subresultant(qp, &dx).map_err(|e| e.to_string())? {
+    let minus: BiPoly =
+        lambda1.iter().enumerate().map(|(k, c)| if k % 2 == 1 { -c.clone() } else { c.clone() }).collect();
+    let mut cands = Vec::new();
+    for (a, b) in [(qp, &dx), (qp, lambda1), (qp, &minus)] {
+        let Some(r) = first_subresultant(a, b).map_err(|e| e.to_string())? else { continue };
         let r = rational_norm(&r).map_err(|e| e.to_string())?;
         if r.degree() > 0 {
-            fences.extend(sturm::isolate(&r, lo, hi).into_iter().filter(|x| x.rational.as_ref().map_or(true, |v| v != lo && v != hi)));
+            cands.extend(sturm::isolate(&r, &lo, &hi));
         }
     }
-    fences.push(sturm::RealRoot::exact(hi.clone()));
-    for k in 0..fences.len() - 1 {
-        let (left, right) = fences.split_at_mut(k + 1);
-        let (a, b) = (&mut left[k], &mut right[0]);
-        while a.hi >= b.lo {
-            a.bisect();
-            b.bisect();
+    let mut n = n_min;
+    for mut c in cands {
+        c.recognise_rational();
+        if c.rational.as_ref() == Some(&unreached) {
+            continue;
         }
-        let s = sturm::simplest_between(&a.hi, &b.lo);
-        if !all_real(&[qp.clone()], &s) {
-            return Err(format!("block 0 has a non-real eigenvalue at t = {s} (moduli of complex pairs are not followed)"));
+        c.refine(&Rational::new(1.into(), 1_000_000_000_000i64.into()));
+        loop {
+            let (l, h, _) = range(variable, n);
+            let clear = match variable {
+                Variable::InverseValence => c.lo > h,
+                Variable::Cosine => c.hi < l,
+            };
+            if clear {
+                break;
+            }
+            let _ = l;
+            n += 1;
+            if n > 100_000 {
+                return Err("an eigenvalue of block 0 meets ±λ1's bound arbitrarily close to n = ∞".into());
+            }
         }
     }
-    // one point decides: all roots inside (−ρ, ρ)
-    let s = sturm::simplest_between(lo, hi);
+    let (l, h, _) = range(variable, n);
+    let s = match variable {
+        Variable::InverseValence => h.clone(),
+        Variable::Cosine => (&l + &h) / Rational::from_integer(2.into()),
+    };
+    if !all_real(&[qp.clone()], &s) {
+        return Err(format!("block 0 has a non-real eigenvalue at t = {s} (moduli of complex pairs are not followed)"));
+    }
+    let mut mu = real_roots(&sturm::squarefree(&at(lambda1, &s))).pop().ok_or("no real λ1")?;
     let roots = real_roots(&sturm::squarefree(&at(qp, &s)));
-    let out = roots.iter().any(|r| r.hi >= *rho || r.lo <= -rho.clone());
-    // the isolating intervals may straddle ±ρ: refine, ρ itself is no root
-    if out {
-        for mut r in roots {
-            while r.lo < *rho && r.hi > *rho || r.lo < -rho.clone() && r.hi > -rho.clone() {
-                r.bisect();
-            }
-            if r.lo >= *rho || r.hi <= -rho.clone() {
-                return Err(format!("an eigenvalue of block 0 is at least λ1's lower bound {rho} (at t = {s})"));
-            }
+    if let (Some(first), Some(last)) = (roots.first(), roots.last()) {
+        let mut top = last.clone();
+        if compare(&mut top, &mut mu) != Some(true) {
+            return Err(format!("an eigenvalue of block 0 is at least λ1 (at t = {s})"));
+        }
+        let mut minus_low = negated(first);
+        if compare(&mut minus_low, &mut mu) != Some(true) {
+            return Err(format!("a negative eigenvalue of block 0 is at least λ1 in modulus (at t = {s})"));
         }
     }
-    let _ = Signed::abs(rho);
-    Ok(())
+    let text = match variable {
+        Variable::InverseValence => format!("h = 1/n ∈ (0, {h}], against λ1 ≥ μ(1 − 2(355/113)²h²)"),
+        Variable::Cosine => format!("c = cos(2π/n) ∈ [{l}, 1), against λ1 = μ(c)"),
+    };
+    Ok((n, text))
 }

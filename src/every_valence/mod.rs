@@ -73,7 +73,7 @@ pub struct Parametric {
     /// the blocks k ≠ 0
     #[serde(skip_serializing_if = "Option::is_none")]
     pub blocks: Option<tail::TailFacts>,
-    /// block 0: its variable and the radius its eigenvalues other than 1 stay inside
+    /// block 0: its variable and range
     #[serde(skip_serializing_if = "Option::is_none")]
     pub block0: Option<Block0>,
     pub seconds: f64,
@@ -81,9 +81,10 @@ pub struct Parametric {
 
 #[derive(Clone, Debug, Serialize)]
 pub struct Block0 {
+    /// the one variable the centre's row totals are polynomials in
     pub variable: centre::Variable,
+    /// its range over the valences ≥ N and what the eigenvalues are compared with
     pub range: String,
-    pub radius: String,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -429,31 +430,13 @@ fn parametric(req: &Request) -> Result<ParametricProof, Missing> {
     }
     let (variable, r_poly) = centre::one_variable(&r_sym).map_err(|e| fail0(e, &facts))?;
     let qp = centre::block0_poly(&r0.rows.at_one(), &r_poly);
-    let n = facts.threshold;
-    let (lo, hi, range) = match variable {
-        centre::Variable::InverseValence => (q(0, 1), q(1, n as i64), format!("h = 1/n ∈ [0, 1/{n}]")),
-        centre::Variable::Cosine => {
-            let lo = tail::cos_lower(n);
-            (lo.clone(), q(1, 1), format!("c = cos(2π/n) ∈ [{lo}, 1]"))
+    let lambda1 = centre::lambda1_poly(&p, variable);
+    match centre::decide(&qp, &lambda1, variable, facts.threshold) {
+        Ok((n, range)) => {
+            let mut blocks = facts;
+            blocks.threshold = blocks.threshold.max(n);
+            Ok(ParametricProof { rows: rows_text, block0: Block0 { variable, range }, blocks })
         }
-    };
-    let l = facts.lambda1_lower_exact.clone();
-    let mut why = String::new();
-    for rho in [l.clone(), &l * q(7, 8), &l * q(3, 4), &l * q(1, 2)] {
-        match centre::inside(&qp, &rho, &lo, &hi) {
-            Ok(()) => {
-                return Ok(ParametricProof {
-                    rows: rows_text,
-                    block0: Block0 { variable, range, radius: rho.to_string() },
-                    blocks: facts,
-                })
-            }
-            Err(e) => {
-                if why.is_empty() {
-                    why = e;
-                }
-            }
-        }
+        Err(why) => Err(fail0(why, &facts)),
     }
-    Err(fail0(why, &facts))
 }
