@@ -232,6 +232,14 @@ pub fn run(req: &Request) -> Result<Report, Error> {
     Ok(report)
 }
 
+/// P(x, c) of the blocks k ≠ 0 as the parametric part computes it
+/// (coefficients lowest power of x first, each a polynomial in c = cos θ),
+/// or why it is not computed.
+pub fn block_polynomial(req: &Request) -> Result<Vec<crate::numeric::TPoly>, String> {
+    let r0 = read_rows(req, PROBE_VALENCE).map_err(|m| m.reason)?;
+    laurent::charpoly_in_c(&r0.rows).map_err(String::from)
+}
+
 /// What the parametric part proved.
 struct ParametricProof {
     rows: String,
@@ -291,6 +299,22 @@ fn read_rows(req: &Request, n: usize) -> Result<Read, Missing> {
     let which: Vec<usize> = free.iter().map(|&o| orbits.representative[o]).collect();
     let (d, kind) = (&analysis.discovered, analysis.spectrum.neighbourhood);
     let (rows, reads) = probe::watch(n, || assemble_rows::<Cyclotomic>(scheme.as_ref(), d, kind, &which));
+    // the rows away from the centre must not read a field with a variable at
+    // the centre's valence; and a scheme-file weight must have been read at all
+    if reads.total == 0 {
+        return Err(missing(
+            "the scheme's rules are compiled code (a built-in): how its weights depend on the centre's valence \
+             cannot be read; the same rules as a scheme file can be (e.g. schemes/catmull-clark.toml, \
+             schemes/loop.toml)",
+        ));
+    }
+    if let Some(f) = reads.at_valence.iter().find(|f| f.varies) {
+        return Err(missing(format!(
+            "the rows away from the centre read [{}] {} at the centre's valence, an expression with variables: the \
+             blocks k ≠ 0 may depend on n other than through cos(2πk/n)",
+            f.rule, f.family
+        )));
+    }
     let rows = rows.map_err(|_| missing(format!("valence {n}: no exact rows of S")))?;
     let g = n as i64;
     let size = free.len();
@@ -361,22 +385,6 @@ fn parametric(req: &Request) -> Result<ParametricProof, Missing> {
     let (n0, n1) = (PROBE_VALENCE, PROBE_VALENCE + 1);
     let r0 = read_rows(req, n0)?;
     let r1 = read_rows(req, n1)?;
-    // the rows away from the centre must not read a field with a variable at
-    // the centre's valence; and a scheme-file weight must have been read at all
-    if r0.reads.total == 0 {
-        return Err(missing(
-            "the scheme's rules are compiled code (a built-in): how its weights depend on the centre's valence \
-             cannot be read; the same rules as a scheme file can be (e.g. schemes/catmull-clark.toml, \
-             schemes/loop.toml)",
-        ));
-    }
-    if let Some(f) = r0.reads.at_valence.iter().find(|f| f.varies) {
-        return Err(missing(format!(
-            "the rows away from the centre read [{}] {} at the centre's valence, an expression with variables: the \
-             blocks k ≠ 0 may depend on n other than through cos(2πk/n)",
-            f.rule, f.family
-        )));
-    }
     if r0.rows != r1.rows {
         return Err(missing(format!(
             "the rows away from the centre differ between valences {n0} and {n1} (by sector offset)"
