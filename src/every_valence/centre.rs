@@ -121,7 +121,8 @@ impl InN {
 
 /// An expression in n (no other variable) as an `InN`, or why not.
 pub fn symbolic(e: &Expr, env: &Env) -> Result<InN, String> {
-    let _ = env;
+    // `env` (the parameters' values) is passed down but not read: a centre
+    // weight with a parameter is refused (its value might come from n)
     let go = |x: &Expr| symbolic(x, env);
     Ok(match e {
         Expr::Num(_, Some(q)) => InN::constant(q.clone()),

@@ -58,8 +58,6 @@ pub struct TailFacts {
     pub pieces: usize,
     /// μ(q_N) enclosed: a lower bound of λ1 at every valence ≥ N
     pub lambda1_lower: String,
-    #[serde(skip)]
-    pub lambda1_lower_exact: Rational,
     /// μ(1) enclosed: λ1 < μ(1) ≤ 1 at every valence
     pub lambda1_limit: String,
 }
@@ -290,7 +288,6 @@ pub fn decide(p: &BiPoly, min_n: usize) -> Result<Tail, Error> {
         candidates: cands.iter().map(show).collect(),
         pieces,
         lambda1_lower: show(&lower),
-        lambda1_lower_exact: lower.lo.clone(),
         lambda1_limit: show(&limit),
     }))
 }
