@@ -64,6 +64,8 @@ pub mod shape_chart;
 
 pub mod claims;
 pub mod sweep;
+// spectral C¹ at every valence: per-valence certificates and one parametric proof
+pub mod every_valence;
 
 // figures (SVG / PNG)
 pub mod plot;

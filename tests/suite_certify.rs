@@ -20,3 +20,4 @@ mod certify_difference;
 mod certify_nonbox;
 mod certify_soundness;
 mod cyclotomic;
+mod every_valence;

@@ -22,7 +22,9 @@ error: a claim is ERROR (malformed or vacuous, a missing scheme file, an unknown
 a real one is required) or a file cannot be read, whatever --check-expected records.";
 const SPECTRUM_EXIT: &str = "Exit status: with --certify, 0 PROVED unconditionally; 1 DISPROVED, NOT PROVED, or \
 PROVED only given premises confirmed to interval overlap; 2 an error. Without --certify the verdict is a \
-floating-point observation and the exit status is 0 whatever it says (2 on an error).";
+floating-point observation and the exit status is 0 whatever it says (2 on an error). Every valence: \
+`subdlab spectrum SCHEME --certify --valences A..B` (each valence) or `--valences A..` (every valence from A on: \
+an exact parametric proof beyond a threshold N), in place of -n; spectral conditions only.";
 const CHARMAP_EXIT: &str = "Exit status: with --certify, 0 Reif's criterion PROVED unconditionally; 1 DISPROVED, \
 NOT PROVED, or PROVED only given premises confirmed to interval overlap; 2 an error. Without --certify the verdict \
 is a numerical observation and the exit status is 0 whatever it says (2 on an error).";

@@ -17,25 +17,14 @@ use crate::cli::dispatch as commands;
 /// and for every other error (one line on stderr, control characters shown
 /// escaped).
 pub fn main() -> i32 {
+    // `spectrum ... --valences A..[B]`: the every-valence form, its own parser
+    let argv: Vec<std::ffi::OsString> = std::env::args_os().collect();
+    if super::every_valence::wants(&argv) {
+        return super::every_valence::main(&argv).unwrap_or_else(clap_failure);
+    }
     let cli = match Cli::try_parse() {
         Ok(c) => c,
-        Err(e) => {
-            use clap::error::ErrorKind;
-            // help and version go to stdout with exit 0
-            if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
-                return match crate::io::out(&e.to_string()) {
-                    Ok(()) => 0,
-                    Err(m) => {
-                        error_line(&m);
-                        2
-                    }
-                };
-            }
-            // a usage error (or the help after a bare `subdlab`): clap's whole
-            // message, with a long echoed argument cut (see `error_line`)
-            to_stderr(&crate::error::shorten_echoes(&e.render().to_string()));
-            return 2;
-        }
+        Err(e) => return clap_failure(e),
     };
     match commands::dispatch(cli.command) {
         Ok(code) => code,
@@ -44,6 +33,25 @@ pub fn main() -> i32 {
             2
         }
     }
+}
+
+/// The exit status of a command line clap refused: help and version go to
+/// stdout with exit 0; a usage error (or the help after a bare `subdlab`):
+/// clap's whole message, with a long echoed argument cut (see `error_line`),
+/// exit 2.
+fn clap_failure(e: clap::Error) -> i32 {
+    use clap::error::ErrorKind;
+    if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
+        return match crate::io::out(&e.to_string()) {
+            Ok(()) => 0,
+            Err(m) => {
+                error_line(&m);
+                2
+            }
+        };
+    }
+    to_stderr(&crate::error::shorten_echoes(&e.render().to_string()));
+    2
 }
 
 /// Shows an error as the one line "error: MESSAGE": control characters

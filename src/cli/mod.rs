@@ -12,6 +12,7 @@ mod commands;
 mod curvature;
 mod dispatch;
 mod entry;
+mod every_valence;
 mod front_door;
 mod lattice;
 mod mesh_analysis;

@@ -134,9 +134,9 @@ pub struct Decision {
 }
 
 /// A polynomial in x (lowest first) with coefficients polynomials in t.
-type BiPoly = Vec<TPoly>;
+pub(crate) type BiPoly = Vec<TPoly>;
 /// A polynomial in x over Q(ζ) (lowest first).
-type CPoly = Vec<Cyclotomic>;
+pub(crate) type CPoly = Vec<Cyclotomic>;
 
 /// Progress of the stages on standard error (SUBDLAB_EXACT_TRACE=1).
 fn trace(what: impl FnOnce() -> String) {
@@ -664,7 +664,7 @@ fn weight_slope(p: &BiPoly) -> Rational {
 /// x whose leading coefficients are nonzero constants) that is not
 /// identically zero, as a polynomial in t over Q(ζ); `None` when neither
 /// depends on t (nothing changes).
-fn first_subresultant(a: &BiPoly, b: &BiPoly) -> Result<Option<CPoly>, Error> {
+pub(crate) fn first_subresultant(a: &BiPoly, b: &BiPoly) -> Result<Option<CPoly>, Error> {
     let (m, n) = (a.len() - 1, b.len() - 1);
     if m == 0 || n == 0 || (a.iter().all(TPoly::is_constant) && b.iter().all(TPoly::is_constant)) {
         return Ok(None);
@@ -706,7 +706,7 @@ fn first_subresultant(a: &BiPoly, b: &BiPoly) -> Result<Option<CPoly>, Error> {
 
 /// The polynomial of degree < len through (x_i, y_i) (Newton form, then
 /// expanded), coefficients lowest first.
-fn interpolate(x: &[Rational], y: &[Cyclotomic]) -> CPoly {
+pub(crate) fn interpolate(x: &[Rational], y: &[Cyclotomic]) -> CPoly {
     let n = x.len();
     let mut dd: Vec<Cyclotomic> = y.to_vec();
     for level in 1..n {
@@ -763,7 +763,7 @@ fn cmul(a: &CPoly, b: &CPoly) -> CPoly {
 /// A polynomial over Q with the same roots and more: the product of the
 /// distinct Galois conjugates of p (their product is fixed by the Galois
 /// group, so rational).
-fn rational_norm(p: &CPoly) -> Result<Poly, Error> {
+pub(crate) fn rational_norm(p: &CPoly) -> Result<Poly, Error> {
     let order = p.iter().fold(1u64, |l, c| {
         let m = c.order().unwrap_or(1) as u64;
         l / crate::numeric::weight::gcd(l as i64, m as i64) as u64 * m
@@ -793,7 +793,7 @@ fn rational_norm(p: &CPoly) -> Result<Poly, Error> {
 
 /// Every root of every block polynomial at t is real (exactly: the rational
 /// norm of each, square-free, has as many real roots as its degree).
-fn all_real(polys: &[BiPoly], t: &Rational) -> bool {
+pub(crate) fn all_real(polys: &[BiPoly], t: &Rational) -> bool {
     polys.iter().all(|p| {
         let c = eval_x(p, t);
         let Ok(norm) = rational_norm(&c) else { return false };

@@ -25,9 +25,11 @@
 //!
 //! * `file.rs`: the TOML schema and line-numbered validation;
 //! * `weights.rs`: expression evaluation and the weight cache;
-//! * `rules.rs`: the weights put on the host's slots (the `Scheme`).
+//! * `rules.rs`: the weights put on the host's slots (the `Scheme`);
+//! * `probe.rs`: which fields a computation read at one valence (`every_valence`).
 
 mod file;
+pub mod probe;
 mod rules;
 mod weights;
 

@@ -104,6 +104,10 @@ impl<W: Weight> Mask<W> for Shared {
     fn weight(&self, mesh: &PolyMesh, rule: &'static str, slot: &Slot) -> Result<W, Inexact> {
         // the gatherer collects only the families the file weighs
         let k = *self.fields.get(&(rule, slot.family)).ok_or(Inexact)?;
+        // `every_valence`: which fields are read at the centre's valence
+        if let Some(hit) = super::probe::record(rule, slot.family, slot.n, || self.weights.field(k)) {
+            return Ok(if hit { W::one() } else { W::zero() });
+        }
         // a mesh with per-vertex values: the parameter at the vertex concerned
         let vertex = match (self.info.caps.vertex_param, &mesh.vertex_params, slot.at) {
             (Some(p), Some(values), Some(at)) => Some((p.name, *values.get(at).ok_or(Inexact)?)),

@@ -73,6 +73,14 @@ impl WeightTable {
         WeightTable { env, exprs, uses_j, face_corner, cache: Mutex::new(HashMap::new()) }
     }
 
+    /// Field k for the valence probe (`probe::record`): whether its
+    /// expression has any variable (n, j, m, a parameter, whose value may
+    /// come from n; none: one constant everywhere), the expression and the
+    /// parameters' values.
+    pub fn field(&self, k: usize) -> (bool, Expr, Env) {
+        (!self.exprs[k].variables().is_empty(), self.exprs[k].clone(), self.env.clone())
+    }
+
     /// The weight of field `k` at valence (or face size) n, index j, and for
     /// a face-corner field at corner count m; with
     /// `vertex`, parameter `vertex.0` set to the per-vertex value

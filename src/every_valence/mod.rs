@@ -1,0 +1,450 @@
+//! Spectral C¹ conditions for every valence of a range, or for every
+//! valence from A on (`subdlab spectrum SCHEME --certify --valences A..`).
+//!
+//! * a finite range A..B: the interval certificate (`certify`) at each n;
+//! * an open range A..: one parametric computation for every n ≥ N
+//!   (`laurent`: the blocks k ≠ 0 as P(x, cos θ); `tail`: their decision;
+//!   `centre`: block 0), and the per-valence certificate for A ≤ n < N.
+//!   Where the parametric part does not prove its statement, the
+//!   per-valence certificates scan upward from A to find the first valence
+//!   where the conditions fail (DISPROVED) up to `SCAN_LIMIT`; none found:
+//!   NOT PROVED with the reason.
+//!
+//! Spectral conditions only: the characteristic map is not part of this.
+
+pub mod centre;
+pub mod laurent;
+pub mod tail;
+
+use std::collections::BTreeMap;
+use std::time::Instant;
+
+use serde::Serialize;
+
+use crate::certify::spectrum::analysis_orbits;
+use crate::certify::{certify_analysis, Verdict};
+use crate::error::Error;
+use crate::matrix::assemble_rows;
+use crate::neighbourhood::{Configuration, NeighbourhoodKind};
+use crate::numeric::{Cyclotomic, Rational, Weight};
+use crate::schemes;
+use crate::schemes::user::probe;
+use crate::spectrum::{analyse, Options};
+
+use laurent::LaurentRows;
+
+/// The valences at which the rows away from the centre are read (two, to
+/// check that they agree): large enough that no rule reaches around the
+/// centre, not a valence of a regular vertex or face.
+pub const PROBE_VALENCE: usize = 24;
+/// How far the per-valence certificates scan for a first failure when the
+/// parametric part does not prove its statement.
+pub const SCAN_LIMIT: usize = 64;
+
+/// What the command asks.
+#[derive(Clone, Debug)]
+pub struct Request {
+    pub scheme: String,
+    pub params: Vec<(String, String)>,
+    pub from: usize,
+    /// None: every valence from `from` on
+    pub to: Option<usize>,
+}
+
+/// One valence's certificate.
+#[derive(Clone, Debug, Serialize)]
+pub struct AtValence {
+    pub valence: usize,
+    #[serde(flatten)]
+    pub verdict: Verdict,
+    /// a verdict given identities confirmed only to interval overlap
+    pub conditional: bool,
+}
+
+/// The parametric part's account.
+#[derive(Clone, Debug, Serialize)]
+pub struct Parametric {
+    /// PROVED, or NOT PROVED with the reason
+    #[serde(flatten)]
+    pub verdict: Verdict,
+    pub evidence: &'static str,
+    /// the rows away from the centre: where their independence of n comes from
+    pub rows: String,
+    /// the blocks k ≠ 0
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub blocks: Option<tail::TailFacts>,
+    /// block 0: its variable and range
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub block0: Option<Block0>,
+    pub seconds: f64,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct Block0 {
+    /// the one variable the centre's row totals are polynomials in
+    pub variable: centre::Variable,
+    /// its range over the valences ≥ N and what the eigenvalues are compared with
+    pub range: String,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct Report {
+    pub scheme: String,
+    pub valences: String,
+    #[serde(flatten)]
+    pub verdict: Verdict,
+    /// what kind of evidence the verdict is
+    pub evidence: String,
+    pub scope: &'static str,
+    /// N: the parametric part covers n ≥ N (open ranges, when proved)
+    pub threshold: Option<usize>,
+    pub parametric: Option<Parametric>,
+    pub per_valence: Vec<AtValence>,
+    pub per_valence_seconds: f64,
+}
+
+pub const SCOPE: &str = "spectral conditions only (λ0 = 1 simple; λ1 = λ2 real, positive, from blocks 1 and n−1, \
+                         simple in each; every other eigenvalue of modulus below λ1); the characteristic map is not \
+                         checked";
+
+fn q(p: i64, d: i64) -> Rational {
+    Rational::new(p.into(), d.into())
+}
+
+/// The interval certificate at one valence (as `spectrum --certify`).
+pub fn certify_at(req: &Request, n: usize) -> Result<AtValence, Error> {
+    let scheme = schemes::resolve(&req.scheme, &req.params)?;
+    let config = Configuration::regular(scheme.as_ref(), n)?;
+    let opts = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
+    let analysis = analyse(scheme.as_ref(), &config, &opts)?;
+    let c = certify_analysis(scheme.as_ref(), &analysis)?;
+    Ok(AtValence { valence: n, verdict: c.verdict.clone(), conditional: c.conditional })
+}
+
+fn proved(a: &AtValence) -> bool {
+    a.verdict == Verdict::Proved && !a.conditional
+}
+
+/// Runs the request.
+pub fn run(req: &Request) -> Result<Report, Error> {
+    if req.from < 3 {
+        return Err(Error::Input(format!("--valences: the lowest valence is 3, got {}", req.from)));
+    }
+    if let Some(to) = req.to {
+        if to < req.from {
+            return Err(Error::Input(format!("--valences {}..{to}: the range is empty", req.from)));
+        }
+    }
+    let scheme = schemes::resolve(&req.scheme, &req.params)?;
+    let name = scheme.name().to_string();
+    let valences = match req.to {
+        Some(to) => format!("{}..{to}", req.from),
+        None => format!("{}..", req.from),
+    };
+    let mut report = Report {
+        scheme: name,
+        valences,
+        verdict: Verdict::Proved,
+        evidence: String::new(),
+        scope: SCOPE,
+        threshold: None,
+        parametric: None,
+        per_valence: Vec::new(),
+        per_valence_seconds: 0.0,
+    };
+    let (scan_to, finite) = match req.to {
+        Some(to) => (to, true),
+        None => {
+            let t0 = Instant::now();
+            let (verdict, rows, blocks, block0) = match parametric(req) {
+                Ok(p) => (Verdict::Proved, p.rows, Some(p.blocks), Some(p.block0)),
+                Err(missing) => (Verdict::NotProved(missing.reason), missing.rows, missing.blocks, None),
+            };
+            let threshold = match (&verdict, &blocks) {
+                (Verdict::Proved, Some(b)) => Some(b.threshold),
+                _ => None,
+            };
+            report.parametric = Some(Parametric {
+                verdict,
+                evidence: "exact (rational arithmetic, subresultants and Sturm sequences) over every valence ≥ N",
+                rows,
+                blocks,
+                block0,
+                seconds: t0.elapsed().as_secs_f64(),
+            });
+            report.threshold = threshold;
+            match threshold {
+                Some(n) => (n - 1, true),
+                None => (SCAN_LIMIT.max(req.from), false),
+            }
+        }
+    };
+    let t1 = Instant::now();
+    for n in req.from..=scan_to {
+        let at = certify_at(req, n)?;
+        let stop = matches!(at.verdict, Verdict::Disproved(_)) && !at.conditional;
+        report.per_valence.push(at);
+        if stop {
+            break;
+        }
+    }
+    report.per_valence_seconds = t1.elapsed().as_secs_f64();
+    let first_bad = report.per_valence.iter().find(|a| matches!(a.verdict, Verdict::Disproved(_)) && !a.conditional);
+    let first_open = report.per_valence.iter().find(|a| !proved(a));
+    let scanned = match report.per_valence.last() {
+        Some(l) => format!("{}..{}", req.from, l.valence),
+        None => "none".into(),
+    };
+    (report.verdict, report.evidence) = if let Some(bad) = first_bad {
+        let why = match &bad.verdict {
+            Verdict::Disproved(r) => r.clone(),
+            _ => String::new(),
+        };
+        (
+            Verdict::Disproved(format!("first failing valence n = {}: {why}", bad.valence)),
+            format!("interval certificate at n = {} (the valences before it proved by their certificates)", bad.valence),
+        )
+    } else if let Some(open) = first_open {
+        (
+            Verdict::NotProved(format!("valence {}: {}", open.valence, open.verdict.display())),
+            "interval certificates per valence".into(),
+        )
+    } else if finite && report.parametric.is_none() {
+        (Verdict::Proved, format!("interval certificate at each valence {scanned}"))
+    } else if finite {
+        let n = report.threshold.expect("proved parametric part");
+        let below = if req.from < n { format!("interval certificates at {scanned}, ") } else { String::new() };
+        (Verdict::Proved, format!("{below}exact parametric proof for every n ≥ {n}"))
+    } else {
+        let why = match report.parametric.as_ref().map(|p| &p.verdict) {
+            Some(Verdict::NotProved(r)) => r.clone(),
+            _ => String::new(),
+        };
+        (
+            Verdict::NotProved(format!(
+                "the parametric part does not cover n ≥ {}: {why}; the certificates prove {scanned} and find no \
+                 failure there",
+                req.from
+            )),
+            format!("interval certificates at {scanned}; no proof beyond"),
+        )
+    };
+    Ok(report)
+}
+
+/// P(x, c) of the blocks k ≠ 0 as the parametric part computes it
+/// (coefficients lowest power of x first, each a polynomial in c = cos θ),
+/// or why it is not computed.
+pub fn block_polynomial(req: &Request) -> Result<Vec<crate::numeric::TPoly>, String> {
+    let r0 = read_rows(req, PROBE_VALENCE).map_err(|m| m.reason)?;
+    laurent::charpoly_in_c(&r0.rows).map_err(String::from)
+}
+
+/// What the parametric part proved.
+struct ParametricProof {
+    rows: String,
+    blocks: tail::TailFacts,
+    block0: Block0,
+}
+
+/// Why it did not, and how far it got.
+struct Missing {
+    reason: String,
+    rows: String,
+    blocks: Option<tail::TailFacts>,
+}
+
+fn missing(reason: impl Into<String>) -> Missing {
+    Missing { reason: reason.into(), rows: "not established".into(), blocks: None }
+}
+
+/// The rows at valence n: the rows away from the centre by sector offset
+/// (with what the probe saw), and the centre's row totals per orbit.
+struct Read {
+    rows: LaurentRows,
+    reads: probe::Reads,
+    /// matrix index of the centre and the orbits away from it (block order)
+    centre: usize,
+    free: Vec<usize>,
+    orbit_of: Vec<(usize, usize)>,
+    analysis: crate::spectrum::Analysis,
+}
+
+fn read_rows(req: &Request, n: usize) -> Result<Read, Missing> {
+    let err = |e: Error| missing(format!("valence {n}: {e}"));
+    let scheme = schemes::resolve(&req.scheme, &req.params).map_err(err)?;
+    if !scheme.rotation_symmetric() {
+        return Err(missing("the scheme's rules are not rotation symmetric (no Fourier blocks)"));
+    }
+    let config = Configuration::regular(scheme.as_ref(), n).map_err(err)?;
+    let opts = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
+    let analysis = analyse(scheme.as_ref(), &config, &opts).map_err(err)?;
+    let orbits = analysis_orbits(scheme.as_ref(), &analysis);
+    orbits.check_free().map_err(|e| missing(format!("valence {n}: no Fourier blocks ({e})")))?;
+    if orbits.group_order != n {
+        return Err(missing(format!("valence {n}: the rotation period is not one sector")));
+    }
+    let fixed: Vec<usize> = (0..orbits.num_orbits()).filter(|&o| orbits.fixed[o]).collect();
+    if fixed.len() != 1 {
+        return Err(missing("the centre is not a single vertex (a face-centred scheme): block 0 has no centre row"));
+    }
+    if analysis.discovered.refinements().len() != 1 {
+        return Err(missing("S is a composite of several refinement steps: the rows are not one rule each"));
+    }
+    let free = orbits.block_orbits(1);
+    let mut pos = vec![usize::MAX; orbits.num_orbits()];
+    for (k, &o) in free.iter().enumerate() {
+        pos[o] = k;
+    }
+    let which: Vec<usize> = free.iter().map(|&o| orbits.representative[o]).collect();
+    let (d, kind) = (&analysis.discovered, analysis.spectrum.neighbourhood);
+    let (rows, reads) = probe::watch(n, || assemble_rows::<Cyclotomic>(scheme.as_ref(), d, kind, &which));
+    // the rows away from the centre must not read a field with a variable at
+    // the centre's valence; and a scheme-file weight must have been read at all
+    if reads.total == 0 {
+        return Err(missing(
+            "the scheme's rules are compiled code (a built-in): how its weights depend on the centre's valence \
+             cannot be read; the same rules as a scheme file can be (e.g. schemes/catmull-clark.toml, \
+             schemes/loop.toml)",
+        ));
+    }
+    if let Some(f) = reads.at_valence.iter().find(|f| f.varies) {
+        return Err(missing(format!(
+            "the rows away from the centre read [{}] {} at the centre's valence, an expression with variables: the \
+             blocks k ≠ 0 may depend on n other than through cos(2πk/n)",
+            f.rule, f.family
+        )));
+    }
+    let rows = rows.map_err(|_| missing(format!("valence {n}: no exact rows of S")))?;
+    let g = n as i64;
+    let size = free.len();
+    let mut entries = vec![vec![BTreeMap::new(); size]; size];
+    let mut centre_column = vec![Rational::from_integer(0.into()); size];
+    for (a, row) in rows.iter().enumerate() {
+        for (col, w) in row {
+            let w = w.to_rational().ok_or_else(|| {
+                missing("a weight of a row away from the centre is irrational: not followed as a Laurent polynomial")
+            })?;
+            let (ob, tau) = orbits.member[*col];
+            if orbits.fixed[ob] {
+                centre_column[a] = &centre_column[a] + w;
+                continue;
+            }
+            let tau = tau as i64;
+            let signed = if 2 * tau > g { tau - g } else { tau };
+            let e: &mut BTreeMap<i64, Rational> = &mut entries[a][pos[ob]];
+            let v = e.remove(&signed).unwrap_or_else(|| Rational::from_integer(0.into())) + w;
+            if !Weight::is_zero(&v) {
+                e.insert(signed, v);
+            }
+        }
+    }
+    let rows = LaurentRows { entries, centre_column };
+    if 2 * rows.reach() + 2 > g {
+        return Err(missing(format!("the rows away from the centre reach {} sectors: too far for the probe", rows.reach())));
+    }
+    let orbit_of = orbits.member.clone();
+    Ok(Read { rows, reads, centre: orbits.representative[fixed[0]], free, orbit_of, analysis })
+}
+
+/// The centre's row at valence n with field `field` weighing 1 and every
+/// other field read at n weighing 0: its totals per orbit away from the
+/// centre (the field's slot counts).
+fn indicator_totals(req: &Request, read: &Read, n: usize, field: (&str, &str)) -> Result<Vec<Rational>, Missing> {
+    let scheme = schemes::resolve(&req.scheme, &req.params).map_err(|e| missing(e.to_string()))?;
+    let (d, kind) = (&read.analysis.discovered, read.analysis.spectrum.neighbourhood);
+    let (row, _) = probe::watch_indicator(n, field, || assemble_rows::<Cyclotomic>(scheme.as_ref(), d, kind, &[read.centre]));
+    let row = row.map_err(|_| missing("no exact centre row"))?;
+    let mut totals = vec![Rational::from_integer(0.into()); read.free.len()];
+    for (col, w) in &row[0] {
+        let (ob, _) = read.orbit_of[*col];
+        if let Some(k) = read.free.iter().position(|&o| o == ob) {
+            totals[k] = &totals[k] + w.to_rational().ok_or_else(|| missing("an indicator weight is not rational"))?;
+        }
+    }
+    Ok(totals)
+}
+
+/// The actual centre row's totals per orbit away from the centre.
+fn centre_totals(req: &Request, read: &Read) -> Result<Vec<Cyclotomic>, Missing> {
+    let scheme = schemes::resolve(&req.scheme, &req.params).map_err(|e| missing(e.to_string()))?;
+    let (d, kind) = (&read.analysis.discovered, read.analysis.spectrum.neighbourhood);
+    let row = assemble_rows::<Cyclotomic>(scheme.as_ref(), d, kind, &[read.centre])
+        .map_err(|_| missing("no exact centre row"))?;
+    let mut totals = vec![Cyclotomic::zero(); read.free.len()];
+    for (col, w) in &row[0] {
+        let (ob, _) = read.orbit_of[*col];
+        if let Some(k) = read.free.iter().position(|&o| o == ob) {
+            totals[k] = totals[k].clone() + w.clone();
+        }
+    }
+    Ok(totals)
+}
+
+fn parametric(req: &Request) -> Result<ParametricProof, Missing> {
+    let (n0, n1) = (PROBE_VALENCE, PROBE_VALENCE + 1);
+    let r0 = read_rows(req, n0)?;
+    let r1 = read_rows(req, n1)?;
+    if r0.rows != r1.rows {
+        return Err(missing(format!(
+            "the rows away from the centre differ between valences {n0} and {n1} (by sector offset)"
+        )));
+    }
+    let rows_text = format!(
+        "rows away from the centre independent of n: every scheme-file weight they read at the centre's valence is \
+         a constant ({} read{}), checked at n = {n0}; identical at n = {n0} and {n1}; reach {} sector(s); blocks of \
+         size {}",
+        r0.reads.at_valence.len(),
+        if r0.reads.at_valence.len() == 1 { "" } else { "s" },
+        r0.rows.reach(),
+        r0.rows.size()
+    );
+    let p = laurent::charpoly_in_c(&r0.rows).map_err(|e| Missing { reason: e.into(), rows: rows_text.clone(), blocks: None })?;
+    let facts = match tail::decide(&p, n0) {
+        Ok(tail::Tail::Proved(f)) => f,
+        Ok(tail::Tail::Fails(why)) => {
+            return Err(Missing { reason: format!("blocks k ≠ 0: {why}"), rows: rows_text, blocks: None })
+        }
+        Err(e) => return Err(Missing { reason: format!("blocks k ≠ 0: {e}"), rows: rows_text, blocks: None }),
+    };
+    let fail0 = |why: String, facts: &tail::TailFacts| Missing {
+        reason: format!("block 0: {why}"),
+        rows: rows_text.clone(),
+        blocks: Some(facts.clone()),
+    };
+    // block 0: the centre's totals r(n)
+    let (_, centre_reads) = probe::watch(n0, || centre_totals(req, &r0));
+    let mut r_sym = vec![centre::InN::default(); r0.rows.size()];
+    for f in &centre_reads.at_valence {
+        let w = centre::symbolic(&f.expr, &f.env).map_err(|e| fail0(e, &facts))?;
+        let c0 = indicator_totals(req, &r0, n0, (f.rule, f.family))?;
+        let c1 = indicator_totals(req, &r1, n1, (f.rule, f.family))?;
+        let per_sector: Vec<Rational> = c0.iter().map(|x| x / q(n0 as i64, 1)).collect();
+        if c1.iter().map(|x| x / q(n1 as i64, 1)).collect::<Vec<_>>() != per_sector {
+            return Err(fail0(format!("[{}] {}: its slots per sector differ between valences", f.rule, f.family), &facts));
+        }
+        let n_times_w = w.mul_n();
+        for (b, k) in per_sector.iter().enumerate() {
+            r_sym[b] = r_sym[b].add_scaled(&n_times_w, k);
+        }
+    }
+    // the formula is the centre's row at both probe valences
+    for (read, n) in [(&r0, n0), (&r1, n1)] {
+        let actual = centre_totals(req, read)?;
+        let formula: Option<Vec<Cyclotomic>> = r_sym.iter().map(|x| x.at(n as i64)).collect();
+        if formula.as_ref() != Some(&actual) {
+            return Err(fail0(format!("the centre's totals from its fields disagree with its row at n = {n}"), &facts));
+        }
+    }
+    let (variable, r_poly) = centre::one_variable(&r_sym).map_err(|e| fail0(e, &facts))?;
+    let qp = centre::block0_poly(&r0.rows.at_one(), &r_poly);
+    let lambda1 = centre::lambda1_poly(&p, variable);
+    match centre::decide(&qp, &lambda1, variable, facts.threshold) {
+        Ok((n, range)) => {
+            let mut blocks = facts;
+            blocks.threshold = blocks.threshold.max(n);
+            Ok(ParametricProof { rows: rows_text, block0: Block0 { variable, range }, blocks })
+        }
+        Err(why) => Err(fail0(why, &facts)),
+    }
+}

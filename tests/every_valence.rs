@@ -1,0 +1,220 @@
+//! `spectrum --certify --valences`: spectral C¹ at every valence (issue 27).
+//! Expected values come from the literature and hand derivations, never
+//! from the program: Catmull–Clark and Loop are spectrally C¹ at every
+//! n ≥ 3 (Doo–Sabin 1978, Ball–Storry 1988 for Catmull–Clark; Loop 1987,
+//! Schweitzer 1996 for Loop); the defect file's first bad valence 40 is
+//! derived in its comments.
+
+use crate::common::subdlab;
+use num_rational::BigRational;
+use subdlab::certify::Verdict;
+use subdlab::every_valence::{block_polynomial, run, Request};
+
+fn request(scheme: &str, from: usize, to: Option<usize>) -> Request {
+    Request { scheme: scheme.into(), params: Vec::new(), from, to }
+}
+
+fn q(p: i64, d: i64) -> BigRational {
+    BigRational::new(p.into(), d.into())
+}
+
+/// P(x, c) at a rational c: coefficients lowest first.
+fn poly_at(scheme: &str, c: &BigRational) -> Vec<BigRational> {
+    let p = block_polynomial(&request(scheme, 3, None)).expect("P(x, c) computed");
+    p.iter().map(|t| t.eval(c).to_rational().expect("rational")).collect()
+}
+
+/// p(x) at a rational x.
+fn eval(p: &[BigRational], x: &BigRational) -> BigRational {
+    p.iter().rev().fold(q(0, 1), |acc, a| acc * x + a)
+}
+
+#[test]
+fn catmull_clark_file_is_spectrally_c1_at_every_valence() {
+    let r = run(&request("schemes/catmull-clark.toml", 3, None)).unwrap();
+    assert_eq!(r.verdict, Verdict::Proved, "{r:?}");
+    let n = r.threshold.expect("a threshold N");
+    // the per-valence part is exactly 3..N−1, every certificate PROVED
+    assert_eq!(r.per_valence.iter().map(|a| a.valence).collect::<Vec<_>>(), (3..n).collect::<Vec<_>>());
+    assert!(r.per_valence.iter().all(|a| a.verdict == Verdict::Proved && !a.conditional));
+    let p = r.parametric.as_ref().unwrap();
+    assert_eq!(p.verdict, Verdict::Proved);
+    assert!(p.block0.is_some() && p.blocks.is_some());
+    assert!(r.scope.contains("spectral conditions only"));
+}
+
+#[test]
+fn loop_file_is_spectrally_c1_at_every_valence() {
+    let r = run(&request("schemes/loop.toml", 3, None)).unwrap();
+    assert_eq!(r.verdict, Verdict::Proved, "{r:?}");
+    assert!(r.threshold.is_some());
+    // an open range starting above the threshold needs no per-valence part
+    let r = run(&request("schemes/loop.toml", 100, None)).unwrap();
+    assert_eq!(r.verdict, Verdict::Proved);
+    assert!(r.per_valence.is_empty());
+}
+
+/// p(x + b): coefficients lowest first (repeated synthetic division).
+fn shifted(p: &[BigRational], b: &BigRational) -> Vec<BigRational> {
+    let mut a = p.to_vec();
+    let n = a.len();
+    for i in 0..n {
+        for j in (i..n - 1).rev() {
+            let t = &a[j + 1] * b;
+            a[j] = &a[j] + t;
+        }
+    }
+    a
+}
+
+/// Descartes' rule of signs: p has no root in (0, ∞) when its nonzero
+/// coefficients never change sign; with p(0) > 0 and all coefficients
+/// ≥ 0, p > 0 on [0, ∞).
+fn positive_on_half_line(p: &[BigRational]) -> bool {
+    p[0] > q(0, 1) && p.iter().all(|x| *x >= q(0, 1))
+}
+
+/// p divided by x − r (r a root of p).
+fn deflate(p: &[BigRational], r: &BigRational) -> Vec<BigRational> {
+    let d = p.len() - 1;
+    let mut out = vec![q(0, 1); d];
+    let mut carry = q(0, 1);
+    for k in (1..=d).rev() {
+        carry = &p[k] + &carry * r;
+        out[k - 1] = carry.clone();
+    }
+    out
+}
+
+/// Second route: the top root of Catmull–Clark's block polynomial is the
+/// closed form of the subdominant eigenvalue (Doo–Sabin 1978; Ball–Storry):
+/// μ(c) = (5 + c + sqrt((c + 9)(c + 1)))/16, a root of the quadratic
+/// Q = 256 x² − 32 (5 + c) x + (5 + c)² − (c + 9)(c + 1). Q divides P(x, c)
+/// exactly, and the quotient R has no root at or above b = (5 + c + s)/16 for
+/// a rational s ≤ sqrt((c+9)(c+1)) (so b ≤ μ): R(x + b) has positive
+/// coefficients (Descartes). So μ is P's largest root, and simple.
+#[test]
+fn catmull_clark_top_root_is_the_closed_form() {
+    for c in [q(-9, 10), q(-1, 3), q(0, 1), q(1, 2), q(7, 9), q(1, 1)] {
+        let p = poly_at("schemes/catmull-clark.toml", &c);
+        let s = q(5, 1) + &c;
+        let disc = (&c + q(9, 1)) * (&c + q(1, 1));
+        let quad = vec![&s * &s - &disc, q(-32, 1) * &s, q(256, 1)];
+        let (quotient, rem) = divide(&p, &quad);
+        assert!(rem.iter().all(|x| *x == q(0, 1)), "c = {c}: the quadratic divides P");
+        // s_hi ≥ sqrt(disc) by Newton from above; s_lo = disc/s_hi ≤ sqrt(disc)
+        let mut s_hi = &disc + q(1, 1);
+        for _ in 0..8 {
+            s_hi = (&s_hi + &disc / &s_hi) / q(2, 1);
+        }
+        let b = (&s + &disc / &s_hi) / q(16, 1);
+        assert!(positive_on_half_line(&shifted(&quotient, &b)), "c = {c}: a root of P besides μ reaches μ");
+        // the quadratic's other root (5 + c − sqrt)/16 is below b: Q(x + b)
+        // has one sign change only (μ), checked by its value at b < 0 ... Q(b) < 0
+        assert!(eval(&quad, &b) < q(0, 1), "c = {c}: b lies between the quadratic's roots");
+    }
+}
+
+/// p = quotient · d + remainder.
+fn divide(p: &[BigRational], d: &[BigRational]) -> (Vec<BigRational>, Vec<BigRational>) {
+    let mut r = p.to_vec();
+    let lead = d.last().unwrap().clone();
+    let mut quotient = vec![q(0, 1); p.len() + 1 - d.len()];
+    while r.len() >= d.len() {
+        let f = r.last().unwrap().clone() / &lead;
+        let shift = r.len() - d.len();
+        quotient[shift] = f.clone();
+        for (i, x) in d.iter().enumerate() {
+            r[shift + i] = &r[shift + i] - &f * x;
+        }
+        r.pop();
+    }
+    (quotient, r)
+}
+
+/// Second route for Loop: λ1 = 3/8 + cos(2π/n)/4 (Loop 1987), i.e. x = 3/8 +
+/// c/4 is a root of P(x, c), and the rest of P, P/(x − μ), is positive on
+/// [μ, ∞) (Descartes on its shift by μ): μ is the largest root, simple.
+#[test]
+fn loop_top_root_is_three_eighths_plus_cos_over_four() {
+    for c in [q(-1, 2), q(0, 1), q(1, 3), q(9, 10), q(1, 1)] {
+        let p = poly_at("schemes/loop.toml", &c);
+        let mu = q(3, 8) + &c / q(4, 1);
+        assert_eq!(eval(&p, &mu), q(0, 1), "c = {c}");
+        assert!(positive_on_half_line(&shifted(&deflate(&p, &mu), &mu)), "c = {c}");
+    }
+}
+
+/// The defect file (tests/data/loop-large-valence-defect.toml): block 0's
+/// eigenvalue 5/8 − K/n² dominates λ1 exactly from n = 40 on (derived in
+/// the file). The parametric part must not prove it; the scan finds 40.
+#[test]
+fn large_valence_defect_is_disproved_at_forty() {
+    let file = "tests/data/loop-large-valence-defect.toml";
+    let r = run(&request(file, 3, None)).unwrap();
+    match &r.verdict {
+        Verdict::Disproved(why) => assert!(why.contains("n = 40"), "{why}"),
+        v => panic!("expected DISPROVED at 40, got {v:?}"),
+    }
+    let last = r.per_valence.last().unwrap();
+    assert_eq!(last.valence, 40);
+    assert!(r.per_valence[..r.per_valence.len() - 1].iter().all(|a| a.verdict == Verdict::Proved));
+    assert!(matches!(r.parametric.as_ref().unwrap().verdict, Verdict::NotProved(_)));
+    // finite ranges: proved below 40, disproved across it
+    assert_eq!(run(&request(file, 36, Some(39))).unwrap().verdict, Verdict::Proved);
+    let r = run(&request(file, 38, Some(45))).unwrap();
+    assert!(matches!(&r.verdict, Verdict::Disproved(w) if w.contains("n = 40")), "{:?}", r.verdict);
+}
+
+/// A scheme whose rows away from the centre read an expression in n and j
+/// at the centre's valence (an extraordinary edge rule): the parametric part
+/// must refuse, and the scan finds the failure (bad at every valence).
+#[test]
+fn an_edge_rule_in_n_is_not_taken_as_independent_of_n() {
+    let r = run(&request("schemes/loop-block2-dominant.toml", 3, None)).unwrap();
+    let p = r.parametric.as_ref().unwrap();
+    match &p.verdict {
+        Verdict::NotProved(why) => assert!(why.contains("edge-extraordinary"), "{why}"),
+        v => panic!("the parametric part must not prove it: {v:?}"),
+    }
+    assert!(matches!(r.verdict, Verdict::Disproved(_)), "{:?}", r.verdict);
+}
+
+/// Built-in rules are compiled code: no all-valence proof, and the output
+/// says why (the per-valence certificates still run up to the scan limit).
+#[test]
+fn built_ins_are_not_proved_beyond_their_certificates() {
+    let r = run(&request("loop", 3, None)).unwrap();
+    match &r.verdict {
+        Verdict::NotProved(why) => assert!(why.contains("compiled code"), "{why}"),
+        v => panic!("{v:?}"),
+    }
+}
+
+#[test]
+fn cli_exit_codes_and_json() {
+    let ok = subdlab(&["spectrum", "schemes/loop.toml", "--certify", "--valences", "3.."]);
+    assert_eq!(ok.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&ok.stdout);
+    assert!(text.contains("PROVED") && text.contains("spectral conditions only"), "{text}");
+    let bad = subdlab(&["spectrum", "tests/data/loop-large-valence-defect.toml", "--certify", "--valences", "3..", "--json"]);
+    assert_eq!(bad.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&bad.stdout).unwrap();
+    assert_eq!(v["verdict"], "disproved");
+    assert!(v["reason"].as_str().unwrap().contains("n = 40"));
+    assert!(v["parametric"]["evidence"].as_str().unwrap().contains("exact"));
+    assert_eq!(v["per_valence"].as_array().unwrap().len(), 38);
+    for args in [
+        vec!["spectrum", "loop", "--certify", "--valences", "2.."],
+        vec!["spectrum", "loop", "--certify", "--valences", "five"],
+        vec!["spectrum", "loop", "--certify", "--valences", "9..4"],
+        vec!["spectrum", "loop", "--valences", "3..5"],
+        vec!["spectrum", "no-such-scheme", "--certify", "--valences", "3.."],
+    ] {
+        let out = subdlab(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(err.starts_with("error: ") && !err.contains("panicked"), "{err}");
+    }
+}
