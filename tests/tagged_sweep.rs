@@ -80,7 +80,12 @@ fn catmull_clark_boundary_sweep_follows_the_mode_derivation() {
         }
         leading.sort_by(|a, b| b.total_cmp(a));
         for (i, want) in leading.iter().take(2).enumerate() {
-            assert!((lambda(p, i + 1) - want).abs() < 1e-9, "k = {k}: |λ{}| = {} against {want}", i + 1, lambda(p, i + 1));
+            assert!(
+                (lambda(p, i + 1) - want).abs() < 1e-9,
+                "k = {k}: |λ{}| = {} against {want}",
+                i + 1,
+                lambda(p, i + 1)
+            );
         }
         match k {
             // 1/4 twice from the curve and the one face, a Jordan block
@@ -221,9 +226,33 @@ fn tagged_sweep_errors_are_one_line() {
     assert!(e.contains("--tag 'edge'"), "{e}");
     let e = fails(&["sweep", "catmull-clark", "--tag", "boundary", "--sectors", "2..4", "--curvature"]);
     assert!(e.contains("curvature"), "{e}");
-    let e = fails(&["sweep", "catmull-clark", "--tag", "boundary", "--sectors", "2..4", "-p", "blz=0:1:1/2", "--exact"]);
+    let e =
+        fails(&["sweep", "catmull-clark", "--tag", "boundary", "--sectors", "2..4", "-p", "blz=0:1:1/2", "--exact"]);
     assert!(e.contains("--exact"), "{e}");
     // a scheme without crease rules refuses the tagged configuration
     let e = fails(&["sweep", "doo-sabin", "--tag", "boundary", "--sectors", "2..4"]);
     assert!(!e.is_empty());
+}
+
+/// `spectrum --tag` prints the spectrum per reflection block: at a
+/// Catmull–Clark boundary vertex of 4 quads the tangent (0, 1, −1) and the
+/// sine mode m = 2 are both odd under j ↦ k − j, so the Jordan block at 1/2
+/// is in the odd block (tests/reflection_split.rs derives it exactly).
+#[test]
+fn spectrum_prints_the_reflection_blocks() {
+    let out = subdlab(&["spectrum", "catmull-clark", "-n", "4", "--tag", "boundary", "--no-exact"]);
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("reflection r -> 4 - r"), "{text}");
+    let odd = text.lines().find(|l| l.trim_start().starts_with("odd")).unwrap();
+    assert!(odd.contains("0.5 (x2, defective"), "{text}");
+    let v = json(&["spectrum", "catmull-clark", "-n", "4", "--tag", "boundary", "--no-exact", "--json"]);
+    let first = &v["reflection"]["odd"][0];
+    assert_eq!(
+        (first["algebraic_multiplicity"].as_u64(), first["geometric_multiplicity"].as_u64()),
+        (Some(2), Some(1))
+    );
+    assert!((first["re"].as_f64().unwrap() - 0.5).abs() < 1e-9);
+    let interior = json(&["spectrum", "catmull-clark", "-n", "5", "--no-exact", "--json"]);
+    assert!(interior.get("reflection").is_none());
 }
