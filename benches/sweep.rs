@@ -26,6 +26,7 @@ fn sweep_point(c: &mut Criterion) {
         charmap_options: Default::default(),
         faces: None,
         curvature: false,
+        tagging: None,
     };
     let mut group = c.benchmark_group("sweep_point");
     group.sample_size(10).warm_up_time(Duration::from_millis(300)).measurement_time(Duration::from_secs(2));

@@ -93,6 +93,7 @@ fn spectrum_json() {
             ("c1_spectral", "b"),
             ("convergent", "b"),
             ("reasons", "a"),
+            ("failures", "a"),
             ("subdominant", "f?"),
             ("subdominant_blocks", "a"),
             ("sub_subdominant", "f?"),
@@ -324,6 +325,7 @@ fn sweep_json_and_csv() {
                 ("error", "s?"),
                 ("curvature_class", "s?"),
                 ("lp_limit", "f?"),
+                ("failing", "a"),
             ],
         );
     }
@@ -334,8 +336,11 @@ fn sweep_json_and_csv() {
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
     // valence, the swept parameter (empty name when none), λ moduli, then the verdicts
     assert_eq!(header[0], "valence");
-    let tail = &header[header.len() - 6..];
-    assert_eq!(tail, ["convergent", "c1_spectral", "charmap", "error", "curvature_class", "lp_limit"]);
+    let tail = &header[header.len() - 8..];
+    assert_eq!(
+        tail,
+        ["convergent", "c1_spectral", "charmap", "error", "curvature_class", "lp_limit", "verdict", "failing"]
+    );
     assert!(header.iter().filter(|h| h.starts_with("lambda")).count() >= 2);
     let rows: Vec<&str> = lines.collect();
     assert_eq!(rows.len(), 2, "one row per point");

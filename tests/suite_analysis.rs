@@ -26,6 +26,7 @@ mod dft_representative_rows;
 mod exact_vs_float;
 mod jordan_irrational;
 mod local_matrix;
+mod reflection_split;
 mod shape_chart;
 mod tagged_verdicts;
 mod tagged_vertices;

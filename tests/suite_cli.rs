@@ -31,4 +31,5 @@ mod shape_chart_cli;
 mod sqrt3_refine;
 mod sweep;
 mod sweep_exact;
+mod tagged_sweep;
 mod typed_errors;

@@ -340,7 +340,9 @@ fn curvature_columns_equal_single_point_runs_and_the_closed_form() {
             "charmap",
             "error",
             "curvature_class",
-            "lp_limit"
+            "lp_limit",
+            "verdict",
+            "failing"
         ]
     );
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
@@ -388,7 +390,8 @@ fn curvature_columns_equal_single_point_runs_and_the_closed_form() {
     }
     let out = subdlab(&["sweep", "loop", "--valences", "3..4", "--csv"]);
     let csv = String::from_utf8(out.stdout).unwrap();
-    assert!(csv.lines().skip(1).all(|l| l.ends_with(",,,") && l.split(',').count() == 12), "{csv}");
+    // error, curvature_class and lp_limit empty; then the verdict and (passing) no failing condition
+    assert!(csv.lines().skip(1).all(|l| l.ends_with(",,,PASSES,") && l.split(',').count() == 14), "{csv}");
 }
 
 /// The figure colours every C¹ cell by its curvature class, with one legend

@@ -141,9 +141,13 @@ pub struct AnalysisArgs {
 pub struct SweepArgs {
     /// scheme name or scheme file
     pub scheme: String,
-    /// valence range A..B
-    #[arg(long)]
+    /// valence range A..B (with --tag: the sectors of the tagged configuration, e.g. 1..8)
+    #[arg(long, visible_alias = "sectors")]
     pub valences: String,
+    /// sweep a tagged vertex instead of an interior one (as `spectrum --tag`): boundary, corner,
+    /// crease:K or dart; the verdict is then the sector criterion
+    #[arg(long)]
+    pub tag: Option<String>,
     /// NAME=VALUE fixes a parameter; NAME=START:END:STEP sweeps one (at most one)
     #[arg(long = "param", short = 'p')]
     pub params: Vec<String>,

@@ -149,6 +149,13 @@ fn list_schemes(files: &[std::path::PathBuf], json: bool) -> Result<(), Error> {
 fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
     use crate::sweep::exact::{run, ExactSweep};
     use crate::sweep::Grid;
+    if args.tag.is_some() {
+        return Err(Error::Input(
+            "--exact is not available with --tag (the exact sets are those of an interior vertex's Fourier blocks); \
+             sweep the tagged vertex's grid points without --exact"
+                .into(),
+        ));
+    }
     if args.charmap || args.curvature || args.csv || args.plot.is_some() || args.faces.is_some() {
         return Err(Error::Input(
             "--exact gives the exact sets of convergence and spectral C¹; it takes none of --charmap, --curvature, \
@@ -274,8 +281,21 @@ fn sweep(args: &SweepArgs) -> Result<(), Error> {
             "--levels and --resolution set the characteristic-map check; give --charmap too".into(),
         ));
     }
-    let mut grid =
-        Grid::parse(scheme, &args.valences, args.faces.as_deref(), &parse_params(&args.params)?, args.charmap)?;
+    let tagging = args.tag.as_deref().map(crate::neighbourhood::Tagging::parse).transpose()?;
+    if let (Some(t), true) = (tagging, args.curvature) {
+        return Err(Error::Input(format!(
+            "sweep --curvature --tag {}: curvature is not available at tagged vertices yet",
+            t.name()
+        )));
+    }
+    let mut grid = Grid::parse_at(
+        scheme,
+        &args.valences,
+        args.faces.as_deref(),
+        &parse_params(&args.params)?,
+        args.charmap,
+        tagging,
+    )?;
     grid.set_charmap_options(args.levels, args.resolution)?;
     grid.curvature = args.curvature;
     let bounds = crate::plot::sweep::Bound::all_of(&grid, &args.bounds)?;
@@ -343,13 +363,30 @@ fn sweep(args: &SweepArgs) -> Result<(), Error> {
     // table pads them
     const WIDTHS: [usize; 11] = [7, 10, 14, 14, 14, 14, 5, 5, 8, 14, 10];
     let mut text = String::new();
-    let mut print_row = |cells: &[String], error: &str, added: &[String]| {
+    if let (Some(t), false) = (grid.tagging, csv) {
+        // what a tagged sweep decides, and on what evidence
+        text += &format!(
+            "{scheme} at a {} vertex (k: its sectors); verdict: the sector criterion (Zorin 2000){}, floating point \
+             (relative tolerance 1e-9)\n",
+            t.name(),
+            if grid.charmap { " and the characteristic map on the raster" } else { ", spectral part only" }
+        );
+    }
+    // `verdict`: PASSES or FAILS and the failing conditions (CSV: two
+    // columns, the conditions joined by "; "; the table: the first
+    // condition after the row, or the error that stopped the point)
+    let mut print_row = |cells: &[String], error: &str, added: &[String], verdict: [&str; 2]| {
         if csv {
-            text += &format!("{},{},{}\n", cells.join(","), error.replace(',', ";"), added.join(","));
+            let [word, why] = verdict.map(|t| t.replace(',', ";"));
+            text += &format!("{},{},{},{word},{why}\n", cells.join(","), error.replace(',', ";"), added.join(","));
         } else {
             let all = cells.iter().chain(added);
             let padded: Vec<String> = all.zip(WIDTHS).map(|(c, w)| format!("{c:>w$}")).collect();
-            let note = if error.is_empty() { String::new() } else { format!("  ({error})") };
+            let note = match (error.is_empty(), verdict) {
+                (false, _) => format!("  ({error})"),
+                (true, [word, ""]) => format!("  {word}"),
+                (true, [word, why]) => format!("  {word}: {why}"),
+            };
             text += &format!("{}{note}\n", padded.join(" "));
         }
     };
@@ -358,12 +395,14 @@ fn sweep(args: &SweepArgs) -> Result<(), Error> {
             &[format!("valence,{name},lambda0,lambda1,lambda2,lambda3,convergent,c1_spectral,charmap")],
             "error",
             &["curvature_class,lp_limit".into()],
+            ["verdict", "failing"],
         );
     } else {
-        let head = ["valence", name.as_str(), "|λ0|", "|λ1|", "|λ2|", "|λ3|", "conv", "C1", "charmap"];
+        let first = if grid.tagging.is_some() { "k" } else { "valence" };
+        let head = [first, name.as_str(), "|λ0|", "|λ1|", "|λ2|", "|λ3|", "conv", "C1", "charmap"];
         // the table shows the curvature columns only when they were computed
         let added: &[String] = if grid.curvature { &["curvature".into(), "L_p: p <".into()] } else { &[] };
-        print_row(&head.map(String::from), "", added);
+        print_row(&head.map(String::from), "", added, ["verdict", ""]);
     }
     for p in &points {
         let l = |k: usize| p.lambda.get(k).map(|x| crate::spectrum::fmt_f(*x)).unwrap_or_default();
@@ -387,7 +426,14 @@ fn sweep(args: &SweepArgs) -> Result<(), Error> {
             _ => String::new(),
         };
         let added = [p.curvature_class.map(|c| c.name().to_string()).unwrap_or_default(), lp];
-        print_row(&cells, p.error.as_deref().unwrap_or_default(), if csv || grid.curvature { &added } else { &[] });
+        let word = if p.admissible() { "PASSES" } else { "FAILS" };
+        let why = if csv { p.failing.join("; ") } else { p.failing.first().cloned().unwrap_or_default() };
+        print_row(
+            &cells,
+            p.error.as_deref().unwrap_or_default(),
+            if csv || grid.curvature { &added } else { &[] },
+            [word, &why],
+        );
     }
     if !csv && grid.param.is_some() {
         // runs of grid points, not intervals: the true ends lie between a

@@ -26,10 +26,31 @@ pub(super) fn mesh_analysis(cmd: &Command, scheme: Box<dyn Scheme>) -> Result<i3
         Command::Curvature(a) => super::curvature::run(a, scheme).map(|()| 0),
         Command::Spectrum { common: a, certify: false, .. } => {
             let (_, analysis) = run_analysis(a, scheme)?;
+            // at a tagged vertex: the spectrum per block of the reflection
+            // that keeps the sharp rays, where the rules commute with it
+            let reflection = match analysis.discovered.config.tagging {
+                Some(_) => crate::spectrum::reflection::reflection_spectra(
+                    &analysis.discovered.config,
+                    &analysis.matrix.labels,
+                    &analysis.matrix.to_dense_f64(),
+                )?,
+                None => None,
+            };
             if a.json {
-                print_json(&analysis.spectrum)?;
+                #[derive(serde::Serialize)]
+                struct WithReflection<'a> {
+                    #[serde(flatten)]
+                    spectrum: &'a crate::spectrum::Spectrum,
+                    #[serde(skip_serializing_if = "Option::is_none")]
+                    reflection: Option<&'a crate::spectrum::reflection::ReflectionSpectra>,
+                }
+                print_json(&WithReflection { spectrum: &analysis.spectrum, reflection: reflection.as_ref() })?;
             } else {
-                out_text(&spectrum_table(&analysis.spectrum))?;
+                let mut text = spectrum_table(&analysis.spectrum);
+                if let Some(r) = &reflection {
+                    text += &reflection_table(r, analysis.discovered.config.tagging);
+                }
+                out_text(&text)?;
             }
             Ok(0)
         }
@@ -209,6 +230,40 @@ pub(super) fn certificate_table(c: &crate::certify::SpectrumCertificate) -> Stri
             w.component.min_modulus(),
             w.component.max_modulus()
         );
+    }
+    out
+}
+
+/// The spectrum per reflection block (`spectrum::reflection`), after the
+/// whole matrix's table: the leading eigenvalues of each block.
+fn reflection_table(
+    r: &crate::spectrum::reflection::ReflectionSpectra,
+    tagging: Option<crate::neighbourhood::Tagging>,
+) -> String {
+    const SHOWN: usize = 6;
+    let mut out = format!(
+        "\nreflection r -> {} - r (keeps the sharp rays{}): S = even ({}) + odd ({}) blocks, floating point\n",
+        r.axis,
+        tagging.map(|t| format!(" of the {} vertex", t.name())).unwrap_or_default(),
+        r.even_size,
+        r.odd_size
+    );
+    for (name, values) in [("even", &r.even), ("odd", &r.odd)] {
+        let shown: Vec<String> = values
+            .iter()
+            .take(SHOWN)
+            .map(|v| {
+                let z = crate::spectrum::fmt_f(v.re);
+                let z = if v.im.abs() > 1e-12 { format!("{z}{:+.6}i", v.im) } else { z };
+                match (v.algebraic_multiplicity, v.geometric_multiplicity) {
+                    (1, _) => z,
+                    (m, g) if m == g => format!("{z} (x{m})"),
+                    (m, g) => format!("{z} (x{m}, defective: geo {g})"),
+                }
+            })
+            .collect();
+        let more = if values.len() > SHOWN { ", ..." } else { "" };
+        out += &format!("  {name:<4}: {}{more}\n", shown.join(", "));
     }
     out
 }

@@ -9,6 +9,7 @@ pub mod driver;
 pub mod eigen;
 pub mod eigenvalue;
 pub mod exact;
+pub mod reflection;
 pub mod spectrum_result;
 pub mod stencils;
 pub mod strip;

@@ -18,6 +18,10 @@ pub struct Verdict {
     /// scheme to converge at the extraordinary point
     pub convergent: bool,
     pub reasons: Vec<String>,
+    /// the reasons that fail the criterion (a subset of `reasons`, in the
+    /// same order; empty when it passes): what a sweep prints as the
+    /// failing condition
+    pub failures: Vec<String>,
     /// the subdominant eigenvalue λ1 (when λ0 = 1 is found)
     pub subdominant: Option<f64>,
     /// Fourier blocks holding the subdominant pair
@@ -28,17 +32,39 @@ pub struct Verdict {
     pub lambda3_over_lambda1_squared: Option<f64>,
 }
 
+/// The reasons of a verdict as they are found, each marked as passing or
+/// failing (the failing ones are also [`Verdict::failures`]).
+#[derive(Default)]
+struct Reasons {
+    all: Vec<String>,
+    failed: Vec<String>,
+}
+
+impl Reasons {
+    fn push(&mut self, why: String) {
+        self.all.push(why);
+    }
+    fn fail(&mut self, why: String) {
+        self.failed.push(why.clone());
+        self.all.push(why);
+    }
+    fn into_verdict(self, v: &mut Verdict) {
+        v.reasons = self.all;
+        v.failures = self.failed;
+    }
+}
+
 /// λ0 = 1 and simple (the first eigenvalue, by modulus), with the reason.
-fn dominant_one(eigs: &[Eigenvalue], reasons: &mut Vec<String>) -> bool {
+fn dominant_one(eigs: &[Eigenvalue], reasons: &mut Reasons) -> bool {
     let Some(l0) = eigs.first() else {
-        reasons.push("empty spectrum".into());
+        reasons.fail("empty spectrum".into());
         return false;
     };
     if (l0.re - 1.0).abs() > TOL || l0.im.abs() > TOL {
-        reasons.push(format!("dominant eigenvalue is {} (modulus {:.6}), not 1", l0.display(), l0.modulus));
+        reasons.fail(format!("dominant eigenvalue is {} (modulus {:.6}), not 1", l0.display(), l0.modulus));
         false
     } else if l0.algebraic_multiplicity != 1 {
-        reasons.push(format!("eigenvalue 1 has multiplicity {}, not 1", l0.algebraic_multiplicity));
+        reasons.fail(format!("eigenvalue 1 has multiplicity {}, not 1", l0.algebraic_multiplicity));
         false
     } else {
         reasons.push("λ0 = 1 is simple".into());
@@ -47,13 +73,14 @@ fn dominant_one(eigs: &[Eigenvalue], reasons: &mut Vec<String>) -> bool {
 }
 
 pub fn reif(eigs: &[Eigenvalue]) -> Verdict {
-    let mut reasons = Vec::new();
+    let mut reasons = Reasons::default();
     let mut ok = true;
     let mut v = Verdict {
         criterion: "reif",
         c1_spectral: false,
         convergent: false,
         reasons: Vec::new(),
+        failures: Vec::new(),
         subdominant: None,
         subdominant_blocks: Vec::new(),
         sub_subdominant: None,
@@ -61,35 +88,36 @@ pub fn reif(eigs: &[Eigenvalue]) -> Verdict {
     };
     if eigs.is_empty() {
         v.reasons.push("empty spectrum".into());
+        v.failures.push("empty spectrum".into());
         return v;
     }
     ok &= dominant_one(eigs, &mut reasons);
     let dominant_one = ok;
     v.convergent = dominant_one && eigs.get(1).is_none_or(|l1| l1.modulus < 1.0 - TOL);
     let Some(l1) = eigs.get(1) else {
-        reasons.push("no subdominant eigenvalue".into());
-        v.reasons = reasons;
+        reasons.fail("no subdominant eigenvalue".into());
+        reasons.into_verdict(&mut v);
         return v;
     };
     v.subdominant = Some(l1.re);
     v.subdominant_blocks = l1.blocks.clone();
     if !l1.is_real() {
         ok = false;
-        reasons.push(format!("subdominant eigenvalue {} is not real", l1.display()));
+        reasons.fail(format!("subdominant eigenvalue {} is not real", l1.display()));
     } else if l1.re <= 0.0 {
         ok = false;
-        reasons.push(format!("subdominant eigenvalue {} is not positive", l1.display()));
+        reasons.fail(format!("subdominant eigenvalue {} is not positive", l1.display()));
     }
     if l1.algebraic_multiplicity != 2 {
         ok = false;
-        reasons.push(format!(
+        reasons.fail(format!(
             "subdominant eigenvalue {} has algebraic multiplicity {}, not 2",
             l1.display(),
             l1.algebraic_multiplicity
         ));
     } else if l1.geometric_multiplicity != 2 {
         ok = false;
-        reasons.push(format!(
+        reasons.fail(format!(
             "subdominant eigenvalue {} is defective (geometric multiplicity {})",
             l1.display(),
             l1.geometric_multiplicity
@@ -105,13 +133,13 @@ pub fn reif(eigs: &[Eigenvalue]) -> Verdict {
         }
         if l3.modulus >= l1.modulus * (1.0 - TOL) {
             ok = false;
-            reasons.push(format!("|λ3| = {:.12} is not below λ1 = {:.12}", l3.modulus, l1.modulus));
+            reasons.fail(format!("|λ3| = {:.12} is not below λ1 = {:.12}", l3.modulus, l1.modulus));
         } else {
             reasons.push(format!("|λ3| = {} < λ1", fmt_f(l3.modulus)));
         }
     }
     v.c1_spectral = ok;
-    v.reasons = reasons;
+    reasons.into_verdict(&mut v);
     v
 }
 
@@ -130,12 +158,12 @@ pub fn sector(eigs: &[Eigenvalue]) -> Verdict {
     v.criterion = "sector";
     v.subdominant_blocks.clear();
     v.lambda3_over_lambda1_squared = None;
-    let mut reasons = Vec::new();
+    let mut reasons = Reasons::default();
     let mut ok = dominant_one(eigs, &mut reasons);
     let Some(l1) = eigs.get(1) else {
-        reasons.push("no subdominant eigenvalue".into());
+        reasons.fail("no subdominant eigenvalue".into());
         v.c1_spectral = false;
-        v.reasons = reasons;
+        reasons.into_verdict(&mut v);
         return v;
     };
     // the subdominant pair: λ1 twice, or λ1 > λ2 once each
@@ -144,23 +172,23 @@ pub fn sector(eigs: &[Eigenvalue]) -> Verdict {
         1 => (eigs.get(2).into_iter().chain([l1]).collect(), eigs.get(3)),
         m => {
             ok = false;
-            reasons.push(format!("subdominant eigenvalue {} has algebraic multiplicity {m}, not 1 or 2", l1.display()));
+            reasons.fail(format!("subdominant eigenvalue {} has algebraic multiplicity {m}, not 1 or 2", l1.display()));
             (vec![l1], None)
         }
     };
     for e in &pair {
         if !e.is_real() || e.re <= 0.0 {
             ok = false;
-            reasons.push(format!("subdominant eigenvalue {} is not real and positive", e.display()));
+            reasons.fail(format!("subdominant eigenvalue {} is not real and positive", e.display()));
         } else if e.geometric_multiplicity != e.algebraic_multiplicity {
             ok = false;
-            reasons.push(format!("subdominant eigenvalue {} is defective", e.display()));
+            reasons.fail(format!("subdominant eigenvalue {} is defective", e.display()));
         }
     }
     let l2 = pair.iter().map(|e| e.modulus).fold(f64::INFINITY, f64::min);
     if l1.algebraic_multiplicity == 1 && pair.len() == 2 && pair[0].algebraic_multiplicity != 1 {
         ok = false;
-        reasons.push(format!(
+        reasons.fail(format!(
             "λ2 = {} has multiplicity {}: no single second subdominant eigenvalue",
             pair[0].display(),
             pair[0].algebraic_multiplicity
@@ -176,13 +204,13 @@ pub fn sector(eigs: &[Eigenvalue]) -> Verdict {
     match next {
         Some(e) if e.modulus >= l2 * (1.0 - TOL) => {
             ok = false;
-            reasons.push(format!("|λ3| = {:.12} is not below λ2 = {:.12}", e.modulus, l2));
+            reasons.fail(format!("|λ3| = {:.12} is not below λ2 = {:.12}", e.modulus, l2));
         }
         Some(e) => reasons.push(format!("|λ3| = {} < λ2", fmt_f(e.modulus))),
         None => {}
     }
     reasons.push("not decided here: the characteristic map's regularity and injectivity on the sectors".into());
     v.c1_spectral = ok;
-    v.reasons = reasons;
+    reasons.into_verdict(&mut v);
     v
 }

@@ -4,6 +4,10 @@
 //! ordinary `spectrum::analyse`), optionally the curvature class and L_p
 //! limit of the second-order analysis (`Grid::curvature`, from the same
 //! analysis), and the admissible intervals of the swept parameter per valence.
+//! A grid may sit at a tagged vertex (`Grid::tagging`: boundary, corner,
+//! crease, dart; issue 26): its valences are then the sectors of that
+//! configuration and its verdict the sector criterion (Zorin 2000), exactly
+//! as `subdlab spectrum --tag` decides it.
 
 pub mod exact;
 
@@ -12,7 +16,7 @@ use serde::Serialize;
 use crate::charmap::{check_map, CharMapOptions};
 use crate::curvature::{curvature_of_analysis, CurvatureClass, CurvatureOptions};
 use crate::error::Error;
-use crate::neighbourhood::{Configuration, NeighbourhoodKind};
+use crate::neighbourhood::{Configuration, NeighbourhoodKind, Tagging};
 use crate::schemes;
 use crate::spectrum::{analyse, Options};
 
@@ -38,6 +42,9 @@ pub struct Grid {
     /// about as much as a `subdlab curvature --no-exact` run per point, far
     /// more than the spectrum alone)
     pub curvature: bool,
+    /// a tagged vertex instead of an interior one (`--tag`): the valences
+    /// count the sectors of that configuration (an open fan's from 1)
+    pub tagging: Option<Tagging>,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -60,6 +67,11 @@ pub struct Point {
     /// principal curvatures are in L_p for p < lp_limit (unbounded class
     /// with |μ| > λ²); null: every finite p, or not computed
     pub lp_limit: Option<f64>,
+    /// the conditions that fail, in the order they were checked: the
+    /// spectral verdict's failing reasons, then the characteristic map's
+    /// (when checked), or why the point could not be analysed; empty when
+    /// the point passes every computed test
+    pub failing: Vec<String>,
 }
 
 impl Grid {
@@ -76,6 +88,20 @@ impl Grid {
         params: &[(String, String)],
         charmap: bool,
     ) -> Result<Grid, Error> {
+        Grid::parse_at(scheme, valences, faces, params, charmap, None)
+    }
+
+    /// [`Grid::parse`] at a tagged vertex (`tagging`; None: interior): the
+    /// valence range then counts that configuration's sectors, each checked
+    /// as `--tag` checks one (an open fan from 1, a crease ray inside the fan).
+    pub fn parse_at(
+        scheme: &str,
+        valences: &str,
+        faces: Option<&str>,
+        params: &[(String, String)],
+        charmap: bool,
+        tagging: Option<Tagging>,
+    ) -> Result<Grid, Error> {
         let mut param = None;
         let mut fixed = Vec::new();
         for (k, v) in params {
@@ -88,7 +114,10 @@ impl Grid {
                 fixed.push((k.clone(), v.clone()));
             }
         }
-        let valences = parse_valences(valences)?;
+        let valences = match tagging {
+            None => parse_valences(valences)?,
+            Some(t) => parse_sectors(valences, t)?,
+        };
         if let Some(f) = faces {
             if valences != [f.chars().count()] {
                 return Err(Error::Input(format!(
@@ -108,6 +137,7 @@ impl Grid {
             charmap_options,
             faces,
             curvature: false,
+            tagging,
         };
         let mut first = grid.fixed.clone();
         if let Some((name, values)) = &grid.param {
@@ -122,11 +152,13 @@ impl Grid {
         Ok(grid)
     }
 
-    /// The configuration of a point at valence n: regular, or the face sequence.
+    /// The configuration of a point at valence n: regular, or the face
+    /// sequence, at an interior or a tagged vertex.
     pub fn configuration(&self, scheme: &dyn schemes::Scheme, n: usize) -> Result<Configuration, Error> {
-        match &self.faces {
-            Some(f) => Configuration::with_faces(scheme, n, f),
-            None => Configuration::regular(scheme, n),
+        match (&self.faces, self.tagging) {
+            (faces, Some(t)) => Configuration::tagged(scheme, n, faces.as_deref(), t),
+            (Some(f), None) => Configuration::with_faces(scheme, n, f),
+            (None, None) => Configuration::regular(scheme, n),
         }
     }
 
@@ -210,6 +242,29 @@ pub fn parse_range(s: &str) -> Result<Vec<String>, Error> {
 
 /// `"3..100"` → 3, 4, ..., 100.
 pub fn parse_valences(s: &str) -> Result<Vec<usize>, Error> {
+    let (a, b) = valence_bounds(s)?;
+    crate::neighbourhood::configuration::check_valence(a)?;
+    crate::neighbourhood::configuration::check_valence(b)?;
+    check_work(s, a, b)?;
+    Ok((a..=b).collect())
+}
+
+/// `"1..8"` → 1, 2, ..., 8: the sector counts of a tagged configuration,
+/// each as `--tag` accepts it (`configuration::check_tagged`: an open fan
+/// has at least 1 sector, a closed one 3, a crease's second ray K < n).
+pub fn parse_sectors(s: &str, tagging: Tagging) -> Result<Vec<usize>, Error> {
+    let (a, b) = valence_bounds(s)?;
+    // the bounds first: a huge range is refused before it is walked
+    crate::neighbourhood::configuration::check_tagged(b, tagging)?;
+    check_work(s, a, b)?;
+    for n in a..=b {
+        crate::neighbourhood::configuration::check_tagged(n, tagging)?;
+    }
+    Ok((a..=b).collect())
+}
+
+/// The two ends of `A..B`, A <= B.
+fn valence_bounds(s: &str) -> Result<(usize, usize), Error> {
     let (a, b) =
         s.split_once("..").ok_or_else(|| Error::Input(format!("valence range '{s}' is not of the form A..B")))?;
     let (a, b): (usize, usize) = (
@@ -219,8 +274,11 @@ pub fn parse_valences(s: &str) -> Result<Vec<usize>, Error> {
     if a > b {
         return Err(Error::Input(format!("bad valence range '{s}'")));
     }
-    crate::neighbourhood::configuration::check_valence(a)?;
-    crate::neighbourhood::configuration::check_valence(b)?;
+    Ok((a, b))
+}
+
+/// Refuses a range whose points would cost more than [`MAX_VALENCE_SUM`].
+fn check_work(s: &str, a: usize, b: usize) -> Result<(), Error> {
     // a point costs about linearly in n, so a sweep about the sum of its
     // valences: refused up front past that of 3..1000 (half a minute on
     // one core), not after minutes of work
@@ -231,7 +289,7 @@ pub fn parse_valences(s: &str) -> Result<Vec<usize>, Error> {
              3..1000; a point costs about linearly in n): split the range, or use `spectrum` at single valences"
         )));
     }
-    Ok((a..=b).collect())
+    Ok(())
 }
 
 /// The largest sum of the valences of one sweep: that of 3..1000.
@@ -255,10 +313,15 @@ pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
             .flat_map(|e| std::iter::repeat_n(e.modulus, e.algebraic_multiplicity))
             .take(4)
             .collect();
+        let mut failing = s.verdict.failures.clone();
         let charmap = if grid.charmap && s.verdict.c1_spectral {
             // the same analysis `subdlab charmap` starts from (analysis neighbourhood, no exact stage)
             let m = check_map(scheme.as_ref(), &analysis, &grid.charmap_options)?;
-            Some(m.regular && m.injective)
+            let ok = m.regular && m.injective;
+            if !ok {
+                failing.push(format!("characteristic map: {}", map_failure(&m)));
+            }
+            Some(ok)
         } else if grid.charmap {
             Some(false)
         } else {
@@ -283,6 +346,7 @@ pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
             error: None,
             curvature_class,
             lp_limit,
+            failing,
         })
     };
     run().unwrap_or_else(|e| Point {
@@ -295,7 +359,19 @@ pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
         error: Some(e.to_string()),
         curvature_class: None,
         lp_limit: None,
+        failing: vec![e.to_string()],
     })
+}
+
+/// Why a characteristic map failed, in one line: no map at all (its
+/// explanation), or which of regularity and injectivity failed.
+fn map_failure(m: &crate::charmap::CharMap) -> String {
+    match (m.ring.is_some(), m.regular, m.injective) {
+        (false, _, _) => m.explanation.clone(),
+        (true, false, false) => "neither regular nor injective".into(),
+        (true, false, true) => "not regular".into(),
+        _ => "not injective".into(),
+    }
 }
 
 /// Every point of the grid, in order, on all available cores.
