@@ -149,10 +149,10 @@ fn list_schemes(files: &[std::path::PathBuf], json: bool) -> Result<(), Error> {
 fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
     use crate::sweep::exact::{run, ExactSweep};
     use crate::sweep::Grid;
-    if args.charmap || args.curvature || args.csv || args.plot.is_some() || args.faces.is_some() {
+    if args.charmap || args.curvature || args.csv || args.plot.is_some() {
         return Err(Error::Input(
             "--exact gives the exact sets of convergence and spectral C¹; it takes none of --charmap, --curvature, \
-             --csv, --plot, --faces"
+             --csv, --plot"
                 .into(),
         ));
     }
@@ -161,7 +161,7 @@ fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
         return Err(Error::Input("--exact needs a swept parameter --param NAME=START:END:STEP".into()));
     };
     // the grid's checks: the scheme, the valences, the range's ends
-    let grid = Grid::parse(&args.scheme, &args.valences, None, &params, false)?;
+    let grid = Grid::parse(&args.scheme, &args.valences, args.faces.as_deref(), &params, false)?;
     let parts: Vec<&str> = range.split(':').collect();
     let exact = |t: &str| {
         crate::numeric::ParamValue::parse(t)?
@@ -180,6 +180,7 @@ fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
         lo,
         hi,
         fixed,
+        faces: args.faces.clone(),
         certify: args.certify,
     };
     let started = std::time::Instant::now();
