@@ -39,8 +39,9 @@ const LAYERS: &[(&str, u32)] = &[
     ("schemes", 12),
     // the shape chart: second-order projections on top of the curvature pipeline
     ("shape_chart", 12),
-    ("claims", 13),
     ("sweep", 13),
+    // claims of kind parameter-range read the exact sweep's sets
+    ("claims", 14),
     ("plot", 14),
     ("report", 15),
     ("cli", 16),

@@ -19,6 +19,7 @@ mod layers;
 mod lin_luo_statements;
 mod negative_controls;
 mod notebooks;
+mod parameter_range_claims;
 mod readme_figures;
 mod registry_corrections;
 mod registry_independent;

@@ -253,3 +253,65 @@ fn exact_sweep_refuses_what_it_cannot_do() {
         assert!(err.contains("not polynomials in w"), "{name}: {err}");
     }
 }
+
+/// 4-3 subdivision's centre weight c at mixed eons (`--faces`): Peters and
+/// Shiue's Lemma 3.5 gives the eon block's eigenvalues 1, 1/2, 1/2, 1/4
+/// (n − 3 times) and 1/2 − α_M = c − 1/2, and the proof of Theorem 3.7 puts
+/// the rest of the spectrum at 1/4, 1/8, ...; so on the scheme's range
+/// [1/4, 3/4] every other modulus is at most 1/4 < λ1 = 1/2 and both sets
+/// are the whole closed range. Checked at both ends with the float spectrum.
+#[test]
+fn four_three_centre_weight_sets_at_mixed_eons_are_the_whole_range() {
+    for faces in ["QTQT", "TTTTT", "QQQ"] {
+        let n = faces.len().to_string();
+        let valences = format!("{n}..{n}");
+        let v = json(&[
+            "sweep",
+            "four-three",
+            "--valences",
+            &valences,
+            "--faces",
+            faces,
+            "--param",
+            "centre_weight=1/4:3/4:1/10",
+            "--exact",
+            "--json",
+        ]);
+        for key in ["convergent", "c1_spectral"] {
+            let set = intervals(&v, faces.len(), key);
+            assert_eq!(set.len(), 1, "{faces} {key}: {set:?}");
+            let i = &set[0];
+            assert_eq!(i["from"]["rational"], "1/4", "{faces} {key}");
+            assert_eq!(i["to"]["rational"], "3/4", "{faces} {key}");
+            assert_eq!((i["from_closed"].as_bool(), i["to_closed"].as_bool()), (Some(true), Some(true)), "{faces}");
+        }
+        for c in ["1/4", "3/4"] {
+            let s = json(&[
+                "spectrum",
+                "four-three",
+                "--valence",
+                &n,
+                "--faces",
+                faces,
+                "--param",
+                &format!("centre_weight={c}"),
+                "--json",
+                "--no-exact",
+            ]);
+            assert_eq!(s["verdict"]["c1_spectral"], true, "{faces} at c = {c}");
+        }
+    }
+    // the sequence fixes the valence
+    let err = fails(&[
+        "sweep",
+        "four-three",
+        "--valences",
+        "3..5",
+        "--faces",
+        "QTQT",
+        "--param",
+        "centre_weight=1/4:3/4:1/10",
+        "--exact",
+    ]);
+    assert!(err.contains("QTQT"), "{err}");
+}

@@ -156,10 +156,10 @@ fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
                 .into(),
         ));
     }
-    if args.charmap || args.curvature || args.csv || args.plot.is_some() || args.faces.is_some() {
+    if args.charmap || args.curvature || args.csv || args.plot.is_some() {
         return Err(Error::Input(
             "--exact gives the exact sets of convergence and spectral C¹; it takes none of --charmap, --curvature, \
-             --csv, --plot, --faces"
+             --csv, --plot"
                 .into(),
         ));
     }
@@ -168,7 +168,7 @@ fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
         return Err(Error::Input("--exact needs a swept parameter --param NAME=START:END:STEP".into()));
     };
     // the grid's checks: the scheme, the valences, the range's ends
-    let grid = Grid::parse(&args.scheme, &args.valences, None, &params, false)?;
+    let grid = Grid::parse(&args.scheme, &args.valences, args.faces.as_deref(), &params, false)?;
     let parts: Vec<&str> = range.split(':').collect();
     let exact = |t: &str| {
         crate::numeric::ParamValue::parse(t)?
@@ -187,6 +187,7 @@ fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
         lo,
         hi,
         fixed,
+        faces: args.faces.clone(),
         certify: args.certify,
     };
     let started = std::time::Instant::now();

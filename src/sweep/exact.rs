@@ -62,6 +62,9 @@ pub struct ExactSweep {
     pub lo: Rational,
     pub hi: Rational,
     pub fixed: Vec<(String, String)>,
+    /// a face sequence around the centre (schemes of mixed meshes, e.g.
+    /// four-three's `QQTQT`); its length is the one valence swept
+    pub faces: Option<String>,
     /// decide the pieces with the interval certificate too (else the
     /// floating-point spectrum alone: the certificate costs seconds per
     /// point at higher valences)
@@ -96,6 +99,12 @@ pub struct ExactInterval {
     /// the endpoints are proved to be where the condition changes (the
     /// candidate set is complete for this interval's pieces)
     pub endpoints_exact: bool,
+    /// the ends as exact real algebraic numbers, for exact comparison
+    /// (claims of kind `parameter-range`)
+    #[serde(skip)]
+    pub from_root: RealRoot,
+    #[serde(skip)]
+    pub to_root: RealRoot,
 }
 
 /// The exact sets at one valence.
@@ -131,6 +140,10 @@ pub struct Decision {
     pub evidence: String,
     /// every eigenvalue real here (None: not checked, at a candidate)
     pub all_real: Option<bool>,
+    /// the rational point decided (None: a rational near an irrational
+    /// candidate, or a candidate decided from its neighbours)
+    #[serde(skip)]
+    pub point: Option<Rational>,
 }
 
 /// A polynomial in x (lowest first) with coefficients polynomials in t.
@@ -168,6 +181,15 @@ fn marker(lo: &Rational, hi: &Rational) -> Rational {
     lo + (hi - lo) * q(500_009, 1_000_003)
 }
 
+/// The configuration swept: the face sequence when one is given, else the
+/// regular configuration of valence n.
+fn configuration(s: &ExactSweep, scheme: &dyn schemes::Scheme, n: usize) -> Result<Configuration, Error> {
+    match &s.faces {
+        Some(f) => Configuration::with_faces(scheme, n, f),
+        None => Configuration::regular(scheme, n),
+    }
+}
+
 fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
     let t0 = marker(&s.lo, &s.hi);
     let scheme = resolve(s, &t0)?;
@@ -177,7 +199,7 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
             s.scheme
         )));
     }
-    let config = Configuration::regular(scheme.as_ref(), n)?;
+    let config = configuration(s, scheme.as_ref(), n)?;
     let opts = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
     let analysis = analyse(scheme.as_ref(), &config, &opts)?;
     let orbits = analysis_orbits(scheme.as_ref(), &analysis);
@@ -366,6 +388,7 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
             c1_spectral: false,
             evidence: "exact (the condition is open in t and fails next to it)".into(),
             all_real: None,
+            point: None,
         };
         if (l.convergent && r.convergent) || (l.c1_spectral && r.c1_spectral) {
             let (t, label) = match &c.rational {
@@ -382,6 +405,7 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
             }
             d.evidence = format!("{}{near}", here.evidence);
             d.at = label;
+            d.point = c.rational.clone();
         }
         at_cand.push(d.clone());
         decisions.push(d);
@@ -428,6 +452,8 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
                 to_closed,
                 evidence,
                 endpoints_exact: exact,
+                from_root: from.clone(),
+                to_root: to.clone(),
             });
             k += 1;
         }
@@ -453,7 +479,13 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
 
 /// The weakest evidence of several: floating point < certified < exact.
 fn weakest<'a>(kinds: impl Iterator<Item = &'a str>) -> String {
-    let mut rank = 3;
+    weakest_of(kinds).unwrap_or_else(|| "exact".to_string())
+}
+
+/// The weakest evidence of several ("floating point" < "certified" <
+/// "exact", read from the start of each text); None when there is none.
+pub fn weakest_of<'a>(kinds: impl Iterator<Item = &'a str>) -> Option<String> {
+    let mut rank = None;
     for k in kinds {
         let r = if k.starts_with("floating") {
             1
@@ -462,21 +494,23 @@ fn weakest<'a>(kinds: impl Iterator<Item = &'a str>) -> String {
         } else {
             3
         };
-        rank = rank.min(r);
+        rank = Some(rank.map_or(r, |x: i32| x.min(r)));
     }
-    match rank {
-        1 => "floating point",
-        2 => "certified",
-        _ => "exact",
-    }
-    .to_string()
+    rank.map(|r| {
+        match r {
+            1 => "floating point",
+            2 => "certified",
+            _ => "exact",
+        }
+        .to_string()
+    })
 }
 
 /// The spectral verdicts at one rational t: the interval certificate where it
 /// decides C¹, else the floating-point spectrum.
 fn decide(s: &ExactSweep, n: usize, t: &Rational) -> Result<Decision, Error> {
     let scheme = resolve(s, t)?;
-    let config = Configuration::regular(scheme.as_ref(), n)?;
+    let config = configuration(s, scheme.as_ref(), n)?;
     let opts = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
     let analysis = analyse(scheme.as_ref(), &config, &opts)?;
     let v = &analysis.spectrum.verdict;
@@ -497,7 +531,15 @@ fn decide(s: &ExactSweep, n: usize, t: &Rational) -> Result<Decision, Error> {
             CertVerdict::NotProved(_) => {}
         }
     }
-    Ok(Decision { at: t.to_string(), kind: "piece", convergent, c1_spectral: c1, evidence, all_real: None })
+    Ok(Decision {
+        at: t.to_string(),
+        kind: "piece",
+        convergent,
+        c1_spectral: c1,
+        evidence,
+        all_real: None,
+        point: Some(t.clone()),
+    })
 }
 
 fn endpoint(r: &RealRoot) -> Endpoint {

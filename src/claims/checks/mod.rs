@@ -24,6 +24,7 @@ pub mod lattice_matrix;
 pub mod limit_stencil;
 pub mod matrix_eigenvalues;
 pub mod nonnegative_spectrum;
+pub mod parameter_range;
 pub mod size;
 pub mod spectral_c1;
 pub mod subdominant;
@@ -103,5 +104,6 @@ check_kinds! {
     "identity" => Identity(identity::Identity),
     "matrix-eigenvalues" => MatrixEigenvalues(matrix_eigenvalues::MatrixEigenvalues),
     "lattice-matrix" => LatticeMatrix(lattice_matrix::LatticeMatrix),
+    "parameter-range" => ParameterRange(parameter_range::ParameterRange),
     "builtin" => Builtin(builtin::Builtin),
 }

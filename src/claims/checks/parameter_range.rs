@@ -1,0 +1,576 @@
+//! `parameter-range`: a paper's statement about a range of one scheme
+//! parameter ("C¹ for 1/4 − cos(2π/k)/4 < a_k ≤ 3/4"), decided from the
+//! exact parameter sets of `sweep --exact` (`sweep::exact`): per
+//! configuration, the set of t in a rational window where the scheme
+//! converges or is spectrally C¹, as intervals with exact algebraic ends.
+//!
+//! Two readings, registered separately where both are possible:
+//! - `asserts = "inside"`: every t of the stated range satisfies the
+//!   condition (a sufficient condition: "if t is in R then C¹");
+//! - `asserts = "exactly"`: within the window, the condition holds exactly on
+//!   the stated range (the range is also necessary: the bound is sharp).
+//!
+//! The stated ends are expressions in n (rational, or real elements of a
+//! cyclotomic field such as 1/4 − cos(2π/n)/4). They are compared with the
+//! computed ends exactly: a computed end is a rational or the one root of a
+//! square-free integer polynomial p in an isolating interval; a stated end s
+//! equals it when p(s) = 0 in Q(ζ_N) exactly and an interval enclosure of s
+//! lies inside the isolating interval (which holds exactly one root of p);
+//! otherwise the isolating interval is bisected until it is disjoint from
+//! the enclosure of s (rational s: exactly). The sets themselves are proved
+//! complete by the sweep (`exact: true`), else the claim is INCONCLUSIVE.
+//!
+//! A REFUTED names a rational witness t* where the statement fails (a point
+//! of the range outside the set, or with `exactly` also a point of the set
+//! outside the range) and is confirmed there by a second route: the interval
+//! certificate of the spectrum at t* (`spectrum --certify`), which must prove
+//! (t* in the set) or disprove (t* outside it) spectral C¹; without that
+//! confirmation the claim is INCONCLUSIVE.
+
+use std::cmp::Ordering;
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock};
+
+use serde::Deserialize;
+
+use crate::claims::check_kind::CheckKind;
+use crate::claims::common::configurations::over_independent_valences;
+use crate::claims::common::spectra::Cache;
+use crate::claims::common::values::{env_for, subject_params};
+use crate::claims::subject::Subject;
+use crate::claims::verdict::Finding;
+use crate::error::Error;
+use crate::numeric::expr::{Env, Expr};
+use crate::numeric::sturm::RealRoot;
+use crate::numeric::{Cyclotomic, Interval, ParamValue, Rational, Weight};
+use crate::sweep::exact::{ExactInterval, ExactSweep, ValenceSets};
+
+/// A statement about the parameter range where a scheme converges or is
+/// spectrally C¹.
+#[derive(Clone, Debug, Deserialize)]
+pub struct ParameterRange {
+    #[serde(flatten)]
+    pub subject: Subject,
+    /// the swept parameter (its other parameters are the subject's `params`)
+    pub parameter: String,
+    /// the stated range, "(A, B]" with `(`/`[` and `)`/`]` for open/closed
+    /// ends; A and B expressions in n (and the subject's variables)
+    pub range: String,
+    /// the rational window [lo, hi] swept (must hold the range); default the
+    /// range's own ends, which must then be rational
+    #[serde(default)]
+    pub window: Option<[String; 2]>,
+    /// "c1-spectral" (default) or "convergent"
+    #[serde(default = "c1")]
+    pub condition: String,
+    /// "inside" (every t in the range satisfies the condition) or "exactly"
+    /// (within the window, the condition holds exactly on the range)
+    pub asserts: String,
+    /// decide the sweep's pieces with the interval certificate (else in
+    /// floating point)
+    #[serde(default)]
+    pub certified: bool,
+}
+
+fn c1() -> String {
+    "c1-spectral".into()
+}
+
+/// The stated range, parsed: (lower closed, A, B, upper closed).
+fn parse_range(s: &str) -> Result<(bool, String, String, bool), Error> {
+    let t = s.trim();
+    let bad = || Error::Claim(format!("range '{s}' is not of the form (A, B], [A, B), (A, B) or [A, B]"));
+    let lo_closed = match t.chars().next() {
+        Some('[') => true,
+        Some('(') => false,
+        _ => return Err(bad()),
+    };
+    let hi_closed = match t.chars().last() {
+        Some(']') => true,
+        Some(')') => false,
+        _ => return Err(bad()),
+    };
+    let inner = &t[1..t.len() - 1];
+    // the comma at parenthesis depth 0 separates the ends
+    let mut depth = 0i32;
+    let mut cut = None;
+    for (i, c) in inner.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            ',' if depth == 0 => {
+                if cut.is_some() {
+                    return Err(bad());
+                }
+                cut = Some(i);
+            }
+            _ => {}
+        }
+    }
+    let i = cut.ok_or_else(bad)?;
+    let (a, b) = (inner[..i].trim(), inner[i + 1..].trim());
+    if a.is_empty() || b.is_empty() {
+        return Err(bad());
+    }
+    Ok((lo_closed, a.to_string(), b.to_string(), hi_closed))
+}
+
+fn rational_text(s: &str, what: &str) -> Result<Rational, Error> {
+    ParamValue::parse(s)
+        .ok()
+        .and_then(|p| p.exact)
+        .ok_or_else(|| Error::Claim(format!("{what} '{s}' is not an exact rational (use 1/4 or 0.25)")))
+}
+
+/// A stated end as a real number that can be compared exactly.
+#[derive(Clone, Debug)]
+enum Stated {
+    Rational(Rational),
+    /// an irrational real element of a cyclotomic field, with an interval
+    /// enclosure of its value
+    Cyclotomic(Cyclotomic, Interval),
+}
+
+impl Stated {
+    fn of(text: &str, env: &Env) -> Result<Stated, Error> {
+        let e = Expr::parse(text).map_err(|e| Error::Claim(format!("range end '{text}': {e}")))?;
+        if let Some(q) = e.exact(env) {
+            return Ok(Stated::Rational(q));
+        }
+        let c = e.cyclotomic(env).ok_or_else(|| {
+            Error::Claim(format!(
+                "range end '{text}' is neither rational nor a cyclotomic number: it cannot be compared exactly"
+            ))
+        })?;
+        if !c.is_real() {
+            return Err(Error::Claim(format!("range end '{text}' is not real")));
+        }
+        if let Some(q) = c.to_rational() {
+            return Ok(Stated::Rational(q));
+        }
+        let enclosure = e
+            .evaluate::<Interval>(env)
+            .map_err(|e| Error::Claim(format!("range end '{text}': no interval enclosure ({e:?})")))?;
+        Ok(Stated::Cyclotomic(c, enclosure))
+    }
+
+    /// Its decimal value (for messages).
+    fn decimal(&self) -> f64 {
+        match self {
+            Stated::Rational(q) => q.to_f64(),
+            Stated::Cyclotomic(_, i) => i.mid(),
+        }
+    }
+}
+
+/// How an exact comparison was decided: by exact arithmetic alone, or with
+/// an interval enclosure of a stated irrational end (certified).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+enum Route {
+    Exact,
+    Certified,
+}
+
+/// Most bisections of an isolating interval in one comparison (the
+/// enclosure of a stated end is about 1e-16 wide; 200 halvings pass that).
+const MAX_BISECTIONS: usize = 200;
+
+/// The order of the algebraic number `root` against the stated end `s`.
+fn compare(root: &RealRoot, s: &Stated) -> Result<(Ordering, Route), Error> {
+    let mut root = root.clone();
+    let enclose = |q: &Rational| Interval::rational(q);
+    for _ in 0..MAX_BISECTIONS {
+        match (&root.rational, s) {
+            (Some(r), Stated::Rational(q)) => return Ok((r.cmp(q), Route::Exact)),
+            (Some(r), Stated::Cyclotomic(_, e)) => {
+                // s is irrational, so r ≠ s: the enclosures separate them
+                let ir = enclose(r);
+                if ir.hi < e.lo {
+                    return Ok((Ordering::Less, Route::Certified));
+                }
+                if ir.lo > e.hi {
+                    return Ok((Ordering::Greater, Route::Certified));
+                }
+                break;
+            }
+            (None, Stated::Rational(q)) => {
+                // the one root of p in (lo, hi) is q exactly when p(q) = 0
+                if &root.lo < q && q < &root.hi && root.poly.eval(q) == Rational::from_integer(0.into()) {
+                    return Ok((Ordering::Equal, Route::Exact));
+                }
+                if &root.hi < q {
+                    return Ok((Ordering::Less, Route::Exact));
+                }
+                if &root.lo > q {
+                    return Ok((Ordering::Greater, Route::Exact));
+                }
+            }
+            (None, Stated::Cyclotomic(c, e)) => {
+                let (lo, hi) = (enclose(&root.lo), enclose(&root.hi));
+                if poly_at(&root.poly.coeffs, c) && one_root_around(&root, e) {
+                    // s is a root of p, and an interval holding both s and
+                    // e holds one root of p only
+                    return Ok((Ordering::Equal, Route::Certified));
+                }
+                if hi.hi < e.lo {
+                    return Ok((Ordering::Less, Route::Certified));
+                }
+                if lo.lo > e.hi {
+                    return Ok((Ordering::Greater, Route::Certified));
+                }
+            }
+        }
+        root.bisect();
+    }
+    Err(Error::Undecided(format!(
+        "a computed end ≈ {:.17} and a stated end ≈ {:.17} are not separated by the enclosures and not proved equal",
+        root.to_f64(),
+        s.decimal()
+    )))
+}
+
+/// Whether the hull of e's isolating interval and the enclosure `enc` of a
+/// stated end holds exactly one root of e's polynomial (Sturm count over
+/// rational ends that are not roots themselves).
+fn one_root_around(root: &RealRoot, enc: &Interval) -> bool {
+    let (Some(a), Some(b)) = (Rational::from_float(enc.lo), Rational::from_float(enc.hi)) else { return false };
+    let l = if a < root.lo { a } else { root.lo.clone() };
+    let h = if b > root.hi { b } else { root.hi.clone() };
+    let zero = Rational::from_integer(0.into());
+    if root.poly.eval(&l) == zero || root.poly.eval(&h) == zero {
+        return false;
+    }
+    let chain = crate::numeric::sturm::sturm_chain(&root.poly);
+    crate::numeric::sturm::count_roots(&chain, &l, &h) == 1
+}
+
+/// p(c) = 0 exactly, p with rational coefficients (lowest first).
+fn poly_at(p: &[Rational], c: &Cyclotomic) -> bool {
+    let v = p.iter().rev().fold(Cyclotomic::zero(), |acc, a| acc * c.clone() + Cyclotomic::from_rational(a));
+    Weight::is_zero(&v)
+}
+
+/// The exact sets of one configuration, computed once per process (two
+/// readings of one statement share them).
+fn exact_sets(sweep: &ExactSweep, n: usize) -> Result<Arc<ValenceSets>, Error> {
+    static MEMO: OnceLock<Mutex<HashMap<String, Arc<ValenceSets>>>> = OnceLock::new();
+    let key = format!(
+        "{}|{:?}|{:?}|{}|{}|{}|{}|{n}",
+        sweep.scheme, sweep.fixed, sweep.faces, sweep.param, sweep.lo, sweep.hi, sweep.certify
+    );
+    let memo = MEMO.get_or_init(Default::default);
+    if let Some(v) = memo.lock().map_err(|_| Error::Message("memo poisoned".into()))?.get(&key) {
+        return Ok(v.clone());
+    }
+    let one = ExactSweep { valences: vec![n], ..sweep.clone() };
+    let sets = crate::sweep::exact::run(&one)?.pop().ok_or_else(|| Error::Message("no valence swept".into()))?;
+    let sets = Arc::new(sets);
+    memo.lock().map_err(|_| Error::Message("memo poisoned".into()))?.insert(key, sets.clone());
+    Ok(sets)
+}
+
+/// An interval as text: "(the root of 64 t^2 - 40 t + 5 in (…), 1] ≈ (0.1727…, 1]".
+fn show(i: &ExactInterval) -> String {
+    let (l, r) = (if i.from_closed { "[" } else { "(" }, if i.to_closed { "]" } else { ")" });
+    let short = |e: &crate::sweep::exact::Endpoint| match &e.rational {
+        Some(q) => q.clone(),
+        None => format!("the root of {} near {:.12}", poly_only(&e.text), e.decimal),
+    };
+    format!("{l}{}, {}{r}", short(&i.from), short(&i.to))
+}
+
+fn poly_only(text: &str) -> String {
+    text.strip_prefix("the root of ").and_then(|t| t.split(" in (").next()).unwrap_or(text).to_string()
+}
+
+/// Where a point lies against the stated range.
+fn in_range(t: &Rational, a: &Stated, lo_closed: bool, b: &Stated, hi_closed: bool) -> Result<bool, Error> {
+    let r = RealRoot::exact(t.clone());
+    let (ca, _) = compare(&r, a)?;
+    let (cb, _) = compare(&r, b)?;
+    let above = ca == Ordering::Greater || (ca == Ordering::Equal && lo_closed);
+    let below = cb == Ordering::Less || (cb == Ordering::Equal && hi_closed);
+    Ok(above && below)
+}
+
+impl ParameterRange {
+    fn sweep(&self, subject: &Subject, n: usize) -> Result<ExactSweep, Error> {
+        let (lo, hi) = self.window_ends()?;
+        let fixed = subject_params(subject, n)?;
+        Ok(ExactSweep {
+            scheme: subject.scheme.clone(),
+            valences: vec![n],
+            param: self.parameter.clone(),
+            lo,
+            hi,
+            fixed,
+            faces: subject.faces_for(n).map(str::to_string),
+            certify: self.certified,
+        })
+    }
+
+    fn window_ends(&self) -> Result<(Rational, Rational), Error> {
+        match &self.window {
+            Some([a, b]) => Ok((rational_text(a, "window end")?, rational_text(b, "window end")?)),
+            None => {
+                let (_, a, b, _) = parse_range(&self.range)?;
+                Ok((rational_text(&a, "range end (no window given)")?, rational_text(&b, "range end (no window given)")?))
+            }
+        }
+    }
+
+    /// The comparison at one configuration: (statement holds, stated, computed).
+    fn at(&self, subject: &Subject, n: usize, evidence: &Mutex<Vec<String>>) -> Result<(bool, String, String), Error> {
+        let (lo_closed, a_text, b_text, hi_closed) = parse_range(&self.range)?;
+        let env = env_for(subject, n)?;
+        let (a, b) = (Stated::of(&a_text, &env)?, Stated::of(&b_text, &env)?);
+        let sweep = self.sweep(subject, n)?;
+        // the range must lie in the window (and not be empty)
+        let (wlo, whi) = (RealRoot::exact(sweep.lo.clone()), RealRoot::exact(sweep.hi.clone()));
+        if compare(&wlo, &a)?.0 == Ordering::Greater || compare(&whi, &b)?.0 == Ordering::Less {
+            return Err(Error::Claim(format!(
+                "the stated range {} reaches outside the window [{}, {}]",
+                self.range, sweep.lo, sweep.hi
+            )));
+        }
+        let sets = exact_sets(&sweep, n)?;
+        if !sets.exact {
+            return Err(Error::Undecided(format!(
+                "n = {n}: the exact sets are not proved complete ({})",
+                sets.not_exact_because.join("; ")
+            )));
+        }
+        let list = match self.condition.as_str() {
+            "convergent" => &sets.convergent,
+            _ => &sets.c1_spectral,
+        };
+        let mut routes = vec![Route::Exact];
+        let mut cmp = |root: &RealRoot, s: &Stated| -> Result<Ordering, Error> {
+            let (o, r) = compare(root, s)?;
+            routes.push(r);
+            Ok(o)
+        };
+        // does interval i hold the whole range?
+        let mut holds_range = |i: &ExactInterval| -> Result<bool, Error> {
+            let from = cmp(&i.from_root, &a)?;
+            let to = cmp(&i.to_root, &b)?;
+            let from_ok = from == Ordering::Less || (from == Ordering::Equal && (i.from_closed || !lo_closed));
+            let to_ok = to == Ordering::Greater || (to == Ordering::Equal && (i.to_closed || !hi_closed));
+            Ok(from_ok && to_ok)
+        };
+        let mut inside = false;
+        for i in list.iter() {
+            if holds_range(i)? {
+                inside = true;
+            }
+        }
+        let holds = match self.asserts.as_str() {
+            "inside" => inside,
+            _ => {
+                // exactly: one interval, with the range's ends and closedness
+                match &list[..] {
+                    [i] => {
+                        let from = cmp(&i.from_root, &a)?;
+                        let to = cmp(&i.to_root, &b)?;
+                        from == Ordering::Equal
+                            && to == Ordering::Equal
+                            && i.from_closed == lo_closed
+                            && i.to_closed == hi_closed
+                    }
+                    _ => false,
+                }
+            }
+        };
+        let what = if self.condition == "convergent" { "convergent" } else { "spectrally C¹" };
+        let set_text = if list.is_empty() {
+            "nowhere in the window".to_string()
+        } else {
+            list.iter().map(show).collect::<Vec<_>>().join(" ∪ ")
+        };
+        let piece_evidence = crate::sweep::exact::weakest_of(list.iter().map(|i| i.evidence.as_str()))
+            .unwrap_or_else(|| {
+                if self.certified {
+                    "certified".into()
+                } else {
+                    "floating point".into()
+                }
+            });
+        let comparison = if routes.contains(&Route::Certified) {
+            "ends compared exactly (an irrational stated end located by its interval enclosure)"
+        } else {
+            "ends compared exactly"
+        };
+        let mut computed = format!(
+            "{what} for {} in {set_text} within [{}, {}] (ends exact; pieces decided: {piece_evidence}; {comparison})",
+            self.parameter, sweep.lo, sweep.hi
+        );
+        if !holds {
+            // the second route: a rational witness where the statement fails,
+            // decided by the interval certificate
+            let witness = self.witness(&sets, &a, lo_closed, &b, hi_closed)?;
+            let Some((t, should_pass)) = witness else {
+                return Err(Error::Undecided(format!(
+                    "n = {n}: the exact sets disagree with the statement ({set_text}) only at irrational points; \
+                     no rational witness to confirm it by a second route"
+                )));
+            };
+            computed.push_str(&format!("; confirmed at {} = {t}: {}", self.parameter, self.confirm(&sweep, n, &t, should_pass)?));
+        }
+        if let Ok(mut e) = evidence.lock() {
+            e.push(piece_evidence);
+        }
+        let stated = format!(
+            "{} for {} in {}{}, {}{}{}",
+            if self.asserts == "inside" { format!("{what} for every") } else { format!("{what} exactly") },
+            self.parameter,
+            if lo_closed { "[" } else { "(" },
+            a_text,
+            b_text,
+            if hi_closed { "]" } else { ")" },
+            if self.asserts == "exactly" { format!(" within [{}, {}]", sweep.lo, sweep.hi) } else { String::new() }
+        )
+        .replacen(&format!("{what} for every for"), &format!("{what} for every"), 1)
+        .replacen(&format!("{what} exactly for"), &format!("{what} exactly for"), 1);
+        Ok((holds, stated, computed))
+    }
+
+    /// A rational point where the statement fails: in the range but outside
+    /// the set (should_pass = false), or, with `exactly`, in the set but
+    /// outside the range (should_pass = true). From the sweep's decided points.
+    fn witness(
+        &self,
+        sets: &ValenceSets,
+        a: &Stated,
+        lo_closed: bool,
+        b: &Stated,
+        hi_closed: bool,
+    ) -> Result<Option<(Rational, bool)>, Error> {
+        for d in &sets.decisions {
+            let Some(t) = &d.point else { continue };
+            let passes = if self.condition == "convergent" { d.convergent } else { d.c1_spectral };
+            let inside = in_range(t, a, lo_closed, b, hi_closed)?;
+            if inside && !passes {
+                return Ok(Some((t.clone(), false)));
+            }
+            if self.asserts == "exactly" && !inside && passes {
+                return Ok(Some((t.clone(), true)));
+            }
+        }
+        Ok(None)
+    }
+
+    /// The interval certificate at t: it must prove (should_pass) or
+    /// disprove spectral C¹ there.
+    fn confirm(&self, sweep: &ExactSweep, n: usize, t: &Rational, should_pass: bool) -> Result<String, Error> {
+        let mut params = sweep.fixed.clone();
+        params.push((sweep.param.clone(), t.to_string()));
+        let scheme = crate::schemes::resolve(&sweep.scheme, &params)?;
+        let config = match &sweep.faces {
+            Some(f) => crate::neighbourhood::Configuration::with_faces(scheme.as_ref(), n, f)?,
+            None => crate::neighbourhood::Configuration::regular(scheme.as_ref(), n)?,
+        };
+        let options = crate::spectrum::Options {
+            neighbourhood: crate::neighbourhood::NeighbourhoodKind::Analysis,
+            method: None,
+            exact: false,
+        };
+        let analysis = crate::spectrum::analyse(scheme.as_ref(), &config, &options)?;
+        let c = crate::certify::certify_analysis(scheme.as_ref(), &analysis)?;
+        use crate::certify::Verdict as V;
+        let confirmed = match (&c.verdict, should_pass, self.condition.as_str()) {
+            (V::Proved, true, _) if !c.conditional => true,
+            // spectral C¹ disproved at a point of the range: the C¹ reading fails
+            (V::Disproved(_), false, "c1-spectral") if !c.conditional => true,
+            _ => false,
+        };
+        if !confirmed {
+            return Err(Error::Undecided(format!(
+                "n = {n}: the exact sets disagree with the statement at {} = {t}, but the interval certificate there \
+                 gives {} (a second route must confirm a refutation)",
+                sweep.param,
+                c.verdict.display()
+            )));
+        }
+        Ok(format!(
+            "the interval certificate {} spectral C¹ there (second route)",
+            if should_pass { "proves" } else { "disproves" }
+        ))
+    }
+}
+
+impl CheckKind for ParameterRange {
+    const KEYS: &'static [&'static str] = &["parameter", "range", "window", "condition", "asserts", "certified"];
+
+    fn validate(&self) -> Result<(), Error> {
+        parse_range(&self.range)?;
+        if !matches!(self.condition.as_str(), "c1-spectral" | "convergent") {
+            return Err(Error::Claim(format!("condition '{}': use c1-spectral or convergent", self.condition)));
+        }
+        if !matches!(self.asserts.as_str(), "inside" | "exactly") {
+            return Err(Error::Claim(format!(
+                "asserts '{}': use inside (every t of the range) or exactly (the range is the whole set in the window)",
+                self.asserts
+            )));
+        }
+        if self.parameter.trim().is_empty() {
+            return Err(Error::Claim("parameter is empty: the claim asserts nothing".into()));
+        }
+        if self.subject.params.contains_key(&self.parameter) {
+            return Err(Error::Claim(format!(
+                "parameter '{}' is swept; it cannot also be fixed in params",
+                self.parameter
+            )));
+        }
+        let (lo, hi) = self.window_ends()?;
+        if lo >= hi {
+            return Err(Error::Claim(format!("the window [{lo}, {hi}] is empty")));
+        }
+        Ok(())
+    }
+
+    fn evaluate(&self, _cache: &mut Cache) -> Result<Finding, Error> {
+        self.subject.refuse_tag("the exact parameter sweep")?;
+        let evidence = Mutex::new(Vec::new());
+        let mut p = over_independent_valences(&self.subject, |subject, n| self.at(subject, n, &evidence))?;
+        let kinds = evidence.into_inner().unwrap_or_default();
+        let kind = crate::sweep::exact::weakest_of(kinds.iter().map(String::as_str)).unwrap_or_else(|| "exact".into());
+        p.detail = format!(
+            "{}; exact parameter sets (sweep --exact: ends exact algebraic numbers, complete candidate set), pieces \
+             decided in {kind}",
+            p.detail
+        );
+        Ok(p)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ranges_parse_with_commas_inside_functions() {
+        let (l, a, b, h) = parse_range("(1/4 - cos(2 pi / n)/4, 3/4]").unwrap();
+        assert!(!l && h);
+        assert_eq!(a, "1/4 - cos(2 pi / n)/4");
+        assert_eq!(b, "3/4");
+        assert!(parse_range("1/4, 3/4").is_err());
+        assert!(parse_range("[1/4, 1/2, 3/4]").is_err());
+    }
+
+    #[test]
+    fn a_stated_cyclotomic_end_equals_the_root_of_its_polynomial() {
+        // 1/4 − cos(2π/5)/4 is the root of 64 t² − 40 t + 5 near 0.1727:
+        // cos(2π/5) = (√5 − 1)/4, so t = (5 − √5)/16 and (16 t − 5)² = 5,
+        // 256 t² − 160 t + 20 = 0, i.e. 64 t² − 40 t + 5 = 0
+        let q = |a: i64, b: i64| Rational::new(a.into(), b.into());
+        let poly = crate::numeric::exact::Poly { coeffs: vec![q(5, 1), q(-40, 1), q(64, 1)] };
+        let root = RealRoot { poly, lo: q(1, 10), hi: q(1, 5), rational: None };
+        let env = crate::numeric::expr::env_int(&[("n", 5)]);
+        let s = Stated::of("1/4 - cos(2 pi / n)/4", &env).unwrap();
+        assert_eq!(compare(&root, &s).unwrap().0, Ordering::Equal);
+        // the other root (5 + √5)/16 ≈ 0.4523 is a different number
+        let s6 = Stated::of("1/4 - cos(2 pi / n)/4 + 1/1000", &env).unwrap();
+        assert_eq!(compare(&root, &s6).unwrap().0, Ordering::Less);
+        assert_eq!(compare(&root, &Stated::Rational(q(1, 8))).unwrap().0, Ordering::Greater);
+    }
+}
