@@ -43,6 +43,9 @@ const LAYERS: &[(&str, u32)] = &[
     // claims of kind parameter-range read the exact sweep's sets
     ("claims", 14),
     ("plot", 14),
+    // spectral proofs over all valences: per-valence certificates and the
+    // exact sweep's subresultants and Sturm sequences
+    ("every_valence", 14),
     ("report", 15),
     ("cli", 16),
 ];

@@ -220,15 +220,10 @@ pub fn decide(p: &BiPoly, min_n: usize) -> Result<Tail, Error> {
     fences.extend(cands.iter().filter(|c| c.rational.as_ref().map_or(true, |x| x != &minus_one && x != &one)).cloned());
     fences.push(RealRoot::exact(one.clone()));
     let mut pieces = 0;
-    for k in 0..fences.len() - 1 {
-        let (left, right) = fences.split_at_mut(k + 1);
-        let (a, b) = (&mut left[k], &mut right[0]);
-        while a.hi >= b.lo {
-            a.bisect();
-            b.bisect();
-        }
-        let s1 = sturm::simplest_between(&a.hi, &b.lo);
-        let s2 = sturm::simplest_between(&s1, &b.lo);
+    let firsts = sturm::points_between(&mut fences);
+    for (k, s1) in firsts.into_iter().enumerate() {
+        // a second, larger point of the same piece: μ(s1) < μ(s2) there
+        let s2 = sturm::simplest_between(&s1, &fences[k + 1].lo);
         let mut m1 = match top_root_at(p, &s1) {
             Ok(m) => m,
             Err(why) => return Ok(Tail::Fails(why)),

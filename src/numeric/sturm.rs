@@ -313,6 +313,24 @@ fn simplest_between_unit(a: &Rational, b: &Rational) -> Rational {
     Rational::one() / simplest_between(&lo, &hi)
 }
 
+/// The simplest rational in each open gap between consecutive fences
+/// (isolated real numbers in increasing order, pairwise distinct): each
+/// pair's isolating intervals are bisected until they are disjoint, so the
+/// fences come back refined and `fences[k].hi < result[k] < fences[k + 1].lo`.
+pub fn points_between(fences: &mut [RealRoot]) -> Vec<Rational> {
+    let mut points = Vec::with_capacity(fences.len().saturating_sub(1));
+    for k in 0..fences.len().saturating_sub(1) {
+        let (left, right) = fences.split_at_mut(k + 1);
+        let (a, b) = (&mut left[k], &mut right[0]);
+        while a.hi >= b.lo {
+            a.bisect();
+            b.bisect();
+        }
+        points.push(simplest_between(&a.hi, &b.lo));
+    }
+    points
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -341,16 +341,7 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
     let mut fences: Vec<RealRoot> = vec![lo_root];
     fences.extend(merged.iter().cloned());
     fences.push(hi_root);
-    let mut samples = Vec::new();
-    for k in 0..fences.len() - 1 {
-        let (left, right) = fences.split_at_mut(k + 1);
-        let (a, b) = (&mut left[k], &mut right[0]);
-        while a.hi >= b.lo {
-            a.bisect();
-            b.bisect();
-        }
-        samples.push(sturm::simplest_between(&a.hi, &b.lo));
-    }
+    let samples = sturm::points_between(&mut fences);
     trace(|| format!("n = {n}: {} pieces to decide", samples.len()));
     // decide: pieces, range ends, candidates
     let mut decisions = Vec::new();
