@@ -210,6 +210,10 @@ fn cli_exit_codes_and_json() {
         vec!["spectrum", "loop", "--certify", "--valences", "9..4"],
         vec!["spectrum", "loop", "--valences", "3..5"],
         vec!["spectrum", "no-such-scheme", "--certify", "--valences", "3.."],
+        // 100 000 certificates: refused up front (it ran for minutes before)
+        vec!["spectrum", "loop", "--certify", "--valences", "3..100000"],
+        // just past the limit Σ n ≤ Σ_{3..200} n: 3..201
+        vec!["spectrum", "loop", "--certify", "--valences", "3..201"],
     ] {
         let out = subdlab(&args);
         assert_eq!(out.status.code(), Some(2), "{args:?}");

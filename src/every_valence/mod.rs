@@ -125,6 +125,29 @@ fn proved(a: &AtValence) -> bool {
     a.verdict == Verdict::Proved && !a.conditional
 }
 
+/// The largest sum of the valences whose certificates one request makes:
+/// that of 3..200. A certificate costs about linearly in n or more (√3's
+/// two-step rows), and 3..64 — the open range's scan — takes seconds, so
+/// 3..100000 would run for days: refused up front instead.
+pub const MAX_CERTIFIED_VALENCE_SUM: u128 = (3 + 200) * 198 / 2;
+
+/// Refuses per-valence certificates at from..=to past
+/// [`MAX_CERTIFIED_VALENCE_SUM`] (nothing to do when to < from).
+fn check_per_valence_work(from: usize, to: usize) -> Result<(), Error> {
+    if to < from {
+        return Ok(());
+    }
+    let work: u128 = (from as u128 + to as u128) * (to - from + 1) as u128 / 2;
+    if work > MAX_CERTIFIED_VALENCE_SUM {
+        return Err(Error::Input(format!(
+            "certificates at valences {from}..{to} sum to {work} over their valences, above the limit \
+             {MAX_CERTIFIED_VALENCE_SUM} (that of 3..200; a certificate costs at least linearly in n): split the \
+             range, or give an open range A.. (certificates below the parametric proof's N only)"
+        )));
+    }
+    Ok(())
+}
+
 /// Runs the request.
 pub fn run(req: &Request) -> Result<Report, Error> {
     if req.from < 3 {
@@ -134,6 +157,9 @@ pub fn run(req: &Request) -> Result<Report, Error> {
         if to < req.from {
             return Err(Error::Input(format!("--valences {}..{to}: the range is empty", req.from)));
         }
+    }
+    if let Some(to) = req.to {
+        check_per_valence_work(req.from, to)?;
     }
     let scheme = schemes::resolve(&req.scheme, &req.params)?;
     let name = scheme.name().to_string();
@@ -174,7 +200,10 @@ pub fn run(req: &Request) -> Result<Report, Error> {
             });
             report.threshold = threshold;
             match threshold {
-                Some(n) => (n - 1, true),
+                Some(n) => {
+                    check_per_valence_work(req.from, n - 1)?;
+                    (n - 1, true)
+                }
                 None => (SCAN_LIMIT.max(req.from), false),
             }
         }
