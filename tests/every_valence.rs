@@ -197,7 +197,8 @@ fn cli_exit_codes_and_json() {
     assert_eq!(ok.status.code(), Some(0));
     let text = String::from_utf8_lossy(&ok.stdout);
     assert!(text.contains("PROVED") && text.contains("spectral conditions only"), "{text}");
-    let bad = subdlab(&["spectrum", "tests/data/loop-large-valence-defect.toml", "--certify", "--valences", "3..", "--json"]);
+    let bad =
+        subdlab(&["spectrum", "tests/data/loop-large-valence-defect.toml", "--certify", "--valences", "3..", "--json"]);
     assert_eq!(bad.status.code(), Some(1));
     let v: serde_json::Value = serde_json::from_slice(&bad.stdout).unwrap();
     assert_eq!(v["verdict"], "disproved");

@@ -16,8 +16,9 @@
 use subdlab::claims::{evaluate, parse_file, Outcome, Verdict};
 
 fn verdict_of(body: &str) -> Outcome {
-    let text =
-        format!("paper = \"t\"\ntitle = \"t\"\n[[claim]]\nid = \"c\"\nlocation = \"here\"\nstatement = \"s\"\n{body}\n");
+    let text = format!(
+        "paper = \"t\"\ntitle = \"t\"\n[[claim]]\nid = \"c\"\nlocation = \"here\"\nstatement = \"s\"\n{body}\n"
+    );
     let mut o = evaluate(&parse_file("test.toml", &text).unwrap());
     assert_eq!(o.len(), 1);
     o.remove(0)
@@ -62,7 +63,8 @@ fn the_exact_reading_depends_on_the_window_as_derived() {
     // witness confirms the refutation by a second route: not HOLDS, and
     // INCONCLUSIVE with the reason (a witness search inside such gaps is
     // not implemented)
-    let o = nonbox("window = [\"0\", \"3/4\"]\nrange = \"(1/4 - cos(2 pi / k)/4 + 1/1000, 3/4]\"\nasserts = \"exactly\"");
+    let o =
+        nonbox("window = [\"0\", \"3/4\"]\nrange = \"(1/4 - cos(2 pi / k)/4 + 1/1000, 3/4]\"\nasserts = \"exactly\"");
     assert_eq!(o.verdict, Verdict::Inconclusive, "{} / {}", o.computed, o.detail);
     assert!(o.detail.contains("no rational witness"), "{}", o.detail);
 }

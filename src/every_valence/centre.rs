@@ -41,7 +41,8 @@ type W = Cyclotomic;
 use crate::sweep::exact::{all_real, first_subresultant, rational_norm, BiPoly};
 
 use super::laurent::chebyshev;
-use super::tail::{at, compare, negated, real_roots};
+use super::tail::at;
+use crate::numeric::sturm::{compare, negated, real_roots};
 
 /// A Laurent polynomial in n with coefficients in Q[c, π]: (power of n,
 /// power of c, power of π) ↦ coefficient. π appears only inside angles.
@@ -108,7 +109,8 @@ impl InN {
                 return None;
             }
             let nn = Rational::from_integer(n.into());
-            let pow_n = if e >= 0 { num_traits::pow(nn, e as usize) } else { num_traits::pow(nn, (-e) as usize).recip() };
+            let pow_n =
+                if e >= 0 { num_traits::pow(nn, e as usize) } else { num_traits::pow(nn, (-e) as usize).recip() };
             let mut term = Cyclotomic::from_rational(&(q * pow_n));
             for _ in 0..k {
                 term = term * c.clone();
@@ -232,9 +234,8 @@ fn tpoly(p: &[Rational]) -> TPoly {
 /// q(x, t) = det(xI − M + 1 r(t)ᵀ).
 pub fn block0_poly(m: &[Vec<Rational>], r: &[Vec<Rational>]) -> BiPoly {
     let d = m.len();
-    let a: Vec<Vec<TPoly>> = (0..d)
-        .map(|i| (0..d).map(|j| tpoly(&[m[i][j].clone()]) - tpoly(&r[j])).collect())
-        .collect();
+    let a: Vec<Vec<TPoly>> =
+        (0..d).map(|i| (0..d).map(|j| tpoly(&[m[i][j].clone()]) - tpoly(&r[j])).collect()).collect();
     charpoly(&a)
 }
 
@@ -246,7 +247,8 @@ pub fn lambda1_poly(p: &BiPoly, variable: Variable) -> BiPoly {
         Variable::Cosine => p.clone(),
         Variable::InverseValence => {
             let pi_up = Rational::new(355.into(), 113.into());
-            let gamma = tpoly(&[Rational::one(), Rational::zero(), -Rational::from_integer(2.into()) * &pi_up * &pi_up]);
+            let gamma =
+                tpoly(&[Rational::one(), Rational::zero(), -Rational::from_integer(2.into()) * &pi_up * &pi_up]);
             p.iter()
                 .map(|coef| {
                     // Horner in c at γ(h)
@@ -277,7 +279,12 @@ pub fn range(variable: Variable, n: usize) -> (Rational, Rational, Rational) {
 /// one point of the range then decides.
 pub fn decide(qp: &BiPoly, lambda1: &BiPoly, variable: Variable, n_min: usize) -> Result<(usize, String), String> {
     let (lo, hi, unreached) = range(variable, n_min);
-    let dx: BiPoly = qp.iter().enumerate().skip(1).map(|(k, c)| c.clone() * <TPoly as crate::numeric::Weight>::int(k as i64)).collect();
+    let dx: BiPoly = qp
+        .iter()
+        .enumerate()
+        .skip(1)
+        .map(|(k, c)| c.clone() * <TPoly as crate::numeric::Weight>::int(k as i64))
+        .collect();
     let minus: BiPoly =
         lambda1.iter().enumerate().map(|(k, c)| if k % 2 == 1 { -c.clone() } else { c.clone() }).collect();
     let mut cands = Vec::new();

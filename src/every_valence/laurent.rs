@@ -53,9 +53,7 @@ impl LaurentRows {
         self.entries
             .iter()
             .map(|row| {
-                row.iter()
-                    .map(|m| m.iter().fold(Rational::zero(), |s, (t, w)| s + w * power(omega, *t)))
-                    .collect()
+                row.iter().map(|m| m.iter().fold(Rational::zero(), |s, (t, w)| s + w * power(omega, *t))).collect()
             })
             .collect()
     }
@@ -165,7 +163,8 @@ mod tests {
         let p = charpoly_in_c(&rows).unwrap();
         assert_eq!(p.len(), 2);
         assert_eq!(p[1], <TPoly as crate::numeric::Weight>::int(1));
-        let expected = TPoly::from_coeffs(vec![Cyclotomic::from_rational(&q(-1, 4)), Cyclotomic::from_rational(&q(-1, 4))]);
+        let expected =
+            TPoly::from_coeffs(vec![Cyclotomic::from_rational(&q(-1, 4)), Cyclotomic::from_rational(&q(-1, 4))]);
         assert_eq!(p[0], expected);
         // a one-sided entry (ω only) is not real on the circle
         let mut m = BTreeMap::new();

@@ -231,7 +231,10 @@ pub fn run(req: &Request) -> Result<Report, Error> {
         };
         (
             Verdict::Disproved(format!("first failing valence n = {}: {why}", bad.valence)),
-            format!("interval certificate at n = {} (the valences before it proved by their certificates)", bad.valence),
+            format!(
+                "interval certificate at n = {} (the valences before it proved by their certificates)",
+                bad.valence
+            ),
         )
     } else if let Some(open) = first_open {
         (
@@ -370,7 +373,10 @@ fn read_rows(req: &Request, n: usize) -> Result<Read, Missing> {
     }
     let rows = LaurentRows { entries, centre_column };
     if 2 * rows.reach() + 2 > g {
-        return Err(missing(format!("the rows away from the centre reach {} sectors: too far for the probe", rows.reach())));
+        return Err(missing(format!(
+            "the rows away from the centre reach {} sectors: too far for the probe",
+            rows.reach()
+        )));
     }
     let orbit_of = orbits.member.clone();
     Ok(Read { rows, reads, centre: orbits.representative[fixed[0]], free, orbit_of, analysis })
@@ -382,7 +388,8 @@ fn read_rows(req: &Request, n: usize) -> Result<Read, Missing> {
 fn indicator_totals(req: &Request, read: &Read, n: usize, field: (&str, &str)) -> Result<Vec<Rational>, Missing> {
     let scheme = schemes::resolve(&req.scheme, &req.params).map_err(|e| missing(e.to_string()))?;
     let (d, kind) = (&read.analysis.discovered, read.analysis.spectrum.neighbourhood);
-    let (row, _) = probe::watch_indicator(n, field, || assemble_rows::<Cyclotomic>(scheme.as_ref(), d, kind, &[read.centre]));
+    let (row, _) =
+        probe::watch_indicator(n, field, || assemble_rows::<Cyclotomic>(scheme.as_ref(), d, kind, &[read.centre]));
     let row = row.map_err(|_| missing("no exact centre row"))?;
     let mut totals = vec![Rational::from_integer(0.into()); read.free.len()];
     for (col, w) in &row[0] {
@@ -428,7 +435,11 @@ fn parametric(req: &Request) -> Result<ParametricProof, Missing> {
         r0.rows.reach(),
         r0.rows.size()
     );
-    let p = laurent::charpoly_in_c(&r0.rows).map_err(|e| Missing { reason: e.into(), rows: rows_text.clone(), blocks: None })?;
+    let p = laurent::charpoly_in_c(&r0.rows).map_err(|e| Missing {
+        reason: e.into(),
+        rows: rows_text.clone(),
+        blocks: None,
+    })?;
     let facts = match tail::decide(&p, n0) {
         Ok(tail::Tail::Proved(f)) => f,
         Ok(tail::Tail::Fails(why)) => {
@@ -450,7 +461,10 @@ fn parametric(req: &Request) -> Result<ParametricProof, Missing> {
         let c1 = indicator_totals(req, &r1, n1, (f.rule, f.family))?;
         let per_sector: Vec<Rational> = c0.iter().map(|x| x / q(n0 as i64, 1)).collect();
         if c1.iter().map(|x| x / q(n1 as i64, 1)).collect::<Vec<_>>() != per_sector {
-            return Err(fail0(format!("[{}] {}: its slots per sector differ between valences", f.rule, f.family), &facts));
+            return Err(fail0(
+                format!("[{}] {}: its slots per sector differ between valences", f.rule, f.family),
+                &facts,
+            ));
         }
         let n_times_w = w.mul_n();
         for (b, k) in per_sector.iter().enumerate() {

@@ -38,7 +38,7 @@ use serde::Serialize;
 
 use crate::error::Error;
 use crate::numeric::exact::Poly;
-use crate::numeric::sturm::{self, RealRoot};
+use crate::numeric::sturm::{self, compare, negated, real_roots, root_bound, RealRoot};
 use crate::numeric::{Cyclotomic, Rational, TPoly};
 use crate::sweep::exact::{all_real, first_subresultant, rational_norm, BiPoly};
 
@@ -89,50 +89,6 @@ pub fn at(p: &BiPoly, c: &Rational) -> Poly {
     Poly { coeffs }
 }
 
-/// Cauchy's bound: every root of p has modulus < the bound.
-pub fn root_bound(p: &Poly) -> Rational {
-    let d = p.degree();
-    let lead = p.coeffs[d].abs();
-    p.coeffs.iter().map(|x| x.abs() / &lead).fold(Rational::zero(), |a, b| a.max(b)) + Rational::one()
-}
-
-/// The real roots of p, increasing, isolated.
-pub fn real_roots(p: &Poly) -> Vec<RealRoot> {
-    if p.degree() == 0 {
-        return Vec::new();
-    }
-    let b = root_bound(p);
-    sturm::isolate(p, &-b.clone(), &b)
-}
-
-/// a < b (Some(true)), a > b (Some(false)) or a = b (None), exactly.
-pub fn compare(a: &mut RealRoot, b: &mut RealRoot) -> Option<bool> {
-    if sturm::same_root(a, b) {
-        return None;
-    }
-    loop {
-        if a.hi < b.lo {
-            return Some(true);
-        }
-        if b.hi < a.lo {
-            return Some(false);
-        }
-        a.bisect();
-        b.bisect();
-    }
-}
-
-/// −r for a real root r.
-pub fn negated(r: &RealRoot) -> RealRoot {
-    let coeffs = r.poly.coeffs.iter().enumerate().map(|(k, c)| if k % 2 == 1 { -c.clone() } else { c.clone() });
-    RealRoot {
-        poly: sturm::primitive(&Poly { coeffs: coeffs.collect() }),
-        lo: -r.hi.clone(),
-        hi: -r.lo.clone(),
-        rational: r.rational.as_ref().map(|x| -x.clone()),
-    }
-}
-
 /// μ(c) with the checks of an open piece: all roots real, μ simple, every
 /// other root of modulus < μ.
 fn top_root_at(p: &BiPoly, c: &Rational) -> Result<RealRoot, String> {
@@ -164,14 +120,24 @@ fn top_root_at(p: &BiPoly, c: &Rational) -> Result<RealRoot, String> {
 /// The candidates: the real roots in [−1, 1] of the subresultants of
 /// (P, ∂P/∂x), (P(x), P(−x)), (P, P + ∂P/∂c), merged where equal.
 fn candidates(p: &BiPoly) -> Result<Vec<RealRoot>, Error> {
-    let dx: BiPoly = p.iter().enumerate().skip(1).map(|(k, c)| c.clone() * <TPoly as crate::numeric::Weight>::int(k as i64)).collect();
+    let dx: BiPoly = p
+        .iter()
+        .enumerate()
+        .skip(1)
+        .map(|(k, c)| c.clone() * <TPoly as crate::numeric::Weight>::int(k as i64))
+        .collect();
     let minus_x: BiPoly = p.iter().enumerate().map(|(k, c)| if k % 2 == 1 { -c.clone() } else { c.clone() }).collect();
     // P + ∂P/∂c: monic like P (∂P/∂c has degree < d in x), same common roots with P as ∂P/∂c
     let plus_dc: BiPoly = p
         .iter()
         .map(|c| {
-            let d: Vec<Cyclotomic> =
-                c.coeffs().iter().enumerate().skip(1).map(|(k, a)| a.clone() * Cyclotomic::from_rational(&q(k as i64, 1))).collect();
+            let d: Vec<Cyclotomic> = c
+                .coeffs()
+                .iter()
+                .enumerate()
+                .skip(1)
+                .map(|(k, a)| a.clone() * Cyclotomic::from_rational(&q(k as i64, 1)))
+                .collect();
             c.clone() + TPoly::from_coeffs(d)
         })
         .collect();

@@ -331,6 +331,50 @@ pub fn points_between(fences: &mut [RealRoot]) -> Vec<Rational> {
     points
 }
 
+/// Cauchy's bound: every root of p has modulus < the bound.
+pub fn root_bound(p: &Poly) -> Rational {
+    let d = p.degree();
+    let lead = p.coeffs[d].abs();
+    p.coeffs.iter().map(|x| x.abs() / &lead).fold(Rational::zero(), |a, b| a.max(b)) + Rational::one()
+}
+
+/// The real roots of p, increasing, isolated.
+pub fn real_roots(p: &Poly) -> Vec<RealRoot> {
+    if p.degree() == 0 {
+        return Vec::new();
+    }
+    let b = root_bound(p);
+    isolate(p, &-b.clone(), &b)
+}
+
+/// a < b (Some(true)), a > b (Some(false)) or a = b (None), exactly.
+pub fn compare(a: &mut RealRoot, b: &mut RealRoot) -> Option<bool> {
+    if same_root(a, b) {
+        return None;
+    }
+    loop {
+        if a.hi < b.lo {
+            return Some(true);
+        }
+        if b.hi < a.lo {
+            return Some(false);
+        }
+        a.bisect();
+        b.bisect();
+    }
+}
+
+/// −r for a real root r.
+pub fn negated(r: &RealRoot) -> RealRoot {
+    let coeffs = r.poly.coeffs.iter().enumerate().map(|(k, c)| if k % 2 == 1 { -c.clone() } else { c.clone() });
+    RealRoot {
+        poly: primitive(&Poly { coeffs: coeffs.collect() }),
+        lo: -r.hi.clone(),
+        hi: -r.lo.clone(),
+        rational: r.rational.as_ref().map(|x| -x.clone()),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

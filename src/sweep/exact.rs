@@ -834,10 +834,7 @@ pub(crate) fn all_real(polys: &[BiPoly], t: &Rational) -> bool {
         if sq.degree() == 0 {
             return true;
         }
-        // Cauchy's bound on the moduli of the roots
-        let lead = sq.coeffs[sq.degree()].abs();
-        let bound = sq.coeffs.iter().map(|x| x.abs() / &lead).fold(<Rational as Zero>::zero(), |a, b| a.max(b))
-            + <Rational as One>::one();
+        let bound = sturm::root_bound(&sq);
         let chain = sturm::sturm_chain(&sq);
         sturm::count_roots(&chain, &-bound.clone(), &bound) == sq.degree()
     })

@@ -314,7 +314,10 @@ impl ParameterRange {
             Some([a, b]) => Ok((rational_text(a, "window end")?, rational_text(b, "window end")?)),
             None => {
                 let (_, a, b, _) = parse_range(&self.range)?;
-                Ok((rational_text(&a, "range end (no window given)")?, rational_text(&b, "range end (no window given)")?))
+                Ok((
+                    rational_text(&a, "range end (no window given)")?,
+                    rational_text(&b, "range end (no window given)")?,
+                ))
             }
         }
     }
@@ -387,8 +390,8 @@ impl ParameterRange {
         } else {
             list.iter().map(show).collect::<Vec<_>>().join(" ∪ ")
         };
-        let piece_evidence = crate::sweep::exact::weakest_of(list.iter().map(|i| i.evidence.as_str()))
-            .unwrap_or_else(|| {
+        let piece_evidence =
+            crate::sweep::exact::weakest_of(list.iter().map(|i| i.evidence.as_str())).unwrap_or_else(|| {
                 if self.certified {
                     "certified".into()
                 } else {
@@ -414,7 +417,11 @@ impl ParameterRange {
                      no rational witness to confirm it by a second route"
                 )));
             };
-            computed.push_str(&format!("; confirmed at {} = {t}: {}", self.parameter, self.confirm(&sweep, n, &t, should_pass)?));
+            computed.push_str(&format!(
+                "; confirmed at {} = {t}: {}",
+                self.parameter,
+                self.confirm(&sweep, n, &t, should_pass)?
+            ));
         }
         if let Ok(mut e) = evidence.lock() {
             e.push(piece_evidence);

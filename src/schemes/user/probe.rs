@@ -81,7 +81,9 @@ fn watch_with<T>(valence: usize, indicator: Option<(String, String)>, f: impl Fn
         true
     });
     let out = f();
-    let reads = if started { WATCH.with(|w| w.borrow_mut().take()).map(|w| w.reads).unwrap_or_default() } else {
+    let reads = if started {
+        WATCH.with(|w| w.borrow_mut().take()).map(|w| w.reads).unwrap_or_default()
+    } else {
         Reads::default()
     };
     (out, reads)
