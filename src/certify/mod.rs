@@ -41,6 +41,7 @@ pub mod matrix;
 pub mod power;
 pub mod s31;
 pub mod spectrum;
+mod step_rotation;
 
 pub use charmap::{certify_charmap, CharMapCertificate};
 pub use spectrum::{certify_analysis, certify_spectrum, SpectrumCertificate, Verdict};

@@ -618,6 +618,12 @@ fn rotation_premise(
     orbits: &Orbits,
     exact_reps: &ExactRows,
 ) -> Result<(Check, Option<u64>), Error> {
+    // the cheap route first: the refinement steps' stencils turn with the
+    // mesh (exactly), so their composition S does (see `step_rotation`)
+    if let Some(steps_order) = super::step_rotation::rotation_by_steps(scheme, analysis, orbits) {
+        let reps = field_order(None, exact_reps.iter()).unwrap_or(1);
+        return Ok((Check::Exact, Some(super::step_rotation::lcm(reps, steps_order))));
+    }
     let s = &analysis.spectrum;
     let labels = &s.labels;
     let everyone: Vec<usize> = (0..labels.len()).collect();

@@ -368,11 +368,14 @@ pub(crate) struct Rotation {
     rep: Vec<(usize, usize)>,
     /// per representative: the orbit, in turn order (empty for non-representatives)
     orbit: Vec<Vec<usize>>,
+    /// the order of the rotation: n / period, 1 for the identity that stands
+    /// in where the mesh shows no symmetry
+    order: usize,
 }
 
 impl Rotation {
     fn identity(size: usize) -> Rotation {
-        Rotation { rep: (0..size).map(|v| (v, 0)).collect(), orbit: (0..size).map(|v| vec![v]).collect() }
+        Rotation { rep: (0..size).map(|v| (v, 0)).collect(), orbit: (0..size).map(|v| vec![v]).collect(), order: 1 }
     }
 
     /// The rotation of `mesh` by `period` sectors; the identity when it has
@@ -417,7 +420,20 @@ impl Rotation {
                 return Rotation::identity(size);
             }
         }
-        Rotation { rep, orbit }
+        Rotation { rep, orbit, order: g }
+    }
+
+    /// The order of the rotation (1: the identity, no symmetry found).
+    pub(crate) fn order(&self) -> usize {
+        self.order
+    }
+
+    /// The vertex that `v` is turned to by one period; `None` on a rotation
+    /// made without its orbits (`complete` false).
+    pub(crate) fn turned(&self, v: usize) -> Option<usize> {
+        let (r, t) = self.rep[v];
+        let orbit = &self.orbit[r];
+        (!orbit.is_empty()).then(|| orbit[(t + 1) % orbit.len()])
     }
 
     pub(crate) fn rep(&self, v: usize) -> usize {

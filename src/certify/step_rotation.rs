@@ -1,0 +1,287 @@
+//! The rotation premise of the Fourier-block certificate, PS = SP, decided on
+//! the refinement steps that make S instead of on S's composed rows.
+//!
+//! S is one analysis step (one refinement for binary schemes, two for sqrt(3)
+//! schemes) composed from the steps' stencils, restricted to the
+//! neighbourhood. Let ρ_k be the rotation of the mesh after k refinements
+//! (by the configuration's period, read from the lattice charts: the vertex
+//! with coordinates (sector s, x) goes to (s + period, x)), R_k the stencils
+//! of refinement k+1 (rows: its new vertices, columns: the vertices before).
+//! If, on the vertices the composition reaches (the successors of the
+//! neighbourhood and, level by level down, the supports of their stencils;
+//! each set closed under its rotation),
+//!
+//! 1. ρ_0 maps the neighbourhood onto itself as the Fourier orbits say,
+//! 2. the successor of ρ_0 v is ρ_K of the successor of v (K refinements),
+//! 3. every stencil turns with the mesh: R_k[ρ_{k+1} w, ρ_k u] = R_k[w, u],
+//!
+//! then the composed rows turn too, S[ρv, ρu] = S[v, u]: composing maps that
+//! commute with the rotations gives one that commutes, and restricting to a
+//! rotation-invariant set keeps it. Each stencil is a mask of a few weights,
+//! and O(1) of them per vertex of the neighbourhood, where the composed rows
+//! near a valence-n centre hold O(n) weights each (in a cyclotomic field when
+//! the centre's rule holds cos(2π/n), and composed through two refinements
+//! for sqrt(3) schemes): the premise costs what assembling S once costs
+//! instead of growing with n times the field's degree.
+//!
+//! Every comparison is exact (rationals; cyclotomic numbers where a rule's
+//! weight is irrational); the rotations are combinatorial (chart
+//! coordinates). Where anything is out of reach of this route — a rotation
+//! the mesh does not show, a weight that is not exact, two stencils that
+//! differ — it answers nothing and the certificate checks the composed rows
+//! as before: this route can only establish the premise, never refute it
+//! (two stencils that differ might still compose to rows that agree).
+
+use crate::dft::Orbits;
+use crate::mesh::IdMap;
+use crate::neighbourhood::discovery::Rotation;
+use crate::numeric::small::SmallRational;
+use crate::numeric::weight::Weight;
+use crate::numeric::Cyclotomic;
+use crate::sdc::Scheme;
+use crate::spectrum::Analysis;
+use std::collections::BTreeSet;
+
+/// One stencil of a refinement, exactly: in small rationals when every
+/// weight is one, else in a cyclotomic field.
+#[derive(PartialEq)]
+enum ExactStencil {
+    Rational(Vec<(usize, SmallRational)>),
+    Cyclotomic(Vec<(usize, Cyclotomic)>),
+}
+
+impl ExactStencil {
+    fn support(&self) -> Vec<usize> {
+        match self {
+            ExactStencil::Rational(t) => t.iter().map(|e| e.0).collect(),
+            ExactStencil::Cyclotomic(t) => t.iter().map(|e| e.0).collect(),
+        }
+    }
+
+    /// The same weights on the columns moved by `turn`; `None` when a column
+    /// has no image.
+    fn turned(&self, turn: &dyn Fn(usize) -> Option<usize>) -> Option<ExactStencil> {
+        fn moved<W: Clone>(t: &[(usize, W)], turn: &dyn Fn(usize) -> Option<usize>) -> Option<Vec<(usize, W)>> {
+            let mut out: Vec<(usize, W)> =
+                t.iter().map(|(c, w)| Some((turn(*c)?, w.clone()))).collect::<Option<_>>()?;
+            out.sort_by_key(|e| e.0);
+            Some(out)
+        }
+        Some(match self {
+            ExactStencil::Rational(t) => ExactStencil::Rational(moved(t, turn)?),
+            ExactStencil::Cyclotomic(t) => ExactStencil::Cyclotomic(moved(t, turn)?),
+        })
+    }
+
+    /// N of the smallest cyclotomic field holding the weights (1: rational).
+    fn field_order(&self) -> u64 {
+        match self {
+            ExactStencil::Rational(_) => 1,
+            ExactStencil::Cyclotomic(t) => t.iter().map(|(_, w)| w.order().unwrap_or(1) as u64).fold(1, lcm),
+        }
+    }
+}
+
+pub(super) fn lcm(a: u64, b: u64) -> u64 {
+    a / crate::numeric::weight::gcd(a as i64, b as i64) as u64 * b
+}
+
+/// The stencil of vertex `v` of refinement `k` exactly, sorted by column
+/// with zero weights dropped; `None` when a weight is neither rational (in
+/// machine integers) nor cyclotomic, or the rule cannot be evaluated.
+fn exact_stencil(scheme: &dyn Scheme, analysis: &Analysis, k: usize, v: usize) -> Option<ExactStencil> {
+    let d = &analysis.discovered;
+    let (before, refined) = (d.mesh_before(k), &d.refinements()[k]);
+    fn tidy<W: Weight>(terms: Vec<(usize, W)>) -> Vec<(usize, W)> {
+        let mut t: Vec<(usize, W)> = terms.into_iter().filter(|e| !e.1.is_zero()).collect();
+        t.sort_by_key(|e| e.0);
+        t
+    }
+    match crate::refine::new_stencil::<SmallRational>(scheme, before, refined, v) {
+        Ok(Ok(st)) => {
+            let st = st.merged();
+            // a spoiled weight (beyond machine integers) equals nothing: the
+            // composed rows decide such a scheme
+            if st.terms.iter().any(|(_, w)| w.to_rational().is_none()) {
+                return None;
+            }
+            Some(ExactStencil::Rational(tidy(st.terms)))
+        }
+        Ok(Err(_)) => None,
+        Err(_) => {
+            let st = crate::refine::new_stencil::<Cyclotomic>(scheme, before, refined, v).ok()?.ok()?.merged();
+            st.terms.iter().all(|(_, w)| w.is_defined()).then(|| ExactStencil::Cyclotomic(tidy(st.terms)))
+        }
+    }
+}
+
+/// The premise decided on the refinement steps: `Some(order)` (N of the
+/// field the stencils compared lie in) when S commutes with the rotation by
+/// conditions 1–3 of the module's comment, all checked exactly; `None` when
+/// this route cannot tell (see the module's comment), and the composed rows
+/// must decide.
+pub(super) fn rotation_by_steps(scheme: &dyn Scheme, analysis: &Analysis, orbits: &Orbits) -> Option<u64> {
+    let d = &analysis.discovered;
+    let set = d.set(analysis.spectrum.neighbourhood);
+    let g = orbits.group_order;
+    let period = d.config.rotation_period(scheme);
+    let levels = d.refinements().len();
+    if g < 2 || levels == 0 || set.len() != orbits.member.len() {
+        return None;
+    }
+    // ρ_k for k = 0..=levels, each of the configuration's order (the
+    // identity stands in where a mesh shows no symmetry: then no route)
+    let rotations: Vec<Rotation> = (0..=levels)
+        .map(|k| {
+            let mesh = if k == 0 { &d.patch } else { &d.refinements()[k - 1].mesh };
+            Rotation::new(mesh, period, true)
+        })
+        .collect();
+    if rotations.iter().any(|r| r.order() != g) {
+        return None;
+    }
+    // 1. ρ_0 on the neighbourhood is the rotation the Fourier orbits encode
+    let mut index = vec![vec![usize::MAX; g]; orbits.num_orbits()];
+    for (k, &(o, t)) in orbits.member.iter().enumerate() {
+        index[o][t] = k;
+    }
+    for (k, &v) in set.iter().enumerate() {
+        let (o, t) = orbits.member[k];
+        let expected = if orbits.fixed[o] { k } else { index[o][(t + 1) % g] };
+        if expected == usize::MAX || rotations[0].turned(v)? != set[expected] {
+            return None;
+        }
+    }
+    // 2. successors turn with the rotation
+    let mut wanted: BTreeSet<usize> = BTreeSet::new();
+    for &v in set {
+        let (s, turned) = (d.successor(v)?, d.successor(rotations[0].turned(v)?)?);
+        if rotations[levels].turned(s)? != turned {
+            return None;
+        }
+        wanted.insert(s);
+    }
+    // 3. level by level down, every stencil reached turns with the mesh
+    let mut order = 1;
+    for k in (0..levels).rev() {
+        let (above, below) = (&rotations[k + 1], &rotations[k]);
+        // the wanted set closed under the rotation (it is already, when the
+        // stencils turn; closing it keeps the argument free of that premise)
+        let mut closed = wanted.clone();
+        for &w in &wanted {
+            let mut u = w;
+            for _ in 1..g {
+                u = above.turned(u)?;
+                closed.insert(u);
+            }
+        }
+        let mut stencils: IdMap<usize, ExactStencil> = IdMap::default();
+        for &w in &closed {
+            stencils.insert(w, exact_stencil(scheme, analysis, k, w)?);
+        }
+        let turn = |u: usize| below.turned(u);
+        let mut next = BTreeSet::new();
+        for (&w, st) in &stencils {
+            if st.turned(&turn)? != *stencils.get(&above.turned(w)?)? {
+                return None;
+            }
+            order = lcm(order, st.field_order());
+            next.extend(st.support());
+        }
+        wanted = next;
+    }
+    Some(order)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::matrix::local::assemble_rows_rational;
+    use crate::neighbourhood::{Configuration, NeighbourhoodKind};
+    use crate::schemes::{builtins::names_of, entry::Family};
+    use crate::spectrum::{analyse, Options};
+
+    fn analysis_of(scheme: &dyn Scheme, config: &Configuration) -> Analysis {
+        let opts = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
+        analyse(scheme, config, &opts).expect("analysed")
+    }
+
+    /// PS = SP checked by its definition, on the whole composed S in exact
+    /// rationals (the route this module replaces): row ρ(k) of S is row k
+    /// with every column turned.
+    fn composed_rows_turn(scheme: &dyn Scheme, analysis: &Analysis, orbits: &Orbits) -> bool {
+        let g = orbits.group_order;
+        let mut index = vec![vec![usize::MAX; g]; orbits.num_orbits()];
+        for (k, &(o, t)) in orbits.member.iter().enumerate() {
+            index[o][t] = k;
+        }
+        let turn = |k: usize| {
+            let (o, t) = orbits.member[k];
+            if orbits.fixed[o] {
+                k
+            } else {
+                index[o][(t + 1) % g]
+            }
+        };
+        let everyone: Vec<usize> = (0..orbits.member.len()).collect();
+        let rows = assemble_rows_rational(scheme, &analysis.discovered, NeighbourhoodKind::Analysis, &everyone)
+            .expect("rational rows");
+        everyone.iter().all(|&k| {
+            let mut moved: Vec<_> = rows[k].iter().map(|(c, w)| (turn(*c), w.clone())).collect();
+            moved.sort_by_key(|e| e.0);
+            moved == rows[turn(k)]
+        })
+    }
+
+    /// Every rotation-symmetric built-in mesh scheme (at its defaults) is
+    /// decided by the steps' route, and where S is rational the composed
+    /// rows agree: S commutes with the rotation by its definition.
+    #[test]
+    fn every_builtin_takes_the_steps_route_and_the_composed_rows_agree() {
+        let mut rational_checked = 0;
+        for name in names_of(Family::Mesh) {
+            let scheme = crate::schemes::resolve(name, &[]).expect("built-in");
+            for n in [3, 5, 6] {
+                let Ok(config) = Configuration::regular(scheme.as_ref(), n) else { continue };
+                if scheme.fixed_valence().is_some() || config.rotation_period(scheme.as_ref()) >= n {
+                    continue;
+                }
+                let analysis = analysis_of(scheme.as_ref(), &config);
+                let orbits = crate::certify::spectrum::analysis_orbits(scheme.as_ref(), &analysis);
+                let order = rotation_by_steps(scheme.as_ref(), &analysis, &orbits);
+                assert!(order.is_some(), "{name} n = {n}: the steps' route gave no answer");
+                let everyone: Vec<usize> = (0..orbits.member.len()).collect();
+                if assemble_rows_rational(scheme.as_ref(), &analysis.discovered, NeighbourhoodKind::Analysis, &everyone)
+                    .is_ok()
+                {
+                    assert!(composed_rows_turn(scheme.as_ref(), &analysis, &orbits), "{name} n = {n}");
+                    rational_checked += 1;
+                }
+            }
+        }
+        assert!(rational_checked >= 10, "only {rational_checked} rational configurations compared");
+    }
+
+    /// Negative controls: orbits that do not describe the mesh's rotation
+    /// (two members of an orbit swapped; a rotation of another order) get
+    /// no answer, so the composed rows decide.
+    #[test]
+    fn orbits_that_are_not_the_meshs_rotation_get_no_answer() {
+        let scheme = crate::schemes::resolve("catmull-clark", &[]).expect("built-in");
+        let config = Configuration::regular(scheme.as_ref(), 6).expect("config");
+        let analysis = analysis_of(scheme.as_ref(), &config);
+        let orbits = crate::certify::spectrum::analysis_orbits(scheme.as_ref(), &analysis);
+        assert!(rotation_by_steps(scheme.as_ref(), &analysis, &orbits).is_some());
+        // swap positions 1 and 2 of the first orbit that moves
+        let mut swapped = orbits.clone();
+        let o = (0..swapped.num_orbits()).find(|&o| !swapped.fixed[o]).expect("a moving orbit");
+        let a = swapped.member.iter().position(|&m| m == (o, 1)).expect("t = 1");
+        let b = swapped.member.iter().position(|&m| m == (o, 2)).expect("t = 2");
+        swapped.member.swap(a, b);
+        assert_eq!(rotation_by_steps(scheme.as_ref(), &analysis, &swapped), None);
+        // the orbits of the rotation by two sectors (order 3, the mesh's is 6)
+        let labels = &analysis.spectrum.labels;
+        let coarser = Orbits::from_labels(labels, 2, 6);
+        assert_eq!(rotation_by_steps(scheme.as_ref(), &analysis, &coarser), None);
+    }
+}
