@@ -105,7 +105,22 @@ pub fn refinement_weight(new: (i64, i64), old: (i64, i64)) -> Option<Rational> {
 /// Every coarse control point with a nonzero weight in the new point `new`,
 /// with that weight (the hats reach 2 quarter units, the quarter squares one
 /// more: a box of radius 4 holds them all).
+///
+/// Both lattices repeat under shifts by 4Z² (the coarse period; the kinds
+/// depend on positions mod 4 and 2, the weights on `new − old`), so the
+/// mask of `new` is the mask of `new mod 4` shifted: the sixteen masks are
+/// derived once per process and translated.
 pub fn mask(new: (i64, i64)) -> Option<Vec<((i64, i64), Rational)>> {
+    static BY_RESIDUE: std::sync::OnceLock<Vec<Option<Vec<((i64, i64), Rational)>>>> = std::sync::OnceLock::new();
+    let masks = BY_RESIDUE.get_or_init(|| (0..16).map(|r| derived_mask((r / 4, r % 4))).collect());
+    let residue = (new.0.rem_euclid(4), new.1.rem_euclid(4));
+    let shift = (new.0 - residue.0, new.1 - residue.1);
+    let at = masks[(residue.0 * 4 + residue.1) as usize].as_ref()?;
+    Some(at.iter().map(|&((x, y), ref w)| ((x + shift.0, y + shift.1), w.clone())).collect())
+}
+
+/// [`mask`] from the definition, at any position.
+fn derived_mask(new: (i64, i64)) -> Option<Vec<((i64, i64), Rational)>> {
     fine_kind(new)?;
     let mut out = Vec::new();
     for x in new.0 - 4..=new.0 + 4 {
@@ -126,6 +141,17 @@ mod tests {
 
     fn r(p: i64, q: i64) -> Rational {
         Rational::ratio(p, q)
+    }
+
+    /// The translated masks equal the masks derived at the point itself,
+    /// over several coarse periods in both directions and signs.
+    #[test]
+    fn masks_translate_with_the_coarse_period() {
+        for x in -9..=9 {
+            for y in -9..=9 {
+                assert_eq!(mask((x, y)), derived_mask((x, y)), "at ({x}, {y})");
+            }
+        }
     }
 
     #[test]
