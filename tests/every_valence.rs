@@ -197,6 +197,10 @@ fn cli_exit_codes_and_json() {
     assert_eq!(ok.status.code(), Some(0));
     let text = String::from_utf8_lossy(&ok.stdout);
     assert!(text.contains("PROVED") && text.contains("spectral conditions only"), "{text}");
+    // a parameter by the shared flag (blz weighs only crease rules: the
+    // interior proof is the same)
+    let with_param = subdlab(&["spectrum", "schemes/loop.toml", "--certify", "--valences", "3..", "-p", "blz=0"]);
+    assert_eq!(with_param.status.code(), Some(0), "{}", String::from_utf8_lossy(&with_param.stderr));
     let bad =
         subdlab(&["spectrum", "tests/data/loop-large-valence-defect.toml", "--certify", "--valences", "3..", "--json"]);
     assert_eq!(bad.status.code(), Some(1));
@@ -215,6 +219,11 @@ fn cli_exit_codes_and_json() {
         vec!["spectrum", "loop", "--certify", "--valences", "3..100000"],
         // just past the limit Σ n ≤ Σ_{3..200} n: 3..201
         vec!["spectrum", "loop", "--certify", "--valences", "3..201"],
+        // the shared configuration flags are taken, and refused where a
+        // range of valences gives them no meaning
+        vec!["spectrum", "four-three", "--certify", "--valences", "3..5", "--faces", "QQT"],
+        vec!["spectrum", "loop", "--certify", "--valences", "3..5", "--tag", "boundary"],
+        vec!["spectrum", "loop", "--certify", "--valences", "3..5", "-p", "no_such=1"],
     ] {
         let out = subdlab(&args);
         assert_eq!(out.status.code(), Some(2), "{args:?}");

@@ -32,8 +32,8 @@
 //! as before: this route can only establish the premise, never refute it
 //! (two stencils that differ might still compose to rows that agree).
 
+use super::spectrum::MAX_EXACT_ORBIT_WORK;
 use crate::dft::Orbits;
-use crate::mesh::IdMap;
 use crate::neighbourhood::discovery::Rotation;
 use crate::numeric::small::SmallRational;
 use crate::numeric::weight::Weight;
@@ -161,32 +161,54 @@ pub(super) fn rotation_by_steps(scheme: &dyn Scheme, analysis: &Analysis, orbits
         }
         wanted.insert(s);
     }
-    // 3. level by level down, every stencil reached turns with the mesh
+    // 3. level by level down, every stencil reached turns with the mesh:
+    // orbit by orbit, each member's stencil against its predecessor's turned
+    // (and the first against the last's), two or three stencils alive at a
+    // time, so memory stays bounded however large the orbit
     let mut order = 1;
     for k in (0..levels).rev() {
         let (above, below) = (&rotations[k + 1], &rotations[k]);
-        // the wanted set closed under the rotation (it is already, when the
-        // stencils turn; closing it keeps the argument free of that premise)
-        let mut closed = wanted.clone();
-        for &w in &wanted {
-            let mut u = w;
-            for _ in 1..g {
-                u = above.turned(u)?;
-                closed.insert(u);
-            }
-        }
-        let mut stencils: IdMap<usize, ExactStencil> = IdMap::default();
-        for &w in &closed {
-            stencils.insert(w, exact_stencil(scheme, analysis, k, w)?);
-        }
         let turn = |u: usize| below.turned(u);
+        let mut seen: BTreeSet<usize> = BTreeSet::new();
         let mut next = BTreeSet::new();
-        for (&w, st) in &stencils {
-            if st.turned(&turn)? != *stencils.get(&above.turned(w)?)? {
+        for &w in &wanted {
+            if seen.contains(&w) {
+                continue;
+            }
+            // the orbit of w (closing the wanted set under the rotation keeps
+            // the argument free of assuming it closed)
+            let mut orbit = vec![w];
+            let mut u = above.turned(w)?;
+            while u != w {
+                if orbit.len() == g {
+                    return None;
+                }
+                orbit.push(u);
+                u = above.turned(u)?;
+            }
+            seen.extend(orbit.iter().copied());
+            let first = exact_stencil(scheme, analysis, k, orbit[0])?;
+            if let ExactStencil::Cyclotomic(terms) = &first {
+                // the composed-row route's bound on an orbit's exact work
+                let work = (orbit.len() as u64).saturating_mul(terms.len() as u64).saturating_mul(first.field_order());
+                if work > MAX_EXACT_ORBIT_WORK {
+                    return None;
+                }
+            }
+            order = lcm(order, first.field_order());
+            let mut previous_turned = first.turned(&turn)?;
+            next.extend(first.support());
+            for &member in &orbit[1..] {
+                let st = exact_stencil(scheme, analysis, k, member)?;
+                if st != previous_turned {
+                    return None;
+                }
+                next.extend(st.support());
+                previous_turned = st.turned(&turn)?;
+            }
+            if previous_turned != first {
                 return None;
             }
-            order = lcm(order, st.field_order());
-            next.extend(st.support());
         }
         wanted = next;
     }

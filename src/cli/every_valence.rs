@@ -29,9 +29,12 @@ pub struct EveryValenceArgs {
     /// required: the verdict is a proof (interval certificates, exact parametric part)
     #[arg(long)]
     pub certify: bool,
-    /// scheme parameter NAME=VALUE; repeatable
-    #[arg(long = "param", short = 'p')]
-    pub params: Vec<String>,
+    /// the parameters (and faces) as every analysis command takes them
+    #[command(flatten)]
+    pub setup: super::args::SchemeSetup,
+    /// refused with a reason: the range is of interior vertices
+    #[arg(long)]
+    pub tag: Option<String>,
     /// machine-readable JSON output
     #[arg(long)]
     pub json: bool,
@@ -76,8 +79,21 @@ pub fn execute(a: &EveryValenceArgs) -> Result<i32, Error> {
                 .into(),
         ));
     }
+    // one face sequence fixes one valence, and a tagged vertex has no
+    // Fourier blocks: neither has a meaning over a range of valences
+    if a.setup.faces.is_some() {
+        return Err(Error::Input(
+            "--faces with --valences: a face sequence fixes one valence; prove one configuration with              `subdlab spectrum SCHEME -n N --faces ... --certify`"
+                .into(),
+        ));
+    }
+    if let Some(tag) = &a.tag {
+        return Err(Error::Input(format!(
+            "--tag {tag} with --valences: the every-valence proof is for interior vertices (Fourier blocks);              sweep tagged configurations with `subdlab sweep SCHEME --tag {tag} --sectors A..B`"
+        )));
+    }
     let (from, to) = parse_range(&a.valences)?;
-    let params = super::commands::parse_params(&a.params)?;
+    let params = super::commands::parse_params(&a.setup.params)?;
     let report = run(&Request { scheme: a.scheme.clone(), params, from, to })?;
     if a.json {
         print_json(&report)?;
