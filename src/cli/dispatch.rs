@@ -156,10 +156,10 @@ fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
                 .into(),
         ));
     }
-    if args.charmap || args.curvature || args.csv || args.plot.is_some() {
+    if args.charmap || args.csv || args.plot.is_some() {
         return Err(Error::Input(
-            "--exact gives the exact sets of convergence and spectral C¹; it takes none of --charmap, --curvature, \
-             --csv, --plot"
+            "--exact gives the exact sets of convergence, spectral C¹ and (with --curvature) the curvature classes; \
+             it takes none of --charmap, --csv, --plot"
                 .into(),
         ));
     }
@@ -189,6 +189,7 @@ fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
         fixed,
         faces: args.faces.clone(),
         certify: args.certify,
+        curvature: args.curvature,
     };
     let started = std::time::Instant::now();
     let sets = run(&sweep)?;
@@ -234,6 +235,21 @@ fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
             }
             for i in list {
                 text.push_str(&format!("  {label}: {}\n", show(i)));
+            }
+        }
+        if let Some(c) = &v.curvature {
+            for (label, list) in
+                [("curvature zero", &c.zero), ("curvature bounded", &c.bounded), ("curvature unbounded", &c.unbounded)]
+            {
+                if list.is_empty() {
+                    text.push_str(&format!("  {label}: nowhere in the range\n"));
+                }
+                for i in list {
+                    text.push_str(&format!("  {label}: {}\n", show(i)));
+                }
+            }
+            for u in &c.undecided {
+                text.push_str(&format!("  curvature class NOT DECIDED at {u}\n"));
             }
         }
         if v.exact {

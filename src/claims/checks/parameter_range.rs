@@ -306,6 +306,7 @@ impl ParameterRange {
             fixed,
             faces: subject.faces_for(n).map(str::to_string),
             certify: self.certified,
+            curvature: false,
         })
     }
 
