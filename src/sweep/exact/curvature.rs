@@ -150,3 +150,23 @@ pub struct CurvatureSets {
 pub(crate) fn needs_equality(class: CurvatureClass, strict: bool) -> bool {
     matches!(class, CurvatureClass::Bounded | CurvatureClass::Unbounded) && !strict
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn constant_poly(c: &[i64]) -> BiPoly {
+        c.iter().map(|&x| TPoly::int(x)).collect()
+    }
+
+    #[test]
+    fn root_squaring_squares_the_roots() {
+        // (x − 2)(x + 3) = x² + x − 6 → (x − 4)(x − 9) = x² − 13x + 36
+        assert_eq!(root_squared(&constant_poly(&[-6, 1, 1])), constant_poly(&[36, -13, 1]));
+        // (x − 1)(x − 2)(x + 1) = x³ − 2x² − x + 2 → (x − 1)²(x − 4) = x³ − 6x² + 9x − 4
+        assert_eq!(root_squared(&constant_poly(&[2, -1, -2, 1])), constant_poly(&[-4, 9, -6, 1]));
+        // x − t → x − t² (a root moving with t)
+        let p = vec![-TPoly::variable(), TPoly::int(1)];
+        assert_eq!(root_squared(&p), vec![-(TPoly::variable() * TPoly::variable()), TPoly::int(1)]);
+    }
+}
