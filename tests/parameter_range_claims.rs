@@ -59,14 +59,13 @@ fn the_exact_reading_depends_on_the_window_as_derived() {
     assert_eq!(o.verdict, Verdict::Refuted, "{} / {}", o.computed, o.detail);
     assert!(o.computed.contains("proves"), "{}", o.computed);
     // a lower end off by 1/1000 is not the set's end; the disagreement
-    // (lb, lb + 1/1000] holds none of the sweep's decided points, so no
-    // witness confirms the refutation by a second route: not HOLDS, and
-    // INCONCLUSIVE with the reason (a witness search inside such gaps is
-    // not implemented)
+    // (lb, lb + 1/1000] holds none of the sweep's decided points, so the
+    // witness is searched in the gap between the two ends and proved C¹
+    // there by the certificate (it was INCONCLUSIVE before that search)
     let o =
         nonbox("window = [\"0\", \"3/4\"]\nrange = \"(1/4 - cos(2 pi / k)/4 + 1/1000, 3/4]\"\nasserts = \"exactly\"");
-    assert_eq!(o.verdict, Verdict::Inconclusive, "{} / {}", o.computed, o.detail);
-    assert!(o.detail.contains("no rational witness"), "{}", o.detail);
+    assert_eq!(o.verdict, Verdict::Refuted, "{} / {}", o.computed, o.detail);
+    assert!(o.computed.contains("proves"), "{}", o.computed);
 }
 
 #[test]
