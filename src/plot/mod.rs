@@ -23,6 +23,7 @@ pub mod layout;
 pub mod lines;
 pub mod shape_chart;
 pub mod spectrum;
+pub mod region;
 pub mod sweep;
 
 use std::path::Path;

@@ -10,6 +10,7 @@
 //! as `subdlab spectrum --tag` decides it.
 
 pub mod exact;
+pub mod region;
 
 use serde::Serialize;
 
