@@ -129,7 +129,8 @@ fn witness_of(computed: &str) -> (i64, i64) {
 /// [0, 1] is ((5 − √5)/16, 1] (derivation at the top of this file).
 #[test]
 fn a_disagreement_on_a_tiny_gap_is_decided_by_a_witness_inside_it() {
-    let one = "check = \"parameter-range\"\nscheme = \"non-box\"\nvalences = [5]\nparameter = \"a\"\nwindow = [\"0\", \"1\"]";
+    let one =
+        "check = \"parameter-range\"\nscheme = \"non-box\"\nvalences = [5]\nparameter = \"a\"\nwindow = [\"0\", \"1\"]";
     // (bound − 10⁻⁶, 3/4]: (bound − 10⁻⁶, bound] is outside the set
     let o = verdict_of(&format!("{one}\nrange = \"(1/4 - cos(2 pi / k)/4 - 1/1000000, 3/4]\"\nasserts = \"inside\""));
     assert_eq!(o.verdict, Verdict::Refuted, "{} / {}", o.computed, o.detail);

@@ -61,7 +61,8 @@ fn two_parameter_sweep_draws_the_plane_with_the_hand_derived_ends() {
     // the evidence of both layers is stated
     assert!(text.contains("grid points floating point") && text.contains("ends exact"), "{text}");
     let c = (2.0 * std::f64::consts::PI / 5.0).cos();
-    for (e_text, e, conv_end) in [("1/16", 1.0 / 16.0, "25/16"), ("1/8", 0.125, "13/8"), ("3/16", 3.0 / 16.0, "27/16")] {
+    for (e_text, e, conv_end) in [("1/16", 1.0 / 16.0, "25/16"), ("1/8", 0.125, "13/8"), ("3/16", 3.0 / 16.0, "27/16")]
+    {
         let c1 = ends_in_row(&text, e_text, "C1 spectral");
         assert_eq!(c1.len(), 2, "e = {e_text}: {text}");
         assert!((c1[0].1 - 2.0 * e * (1.0 - c)).abs() < 1e-11, "e = {e_text}: lower end {c1:?}");
@@ -110,4 +111,6 @@ fn two_parameter_sweep_refuses_what_it_cannot_draw() {
     assert!(err.contains("one valence"), "{err}");
     let err = fails(&[&args[..], &["--valences", "5..5", "--json"]].concat());
     assert!(err.contains("--json"), "{err}");
+    let err = fails(&[&args[..], &["--valences", "5..5", "--exact"]].concat());
+    assert!(err.contains("one parameter"), "{err}");
 }

@@ -164,6 +164,11 @@ fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
         ));
     }
     let params = parse_params(&args.params)?;
+    if params.iter().filter(|(_, v)| v.contains(':')).count() > 1 {
+        return Err(Error::Input(
+            "--exact sweeps one parameter; without --exact two swept parameters draw their plane".into(),
+        ));
+    }
     let Some((name, range)) = params.iter().find(|(_, v)| v.contains(':')) else {
         return Err(Error::Input("--exact needs a swept parameter --param NAME=START:END:STEP".into()));
     };
@@ -308,8 +313,7 @@ fn sweep_region(args: &SweepArgs) -> Result<(), Error> {
     let region = run(&r)?;
     let seconds = started.elapsed().as_secs_f64();
     if let Some(path) = &args.plot {
-        let mut fig =
-            crate::plot::region::RegionFigure::new(&args.scheme, valence, &x.0, &y.0, &region, args.charmap)?;
+        let mut fig = crate::plot::region::RegionFigure::new(&args.scheme, valence, &x.0, &y.0, &region, args.charmap)?;
         fig.style = style;
         crate::plot::save(&fig, path)?;
         crate::plot::save_data(&fig, args.figure.data_path()?)?;

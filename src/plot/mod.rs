@@ -21,9 +21,9 @@ pub mod compare;
 pub mod curvature;
 pub mod layout;
 pub mod lines;
+pub mod region;
 pub mod shape_chart;
 pub mod spectrum;
-pub mod region;
 pub mod sweep;
 
 use std::path::Path;

@@ -86,7 +86,8 @@ impl RegionFigure {
         for (y, points) in &region.rows {
             let yv = crate::numeric::ParamValue::parse(y)?.value;
             for p in points {
-                let text = p.param.as_deref().ok_or_else(|| Error::Input("the figure needs a swept parameter".into()))?;
+                let text =
+                    p.param.as_deref().ok_or_else(|| Error::Input("the figure needs a swept parameter".into()))?;
                 cells.push((yv, crate::numeric::ParamValue::parse(text)?.value, CellStatus::of(p)));
             }
         }
@@ -140,7 +141,9 @@ impl RegionFigure {
         shown.sort_by_key(|s| std::cmp::Reverse(*s as u8));
         let mut entries: Vec<(Swatch, String)> = shown
             .into_iter()
-            .map(|s| (Swatch::Patch { fill: s.colour(), edge: RGBColor(90, 90, 90) }, s.label(self.charmap).to_string()))
+            .map(|s| {
+                (Swatch::Patch { fill: s.colour(), edge: RGBColor(90, 90, 90) }, s.label(self.charmap).to_string())
+            })
             .collect();
         let mut sets: Vec<&str> = Vec::new();
         for (_, _, s) in &self.ends {
@@ -173,7 +176,8 @@ impl RegionFigure {
         let font = |own: u32| self.style.font(own, BASE_FONT) as f64 * scale;
         let (w, h) = self.size();
         let (w, h) = (w as f64, h as f64);
-        let caption = format!("{} at n = {}: verdicts over ({}, {})", self.scheme, self.valence, self.x_name, self.y_name);
+        let caption =
+            format!("{} at n = {}: verdicts over ({}, {})", self.scheme, self.valence, self.x_name, self.y_name);
         let title_size = font(26);
         let (title, title_h) = title_block(self.style.title(caption), title_size, w)?;
         let mut legend = self.legend(font(17));
@@ -218,9 +222,11 @@ impl Figure for RegionFigure {
         plan.axes.draw(&area, xr, yr, false)?;
         let mut chart = plan.axes.chart(&area, xr, yr)?;
         chart
-            .draw_series(self.cells.iter().map(|&(y, x, status)| {
-                Rectangle::new([(x - hx, y - hy), (x + hx, y + hy)], status.colour().filled())
-            }))
+            .draw_series(
+                self.cells.iter().map(|&(y, x, status)| {
+                    Rectangle::new([(x - hx, y - hy), (x + hx, y + hy)], status.colour().filled())
+                }),
+            )
             .map_err(err)?;
         // each exact end: a tick across its row at its exact position
         let mut ends: Vec<&(f64, f64, String)> = self.ends.iter().collect();

@@ -103,7 +103,10 @@ pub fn run(r: &RegionSweep) -> Result<Region, Error> {
             let yv = ParamValue::parse(y)?.value;
             let mut push = |set: &str, list: &[ExactInterval]| {
                 for i in list {
-                    for (e, is_range_end) in [(&i.from, i.from.rational.as_ref() == Some(&lo.to_string())), (&i.to, i.to.rational.as_ref() == Some(&hi.to_string()))] {
+                    for (e, is_range_end) in [
+                        (&i.from, i.from.rational.as_ref() == Some(&lo.to_string())),
+                        (&i.to, i.to.rational.as_ref() == Some(&hi.to_string())),
+                    ] {
                         // the window's own ends are not boundaries
                         if !is_range_end {
                             ends.push(ExactEnd { y: yv, x: e.decimal, set: set.to_string(), text: e.text.clone() });
