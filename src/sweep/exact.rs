@@ -114,6 +114,19 @@ pub struct ExactInterval {
     pub to_root: RealRoot,
 }
 
+/// The sets of the swept parameter per curvature class.
+#[derive(Clone, Debug, Serialize)]
+pub struct CurvatureSets {
+    pub zero: Vec<ExactInterval>,
+    pub bounded: Vec<ExactInterval>,
+    pub unbounded: Vec<ExactInterval>,
+    /// the candidates where |x| = y² for a root x of a block and a root y
+    /// of λ1's block (|μ| = λ1² can only happen at these, or on whole pieces)
+    pub square_candidates: Vec<Endpoint>,
+    /// candidate points whose class could not be decided (in no set)
+    pub undecided: Vec<String>,
+}
+
 /// The exact sets at one valence.
 #[derive(Clone, Debug, Serialize)]
 pub struct ValenceSets {
@@ -135,7 +148,7 @@ pub struct ValenceSets {
     pub decisions: Vec<Decision>,
     /// the sets of each curvature class (with `curvature` asked)
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub curvature: Option<curvature::CurvatureSets>,
+    pub curvature: Option<CurvatureSets>,
 }
 
 /// The verdict at one point of t.
@@ -528,7 +541,7 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
     let curvature = s.curvature.then(|| {
         let class_set =
             |class: CurvatureClass| sets(&move |d: &Decision| d.curvature_class == Some(class), &class_evidence);
-        curvature::CurvatureSets {
+        CurvatureSets {
             zero: class_set(CurvatureClass::Zero),
             bounded: class_set(CurvatureClass::Bounded),
             unbounded: class_set(CurvatureClass::Unbounded),

@@ -35,14 +35,15 @@
 //! constant on each open piece (it is decided in floating point at the
 //! piece's point).
 
-use serde::Serialize;
-
-use super::{BiPoly, ExactInterval};
 use crate::curvature::{curvature, CurvatureClass, CurvatureOptions, Evidence, EIG_TOL};
 use crate::error::Error;
 use crate::neighbourhood::Configuration;
 use crate::numeric::{TPoly, Weight};
 use crate::sdc::Scheme;
+
+/// A polynomial in x (lowest first) with coefficients polynomials in t
+/// (as the exact sweep's block polynomials).
+pub(crate) type BiPoly = Vec<TPoly>;
 
 /// Graeffe's root squaring: the monic polynomial whose roots are the
 /// squares of p's roots (with multiplicity). With p(y) = E(y²) + y O(y²),
@@ -131,19 +132,6 @@ pub(crate) fn class_at(scheme: &dyn Scheme, config: &Configuration) -> Result<Cl
         Evidence::None => "floating point (first-order test)".into(),
     };
     Ok(ClassAt { class: c.class, evidence, strict })
-}
-
-/// The sets of the swept parameter per curvature class.
-#[derive(Clone, Debug, Serialize)]
-pub struct CurvatureSets {
-    pub zero: Vec<ExactInterval>,
-    pub bounded: Vec<ExactInterval>,
-    pub unbounded: Vec<ExactInterval>,
-    /// the candidates where |x| = y² for a root x of a block and a root y
-    /// of λ1's block (|μ| = λ1² can only happen at these, or on whole pieces)
-    pub square_candidates: Vec<super::Endpoint>,
-    /// candidate points whose class could not be decided (in no set)
-    pub undecided: Vec<String>,
 }
 
 /// Whether a class that needs |μ| = λ² exactly may stand at a point.
