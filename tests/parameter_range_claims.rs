@@ -59,14 +59,13 @@ fn the_exact_reading_depends_on_the_window_as_derived() {
     assert_eq!(o.verdict, Verdict::Refuted, "{} / {}", o.computed, o.detail);
     assert!(o.computed.contains("proves"), "{}", o.computed);
     // a lower end off by 1/1000 is not the set's end; the disagreement
-    // (lb, lb + 1/1000] holds none of the sweep's decided points, so no
-    // witness confirms the refutation by a second route: not HOLDS, and
-    // INCONCLUSIVE with the reason (a witness search inside such gaps is
-    // not implemented)
+    // (lb, lb + 1/1000] holds none of the sweep's decided points, so the
+    // witness is searched in the gap between the two ends and proved C¹
+    // there by the certificate (it was INCONCLUSIVE before that search)
     let o =
         nonbox("window = [\"0\", \"3/4\"]\nrange = \"(1/4 - cos(2 pi / k)/4 + 1/1000, 3/4]\"\nasserts = \"exactly\"");
-    assert_eq!(o.verdict, Verdict::Inconclusive, "{} / {}", o.computed, o.detail);
-    assert!(o.detail.contains("no rational witness"), "{}", o.detail);
+    assert_eq!(o.verdict, Verdict::Refuted, "{} / {}", o.computed, o.detail);
+    assert!(o.computed.contains("proves"), "{}", o.computed);
 }
 
 #[test]
@@ -105,4 +104,50 @@ fn malformed_parameter_range_claims_are_errors() {
     err("window = [\"0\", \"1/2\"]\nrange = \"(0, 3/4]\"\nasserts = \"inside\"", "outside the window");
     err("range = \"(0, 1]\"\nasserts = \"inside\"\nparams = { a = \"1/2\" }", "cannot also be fixed");
     err("window = [\"1\", \"0\"]\nrange = \"(0, 1]\"\nasserts = \"inside\"", "empty");
+}
+
+/// Whether the rational p/q is below (5 − √5)/16, the C¹ bound at k = 5
+/// (exactly: 16t < 5 − √5 ⟺ 5 − 16t > 0 and (5 − 16t)² > 5).
+fn below_bound_k5(p: i64, q: i64) -> bool {
+    let d = 5 * q - 16 * p; // (5 − 16t)·q
+    d > 0 && (d as i128) * (d as i128) > 5 * (q as i128) * (q as i128)
+}
+
+/// The rational witness "a = p/q" named in a REFUTED's computed text.
+fn witness_of(computed: &str) -> (i64, i64) {
+    let at = computed.split("confirmed at a = ").nth(1).unwrap_or_else(|| panic!("no witness: {computed}"));
+    let w = at.split(':').next().unwrap();
+    let (p, q) = w.split_once('/').unwrap_or((w, "1"));
+    (p.trim().parse().unwrap(), q.trim().parse().unwrap())
+}
+
+/// A range that misses the sharp bound by 10⁻⁶ disagrees with the set only
+/// on an interval of that width, where the sweep decides no point (its
+/// pieces' points are the simplest rationals between candidates): the
+/// witness is searched in the gap between the stated end and the computed
+/// one and confirmed by the interval certificate. At k = 5 the set in
+/// [0, 1] is ((5 − √5)/16, 1] (derivation at the top of this file).
+#[test]
+fn a_disagreement_on_a_tiny_gap_is_decided_by_a_witness_inside_it() {
+    let one =
+        "check = \"parameter-range\"\nscheme = \"non-box\"\nvalences = [5]\nparameter = \"a\"\nwindow = [\"0\", \"1\"]";
+    // (bound − 10⁻⁶, 3/4]: (bound − 10⁻⁶, bound] is outside the set
+    let o = verdict_of(&format!("{one}\nrange = \"(1/4 - cos(2 pi / k)/4 - 1/1000000, 3/4]\"\nasserts = \"inside\""));
+    assert_eq!(o.verdict, Verdict::Refuted, "{} / {}", o.computed, o.detail);
+    assert!(o.computed.contains("disproves"), "{}", o.computed);
+    let (p, q) = witness_of(&o.computed);
+    // the witness lies in the gap: below or at the bound, above bound − 10⁻⁶
+    assert!(below_bound_k5(p, q), "{p}/{q}");
+    assert!(!below_bound_k5(p * 1_000_000 + q, q * 1_000_000), "{p}/{q} is not within 10⁻⁶ of the bound");
+    // negative control: 10⁻⁶ above the bound the range is inside the set
+    let o = verdict_of(&format!("{one}\nrange = \"[1/4 - cos(2 pi / k)/4 + 1/1000000, 3/4]\"\nasserts = \"inside\""));
+    assert_eq!(o.verdict, Verdict::Holds, "{} / {}", o.computed, o.detail);
+    // "exactly" with the lower end 10⁻⁶ too high: the witness is a point of
+    // (bound, bound + 10⁻⁶], proved C¹
+    let o = verdict_of(&format!("{one}\nrange = \"(1/4 - cos(2 pi / k)/4 + 1/1000000, 1]\"\nasserts = \"exactly\""));
+    assert_eq!(o.verdict, Verdict::Refuted, "{} / {}", o.computed, o.detail);
+    assert!(o.computed.contains("proves"), "{}", o.computed);
+    let (p, q) = witness_of(&o.computed);
+    assert!(!below_bound_k5(p, q), "{p}/{q}");
+    assert!(below_bound_k5(p * 1_000_000 - q, q * 1_000_000), "{p}/{q} is not within 10⁻⁶ above the bound");
 }

@@ -31,5 +31,6 @@ mod shape_chart_cli;
 mod sqrt3_refine;
 mod sweep;
 mod sweep_exact;
+mod sweep_region;
 mod tagged_sweep;
 mod typed_errors;

@@ -315,3 +315,121 @@ fn four_three_centre_weight_sets_at_mixed_eons_are_the_whole_range() {
     ]);
     assert!(err.contains("QTQT"), "{err}");
 }
+
+/// The curvature classes of the Loop variant with a free vertex weight w
+/// (`sweep --exact --curvature`), derived by hand (tests/curvature_loop.rs
+/// derives Loop's spectrum; only block 0 reads w):
+///
+/// - λ = L = 3/8 + c/4, c = cos(2π/n) (blocks 1 and n − 1); block 0 adds
+///   5/8 − w; block m adds b(m) = 3/8 + cos(2πm/n)/4, largest below λ at
+///   m = 2: b(2) = 3/8 + (2c² − 1)/4 = 1/8 + c²/2; ring 2 adds 1/8 and 1/16
+///   in every block. All of them show on the characteristic ring.
+/// - L² = 9/64 + 3c/16 + c²/16, so b(2) − L² = (28c² − 12c − 1)/64, whose
+///   larger root is c = 1/2: b(2) > L² for n ≥ 7, and then the class is
+///   unbounded on the whole C¹ set, whatever w is.
+/// - n = 3: blocks 1 and 2 both carry λ = 3/8 − 1/8 = 1/4, and 1/8 > λ² =
+///   1/16: unbounded on the whole C¹ set (3/8, 7/8).
+/// - n = 4: c = 0, L² = 9/64 > b(2) = 1/8 = 8/64; n = 5: c² = (1 − 2c)/4
+///   (4c² + 2c − 1 = 0), L² = 5(1 + c)/32, b(2) = (1 − c)/4, L² − b(2) =
+///   (13c − 3)/32 > 0 and L² − 1/8 = (5c + 1)/32 > 0. So μ's modulus
+///   against L² is |5/8 − w| against L²: zero on (5/8 − L², 5/8 + L²),
+///   bounded at its two ends, unbounded between them and the C¹ ends
+///   (5/8 ∓ L). n = 4: (31/64, 49/64); n = 5: 5/8 − L² = 15/32 − 5c/32,
+///   5/8 + L² = 25/32 + 5c/32.
+/// - n = 6: the rules do not read w (regular Loop): λ = 1/2, b(2) = 1/4 =
+///   λ² = 5/8 − 3/8: bounded on all of [0, 2].
+///
+/// Each end is re-checked with `subdlab curvature` just inside and outside.
+#[test]
+fn loop_free_vertex_weight_curvature_classes_match_the_hand_derived_sets() {
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/loop-free-vertex-weight.toml");
+    let v = json(&["sweep", file, "--valences", "3..8", "--param", "w=0:2:1/8", "--exact", "--curvature", "--json"]);
+    let r = |p: i64, q: i64| BigRational::new(p.into(), q.into());
+    let class_at = |n: usize, w: f64| -> String {
+        let c =
+            json(&["curvature", file, "-n", &n.to_string(), "--param", &format!("w={w:.12}"), "--json", "--no-exact"]);
+        c["class"].as_str().unwrap().to_string()
+    };
+    let classes = |n: usize| {
+        let set = v["valences"].as_array().unwrap().iter().find(|s| s["valence"].as_u64() == Some(n as u64)).unwrap();
+        assert_eq!(set["exact"], true, "n = {n}: {}", set["not_exact_because"]);
+        let c = set["curvature"].clone();
+        assert!(c["undecided"].as_array().unwrap().is_empty(), "n = {n}: {}", c["undecided"]);
+        (set["c1_spectral"].clone(), c)
+    };
+    for n in [3usize, 7, 8] {
+        let (c1, c) = classes(n);
+        assert!(c["zero"].as_array().unwrap().is_empty(), "n = {n}");
+        assert!(c["bounded"].as_array().unwrap().is_empty(), "n = {n}");
+        let u = c["unbounded"].as_array().unwrap();
+        assert_eq!(u.len(), 1, "n = {n}");
+        let c1 = &c1[0];
+        for key in ["from", "to"] {
+            assert_eq!(u[0][key]["decimal"], c1[key]["decimal"], "n = {n} {key}");
+            assert_eq!(u[0][format!("{key}_closed")], false, "n = {n}");
+        }
+        if n == 3 {
+            assert_eq!(
+                (u[0]["from"]["rational"].as_str(), u[0]["to"]["rational"].as_str()),
+                (Some("3/8"), Some("7/8"))
+            );
+        }
+    }
+    let (_, c) = classes(6);
+    let b = c["bounded"].as_array().unwrap();
+    assert_eq!(b.len(), 1);
+    assert_eq!((b[0]["from"]["rational"].as_str(), b[0]["to"]["rational"].as_str()), (Some("0"), Some("2")));
+    assert_eq!((b[0]["from_closed"].as_bool(), b[0]["to_closed"].as_bool()), (Some(true), Some(true)));
+    assert!(c["zero"].as_array().unwrap().is_empty() && c["unbounded"].as_array().unwrap().is_empty());
+    for n in [4usize, 5] {
+        let (c1, c) = classes(n);
+        // the closed forms a + b cos(2π/n) of the zero set's ends
+        let (lo, hi) = if n == 4 {
+            ((r(31, 64), r(0, 1)), (r(49, 64), r(0, 1)))
+        } else {
+            ((r(15, 32), r(-5, 32)), (r(25, 32), r(5, 32)))
+        };
+        let what = format!("loop-w n = {n}");
+        let zero = c["zero"].as_array().unwrap();
+        assert_eq!(zero.len(), 1, "{what}: {zero:?}");
+        assert_eq!((zero[0]["from_closed"].as_bool(), zero[0]["to_closed"].as_bool()), (Some(false), Some(false)));
+        assert_endpoint_is(&zero[0]["from"], &lo.0, &lo.1, n as i64, &format!("{what} zero from"));
+        assert_endpoint_is(&zero[0]["to"], &hi.0, &hi.1, n as i64, &format!("{what} zero to"));
+        // bounded exactly at the two ends, as single closed points
+        let bounded = c["bounded"].as_array().unwrap();
+        assert_eq!(bounded.len(), 2, "{what}: {bounded:?}");
+        for (i, end) in bounded.iter().zip([&lo, &hi]) {
+            assert_eq!((i["from_closed"].as_bool(), i["to_closed"].as_bool()), (Some(true), Some(true)));
+            assert_endpoint_is(&i["from"], &end.0, &end.1, n as i64, &format!("{what} bounded"));
+            assert_endpoint_is(&i["to"], &end.0, &end.1, n as i64, &format!("{what} bounded"));
+        }
+        // unbounded from each C¹ end (open) to the zero set (open)
+        let unbounded = c["unbounded"].as_array().unwrap();
+        assert_eq!(unbounded.len(), 2, "{what}: {unbounded:?}");
+        assert_eq!(unbounded[0]["from"]["decimal"], c1[0]["from"]["decimal"]);
+        assert_eq!(unbounded[1]["to"]["decimal"], c1[0]["to"]["decimal"]);
+        assert_endpoint_is(&unbounded[0]["to"], &lo.0, &lo.1, n as i64, &format!("{what} unbounded"));
+        assert_endpoint_is(&unbounded[1]["from"], &hi.0, &hi.1, n as i64, &format!("{what} unbounded"));
+        for i in unbounded {
+            assert_eq!((i["from_closed"].as_bool(), i["to_closed"].as_bool()), (Some(false), Some(false)));
+        }
+        // just inside and just outside each end of the zero set
+        let (x, y) = (zero[0]["from"]["decimal"].as_f64().unwrap(), zero[0]["to"]["decimal"].as_f64().unwrap());
+        assert_eq!(class_at(n, x + 1e-6), "zero", "{what}");
+        assert_eq!(class_at(n, y - 1e-6), "zero", "{what}");
+        assert_eq!(class_at(n, x - 1e-6), "unbounded", "{what}");
+        assert_eq!(class_at(n, y + 1e-6), "unbounded", "{what}");
+    }
+    // the bounded points themselves, where rational (n = 4), with the
+    // exact comparison of |μ| = |5/8 − w| and λ² = 9/64
+    for w in ["31/64", "49/64"] {
+        let c = json(&["curvature", file, "-n", "4", "--param", &format!("w={w}"), "--json"]);
+        assert_eq!(c["class"], "bounded", "n = 4, w = {w}");
+        assert_eq!(c["evidence"], "exact", "n = 4, w = {w}");
+    }
+    // the text names the classes
+    let out = subdlab(&["sweep", file, "--valences", "4..4", "--param", "w=0:2:1/8", "--exact", "--curvature"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("curvature zero: (31/64, 49/64)"), "{text}");
+    assert!(text.contains("curvature bounded: [31/64, 31/64]"), "{text}");
+}

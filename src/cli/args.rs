@@ -148,14 +148,16 @@ pub struct SweepArgs {
     /// crease:K or dart; the verdict is then the sector criterion
     #[arg(long)]
     pub tag: Option<String>,
-    /// NAME=VALUE fixes a parameter; NAME=START:END:STEP sweeps one (at most one)
+    /// NAME=VALUE fixes a parameter; NAME=START:END:STEP sweeps one (at most two: a second draws
+    /// the plane of both at one valence, with the exact ends of the first at each value of the second)
     #[arg(long = "param", short = 'p')]
     pub params: Vec<String>,
     /// also check the characteristic map at every point that passes the spectral test
     #[arg(long)]
     pub charmap: bool,
     /// also compute the curvature class and L_p limit at every point (as `subdlab curvature
-    /// --no-exact`; opt-in: about a curvature run per point, far more than the spectrum)
+    /// --no-exact`; opt-in: about a curvature run per point, far more than the spectrum); with
+    /// --exact: the exact sets of each curvature class
     #[arg(long)]
     pub curvature: bool,
     /// with --charmap: analysis steps of refinement (default as `subdlab charmap`: 4)

@@ -156,14 +156,19 @@ fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
                 .into(),
         ));
     }
-    if args.charmap || args.curvature || args.csv || args.plot.is_some() {
+    if args.charmap || args.csv || args.plot.is_some() {
         return Err(Error::Input(
-            "--exact gives the exact sets of convergence and spectral C¹; it takes none of --charmap, --curvature, \
-             --csv, --plot"
+            "--exact gives the exact sets of convergence, spectral C¹ and (with --curvature) the curvature classes; \
+             it takes none of --charmap, --csv, --plot"
                 .into(),
         ));
     }
     let params = parse_params(&args.params)?;
+    if params.iter().filter(|(_, v)| v.contains(':')).count() > 1 {
+        return Err(Error::Input(
+            "--exact sweeps one parameter; without --exact two swept parameters draw their plane".into(),
+        ));
+    }
     let Some((name, range)) = params.iter().find(|(_, v)| v.contains(':')) else {
         return Err(Error::Input("--exact needs a swept parameter --param NAME=START:END:STEP".into()));
     };
@@ -189,6 +194,7 @@ fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
         fixed,
         faces: args.faces.clone(),
         certify: args.certify,
+        curvature: args.curvature,
     };
     let started = std::time::Instant::now();
     let sets = run(&sweep)?;
@@ -236,6 +242,21 @@ fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
                 text.push_str(&format!("  {label}: {}\n", show(i)));
             }
         }
+        if let Some(c) = &v.curvature {
+            for (label, list) in
+                [("curvature zero", &c.zero), ("curvature bounded", &c.bounded), ("curvature unbounded", &c.unbounded)]
+            {
+                if list.is_empty() {
+                    text.push_str(&format!("  {label}: nowhere in the range\n"));
+                }
+                for i in list {
+                    text.push_str(&format!("  {label}: {}\n", show(i)));
+                }
+            }
+            for u in &c.undecided {
+                text.push_str(&format!("  curvature class NOT DECIDED at {u}\n"));
+            }
+        }
         if v.exact {
             text.push_str("  endpoints: exact (the candidate set is complete)\n");
         } else {
@@ -245,6 +266,82 @@ fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
         }
     }
     text.push_str(&format!("({seconds:.2} s)\n"));
+    out_text(&text)
+}
+
+/// Two swept parameters (`sweep::region`): the verdicts on the (a, b) grid
+/// at one valence, the exact ends in a at each b, and the figure.
+fn sweep_region(args: &SweepArgs) -> Result<(), Error> {
+    use crate::sweep::region::{run, RegionSweep};
+    if args.json || args.csv || args.tag.is_some() || !args.bounds.is_empty() {
+        return Err(Error::Input(
+            "a sweep over two parameters prints a table and draws --plot; it takes none of --json, --csv, --tag, \
+             --bound"
+                .into(),
+        ));
+    }
+    let params = parse_params(&args.params)?;
+    let swept: Vec<&(String, String)> = params.iter().filter(|(_, v)| v.contains(':')).collect();
+    let (x, y) = (swept[0].clone(), swept[1].clone());
+    let valences = crate::sweep::parse_valences(&args.valences)?;
+    let [valence] = valences[..] else {
+        return Err(Error::Input(format!(
+            "a sweep over two parameters draws one valence; use --valences N..N (got {})",
+            args.valences
+        )));
+    };
+    if args.figure.is_set() && args.plot.is_none() {
+        return Err(Error::Input("the style flags shape the figure; give --plot FILE.svg|pdf|png too".into()));
+    }
+    if let Some(path) = &args.plot {
+        super::charmap_commands::check_out(path)?;
+    }
+    let style = args.figure.style()?;
+    let fixed = params.iter().filter(|(_, v)| !v.contains(':')).cloned().collect();
+    let r = RegionSweep {
+        scheme: args.scheme.clone(),
+        valence,
+        faces: args.faces.clone(),
+        x: x.clone(),
+        y: y.clone(),
+        fixed,
+        curvature: args.curvature,
+        charmap: args.charmap,
+        threads: args.threads as usize,
+    };
+    let started = std::time::Instant::now();
+    let region = run(&r)?;
+    let seconds = started.elapsed().as_secs_f64();
+    if let Some(path) = &args.plot {
+        let mut fig = crate::plot::region::RegionFigure::new(&args.scheme, valence, &x.0, &y.0, &region, args.charmap)?;
+        fig.style = style;
+        crate::plot::save(&fig, path)?;
+        crate::plot::save_data(&fig, args.figure.data_path()?)?;
+    }
+    let mut text = format!(
+        "sweep of {} at n = {valence} over {} = {} and {} = {}\n\
+         evidence: grid points floating point (the single-point analysis at each); ends exact (sweep --exact in {} \
+         at each {}, pieces in floating point)\n",
+        args.scheme, x.0, x.1, y.0, y.1, x.0, y.0
+    );
+    for (yv, points) in &region.rows {
+        let pass = crate::sweep::admissible(points);
+        let runs: Vec<String> = pass.iter().map(|i| i.grid_points(None)).collect();
+        text += &format!(
+            "{} = {yv}: {} in {}\n",
+            y.0,
+            if args.curvature || args.charmap { "admissible" } else { "C1 spectral" },
+            if runs.is_empty() { "no grid point".to_string() } else { runs.join(", ") }
+        );
+        let yf = crate::numeric::ParamValue::parse(yv)?.value;
+        for e in region.ends.iter().filter(|e| e.y == yf) {
+            text += &format!("  exact end of the {} set: {} = {}  ≈ {:.12}\n", e.set, x.0, e.text, e.x);
+        }
+    }
+    if let Some(why) = &region.exact_missing {
+        text += &format!("exact ends NOT AVAILABLE or not proved complete: {why}\n");
+    }
+    text += &format!("({seconds:.2} s)\n");
     out_text(&text)
 }
 
@@ -259,6 +356,9 @@ fn sweep(args: &SweepArgs) -> Result<(), Error> {
     }
     if args.certify {
         return Err(Error::Input("--certify decides the pieces of --exact; give --exact too".into()));
+    }
+    if args.params.iter().filter(|p| p.contains(':')).count() == 2 {
+        return sweep_region(args);
     }
     if args.plot.is_some() && !args.curvature && !args.params.iter().any(|p| p.contains(':')) {
         return Err(Error::Input(

@@ -21,6 +21,7 @@ pub mod compare;
 pub mod curvature;
 pub mod layout;
 pub mod lines;
+pub mod region;
 pub mod shape_chart;
 pub mod spectrum;
 pub mod sweep;

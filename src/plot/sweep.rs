@@ -60,7 +60,7 @@ impl CellStatus {
             },
         }
     }
-    fn colour(self) -> RGBColor {
+    pub(crate) fn colour(self) -> RGBColor {
         match self {
             CellStatus::Error => RGBColor(190, 190, 190),
             CellStatus::NotConvergent => RGBColor(214, 96, 77),
@@ -72,7 +72,7 @@ impl CellStatus {
             CellStatus::CurvatureUnbounded => RGBColor(128, 100, 180),
         }
     }
-    fn label(self, charmap: bool) -> &'static str {
+    pub(crate) fn label(self, charmap: bool) -> &'static str {
         match self {
             CellStatus::Error => "not analysable",
             CellStatus::NotConvergent => "does not converge (λ0 = 1 not simple and dominant)",

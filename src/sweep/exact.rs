@@ -33,11 +33,14 @@
 //! followed: where a piece has a non-real eigenvalue, the output says its
 //! intervals are not proved exact.
 
+pub mod curvature;
+
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use serde::Serialize;
 
 use crate::certify::spectrum::analysis_orbits;
 use crate::certify::{certify_analysis, Verdict as CertVerdict};
+use crate::curvature::CurvatureClass;
 use crate::dft::Orbits;
 use crate::error::Error;
 use crate::matrix::assemble_rows;
@@ -69,6 +72,10 @@ pub struct ExactSweep {
     /// floating-point spectrum alone: the certificate costs seconds per
     /// point at higher valences)
     pub certify: bool,
+    /// also the sets of each curvature class (`sweep --exact --curvature`,
+    /// [`curvature`]): more candidates (where |μ| = λ1² can happen) and the
+    /// second-order analysis at every decided point
+    pub curvature: bool,
 }
 
 /// A real algebraic endpoint, exactly and as a decimal.
@@ -107,6 +114,19 @@ pub struct ExactInterval {
     pub to_root: RealRoot,
 }
 
+/// The sets of the swept parameter per curvature class.
+#[derive(Clone, Debug, Serialize)]
+pub struct CurvatureSets {
+    pub zero: Vec<ExactInterval>,
+    pub bounded: Vec<ExactInterval>,
+    pub unbounded: Vec<ExactInterval>,
+    /// the candidates where |x| = y² for a root x of a block and a root y
+    /// of λ1's block (|μ| = λ1² can only happen at these, or on whole pieces)
+    pub square_candidates: Vec<Endpoint>,
+    /// candidate points whose class could not be decided (in no set)
+    pub undecided: Vec<String>,
+}
+
 /// The exact sets at one valence.
 #[derive(Clone, Debug, Serialize)]
 pub struct ValenceSets {
@@ -126,6 +146,9 @@ pub struct ValenceSets {
     pub not_exact_because: Vec<String>,
     /// the pieces and candidate points decided, with what evidence
     pub decisions: Vec<Decision>,
+    /// the sets of each curvature class (with `curvature` asked)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub curvature: Option<CurvatureSets>,
 }
 
 /// The verdict at one point of t.
@@ -144,6 +167,15 @@ pub struct Decision {
     /// candidate, or a candidate decided from its neighbours)
     #[serde(skip)]
     pub point: Option<Rational>,
+    /// the curvature class here (with `--curvature`; None: not asked, or
+    /// not decided at this candidate)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub curvature_class: Option<crate::curvature::CurvatureClass>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub curvature_evidence: Option<String>,
+    /// the class holds on a neighbourhood (zero, or |μ| > λ² strictly)
+    #[serde(skip)]
+    pub curvature_strict: bool,
 }
 
 /// A polynomial in x (lowest first) with coefficients polynomials in t.
@@ -268,20 +300,28 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
         not_exact.push("a block's characteristic polynomial has non-real coefficients".to_string());
     }
     // candidates
-    let mut cands: Vec<RealRoot> = Vec::new();
     let deriv = |p: &BiPoly| -> BiPoly {
         p.iter().enumerate().skip(1).map(|(k, c)| c.clone() * TPoly::int(k as i64)).collect()
     };
     let negated = |p: &BiPoly| -> BiPoly {
         p.iter().enumerate().map(|(k, c)| if k % 2 == 1 { -c.clone() } else { c.clone() }).collect()
     };
-    let mut pairs: Vec<(BiPoly, BiPoly)> = Vec::new();
+    // each pair with the kind of event its common roots mark
+    let mut pairs: Vec<(BiPoly, BiPoly, Family)> = Vec::new();
     for (a, pa) in polys.iter().enumerate() {
-        pairs.push((pa.clone(), deriv(pa)));
-        pairs.push((pa.clone(), negated(pa)));
+        pairs.push((pa.clone(), deriv(pa), Family::Meeting));
+        pairs.push((pa.clone(), negated(pa), Family::Opposite));
         for pb in &polys[a + 1..] {
-            pairs.push((pa.clone(), pb.clone()));
-            pairs.push((pa.clone(), negated(pb)));
+            pairs.push((pa.clone(), pb.clone(), Family::Meeting));
+            pairs.push((pa.clone(), negated(pb), Family::Opposite));
+        }
+    }
+    if s.curvature {
+        // λ1 lives in blocks 1 and g − 1 (Reif's condition as `spectrum`
+        // tests it); without rotations (one block) it is in block 0
+        let lambda_polys: Vec<BiPoly> = if blocks.len() >= 3 { vec![charpoly(&blocks[1])] } else { polys.clone() };
+        for (a, b) in curvature::square_pairs(&polys, &lambda_polys) {
+            pairs.push((a, b, Family::Square));
         }
     }
     trace(|| {
@@ -291,7 +331,8 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
             polys.iter().map(|p| (p.len() - 1, p.iter().map(TPoly::degree).max())).collect::<Vec<_>>()
         )
     });
-    for (a, b) in &pairs {
+    let mut cands: Vec<(RealRoot, Family)> = Vec::new();
+    for (a, b, family) in &pairs {
         let r = first_subresultant(a, b)?;
         trace(|| {
             format!(
@@ -308,32 +349,39 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
         }
         trace(|| format!("n = {n}: norm of degree {}", r.degree()));
         for root in sturm::isolate(&r, &s.lo, &s.hi) {
-            cands.push(root);
+            cands.push((root, *family));
         }
     }
     trace(|| format!("n = {n}: {} candidates before merging", cands.len()));
     // merge equal candidates, drop the range ends
-    let mut merged: Vec<RealRoot> = Vec::new();
-    'next: for mut c in cands {
+    // (with the families each candidate came from: a square-family root is
+    // where |μ| = λ1² can hold)
+    let mut merged: Vec<(RealRoot, Vec<Family>)> = Vec::new();
+    'next: for (mut c, family) in cands {
         if c.rational.as_ref().is_some_and(|x| x == &s.lo || x == &s.hi) {
             continue;
         }
-        for m in merged.iter_mut() {
+        for (m, families) in merged.iter_mut() {
             if sturm::same_root(m, &mut c) {
                 // keep the common factor as the defining polynomial
                 let g = sturm::primitive(&m.poly.gcd(&c.poly));
                 if g.degree() >= 1 && g.degree() < m.poly.degree() {
                     m.poly = g;
                 }
+                if !families.contains(&family) {
+                    families.push(family);
+                }
                 continue 'next;
             }
         }
-        merged.push(c);
+        merged.push((c, vec![family]));
     }
-    for c in merged.iter_mut() {
+    for (c, _) in merged.iter_mut() {
         c.recognise_rational();
     }
-    merged.sort_by(|a, b| a.mid().cmp(&b.mid()));
+    merged.sort_by(|a, b| a.0.mid().cmp(&b.0.mid()));
+    let square_family: Vec<bool> = merged.iter().map(|(_, f)| f.contains(&Family::Square)).collect();
+    let merged: Vec<RealRoot> = merged.into_iter().map(|(c, _)| c).collect();
     trace(|| format!("n = {n}: {} candidates", merged.len()));
     // sample points of the open pieces
     let lo_root = RealRoot::exact(s.lo.clone());
@@ -370,6 +418,7 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
     decisions.push(at_lo.clone());
     decisions.push(at_hi.clone());
     let mut at_cand = Vec::new();
+    let mut undecided: Vec<String> = Vec::new();
     for (k, c) in merged.iter().enumerate() {
         let (l, r) = (&piece[k], &piece[k + 1]);
         let mut d = Decision {
@@ -380,6 +429,9 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
             evidence: "exact (the condition is open in t and fails next to it)".into(),
             all_real: None,
             point: None,
+            curvature_class: s.curvature.then_some(CurvatureClass::NotApplicable),
+            curvature_evidence: s.curvature.then(|| "exact (not C¹ here: the first-order test fails)".to_string()),
+            curvature_strict: false,
         };
         if (l.convergent && r.convergent) || (l.c1_spectral && r.c1_spectral) {
             let (t, label) = match &c.rational {
@@ -397,13 +449,41 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
             d.evidence = format!("{}{near}", here.evidence);
             d.at = label;
             d.point = c.rational.clone();
+            if s.curvature && d.c1_spectral {
+                let class = here.curvature_class.unwrap_or(CurvatureClass::NotApplicable);
+                // |μ| = λ1² exactly (bounded, or a Jordan block at λ1²)
+                // can only hold at a rational point or on a root of the
+                // square family; at an irrational candidate of no such
+                // family a nearby point's "equal within tolerance" is not
+                // evidence of equality here
+                if c.rational.is_none() && curvature::needs_equality(class, here.curvature_strict) && !square_family[k]
+                {
+                    d.curvature_class = None;
+                    d.curvature_evidence = None;
+                    undecided.push(format!(
+                        "{} = {}: |μ| = λ1² within tolerance nearby, but no |x| = y² relation vanishes there",
+                        s.param, d.at
+                    ));
+                } else {
+                    d.curvature_class = Some(class);
+                    d.curvature_strict = here.curvature_strict;
+                    d.curvature_evidence = here.curvature_evidence.as_ref().map(|e| {
+                        let why = if square_family[k] && c.rational.is_none() {
+                            "; the candidate is a root of the |x| = y² family"
+                        } else {
+                            ""
+                        };
+                        format!("{e}{near}{why}")
+                    });
+                }
+            }
         }
         at_cand.push(d.clone());
         decisions.push(d);
     }
     trace(|| format!("n = {n}: decided"));
     let exact = not_exact.is_empty();
-    let sets = |pick: fn(&Decision) -> bool| -> Vec<ExactInterval> {
+    let sets = |pick: &dyn Fn(&Decision) -> bool, evidence_of: &dyn Fn(&Decision) -> &str| -> Vec<ExactInterval> {
         // the sequence lo, piece 0, cand 0, piece 1, ..., piece k, hi
         let mut seq: Vec<(Option<&RealRoot>, &Decision)> = Vec::new();
         seq.push((Some(&fences[0]), &at_lo));
@@ -435,7 +515,7 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
                 Some(r) => (r, true),
                 None => (seq[end + 1].0.expect("a piece precedes a fence"), false),
             };
-            let evidence = weakest(seq[start..=end].iter().map(|e| e.1.evidence.as_str()));
+            let evidence = weakest(seq[start..=end].iter().map(|e| evidence_of(e.1)));
             out.push(ExactInterval {
                 from: endpoint(from),
                 to: endpoint(to),
@@ -450,8 +530,30 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
         }
         out
     };
-    let convergent = sets(|d| d.convergent);
-    let c1_spectral = sets(|d| d.c1_spectral);
+    fn first_order(d: &Decision) -> &str {
+        d.evidence.as_str()
+    }
+    fn class_evidence(d: &Decision) -> &str {
+        d.curvature_evidence.as_deref().unwrap_or("floating point")
+    }
+    let convergent = sets(&|d| d.convergent, &first_order);
+    let c1_spectral = sets(&|d| d.c1_spectral, &first_order);
+    let curvature = s.curvature.then(|| {
+        let class_set =
+            |class: CurvatureClass| sets(&move |d: &Decision| d.curvature_class == Some(class), &class_evidence);
+        CurvatureSets {
+            zero: class_set(CurvatureClass::Zero),
+            bounded: class_set(CurvatureClass::Bounded),
+            unbounded: class_set(CurvatureClass::Unbounded),
+            square_candidates: merged
+                .iter()
+                .zip(&square_family)
+                .filter(|(_, sq)| **sq)
+                .map(|(c, _)| endpoint(c))
+                .collect(),
+            undecided: undecided.clone(),
+        }
+    });
     Ok(ValenceSets {
         valence: n,
         field_order,
@@ -465,7 +567,19 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
         exact,
         not_exact_because: not_exact,
         decisions,
+        curvature,
     })
+}
+
+/// The event the common roots of a pair of polynomials mark.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Family {
+    /// two root branches meet (a multiplicity changes)
+    Meeting,
+    /// a branch meets another's negative (a modulus order changes)
+    Opposite,
+    /// |x| = y² for a root x of a block and a root y of λ1's block
+    Square,
 }
 
 /// The weakest evidence of several: floating point < certified < exact.
@@ -522,6 +636,20 @@ fn decide(s: &ExactSweep, n: usize, t: &Rational) -> Result<Decision, Error> {
             CertVerdict::NotProved(_) => {}
         }
     }
+    // the curvature class where asked, from the second-order analysis at
+    // this point (not applicable where the first-order test fails)
+    let (mut curvature_class, mut curvature_evidence, mut curvature_strict) = (None, None, false);
+    if s.curvature {
+        if c1 {
+            let at = curvature::class_at(scheme.as_ref(), &config)?;
+            curvature_class = Some(at.class);
+            curvature_evidence = Some(at.evidence);
+            curvature_strict = at.strict;
+        } else {
+            curvature_class = Some(CurvatureClass::NotApplicable);
+            curvature_evidence = Some(evidence.clone());
+        }
+    }
     Ok(Decision {
         at: t.to_string(),
         kind: "piece",
@@ -530,6 +658,9 @@ fn decide(s: &ExactSweep, n: usize, t: &Rational) -> Result<Decision, Error> {
         evidence,
         all_real: None,
         point: Some(t.clone()),
+        curvature_class,
+        curvature_evidence,
+        curvature_strict,
     })
 }
 

@@ -10,6 +10,7 @@
 //! as `subdlab spectrum --tag` decides it.
 
 pub mod exact;
+pub mod region;
 
 use serde::Serialize;
 
@@ -107,7 +108,7 @@ impl Grid {
         for (k, v) in params {
             if v.contains(':') {
                 if param.is_some() {
-                    return Err(Error::Input("only one parameter can be swept (NAME=START:END:STEP)".into()));
+                    return Err(Error::Input("only one parameter can be swept here (NAME=START:END:STEP; two draw their plane at one valence)".into()));
                 }
                 param = Some((k.clone(), parse_range(v)?));
             } else {

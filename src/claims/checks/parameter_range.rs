@@ -283,6 +283,22 @@ fn poly_only(text: &str) -> String {
     text.strip_prefix("the root of ").and_then(|t| t.split(" in (").next()).unwrap_or(text).to_string()
 }
 
+/// Whether a rational point lies in one of the computed intervals (its ends
+/// compared with the point exactly).
+fn in_set(t: &Rational, list: &[ExactInterval]) -> Result<bool, Error> {
+    let point = Stated::Rational(t.clone());
+    for i in list {
+        let (from, _) = compare(&i.from_root, &point)?;
+        let (to, _) = compare(&i.to_root, &point)?;
+        let after_from = from == Ordering::Less || (from == Ordering::Equal && i.from_closed);
+        let before_to = to == Ordering::Greater || (to == Ordering::Equal && i.to_closed);
+        if after_from && before_to {
+            return Ok(true);
+        }
+    }
+    Ok(false)
+}
+
 /// Where a point lies against the stated range.
 fn in_range(t: &Rational, a: &Stated, lo_closed: bool, b: &Stated, hi_closed: bool) -> Result<bool, Error> {
     let r = RealRoot::exact(t.clone());
@@ -306,6 +322,7 @@ impl ParameterRange {
             fixed,
             faces: subject.faces_for(n).map(str::to_string),
             certify: self.certified,
+            curvature: false,
         })
     }
 
@@ -410,11 +427,17 @@ impl ParameterRange {
         if !holds {
             // the second route: a rational witness where the statement fails,
             // decided by the interval certificate
-            let witness = self.witness(&sets, &a, lo_closed, &b, hi_closed)?;
+            let mut witness = self.witness(&sets, &a, lo_closed, &b, hi_closed)?;
+            if witness.is_none() {
+                // no decided point lies where they disagree: search the gaps
+                // between the ends (a disagreement on a tiny interval)
+                witness = self.gap_witness(list, &sweep, &a, lo_closed, &b, hi_closed)?;
+            }
             let Some((t, should_pass)) = witness else {
                 return Err(Error::Undecided(format!(
-                    "n = {n}: the exact sets disagree with the statement ({set_text}) only at irrational points; \
-                     no rational witness to confirm it by a second route"
+                    "n = {n}: the exact sets disagree with the statement ({set_text}) only at irrational points or \
+                     on a gap narrower than the ends' brackets (1e-24, or a stated end's enclosure); no rational \
+                     witness to confirm it by a second route"
                 )));
             };
             computed.push_str(&format!(
@@ -461,6 +484,78 @@ impl ParameterRange {
             }
             if self.asserts == "exactly" && !inside && passes {
                 return Ok(Some((t.clone(), true)));
+            }
+        }
+        Ok(None)
+    }
+
+    /// A rational witness in the gaps between the ends: the computed sets'
+    /// ends, the stated ends and the window's ends are bracketed by
+    /// rationals (a computed end's isolating interval refined below 1e-24,
+    /// a stated irrational end's outward-rounded enclosure), and in each
+    /// open gap between two consecutive disjoint brackets the simplest
+    /// rational is a point where neither the set nor the range changes
+    /// (both are unions of intervals with ends among the brackets), so
+    /// deciding that one point decides the whole gap. The point is tested
+    /// exactly — in the stated range (`in_range`) and in the computed set
+    /// (its ends against the point) — and, where the statement fails there,
+    /// returned for the certificate (`confirm`) like any other witness.
+    fn gap_witness(
+        &self,
+        list: &[ExactInterval],
+        sweep: &ExactSweep,
+        a: &Stated,
+        lo_closed: bool,
+        b: &Stated,
+        hi_closed: bool,
+    ) -> Result<Option<(Rational, bool)>, Error> {
+        use crate::numeric::sturm::simplest_between;
+        let width = Rational::new(1.into(), num_bigint::BigInt::from(10u64).pow(24));
+        let bracket_root = |r: &RealRoot| -> (Rational, Rational) {
+            let mut r = r.clone();
+            r.refine(&width);
+            match &r.rational {
+                Some(q) => (q.clone(), q.clone()),
+                None => (r.lo.clone(), r.hi.clone()),
+            }
+        };
+        let bracket_stated = |s: &Stated| -> Option<(Rational, Rational)> {
+            match s {
+                Stated::Rational(q) => Some((q.clone(), q.clone())),
+                Stated::Cyclotomic(_, e) => Some((Rational::from_float(e.lo)?, Rational::from_float(e.hi)?)),
+            }
+        };
+        let mut brackets: Vec<(Rational, Rational)> =
+            vec![(sweep.lo.clone(), sweep.lo.clone()), (sweep.hi.clone(), sweep.hi.clone())];
+        for i in list {
+            brackets.push(bracket_root(&i.from_root));
+            brackets.push(bracket_root(&i.to_root));
+        }
+        for s in [a, b] {
+            match bracket_stated(s) {
+                Some(x) => brackets.push(x),
+                None => return Ok(None),
+            }
+        }
+        brackets.sort_by(|x, y| x.0.cmp(&y.0));
+        for pair in brackets.windows(2) {
+            let (left, right) = (&pair[0], &pair[1]);
+            // overlapping brackets: the same number, or two too close to
+            // separate at this width (no gap searched between them)
+            if left.1 >= right.0 {
+                continue;
+            }
+            let t = simplest_between(&left.1, &right.0);
+            if t < sweep.lo || t > sweep.hi {
+                continue;
+            }
+            let inside = in_range(&t, a, lo_closed, b, hi_closed)?;
+            let passes = in_set(&t, list)?;
+            if inside && !passes {
+                return Ok(Some((t, false)));
+            }
+            if self.asserts == "exactly" && !inside && passes {
+                return Ok(Some((t, true)));
             }
         }
         Ok(None)
