@@ -320,16 +320,15 @@ pub fn certify_tagged(scheme: &dyn Scheme, analysis: &Analysis) -> Result<Tagged
     // [`CROSS_CHECK_SIZE`] points a decided verdict is not re-derived, as
     // the rational reduction grows much faster than the enclosures
     let wanted = !decisive(&enclosure_route.verdict) || size <= CROSS_CHECK_SIZE;
-    let rational = rational.filter(|_| wanted);
     let (exact_route, exact_route_skipped) = match rational {
-        None if !wanted => (
+        None if dense_exact.is_none() => (None, Some("a row of S is known in floating point only".to_string())),
+        None => (None, Some("a weight is irrational (in Q(ζ_N), not Q): the route needs S over Q".to_string())),
+        Some(_) if !wanted => (
             None,
             Some(format!(
                 "the enclosures decided and S has {size} points, above the {CROSS_CHECK_SIZE} re-decided exactly"
             )),
         ),
-        None if dense_exact.is_none() => (None, Some("a row of S is known in floating point only".to_string())),
-        None => (None, Some("a weight is irrational (in Q(ζ_N), not Q): the route needs S over Q".to_string())),
         Some(q) if q.iter().any(|(_, m)| m.n > MAX_EXACT_BLOCK) => {
             (None, Some(format!("a block exceeds the {MAX_EXACT_BLOCK} rows the exact route reduces over Q")))
         }
