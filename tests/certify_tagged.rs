@@ -241,7 +241,6 @@ fn the_command_line_exits_and_speaks_json_like_the_interior_certificate() {
     // bad input: one line, exit 2
     for args in [
         &["spectrum", "catmull-clark", "-n", "4", "--tag", "crease:9", "--certify"][..],
-        &["spectrum", "catmull-clark", "-n", "3", "--tag", "boundary", "--certify", "--certificate", "/tmp/x.json"],
         &["spectrum", "catmull-clark", "-n", "3", "--tag", "boundary", "--certify", "--neighbourhood", "minimal"],
     ] {
         let out = subdlab(args);
@@ -250,4 +249,78 @@ fn the_command_line_exits_and_speaks_json_like_the_interior_certificate() {
         assert_eq!(err.trim().lines().count(), 1, "{args:?}: {err}");
         assert!(err.starts_with("error:"), "{err}");
     }
+}
+
+/// The certificate document (`--certificate FILE`) re-checked by the
+/// independent `scripts/check_cert.py` (its own exact rows, reflection
+/// blocks, ball arithmetic, characteristic polynomials by interpolation and
+/// counting Schur–Cohn): accepted as written, rejected when tampered with.
+#[test]
+fn the_independent_checker_accepts_tagged_certificates_and_rejects_tampered_ones() {
+    let found = std::process::Command::new("python3").arg("--version").output().is_ok_and(|o| o.status.success());
+    if !found {
+        eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let checker = format!("{}/scripts/check_cert.py", env!("CARGO_MANIFEST_DIR"));
+    let check = |path: &std::path::Path| {
+        let out = std::process::Command::new("python3").arg(&checker).arg(path).output().unwrap();
+        (out.status.code().unwrap_or(-1), String::from_utf8_lossy(&out.stdout).to_string())
+    };
+    let write = |name: &str, args: &[&str]| {
+        let path = dir.path().join(name);
+        let mut all: Vec<&str> = vec!["spectrum"];
+        all.extend_from_slice(args);
+        all.extend_from_slice(&["--certify", "--certificate", path.to_str().unwrap()]);
+        subdlab(&all);
+        path
+    };
+    let cases = [
+        ("cc3.json", &["catmull-clark", "-n", "3", "--tag", "boundary"][..], "ACCEPTED (PROVED)"),
+        ("cc4.json", &["catmull-clark", "-n", "4", "--tag", "boundary"][..], "ACCEPTED (DISPROVED)"),
+        ("loop6.json", &["loop", "-n", "6", "--tag", "boundary"][..], "ACCEPTED (DISPROVED)"),
+        ("blz5.json", &["catmull-clark", "-n", "5", "--tag", "boundary", "-p", "blz=1"][..], "ACCEPTED (PROVED)"),
+        ("crease.json", &["catmull-clark", "-n", "7", "--tag", "crease:3"][..], "ACCEPTED (PROVED)"),
+        ("dart.json", &["loop", "-n", "6", "--tag", "dart"][..], "ACCEPTED (PROVED)"),
+    ];
+    for (name, args, want) in cases {
+        let path = write(name, args);
+        let (code, text) = check(&path);
+        assert_eq!(code, 0, "{name}: {text}");
+        assert!(text.contains(want), "{name}: {text}");
+    }
+    let tamper = |name: &str, edit: &dyn Fn(&mut serde_json::Value)| {
+        let path = dir.path().join(name);
+        let mut doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+        edit(&mut doc);
+        let bad = dir.path().join(format!("bad-{name}"));
+        std::fs::write(&bad, serde_json::to_string(&doc).unwrap()).unwrap();
+        check(&bad)
+    };
+    // the disproof claimed as a proof: the checker's own exact route says DISPROVED
+    let (code, text) = tamper("cc4.json", &|d| {
+        let t = &mut d["parts"]["tagged"];
+        t["verdict"] = "PROVED".into();
+        t["claims"]["exact_route"]["verdict"] = "PROVED".into();
+    });
+    assert_eq!(code, 1, "{text}");
+    assert!(text.contains("REJECTED"), "{text}");
+    // λ2's disc shrunk below its Gershgorin bound
+    let (code, text) = tamper("blz5.json", &|d| {
+        let t = &mut d["parts"]["tagged"];
+        let (b, c) =
+            (t["claims"]["lambda2"]["block"].as_u64().unwrap(), t["claims"]["lambda2"]["component"].as_u64().unwrap());
+        let disc = t["blocks"][b as usize]["components"][c as usize]["discs"][0].as_u64().unwrap();
+        let r = t["blocks"][b as usize]["discs"][disc as usize][2].as_f64().unwrap();
+        t["blocks"][b as usize]["discs"][disc as usize][2] = (r / 1e6).into();
+    });
+    assert_eq!(code, 1, "{text}");
+    assert!(text.contains("Gershgorin"), "{text}");
+    // a weight of S changed: the rows no longer sum to 1
+    let (code, text) = tamper("cc3.json", &|d| {
+        d["parts"]["tagged"]["rows"][0][0][1] = "1/3".into();
+    });
+    assert_eq!(code, 1, "{text}");
+    assert!(text.contains("REJECTED"), "{text}");
 }

@@ -163,14 +163,10 @@ fn certified_tagged(
     analysis: &Analysis,
     document: Option<&std::path::Path>,
 ) -> Result<i32, Error> {
-    if document.is_some() {
-        return Err(Error::Input(
-            "spectrum --tag --certify --certificate: the certificate document of a tagged vertex is not written yet \
-             (the verdict is; drop --certificate)"
-                .into(),
-        ));
-    }
     let certificate = crate::certify::tagged::certify_tagged(scheme, analysis)?;
+    if let Some(path) = document {
+        crate::certify::export::write_tagged(path, scheme, analysis, &certificate)?;
+    }
     if a.json {
         #[derive(serde::Serialize)]
         struct Certified<'a> {
