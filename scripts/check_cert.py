@@ -690,6 +690,46 @@ def roots_inside(p, r):
         f = [f[k] - c * f[d - k] for k in range(1, d + 1)]
 
 
+def roots_outside(p, r):
+    """The number of roots of p of modulus > r, or None where the counting
+    Schur–Cohn recursion meets |f_0| = |f_d| (a root of modulus r, or a
+    pair symmetric about the circle): on f = p(r x), |f_d| > |f_0| keeps
+    the count for h = (f_d f − f_0 f*)/x, |f_0| > |f_d| gives d − count(h)."""
+    f = [c * r**k for k, c in enumerate(p)]
+    sign, offset = 1, 0
+    while True:
+        while len(f) > 1 and f[-1] == 0:
+            f.pop()
+        if not f:
+            return None
+        if len(f) == 1:
+            return offset if f[0] != 0 else None
+        d = len(f) - 1
+        lead, c = f[-1], f[0]
+        if abs(lead) == abs(c):
+            return None
+        if abs(c) > abs(lead):
+            offset += sign * d
+            sign = -sign
+        f = [lead * f[k] - c * f[d - k] for k in range(1, d + 1)]
+        big = max(abs(x) for x in f)
+        if big:
+            f = [x / big for x in f]
+
+
+def count_above(p, r):
+    """roots_outside at r, else equal counts at r(1 ∓ 2^-j), j = 1..16."""
+    c = roots_outside(p, r)
+    if c is not None:
+        return c
+    for j in range(1, 17):
+        e = Fraction(1, 2**j)
+        lo, hi = roots_outside(p, r * (1 - e)), roots_outside(p, r * (1 + e))
+        if lo is not None and lo == hi:
+            return lo
+    return None
+
+
 # ------------------------------------------------------ the checker
 
 
@@ -712,9 +752,15 @@ class Checker:
         parts = get(doc, "parts", "document")
         if not isinstance(parts, dict) or not parts:
             raise Malformed("'parts' is not a non-empty object")
-        unknown = sorted(set(parts) - {"spectrum", "charmap"})
+        unknown = sorted(set(parts) - {"spectrum", "charmap", "tagged"})
         if unknown:
-            reject(f"part(s) {', '.join(unknown)}: this checker re-checks only the 'spectrum' and 'charmap' parts")
+            reject(f"part(s) {', '.join(unknown)}: this checker re-checks only the 'spectrum', 'charmap' and 'tagged' parts")
+        if "tagged" in parts:
+            if len(parts) != 1:
+                reject("a tagged document holds the tagged part alone")
+            self.ok(f"document: {doc.get('scheme')} at a tagged vertex of {doc.get('valence')} sectors, {doc.get('neighbourhood')} neighbourhood")
+            self.tagged(parts["tagged"])
+            return
         if "spectrum" not in parts:
             reject("the document has no spectrum part, on which every other part rests")
         self.ok(f"document: {doc.get('scheme')} at valence {doc.get('valence')}, {doc.get('neighbourhood')} neighbourhood")
@@ -910,6 +956,8 @@ class Checker:
 
     def block_matrix(self, m):
         """The interval Fourier block B_m (or the whole matrix), and its orbit order."""
+        if self.method == "tagged" and self.reflection is not None:
+            return self.reflection_block(m)
         if self.method == "full":
             order = list(range(self.size))
             k = len(order)
@@ -950,7 +998,12 @@ class Checker:
 
     def check_blocks(self, part):
         blocks = as_list(get(part, "blocks", "spectrum"), "blocks")
-        want = list(range(self.g)) if self.method == "dft" else [0]
+        if self.method == "dft":
+            want = list(range(self.g))
+        elif self.method == "tagged" and self.reflection is not None:
+            want = [0, 1]
+        else:
+            want = [0]
         got = [as_int(get(b, "block", "block"), "block index") for b in blocks]
         self.discs, self.components, self.failed = {}, {}, []
         # for the characteristic map: per block V, the disc rows of each
@@ -1041,6 +1094,191 @@ class Checker:
         )
         if failed:
             self.lines.append(f"  --  blocks without an enclosure (as the document says): {failed}")
+
+    # -- tagged vertices (subdlab's certify::tagged, lemmas T4 and T7)
+
+    def tagged(self, part):
+        what = "tagged"
+        self.part = part
+        self.size = as_int(get(part, "size", what), "size")
+        self.method = "tagged"
+        self.verdict = get(part, "verdict", what)
+        if self.verdict not in ("PROVED", "DISPROVED", "NOT PROVED"):
+            raise Malformed(f"unknown verdict {self.verdict!r}")
+        self.read_rows(part)
+        self.premises = {}
+        self.premise("row sums", self.check_row_sums)
+        self.reflection = None
+        refl = get(part, "reflection", what)
+        if refl is not None:
+            n = self.size
+            p = [as_int(x, "reflection image", n) for x in as_list(refl, "reflection", n)]
+            if any(p[p[a]] != a for a in range(n)):
+                reject("the reflection is not an involution")
+            # S[Pa][Pb] = S[a][b]: every non-zero entry of every row maps onto an
+            # equal entry (an entry non-zero only at (Pa, Pb) is caught from row Pa)
+            for a in range(n):
+                for b, x in self.rows[a].items():
+                    if self.rows[p[a]].get(p[b], ()) != x:
+                        reject(f"S does not commute with the reflection: S[{a}][{b}] ≠ S[{p[a]}][{p[b]}]")
+            self.reflection = p
+            self.ok("reflection: an involution that S commutes with, exactly on every entry; blocks E, O rebuilt here")
+        if self.premises["row sums"] is not None:
+            reject("the rows do not sum to 1")
+        self.check_blocks(part)
+        claims = get(part, "claims", what)
+        exact = claims.get("exact_route")
+        exact_word = self.check_tagged_exact(exact) if exact is not None else None
+        enc_word = None
+        if get(claims, "enclosures", "claims") == "PROVED":
+            self.check_tagged_proof(claims)
+            enc_word = "PROVED"
+        if self.verdict == "PROVED" and "PROVED" not in (enc_word, exact_word):
+            reject("PROVED, but neither route's proof is in the document")
+        if self.verdict == "DISPROVED" and exact_word != "DISPROVED":
+            reject("DISPROVED without the exact route's disproof (this checker re-checks no enclosure disproof of a tagged vertex)")
+        if self.verdict == "NOT PROVED":
+            self.lines.append("  --  NOT PROVED: nothing to re-check")
+
+    def reflection_block(self, m):
+        """E (m = 0) or O (m = 1) from the exact rows: E[a][b] = S[a][b] + S[a][Pb]
+        (S[a][b] where Pb = b), O[a][b] = S[a][b] − S[a][Pb], as balls."""
+        p, n = self.reflection, self.size
+        order = [b for b in range(n) if (b <= p[b] if m == 0 else b < p[b])]
+        pos = {b: i for i, b in enumerate(order)}
+        k = len(order)
+        mr = [[0] * k for _ in range(k)]
+        rr = [[0] * k for _ in range(k)]
+        for i, a in enumerate(order):
+            for c, x in self.rows[a].items():
+                vm, vr = self.field.value(x)
+                if c in pos:
+                    mr[i][pos[c]] += vm
+                    rr[i][pos[c]] += vr
+                if p[c] != c and p[c] in pos:
+                    # column b = Pc receives S[a][Pb] = S[a][c], with the block's sign
+                    mr[i][pos[p[c]]] += vm if m == 0 else -vm
+                    rr[i][pos[p[c]]] += vr
+        zero = [[0] * k for _ in range(k)]
+        return order, (mr, [r[:] for r in zero], rr, [r[:] for r in zero])
+
+    def tagged_component(self, claim, what):
+        if claim is None:
+            reject(f"PROVED by the enclosures names no {what}")
+        m = as_int(get(claim, "block", what), f"{what} block")
+        i = as_int(get(claim, "component", what), f"{what} component")
+        if m not in self.components or i >= len(self.components[m]):
+            reject(f"{what}: no component {i} in block {m}")
+        return m, i
+
+    def check_tagged_proof(self, claims):
+        """Lemma T4 on the discs recomputed above."""
+        named = {w: self.tagged_component(claims.get(w), w) for w in ("lambda0", "lambda1", "lambda2")}
+        if len(set(named.values())) != 3:
+            reject("λ0, λ1 and λ2 must be three different components")
+        one = Fraction(1)
+        (m0, i0) = named["lambda0"]
+        c0 = self.components[m0][i0]
+        if len(c0) != 1 or not holds(c0[0], one):
+            reject("λ0's component is not a single disc holding 1")
+        for m, comps in self.components.items():
+            for i, c in enumerate(comps):
+                if (m, i) != (m0, i0) and any(holds(d, one) for d in c):
+                    reject(f"block {m} component {i} may hold 1 too: λ0 = 1 is not separated")
+        lams = []
+        for w in ("lambda1", "lambda2"):
+            m, i = named[w]
+            c = self.components[m][i]
+            if len(c) != 1:
+                reject(f"{w}'s component holds {len(c)} eigenvalues")
+            d = c[0]
+            mirror = Disc(d.re, -d.im, d.r)
+            if not meets_real_axis(d) or any(not disjoint(mirror, o) for j, oc in enumerate(self.components[m]) if j != i for o in oc):
+                reject(f"{w} is not shown real (its mirror image meets another component of block {m})")
+            # every real point of the disc is > 0: re > 0 and r² − im² < re²
+            if not (d.re > 0 and d.r * d.r - d.im * d.im < d.re * d.re):
+                reject(f"{w} is not shown positive")
+            if not mod_separated(c0[0], d):
+                reject(f"{w} is not shown below λ0 = 1")
+            lams.append(d)
+        for m, comps in self.components.items():
+            for i, c in enumerate(comps):
+                if (m, i) in named.values():
+                    continue
+                for o in c:
+                    if not all(mod_separated(d, o) for d in lams):
+                        reject(f"block {m} component {i} is not shown below λ2 in modulus")
+        self.ok("PROVED by the enclosures (lemma T4): λ0 = 1 alone and simple, λ1 and λ2 single real positive "
+                "eigenvalues below it, every other disc below both in modulus")
+
+    def check_tagged_exact(self, claim):
+        """Lemma T7 recomputed from the rows: this checker's characteristic
+        polynomials (determinants at 0..N, Newton interpolation), ranks and
+        counting Schur–Cohn."""
+        if self.field.order != 1:
+            reject("the exact route claims S over Q, but the rows lie in a larger field")
+        n = self.size
+        dense = [[Fraction(0)] * n for _ in range(n)]
+        for a, row in enumerate(self.rows):
+            for b, x in row.items():
+                dense[a][b] = x[0] if x else Fraction(0)
+        blocks = [dense]
+        if self.reflection is not None:
+            p = self.reflection
+            blocks = []
+            for m in (0, 1):
+                order = [b for b in range(n) if (b <= p[b] if m == 0 else b < p[b])]
+                blk = [[dense[a][b] if p[b] == b else dense[a][b] + (1 if m == 0 else -1) * dense[a][p[b]] for b in order] for a in order]
+                blocks.append(blk)
+        poly = [Fraction(1)]
+        for blk in blocks:
+            cp = charpoly_by_interpolation(blk)
+            prod = [Fraction(0)] * (len(poly) + len(cp) - 1)
+            for i, x in enumerate(poly):
+                for j, y in enumerate(cp):
+                    prod[i + j] += x * y
+            poly = prod
+        m1, p1 = root_multiplicity(poly, Fraction(1))
+        if m1 != as_int(get(claim, "one_multiplicity", "exact route"), "one_multiplicity"):
+            reject(f"1 has multiplicity {m1}, not the claimed {claim['one_multiplicity']}")
+        word = get(claim, "verdict", "exact route")
+        if m1 >= 2:
+            verdict = "DISPROVED"
+        elif claim.get("r") is None:
+            verdict = "NOT PROVED"
+        else:
+            r = as_ratio(claim["r"], "r")
+            m, q = root_multiplicity(p1, r)
+            c = count_above(q, r)
+            if c is None:
+                reject(f"the count of eigenvalues above {r} in modulus is not decided here")
+            geo = n - sum(rank([[blk[i][j] - (r if i == j else 0) for j in range(len(blk))] for i in range(len(blk))]) for blk in blocks)
+            if (m, c) != (claim.get("algebraic"), claim.get("above")):
+                reject(f"r = {r}: multiplicity {m} and {c} above it, not the claimed {claim.get('algebraic')} and {claim.get('above')}")
+            if (c, m) == (0, 2):
+                verdict = "PROVED" if geo == 2 else "DISPROVED"
+                if geo != claim.get("geometric"):
+                    reject(f"r = {r}: geometric multiplicity {geo}, not the claimed {claim.get('geometric')}")
+            elif m >= 2 and c <= 1:
+                verdict = "DISPROVED"
+            elif (c, m) == (1, 1):
+                at_r = sum(x * r**k for k, x in enumerate(q))
+                mu_above = (at_r > 0) != (q[-1] > 0)
+                above_one = count_above(q, Fraction(1))
+                if not mu_above:
+                    verdict = "DISPROVED"
+                elif above_one == 0:
+                    verdict = "PROVED"
+                elif above_one is None:
+                    verdict = "NOT PROVED"
+                else:
+                    verdict = "DISPROVED"
+            else:
+                verdict = "NOT PROVED"
+        if verdict != word:
+            reject(f"the exact route recomputed here gives {verdict}, the document claims {word}")
+        self.ok(f"exact route (lemma T7) recomputed over Q from the rows: {verdict}")
+        return verdict
 
     # -- the verdict
 

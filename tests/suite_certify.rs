@@ -19,5 +19,6 @@ mod certify_charmap;
 mod certify_difference;
 mod certify_nonbox;
 mod certify_soundness;
+mod certify_tagged;
 mod cyclotomic;
 mod every_valence;

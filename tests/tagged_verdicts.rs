@@ -617,8 +617,9 @@ fn blz_is_hoppe_at_the_regular_boundary_and_checks_its_range() {
 }
 
 /// The claims file recording these verdicts (subject key `tag`) verifies
-/// with every verdict the one it records; a tagged curvature claim is
-/// refused in one line.
+/// with every verdict the one it records, the spectral ones also by a
+/// certified second route (`certified = true`: `certify::tagged`); a
+/// tagged curvature claim is refused in one line.
 #[test]
 fn the_boundary_claims_file_verifies() {
     let exe = env!("CARGO_BIN_EXE_subdlab");
@@ -630,9 +631,25 @@ fn the_boundary_claims_file_verifies() {
     assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let claims = v[0]["claims"].as_array().unwrap();
-    assert_eq!(claims.len(), 11);
+    assert_eq!(claims.len(), 18);
     for c in claims {
         assert_eq!(c["verdict"], "HOLDS", "{c}");
+    }
+    // every spectral verdict of the first routes (floating point) has a
+    // certified second route, which names its evidence
+    let ids: Vec<&str> = claims.iter().map(|c| c["id"].as_str().unwrap()).collect();
+    for (first, second) in [
+        ("cc.boundary.regular", "cc.boundary.regular.certified"),
+        ("cc.boundary.one-quad", "cc.boundary.one-quad.certified"),
+        ("cc.boundary.hoppe-defective", "cc.boundary.hoppe-defective.certified"),
+        ("cc.boundary.blz", "cc.boundary.blz.certified"),
+        ("loop.boundary.hoppe-defective", "loop.boundary.hoppe-defective.certified"),
+    ] {
+        assert!(ids.contains(&first) && ids.contains(&second), "{first} / {second}");
+    }
+    for c in claims.iter().filter(|c| c["id"].as_str().unwrap().ends_with(".certified")) {
+        let computed = c["computed"].as_str().unwrap();
+        assert!(computed.contains("certified sector criterion") && computed.contains("decided by"), "{c}");
     }
     let dir = std::env::temp_dir().join(format!("subdlab-tagged-claims-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();

@@ -242,6 +242,95 @@ pub fn write_spectrum(
     write(path, &doc)
 }
 
+/// The tagged part (`certify::tagged`): the exact rows, the reflection
+/// (E and O are rebuilt from them by a checker), each block's verified
+/// diagonalisation and discs, and the components and exact claims the
+/// verdict names.
+pub fn tagged_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &super::tagged::TaggedCertificate) -> Value {
+    let s = &analysis.spectrum;
+    let rows = all_exact_rows(scheme, analysis);
+    let inexact: Vec<usize> = rows.iter().enumerate().filter(|(_, r)| r.is_none()).map(|(k, _)| k).collect();
+    let rows: Vec<Option<Vec<(usize, ExactValue)>>> =
+        rows.iter().map(|r| r.as_ref().map(|r| r.iter().map(|(c, w)| (*c, exact_value(w))).collect())).collect();
+    let blocks: Vec<Value> = cert
+        .blocks
+        .iter()
+        .enumerate()
+        .map(|(i, b)| {
+            let (v, r) = match &b.diagonalisation {
+                Some(d) => (Some(matrix(&d.v)), Some(matrix(&d.r))),
+                None => (None, None),
+            };
+            let discs: Vec<[f64; 3]> =
+                b.diagonalisation.iter().flat_map(|d| &d.discs).map(|d| [d.re, d.im, d.radius]).collect();
+            let components: Vec<Value> =
+                b.components.iter().map(|c| json!({ "discs": c.rows, "count": c.count })).collect();
+            json!({
+                "block": i,
+                "name": b.name,
+                "size": b.size,
+                "v": v,
+                "r": r,
+                "epsilon": b.epsilon,
+                "discs": discs,
+                "components": components,
+                "failure": b.failure,
+            })
+        })
+        .collect();
+    let index = |name: &str| cert.blocks.iter().position(|b| b.name == name);
+    let named = |n: &Option<super::tagged::Named>| {
+        n.as_ref().map(|n| json!({ "block": index(n.block), "component": n.component }))
+    };
+    let e = &cert.enclosure_route;
+    let reason = |v: &Verdict| match v {
+        Verdict::Proved => None,
+        Verdict::Disproved(r) | Verdict::NotProved(r) => Some(r.clone()),
+    };
+    json!({
+        "statement": cert.statement,
+        "verdict": cert.verdict.word(),
+        "reason": reason(&cert.verdict),
+        "conditional": cert.conditional,
+        "decided_by": cert.decided_by,
+        "tag": analysis.discovered.config.tagging.map(|t| t.name()),
+        "size": s.labels.len(),
+        "labels": s.labels.iter().map(|l| l.name.as_str()).collect::<Vec<_>>(),
+        "exact": inexact.is_empty(),
+        "inexact_rows": inexact,
+        "field": cert.premises.field,
+        "rows": rows,
+        "reflection": cert.reflection,
+        "premises": cert.premises,
+        "blocks": blocks,
+        "claims": {
+            "enclosures": e.verdict.word(),
+            "lambda0": named(&e.lambda0),
+            "lambda1": named(&e.lambda1),
+            "lambda2": named(&e.lambda2),
+            "exact_route": cert.exact_route.as_ref().map(|x| json!({
+                "verdict": x.verdict.word(),
+                "one_multiplicity": x.one_multiplicity,
+                "r": x.r,
+                "algebraic": x.algebraic,
+                "geometric": x.geometric,
+                "above": x.above,
+            })),
+        },
+    })
+}
+
+/// The tagged certificate's document, written to `path`.
+pub fn write_tagged(
+    path: &std::path::Path,
+    scheme: &dyn Scheme,
+    analysis: &Analysis,
+    cert: &super::tagged::TaggedCertificate,
+) -> Result<(), Error> {
+    let doc = document(analysis, vec![("tagged", tagged_part(scheme, analysis, cert))]);
+    write(path, &doc)
+}
+
 /// Documents above this size keep the spectral part only (with
 /// `charmap_omitted` saying why): the exact stencil DAG of a high-valence net
 /// at five levels would otherwise reach hundreds of megabytes.

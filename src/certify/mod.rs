@@ -27,6 +27,10 @@
 //!   rules, box-spline (or non-box S_3^1) Jacobian bounds per ring face and a
 //!   certified winding number; with the spectral verdict, Reif's criterion
 //!   as a whole;
+//! - [`tagged`]: the spectral part of the sector criterion at a tagged
+//!   vertex (boundary, corner, crease, dart), proved on the reflection's even
+//!   and odd blocks by enclosures and, where S is rational, exactly over Q
+//!   (counting Schur–Cohn, ranks);
 //! - [`s31`]: the refinement mask of the four-directional S_3^1 spline
 //!   (non-box subdivision's regular part), derived from its two generators'
 //!   definition, which `charmap` compares the rules with.
@@ -42,6 +46,7 @@ pub mod power;
 pub mod s31;
 pub mod spectrum;
 mod step_rotation;
+pub mod tagged;
 
 pub use charmap::{certify_charmap, CharMapCertificate};
 pub use spectrum::{certify_analysis, certify_spectrum, SpectrumCertificate, Verdict};

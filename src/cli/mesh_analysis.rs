@@ -133,7 +133,9 @@ fn certified_spectrum(
     document: Option<&std::path::Path>,
 ) -> Result<i32, Error> {
     let (scheme, analysis) = run_analysis(a, scheme)?;
-    super::commands::refuse_tagged("spectrum --certify", &analysis.discovered.config)?;
+    if analysis.discovered.config.tagging.is_some() {
+        return certified_tagged(a, scheme.as_ref(), &analysis, document);
+    }
     let certificate = crate::certify::certify_analysis(scheme.as_ref(), &analysis)?;
     if let Some(path) = document {
         crate::certify::export::write_spectrum(path, scheme.as_ref(), &analysis, &certificate)?;
@@ -150,6 +152,85 @@ fn certified_spectrum(
         out_text(&format!("{}\n{}", spectrum_table(&analysis.spectrum), certificate_table(&certificate)))?;
     }
     Ok(certified_status(&certificate.verdict, certificate.conditional))
+}
+
+/// `spectrum --tag T --certify`: the table and the certificate of the
+/// sector criterion's spectral part (`certify::tagged`); Ok holds the exit
+/// status ([`certified_status`]).
+fn certified_tagged(
+    a: &AnalysisArgs,
+    scheme: &dyn Scheme,
+    analysis: &Analysis,
+    document: Option<&std::path::Path>,
+) -> Result<i32, Error> {
+    let certificate = crate::certify::tagged::certify_tagged(scheme, analysis)?;
+    if let Some(path) = document {
+        crate::certify::export::write_tagged(path, scheme, analysis, &certificate)?;
+    }
+    if a.json {
+        #[derive(serde::Serialize)]
+        struct Certified<'a> {
+            #[serde(flatten)]
+            spectrum: &'a Spectrum,
+            certificate: &'a crate::certify::tagged::TaggedCertificate,
+        }
+        print_json(&Certified { spectrum: &analysis.spectrum, certificate: &certificate })?;
+    } else {
+        out_text(&format!("{}\n{}", spectrum_table(&analysis.spectrum), tagged_certificate_table(&certificate)))?;
+    }
+    Ok(certified_status(&certificate.verdict, certificate.conditional))
+}
+
+/// The tagged certificate as text: the verdict, the premises, each route.
+fn tagged_certificate_table(c: &crate::certify::tagged::TaggedCertificate) -> String {
+    use crate::certify::matrix::Check;
+    let mut out = format!(
+        "certified sector criterion, spectral part: {}{}\n",
+        c.verdict.display(),
+        if c.conditional { ", given the premises marked 'identity' below" } else { "" }
+    );
+    out += &format!("  statement: {}\n", c.statement);
+    out += "  (the floating-point table above observes; where it disagrees with this certificate, the certificate \
+            decides)\n";
+    let field = c.premises.field.as_deref().unwrap_or("Q");
+    let show = |x: &Check| match x {
+        Check::Exact => format!("exact, in {field}"),
+        Check::Overlap => "identity of the rules' formulas, confirmed to interval overlap only".to_string(),
+        Check::Fails(w) => format!("fails: {w}"),
+    };
+    out += &format!("  premise row sums = 1: {}\n", show(&c.premises.row_sums_one));
+    out += &format!(
+        "  premise S commutes with the reflection keeping the sharp rays: {}\n",
+        c.premises.reflection.as_ref().map_or("no such reflection of the labelled set".to_string(), show)
+    );
+    let sizes: Vec<String> = c.blocks.iter().map(|b| format!("{} ({})", b.name, b.size)).collect();
+    let e = &c.enclosure_route;
+    out += &format!("  enclosure route (lemma T4) on the blocks {}: {}\n", sizes.join(", "), e.verdict.display());
+    for (name, n) in [("λ0", &e.lambda0), ("λ1", &e.lambda1), ("λ2", &e.lambda2)] {
+        if let Some(n) = n {
+            out += &format!("    {name} ∈ [{:.15}, {:.15}] ({} block)\n", n.enclosure.lo, n.enclosure.hi, n.block);
+        }
+    }
+    if let (Some(m), Some(g)) = (e.others_max_modulus, e.gap_lower_bound) {
+        out += &format!("    max |other eigenvalue| ≤ {m:.12e}; gap λ2 − max|other| ≥ {g:.12e}\n");
+    }
+    match (&c.exact_route, &c.exact_route_skipped) {
+        (Some(x), _) => {
+            let sizes: Vec<String> = x.blocks.iter().map(|(n, s)| format!("{n} ({s})")).collect();
+            out += &format!("  exact route (lemma T7) over Q on {}: {}\n", sizes.join(", "), x.verdict.display());
+            if let Some(r) = &x.r {
+                out += &format!(
+                    "    r = {r}: algebraic multiplicity {}, geometric {}, {} eigenvalue(s) other than 1 above it in \
+                     modulus, none of modulus r besides r (counting Schur–Cohn)\n",
+                    x.algebraic, x.geometric, x.above
+                );
+            }
+        }
+        (None, Some(why)) => out += &format!("  exact route (lemma T7): not taken ({why})\n"),
+        (None, None) => {}
+    }
+    out += &format!("  decided by: {}\n", c.decided_by.unwrap_or("neither route"));
+    out
 }
 
 /// The certificate as text: the verdict, the premises and the margins.

@@ -458,6 +458,93 @@ pub fn roots_inside_disc(p: &Poly, r: &Rational) -> bool {
     }
 }
 
+/// The number of roots of `p` (with multiplicity) of modulus strictly above
+/// r (r > 0), decided exactly; `None` when the recursion meets a singular
+/// step (|f_0| = |f_d|), which it does whenever p has a root of modulus
+/// exactly r, and may otherwise (then nothing is decided).
+///
+/// The counting form of the Schur–Cohn recursion of [`roots_inside_disc`],
+/// on f(x) = p(r·x) (real coefficients; O(f) = roots outside the closed unit
+/// disc, I(f) inside the open one; f* reversed, |f*| = |f| on |x| = 1):
+///
+/// - |f_d| > |f_0|: g = f_d·f − f_0·f* has I(g) = I(f) (Rouché), g(0) = 0
+///   and deg g = d (leading coefficient f_d² − f_0² ≠ 0), so h = g/x has
+///   degree d − 1, I(h) = I(f) − 1 and O(h) = O(f);
+/// - |f_0| > |f_d|: g = f_0·f* − f_d·f = −(f_d·f − f_0·f*) has I(g) =
+///   I(f*) = O(f) (f(0) ≠ 0: the roots of f* are the reciprocals), so
+///   O(f) = I(h) + 1 = d − O(h);
+/// - a non-zero constant has no roots.
+///
+/// A root ζ on the unit circle is a root of f* too (f*(ζ) = ζ^d·conj f(ζ)),
+/// hence of g and h: it would survive to the final constant, which has no
+/// roots. So a recursion that ends without a singular step proves that f has
+/// no root on the circle, which the two Rouché steps assumed. The steps
+/// divide by no coefficient: the same integer recursion as
+/// [`roots_inside_disc`] (positive factors and contents move no root; the
+/// second case's sign flip moves none either).
+pub fn roots_outside_disc(p: &Poly, r: &Rational) -> Option<usize> {
+    assert!(r.is_positive(), "the disc's radius must be positive");
+    let mut f = scaled_integer_coefficients(p, r);
+    // O(p) = Σ of the steps' contributions: each step either keeps the count
+    // (a) or reflects it (b): O(f) = d − O(h); track it as O = sign·O(h) + offset
+    let (mut sign, mut offset) = (1i64, 0i64);
+    loop {
+        while f.len() > 1 && f.last().is_some_and(|c| c.is_zero()) {
+            f.pop();
+        }
+        match f.len() {
+            0 => return None,
+            1 => return if f[0].is_zero() { None } else { usize::try_from(offset).ok() },
+            _ => {}
+        }
+        let d = f.len() - 1;
+        let (lead, c) = (f[d].clone(), f[0].clone());
+        let (al, ac) = (lead.abs(), c.abs());
+        if al == ac {
+            return None;
+        }
+        if ac > al {
+            // O(f) = d − O(h): O = sign·(d − O(h)) + offset
+            offset += sign * d as i64;
+            sign = -sign;
+        }
+        let mut h: Vec<BigInt> = (1..=d).map(|k| &lead * &f[k] - &c * &f[d - k]).collect();
+        let g = h.iter().fold(BigInt::zero(), |g, x| if g.is_one() { g } else { num_integer::Integer::gcd(&g, x) });
+        if !g.is_zero() && !g.is_one() {
+            h.iter_mut().for_each(|x| *x /= &g);
+        }
+        f = h;
+    }
+}
+
+/// The number of roots of `p` of modulus above r, with the proof that none
+/// has modulus exactly r; `None` when that is not shown (a root of modulus
+/// r, or the recursion singular at every radius tried).
+///
+/// [`roots_outside_disc`] at r itself first. Its recursion is singular not
+/// only for a root on the circle but also, spuriously, for a pair of roots
+/// symmetric about it (z and r²/z̄: 1/2 and 1/8 about r = 1/4). Then the
+/// counts at ρ− = r(1 − 2^−j) and ρ+ = r(1 + 2^−j), j = 1..16: when both are
+/// decided and equal, no root has modulus in [ρ−, ρ+] ∋ r (the roots above
+/// ρ− and above ρ+ are the same ones), so the count above r is theirs.
+pub fn roots_above(p: &Poly, r: &Rational) -> Option<usize> {
+    if let Some(c) = roots_outside_disc(p, r) {
+        return Some(c);
+    }
+    let mut step = Rational::one();
+    for _ in 0..16 {
+        step = step / Rational::from_integer(2.into());
+        let below = roots_outside_disc(p, &(r * (Rational::one() - &step)));
+        let above = roots_outside_disc(p, &(r * (Rational::one() + &step)));
+        if let (Some(b), Some(a)) = (below, above) {
+            if a == b {
+                return Some(a);
+            }
+        }
+    }
+    None
+}
+
 /// The coefficients of p(r·x) times a positive integer that clears every
 /// denominator (r = a/b: b^d · p(a x / b), then the lcm of p's denominators).
 fn scaled_integer_coefficients(p: &Poly, r: &Rational) -> Vec<BigInt> {
@@ -616,6 +703,51 @@ mod tests {
         assert_eq!(f[0], Poly::from_roots(&[q(1, 1)]));
         assert_eq!(f[1], Poly::from_roots(&[q(1, 2)]));
         assert_eq!(f[2], x2p1);
+    }
+
+    /// Products of known factors: the count is the number of roots of
+    /// modulus above r, read off the factors by hand.
+    #[test]
+    fn roots_outside_disc_counts_the_roots_above_r() {
+        let times = |a: &Poly, b: &Poly| {
+            let mut coeffs = vec![q(0, 1); a.coeffs.len() + b.coeffs.len() - 1];
+            for (i, c) in a.coeffs.iter().enumerate() {
+                for (j, d) in b.coeffs.iter().enumerate() {
+                    coeffs[i + j] = &coeffs[i + j] + c * d;
+                }
+            }
+            Poly { coeffs }
+        };
+        // (x − 2)(x − 1/3)(x + 3)(x² + 1/4): above 1 are 2 and −3 (±i/2 inside)
+        let p =
+            times(&Poly::from_roots(&[q(2, 1), q(1, 3), q(-3, 1)]), &Poly { coeffs: vec![q(1, 4), q(0, 1), q(1, 1)] });
+        assert_eq!(roots_outside_disc(&p, &q(1, 1)), Some(2));
+        // above 1/4: all five (|±i/2| = 1/2); above 5/2: −3 only; above 4: none
+        assert_eq!(roots_outside_disc(&p, &q(1, 4)), Some(5));
+        assert_eq!(roots_outside_disc(&p, &q(5, 2)), Some(1));
+        assert_eq!(roots_outside_disc(&p, &q(4, 1)), Some(0));
+        // x² + 4 (modulus 2, a complex pair) times (x − 1/3): two above 1
+        let p = times(&Poly::from_roots(&[q(1, 3)]), &Poly { coeffs: vec![q(4, 1), q(0, 1), q(1, 1)] });
+        assert_eq!(roots_outside_disc(&p, &q(1, 1)), Some(2));
+        // with 1/4 for 1/3 the moduli multiply to 1 = |f_0/f_d|: the first
+        // step is singular without a root on the circle; roots_above decides
+        let p = times(&Poly::from_roots(&[q(1, 4)]), &Poly { coeffs: vec![q(4, 1), q(0, 1), q(1, 1)] });
+        assert_eq!(roots_outside_disc(&p, &q(1, 1)), None);
+        assert_eq!(roots_above(&p, &q(1, 1)), Some(2));
+        // a root on the circle |x| = r: not decided
+        assert_eq!(roots_outside_disc(&Poly::from_roots(&[q(1, 1), q(1, 3)]), &q(1, 1)), None);
+        assert_eq!(roots_outside_disc(&Poly::from_roots(&[q(-1, 2), q(1, 3)]), &q(1, 2)), None);
+        // a root at 0 is inside
+        assert_eq!(roots_outside_disc(&Poly::from_roots(&[q(0, 1), q(3, 1)]), &q(1, 1)), Some(1));
+        // 1/2 and 1/8 are symmetric about |x| = 1/4 (1/2 · 1/8 = (1/4)²): the
+        // recursion at 1/4 is singular although no root has modulus 1/4;
+        // roots_above decides from the radii about it (1/2 above; 1/8, 1/16
+        // below): Catmull–Clark's boundary at k = 1 has this cofactor
+        let p = Poly::from_roots(&[q(1, 2), q(1, 8), q(1, 8), q(1, 16)]);
+        assert_eq!(roots_outside_disc(&p, &q(1, 4)), None);
+        assert_eq!(roots_above(&p, &q(1, 4)), Some(1));
+        // a root of modulus exactly r stays undecided (−1/4 at r = 1/4)
+        assert_eq!(roots_above(&Poly::from_roots(&[q(1, 2), q(-1, 4)]), &q(1, 4)), None);
     }
 
     #[test]

@@ -55,32 +55,54 @@ impl CheckKind for SpectralC1 {
     }
 }
 
+/// An unconditional PROVED (true) or DISPROVED (false), else why not (a
+/// verdict resting on identities confirmed only to interval overlap, or no
+/// proof: the claim asked for one).
+fn unconditional(verdict: &crate::certify::Verdict, conditional: bool, n: usize) -> Result<bool, Error> {
+    match verdict {
+        crate::certify::Verdict::Proved if !conditional => Ok(true),
+        crate::certify::Verdict::Disproved(_) if !conditional => Ok(false),
+        crate::certify::Verdict::Proved | crate::certify::Verdict::Disproved(_) => Err(Error::Undecided(format!(
+            "n = {n}: certified {} only given the premises the enclosures confirm to interval overlap (not exactly): \
+             no unconditional proof",
+            verdict.word()
+        ))),
+        crate::certify::Verdict::NotProved(why) => {
+            Err(Error::Undecided(format!("n = {n}: certificate NOT PROVED ({why})")))
+        }
+    }
+}
+
 /// The certified spectral test at every configuration side by side.
 fn certified_c1(subject: &Subject, expect: &bool, names: CertificateNames) -> Result<Finding, Error> {
-    subject.refuse_tag("the certified spectral test")?;
     over_independent_valences(subject, |subject, n| {
         let (scheme, config) = subject_config(subject, n)?;
         let options = crate::spectrum::Options { neighbourhood: kind_of(subject)?, method: None, exact: false };
         let analysis = crate::spectrum::analyse_shared(scheme.as_ref(), &config, &options)?;
+        // at a tagged vertex: the sector criterion's spectral part
+        // (`certify::tagged`: the reflection's blocks by enclosures, and
+        // exactly over Q where S is rational)
+        if config.tagging.is_some() {
+            let c = crate::certify::tagged::certify_tagged(scheme.as_ref(), &analysis)?;
+            if let Some(path) = names.path(subject, n) {
+                crate::certify::export::write_tagged(&path, scheme.as_ref(), &analysis, &c)?;
+            }
+            let got = unconditional(&c.verdict, c.conditional, n)?;
+            return Ok((
+                got == *expect,
+                if *expect { "proved".into() } else { "disproved".into() },
+                format!(
+                    "certified sector criterion {} (decided by {})",
+                    c.verdict.display(),
+                    c.decided_by.unwrap_or("neither route")
+                ),
+            ));
+        }
         let c = crate::certify::certify_analysis(scheme.as_ref(), &analysis)?;
         if let Some(path) = names.path(subject, n) {
             crate::certify::export::write_spectrum(&path, scheme.as_ref(), &analysis, &c)?;
         }
-        let got = match &c.verdict {
-        crate::certify::Verdict::Proved if !c.conditional => true,
-        crate::certify::Verdict::Disproved(_) if !c.conditional => false,
-        // a verdict resting on identities checked only to interval
-        // overlap, or no proof: the claim asked for one
-        crate::certify::Verdict::Proved | crate::certify::Verdict::Disproved(_) => {
-            return Err(Error::Undecided(format!(
-                "n = {n}: certified {} only given the premises the enclosures confirm to interval overlap (not exactly): no unconditional proof",
-                c.verdict.word()
-            )))
-        }
-        crate::certify::Verdict::NotProved(why) => {
-            return Err(Error::Undecided(format!("n = {n}: certificate NOT PROVED ({why})")))
-        }
-    };
+        let got = unconditional(&c.verdict, c.conditional, n)?;
         let gap = c.margins.gap_lower_bound.map(|g| format!(", gap ≥ {g:.6e}")).unwrap_or_default();
         Ok((
             got == *expect,
