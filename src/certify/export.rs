@@ -39,6 +39,7 @@
 //! rely on it).
 
 use super::charmap::CharMapCertificate;
+use super::discs::{Component, Diagonalisation};
 use super::matrix::mirror_map;
 use super::spectrum::{analysis_orbits, exact_rows, SpectrumCertificate, Verdict};
 use crate::error::Error;
@@ -153,26 +154,16 @@ pub fn spectrum_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &SpectrumCe
             // the row (and column) order of the block: its orbits (block 0
             // holds the fixed points too); the whole matrix: matrix order
             let block_orbits = (s.method == Method::Dft).then(|| orbits.block_orbits(b.block));
-            let (v, r) = match &b.diagonalisation {
-                Some(d) => (Some(matrix(&d.v)), Some(matrix(&d.r))),
-                None => (None, None),
-            };
-            let discs: Vec<[f64; 3]> =
-                b.diagonalisation.iter().flat_map(|d| &d.discs).map(|d| [d.re, d.im, d.radius]).collect();
-            let components: Vec<Value> =
-                b.components.iter().map(|c| json!({ "discs": c.rows, "count": c.count })).collect();
-            json!({
+            let mut block = json!({
                 "block": b.block,
                 "orbits": block_orbits,
                 "size": b.size,
-                "v": v,
-                "r": r,
                 "epsilon": b.epsilon,
-                "discs": discs,
-                "components": components,
                 "failure": b.failure,
                 "power_bound": b.power_bound,
-            })
+            });
+            add_enclosure(&mut block, &b.diagonalisation, &b.components);
+            block
         })
         .collect();
     let reason = match &cert.verdict {
@@ -257,25 +248,15 @@ pub fn tagged_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &super::tagge
         .iter()
         .enumerate()
         .map(|(i, b)| {
-            let (v, r) = match &b.diagonalisation {
-                Some(d) => (Some(matrix(&d.v)), Some(matrix(&d.r))),
-                None => (None, None),
-            };
-            let discs: Vec<[f64; 3]> =
-                b.diagonalisation.iter().flat_map(|d| &d.discs).map(|d| [d.re, d.im, d.radius]).collect();
-            let components: Vec<Value> =
-                b.components.iter().map(|c| json!({ "discs": c.rows, "count": c.count })).collect();
-            json!({
+            let mut block = json!({
                 "block": i,
                 "name": b.name,
                 "size": b.size,
-                "v": v,
-                "r": r,
                 "epsilon": b.epsilon,
-                "discs": discs,
-                "components": components,
                 "failure": b.failure,
-            })
+            });
+            add_enclosure(&mut block, &b.diagonalisation, &b.components);
+            block
         })
         .collect();
     let index = |name: &str| cert.blocks.iter().position(|b| b.name == name);
@@ -587,4 +568,21 @@ pub fn write_charmap(
         doc["charmap_omitted"] = Value::Null;
     }
     write(path, &doc)
+}
+
+/// A block's verified diagonalisation in its document: V, R, the discs and
+/// their components (null/empty where the verification failed); the same
+/// fields for the Fourier blocks of an interior vertex and the reflection
+/// blocks of a tagged one, which the checker reads alike.
+fn add_enclosure(block: &mut Value, diagonalisation: &Option<Diagonalisation>, components: &[Component]) {
+    let (v, r) = match diagonalisation {
+        Some(d) => (Some(matrix(&d.v)), Some(matrix(&d.r))),
+        None => (None, None),
+    };
+    let discs: Vec<[f64; 3]> = diagonalisation.iter().flat_map(|d| &d.discs).map(|d| [d.re, d.im, d.radius]).collect();
+    let components: Vec<Value> = components.iter().map(|c| json!({ "discs": c.rows, "count": c.count })).collect();
+    let fields = [("v", json!(v)), ("r", json!(r)), ("discs", json!(discs)), ("components", json!(components))];
+    if let Value::Object(map) = block {
+        map.extend(fields.into_iter().map(|(k, x)| (k.to_string(), x)));
+    }
 }

@@ -10,8 +10,8 @@ use plotters::prelude::*;
 
 use super::layout::MARGIN;
 use super::layout::{
-    block_height, draw_lines, em, fit, place_inside, place_outside, plan_axes, region_area, title_lines, Axis, Legend,
-    LegendPosition, Swatch, Ticks,
+    block_height, draw_lines, em, fit, plan_with_legend, region_area, title_lines, Axis, Legend, LegendPosition,
+    Swatch, Ticks,
 };
 use super::{err, square_window, tick_label, Figure, Style};
 use crate::charmap::{wedge, CharMap};
@@ -111,20 +111,14 @@ impl Figure for RingFigure<'_> {
             };
             let title_h =
                 if lines.is_empty() { 0.0 } else { block_height(lines.len(), title_size) + 0.4 * em(title_size) };
-            let mut legend = Legend { entries: entries.clone(), size: font(14) };
+            let legend = Legend { entries: entries.clone(), size: font(14) };
             let position = self.style.legend.unwrap_or(LegendPosition::Auto);
-            let mut region = (MARGIN, MARGIN + title_h, MARGIN, MARGIN);
-            let mut placed = place_outside(&mut legend, position, (w, h), &mut region)?;
             let x = Axis { range: xr, desc: Some("x".into()), ticks: Ticks::Auto(&fmt) };
             let y = Axis { range: yr, desc: Some("y".into()), ticks: Ticks::Auto(&fmt) };
-            let axes = plan_axes((w - region.0 - region.2, h - region.1 - region.3), &x, &y, font(16), font(18), true)?;
-            let (x0, y0, x1, y1) = axes.plot;
-            if let Some(inside) =
-                place_inside(&mut legend, position, (x0 + region.0, y0 + region.1, x1 + region.0, y1 + region.1))?
-            {
-                placed = Some(inside);
-            }
-            Ok((lines, title_size, placed.map(|(s, at)| (legend, s, at)), region, axes))
+            let margins = (MARGIN, MARGIN + title_h, MARGIN, MARGIN);
+            let (legend, region, axes) =
+                plan_with_legend(legend, position, (w, h), margins, &x, &y, (font(16), font(18)), true)?;
+            Ok((lines, title_size, legend, region, axes))
         })?;
         let (title_text, title_size, legend, region, axes) = plan;
         draw_lines(root, &title_text, title_size, (size.0 as f64 / 2.0, MARGIN), HPos::Center)?;

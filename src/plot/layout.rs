@@ -587,6 +587,37 @@ fn tick_candidates(axis: &Axis, most: usize) -> Vec<Vec<(f64, String)>> {
     }
 }
 
+/// A legend with its place, as a figure draws it.
+pub type PlacedLegend = (Legend, LegendShape, (f64, f64));
+
+/// The layout every figure with axes and a legend shares: the legend outside
+/// the plot where its position puts it (taking its margins from `region`,
+/// which starts as the figure's margins below the title), the axes planned
+/// in the area left, then the legend moved into the plot when its position
+/// is an inside one. Returns the placed legend (none when it has no
+/// entries), the final margins and the axes.
+#[allow(clippy::too_many_arguments)]
+pub fn plan_with_legend(
+    mut legend: Legend,
+    position: LegendPosition,
+    (w, h): (f64, f64),
+    mut region: (f64, f64, f64, f64),
+    x: &Axis,
+    y: &Axis,
+    (label_size, desc_size): (f64, f64),
+    square: bool,
+) -> Result<(Option<PlacedLegend>, (f64, f64, f64, f64), AxesPlan), NoFit> {
+    let mut placed = place_outside(&mut legend, position, (w, h), &mut region)?;
+    let axes = plan_axes((w - region.0 - region.2, h - region.1 - region.3), x, y, label_size, desc_size, square)?;
+    let (x0, y0, x1, y1) = axes.plot;
+    if let Some(inside) =
+        place_inside(&mut legend, position, (x0 + region.0, y0 + region.1, x1 + region.0, y1 + region.1))?
+    {
+        placed = Some(inside);
+    }
+    Ok((placed.map(|(s, at)| (legend, s, at)), region, axes))
+}
+
 /// Plan the axes of a chart filling an area of `w` × `h`: label areas wide
 /// enough for the measured tick labels and descriptions, as many ticks as
 /// fit with a gap between their labels, the plot square when `square`.

@@ -7,8 +7,8 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::layout::{
-    draw_lines, draw_marker, em, fit, place_inside, place_outside, plan_axes, region_area, title_block, AxesPlan, Axis,
-    Legend, LegendPosition, LegendShape, Marker, NoFit, Swatch, Ticks, MARGIN,
+    draw_lines, draw_marker, em, fit, plan_with_legend, region_area, title_block, AxesPlan, Axis, Legend,
+    LegendPosition, LegendShape, Marker, NoFit, Swatch, Ticks, MARGIN,
 };
 use super::sweep::Bound;
 use super::{err, Style};
@@ -156,21 +156,13 @@ impl ValenceChart<'_> {
         let (w, h) = (w as f64, h as f64);
         let title_size = font(26);
         let (title, title_h) = title_block(self.style.title(self.title.clone()), title_size, w)?;
-        let mut legend = self.legend(font(17));
         let position = self.style.legend.unwrap_or(LegendPosition::Auto);
-        let mut region = (MARGIN, MARGIN + title_h, MARGIN, MARGIN);
-        let mut placed = place_outside(&mut legend, position, (w, h), &mut region)?;
         let x = Axis { range: self.x_range(), desc: Some("valence n".into()), ticks: Ticks::Integers };
         let y = Axis { range: self.y_range(), desc: Some(self.y_desc.to_string()), ticks: Ticks::Auto(y_fmt) };
-        let area = (w - region.0 - region.2, h - region.1 - region.3);
-        let axes = plan_axes(area, &x, &y, font(17), font(20), false)?;
-        let (x0, y0, x1, y1) = axes.plot;
-        if let Some(inside) =
-            place_inside(&mut legend, position, (x0 + region.0, y0 + region.1, x1 + region.0, y1 + region.1))?
-        {
-            placed = Some(inside);
-        }
-        Ok(Plan { title, title_size, legend: placed.map(|(s, at)| (legend, s, at)), region, axes })
+        let margins = (MARGIN, MARGIN + title_h, MARGIN, MARGIN);
+        let (legend, region, axes) =
+            plan_with_legend(self.legend(font(17)), position, (w, h), margins, &x, &y, (font(17), font(20)), false)?;
+        Ok(Plan { title, title_size, legend, region, axes })
     }
 
     pub fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Error>

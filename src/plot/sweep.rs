@@ -12,8 +12,8 @@ use plotters::prelude::*;
 
 use super::layout::MARGIN;
 use super::layout::{
-    draw_lines, fit, place_inside, place_outside, plan_axes, region_area, title_block, AxesPlan, Axis, Legend,
-    LegendPosition, LegendShape, Marker, NoFit, Swatch, Ticks,
+    draw_lines, fit, plan_with_legend, region_area, title_block, AxesPlan, Axis, Legend, LegendPosition, LegendShape,
+    Marker, NoFit, Swatch, Ticks,
 };
 use super::{err, Figure, Style};
 use crate::curvature::CurvatureClass;
@@ -244,25 +244,18 @@ impl SweepFigure {
         };
         let title_size = font(26);
         let (title, title_h) = title_block(self.style.title(caption), title_size, w)?;
-        let mut legend = self.legend(font(17));
         // the legend's own place is outside the grid, so it never hides cells
         let position = self.style.legend.unwrap_or(LegendPosition::Auto);
-        let mut region = (MARGIN, MARGIN + title_h, MARGIN, MARGIN);
-        let mut placed = place_outside(&mut legend, position, (w, h), &mut region)?;
         let (xr, yr) = self.ranges();
         let x = match &self.param {
             Some(p) => Axis { range: xr, desc: Some(format!("parameter {p}")), ticks: Ticks::Auto(x_fmt) },
             None => Axis { range: xr, desc: Some("(no swept parameter)".into()), ticks: Ticks::None },
         };
         let y = Axis { range: yr, desc: Some("valence n".into()), ticks: Ticks::Integers };
-        let axes = plan_axes((w - region.0 - region.2, h - region.1 - region.3), &x, &y, font(17), font(20), false)?;
-        let (x0, y0, x1, y1) = axes.plot;
-        if let Some(inside) =
-            place_inside(&mut legend, position, (x0 + region.0, y0 + region.1, x1 + region.0, y1 + region.1))?
-        {
-            placed = Some(inside);
-        }
-        Ok(Plan { title, title_size, legend: placed.map(|(s, at)| (legend, s, at)), region, axes })
+        let margins = (MARGIN, MARGIN + title_h, MARGIN, MARGIN);
+        let (legend, region, axes) =
+            plan_with_legend(self.legend(font(17)), position, (w, h), margins, &x, &y, (font(17), font(20)), false)?;
+        Ok(Plan { title, title_size, legend, region, axes })
     }
 }
 
