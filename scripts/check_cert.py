@@ -1217,11 +1217,8 @@ class Checker:
         counting Schur–Cohn."""
         if self.field.order != 1:
             reject("the exact route claims S over Q, but the rows lie in a larger field")
+        dense = self.exact_matrix()
         n = self.size
-        dense = [[Fraction(0)] * n for _ in range(n)]
-        for a, row in enumerate(self.rows):
-            for b, x in row.items():
-                dense[a][b] = x[0] if x else Fraction(0)
         blocks = [dense]
         if self.reflection is not None:
             p = self.reflection
