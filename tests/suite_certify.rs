@@ -22,3 +22,4 @@ mod certify_soundness;
 mod certify_tagged;
 mod cyclotomic;
 mod every_valence;
+mod step_rotation;

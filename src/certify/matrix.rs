@@ -29,6 +29,14 @@ pub type IntervalRows = Vec<Vec<(usize, Interval)>>;
 /// known in floating point only (a float parameter or expression).
 pub type ExactRows = Vec<Option<Vec<(usize, Cyclotomic)>>>;
 
+/// The work an orbit's exact rotation check may take: its members times the
+/// entries of its representative's row times N of their field (a bound of
+/// the coefficients of each entry). Past it (Doo–Sabin's ring 0, whose rows
+/// are dense, near valence 200) the orbit's rows are compared on their
+/// enclosures, and the premise says so: the cost of the exact rows grows
+/// with the square of the valence times the field's degree.
+pub const MAX_EXACT_ORBIT_WORK: u64 = 1 << 23;
+
 /// How a structural identity of S was checked.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(rename_all = "snake_case", tag = "status", content = "detail")]
@@ -38,7 +46,7 @@ pub enum Check {
     Exact,
     /// the identity holds to interval overlap: an entry involved is known in
     /// floating point only (or its exact rows are beyond the certificate's
-    /// work bound, `spectrum::MAX_EXACT_ORBIT_WORK`), so equality is an
+    /// work bound, [`MAX_EXACT_ORBIT_WORK`]), so equality is an
     /// identity of the rules' formulas that enclosures can confirm only to
     /// their width
     Overlap,

@@ -45,7 +45,7 @@ pub mod matrix;
 pub mod power;
 pub mod s31;
 pub mod spectrum;
-mod step_rotation;
+pub mod step_rotation;
 pub mod tagged;
 
 pub use charmap::{certify_charmap, CharMapCertificate};

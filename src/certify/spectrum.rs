@@ -594,13 +594,7 @@ fn field_order<'a>(
     order
 }
 
-/// The work an orbit's exact rotation check may take: its members times the
-/// entries of its representative's row times N of their field (a bound of
-/// the coefficients of each entry). Past it (Doo–Sabin's ring 0, whose rows
-/// are dense, near valence 200) the orbit's rows are compared on their
-/// enclosures, and the premise says so: the cost of the exact rows grows
-/// with the square of the valence times the field's degree.
-pub const MAX_EXACT_ORBIT_WORK: u64 = 1 << 23;
+pub use super::matrix::MAX_EXACT_ORBIT_WORK;
 
 /// Rows of an orbit assembled exactly at a time (the rows are compared and
 /// dropped: memory stays bounded however large the orbit).
