@@ -113,4 +113,13 @@ fn two_parameter_sweep_refuses_what_it_cannot_draw() {
     assert!(err.contains("--json"), "{err}");
     let err = fails(&[&args[..], &["--valences", "5..5", "--exact"]].concat());
     assert!(err.contains("one parameter"), "{err}");
+    // each range under the one-parameter limit, their product far over it
+    // (20 001 × 6 251 points: this ran without end before the check)
+    let big = ["sweep", FILE, "--valences", "5..5", "--param", "w=0:2:1/10000", "--param", "e=1/16:3/16:1/50000"];
+    let err = fails(&big);
+    assert!(err.contains("grid points") || err.contains("rows"), "{err}");
+    // many rows, few columns: each row is an exact sweep
+    let rows = ["sweep", FILE, "--valences", "5..5", "--param", "w=0:2:1", "--param", "e=0:1:1/5000"];
+    let err = fails(&rows);
+    assert!(err.contains("rows"), "{err}");
 }

@@ -14,6 +14,9 @@ use super::{parse_range, run_on, Grid, Point};
 use crate::error::Error;
 use crate::numeric::ParamValue;
 
+/// The most values of the vertical parameter (rows of the plane).
+pub const MAX_ROWS: usize = 1000;
+
 /// What the two-parameter sweep is asked.
 #[derive(Clone, Debug)]
 pub struct RegionSweep {
@@ -55,6 +58,28 @@ pub struct Region {
 /// Run the grid, then the exact sweep in x at every y of the grid.
 pub fn run(r: &RegionSweep) -> Result<Region, Error> {
     let ys = parse_range(&r.y.1)?;
+    // each range is bounded on its own; the plane is their product, and
+    // every row of y also runs an exact sweep: refused up front, not run
+    // for hours
+    let xs = parse_range(&r.x.1)?.len();
+    if ys.len() > MAX_ROWS {
+        return Err(Error::Input(format!(
+            "{} = {}: {} rows, more than the {MAX_ROWS} a two-parameter sweep takes (each row is an exact sweep in {})",
+            r.y.0,
+            r.y.1,
+            ys.len(),
+            r.x.0
+        )));
+    }
+    if xs.saturating_mul(ys.len()) > super::MAX_POINTS {
+        return Err(Error::Input(format!(
+            "{} × {} = {} grid points, more than the {} a sweep takes: coarsen a step",
+            xs,
+            ys.len(),
+            xs.saturating_mul(ys.len()),
+            super::MAX_POINTS
+        )));
+    }
     let valences = format!("{0}..{0}", r.valence);
     let mut rows = Vec::with_capacity(ys.len());
     for y in &ys {
