@@ -181,23 +181,36 @@ fn certified_tagged(
     Ok(certified_status(&certificate.verdict, certificate.conditional))
 }
 
-/// The tagged certificate as text: the verdict, the premises, each route.
-fn tagged_certificate_table(c: &crate::certify::tagged::TaggedCertificate) -> String {
-    use crate::certify::matrix::Check;
+/// A certificate's first lines, interior or tagged: what it certifies and
+/// the verdict, the statement, and which of table and certificate decides.
+fn certificate_head(what: &str, verdict: &crate::certify::Verdict, conditional: bool, statement: &str) -> String {
     let mut out = format!(
-        "certified sector criterion, spectral part: {}{}\n",
-        c.verdict.display(),
-        if c.conditional { ", given the premises marked 'identity' below" } else { "" }
+        "{what}: {}{}\n",
+        verdict.display(),
+        if conditional { ", given the premises marked 'identity' below" } else { "" }
     );
-    out += &format!("  statement: {}\n", c.statement);
+    out += &format!("  statement: {statement}\n");
     out += "  (the floating-point table above observes; where it disagrees with this certificate, the certificate \
             decides)\n";
-    let field = c.premises.field.as_deref().unwrap_or("Q");
-    let show = |x: &Check| match x {
+    out
+}
+
+/// How a premise was checked, in words (`field`: where the exact rows lie).
+fn premise_text(check: &crate::certify::matrix::Check, field: &str) -> String {
+    use crate::certify::matrix::Check;
+    match check {
         Check::Exact => format!("exact, in {field}"),
         Check::Overlap => "identity of the rules' formulas, confirmed to interval overlap only".to_string(),
         Check::Fails(w) => format!("fails: {w}"),
-    };
+    }
+}
+
+/// The tagged certificate as text: the verdict, the premises, each route.
+fn tagged_certificate_table(c: &crate::certify::tagged::TaggedCertificate) -> String {
+    let mut out =
+        certificate_head("certified sector criterion, spectral part", &c.verdict, c.conditional, &c.statement);
+    let field = c.premises.field.as_deref().unwrap_or("Q");
+    let show = |x: &crate::certify::matrix::Check| premise_text(x, field);
     out += &format!("  premise row sums = 1: {}\n", show(&c.premises.row_sums_one));
     out += &format!(
         "  premise S commutes with the reflection keeping the sharp rays: {}\n",
@@ -235,22 +248,10 @@ fn tagged_certificate_table(c: &crate::certify::tagged::TaggedCertificate) -> St
 
 /// The certificate as text: the verdict, the premises and the margins.
 pub(super) fn certificate_table(c: &crate::certify::SpectrumCertificate) -> String {
-    use crate::certify::matrix::Check;
-    let mut out = format!(
-        "certified spectral C1 conditions: {}{}\n",
-        c.verdict.display(),
-        if c.conditional { ", given the premises marked 'identity' below" } else { "" }
-    );
-    out += &format!("  statement: {}\n", c.statement);
-    out += "  (the floating-point table above observes; where it disagrees with this certificate, the certificate \
-            decides)\n";
+    let mut out = certificate_head("certified spectral C1 conditions", &c.verdict, c.conditional, &c.statement);
     if let Some(p) = &c.premises {
         let field = p.field.as_deref().unwrap_or("Q");
-        let show = |x: &Check| match x {
-            Check::Exact => format!("exact, in {field}"),
-            Check::Overlap => "identity of the rules' formulas, confirmed to interval overlap only".to_string(),
-            Check::Fails(w) => format!("fails: {w}"),
-        };
+        let show = |x: &crate::certify::matrix::Check| premise_text(x, field);
         out += &format!("  premise row sums = 1: {}\n", show(&p.row_sums_one));
         out += &format!("  premise mirror symmetry: {}\n", show(&p.mirror_symmetry));
         out += &format!("  premise rotation symmetry: {}\n", show(&p.rotation_symmetry));

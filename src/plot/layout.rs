@@ -587,6 +587,17 @@ fn tick_candidates(axis: &Axis, most: usize) -> Vec<Vec<(f64, String)>> {
     }
 }
 
+/// Everything a figure with axes places before drawing: the title's lines
+/// and size, the legend and where it goes, the axes' area inside the figure
+/// ((left, top, right, bottom) margins) and the axes.
+pub struct AxesFigurePlan {
+    pub title: Vec<String>,
+    pub title_size: f64,
+    pub legend: Option<PlacedLegend>,
+    pub region: (f64, f64, f64, f64),
+    pub axes: AxesPlan,
+}
+
 /// A legend with its place, as a figure draws it.
 pub type PlacedLegend = (Legend, LegendShape, (f64, f64));
 

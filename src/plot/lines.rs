@@ -7,8 +7,8 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::layout::{
-    draw_lines, draw_marker, em, fit, plan_with_legend, region_area, title_block, AxesPlan, Axis, Legend,
-    LegendPosition, LegendShape, Marker, NoFit, Swatch, Ticks, MARGIN,
+    draw_lines, draw_marker, em, fit, plan_with_legend, region_area, title_block, Axis, Legend, LegendPosition, Marker,
+    NoFit, Swatch, Ticks, MARGIN,
 };
 use super::sweep::Bound;
 use super::{err, Style};
@@ -66,16 +66,8 @@ pub const REFERENCE_COLOURS: [RGBColor; 3] = [RGBColor(50, 50, 50), RGBColor(115
 /// The default figure size in points.
 pub const SIZE: (u32, u32) = (1000, 650);
 
-/// Everything placed before drawing: the font scale, the title's lines,
-/// the legend and where it goes, the axes.
-struct Plan {
-    title: Vec<String>,
-    title_size: f64,
-    legend: Option<(Legend, LegendShape, (f64, f64))>,
-    /// the axes' area inside the figure: (left, top, right, bottom) margins
-    region: (f64, f64, f64, f64),
-    axes: AxesPlan,
-}
+/// Everything placed before drawing (`layout::AxesFigurePlan`).
+use super::layout::AxesFigurePlan as Plan;
 
 impl ValenceChart<'_> {
     /// The plotted numbers: one row per point of every curve and reference

@@ -12,8 +12,8 @@ use plotters::style::text_anchor::HPos;
 
 use super::layout::MARGIN;
 use super::layout::{
-    draw_lines, fit, plan_with_legend, region_area, title_block, AxesPlan, Axis, Legend, LegendPosition, LegendShape,
-    Marker, NoFit, Swatch, Ticks,
+    draw_lines, fit, plan_with_legend, region_area, title_block, Axis, Legend, LegendPosition, Marker, NoFit, Swatch,
+    Ticks,
 };
 use super::sweep::CellStatus;
 use super::{err, Figure, Style};
@@ -65,13 +65,8 @@ fn tick_rank(set: &str) -> u8 {
     }
 }
 
-struct Plan {
-    title: Vec<String>,
-    title_size: f64,
-    legend: Option<(Legend, LegendShape, (f64, f64))>,
-    region: (f64, f64, f64, f64),
-    axes: AxesPlan,
-}
+/// Everything placed before drawing (`layout::AxesFigurePlan`).
+use super::layout::AxesFigurePlan as Plan;
 
 impl RegionFigure {
     pub fn new(

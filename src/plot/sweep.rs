@@ -12,8 +12,8 @@ use plotters::prelude::*;
 
 use super::layout::MARGIN;
 use super::layout::{
-    draw_lines, fit, plan_with_legend, region_area, title_block, AxesPlan, Axis, Legend, LegendPosition, LegendShape,
-    Marker, NoFit, Swatch, Ticks,
+    draw_lines, fit, plan_with_legend, region_area, title_block, Axis, Legend, LegendPosition, Marker, NoFit, Swatch,
+    Ticks,
 };
 use super::{err, Figure, Style};
 use crate::curvature::CurvatureClass;
@@ -200,14 +200,8 @@ const BOUND_COLOURS: [RGBColor; 4] =
 /// Base font size of the figure (tick labels), which `Style::font_size` replaces.
 const BASE_FONT: u32 = 17;
 
-/// Everything placed before drawing (see `lines::Plan`).
-struct Plan {
-    title: Vec<String>,
-    title_size: f64,
-    legend: Option<(Legend, LegendShape, (f64, f64))>,
-    region: (f64, f64, f64, f64),
-    axes: AxesPlan,
-}
+/// Everything placed before drawing (`layout::AxesFigurePlan`).
+use super::layout::AxesFigurePlan as Plan;
 
 impl SweepFigure {
     fn ranges(&self) -> ((f64, f64), (f64, f64)) {
