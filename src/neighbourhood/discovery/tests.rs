@@ -195,3 +195,50 @@ fn doo_sabin_supports_give_n_and_4n() {
         check(&Support::doo_sabin(), n, central_face, (n, 4 * n), (0, 1));
     }
 }
+
+/// The window (`WINDOW_SECTORS` sectors on each side of the representatives)
+/// changes what is refined, never what is found: at valences where it
+/// applies, the pruned search finds the same minimal and analysis sets, after
+/// the same number of analysis steps, with the same composed rows of S as
+/// the search on the whole patch (`prune = false`), and both match the
+/// closed-form sizes above.
+#[test]
+fn windowed_discovery_equals_the_whole_patchs() {
+    use super::{first_patch_rings, try_discover};
+    let schemes: [(Support, fn(usize) -> (usize, usize)); 3] = [
+        (Support::catmull_clark(), |n| (2 * n + 1, 6 * n + 1)),
+        (Support::loop_(), |n| (n + 1, 3 * n + 1)),
+        (Support::doo_sabin(), |n| (n, 4 * n)),
+    ];
+    for (scheme, sizes) in &schemes {
+        for n in [41, 64] {
+            let config = Configuration::regular(scheme, n).unwrap();
+            let rings = first_patch_rings(scheme, &config);
+            let mut blame = false;
+            let windowed = try_discover(scheme, &config, rings, true, &mut blame).unwrap();
+            let whole = try_discover(scheme, &config, rings, false, &mut blame).unwrap();
+            let name = scheme.info.name;
+            // the window does cut the refined meshes at this valence
+            let step = &whole.refinements()[0].mesh;
+            let kept = super::window_faces(step, config.rotation_period(scheme)).map(|k| k.len());
+            assert!(kept.is_some_and(|k| k < step.num_faces()), "{name}, n = {n}: the window applies");
+            assert!(!blame, "{name}, n = {n}: no stencil was cut off by the window");
+            for kind in [NeighbourhoodKind::Minimal, NeighbourhoodKind::Analysis] {
+                assert_eq!(windowed.set(kind), whole.set(kind), "{name}, n = {n}: {kind:?} set");
+            }
+            assert_eq!(
+                (windowed.set(NeighbourhoodKind::Minimal).len(), windowed.set(NeighbourhoodKind::Analysis).len()),
+                sizes(n),
+                "{name}, n = {n}: closed-form sizes"
+            );
+            assert_eq!(windowed.analysis_levels, whole.analysis_levels, "{name}, n = {n}: analysis steps");
+            let rows = |d: &super::Discovered| {
+                let mut r: Vec<(usize, Vec<(usize, f64)>)> =
+                    d.composite.iter().map(|(v, row)| (*v, row.entries.clone())).collect();
+                r.sort_by_key(|(v, _)| *v);
+                r
+            };
+            assert_eq!(rows(&windowed), rows(&whole), "{name}, n = {n}: composed rows of S");
+        }
+    }
+}
