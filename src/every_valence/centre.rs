@@ -333,7 +333,7 @@ pub fn decide(qp: &BiPoly, lambda1: &BiPoly, variable: Variable, n_min: usize) -
             let _ = l;
             n += 1;
             if n > 100_000 {
-                return Err("an eigenvalue of block 0 meets ±λ1's bound arbitrarily close to n = ∞".into());
+                return Err("an eigenvalue meets ±λ1's bound arbitrarily close to n = ∞".into());
             }
         }
     }
@@ -343,18 +343,18 @@ pub fn decide(qp: &BiPoly, lambda1: &BiPoly, variable: Variable, n_min: usize) -
         Variable::Cosine => (&l + &h) / Rational::from_integer(2.into()),
     };
     if !all_real(&[qp.clone()], &s) {
-        return Err(format!("block 0 has a non-real eigenvalue at t = {s} (moduli of complex pairs are not followed)"));
+        return Err(format!("a non-real eigenvalue at t = {s} (moduli of complex pairs are not followed)"));
     }
     let mut mu = real_roots(&sturm::squarefree(&at(lambda1, &s))).pop().ok_or("no real λ1")?;
     let roots = real_roots(&sturm::squarefree(&at(qp, &s)));
     if let (Some(first), Some(last)) = (roots.first(), roots.last()) {
         let mut top = last.clone();
         if compare(&mut top, &mut mu) != Some(true) {
-            return Err(format!("an eigenvalue of block 0 is at least λ1 (at t = {s})"));
+            return Err(format!("an eigenvalue is at least λ1 (at t = {s})"));
         }
         let mut minus_low = negated(first);
         if compare(&mut minus_low, &mut mu) != Some(true) {
-            return Err(format!("a negative eigenvalue of block 0 is at least λ1 in modulus (at t = {s})"));
+            return Err(format!("a negative eigenvalue is at least λ1 in modulus (at t = {s})"));
         }
     }
     let text = match variable {
