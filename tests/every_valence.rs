@@ -272,7 +272,8 @@ fn doo_sabin_centre_symbol_is_the_closed_form() {
     let at = |k| sym.symbol_at(9, k).unwrap().to_rational().unwrap();
     assert_eq!((at(0), at(1), at(2), at(7), at(3)), (q(9, 2), q(0, 1), q(9, 4), q(9, 4), q(0, 1)));
     // what is not a cosine polynomial in j is refused, not guessed
-    for bad in ["sin(2 pi j / n) / n", "cos(2 pi j^2 / n) / n", "j / n", "cos(2 pi j / n + 1) / n", "kronecker(j - 1)"] {
+    for bad in ["sin(2 pi j / n) / n", "cos(2 pi j^2 / n) / n", "j / n", "cos(2 pi j / n + 1) / n", "kronecker(j - 1)"]
+    {
         assert!(trig_in_j(&Expr::parse(bad).unwrap(), &Env::new()).is_err(), "{bad}");
     }
 }

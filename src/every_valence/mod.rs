@@ -413,7 +413,15 @@ fn read_rows(req: &Request, n: usize) -> Result<Read, Missing> {
         )));
     }
     let orbit_of = orbits.member.clone();
-    Ok(Read { rows, reads, centre: fixed.first().map(|&o| orbits.representative[o]), varying, free, orbit_of, analysis })
+    Ok(Read {
+        rows,
+        reads,
+        centre: fixed.first().map(|&o| orbits.representative[o]),
+        varying,
+        free,
+        orbit_of,
+        analysis,
+    })
 }
 
 /// The one row of a face-centred scheme whose weights depend on n (the
@@ -493,8 +501,7 @@ fn varying_row(
     if per_sector.iter().any(|&c| c != 1) {
         return Err(bad());
     }
-    let sym = symbol::trig_in_j(&f.expr, &f.env)
-        .map_err(|e| missing(format!("[{}] {}: {e}", f.rule, f.family)))?;
+    let sym = symbol::trig_in_j(&f.expr, &f.env).map_err(|e| missing(format!("[{}] {}: {e}", f.rule, f.family)))?;
     // the actual weights on orbit b by sector, and the check of the symbol
     let row = assemble(rep).map_err(|_| missing("no exact rows of S"))?;
     let mut weights = vec![Cyclotomic::zero(); n];
@@ -538,8 +545,8 @@ fn centre_totals(req: &Request, read: &Read) -> Result<Vec<Cyclotomic>, Missing>
     let centre = read.centre.ok_or_else(|| missing("no centre vertex"))?;
     let scheme = schemes::resolve(&req.scheme, &req.params).map_err(|e| missing(e.to_string()))?;
     let (d, kind) = (&read.analysis.discovered, read.analysis.spectrum.neighbourhood);
-    let row = assemble_rows::<Cyclotomic>(scheme.as_ref(), d, kind, &[centre])
-        .map_err(|_| missing("no exact centre row"))?;
+    let row =
+        assemble_rows::<Cyclotomic>(scheme.as_ref(), d, kind, &[centre]).map_err(|_| missing("no exact centre row"))?;
     let mut totals = vec![Cyclotomic::zero(); read.free.len()];
     for (col, w) in &row[0] {
         let (ob, _) = read.orbit_of[*col];
@@ -662,5 +669,11 @@ fn face_centred(rows: &LaurentRows, v: &Varying, rows_text: String) -> Result<Pa
     let p = laurent::charpoly_in_c(rows).map_err(|e| fail(e.into()))?;
     let p_plus = laurent::charpoly_in_c(&raised).map_err(|e| fail(e.into()))?;
     let facts = special::decide(&p, &p_plus, &v.symbol, PROBE_VALENCE).map_err(fail)?;
-    Ok(ParametricProof { rows: rows_text, blocks: None, block0: None, threshold: facts.threshold, special: Some(facts) })
+    Ok(ParametricProof {
+        rows: rows_text,
+        blocks: None,
+        block0: None,
+        threshold: facts.threshold,
+        special: Some(facts),
+    })
 }
