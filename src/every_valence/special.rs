@@ -87,7 +87,7 @@ fn compose(p: &BiPoly, inner: &TPoly) -> BiPoly {
 }
 
 fn trim(mut p: BiPoly) -> BiPoly {
-    while p.len() > 1 && p.last().is_some_and(|c| crate::numeric::Weight::is_zero(c)) {
+    while p.len() > 1 && p.last().is_some_and(crate::numeric::Weight::is_zero) {
         p.pop();
     }
     p
@@ -129,7 +129,7 @@ fn divide_by_x_minus_one(p: &BiPoly) -> Option<BiPoly> {
 fn at_x(p: &BiPoly, x0: &Rational) -> Poly {
     let mut acc = tpoly(&[Rational::zero()]);
     for coef in p.iter().rev() {
-        acc = acc * tpoly(&[x0.clone()]) + coef.clone();
+        acc = acc * tpoly(std::slice::from_ref(x0)) + coef.clone();
     }
     let mut coeffs: Vec<Rational> =
         acc.coeffs().iter().map(|c| c.to_rational().expect("rational coefficients")).collect();
@@ -220,8 +220,8 @@ fn generic_within(p: &BiPoly, l: &Rational) -> Result<(), String> {
             for c in inner.iter_mut() {
                 c.recognise_rational();
             }
-            inner.retain(|c| c.rational.as_ref().map_or(true, |x| x != &lo && x != &hi));
-            inner.sort_by(|a, b| a.mid().cmp(&b.mid()));
+            inner.retain(|c| c.rational.as_ref().is_none_or(|x| x != &lo && x != &hi));
+            inner.sort_by_key(RealRoot::mid);
             let mut merged: Vec<RealRoot> = Vec::new();
             'next: for mut c in inner {
                 for m in merged.iter_mut() {
@@ -236,7 +236,7 @@ fn generic_within(p: &BiPoly, l: &Rational) -> Result<(), String> {
     }
     fences.push(RealRoot::exact(hi.clone()));
     for s in sturm::points_between(&mut fences) {
-        if !all_real(&[p.clone()], &s) {
+        if !all_real(std::slice::from_ref(p), &s) {
             return Err(format!("a generic block has a non-real eigenvalue at cos θ = {s}"));
         }
     }
@@ -277,8 +277,8 @@ pub fn decide(p: &BiPoly, p_plus: &BiPoly, sym: &TrigInJ, n_min: usize) -> Resul
     let mut lines = Vec::new();
     // step 2: blocks 2..M and block 0, against Q_1 in the same c
     let mut special: Vec<(String, BiPoly)> = Vec::new();
-    for m in 2..=big_m as usize {
-        special.push((format!("block {m}"), block_poly(p, p_plus, &corrections[m], m)));
+    for (m, e_m) in corrections.iter().enumerate().skip(2) {
+        special.push((format!("block {m}"), block_poly(p, p_plus, e_m, m)));
     }
     let q0 = block_poly(p, p_plus, &corrections[0], 0);
     let r0 = divide_by_x_minus_one(&q0).ok_or("block 0 does not have the eigenvalue 1 at every c")?;
