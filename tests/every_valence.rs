@@ -3,7 +3,10 @@
 //! from the program: Catmull–Clark and Loop are spectrally C¹ at every
 //! n ≥ 3 (Doo–Sabin 1978, Ball–Storry 1988 for Catmull–Clark; Loop 1987,
 //! Schweitzer 1996 for Loop); the defect file's first bad valence 40 is
-//! derived in its comments.
+//! derived in its comments. Doo–Sabin (face-centred) is spectrally C¹ at
+//! every n ≥ 3 (Doo–Sabin 1978: eigenvalues 1, 1/2, 1/2, 1/4, ..., 1/8,
+//! 1/16); its block-2 variant's first bad valence 45 is derived in
+//! `tests/data/doo-sabin-block2-dominant.toml`.
 
 use crate::common::subdlab;
 use num_rational::BigRational;
@@ -231,4 +234,113 @@ fn cli_exit_codes_and_json() {
         assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
         assert!(err.starts_with("error: ") && !err.contains("panicked"), "{err}");
     }
+}
+
+/// Doo–Sabin's centre face: α_j = δ_j/4 + (3 + 2 cos(2πj/n))/(4n). By hand,
+/// with Σ_j ω^{jk} = n[k ≡ 0] and Σ_j cos(2πj/n) ω^{jk} = (n/2)([k ≡ 1] +
+/// [k ≡ −1]) (ω = e^{2πi/n}):
+///   σ(k) = Σ_j α_j ω^{jk} = 1/4 + (3/4)[k ≡ 0] + (1/4)([k ≡ 1] + [k ≡ −1]),
+/// i.e. σ(0) = 1, σ(±1) = 1/2, σ(k) = 1/4 for 2 ≤ k ≤ n − 2: generic value
+/// 1/4, corrections e_0 = 3/4 and e_1 = 1/4, frequency M = 1. (The new
+/// vertices of the n-gon are 1/4 of their corner plus the centroid's 3/4
+/// and a first harmonic of weight 1/2: the classical 1, 1/2, 1/4.)
+#[test]
+fn doo_sabin_centre_symbol_is_the_closed_form() {
+    use subdlab::every_valence::symbol::trig_in_j;
+    use subdlab::numeric::expr::{Env, Expr};
+    let e = Expr::parse("kronecker(j)/4 + (3 + 2 cos(2 pi j / n)) / (4 n)").unwrap();
+    let sym = trig_in_j(&e, &Env::new()).unwrap();
+    assert_eq!(sym.degree(), 1);
+    for n in [3i64, 4, 7, 24, 101] {
+        for k in 0..n {
+            let expected = if k == 0 {
+                q(1, 1)
+            } else if k == 1 || k == n - 1 {
+                q(1, 2)
+            } else {
+                q(1, 4)
+            };
+            let got = sym.symbol_at(n, k).unwrap().to_rational().unwrap();
+            assert_eq!(got, expected, "n = {n}, k = {k}");
+        }
+    }
+    // products of cosines expand (cos² a = (1 + cos 2a)/2): frequency 2, and
+    // σ(k) of cos²(2πj/n) is n/2 at k = 0 and n/4 at k = ±2 (n ≥ 5)
+    let e = Expr::parse("cos(2 pi j / n)^2").unwrap();
+    let sym = trig_in_j(&e, &Env::new()).unwrap();
+    assert_eq!(sym.degree(), 2);
+    let at = |k| sym.symbol_at(9, k).unwrap().to_rational().unwrap();
+    assert_eq!((at(0), at(1), at(2), at(7), at(3)), (q(9, 2), q(0, 1), q(9, 4), q(9, 4), q(0, 1)));
+    // what is not a cosine polynomial in j is refused, not guessed
+    for bad in ["sin(2 pi j / n) / n", "cos(2 pi j^2 / n) / n", "j / n", "cos(2 pi j / n + 1) / n", "kronecker(j - 1)"]
+    {
+        assert!(trig_in_j(&Expr::parse(bad).unwrap(), &Env::new()).is_err(), "{bad}");
+    }
+}
+
+/// Expands Π (x − r) (coefficients lowest first).
+fn from_roots(roots: &[BigRational]) -> Vec<BigRational> {
+    let mut p = vec![q(1, 1)];
+    for r in roots {
+        let mut next = vec![q(0, 1); p.len() + 1];
+        for (i, a) in p.iter().enumerate() {
+            next[i + 1] = &next[i + 1] + a;
+            next[i] = &next[i] - a * r;
+        }
+        p = next;
+    }
+    p
+}
+
+/// The generic blocks of Doo–Sabin (2 ≤ k ≤ n − 2): the centre face's
+/// symbol 1/4 and the rest, whose eigenvalues are those of the regular
+/// tensor-product quadratic B-spline's products 1/4, 1/8, 1/16 (Doo–Sabin
+/// 1978: the spectrum 1, 1/2, 1/2, 1/4, ..., 1/8, ..., 1/16, ...): P(x, c) =
+/// (x − 1/4)²(x − 1/8)(x − 1/16), independent of c.
+#[test]
+fn doo_sabin_generic_blocks_are_the_classical_eigenvalues() {
+    let expected = from_roots(&[q(1, 4), q(1, 4), q(1, 8), q(1, 16)]);
+    for c in [q(-1, 1), q(0, 1), q(1, 3), q(1, 1)] {
+        assert_eq!(poly_at("schemes/doo-sabin.toml", &c), expected, "c = {c}");
+    }
+}
+
+#[test]
+fn doo_sabin_file_is_spectrally_c1_at_every_valence() {
+    let r = run(&request("schemes/doo-sabin.toml", 3, None)).unwrap();
+    assert_eq!(r.verdict, Verdict::Proved, "{r:?}");
+    let n = r.threshold.expect("a threshold N");
+    assert_eq!(r.per_valence.iter().map(|a| a.valence).collect::<Vec<_>>(), (3..n).collect::<Vec<_>>());
+    assert!(r.per_valence.iter().all(|a| a.verdict == Verdict::Proved && !a.conditional));
+    let p = r.parametric.as_ref().unwrap();
+    assert_eq!(p.verdict, Verdict::Proved);
+    let f = p.special.as_ref().expect("the face-centred part");
+    // M = 1 (σ has frequencies 0 and 1 only), λ1 = σ(±1) = 1/2 exactly
+    assert_eq!(f.frequencies, 1);
+    assert!(f.lambda1.ends_with("∈ 1/2"), "{}", f.lambda1);
+    // the built-in's compiled rules stay NOT PROVED (as Catmull–Clark's, Loop's)
+    let r = run(&request("doo-sabin", 3, None)).unwrap();
+    assert!(matches!(&r.verdict, Verdict::NotProved(w) if w.contains("compiled code")), "{:?}", r.verdict);
+}
+
+/// The negative control: Doo–Sabin with a second harmonic 2bc·cos(4πj/n)/(4n)
+/// in the centre face's rule, b = 101/100, c = cos(2π/n): block 2's centre
+/// eigenvalue 1/4 + bc/4 exceeds λ1 = 1/2 exactly when cos(2π/n) > 100/101,
+/// first at n = 45 (derived in the file). The parametric part must not prove
+/// it (block 2 reaches λ1 as n → ∞); the scan proves 3..44 and disproves 45.
+#[test]
+fn doo_sabin_block2_variant_is_disproved_at_forty_five() {
+    let file = "tests/data/doo-sabin-block2-dominant.toml";
+    let r = run(&request(file, 3, None)).unwrap();
+    match &r.verdict {
+        Verdict::Disproved(why) => assert!(why.contains("n = 45"), "{why}"),
+        v => panic!("expected DISPROVED at 45, got {v:?}"),
+    }
+    assert_eq!(r.per_valence.last().unwrap().valence, 45);
+    assert!(r.per_valence[..r.per_valence.len() - 1].iter().all(|a| a.verdict == Verdict::Proved && !a.conditional));
+    match &r.parametric.as_ref().unwrap().verdict {
+        Verdict::NotProved(why) => assert!(why.starts_with("block 2:"), "{why}"),
+        v => panic!("the parametric part must not prove it: {v:?}"),
+    }
+    assert_eq!(run(&request(file, 40, Some(44))).unwrap().verdict, Verdict::Proved);
 }

@@ -141,6 +141,18 @@ pub fn table(r: &Report) -> String {
         if let Some(b) = &p.block0 {
             out += &format!("    block 0: eigenvalues other than 1 real and of modulus below λ1 for {}\n", b.range);
         }
+        if let Some(f) = &p.special {
+            out += &format!(
+                "    centre face's symbol σ(k) = generic value + e_k(c) at blocks |k| ≤ {}: {}\n    block 1: P(x, c) + \
+                 e_1(c)(P⁺ − P)(x, c), P of degree {} in x and {} in c; every root real, the top one λ1 simple, \
+                 strictly dominant, in (0, 1) on [q_N, 1) ∋ cos(2π/n); {}\n",
+                f.frequencies, f.symbol, f.degree_x, f.degree_c, f.lambda1
+            );
+            for line in &f.blocks {
+                out += &format!("    {line}\n");
+            }
+            out += &format!("    {}\n", f.generic_bound);
+        }
     }
     let proved = r.per_valence.iter().filter(|a| a.verdict == Verdict::Proved && !a.conditional).count();
     match (r.per_valence.first(), r.per_valence.last()) {

@@ -50,17 +50,17 @@ use crate::numeric::sturm::{compare, negated, real_roots};
 pub struct InN(BTreeMap<(i32, u32, u32), Rational>);
 
 impl InN {
-    fn constant(q: Rational) -> InN {
+    pub(super) fn constant(q: Rational) -> InN {
         InN::term(q, (0, 0, 0))
     }
-    fn term(q: Rational, key: (i32, u32, u32)) -> InN {
+    pub(super) fn term(q: Rational, key: (i32, u32, u32)) -> InN {
         let mut m = BTreeMap::new();
         if !q.is_zero() {
             m.insert(key, q);
         }
         InN(m)
     }
-    fn add(&self, o: &InN, sign: i64) -> InN {
+    pub(super) fn add(&self, o: &InN, sign: i64) -> InN {
         let mut m = self.0.clone();
         for (k, v) in &o.0 {
             let e = m.remove(k).unwrap_or_else(Rational::zero) + v * Rational::from_integer(sign.into());
@@ -70,7 +70,7 @@ impl InN {
         }
         InN(m)
     }
-    fn mul(&self, o: &InN) -> InN {
+    pub(super) fn mul(&self, o: &InN) -> InN {
         let mut out = InN::default();
         for (a, x) in &self.0 {
             for (b, y) in &o.0 {
@@ -88,14 +88,33 @@ impl InN {
         self.add(&o.mul(&InN::constant(s.clone())), 1)
     }
     /// The inverse of a single term without c or π (a rational times a power of n).
-    fn inverse(&self) -> Option<InN> {
+    pub(super) fn inverse(&self) -> Option<InN> {
         let (&(e, c, p), q) = self.0.iter().next()?;
         (self.0.len() == 1 && c == 0 && p == 0).then(|| InN::term(q.recip(), (-e, 0, 0)))
     }
-    fn as_rational(&self) -> Option<Rational> {
+    pub(super) fn as_rational(&self) -> Option<Rational> {
         match self.0.len() {
             0 => Some(Rational::zero()),
             1 => self.0.get(&(0, 0, 0)).cloned(),
+            _ => None,
+        }
+    }
+    /// As a polynomial in c alone (coefficients lowest first): no power of
+    /// n and no π, else None.
+    pub(super) fn polynomial_in_c(&self) -> Option<Vec<Rational>> {
+        if self.0.keys().any(|k| k.0 != 0 || k.2 != 0) {
+            return None;
+        }
+        let mut p = vec![Rational::zero(); self.0.keys().map(|k| k.1 as usize + 1).max().unwrap_or(1)];
+        for (k, v) in &self.0 {
+            p[k.1 as usize] = v.clone();
+        }
+        Some(p)
+    }
+    /// q when this is exactly q·π.
+    pub(super) fn multiple_of_pi(&self) -> Option<Rational> {
+        match (self.0.len(), self.0.iter().next()) {
+            (1, Some((&(0, 0, 1), q))) => Some(q.clone()),
             _ => None,
         }
     }
@@ -314,7 +333,7 @@ pub fn decide(qp: &BiPoly, lambda1: &BiPoly, variable: Variable, n_min: usize) -
             let _ = l;
             n += 1;
             if n > 100_000 {
-                return Err("an eigenvalue of block 0 meets ±λ1's bound arbitrarily close to n = ∞".into());
+                return Err("an eigenvalue meets ±λ1's bound arbitrarily close to n = ∞".into());
             }
         }
     }
@@ -324,18 +343,18 @@ pub fn decide(qp: &BiPoly, lambda1: &BiPoly, variable: Variable, n_min: usize) -
         Variable::Cosine => (&l + &h) / Rational::from_integer(2.into()),
     };
     if !all_real(&[qp.clone()], &s) {
-        return Err(format!("block 0 has a non-real eigenvalue at t = {s} (moduli of complex pairs are not followed)"));
+        return Err(format!("a non-real eigenvalue at t = {s} (moduli of complex pairs are not followed)"));
     }
     let mut mu = real_roots(&sturm::squarefree(&at(lambda1, &s))).pop().ok_or("no real λ1")?;
     let roots = real_roots(&sturm::squarefree(&at(qp, &s)));
     if let (Some(first), Some(last)) = (roots.first(), roots.last()) {
         let mut top = last.clone();
         if compare(&mut top, &mut mu) != Some(true) {
-            return Err(format!("an eigenvalue of block 0 is at least λ1 (at t = {s})"));
+            return Err(format!("an eigenvalue is at least λ1 (at t = {s})"));
         }
         let mut minus_low = negated(first);
         if compare(&mut minus_low, &mut mu) != Some(true) {
-            return Err(format!("a negative eigenvalue of block 0 is at least λ1 in modulus (at t = {s})"));
+            return Err(format!("a negative eigenvalue is at least λ1 in modulus (at t = {s})"));
         }
     }
     let text = match variable {

@@ -14,6 +14,8 @@
 
 pub mod centre;
 pub mod laurent;
+pub mod special;
+pub mod symbol;
 pub mod tail;
 
 use std::collections::BTreeMap;
@@ -76,6 +78,9 @@ pub struct Parametric {
     /// block 0: its variable and range
     #[serde(skip_serializing_if = "Option::is_none")]
     pub block0: Option<Block0>,
+    /// face-centred schemes: the blocks through the centre face's symbol
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub special: Option<special::SpecialFacts>,
     pub seconds: f64,
 }
 
@@ -182,13 +187,9 @@ pub fn run(req: &Request) -> Result<Report, Error> {
         Some(to) => (to, true),
         None => {
             let t0 = Instant::now();
-            let (verdict, rows, blocks, block0) = match parametric(req) {
-                Ok(p) => (Verdict::Proved, p.rows, Some(p.blocks), Some(p.block0)),
-                Err(missing) => (Verdict::NotProved(missing.reason), missing.rows, missing.blocks, None),
-            };
-            let threshold = match (&verdict, &blocks) {
-                (Verdict::Proved, Some(b)) => Some(b.threshold),
-                _ => None,
+            let (verdict, rows, blocks, block0, special, threshold) = match parametric(req) {
+                Ok(p) => (Verdict::Proved, p.rows, p.blocks, p.block0, p.special, Some(p.threshold)),
+                Err(missing) => (Verdict::NotProved(missing.reason), missing.rows, missing.blocks, None, None, None),
             };
             report.parametric = Some(Parametric {
                 verdict,
@@ -196,6 +197,7 @@ pub fn run(req: &Request) -> Result<Report, Error> {
                 rows,
                 blocks,
                 block0,
+                special,
                 seconds: t0.elapsed().as_secs_f64(),
             });
             report.threshold = threshold;
@@ -275,8 +277,13 @@ pub fn block_polynomial(req: &Request) -> Result<Vec<crate::numeric::TPoly>, Str
 /// What the parametric part proved.
 struct ParametricProof {
     rows: String,
-    blocks: tail::TailFacts,
-    block0: Block0,
+    /// vertex-centred: the blocks k ≠ 0 and block 0
+    blocks: Option<tail::TailFacts>,
+    block0: Option<Block0>,
+    /// face-centred: every block through the centre face's symbol
+    special: Option<special::SpecialFacts>,
+    /// N
+    threshold: usize,
 }
 
 /// Why it did not, and how far it got.
@@ -295,8 +302,11 @@ fn missing(reason: impl Into<String>) -> Missing {
 struct Read {
     rows: LaurentRows,
     reads: probe::Reads,
-    /// matrix index of the centre and the orbits away from it (block order)
-    centre: usize,
+    /// matrix index of the centre (None: face-centred) and the orbits away
+    /// from it (block order)
+    centre: Option<usize>,
+    /// face-centred: the one row that depends on n
+    varying: Option<Varying>,
     free: Vec<usize>,
     orbit_of: Vec<(usize, usize)>,
     analysis: crate::spectrum::Analysis,
@@ -317,8 +327,8 @@ fn read_rows(req: &Request, n: usize) -> Result<Read, Missing> {
         return Err(missing(format!("valence {n}: the rotation period is not one sector")));
     }
     let fixed: Vec<usize> = (0..orbits.num_orbits()).filter(|&o| orbits.fixed[o]).collect();
-    if fixed.len() != 1 {
-        return Err(missing("the centre is not a single vertex (a face-centred scheme): block 0 has no centre row"));
+    if fixed.len() > 1 {
+        return Err(missing("more than one vertex is fixed by the rotation"));
     }
     if analysis.discovered.refinements().len() != 1 {
         return Err(missing("S is a composite of several refinement steps: the rows are not one rule each"));
@@ -340,7 +350,14 @@ fn read_rows(req: &Request, n: usize) -> Result<Read, Missing> {
              schemes/loop.toml)",
         ));
     }
-    if let Some(f) = reads.at_valence.iter().find(|f| f.varies) {
+    // face-centred (no fixed vertex): the centre face's own rule may depend
+    // on n; it is followed through its symbol (`symbol`)
+    let varying = if fixed.is_empty() && reads.at_valence.iter().any(|f| f.varies) {
+        Some(varying_row(scheme.as_ref(), &analysis, &orbits, &free, &pos, n)?)
+    } else {
+        None
+    };
+    if let Some(f) = reads.at_valence.iter().find(|f| f.varies).filter(|_| varying.is_none()) {
         return Err(missing(format!(
             "the rows away from the centre read [{}] {} at the centre's valence, an expression with variables: the \
              blocks k ≠ 0 may depend on n other than through cos(2πk/n)",
@@ -354,6 +371,12 @@ fn read_rows(req: &Request, n: usize) -> Result<Read, Missing> {
     let mut centre_column = vec![Rational::from_integer(0.into()); size];
     for (a, row) in rows.iter().enumerate() {
         for (col, w) in row {
+            if let Some(v) = &varying {
+                // the n-dependent entries: replaced by their generic value below
+                if a == v.row && pos[orbits.member[*col].0] == v.orbit {
+                    continue;
+                }
+            }
             let w = w.to_rational().ok_or_else(|| {
                 missing("a weight of a row away from the centre is irrational: not followed as a Laurent polynomial")
             })?;
@@ -371,6 +394,17 @@ fn read_rows(req: &Request, n: usize) -> Result<Read, Missing> {
             }
         }
     }
+    if let Some(v) = &varying {
+        let d = v.symbol.generic().as_rational().ok_or_else(|| {
+            missing(
+                "the centre face's rule at the generic blocks depends on n (its kronecker(j) term): not followed as \
+                 a Laurent polynomial",
+            )
+        })?;
+        if !Weight::is_zero(&d) {
+            entries[v.row][v.orbit].insert(0, d);
+        }
+    }
     let rows = LaurentRows { entries, centre_column };
     if 2 * rows.reach() + 2 > g {
         return Err(missing(format!(
@@ -379,17 +413,122 @@ fn read_rows(req: &Request, n: usize) -> Result<Read, Missing> {
         )));
     }
     let orbit_of = orbits.member.clone();
-    Ok(Read { rows, reads, centre: orbits.representative[fixed[0]], free, orbit_of, analysis })
+    Ok(Read {
+        rows,
+        reads,
+        centre: fixed.first().map(|&o| orbits.representative[o]),
+        varying,
+        free,
+        orbit_of,
+        analysis,
+    })
+}
+
+/// The one row of a face-centred scheme whose weights depend on n (the
+/// centre face's rule), read as a trigonometric polynomial in its slot's
+/// position (`symbol`).
+#[derive(Clone, Debug, PartialEq)]
+struct Varying {
+    /// block indices: the row's orbit a and the orbit b it reads with the field
+    row: usize,
+    orbit: usize,
+    field: (&'static str, &'static str),
+    symbol: symbol::TrigInJ,
+}
+
+/// Finds the n-dependent row and reads it: exactly one representative row
+/// reads a field with variables at n, exactly one such field, whose slots
+/// are one per sector on one orbit b (weight 1 each in indicator mode); its
+/// weights' symbol, read from the field's expression, must be the exact
+/// transform of the actual weights on b at every block k = 0..n−1.
+fn varying_row(
+    scheme: &dyn crate::sdc::Scheme,
+    analysis: &crate::spectrum::Analysis,
+    orbits: &crate::dft::blocks::Orbits,
+    free: &[usize],
+    pos: &[usize],
+    n: usize,
+) -> Result<Varying, Missing> {
+    let (d, kind) = (&analysis.discovered, analysis.spectrum.neighbourhood);
+    let assemble = |rep: usize| assemble_rows::<Cyclotomic>(scheme, d, kind, &[rep]);
+    let mut found: Option<(usize, probe::FieldRead)> = None;
+    for (a, &o) in free.iter().enumerate() {
+        let (_, reads) = probe::watch(n, || assemble(orbits.representative[o]));
+        let vary: Vec<_> = reads.at_valence.into_iter().filter(|f| f.varies).collect();
+        match (vary.len(), &found) {
+            (0, _) => {}
+            (1, None) => found = Some((a, vary[0].clone())),
+            _ => {
+                return Err(missing(
+                    "more than one row or field of the centre face's neighbourhood depends on n (one is followed)",
+                ))
+            }
+        }
+    }
+    let (a, f) = found.ok_or_else(|| missing("no row reads the field that depends on n"))?;
+    let rep = orbits.representative[free[a]];
+    // the field's slots: its indicator row minus the row with every n-read at 0
+    let (ones, _) = probe::watch_indicator(n, (f.rule, f.family), || assemble(rep));
+    let (zeros, _) = probe::watch_indicator(n, ("", ""), || assemble(rep));
+    let (ones, zeros) = match (ones, zeros) {
+        (Ok(x), Ok(y)) => (x, y),
+        _ => return Err(missing("no exact rows of S")),
+    };
+    let mut slots: BTreeMap<usize, Cyclotomic> = BTreeMap::new();
+    for (col, w) in &ones[0] {
+        slots.insert(*col, w.clone());
+    }
+    for (col, w) in &zeros[0] {
+        let e = slots.remove(col).unwrap_or_else(Cyclotomic::zero) - w.clone();
+        slots.insert(*col, e);
+    }
+    slots.retain(|_, w| !Weight::is_zero(w));
+    let bad = || {
+        missing(format!(
+            "[{}] {}: its slots are not one per sector on one orbit (not followed as a symbol)",
+            f.rule, f.family
+        ))
+    };
+    let orbit_b = slots.keys().next().map(|c| orbits.member[*c].0).ok_or_else(bad)?;
+    let mut per_sector = vec![0usize; n];
+    for (col, w) in &slots {
+        let (o, t) = orbits.member[*col];
+        if o != orbit_b || *w != Cyclotomic::one() {
+            return Err(bad());
+        }
+        per_sector[t] += 1;
+    }
+    if per_sector.iter().any(|&c| c != 1) {
+        return Err(bad());
+    }
+    let sym = symbol::trig_in_j(&f.expr, &f.env).map_err(|e| missing(format!("[{}] {}: {e}", f.rule, f.family)))?;
+    // the actual weights on orbit b by sector, and the check of the symbol
+    let row = assemble(rep).map_err(|_| missing("no exact rows of S"))?;
+    let mut weights = vec![Cyclotomic::zero(); n];
+    for (col, w) in &row[0] {
+        let (o, t) = orbits.member[*col];
+        if o == orbit_b {
+            weights[t] = weights[t].clone() + w.clone();
+        }
+    }
+    if !symbol::matches_row(&sym, n, &weights) {
+        return Err(missing(format!(
+            "[{}] {}: the symbol read from its expression is not the transform of the actual row at n = {n}",
+            f.rule, f.family
+        )));
+    }
+    Ok(Varying { row: a, orbit: pos[orbit_b], field: (f.rule, f.family), symbol: sym })
 }
 
 /// The centre's row at valence n with field `field` weighing 1 and every
 /// other field read at n weighing 0: its totals per orbit away from the
 /// centre (the field's slot counts).
 fn indicator_totals(req: &Request, read: &Read, n: usize, field: (&str, &str)) -> Result<Vec<Rational>, Missing> {
+    let centre = read.centre.ok_or_else(|| missing("no centre vertex"))?;
     let scheme = schemes::resolve(&req.scheme, &req.params).map_err(|e| missing(e.to_string()))?;
     let (d, kind) = (&read.analysis.discovered, read.analysis.spectrum.neighbourhood);
     let (row, _) =
-        probe::watch_indicator(n, field, || assemble_rows::<Cyclotomic>(scheme.as_ref(), d, kind, &[read.centre]));
+        probe::watch_indicator(n, field, || assemble_rows::<Cyclotomic>(scheme.as_ref(), d, kind, &[centre]));
     let row = row.map_err(|_| missing("no exact centre row"))?;
     let mut totals = vec![Rational::from_integer(0.into()); read.free.len()];
     for (col, w) in &row[0] {
@@ -403,10 +542,11 @@ fn indicator_totals(req: &Request, read: &Read, n: usize, field: (&str, &str)) -
 
 /// The actual centre row's totals per orbit away from the centre.
 fn centre_totals(req: &Request, read: &Read) -> Result<Vec<Cyclotomic>, Missing> {
+    let centre = read.centre.ok_or_else(|| missing("no centre vertex"))?;
     let scheme = schemes::resolve(&req.scheme, &req.params).map_err(|e| missing(e.to_string()))?;
     let (d, kind) = (&read.analysis.discovered, read.analysis.spectrum.neighbourhood);
-    let row = assemble_rows::<Cyclotomic>(scheme.as_ref(), d, kind, &[read.centre])
-        .map_err(|_| missing("no exact centre row"))?;
+    let row =
+        assemble_rows::<Cyclotomic>(scheme.as_ref(), d, kind, &[centre]).map_err(|_| missing("no exact centre row"))?;
     let mut totals = vec![Cyclotomic::zero(); read.free.len()];
     for (col, w) in &row[0] {
         let (ob, _) = read.orbit_of[*col];
@@ -426,15 +566,24 @@ fn parametric(req: &Request) -> Result<ParametricProof, Missing> {
             "the rows away from the centre differ between valences {n0} and {n1} (by sector offset)"
         )));
     }
+    // the reads at n that are constants (all of them, but the centre face's
+    // own field when the scheme is face-centred)
+    let constant_reads = r0.reads.at_valence.iter().filter(|f| !f.varies).count();
     let rows_text = format!(
         "rows away from the centre independent of n: every scheme-file weight they read at the centre's valence is \
          a constant ({} read{}), checked at n = {n0}; identical at n = {n0} and {n1}; reach {} sector(s); blocks of \
          size {}",
-        r0.reads.at_valence.len(),
-        if r0.reads.at_valence.len() == 1 { "" } else { "s" },
+        constant_reads,
+        if constant_reads == 1 { "" } else { "s" },
         r0.rows.reach(),
         r0.rows.size()
     );
+    if r0.varying != r1.varying {
+        return Err(missing(format!("the centre face's rule reads differently at valences {n0} and {n1}")));
+    }
+    if let Some(v) = &r0.varying {
+        return face_centred(&r0.rows, v, rows_text);
+    }
     let p = laurent::charpoly_in_c(&r0.rows).map_err(|e| Missing {
         reason: e.into(),
         rows: rows_text.clone(),
@@ -486,8 +635,45 @@ fn parametric(req: &Request) -> Result<ParametricProof, Missing> {
         Ok((n, range)) => {
             let mut blocks = facts;
             blocks.threshold = blocks.threshold.max(n);
-            Ok(ParametricProof { rows: rows_text, block0: Block0 { variable, range }, blocks })
+            Ok(ParametricProof {
+                rows: rows_text,
+                block0: Some(Block0 { variable, range }),
+                threshold: blocks.threshold,
+                blocks: Some(blocks),
+                special: None,
+            })
         }
         Err(why) => Err(fail0(why, &facts)),
     }
+}
+
+/// The parametric part of a face-centred scheme: the Laurent rows with the
+/// centre face's row at its generic value, P and P⁺ (that entry raised by
+/// 1), and `special::decide`.
+fn face_centred(rows: &LaurentRows, v: &Varying, rows_text: String) -> Result<ParametricProof, Missing> {
+    let rows_text = format!(
+        "{rows_text}; the centre face's row reads [{}] {} at n, followed as a symbol (a cosine polynomial in the \
+         slot's position j, its transform checked at every block of n = {} and {})",
+        v.field.0,
+        v.field.1,
+        PROBE_VALENCE,
+        PROBE_VALENCE + 1
+    );
+    let fail = |why: String| Missing { reason: why, rows: rows_text.clone(), blocks: None };
+    let mut raised = rows.clone();
+    let e = raised.entries[v.row][v.orbit].remove(&0).unwrap_or_else(|| Rational::from_integer(0.into()))
+        + Rational::from_integer(1.into());
+    if !Weight::is_zero(&e) {
+        raised.entries[v.row][v.orbit].insert(0, e);
+    }
+    let p = laurent::charpoly_in_c(rows).map_err(|e| fail(e.into()))?;
+    let p_plus = laurent::charpoly_in_c(&raised).map_err(|e| fail(e.into()))?;
+    let facts = special::decide(&p, &p_plus, &v.symbol, PROBE_VALENCE).map_err(fail)?;
+    Ok(ParametricProof {
+        rows: rows_text,
+        blocks: None,
+        block0: None,
+        threshold: facts.threshold,
+        special: Some(facts),
+    })
 }

@@ -91,7 +91,7 @@ pub fn at(p: &BiPoly, c: &Rational) -> Poly {
 
 /// μ(c) with the checks of an open piece: all roots real, μ simple, every
 /// other root of modulus < μ.
-fn top_root_at(p: &BiPoly, c: &Rational) -> Result<RealRoot, String> {
+pub(super) fn top_root_at(p: &BiPoly, c: &Rational) -> Result<RealRoot, String> {
     if !all_real(&[p.clone()], c) {
         return Err(format!("a block has a non-real eigenvalue at c = {c}"));
     }
