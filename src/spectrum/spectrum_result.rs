@@ -65,8 +65,14 @@ pub struct Spectrum {
     pub method: Method,
     pub blocks: Vec<BlockInfo>,
     pub eigenvalues: Vec<Eigenvalue>,
+    /// the verdict: at a crease vertex whose sides decouple, the per-side
+    /// one (`crease`); S whole's is then `crease.whole`
     pub verdict: Verdict,
     pub exact_analysis: Option<ExactSummary>,
+    /// at a `crease:K` vertex: each side's spectrum and verdict, and S
+    /// whole's verdict (`spectrum::crease_sides`)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub crease: Option<super::crease_sides::CreaseVerdict>,
     #[serde(skip)]
     pub labels: Vec<VertexLabel>,
     #[serde(skip)]
