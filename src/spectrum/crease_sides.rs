@@ -30,11 +30,9 @@
 //! re-checked on the exact rows where there are some (a weight the float
 //! rows round to almost zero must be exactly zero).
 
-use serde::Serialize;
-
 use super::driver::{self, Assembled, Identity, Problem};
-use super::eigenvalue::Eigenvalue;
-use super::exact::{Candidates, ExactSummary};
+use super::crease_verdict::{CreaseVerdict, SideSpectrum};
+use super::exact::Candidates;
 use super::verdict::Verdict;
 use crate::error::Error;
 use crate::matrix::LocalMatrix;
@@ -75,7 +73,7 @@ pub fn dependency_closure(seed: &[usize], reads: &dyn Fn(usize) -> Vec<usize>) -
 }
 
 /// The two sides of a crease vertex whose rules decouple them.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, serde::Serialize)]
 pub struct CreaseSides {
     /// K: side A is sectors 0..K−1, side B sectors K..n−1
     pub at: usize,
@@ -170,37 +168,6 @@ pub fn principal<W: Clone>(rows: &[Vec<(usize, W)>], set: &[usize]) -> Vec<Vec<(
             rows[a].iter().filter_map(|(b, w)| set.binary_search(b).ok().map(|k| (k, w.clone()))).collect()
         })
         .collect()
-}
-
-/// One side's spectrum and verdict (the sector criterion on its own matrix).
-#[derive(Clone, Debug, Serialize)]
-pub struct SideSpectrum {
-    /// "side A (sectors 0..1, 2 faces, 15 points)"
-    pub name: String,
-    pub faces: usize,
-    /// its points (the principal submatrix's size)
-    pub size: usize,
-    pub eigenvalues: Vec<Eigenvalue>,
-    pub verdict: Verdict,
-    pub exact_analysis: Option<ExactSummary>,
-}
-
-/// The crease's verdict per side, beside S whole's.
-#[derive(Clone, Debug, Serialize)]
-pub struct CreaseVerdict {
-    /// how each side's invariance was checked: "exact, in Q" or "floating
-    /// point (weights up to 1e-12 relative taken as zero)"; null when the
-    /// sides do not decouple
-    pub invariance: Option<String>,
-    /// points of the crease curve (both sides read them)
-    pub curve_size: usize,
-    pub sides: Vec<SideSpectrum>,
-    /// why there is no per-side verdict, when there is none (the verdict
-    /// is then S whole's)
-    pub coupled: Option<String>,
-    /// the sector criterion applied to S whole (both sides at once): not the
-    /// crease's criterion where the sides decouple, kept for comparison
-    pub whole: Verdict,
 }
 
 /// The per-side analysis of a crease configuration from S (float, and exact

@@ -7,6 +7,7 @@ use faer::Mat;
 use serde::Serialize;
 
 use super::eigen;
+use super::crease_verdict::CreaseVerdict;
 use super::eigenvalue::Eigenvalue;
 use super::exact::ExactSummary;
 use super::verdict::Verdict;
@@ -72,7 +73,7 @@ pub struct Spectrum {
     /// at a `crease:K` vertex: each side's spectrum and verdict, and S
     /// whole's verdict (`spectrum::crease_sides`)
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub crease: Option<super::crease_sides::CreaseVerdict>,
+    pub crease: Option<CreaseVerdict>,
     #[serde(skip)]
     pub labels: Vec<VertexLabel>,
     #[serde(skip)]
