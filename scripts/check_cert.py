@@ -1126,7 +1126,22 @@ class Checker:
         if self.premises["row sums"] is not None:
             reject("the rows do not sum to 1")
         self.check_blocks(part)
-        claims = get(part, "claims", what)
+        # a crease vertex whose sides decouple: the document's verdict is the
+        # sides'; S whole's own routes are re-checked against its own word
+        crease = part.get("crease")
+        decoupled = isinstance(crease, dict) and crease.get("decoupled") is True
+        crease_word = self.verdict
+        if decoupled:
+            self.verdict = get(crease, "whole_verdict", "crease")
+            if self.verdict not in ("PROVED", "DISPROVED", "NOT PROVED"):
+                raise Malformed(f"unknown verdict {self.verdict!r} of S whole")
+        self.check_tagged_routes(get(part, "claims", what))
+        if decoupled:
+            self.check_crease_sides(part, crease, crease_word)
+            self.verdict = crease_word
+
+    def check_tagged_routes(self, claims):
+        """The verdict self.verdict against the routes' claims re-checked here."""
         exact = claims.get("exact_route")
         exact_word = self.check_tagged_exact(exact) if exact is not None else None
         enc_word = None
@@ -1139,6 +1154,70 @@ class Checker:
             reject("DISPROVED without the exact route's disproof (this checker re-checks no enclosure disproof of a tagged vertex)")
         if self.verdict == "NOT PROVED":
             self.lines.append("  --  NOT PROVED: nothing to re-check")
+
+    def check_crease_sides(self, part, crease, word):
+        """The per-side verdict of a crease:K vertex. Each side's points are
+        re-derived from the labels (sector s between rays s and s + 1; an
+        'edge' point lies on ray s; the curve is the centre and the points on
+        rays 0 and K): a side's set must hold every point strictly inside it
+        and none strictly inside the other side, and no row of it may read a
+        column outside it (exactly, on the rows above). Each side's rows are
+        then the principal submatrix, rebuilt here, and its certificate is
+        re-checked like a whole one; the crease's verdict is PROVED iff both
+        sides are, DISPROVED iff one is."""
+        tag = get(part, "tag", "tagged")
+        if not isinstance(tag, str) or not tag.startswith("crease:"):
+            reject(f"a per-side verdict at a {tag!r} vertex")
+        try:
+            at = int(tag.split(":", 1)[1])
+        except ValueError:
+            raise Malformed(f"tag {tag!r}: the crease ray is not an integer")
+        labels = as_list(get(part, "labels", "tagged"), "labels", self.size)
+        inside = []
+        for name in labels:
+            if name == "centre":
+                inside.append(None)
+                continue
+            m = re.fullmatch(r"(\w+)\[r(\d+),s(\d+),(\d+)\]", str(name))
+            if m is None:
+                raise Malformed(f"label {name!r} is not kind[rR,sS,I]")
+            sector = int(m.group(3))
+            on_sharp_ray = m.group(1) == "edge" and sector in (0, at)
+            inside.append(None if on_sharp_ray else (0 if sector < at else 1))
+        sides = as_list(get(crease, "sides", "crease"), "sides")
+        if len(sides) != 2:
+            reject(f"a crease has two sides, the document lists {len(sides)}")
+        words = []
+        raw_rows = as_list(get(part, "rows", "tagged"), "rows", self.size)
+        for k, side in enumerate(sides):
+            idx = [as_int(x, "side index", self.size) for x in as_list(get(side, "indices", "side"), "indices")]
+            if idx != sorted(set(idx)):
+                reject(f"side {k}: indices not strictly ascending")
+            members = set(idx)
+            for p, where in enumerate(inside):
+                if where == k and p not in members:
+                    reject(f"side {k} misses {labels[p]}, a point strictly inside it")
+                if where == 1 - k and p in members:
+                    reject(f"side {k} holds {labels[p]}, a point strictly inside the other side")
+            for a in idx:
+                for b in self.rows[a]:
+                    if b not in members:
+                        reject(f"side {k} is not invariant: the row of {labels[a]} reads {labels[b]} outside it")
+            pos = {b: i for i, b in enumerate(idx)}
+            sub = dict(side)
+            sub["rows"] = [[[pos[e[0]], e[1]] for e in raw_rows[a] if e[0] in pos] for a in idx]
+            sub["exact"] = True
+            sub["inexact_rows"] = []
+            sub["size"] = len(idx)
+            checker = Checker(self.doc)
+            checker.tagged(sub)
+            self.lines.extend(f"  {line}" for line in checker.lines)
+            self.ok(f"side {k} ({side.get('name')}): invariant, exactly; its certificate re-checked: {checker.verdict}")
+            words.append(checker.verdict)
+        want = "DISPROVED" if "DISPROVED" in words else "PROVED" if words == ["PROVED", "PROVED"] else "NOT PROVED"
+        if word != want:
+            reject(f"the sides' verdicts {words} make the crease {want}, the document claims {word}")
+        self.ok(f"crease per side: {want} (S whole, not the crease's criterion: {self.verdict})")
 
     def reflection_block(self, m):
         """E (m = 0) or O (m = 1) from the exact rows: E[a][b] = S[a][b] + S[a][Pb]

@@ -631,7 +631,7 @@ fn the_boundary_claims_file_verifies() {
     assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let claims = v[0]["claims"].as_array().unwrap();
-    assert_eq!(claims.len(), 18);
+    assert_eq!(claims.len(), 26);
     for c in claims {
         assert_eq!(c["verdict"], "HOLDS", "{c}");
     }
@@ -644,9 +644,21 @@ fn the_boundary_claims_file_verifies() {
         ("cc.boundary.hoppe-defective", "cc.boundary.hoppe-defective.certified"),
         ("cc.boundary.blz", "cc.boundary.blz.certified"),
         ("loop.boundary.hoppe-defective", "loop.boundary.hoppe-defective.certified"),
+        ("cc.crease.regular", "cc.crease.regular.certified"),
+        ("loop.crease.regular", "loop.crease.regular.certified"),
+        ("cc.crease.four-quad-side", "cc.crease.four-quad-side.certified"),
+        ("cc.crease.blz", "cc.crease.blz.certified"),
     ] {
         assert!(ids.contains(&first) && ids.contains(&second), "{first} / {second}");
     }
+    // crease claims are decided per side, and their evidence says so (the
+    // failing one names its side: side A of 4 quads, tests/crease_sides.rs)
+    for c in claims.iter().filter(|c| c["id"].as_str().unwrap().starts_with("cc.crease") || c["id"].as_str().unwrap().starts_with("loop.crease")) {
+        let computed = c["computed"].as_str().unwrap();
+        assert!(computed.contains("per side") || computed.contains("decided by sides"), "{c}");
+    }
+    let four = claims.iter().find(|c| c["id"] == "cc.crease.four-quad-side").unwrap();
+    assert!(four["computed"].as_str().unwrap().contains("side A (sectors 0..3, 4 faces"), "{four}");
     for c in claims.iter().filter(|c| c["id"].as_str().unwrap().ends_with(".certified")) {
         let computed = c["computed"].as_str().unwrap();
         assert!(computed.contains("certified sector criterion") && computed.contains("decided by"), "{c}");

@@ -243,6 +243,58 @@ pub fn tagged_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &super::tagge
     let inexact: Vec<usize> = rows.iter().enumerate().filter(|(_, r)| r.is_none()).map(|(k, _)| k).collect();
     let rows: Vec<Option<Vec<(usize, ExactValue)>>> =
         rows.iter().map(|r| r.as_ref().map(|r| r.iter().map(|(c, w)| (*c, exact_value(w))).collect())).collect();
+    let mut part = tagged_fields(cert);
+    let fields = part.as_object_mut().expect("an object");
+    fields.insert("tag".into(), json!(analysis.discovered.config.tagging.map(|t| t.name())));
+    fields.insert("size".into(), json!(s.labels.len()));
+    fields.insert("labels".into(), json!(s.labels.iter().map(|l| l.name.as_str()).collect::<Vec<_>>()));
+    fields.insert("exact".into(), json!(inexact.is_empty()));
+    fields.insert("inexact_rows".into(), json!(inexact));
+    fields.insert("rows".into(), json!(rows));
+    // a crease vertex: each side's certificate on its points (the checker
+    // rebuilds each side's rows from the rows above), S whole's verdict
+    if let Some(c) = &cert.crease {
+        let sides: Vec<Value> = c
+            .sides
+            .iter()
+            .map(|side| {
+                let mut v = tagged_fields(&side.certificate);
+                let f = v.as_object_mut().expect("an object");
+                f.insert("name".into(), json!(side.name));
+                f.insert("faces".into(), json!(side.faces));
+                f.insert("indices".into(), json!(side.indices));
+                f.insert("size".into(), json!(side.indices.len()));
+                v
+            })
+            .collect();
+        fields.insert(
+            "crease".into(),
+            json!({
+                "decoupled": c.coupled.is_none(),
+                "coupled": c.coupled,
+                "whole_verdict": c.whole_verdict.word(),
+                "whole_reason": verdict_reason(&c.whole_verdict),
+                "whole_conditional": c.whole_conditional,
+                "whole_decided_by": c.whole_decided_by,
+                "invariance": c.invariance,
+                "curve": c.curve,
+                "sides": sides,
+            }),
+        );
+    }
+    part
+}
+
+fn verdict_reason(v: &Verdict) -> Option<String> {
+    match v {
+        Verdict::Proved => None,
+        Verdict::Disproved(r) | Verdict::NotProved(r) => Some(r.clone()),
+    }
+}
+
+/// The fields of one tagged certificate (S whole's, or a crease side's):
+/// its verdict, the reflection, premises, blocks and the routes' claims.
+fn tagged_fields(cert: &super::tagged::TaggedCertificate) -> Value {
     let blocks: Vec<Value> = cert
         .blocks
         .iter()
@@ -264,23 +316,13 @@ pub fn tagged_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &super::tagge
         n.as_ref().map(|n| json!({ "block": index(n.block), "component": n.component }))
     };
     let e = &cert.enclosure_route;
-    let reason = |v: &Verdict| match v {
-        Verdict::Proved => None,
-        Verdict::Disproved(r) | Verdict::NotProved(r) => Some(r.clone()),
-    };
     json!({
         "statement": cert.statement,
         "verdict": cert.verdict.word(),
-        "reason": reason(&cert.verdict),
+        "reason": verdict_reason(&cert.verdict),
         "conditional": cert.conditional,
         "decided_by": cert.decided_by,
-        "tag": analysis.discovered.config.tagging.map(|t| t.name()),
-        "size": s.labels.len(),
-        "labels": s.labels.iter().map(|l| l.name.as_str()).collect::<Vec<_>>(),
-        "exact": inexact.is_empty(),
-        "inexact_rows": inexact,
         "field": cert.premises.field,
-        "rows": rows,
         "reflection": cert.reflection,
         "premises": cert.premises,
         "blocks": blocks,

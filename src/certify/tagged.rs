@@ -54,6 +54,7 @@ use crate::neighbourhood::NeighbourhoodKind;
 use crate::numeric::exact::{roots_above, Poly, QMatrix};
 use crate::numeric::{Cyclotomic, Interval, Rational, Weight};
 use crate::sdc::Scheme;
+use crate::spectrum::crease_sides::{decouple, principal, Decoupling, READ_TOLERANCE};
 use crate::spectrum::reflection::{commutes, reflection_of, split};
 use crate::spectrum::Analysis;
 
@@ -66,6 +67,11 @@ pub const CROSS_CHECK_SIZE: usize = 64;
 
 /// Largest block the exact route reduces over Q.
 pub const MAX_EXACT_BLOCK: usize = 160;
+
+const CREASE_STATEMENT: &str = "for each side of the crease vertex (the principal submatrix of the true local \
+     subdivision matrix S on the side's points with the crease curve's, whose rows have zero weight outside them): \
+     λ0 = 1 simple; the next two eigenvalues by modulus λ1 ≥ λ2 real, positive, non-defective; every other \
+     eigenvalue of modulus below λ2 (the spectral part of the sector criterion, side by side)";
 
 const STATEMENT: &str = "for the true local subdivision matrix S on the analysis neighbourhood of the tagged \
      vertex (every weight enclosed, cos(π/k) included): λ0 = 1 simple; the next two eigenvalues by modulus \
@@ -164,6 +170,66 @@ pub struct TaggedCertificate {
     /// why the exact route was not taken, when it was not
     #[serde(skip_serializing_if = "Option::is_none")]
     pub exact_route_skipped: Option<String>,
+    /// at a `crease:K` vertex: each side's certificate and S whole's
+    /// verdict (the verdict above is the sides' where they decouple)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub crease: Option<CreaseCertificate>,
+}
+
+/// The per-side certificates of a crease vertex (`spectrum::crease_sides`).
+#[derive(Clone, Debug, Serialize)]
+pub struct CreaseCertificate {
+    /// S whole's verdict, conditionality and route (both sides at once: not
+    /// the crease's criterion where the sides decouple); the certificate's
+    /// own verdict when they do not
+    pub whole_verdict: Verdict,
+    pub whole_conditional: bool,
+    pub whole_decided_by: Option<&'static str>,
+    /// each side's set has zero weight outside it in every row: checked on
+    /// the exact rows (in Q or Q(ζ_N)), or on the interval rows (an entry
+    /// outside must be the point 0)
+    pub invariance: Option<Check>,
+    /// the crease curve's points (both sides hold them), matrix indices
+    pub curve: Vec<usize>,
+    pub sides: Vec<SideCertificate>,
+    /// why the sides do not decouple, when they do not
+    pub coupled: Option<String>,
+}
+
+/// One side's certificate: the sector criterion's spectral part proved
+/// about the principal submatrix of S on the side's points.
+#[derive(Clone, Debug, Serialize)]
+pub struct SideCertificate {
+    /// "side A (sectors 0..1, 2 faces, 15 points)"
+    pub name: String,
+    pub faces: usize,
+    /// the side's points (matrix indices of S, ascending)
+    pub indices: Vec<usize>,
+    pub certificate: TaggedCertificate,
+}
+
+/// A certificate that proves nothing, with why.
+fn not_proved_with(why: String, premises: TaggedPremises, statement: &str) -> TaggedCertificate {
+    TaggedCertificate {
+        verdict: Verdict::NotProved(why.clone()),
+        conditional: false,
+        statement: statement.into(),
+        decided_by: None,
+        premises,
+        reflection: None,
+        blocks: Vec::new(),
+        enclosure_route: EnclosureRoute {
+            verdict: Verdict::NotProved(why),
+            lambda0: None,
+            lambda1: None,
+            lambda2: None,
+            others_max_modulus: None,
+            gap_lower_bound: None,
+        },
+        exact_route: None,
+        exact_route_skipped: None,
+        crease: None,
+    }
 }
 
 /// Certify the spectral part of the sector criterion at a tagged vertex, from
@@ -184,25 +250,7 @@ pub fn certify_tagged(scheme: &dyn Scheme, analysis: &Analysis) -> Result<Tagged
     }
     let labels = &s.labels;
     let size = labels.len();
-    let not_proved = |why: String, premises: TaggedPremises| TaggedCertificate {
-        verdict: Verdict::NotProved(why.clone()),
-        conditional: false,
-        statement: STATEMENT.into(),
-        decided_by: None,
-        premises,
-        reflection: None,
-        blocks: Vec::new(),
-        enclosure_route: EnclosureRoute {
-            verdict: Verdict::NotProved(why),
-            lambda0: None,
-            lambda1: None,
-            lambda2: None,
-            others_max_modulus: None,
-            gap_lower_bound: None,
-        },
-        exact_route: None,
-        exact_route_skipped: None,
-    };
+    let not_proved = |why: String, premises: TaggedPremises| not_proved_with(why, premises, STATEMENT);
     let no_premises =
         || TaggedPremises { row_sums_one: Check::Fails("not checked".into()), reflection: None, field: None };
     if size > MAX_TAGGED_SIZE {
@@ -234,6 +282,151 @@ pub fn certify_tagged(scheme: &dyn Scheme, analysis: &Analysis) -> Result<Tagged
     // the same rows exactly, one by one (rational, else in Q(ζ_N))
     let exact: ExactRows =
         everyone.iter().map(|&k| exact_rows(scheme, analysis, &[k]).and_then(|mut r| r.pop())).collect();
+    // the float spectrum proposes the exact route's candidates (a side's
+    // spectrum is part of S's, so they serve the sides too)
+    let reals = s.eigenvalues.iter().filter(|e| e.im.abs() <= 1e-9 * e.modulus.max(1.0)).map(|e| e.re);
+    let candidates = crate::engine::exact::candidates(reals);
+    let mut whole = certify_rows(&rows, &exact, labels, reflection_of(config, labels), &candidates, STATEMENT)?;
+    // a crease vertex: the verdict is the sides' where the rules decouple them
+    if let Some(crease) = crease_certificate(analysis, &rows, &exact, &candidates, &whole)? {
+        if crease.coupled.is_none() {
+            let (verdict, conditional) = sides_verdict(&crease.sides);
+            whole.verdict = verdict;
+            whole.conditional = conditional;
+            whole.decided_by = Some("sides");
+            whole.statement = CREASE_STATEMENT.into();
+        }
+        whole.crease = Some(crease);
+    }
+    Ok(whole)
+}
+
+/// The sides of a crease vertex, certified one by one: their sets are
+/// proposed by the float rows' reads (`spectrum::crease_sides::decouple`,
+/// the dependency closure of each side's inside points), their invariance
+/// is checked on this certificate's own rows (exact rows: the weight is 0 in
+/// Q or Q(ζ_N); interval rows: absent or the point 0), and each side's
+/// principal submatrix is certified by [`certify_rows`] with the reflection
+/// restricted to it (r ↦ K − r keeps each side). `None` for other tags.
+fn crease_certificate(
+    analysis: &Analysis,
+    rows: &IntervalRows,
+    exact: &ExactRows,
+    candidates: &[Rational],
+    whole: &TaggedCertificate,
+) -> Result<Option<CreaseCertificate>, Error> {
+    let config = &analysis.discovered.config;
+    let labels = &analysis.spectrum.labels;
+    let float = &analysis.matrix;
+    let scale = float.rows.iter().flatten().fold(0.0f64, |m, (_, w)| m.max(w.abs())).max(1.0);
+    let reads = |a: usize| -> Vec<usize> {
+        float.rows[a].iter().filter(|(_, w)| w.abs() > READ_TOLERANCE * scale).map(|(b, _)| *b).collect()
+    };
+    let Some(decoupling) = decouple(config, labels, &reads) else { return Ok(None) };
+    let mut out = CreaseCertificate {
+        whole_verdict: whole.verdict.clone(),
+        whole_conditional: whole.conditional,
+        whole_decided_by: whole.decided_by,
+        invariance: None,
+        curve: Vec::new(),
+        sides: Vec::new(),
+        coupled: None,
+    };
+    let sides = match decoupling {
+        Decoupling::Coupled(why) => {
+            out.coupled = Some(why);
+            return Ok(Some(out));
+        }
+        Decoupling::Sides(sides) => sides,
+    };
+    // the invariance, on the certificate's rows: the exact row where there
+    // is one, else the interval row
+    let mut invariance = Check::Exact;
+    for set in &sides.sides {
+        for &a in set {
+            let outside = match &exact[a] {
+                Some(row) => row.iter().find(|(b, w)| set.binary_search(b).is_err() && !w.is_zero()).map(|(b, _)| *b),
+                None => rows[a]
+                    .iter()
+                    .find(|(b, w)| set.binary_search(b).is_err() && !(w.lo == 0.0 && w.hi == 0.0))
+                    .map(|(b, _)| *b),
+            };
+            if let Some(b) = outside {
+                invariance = Check::Fails(format!(
+                    "the row of {} has a weight on {}, outside its side, not shown to be 0",
+                    labels[a].name, labels[b].name
+                ));
+            }
+        }
+    }
+    out.invariance = Some(invariance.clone());
+    if !invariance.holds() {
+        out.coupled = Some(format!("the sides' invariance is not proved: {invariance:?}"));
+        return Ok(Some(out));
+    }
+    out.curve = sides.curve.clone();
+    let image = reflection_of(config, labels);
+    for (side, set) in sides.sides.iter().enumerate() {
+        let name = sides.name(side);
+        let side_rows: IntervalRows = principal(rows, set);
+        let side_exact: ExactRows = set
+            .iter()
+            .map(|&a| {
+                exact[a].as_ref().map(|row| {
+                    row.iter().filter_map(|(b, w)| set.binary_search(b).ok().map(|k| (k, w.clone()))).collect()
+                })
+            })
+            .collect();
+        let side_labels: Vec<_> = set.iter().map(|&k| labels[k].clone()).collect();
+        // the reflection keeps each side: its restriction, where it maps the
+        // side's set onto itself
+        let side_image: Option<Vec<usize>> =
+            image.as_ref().and_then(|p| set.iter().map(|&k| set.binary_search(&p[k]).ok()).collect());
+        let statement = format!(
+            "for the principal submatrix of the true S on {name} (its rows have zero weight outside it): λ0 = 1 \
+             simple; the next two eigenvalues by modulus λ1 ≥ λ2 real, positive, non-defective; every other \
+             eigenvalue of modulus below λ2"
+        );
+        let certificate = certify_rows(&side_rows, &side_exact, &side_labels, side_image, candidates, &statement)?;
+        out.sides.push(SideCertificate { name, faces: sides.faces(side), indices: set.clone(), certificate });
+    }
+    Ok(Some(out))
+}
+
+/// The crease's verdict from its sides': PROVED when both are (conditional
+/// when either is), DISPROVED when one is (naming it), else NOT PROVED.
+fn sides_verdict(sides: &[SideCertificate]) -> (Verdict, bool) {
+    if let Some(d) = sides.iter().find(|s| matches!(s.certificate.verdict, Verdict::Disproved(_))) {
+        return (
+            Verdict::Disproved(format!("{}: {}", d.name, reason(&d.certificate.verdict))),
+            d.certificate.conditional,
+        );
+    }
+    let open: Vec<String> = sides
+        .iter()
+        .filter(|s| matches!(s.certificate.verdict, Verdict::NotProved(_)))
+        .map(|s| format!("{}: {}", s.name, reason(&s.certificate.verdict)))
+        .collect();
+    if !open.is_empty() {
+        return (Verdict::NotProved(open.join("; ")), false);
+    }
+    (Verdict::Proved, sides.iter().any(|s| s.certificate.conditional))
+}
+
+/// The certificate of one matrix given by its rows (interval, and exact
+/// where known) over `labels`, with the reflection `image` that keeps the
+/// sharp rays (checked here) and the exact route's rational candidates.
+fn certify_rows(
+    rows: &IntervalRows,
+    exact: &ExactRows,
+    labels: &[crate::neighbourhood::VertexLabel],
+    image: Option<Vec<usize>>,
+    candidates: &[Rational],
+    statement: &str,
+) -> Result<TaggedCertificate, Error> {
+    let size = rows.len();
+    let everyone: Vec<usize> = (0..size).collect();
+    let not_proved = |why: String, premises: TaggedPremises| not_proved_with(why, premises, statement);
     let row_check = row_sums(&rows, &exact, labels, &everyone);
     let field = field_name(&exact);
     let dense_interval = dense(&rows, size, Interval::point(0.0));
@@ -242,7 +435,6 @@ pub fn certify_tagged(scheme: &dyn Scheme, analysis: &Analysis) -> Result<Tagged
         dense(&exact_rows, size, Cyclotomic::zero())
     });
     // the reflection: checked exactly on exact rows, else to overlap
-    let image = reflection_of(config, labels);
     let reflection_check = image.as_ref().map(|p| match &dense_exact {
         Some(e) => {
             if commutes(e, p, |a, b| a == b) {
@@ -332,11 +524,7 @@ pub fn certify_tagged(scheme: &dyn Scheme, analysis: &Analysis) -> Result<Tagged
         Some(q) if q.iter().any(|(_, m)| m.n > MAX_EXACT_BLOCK) => {
             (None, Some(format!("a block exceeds the {MAX_EXACT_BLOCK} rows the exact route reduces over Q")))
         }
-        Some(q) => {
-            let reals = s.eigenvalues.iter().filter(|e| e.im.abs() <= 1e-9 * e.modulus.max(1.0)).map(|e| e.re);
-            let candidates = crate::engine::exact::candidates(reals);
-            (Some(exact_sector(&q, &candidates)), None)
-        }
+        Some(q) => (Some(exact_sector(&q, candidates)), None),
     };
     // the verdict: each route is a proof on its own; they must agree
     let enclosures_decide = decisive(&enclosure_route.verdict);
@@ -371,7 +559,7 @@ pub fn certify_tagged(scheme: &dyn Scheme, analysis: &Analysis) -> Result<Tagged
     Ok(TaggedCertificate {
         verdict,
         conditional,
-        statement: STATEMENT.into(),
+        statement: statement.into(),
         decided_by,
         premises,
         reflection: split_by,
@@ -379,6 +567,7 @@ pub fn certify_tagged(scheme: &dyn Scheme, analysis: &Analysis) -> Result<Tagged
         enclosure_route,
         exact_route,
         exact_route_skipped,
+        crease: None,
     })
 }
 

@@ -164,15 +164,59 @@ pub(super) fn spectrum_table(s: &Spectrum) -> String {
     }
     let criterion = match s.verdict.criterion {
         "sector" => "Spectral part of the C1 criterion at a tagged vertex (Zorin 2000)",
+        "sector per side" => {
+            "Spectral part of the C1 criterion at a crease vertex, per side (Zorin 2000; Biermann–Levin–Zorin 2000)"
+        }
         _ => "Reif spectral C1 criterion",
     };
     out += &format!("\n{criterion}: {}\n", if s.verdict.c1_spectral { "PASSES" } else { "FAILS" });
     for r in &s.verdict.reasons {
         out += &format!("  - {r}\n");
     }
+    if let Some(c) = &s.crease {
+        out += &crease_sides_table(c);
+    }
     if let Some(r) = s.verdict.lambda3_over_lambda1_squared {
         out += &format!("  |λ3|/λ1² = {}\n", crate::spectrum::fmt_f(r));
     }
+    out
+}
+
+/// Each side's leading eigenvalues at a crease vertex (with how they are
+/// known), and S whole's verdict, labelled as not the crease's.
+fn crease_sides_table(c: &crate::spectrum::crease_verdict::CreaseVerdict) -> String {
+    const SHOWN: usize = 6;
+    let mut out = String::new();
+    for side in &c.sides {
+        let shown: Vec<String> = side
+            .eigenvalues
+            .iter()
+            .take(SHOWN)
+            .map(|e| match (e.algebraic_multiplicity, e.geometric_multiplicity) {
+                (1, _) => e.display(),
+                (m, g) if m == g => format!("{} (x{m})", e.display()),
+                (m, g) => format!("{} (x{m}, defective: geo {g})", e.display()),
+            })
+            .collect();
+        let evidence = match &side.exact_analysis {
+            Some(x) if x.complete() && x.agrees_with_float => "floating point, every eigenvalue and multiplicity exact over Q",
+            Some(_) => "floating point, partly confirmed exactly",
+            None => "floating point",
+        };
+        out += &format!(
+            "  {} spectrum ({evidence}): {}{}\n",
+            side.name,
+            shown.join(", "),
+            if side.eigenvalues.len() > SHOWN { ", ..." } else { "" }
+        );
+    }
+    let w = &c.whole;
+    out += &format!(
+        "  S whole (both sides at once{}): {}{}\n",
+        if c.coupled.is_some() { "" } else { "; not the crease's criterion" },
+        if w.c1_spectral { "PASSES" } else { "FAILS" },
+        if w.failures.is_empty() { String::new() } else { format!(" — {}", w.failures.join("; ")) }
+    );
     out
 }
 

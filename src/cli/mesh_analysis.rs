@@ -205,10 +205,46 @@ fn premise_text(check: &crate::certify::matrix::Check, field: &str) -> String {
     }
 }
 
-/// The tagged certificate as text: the verdict, the premises, each route.
+/// The tagged certificate as text: the verdict, the premises, each route;
+/// at a crease vertex each side's, then S whole's, labelled.
 fn tagged_certificate_table(c: &crate::certify::tagged::TaggedCertificate) -> String {
     let mut out =
         certificate_head("certified sector criterion, spectral part", &c.verdict, c.conditional, &c.statement);
+    let Some(crease) = &c.crease else {
+        out += &tagged_routes(c, "  ");
+        out += &format!("  decided by: {}\n", c.decided_by.unwrap_or("neither route"));
+        return out;
+    };
+    if let Some(why) = &crease.coupled {
+        out += &format!("  no per-side verdict: {why}; the criterion is applied to S whole\n");
+        out += &tagged_routes(c, "  ");
+        out += &format!("  decided by: {}\n", c.decided_by.unwrap_or("neither route"));
+        return out;
+    }
+    let invariance = crease.invariance.as_ref().map_or("-".to_string(), |x| premise_text(x, c.premises.field.as_deref().unwrap_or("Q")));
+    out += &format!(
+        "  premise each side's points (with the crease curve's {}) have zero weight outside them in every row: {invariance}\n",
+        crease.curve.len()
+    );
+    for side in &crease.sides {
+        let x = &side.certificate;
+        out += &format!("  {}: {}\n", side.name, x.verdict.display());
+        out += &tagged_routes(x, "    ");
+        out += &format!("    decided by: {}\n", x.decided_by.unwrap_or("neither route"));
+    }
+    out += &format!(
+        "  S whole (both sides at once; not the crease's criterion): {}, decided by: {}\n",
+        crease.whole_verdict.display(),
+        crease.whole_decided_by.unwrap_or("neither route")
+    );
+    out += &tagged_routes(c, "    ");
+    out += "  decided by: each side's certificate\n";
+    out
+}
+
+/// A tagged certificate's premises and routes, each line after `indent`.
+fn tagged_routes(c: &crate::certify::tagged::TaggedCertificate, indent: &str) -> String {
+    let mut out = String::new();
     let field = c.premises.field.as_deref().unwrap_or("Q");
     let show = |x: &crate::certify::matrix::Check| premise_text(x, field);
     out += &format!("  premise row sums = 1: {}\n", show(&c.premises.row_sums_one));
@@ -242,8 +278,7 @@ fn tagged_certificate_table(c: &crate::certify::tagged::TaggedCertificate) -> St
         (None, Some(why)) => out += &format!("  exact route (lemma T7): not taken ({why})\n"),
         (None, None) => {}
     }
-    out += &format!("  decided by: {}\n", c.decided_by.unwrap_or("neither route"));
-    out
+    out.lines().map(|l| format!("{indent}{}\n", l.strip_prefix("  ").unwrap_or(l))).collect()
 }
 
 /// The certificate as text: the verdict, the premises and the margins.

@@ -4,6 +4,7 @@
 
 use std::sync::Arc;
 
+use super::crease_sides;
 use super::driver;
 use super::exact;
 use super::spectrum_result::{Method, Spectrum};
@@ -112,7 +113,21 @@ pub fn analyse(scheme: &dyn Scheme, config: &Configuration, opts: &Options) -> R
         candidates: exact::Candidates::Recognised,
         rows: &rows,
     };
-    let driver::Solved { matrix, exact_matrix, spectrum } = driver::solve(problem)?;
+    let identity = problem.identity.clone();
+    let driver::Solved { matrix, exact_matrix, mut spectrum } = driver::solve(problem)?;
+    // a crease vertex is decided side by side where its rules decouple the
+    // sides (`crease_sides`); S whole's verdict is kept beside it
+    if let Some(c) = crease_sides::crease_verdict(
+        config,
+        &identity,
+        &matrix,
+        exact_matrix.as_deref(),
+        &spectrum.verdict,
+        opts.exact,
+    )? {
+        spectrum.verdict = crease_sides::combined(&c);
+        spectrum.crease = Some(c);
+    }
     Ok(Analysis { discovered, matrix, exact_matrix, spectrum, derived: Derived::default() })
 }
 

@@ -210,6 +210,7 @@ pub fn solve(p: Problem) -> Result<Solved, Error> {
         eigenvalues,
         verdict,
         exact_analysis,
+        crease: None,
         labels: p.labels,
         synthesis,
     };

@@ -4,6 +4,8 @@
 //! labelled vertices, exact confirmation where S is rational.
 
 pub mod analysis;
+pub mod crease_sides;
+pub mod crease_verdict;
 pub mod decomposition;
 pub mod driver;
 pub mod eigen;

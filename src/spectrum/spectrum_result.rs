@@ -7,6 +7,7 @@ use faer::Mat;
 use serde::Serialize;
 
 use super::eigen;
+use super::crease_verdict::CreaseVerdict;
 use super::eigenvalue::Eigenvalue;
 use super::exact::ExactSummary;
 use super::verdict::Verdict;
@@ -65,8 +66,14 @@ pub struct Spectrum {
     pub method: Method,
     pub blocks: Vec<BlockInfo>,
     pub eigenvalues: Vec<Eigenvalue>,
+    /// the verdict: at a crease vertex whose sides decouple, the per-side
+    /// one (`crease`); S whole's is then `crease.whole`
     pub verdict: Verdict,
     pub exact_analysis: Option<ExactSummary>,
+    /// at a `crease:K` vertex: each side's spectrum and verdict, and S
+    /// whole's verdict (`spectrum::crease_sides`)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub crease: Option<CreaseVerdict>,
     #[serde(skip)]
     pub labels: Vec<VertexLabel>,
     #[serde(skip)]

@@ -41,12 +41,20 @@ impl CheckKind for SpectralC1 {
         over_valences(subject, |subject, n| {
             let spec = cache.spectrum(subject, n)?;
             let got = spec.verdict.c1_spectral;
-            let why = spec.verdict.reasons.iter().find(|r| r.contains("not") || r.contains("defective")).cloned();
+            // a crease decided side by side names that route and the
+            // failing side; elsewhere the first reason that says why
+            let per_side = spec.verdict.criterion == "sector per side";
+            let why = if per_side {
+                spec.verdict.failures.first().cloned()
+            } else {
+                spec.verdict.reasons.iter().find(|r| r.contains("not") || r.contains("defective")).cloned()
+            };
             Ok((
                 got == *expect,
                 if *expect { "passes".into() } else { "fails".into() },
                 format!(
-                    "{}{}",
+                    "{}{}{}",
+                    if per_side { "per side (each side's principal submatrix of S, floating point): " } else { "" },
                     if got { "passes" } else { "fails" },
                     why.map(|w| format!(": {w}")).unwrap_or_default()
                 ),
