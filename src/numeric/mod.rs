@@ -10,6 +10,7 @@ pub mod exact;
 pub mod expr;
 pub mod field;
 pub mod interval;
+pub mod modular;
 pub mod reading;
 pub mod recognise;
 pub mod small;

@@ -77,14 +77,7 @@ fn sign_changes(chain: &[Poly], x: &Rational) -> usize {
     let mut last = 0i8;
     let mut changes = 0;
     for p in chain {
-        let v = p.eval(x);
-        let s = if v.is_positive() {
-            1
-        } else if v.is_negative() {
-            -1
-        } else {
-            0
-        };
+        let s = p.sign_at(x);
         if s != 0 {
             if last != 0 && s != last {
                 changes += 1;
@@ -132,14 +125,19 @@ impl RealRoot {
             return;
         }
         let m = self.mid();
-        let v = self.poly.eval(&m);
-        if v.is_zero() {
+        let v = self.poly.sign_at(&m);
+        if v == 0 {
             *self = RealRoot { rational: Some(m.clone()), lo: m.clone(), hi: m, poly: self.poly.clone() };
             return;
         }
-        // the root is where the sign changes; the ends are never roots
-        let s_lo = self.poly.eval(&self.lo).signum();
-        if v.signum() == s_lo {
+        // the root is where the sign changes; an end that is itself a
+        // (simple) root of the polynomial — a range end — has the sign of
+        // the derivative just inside it
+        let s_lo = match self.poly.sign_at(&self.lo) {
+            0 => self.poly.derivative().sign_at(&self.lo),
+            s => s,
+        };
+        if v == s_lo {
             self.lo = m;
         } else {
             self.hi = m;
@@ -159,7 +157,7 @@ impl RealRoot {
         }
         self.refine(&Rational::new(1.into(), BigInt::from(10u64).pow(30)));
         for c in convergents(&self.mid(), 40) {
-            if c > self.lo && c < self.hi && self.poly.eval(&c).is_zero() {
+            if c > self.lo && c < self.hi && self.poly.sign_at(&c) == 0 {
                 self.rational = Some(c.clone());
                 self.lo = c.clone();
                 self.hi = c;
@@ -192,55 +190,162 @@ pub fn convergents(x: &Rational, max: usize) -> Vec<Rational> {
 }
 
 /// Every real root of `p` (not the zero polynomial) in the closed interval
-/// [lo, hi], in increasing order.
+/// [lo, hi], in increasing order: rational roots found exactly, the others
+/// each in an open interval (a, b) with rational ends that are not roots.
+///
+/// Descartes' rule of signs with bisection (Collins–Akritas; the
+/// Vincent–Collins–Akritas method in the form of Krandick's bisection),
+/// in integer arithmetic: the square-free part is mapped to [0, 1]
+/// (x = lo + (hi − lo)·y, denominators cleared), and an interval of y is
+/// split at its midpoint until the sign variations of
+/// (1 + y)^d q(1/(1 + y)) — the number of roots of q in (0, 1) or exceeding
+/// it by an even number — are 0 or 1 (exactly 1 root then). Each half is
+/// again a polynomial on [0, 1]: 2^d q(y/2) and its Taylor shift by 1, so
+/// no rational is normalised on the way. Sturm sequences (`sturm_chain`)
+/// decide the same counts but their coefficients grow with the degree
+/// squared: at degree 84 they took minutes.
 pub fn isolate(p: &Poly, lo: &Rational, hi: &Rational) -> Vec<RealRoot> {
     let sq = squarefree(p);
-    if sq.degree() == 0 {
-        return Vec::new();
-    }
-    let chain = sturm_chain(&sq);
     let mut out = Vec::new();
-    if sq.eval(lo).is_zero() {
-        out.push(RealRoot { poly: sq.clone(), lo: lo.clone(), hi: lo.clone(), rational: Some(lo.clone()) });
+    if sq.degree() == 0 || lo > hi {
+        return out;
     }
-    // (a, b] with its count
-    let mut stack = vec![(lo.clone(), hi.clone(), count_roots(&chain, lo, hi))];
-    let mut found = Vec::new();
-    while let Some((a, b, k)) = stack.pop() {
-        if k == 0 {
+    let exact = |x: &Rational| RealRoot { poly: sq.clone(), lo: x.clone(), hi: x.clone(), rational: Some(x.clone()) };
+    for end in [lo, hi] {
+        if sq.sign_at(end) == 0 && out.iter().all(|r: &RealRoot| r.rational.as_ref() != Some(end)) {
+            out.push(exact(end));
+        }
+    }
+    if lo == hi {
+        return out;
+    }
+    let width = hi - lo;
+    // y in [0, 1] ↦ lo + width·y; the dyadic interval [a/2^k, (a+1)/2^k]
+    let at = |a: &BigInt, k: u32| lo + &width * Rational::new(a.clone(), BigInt::one() << k);
+    let mut stack: Vec<(Vec<BigInt>, BigInt, u32)> = vec![(affine_image(&sq, lo, &width), BigInt::zero(), 0)];
+    while let Some((mut q, a, k)) = stack.pop() {
+        // a root at the interval's left end was recorded already (a range
+        // end or a midpoint): divide it out (it is simple)
+        while q.first().is_some_and(Zero::is_zero) {
+            q.remove(0);
+        }
+        if q.len() <= 1 {
             continue;
         }
-        if k == 1 {
-            if sq.eval(&b).is_zero() {
-                found.push(RealRoot { poly: sq.clone(), lo: b.clone(), hi: b.clone(), rational: Some(b) });
-            } else {
-                found.push(RealRoot { poly: sq.clone(), lo: a, hi: b, rational: None });
+        match descartes_bound(&q) {
+            0 => continue,
+            1 => {
+                out.push(RealRoot { poly: sq.clone(), lo: at(&a, k), hi: at(&(&a + 1), k), rational: None });
+                continue;
             }
-            continue;
+            _ => {}
         }
-        let m = (&a + &b) / Rational::from_integer(2.into());
-        let left = count_roots(&chain, &a, &m);
-        stack.push((m.clone(), b, k - left));
-        stack.push((a, m, left));
+        let left = remove_power_of_two(half_scaled(&q));
+        let mut right = left.clone();
+        taylor_shift_one(&mut right);
+        let (a2, k2) = (&a * 2, k + 1);
+        if right[0].is_zero() {
+            out.push(exact(&at(&(&a2 + 1), k2)));
+        }
+        stack.push((right, &a2 + 1, k2));
+        stack.push((left, a2, k2));
     }
-    // an isolating interval (a, b] with a a root found separately: make it open
-    for r in found.iter_mut() {
-        while r.rational.is_none() && sq.eval(&r.lo).is_zero() {
-            let m = r.mid();
-            if sq.eval(&m).is_zero() {
-                r.lo = m.clone();
-                r.hi = m.clone();
-                r.rational = Some(m);
-            } else if count_roots(&chain, &r.lo, &m) == 1 {
-                r.hi = m;
-            } else {
-                r.lo = m;
-            }
+    // an interval next to a root at a range end: bisect until neither end
+    // is a root (the one root inside is apart from both ends)
+    for r in out.iter_mut() {
+        while r.rational.is_none() && (sq.sign_at(&r.lo) == 0 || sq.sign_at(&r.hi) == 0) {
+            r.bisect();
         }
     }
-    out.extend(found);
     out.sort_by(|a, b| a.mid().cmp(&b.mid()));
     out
+}
+
+/// Integer coefficients (primitive) of p(lo + w·y).
+fn affine_image(p: &Poly, lo: &Rational, w: &Rational) -> Vec<BigInt> {
+    // lo = A/D, w = B/D: D^d p((A + B y)/D) = Σ s_k (A + B y)^k D^(d−k) by
+    // Horner (R ← R·(A + B y) + s_k D^(d−k)) with p's integer multiple s
+    let s = integer_coefficients(p);
+    let d = s.len() - 1;
+    let den = lo.denom().lcm(w.denom());
+    let a = (lo * Rational::from_integer(den.clone())).to_integer();
+    let b = (w * Rational::from_integer(den.clone())).to_integer();
+    let mut r: Vec<BigInt> = vec![s[d].clone()];
+    let mut dpow = BigInt::one();
+    for k in (0..d).rev() {
+        dpow *= &den;
+        let mut next = vec![BigInt::zero(); r.len() + 1];
+        for (i, c) in r.iter().enumerate() {
+            next[i] += c * &a;
+            next[i + 1] += c * &b;
+        }
+        next[0] += &s[k] * &dpow;
+        r = next;
+    }
+    super::modular::primitive_part(&r)
+}
+
+/// 2^d q(y/2): the left half of [0, 1] as [0, 1].
+fn half_scaled(q: &[BigInt]) -> Vec<BigInt> {
+    let d = q.len() - 1;
+    q.iter().enumerate().map(|(k, c)| c << (d - k)).collect()
+}
+
+/// Divide by the largest power of two dividing every coefficient (keeps
+/// the numbers small; the roots are the same).
+fn remove_power_of_two(mut q: Vec<BigInt>) -> Vec<BigInt> {
+    let z = q.iter().filter_map(|c| c.trailing_zeros()).min().unwrap_or(0);
+    if z > 0 {
+        for c in q.iter_mut() {
+            *c = &*c >> z;
+        }
+    }
+    q
+}
+
+/// q(y) ← q(y + 1), in place (Horner's Taylor shift, O(d²) additions).
+fn taylor_shift_one(q: &mut [BigInt]) {
+    let d = q.len() - 1;
+    for i in 0..d {
+        for j in (i..d).rev() {
+            let next = q[j + 1].clone();
+            q[j] += next;
+        }
+    }
+}
+
+/// Sign variations of (1 + y)^d q(1/(1 + y)): at least the number of roots
+/// of q in (0, 1), and of the same parity (Descartes); 0 or 1 is exact.
+fn descartes_bound(q: &[BigInt]) -> usize {
+    let mut t: Vec<BigInt> = q.iter().rev().cloned().collect();
+    taylor_shift_one(&mut t);
+    let mut last = 0i8;
+    let mut changes = 0;
+    for c in &t {
+        let s = if c.is_positive() {
+            1
+        } else if c.is_negative() {
+            -1
+        } else {
+            0
+        };
+        if s != 0 {
+            if last != 0 && s != last {
+                changes += 1;
+                if changes > 1 {
+                    return changes;
+                }
+            }
+            last = s;
+        }
+    }
+    changes
+}
+
+/// Distinct real roots of the square-free polynomial g strictly between lo
+/// and hi.
+fn roots_strictly_between(g: &Poly, lo: &Rational, hi: &Rational) -> usize {
+    isolate(g, lo, hi).iter().filter(|r| r.rational.as_ref().is_none_or(|x| x != lo && x != hi)).count()
 }
 
 /// Whether two real roots are the same number (exact: by the common factor
@@ -250,8 +355,8 @@ pub fn same_root(a: &mut RealRoot, b: &mut RealRoot) -> bool {
     loop {
         match (&a.rational, &b.rational) {
             (Some(x), Some(y)) => return x == y,
-            (Some(x), None) => return x > &b.lo && x < &b.hi && b.poly.eval(x).is_zero(),
-            (None, Some(y)) => return y > &a.lo && y < &a.hi && a.poly.eval(y).is_zero(),
+            (Some(x), None) => return x > &b.lo && x < &b.hi && b.poly.sign_at(x) == 0,
+            (None, Some(y)) => return y > &a.lo && y < &a.hi && a.poly.sign_at(y) == 0,
             _ => {}
         }
         if a.hi <= b.lo || b.hi <= a.lo {
@@ -266,9 +371,8 @@ pub fn same_root(a: &mut RealRoot, b: &mut RealRoot) -> bool {
         }
         let lo = std::cmp::max(a.lo.clone(), b.lo.clone());
         let hi = std::cmp::min(a.hi.clone(), b.hi.clone());
-        let chain = sturm_chain(&g);
         // a common root in the overlap, strictly inside both intervals
-        let inside = count_roots(&chain, &lo, &hi) - usize::from(g.eval(&hi).is_zero());
+        let inside = roots_strictly_between(&g, &lo, &hi);
         if inside > 0 {
             // both intervals hold exactly one root of their polynomial, and
             // the common factor has one in the overlap: it is that root
@@ -378,6 +482,7 @@ pub fn negated(r: &RealRoot) -> RealRoot {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use num_traits::ToPrimitive;
 
     fn q(p: i64, d: i64) -> Rational {
         Rational::new(p.into(), d.into())
@@ -401,6 +506,47 @@ mod tests {
         let mut r0 = r[0].clone();
         r0.recognise_rational();
         assert_eq!(r0.rational, Some(q(1, 2)));
+    }
+
+    #[test]
+    fn descartes_isolation_agrees_with_sturm_counts() {
+        // (x − 1/3)(x − 1)(x² − 2)(5x² − 1)(x² + 1)·(x − 1): a double root,
+        // rational roots (one at the range's end), irrational pairs and a
+        // complex pair; roots in [−2, 1]: −√2, −1/√5, 1/3, 1/√5, 1
+        let lin = |a: i64, b: i64| poly(&[-a, b]);
+        let mul = |a: &Poly, b: &Poly| {
+            let mut c = vec![q(0, 1); a.coeffs.len() + b.coeffs.len() - 1];
+            for (i, x) in a.coeffs.iter().enumerate() {
+                for (j, y) in b.coeffs.iter().enumerate() {
+                    c[i + j] = &c[i + j] + x * y;
+                }
+            }
+            Poly { coeffs: c }
+        };
+        let p = [lin(1, 3), lin(1, 1), poly(&[-2, 0, 1]), poly(&[-1, 0, 5]), poly(&[1, 0, 1]), lin(1, 1)]
+            .iter()
+            .fold(Poly::one(), |acc, f| mul(&acc, f));
+        let roots = isolate(&p, &q(-2, 1), &q(1, 1));
+        assert_eq!(roots.len(), 5);
+        assert!(roots[2].rational.is_none() || roots[2].rational == Some(q(1, 3))); // 1/3 is no bisection point here
+        assert_eq!(roots[4].rational, Some(q(1, 1)));
+        let chain = sturm_chain(&squarefree(&p));
+        let expect = [-std::f64::consts::SQRT_2, -(0.2f64).sqrt(), 1.0 / 3.0, (0.2f64).sqrt(), 1.0];
+        for (r, e) in roots.iter().zip(expect) {
+            if r.rational.is_none() {
+                // exactly one root inside, by the independent Sturm count
+                assert_eq!(count_roots(&chain, &r.lo, &r.hi), 1);
+                assert!(r.lo.to_f64().unwrap() < e && e < r.hi.to_f64().unwrap());
+            }
+        }
+        // roots at both range ends and one inside, next to each: x(x − 1)(3x − 1)
+        let r = isolate(&mul(&mul(&lin(0, 1), &lin(1, 1)), &lin(1, 3)), &q(0, 1), &q(1, 1));
+        assert_eq!(r.len(), 3);
+        assert!(r[1].rational.is_none() && r[1].lo > q(0, 1) && r[1].hi < q(1, 1));
+        assert_eq!(count_roots(&sturm_chain(&r[1].poly), &r[1].lo, &r[1].hi), 1);
+        // a root exactly at the left end and at a bisection midpoint
+        let r = isolate(&mul(&lin(0, 1), &lin(1, 2)), &q(0, 1), &q(1, 1));
+        assert_eq!(r.iter().map(|r| r.rational.clone()).collect::<Vec<_>>(), vec![Some(q(0, 1)), Some(q(1, 2))]);
     }
 
     #[test]

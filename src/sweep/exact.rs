@@ -376,6 +376,7 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
         }
         merged.push((c, vec![family]));
     }
+    trace(|| format!("n = {n}: {} candidates after merging", merged.len()));
     for (c, _) in merged.iter_mut() {
         c.recognise_rational();
     }

@@ -354,12 +354,11 @@ impl ParameterRange {
             )));
         }
         let sets = exact_sets(&sweep, n)?;
-        if !sets.exact {
-            return Err(Error::Undecided(format!(
-                "n = {n}: the exact sets are not proved complete ({})",
-                sets.not_exact_because.join("; ")
-            )));
-        }
+        // sets not proved complete (a complex pair whose modulus is not
+        // followed) cannot show that the statement holds; they can still
+        // lead to a refutation, which rests on the certified witness alone
+        // (the certificate at one rational point does not use the sets)
+        let incomplete = (!sets.exact).then(|| sets.not_exact_because.join("; "));
         let list = match self.condition.as_str() {
             "convergent" => &sets.convergent,
             _ => &sets.c1_spectral,
@@ -420,8 +419,17 @@ impl ParameterRange {
         } else {
             "ends compared exactly"
         };
+        if let (true, Some(why)) = (holds, &incomplete) {
+            return Err(Error::Undecided(format!("n = {n}: the exact sets are not proved complete ({why})")));
+        }
+        let ends = match &incomplete {
+            None => "ends exact".to_string(),
+            Some(_) => "ends exact candidates, the set NOT PROVED complete (complex pairs' moduli not followed): \
+                        the refutation rests on the certified witness alone"
+                .to_string(),
+        };
         let mut computed = format!(
-            "{what} for {} in {set_text} within [{}, {}] (ends exact; pieces decided: {piece_evidence}; {comparison})",
+            "{what} for {} in {set_text} within [{}, {}] ({ends}; pieces decided: {piece_evidence}; {comparison})",
             self.parameter, sweep.lo, sweep.hi
         );
         if !holds {
@@ -637,8 +645,8 @@ impl CheckKind for ParameterRange {
         let kinds = evidence.into_inner().unwrap_or_default();
         let kind = crate::sweep::exact::weakest_of(kinds.iter().map(String::as_str)).unwrap_or_else(|| "exact".into());
         p.detail = format!(
-            "{}; exact parameter sets (sweep --exact: ends exact algebraic numbers, complete candidate set), pieces \
-             decided in {kind}",
+            "{}; exact parameter sets (sweep --exact: ends exact algebraic numbers; the candidate set complete \
+             unless the computed text says NOT PROVED complete), pieces decided in {kind}",
             p.detail
         );
         Ok(p)
