@@ -39,7 +39,7 @@
 //! PROVED must be its PASSES, every DISPROVED its FAILS.
 
 use crate::common;
-use common::subdlab;
+use common::{check_certificate, python3_available, subdlab, write_spectrum_certificate};
 use subdlab::certify::tagged::{certify_tagged, TaggedCertificate};
 use subdlab::certify::Verdict;
 use subdlab::neighbourhood::{Configuration, Tagging};
@@ -264,25 +264,13 @@ fn the_command_line_exits_and_speaks_json_like_the_interior_certificate() {
 /// counting Schur–Cohn): accepted as written, rejected when tampered with.
 #[test]
 fn the_independent_checker_accepts_tagged_certificates_and_rejects_tampered_ones() {
-    let found = std::process::Command::new("python3").arg("--version").output().is_ok_and(|o| o.status.success());
-    if !found {
+    if !python3_available() {
         eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    let checker = format!("{}/scripts/check_cert.py", env!("CARGO_MANIFEST_DIR"));
-    let check = |path: &std::path::Path| {
-        let out = std::process::Command::new("python3").arg(&checker).arg(path).output().unwrap();
-        (out.status.code().unwrap_or(-1), String::from_utf8_lossy(&out.stdout).to_string())
-    };
-    let write = |name: &str, args: &[&str]| {
-        let path = dir.path().join(name);
-        let mut all: Vec<&str> = vec!["spectrum"];
-        all.extend_from_slice(args);
-        all.extend_from_slice(&["--certify", "--certificate", path.to_str().unwrap()]);
-        subdlab(&all);
-        path
-    };
+    let check = check_certificate;
+    let write = |file: &str, args: &[&str]| write_spectrum_certificate(dir.path(), file, args);
     let cases = [
         ("cc3.json", &["catmull-clark", "-n", "3", "--tag", "boundary"][..], "ACCEPTED (PROVED)"),
         ("cc4.json", &["catmull-clark", "-n", "4", "--tag", "boundary"][..], "ACCEPTED (DISPROVED)"),

@@ -27,14 +27,16 @@
 //!   and the crease with it, naming that side.
 
 use crate::common;
-use common::subdlab;
+use common::{check_certificate, python3_available, subdlab, write_spectrum_certificate};
 use subdlab::certify::tagged::{certify_tagged, TaggedCertificate};
 use subdlab::certify::Verdict;
 use subdlab::neighbourhood::{Configuration, Tagging};
 use subdlab::numeric::exact::{q, Poly, QMatrix};
 use subdlab::numeric::Rational;
 use subdlab::schemes::{self, Scheme};
-use subdlab::spectrum::crease_sides::{decouple, dependency_closure, first_weight_outside, principal, CreaseSides, Decoupling};
+use subdlab::spectrum::crease_sides::{
+    decouple, dependency_closure, first_weight_outside, principal, CreaseSides, Decoupling,
+};
 use subdlab::spectrum::{analyse, Analysis, Options};
 
 fn analysis(name: &str, params: &[(&str, &str)], n: usize, tag: &str) -> (Box<dyn Scheme>, Analysis) {
@@ -108,12 +110,20 @@ fn the_spectrum_of_s_is_the_sides_less_the_curve_exactly() {
         // for Catmull–Clark). Their rows are the curve rule's, so R ∪ C is
         // invariant and, in the order (C, R, A only, B only), S is block
         // lower triangular: det(x − S) det(x − C) = det(x − A) det(x − B) det(x − R)
-        let rest: Vec<usize> = all.iter().copied().filter(|p| !s.sides[0].contains(p) && !s.sides[1].contains(p)).collect();
+        let rest: Vec<usize> =
+            all.iter().copied().filter(|p| !s.sides[0].contains(p) && !s.sides[1].contains(p)).collect();
         let mut curve_and_rest: Vec<usize> = s.curve.iter().chain(&rest).copied().collect();
         curve_and_rest.sort();
-        assert_eq!(first_weight_outside(&a.exact_matrix.as_ref().unwrap().rows, &curve_and_rest, |w: &Rational| *w == q(0, 1)), None);
-        let (ps, pa, pb, pc) =
-            (charpoly_on(&a, &all), charpoly_on(&a, &s.sides[0]), charpoly_on(&a, &s.sides[1]), charpoly_on(&a, &s.curve));
+        assert_eq!(
+            first_weight_outside(&a.exact_matrix.as_ref().unwrap().rows, &curve_and_rest, |w: &Rational| *w == q(0, 1)),
+            None
+        );
+        let (ps, pa, pb, pc) = (
+            charpoly_on(&a, &all),
+            charpoly_on(&a, &s.sides[0]),
+            charpoly_on(&a, &s.sides[1]),
+            charpoly_on(&a, &s.curve),
+        );
         let pr = principal_charpoly(&a, &rest);
         assert_eq!(
             times(&ps, &pc),
@@ -142,7 +152,11 @@ fn the_spectrum_of_s_is_the_sides_less_the_curve_exactly() {
             assert_eq!(pside, &charpoly_on(&fan, &fan_side), "{name} {tag} side {side} = boundary k = {k}");
             let all_fan: Vec<usize> = (0..exact.labels.len()).collect();
             let fan_rest: Vec<usize> = all_fan.iter().copied().filter(|p| !fan_side.contains(p)).collect();
-            assert_eq!(charpoly_on(&fan, &all_fan), times(pside, &principal_charpoly(&fan, &fan_rest)), "{name} k = {k}");
+            assert_eq!(
+                charpoly_on(&fan, &all_fan),
+                times(pside, &principal_charpoly(&fan, &fan_rest)),
+                "{name} k = {k}"
+            );
         }
     }
 }
@@ -169,7 +183,10 @@ fn the_regular_crease_passes_per_side() {
             assert_eq!(p.root_multiplicity(&q(1, 2)).0, 2);
             assert!(p.root_multiplicity(&q(1, 4)).0 >= 1);
             let e = &c.sides[side].eigenvalues;
-            assert_eq!((e[1].exact.as_deref(), e[1].algebraic_multiplicity, e[1].geometric_multiplicity), (Some("1/2"), 2, 2));
+            assert_eq!(
+                (e[1].exact.as_deref(), e[1].algebraic_multiplicity, e[1].geometric_multiplicity),
+                (Some("1/2"), 2, 2)
+            );
         }
         let cert = certify(name, n, tag);
         assert_eq!(cert.verdict, Verdict::Proved, "{name}: {:?}", cert.verdict);
@@ -233,24 +250,13 @@ fn sides_that_read_across_the_crease_do_not_decouple() {
 
 #[test]
 fn the_checker_rechecks_each_side_and_rejects_tampering() {
-    if std::process::Command::new("python3").arg("--version").output().is_err() {
+    if !python3_available() {
         eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    let checker = format!("{}/scripts/check_cert.py", env!("CARGO_MANIFEST_DIR"));
-    let check = |path: &std::path::Path| {
-        let out = std::process::Command::new("python3").arg(&checker).arg(path).output().unwrap();
-        (out.status.code().unwrap_or(-1), String::from_utf8_lossy(&out.stdout).to_string())
-    };
-    let write = |file: &str, args: &[&str]| {
-        let path = dir.path().join(file);
-        let mut all: Vec<&str> = vec!["spectrum"];
-        all.extend_from_slice(args);
-        all.extend_from_slice(&["--certify", "--certificate", path.to_str().unwrap()]);
-        subdlab(&all);
-        path
-    };
+    let check = check_certificate;
+    let write = |file: &str, args: &[&str]| write_spectrum_certificate(dir.path(), file, args);
     for (file, args, want) in [
         ("regular.json", &["catmull-clark", "-n", "4", "--tag", "crease:2"][..], "ACCEPTED (PROVED)"),
         ("loop.json", &["loop", "-n", "6", "--tag", "crease:3"][..], "ACCEPTED (PROVED)"),

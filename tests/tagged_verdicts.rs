@@ -653,7 +653,9 @@ fn the_boundary_claims_file_verifies() {
     }
     // crease claims are decided per side, and their evidence says so (the
     // failing one names its side: side A of 4 quads, tests/crease_sides.rs)
-    for c in claims.iter().filter(|c| c["id"].as_str().unwrap().starts_with("cc.crease") || c["id"].as_str().unwrap().starts_with("loop.crease")) {
+    for c in claims.iter().filter(|c| {
+        c["id"].as_str().unwrap().starts_with("cc.crease") || c["id"].as_str().unwrap().starts_with("loop.crease")
+    }) {
         let computed = c["computed"].as_str().unwrap();
         assert!(computed.contains("per side") || computed.contains("decided by sides"), "{c}");
     }

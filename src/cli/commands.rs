@@ -199,7 +199,9 @@ fn crease_sides_table(c: &crate::spectrum::crease_verdict::CreaseVerdict) -> Str
             })
             .collect();
         let evidence = match &side.exact_analysis {
-            Some(x) if x.complete() && x.agrees_with_float => "floating point, every eigenvalue and multiplicity exact over Q",
+            Some(x) if x.complete() && x.agrees_with_float => {
+                "floating point, every eigenvalue and multiplicity exact over Q"
+            }
             Some(_) => "floating point, partly confirmed exactly",
             None => "floating point",
         };

@@ -221,7 +221,10 @@ fn tagged_certificate_table(c: &crate::certify::tagged::TaggedCertificate) -> St
         out += &format!("  decided by: {}\n", c.decided_by.unwrap_or("neither route"));
         return out;
     }
-    let invariance = crease.invariance.as_ref().map_or("-".to_string(), |x| premise_text(x, c.premises.field.as_deref().unwrap_or("Q")));
+    let invariance = crease
+        .invariance
+        .as_ref()
+        .map_or("-".to_string(), |x| premise_text(x, c.premises.field.as_deref().unwrap_or("Q")));
     out += &format!(
         "  premise each side's points (with the crease curve's {}) have zero weight outside them in every row: {invariance}\n",
         crease.curve.len()

@@ -249,6 +249,19 @@ impl Poly {
     pub fn scale(&self, c: &Rational) -> Poly {
         Poly { coeffs: self.coeffs.iter().map(|x| x * c).collect() }.trim()
     }
+    /// self · o
+    pub fn mul(&self, o: &Poly) -> Poly {
+        if self.coeffs.is_empty() || o.coeffs.is_empty() {
+            return Poly { coeffs: Vec::new() };
+        }
+        let mut c = vec![Rational::zero(); self.coeffs.len() + o.coeffs.len() - 1];
+        for (i, x) in self.coeffs.iter().enumerate() {
+            for (j, y) in o.coeffs.iter().enumerate() {
+                c[i + j] = &c[i + j] + x * y;
+            }
+        }
+        Poly { coeffs: c }.trim()
+    }
     pub fn sub(&self, o: &Poly) -> Poly {
         let n = self.coeffs.len().max(o.coeffs.len());
         let z = Rational::zero();
@@ -672,15 +685,7 @@ mod tests {
         // (x − (1+i)/4)(x − (1−i)/4) = x² − x/2 + 1/8; (x² + 9/100)
         let pair = Poly { coeffs: vec![q(1, 8), q(-1, 2), q(1, 1)] };
         let imaginary = Poly { coeffs: vec![q(9, 100), q(0, 1), q(1, 1)] };
-        let mul = |a: &Poly, b: &Poly| {
-            let mut c = vec![q(0, 1); a.coeffs.len() + b.coeffs.len() - 1];
-            for (i, x) in a.coeffs.iter().enumerate() {
-                for (j, y) in b.coeffs.iter().enumerate() {
-                    c[i + j] = &c[i + j] + x * y;
-                }
-            }
-            Poly { coeffs: c }
-        };
+        let mul = |a: &Poly, b: &Poly| a.mul(b);
         let p = mul(&mul(&real, &pair), &imaginary);
         assert_eq!(p.degree(), 24);
         assert!(roots_inside_disc(&p, &q(3536, 10000)));

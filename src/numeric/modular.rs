@@ -217,8 +217,7 @@ pub fn gcd(f: &[BigInt], g: &[BigInt]) -> Vec<BigInt> {
         modulus *= &pb;
         // the symmetric representative, made primitive
         let half = &modulus / 2;
-        let lifted: Vec<BigInt> =
-            acc.iter().map(|a| if a > &half { a - &modulus } else { a.clone() }).collect();
+        let lifted: Vec<BigInt> = acc.iter().map(|a| if a > &half { a - &modulus } else { a.clone() }).collect();
         let candidate = primitive_part(&lifted);
         // test only once the lift stopped changing (one more prime agreed)
         if last.as_ref() == Some(&candidate) && divides(&candidate, &f) && divides(&candidate, &g) {

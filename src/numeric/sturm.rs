@@ -514,15 +514,7 @@ mod tests {
         // rational roots (one at the range's end), irrational pairs and a
         // complex pair; roots in [−2, 1]: −√2, −1/√5, 1/3, 1/√5, 1
         let lin = |a: i64, b: i64| poly(&[-a, b]);
-        let mul = |a: &Poly, b: &Poly| {
-            let mut c = vec![q(0, 1); a.coeffs.len() + b.coeffs.len() - 1];
-            for (i, x) in a.coeffs.iter().enumerate() {
-                for (j, y) in b.coeffs.iter().enumerate() {
-                    c[i + j] = &c[i + j] + x * y;
-                }
-            }
-            Poly { coeffs: c }
-        };
+        let mul = |a: &Poly, b: &Poly| a.mul(b);
         let p = [lin(1, 3), lin(1, 1), poly(&[-2, 0, 1]), poly(&[-1, 0, 5]), poly(&[1, 0, 1]), lin(1, 1)]
             .iter()
             .fold(Poly::one(), |acc, f| mul(&acc, f));

@@ -30,8 +30,8 @@
 //! re-checked on the exact rows where there are some (a weight the float
 //! rows round to almost zero must be exactly zero).
 
-use super::driver::{self, Assembled, Identity, Problem};
 use super::crease_verdict::{CreaseVerdict, SideSpectrum};
+use super::driver::{self, Assembled, Identity, Problem};
 use super::exact::Candidates;
 use super::verdict::Verdict;
 use crate::error::Error;
@@ -124,7 +124,8 @@ pub fn decouple(
     reads: &dyn Fn(usize) -> Vec<usize>,
 ) -> Option<Decoupling> {
     let Some(Tagging::Crease { at }) = config.tagging else { return None };
-    let inside = |side: usize| -> Vec<usize> { (0..labels.len()).filter(|&p| side_of(&labels[p], at) == Some(side)).collect() };
+    let inside =
+        |side: usize| -> Vec<usize> { (0..labels.len()).filter(|&p| side_of(&labels[p], at) == Some(side)).collect() };
     let seeds = [inside(0), inside(1)];
     if seeds.iter().any(Vec::is_empty) {
         return Some(Decoupling::Coupled(
@@ -154,9 +155,8 @@ pub fn first_weight_outside<W>(
     set: &[usize],
     is_zero: impl Fn(&W) -> bool,
 ) -> Option<(usize, usize)> {
-    set.iter().find_map(|&a| {
-        rows[a].iter().find(|(b, w)| set.binary_search(b).is_err() && !is_zero(w)).map(|(b, _)| (a, *b))
-    })
+    set.iter()
+        .find_map(|&a| rows[a].iter().find(|(b, w)| set.binary_search(b).is_err() && !is_zero(w)).map(|(b, _)| (a, *b)))
 }
 
 /// The principal submatrix of sparse rows on `set` (ascending), re-indexed
@@ -164,9 +164,7 @@ pub fn first_weight_outside<W>(
 /// [`first_weight_outside`] first).
 pub fn principal<W: Clone>(rows: &[Vec<(usize, W)>], set: &[usize]) -> Vec<Vec<(usize, W)>> {
     set.iter()
-        .map(|&a| {
-            rows[a].iter().filter_map(|(b, w)| set.binary_search(b).ok().map(|k| (k, w.clone()))).collect()
-        })
+        .map(|&a| rows[a].iter().filter_map(|(b, w)| set.binary_search(b).ok().map(|k| (k, w.clone()))).collect())
         .collect()
 }
 
@@ -218,7 +216,11 @@ pub fn crease_verdict(
     let mut out = Vec::new();
     for (s, set) in sides.sides.iter().enumerate() {
         let sub = |m: &LocalMatrix<f64>| -> LocalMatrix<f64> {
-            LocalMatrix { kind: m.kind, labels: set.iter().map(|&k| m.labels[k].clone()).collect(), rows: principal(&m.rows, set) }
+            LocalMatrix {
+                kind: m.kind,
+                labels: set.iter().map(|&k| m.labels[k].clone()).collect(),
+                rows: principal(&m.rows, set),
+            }
         };
         let rows = Assembled {
             float: sub(float),
@@ -273,13 +275,8 @@ pub fn combined(c: &CreaseVerdict) -> Verdict {
     v.failures = Vec::new();
     for side in &c.sides {
         let word = if side.verdict.c1_spectral { "PASSES" } else { "FAILS" };
-        let said: Vec<&str> = side
-            .verdict
-            .reasons
-            .iter()
-            .filter(|r| !r.starts_with("not decided here"))
-            .map(String::as_str)
-            .collect();
+        let said: Vec<&str> =
+            side.verdict.reasons.iter().filter(|r| !r.starts_with("not decided here")).map(String::as_str).collect();
         v.reasons.push(format!("{}: {word}: {}", side.name, said.join("; ")));
         v.failures.extend(side.verdict.failures.iter().map(|f| format!("{}: {f}", side.name)));
     }

@@ -39,4 +39,3 @@ pub struct CreaseVerdict {
     /// crease's criterion where the sides decouple, kept for comparison
     pub whole: Verdict,
 }
-

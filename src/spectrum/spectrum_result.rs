@@ -6,8 +6,8 @@ use faer::c64;
 use faer::Mat;
 use serde::Serialize;
 
-use super::eigen;
 use super::crease_verdict::CreaseVerdict;
+use super::eigen;
 use super::eigenvalue::Eigenvalue;
 use super::exact::ExactSummary;
 use super::verdict::Verdict;

@@ -188,3 +188,26 @@ pub fn assert_registry_verdict(id: &str, want: subdlab::claims::Verdict) {
     let o = registry_outcome(id);
     assert_eq!(o.verdict, want, "{id}: the registry says {} ({}), the hand derivation {want}", o.verdict, o.detail);
 }
+
+/// Whether `python3` runs here (the certificate checker's tests skip, saying
+/// so, where it does not).
+pub fn python3_available() -> bool {
+    std::process::Command::new("python3").arg("--version").output().is_ok_and(|o| o.status.success())
+}
+
+/// `scripts/check_cert.py FILE`: its exit status and standard output.
+pub fn check_certificate(path: &std::path::Path) -> (i32, String) {
+    let checker = format!("{}/scripts/check_cert.py", env!("CARGO_MANIFEST_DIR"));
+    let out = std::process::Command::new("python3").arg(&checker).arg(path).output().unwrap();
+    (out.status.code().unwrap_or(-1), String::from_utf8_lossy(&out.stdout).to_string())
+}
+
+/// `subdlab spectrum ARGS --certify --certificate DIR/FILE`; the file's path.
+pub fn write_spectrum_certificate(dir: &std::path::Path, file: &str, args: &[&str]) -> std::path::PathBuf {
+    let path = dir.join(file);
+    let mut all: Vec<&str> = vec!["spectrum"];
+    all.extend_from_slice(args);
+    all.extend_from_slice(&["--certify", "--certificate", path.to_str().unwrap()]);
+    subdlab(&all);
+    path
+}
