@@ -39,7 +39,7 @@
 //! PROVED must be its PASSES, every DISPROVED its FAILS.
 
 use crate::common;
-use common::{check_certificate, python3_available, subdlab, write_spectrum_certificate};
+use common::{check_certificate, check_tampered_certificate, python3_available, subdlab, write_spectrum_certificate};
 use subdlab::certify::tagged::{certify_tagged, TaggedCertificate};
 use subdlab::certify::Verdict;
 use subdlab::neighbourhood::{Configuration, Tagging};
@@ -285,14 +285,7 @@ fn the_independent_checker_accepts_tagged_certificates_and_rejects_tampered_ones
         assert_eq!(code, 0, "{name}: {text}");
         assert!(text.contains(want), "{name}: {text}");
     }
-    let tamper = |name: &str, edit: &dyn Fn(&mut serde_json::Value)| {
-        let path = dir.path().join(name);
-        let mut doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
-        edit(&mut doc);
-        let bad = dir.path().join(format!("bad-{name}"));
-        std::fs::write(&bad, serde_json::to_string(&doc).unwrap()).unwrap();
-        check(&bad)
-    };
+    let tamper = |file: &str, edit: &dyn Fn(&mut serde_json::Value)| check_tampered_certificate(dir.path(), file, edit);
     // the disproof claimed as a proof: the checker's own exact route says DISPROVED
     let (code, text) = tamper("cc4.json", &|d| {
         let t = &mut d["parts"]["tagged"];

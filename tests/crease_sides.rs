@@ -27,7 +27,7 @@
 //!   and the crease with it, naming that side.
 
 use crate::common;
-use common::{check_certificate, python3_available, subdlab, write_spectrum_certificate};
+use common::{check_certificate, check_tampered_certificate, python3_available, write_spectrum_certificate};
 use subdlab::certify::tagged::{certify_tagged, TaggedCertificate};
 use subdlab::certify::Verdict;
 use subdlab::neighbourhood::{Configuration, Tagging};
@@ -266,14 +266,7 @@ fn the_checker_rechecks_each_side_and_rejects_tampering() {
         assert_eq!(code, 0, "{file}: {text}");
         assert!(text.contains(want) && text.contains("crease per side"), "{file}: {text}");
     }
-    let tamper = |file: &str, edit: &dyn Fn(&mut serde_json::Value)| {
-        let path = dir.path().join(file);
-        let mut doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
-        edit(&mut doc);
-        let bad = dir.path().join(format!("bad-{file}"));
-        std::fs::write(&bad, serde_json::to_string(&doc).unwrap()).unwrap();
-        check(&bad)
-    };
+    let tamper = |file: &str, edit: &dyn Fn(&mut serde_json::Value)| check_tampered_certificate(dir.path(), file, edit);
     // the failing side claimed PROVED, and the crease with it: the side's
     // exact route recomputed says DISPROVED
     let (code, text) = tamper("k4.json", &|d| {

@@ -11,7 +11,7 @@
 use crate::common::subdlab;
 use num_rational::BigRational;
 use subdlab::certify::Verdict;
-use subdlab::every_valence::{block_polynomial, run, Request};
+use subdlab::every_valence::{block_polynomial, run, Parametric, Report, Request};
 
 fn request(scheme: &str, from: usize, to: Option<usize>) -> Request {
     Request { scheme: scheme.into(), params: Vec::new(), from, to }
@@ -27,6 +27,19 @@ fn poly_at(scheme: &str, c: &BigRational) -> Vec<BigRational> {
     p.iter().map(|t| t.eval(c).to_rational().expect("rational")).collect()
 }
 
+/// A report PROVED for every n ≥ 3: the per-valence part exactly 3..N−1,
+/// every certificate PROVED unconditionally, and the parametric part PROVED
+/// (returned).
+fn proved_from_three(r: &Report) -> &Parametric {
+    assert_eq!(r.verdict, Verdict::Proved, "{r:?}");
+    let n = r.threshold.expect("a threshold N");
+    assert_eq!(r.per_valence.iter().map(|a| a.valence).collect::<Vec<_>>(), (3..n).collect::<Vec<_>>());
+    assert!(r.per_valence.iter().all(|a| a.verdict == Verdict::Proved && !a.conditional));
+    let p = r.parametric.as_ref().unwrap();
+    assert_eq!(p.verdict, Verdict::Proved);
+    p
+}
+
 /// p(x) at a rational x.
 fn eval(p: &[BigRational], x: &BigRational) -> BigRational {
     p.iter().rev().fold(q(0, 1), |acc, a| acc * x + a)
@@ -35,13 +48,7 @@ fn eval(p: &[BigRational], x: &BigRational) -> BigRational {
 #[test]
 fn catmull_clark_file_is_spectrally_c1_at_every_valence() {
     let r = run(&request("schemes/catmull-clark.toml", 3, None)).unwrap();
-    assert_eq!(r.verdict, Verdict::Proved, "{r:?}");
-    let n = r.threshold.expect("a threshold N");
-    // the per-valence part is exactly 3..N−1, every certificate PROVED
-    assert_eq!(r.per_valence.iter().map(|a| a.valence).collect::<Vec<_>>(), (3..n).collect::<Vec<_>>());
-    assert!(r.per_valence.iter().all(|a| a.verdict == Verdict::Proved && !a.conditional));
-    let p = r.parametric.as_ref().unwrap();
-    assert_eq!(p.verdict, Verdict::Proved);
+    let p = proved_from_three(&r);
     assert!(p.block0.is_some() && p.blocks.is_some());
     assert!(r.scope.contains("spectral conditions only"));
 }
@@ -308,12 +315,7 @@ fn doo_sabin_generic_blocks_are_the_classical_eigenvalues() {
 #[test]
 fn doo_sabin_file_is_spectrally_c1_at_every_valence() {
     let r = run(&request("schemes/doo-sabin.toml", 3, None)).unwrap();
-    assert_eq!(r.verdict, Verdict::Proved, "{r:?}");
-    let n = r.threshold.expect("a threshold N");
-    assert_eq!(r.per_valence.iter().map(|a| a.valence).collect::<Vec<_>>(), (3..n).collect::<Vec<_>>());
-    assert!(r.per_valence.iter().all(|a| a.verdict == Verdict::Proved && !a.conditional));
-    let p = r.parametric.as_ref().unwrap();
-    assert_eq!(p.verdict, Verdict::Proved);
+    let p = proved_from_three(&r);
     let f = p.special.as_ref().expect("the face-centred part");
     // M = 1 (σ has frequencies 0 and 1 only), λ1 = σ(±1) = 1/2 exactly
     assert_eq!(f.frequencies, 1);

@@ -211,3 +211,18 @@ pub fn write_spectrum_certificate(dir: &std::path::Path, file: &str, args: &[&st
     subdlab(&all);
     path
 }
+
+/// A copy of the certificate `dir/file` with `edit` applied, written to
+/// `dir/bad-file` and checked: the checker's exit status and output.
+pub fn check_tampered_certificate(
+    dir: &std::path::Path,
+    file: &str,
+    edit: &dyn Fn(&mut serde_json::Value),
+) -> (i32, String) {
+    let text = std::fs::read_to_string(dir.join(file)).unwrap();
+    let mut doc: serde_json::Value = serde_json::from_str(&text).unwrap();
+    edit(&mut doc);
+    let bad = dir.join(format!("bad-{file}"));
+    std::fs::write(&bad, serde_json::to_string(&doc).unwrap()).unwrap();
+    check_certificate(&bad)
+}
