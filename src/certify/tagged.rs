@@ -54,7 +54,7 @@ use crate::neighbourhood::NeighbourhoodKind;
 use crate::numeric::exact::{roots_above, Poly, QMatrix};
 use crate::numeric::{Cyclotomic, Interval, Rational, Weight};
 use crate::sdc::Scheme;
-use crate::spectrum::crease_sides::{decouple, principal, Decoupling, READ_TOLERANCE};
+use crate::spectrum::crease_sides::{decoupling, principal, principal_row, weight_outside, Decoupling};
 use crate::spectrum::reflection::{commutes, reflection_of, split};
 use crate::spectrum::Analysis;
 
@@ -317,12 +317,7 @@ fn crease_certificate(
 ) -> Result<Option<CreaseCertificate>, Error> {
     let config = &analysis.discovered.config;
     let labels = &analysis.spectrum.labels;
-    let float = &analysis.matrix;
-    let scale = float.rows.iter().flatten().fold(0.0f64, |m, (_, w)| m.max(w.abs())).max(1.0);
-    let reads = |a: usize| -> Vec<usize> {
-        float.rows[a].iter().filter(|(_, w)| w.abs() > READ_TOLERANCE * scale).map(|(b, _)| *b).collect()
-    };
-    let Some(decoupling) = decouple(config, labels, &reads) else { return Ok(None) };
+    let Some(decoupling) = decoupling(config, &analysis.matrix) else { return Ok(None) };
     let mut out = CreaseCertificate {
         whole_verdict: whole.verdict.clone(),
         whole_conditional: whole.conditional,
@@ -345,11 +340,8 @@ fn crease_certificate(
     for set in &sides.sides {
         for &a in set {
             let outside = match &exact[a] {
-                Some(row) => row.iter().find(|(b, w)| set.binary_search(b).is_err() && !w.is_zero()).map(|(b, _)| *b),
-                None => rows[a]
-                    .iter()
-                    .find(|(b, w)| set.binary_search(b).is_err() && !(w.lo == 0.0 && w.hi == 0.0))
-                    .map(|(b, _)| *b),
+                Some(row) => weight_outside(row, set, |w| w.is_zero()),
+                None => weight_outside(&rows[a], set, |w| w.lo == 0.0 && w.hi == 0.0),
             };
             if let Some(b) = outside {
                 invariance = Check::Fails(format!(
@@ -369,14 +361,7 @@ fn crease_certificate(
     for (side, set) in sides.sides.iter().enumerate() {
         let name = sides.name(side);
         let side_rows: IntervalRows = principal(rows, set);
-        let side_exact: ExactRows = set
-            .iter()
-            .map(|&a| {
-                exact[a].as_ref().map(|row| {
-                    row.iter().filter_map(|(b, w)| set.binary_search(b).ok().map(|k| (k, w.clone()))).collect()
-                })
-            })
-            .collect();
+        let side_exact: ExactRows = set.iter().map(|&a| exact[a].as_ref().map(|row| principal_row(row, set))).collect();
         let side_labels: Vec<_> = set.iter().map(|&k| labels[k].clone()).collect();
         // the reflection keeps each side: its restriction, where it maps the
         // side's set onto itself

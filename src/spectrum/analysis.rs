@@ -116,23 +116,9 @@ pub fn analyse(scheme: &dyn Scheme, config: &Configuration, opts: &Options) -> R
     let identity = problem.identity.clone();
     let driver::Solved { matrix, exact_matrix, mut spectrum } = driver::solve(problem)?;
     // a crease vertex is decided side by side where its rules decouple the
-    // sides (`crease_sides`); S whole's verdict is kept beside it. Only a
-    // crease reads S whole: passing the lazy S (`&matrix` derefs) assembles
-    // it, which the Fourier path of every other configuration never needs.
-    let crease = matches!(config.tagging, Some(crate::neighbourhood::Tagging::Crease { .. }));
-    if let Some(c) = crease
-        .then(|| {
-            crease_sides::crease_verdict(
-                config,
-                &identity,
-                &matrix,
-                exact_matrix.as_deref(),
-                &spectrum.verdict,
-                opts.exact,
-            )
-        })
-        .transpose()?
-        .flatten()
+    // sides (`crease_sides`); S whole's verdict is kept beside it
+    if let Some(c) =
+        crease_sides::crease_verdict(config, &identity, &matrix, exact_matrix.as_ref(), &spectrum.verdict, opts.exact)?
     {
         spectrum.verdict = crease_sides::combined(&c);
         spectrum.crease = Some(c);

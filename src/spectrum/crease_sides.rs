@@ -35,6 +35,7 @@ use super::driver::{self, Assembled, Identity, Problem};
 use super::exact::Candidates;
 use super::verdict::Verdict;
 use crate::error::Error;
+use crate::matrix::local::FullMatrix;
 use crate::matrix::LocalMatrix;
 use crate::neighbourhood::{Configuration, Tagging, VertexKind, VertexLabel};
 use crate::numeric::Rational;
@@ -155,17 +156,50 @@ pub fn first_weight_outside<W>(
     set: &[usize],
     is_zero: impl Fn(&W) -> bool,
 ) -> Option<(usize, usize)> {
-    set.iter()
-        .find_map(|&a| rows[a].iter().find(|(b, w)| set.binary_search(b).is_err() && !is_zero(w)).map(|(b, _)| (a, *b)))
+    set.iter().find_map(|&a| weight_outside(&rows[a], set, &is_zero).map(|b| (a, b)))
+}
+
+/// The first column of `row` outside `set` (ascending) with a weight that is
+/// not zero.
+pub fn weight_outside<W>(row: &[(usize, W)], set: &[usize], is_zero: impl Fn(&W) -> bool) -> Option<usize> {
+    row.iter().find(|(b, w)| set.binary_search(b).is_err() && !is_zero(w)).map(|(b, _)| *b)
 }
 
 /// The principal submatrix of sparse rows on `set` (ascending), re-indexed
 /// 0..set.len(); weights outside the set are dropped (check
 /// [`first_weight_outside`] first).
 pub fn principal<W: Clone>(rows: &[Vec<(usize, W)>], set: &[usize]) -> Vec<Vec<(usize, W)>> {
-    set.iter()
-        .map(|&a| rows[a].iter().filter_map(|(b, w)| set.binary_search(b).ok().map(|k| (k, w.clone()))).collect())
-        .collect()
+    set.iter().map(|&a| principal_row(&rows[a], set)).collect()
+}
+
+/// One row of [`principal`]: its entries on `set`, re-indexed.
+pub fn principal_row<W: Clone>(row: &[(usize, W)], set: &[usize]) -> Vec<(usize, W)> {
+    row.iter().filter_map(|(b, w)| set.binary_search(b).ok().map(|k| (k, w.clone()))).collect()
+}
+
+/// [`principal`] of a local matrix, with the set's labels.
+fn principal_matrix<W: Clone>(m: &LocalMatrix<W>, set: &[usize]) -> LocalMatrix<W> {
+    LocalMatrix {
+        kind: m.kind,
+        labels: set.iter().map(|&k| m.labels[k].clone()).collect(),
+        rows: principal(&m.rows, set),
+    }
+}
+
+/// [`decouple`] on the float rows of S (a weight below [`READ_TOLERANCE`]
+/// relative to the largest counts as no read): `None` for a configuration
+/// that is not a crease, decided before S is read, so the lazy S of every
+/// other configuration stays unassembled (the Fourier path never needs it).
+pub fn decoupling(config: &Configuration, float: &FullMatrix<f64>) -> Option<Decoupling> {
+    if !matches!(config.tagging, Some(Tagging::Crease { .. })) {
+        return None;
+    }
+    let float: &LocalMatrix<f64> = float;
+    let scale = float.rows.iter().flatten().fold(0.0f64, |m, (_, w)| m.max(w.abs())).max(1.0);
+    let reads = |a: usize| -> Vec<usize> {
+        float.rows[a].iter().filter(|(_, w)| w.abs() > READ_TOLERANCE * scale).map(|(b, _)| *b).collect()
+    };
+    decouple(config, &float.labels, &reads)
 }
 
 /// The per-side analysis of a crease configuration from S (float, and exact
@@ -175,15 +209,13 @@ pub fn principal<W: Clone>(rows: &[Vec<(usize, W)>], set: &[usize]) -> Vec<Vec<(
 pub fn crease_verdict(
     config: &Configuration,
     identity: &Identity,
-    float: &LocalMatrix<f64>,
-    exact_matrix: Option<&LocalMatrix<Rational>>,
+    float: &FullMatrix<f64>,
+    exact_matrix: Option<&FullMatrix<Rational>>,
     whole: &Verdict,
     exact: bool,
 ) -> Result<Option<CreaseVerdict>, Error> {
-    let scale = float.rows.iter().flatten().fold(0.0f64, |m, (_, w)| m.max(w.abs())).max(1.0);
-    let small = |w: &f64| w.abs() <= READ_TOLERANCE * scale;
-    let reads = |a: usize| -> Vec<usize> { float.rows[a].iter().filter(|(_, w)| !small(w)).map(|(b, _)| *b).collect() };
-    let Some(decoupling) = decouple(config, &float.labels, &reads) else { return Ok(None) };
+    let Some(decoupling) = decoupling(config, float) else { return Ok(None) };
+    let exact_matrix: Option<&LocalMatrix<Rational>> = exact_matrix.map(|q| &**q);
     let coupled = |why: String| CreaseVerdict {
         invariance: None,
         curve_size: 0,
@@ -215,21 +247,8 @@ pub fn crease_verdict(
     };
     let mut out = Vec::new();
     for (s, set) in sides.sides.iter().enumerate() {
-        let sub = |m: &LocalMatrix<f64>| -> LocalMatrix<f64> {
-            LocalMatrix {
-                kind: m.kind,
-                labels: set.iter().map(|&k| m.labels[k].clone()).collect(),
-                rows: principal(&m.rows, set),
-            }
-        };
-        let rows = Assembled {
-            float: sub(float),
-            exact: exact_matrix.map(|q| LocalMatrix {
-                kind: q.kind,
-                labels: set.iter().map(|&k| q.labels[k].clone()).collect(),
-                rows: principal(&q.rows, set),
-            }),
-        };
+        let rows =
+            Assembled { float: principal_matrix(float, set), exact: exact_matrix.map(|q| principal_matrix(q, set)) };
         let side_identity = Identity {
             tagging: Some(format!("{} side {}", config.tagging.map(|t| t.name()).unwrap_or_default(), ["A", "B"][s])),
             analysis_size: set.len(),
