@@ -6,7 +6,8 @@
 //!
 //! 1. floating point: eigenvectors V of the midpoint of A, and an approximate
 //!    inverse R of V (LU with full pivoting);
-//! 2. interval arithmetic: M ⊇ R·A·V and E ⊇ I − R·V, with ε ≥ ‖E‖∞;
+//! 2. enclosures M ⊇ R·A·V and ε ≥ ‖I − R·V‖∞ (balls about floating-point
+//!    products with their rounding errors bounded, `certify::midrad`);
 //! 3. if ε < 1 then R·V = I − E is invertible, so V is, and for each A
 //!    V⁻¹AV = (RV)⁻¹·RAV = (I + F)·M with F = Σ_{k≥1} Eᵏ, ‖F‖∞ ≤ ε/(1 − ε);
 //! 4. Gershgorin on (I + F)·M: row i's disc has a centre within
@@ -25,6 +26,7 @@
 //! given (the caller says so).
 
 use super::complex::{CInterval, CIntervalMatrix};
+use super::midrad;
 use crate::numeric::Interval;
 use faer::c64;
 use faer::linalg::solvers::DenseSolveCore;
@@ -155,52 +157,22 @@ fn diagonalise(a: &CIntervalMatrix) -> Result<Diagonalisation, String> {
     if !finite(&v) || !finite(&r) {
         return Err("the eigenvector matrix of the midpoint could not be inverted".into());
     }
-    let point = |m: &Mat<c64>, i: usize, j: usize| CInterval::point(m[(i, j)]);
-    // A·V, then M = R·(A·V), and E = I − R·V, all in interval arithmetic
-    let mut av = CIntervalMatrix::zeros(k);
-    for i in 0..k {
-        for j in 0..k {
-            let mut s = CInterval::zero();
-            for l in 0..k {
-                s = s + a.get(i, l) * point(&v, l, j);
-            }
-            *av.at(i, j) = s;
-        }
-    }
-    let mut m = CIntervalMatrix::zeros(k);
-    let mut epsilon = Interval::point(0.0);
-    for i in 0..k {
-        let mut row_e = Interval::point(0.0);
-        for j in 0..k {
-            let (mut s, mut rv) = (CInterval::zero(), CInterval::zero());
-            for l in 0..k {
-                s = s + point(&r, i, l) * av.get(l, j);
-                rv = rv + point(&r, i, l) * point(&v, l, j);
-            }
-            *m.at(i, j) = s;
-            let identity = CInterval::point(c64::new(if i == j { 1.0 } else { 0.0 }, 0.0));
-            row_e = row_e + Interval::point((identity - rv).mag());
-        }
-        epsilon = Interval::point(epsilon.hi.max(row_e.hi));
-    }
-    let eps = epsilon.hi;
+    // M ⊇ R·A·V and ε ≥ ‖I − R·V‖∞ as balls about floating-point products
+    // (certify::midrad: the rounding errors bounded a priori)
+    let products = midrad::products(a, &v, &r)?;
+    let eps = products.epsilon;
     if !(eps < 1.0) {
         return Err(format!(
             "the eigenvectors of the midpoint are too ill-conditioned to verify (‖I − RV‖∞ ≤ {eps:.3e} is not below 1)"
         ));
     }
-    let m_norm = (0..k)
-        .map(|i| (0..k).fold(Interval::point(0.0), |s, j| s + Interval::point(m.get(i, j).mag())).hi)
-        .fold(0.0, f64::max);
-    let delta = (Interval::point(eps) * Interval::point(m_norm) / (Interval::point(1.0) - Interval::point(eps))).hi;
+    let m_norm = midrad::norm_inf(&products.m);
+    // δ = ε‖M‖∞/(1 − ε), rounded up: the product and quotient up, 1 − ε down
+    let delta = ((eps * m_norm).next_up() / (1.0 - eps).next_down()).next_up();
     let discs: Vec<Disc> = (0..k)
         .map(|i| {
-            let c = m.get(i, i).mid();
-            let mut radius = Interval::point(m.get(i, i).distance_from(c)) + Interval::point(delta);
-            for j in (0..k).filter(|&j| j != i) {
-                radius = radius + Interval::point(m.get(i, j).mag());
-            }
-            Disc { re: c.re, im: c.im, radius: radius.hi }
+            let (c, r) = midrad::row_radius(&products.m, i);
+            Disc { re: c.re, im: c.im, radius: (r + delta).next_up() }
         })
         .collect();
     Ok(Diagonalisation { v, r, discs, epsilon: eps })

@@ -42,6 +42,7 @@ pub mod discs;
 pub mod exact_spectrum;
 pub mod export;
 pub mod matrix;
+pub mod midrad;
 pub mod power;
 pub mod s31;
 pub mod spectrum;
