@@ -34,6 +34,7 @@ use crate::schemes;
 use crate::schemes::user::probe;
 use crate::spectrum::{analyse, Options};
 
+use crate::sweep::exact::BiPoly;
 use laurent::LaurentRows;
 
 /// The valences at which the rows away from the centre are read (two, to
@@ -735,50 +736,37 @@ fn face_centred(rows: &LaurentRows, v: &Varying, rows_text: String) -> Result<Pa
 /// Block 0 of a composite scheme (`composite`): its entries as polynomials
 /// in (the n-dependent fields' values, n), read off S at the integer grid
 /// and the valences n0..n0+m+1, the fields replaced by their expressions
-/// in n; checked against block 0 of S itself at n0 and n0 + 1. Then the
-/// eigenvalues other than λ0 = 1, q(x, t) = det(xI − B_0(t))/(x − 1), are
-/// compared with λ1 as for one-step schemes (`centre::decide`).
-fn composite_block0(
-    req: &Request,
-    r0: &Read,
-    r1: &Read,
-    p: &crate::sweep::exact::BiPoly,
-    facts: tail::TailFacts,
-    rows_text: String,
-) -> Result<ParametricProof, Missing> {
-    let fail = |why: String| Missing { reason: format!("block 0: {why}"), rows: rows_text.clone(), blocks: Some(facts.clone()) };
-    let fields = r0.centre_fields.clone().expect("composite");
+/// in n; checked against block 0 of S itself at n0 and n0 + 1. Returns the
+/// variable t, q(x, t) = det(xI − B_0(t))/(x − 1) (the eigenvalues other
+/// than λ0 = 1) and what was read.
+fn composite_q(req: &Request, r0: &Read, r1: &Read) -> Result<(centre::Variable, BiPoly, String), String> {
+    let fields = r0.centre_fields.clone().ok_or("not a composite scheme")?;
     let m = r0.analysis.discovered.refinements().len();
     let symbols: Vec<centre::InN> =
-        fields.iter().map(|f| centre::symbolic(&f.expr, &f.env)).collect::<Result<_, _>>().map_err(fail)?;
-    let scheme = schemes::resolve(&req.scheme, &req.params).map_err(|e| fail(e.to_string()))?;
+        fields.iter().map(|f| centre::symbolic(&f.expr, &f.env)).collect::<Result<_, _>>()?;
+    let scheme = schemes::resolve(&req.scheme, &req.params).map_err(|e| e.to_string())?;
     let valences: Vec<usize> = (0..m + 2).map(|i| PROBE_VALENCE + i).collect();
     let mut more = Vec::new();
     for &n in &valences[2..] {
-        more.push(read_rows(req, n).map_err(|e| fail(e.reason))?);
+        more.push(read_rows(req, n).map_err(|e| e.reason)?);
     }
     let reads: Vec<&Read> = [r0, r1].into_iter().chain(more.iter()).collect();
-    let same_fields = |r: &Read| {
-        let key = |fs: &[probe::FieldRead]| fs.iter().map(|f| (f.rule, f.family)).collect::<Vec<_>>();
-        r.centre_fields.as_deref().map(key) == Some(key(&fields))
-    };
-    if !reads.iter().all(|r| same_fields(r)) {
-        return Err(fail("the centre's stencils read different fields at different valences".into()));
+    let key = |fs: &[probe::FieldRead]| fs.iter().map(|f| (f.rule, f.family)).collect::<Vec<_>>();
+    if !reads.iter().all(|r| r.centre_fields.as_deref().map(key) == Some(key(&fields))) {
+        return Err("the centre's stencils read different fields at different valences".into());
     }
-    let centre_of = |r: &Read| r.centre.ok_or_else(|| fail("no centre vertex".into()));
     let block = |r: &Read, n: usize, values: Option<probe::Substitution>| {
         composite::block0_values(
             scheme.as_ref(),
             &r.analysis.discovered,
             r.analysis.spectrum.neighbourhood,
-            centre_of(r)?,
+            r.centre.ok_or("no centre vertex")?,
             &r.reps,
             &r.orbit_of,
             &r.free,
             n,
             values,
         )
-        .map_err(fail)
     };
     let points = composite::grid(m, fields.len());
     let mut at = Vec::new();
@@ -786,48 +774,67 @@ fn composite_block0(
         let mut per_point = Vec::new();
         for g in &points {
             let b = block(r, n, Some(composite::substitution(&fields, g)))?;
-            per_point.push(composite::rational_block(&b, n).map_err(fail)?);
+            per_point.push(composite::rational_block(&b, n)?);
         }
         at.push(per_point);
     }
-    let entries = composite::block0_symbolic(&valences, &at, m, &symbols).map_err(fail)?;
+    let entries = composite::block0_symbolic(&valences, &at, m, &symbols)?;
     // the formula is block 0 of S at the first two valences
     for (r, &n) in reads.iter().zip(&valences).take(2) {
         let actual = block(r, n, None)?;
         let formula: Option<Vec<Vec<Cyclotomic>>> =
             entries.iter().map(|row| row.iter().map(|x| x.at(n as i64)).collect()).collect();
         if formula.as_ref() != Some(&actual) {
-            return Err(fail(format!("the fitted entries disagree with block 0 of S at n = {n}")));
+            return Err(format!("the fitted entries disagree with block 0 of S at n = {n}"));
         }
     }
     let size = entries.len();
     let flat: Vec<centre::InN> = entries.into_iter().flatten().collect();
-    let (variable, polys) = centre::one_variable(&flat).map_err(fail)?;
-    let qp = centre::block0_without_one(&polys, size).map_err(fail)?;
+    let (variable, polys) = centre::one_variable(&flat)?;
+    let qp = centre::block0_without_one(&polys, size)?;
+    let text = format!(
+        "S is {m} refinement steps: the centre's stencils alone read [{}] at n (checked stencil by stencil), so \
+         the rows away from the centre are read with those fields at 0, and block 0 is fitted as a polynomial of \
+         degree ≤ {m} in them and in n (valences {}..{}, checked against S at {} and {})",
+        fields.iter().map(|f| format!("{} {}", f.rule, f.family)).collect::<Vec<_>>().join(", "),
+        valences[0],
+        valences[valences.len() - 1],
+        valences[0],
+        valences[1]
+    );
+    Ok((variable, qp, text))
+}
+
+/// Composite schemes: q(x, t) of block 0 (its eigenvalues other than 1)
+/// with its variable, as the parametric part computes it.
+pub fn composite_block0_polynomial(req: &Request) -> Result<(centre::Variable, BiPoly), String> {
+    let r0 = read_rows(req, PROBE_VALENCE).map_err(|m| m.reason)?;
+    let r1 = read_rows(req, PROBE_VALENCE + 1).map_err(|m| m.reason)?;
+    composite_q(req, &r0, &r1).map(|(v, q, _)| (v, q))
+}
+
+/// The parametric part of a composite scheme, once the blocks k ≠ 0 are
+/// decided: block 0 (`composite_q`) against λ1 as for one-step schemes
+/// (`centre::decide`).
+fn composite_block0(
+    req: &Request,
+    r0: &Read,
+    r1: &Read,
+    p: &BiPoly,
+    facts: tail::TailFacts,
+    rows_text: String,
+) -> Result<ParametricProof, Missing> {
+    let fail = |why: String| Missing { reason: format!("block 0: {why}"), rows: rows_text.clone(), blocks: Some(facts.clone()) };
+    let (variable, qp, read) = composite_q(req, r0, r1).map_err(fail)?;
     let lambda1 = centre::lambda1_poly(p, variable);
-    match centre::decide(&qp, &lambda1, variable, facts.threshold) {
-        Ok((n, range)) => {
-            let mut blocks = facts.clone();
-            blocks.threshold = blocks.threshold.max(n);
-            let rows_text = format!(
-                "{rows_text}; S is {m} refinement steps: the centre's stencils alone read [{}] at n (checked stencil \
-                 by stencil), so the rows away from the centre are read with those fields at 0 and block 0 is \
-                 fitted as a polynomial of degree ≤ {m} in them and in n (valences {}..{}, checked against S at {} \
-                 and {})",
-                fields.iter().map(|f| format!("{} {}", f.rule, f.family)).collect::<Vec<_>>().join(", "),
-                valences[0],
-                valences[valences.len() - 1],
-                valences[0],
-                valences[1]
-            );
-            Ok(ParametricProof {
-                rows: rows_text,
-                block0: Some(Block0 { variable, range }),
-                threshold: blocks.threshold,
-                blocks: Some(blocks),
-                special: None,
-            })
-        }
-        Err(why) => Err(fail(why)),
-    }
+    let (n, range) = centre::decide(&qp, &lambda1, variable, facts.threshold).map_err(fail)?;
+    let mut blocks = facts.clone();
+    blocks.threshold = blocks.threshold.max(n);
+    Ok(ParametricProof {
+        rows: format!("{rows_text}; {read}"),
+        block0: Some(Block0 { variable, range }),
+        threshold: blocks.threshold,
+        blocks: Some(blocks),
+        special: None,
+    })
 }
