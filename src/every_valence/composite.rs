@@ -241,8 +241,7 @@ pub fn block0_symbolic(
                 let in_n = interpolate_1d(&xs, &ys);
                 // the check at the last valence
                 let last = Rational::from_integer((*valences.last().expect("valences") as i64).into());
-                let predicted =
-                    in_n.iter().rev().fold(Rational::from_integer(0.into()), |acc, c| acc * &last + c);
+                let predicted = in_n.iter().rev().fold(Rational::from_integer(0.into()), |acc, c| acc * &last + c);
                 if predicted != per_valence.last().expect("valences")[idx].1 {
                     return Err(format!(
                         "block 0's entries are not polynomials of degree ≤ {m} in n (checked at n = {})",

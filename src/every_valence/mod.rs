@@ -824,7 +824,11 @@ fn composite_block0(
     facts: tail::TailFacts,
     rows_text: String,
 ) -> Result<ParametricProof, Missing> {
-    let fail = |why: String| Missing { reason: format!("block 0: {why}"), rows: rows_text.clone(), blocks: Some(facts.clone()) };
+    let fail = |why: String| Missing {
+        reason: format!("block 0: {why}"),
+        rows: rows_text.clone(),
+        blocks: Some(facts.clone()),
+    };
     let (variable, qp, read) = composite_q(req, r0, r1).map_err(fail)?;
     let lambda1 = centre::lambda1_poly(p, variable);
     let (n, range) = centre::decide(&qp, &lambda1, variable, facts.threshold).map_err(fail)?;
