@@ -11,7 +11,8 @@
 use crate::common::subdlab;
 use num_rational::BigRational;
 use subdlab::certify::Verdict;
-use subdlab::every_valence::{block_polynomial, run, Parametric, Report, Request};
+use subdlab::every_valence::centre::Variable;
+use subdlab::every_valence::{block_polynomial, composite_block0_polynomial, run, Parametric, Report, Request};
 
 fn request(scheme: &str, from: usize, to: Option<usize>) -> Request {
     Request { scheme: scheme.into(), params: Vec::new(), from, to }
@@ -345,4 +346,93 @@ fn doo_sabin_block2_variant_is_disproved_at_forty_five() {
         v => panic!("the parametric part must not prove it: {v:?}"),
     }
     assert_eq!(run(&request(file, 40, Some(44))).unwrap().verdict, Verdict::Proved);
+}
+
+// √3 (Kobbelt 2000), a composite scheme: S is two refinement steps. The
+// closed forms below are derived by hand in tests/data/sqrt3-large-valence-
+// defect.toml: blocks k ≠ 0 never see the centre, so λ1 = |1 + ω|²/9 =
+// (2 + 2c)/9, c = cos(2π/n); block 0 keeps the centre and its ring's average
+// together, one step acting there as [[1 − a, a], [1/3, 2/3]] (eigenvalues
+// 1 and 2/3 − a), so two steps give (2/3 − a)², with Kobbelt's
+// a = (4 − 2c)/9 exactly λ1².
+
+fn sqrt3_lambda1(c: &BigRational) -> BigRational {
+    (q(2, 1) + q(2, 1) * c) / q(9, 1)
+}
+
+#[test]
+fn sqrt3_file_is_spectrally_c1_at_every_valence() {
+    let r = run(&request("schemes/sqrt3.toml", 3, None)).unwrap();
+    let p = proved_from_three(&r);
+    assert!(p.rows.contains("2 refinement steps"), "{}", p.rows);
+    let b0 = p.block0.as_ref().expect("block 0 decided");
+    assert_eq!(b0.variable, Variable::Cosine);
+}
+
+/// λ1 = (2 + 2c)/9 is a root of P(x, c) and its largest (the rest of P,
+/// P/(x − λ1), positive on [λ1, ∞) by Descartes on its shift).
+#[test]
+fn sqrt3_top_root_is_two_plus_two_cos_over_nine() {
+    for c in [q(-1, 2), q(0, 1), q(1, 3), q(9, 10), q(1, 1)] {
+        let p = poly_at("schemes/sqrt3.toml", &c);
+        let mu = sqrt3_lambda1(&c);
+        assert_eq!(eval(&p, &mu), q(0, 1), "c = {c}");
+        assert!(positive_on_half_line(&shifted(&deflate(&p, &mu), &mu)), "c = {c}");
+    }
+}
+
+/// Block 0 without λ0 = 1 has the root (2/3 − a)² in c: λ1² for √3,
+/// ((16 + 16c)/45)² for the defect file (a = (14 − 16c)/45).
+#[test]
+fn sqrt3_block0_has_the_centre_ring_eigenvalue() {
+    let gamma_sqrt3 = |c: &BigRational| sqrt3_lambda1(c);
+    let gamma_defect = |c: &BigRational| (q(16, 1) + q(16, 1) * c) / q(45, 1);
+    let cases: [(&str, &dyn Fn(&BigRational) -> BigRational); 2] =
+        [("schemes/sqrt3.toml", &gamma_sqrt3), ("tests/data/sqrt3-large-valence-defect.toml", &gamma_defect)];
+    for (file, gamma) in cases {
+        let (variable, qp) = composite_block0_polynomial(&request(file, 3, None)).expect("block 0 of a composite");
+        assert_eq!(variable, Variable::Cosine);
+        for c in [q(-1, 2), q(0, 1), q(1, 3), q(9, 10), q(1, 1)] {
+            let at_c: Vec<BigRational> = qp.iter().map(|t| t.eval(&c).to_rational().expect("rational")).collect();
+            let g = gamma(&c);
+            assert_eq!(eval(&at_c, &(&g * &g)), q(0, 1), "{file}, c = {c}");
+        }
+    }
+}
+
+/// The defect file: γ² > λ1 exactly when c > 97/128, first at n = 9 (derived
+/// in the file). Checked here without the program: cos(2π/8)² = 1/2 <
+/// (97/128)², and cos(2π/9) ≥ T(x) for x = 2(355/113)/9 ≥ 2π/9 (cos
+/// decreasing on [0, π/2]) with T the Taylor polynomial 1 − x²/2 + x⁴/24 −
+/// x⁶/720 ≤ cos x there (the remainder cos ξ · x⁸/8! ≥ 0). The parametric
+/// part must not prove it; the scan finds 9.
+#[test]
+fn sqrt3_large_valence_defect_is_disproved_at_nine() {
+    let threshold = q(97, 128);
+    assert!(q(1, 2) < &threshold * &threshold);
+    let x = q(2 * 355, 113 * 9);
+    let x2 = &x * &x;
+    let taylor = q(1, 1) - &x2 / q(2, 1) + &x2 * &x2 / q(24, 1) - &x2 * &x2 * &x2 / q(720, 1);
+    assert!(taylor > threshold);
+
+    let file = "tests/data/sqrt3-large-valence-defect.toml";
+    let r = run(&request(file, 3, None)).unwrap();
+    match &r.verdict {
+        Verdict::Disproved(why) => assert!(why.contains("n = 9"), "{why}"),
+        v => panic!("expected DISPROVED at 9, got {v:?}"),
+    }
+    assert_eq!(r.per_valence.last().unwrap().valence, 9);
+    assert!(r.per_valence[..r.per_valence.len() - 1].iter().all(|a| a.verdict == Verdict::Proved));
+    assert!(matches!(r.parametric.as_ref().unwrap().verdict, Verdict::NotProved(_)));
+    assert_eq!(run(&request(file, 3, Some(8))).unwrap().verdict, Verdict::Proved);
+}
+
+/// The built-in √3 is compiled code: refused as before.
+#[test]
+fn sqrt3_built_in_is_not_proved_beyond_its_certificates() {
+    let r = run(&request("sqrt3", 3, None)).unwrap();
+    match &r.verdict {
+        Verdict::NotProved(why) => assert!(why.contains("compiled code"), "{why}"),
+        v => panic!("{v:?}"),
+    }
 }

@@ -258,6 +258,27 @@ pub fn block0_poly(m: &[Vec<Rational>], r: &[Vec<Rational>]) -> BiPoly {
     charpoly(&a)
 }
 
+/// The eigenvalues of a whole block 0 other than λ0 = 1: det(xI − B_0(t))
+/// divided by (x − 1), B_0 given entry by entry (row-major, `size`²
+/// polynomials in t); an error when 1 is not an eigenvalue for every t.
+pub fn block0_without_one(entries: &[Vec<Rational>], size: usize) -> Result<BiPoly, String> {
+    let a: Vec<Vec<TPoly>> = (0..size).map(|i| (0..size).map(|j| tpoly(&entries[i * size + j])).collect()).collect();
+    let full = charpoly(&a);
+    // synthetic division by (x − 1), coefficients lowest power first
+    let d = full.len() - 1;
+    let mut quotient = vec![tpoly(&[Rational::zero()]); d];
+    let mut carry = tpoly(&[Rational::zero()]);
+    for i in (1..=d).rev() {
+        carry = carry + full[i].clone();
+        quotient[i - 1] = carry.clone();
+    }
+    let remainder = carry + full[0].clone();
+    if !<TPoly as crate::numeric::Weight>::is_zero(&remainder) {
+        return Err("1 is not an eigenvalue of block 0 at every valence (rows not summing to 1)".into());
+    }
+    Ok(quotient)
+}
+
 /// λ1's polynomial in the block-0 variable: P(x, c) itself for c, and
 /// P(x, γ(h)) for h, γ(h) = 1 − 2(355/113)²h² ≤ cos(2πh) (so μ(γ(1/n)) ≤
 /// μ(cos 2π/n) = λ1, μ being increasing).

@@ -13,6 +13,7 @@
 //! Spectral conditions only: the characteristic map is not part of this.
 
 pub mod centre;
+pub mod composite;
 pub mod laurent;
 pub mod special;
 pub mod symbol;
@@ -33,6 +34,7 @@ use crate::schemes;
 use crate::schemes::user::probe;
 use crate::spectrum::{analyse, Options};
 
+use crate::sweep::exact::BiPoly;
 use laurent::LaurentRows;
 
 /// The valences at which the rows away from the centre are read (two, to
@@ -308,8 +310,13 @@ struct Read {
     /// face-centred: the one row that depends on n
     varying: Option<Varying>,
     free: Vec<usize>,
+    /// the representatives' matrix indices (block order)
+    reps: Vec<usize>,
     orbit_of: Vec<(usize, usize)>,
     analysis: crate::spectrum::Analysis,
+    /// composite schemes: the fields the centre's stencils read at n (the
+    /// only ones with variables, `composite::centre_only`)
+    centre_fields: Option<Vec<probe::FieldRead>>,
 }
 
 fn read_rows(req: &Request, n: usize) -> Result<Read, Missing> {
@@ -330,8 +337,14 @@ fn read_rows(req: &Request, n: usize) -> Result<Read, Missing> {
     if fixed.len() > 1 {
         return Err(missing("more than one vertex is fixed by the rotation"));
     }
-    if analysis.discovered.refinements().len() != 1 {
-        return Err(missing("S is a composite of several refinement steps: the rows are not one rule each"));
+    // several refinement steps: the centre's rule reaches the other rows
+    // through the steps in between (`composite`)
+    let composite = analysis.discovered.refinements().len() > 1;
+    if composite && fixed.is_empty() {
+        return Err(missing(
+            "S is a composite of several refinement steps around a centre face: not followed (vertex-centred \
+             composites are)",
+        ));
     }
     let free = orbits.block_orbits(1);
     let mut pos = vec![usize::MAX; orbits.num_orbits()];
@@ -341,6 +354,22 @@ fn read_rows(req: &Request, n: usize) -> Result<Read, Missing> {
     let which: Vec<usize> = free.iter().map(|&o| orbits.representative[o]).collect();
     let (d, kind) = (&analysis.discovered, analysis.spectrum.neighbourhood);
     let (rows, reads) = probe::watch(n, || assemble_rows::<Cyclotomic>(scheme.as_ref(), d, kind, &which));
+    // composite: the n-dependent fields reach the rows away from the centre
+    // only through the centre's stencils, so only uniformly over the sectors
+    // (`composite`); the rows with those fields at 0 keep everything else
+    let (rows, centre_fields) = if composite && reads.total > 0 {
+        let set = d.set(kind);
+        let centre = set[orbits.representative[fixed[0]]];
+        let targets: Vec<usize> = which.iter().map(|&k| set[k]).collect();
+        let fields = composite::centre_only(scheme.as_ref(), d, &targets, centre, n)
+            .map_err(|e| missing(format!("valence {n}: {e}")))?;
+        let zero = composite::substitution(&fields, &vec![0; fields.len()]);
+        let (rows, _) =
+            probe::watch_substituted(n, zero, || assemble_rows::<Cyclotomic>(scheme.as_ref(), d, kind, &which));
+        (rows, Some(fields))
+    } else {
+        (rows, None)
+    };
     // the rows away from the centre must not read a field with a variable at
     // the centre's valence; and a scheme-file weight must have been read at all
     if reads.total == 0 {
@@ -357,7 +386,7 @@ fn read_rows(req: &Request, n: usize) -> Result<Read, Missing> {
     } else {
         None
     };
-    if let Some(f) = reads.at_valence.iter().find(|f| f.varies).filter(|_| varying.is_none()) {
+    if let Some(f) = reads.at_valence.iter().find(|f| f.varies).filter(|_| varying.is_none() && !composite) {
         return Err(missing(format!(
             "the rows away from the centre read [{}] {} at the centre's valence, an expression with variables: the \
              blocks k ≠ 0 may depend on n other than through cos(2πk/n)",
@@ -405,8 +434,29 @@ fn read_rows(req: &Request, n: usize) -> Result<Read, Missing> {
             entries[v.row][v.orbit].insert(0, d);
         }
     }
+    if composite {
+        // what is left of the uniform part U_ab (constant weights the
+        // centre's stencils read at n): the entry at the farthest sector
+        let far = g / 2;
+        for m in entries.iter_mut().flatten() {
+            let u = m.get(&far).cloned().unwrap_or_else(|| Rational::from_integer(0.into()));
+            if Weight::is_zero(&u) {
+                continue;
+            }
+            let mut local = BTreeMap::new();
+            for tau in (far - g + 1)..=far {
+                let v = m.get(&tau).cloned().unwrap_or_else(|| Rational::from_integer(0.into())) - &u;
+                if !Weight::is_zero(&v) {
+                    local.insert(tau, v);
+                }
+            }
+            *m = local;
+        }
+    }
     let rows = LaurentRows { entries, centre_column };
-    if 2 * rows.reach() + 2 > g {
+    // a composite's local part must leave the farthest sectors free
+    let margin = if composite { 4 } else { 2 };
+    if 2 * rows.reach() + margin > g {
         return Err(missing(format!(
             "the rows away from the centre reach {} sectors: too far for the probe",
             rows.reach()
@@ -419,8 +469,10 @@ fn read_rows(req: &Request, n: usize) -> Result<Read, Missing> {
         centre: fixed.first().map(|&o| orbits.representative[o]),
         varying,
         free,
+        reps: which,
         orbit_of,
         analysis,
+        centre_fields,
     })
 }
 
@@ -601,6 +653,9 @@ fn parametric(req: &Request) -> Result<ParametricProof, Missing> {
         rows: rows_text.clone(),
         blocks: Some(facts.clone()),
     };
+    if r0.centre_fields.is_some() {
+        return composite_block0(req, &r0, &r1, &p, facts, rows_text);
+    }
     // block 0: the centre's totals r(n)
     let (_, centre_reads) = probe::watch(n0, || centre_totals(req, &r0));
     let mut r_sym = vec![centre::InN::default(); r0.rows.size()];
@@ -675,5 +730,115 @@ fn face_centred(rows: &LaurentRows, v: &Varying, rows_text: String) -> Result<Pa
         block0: None,
         threshold: facts.threshold,
         special: Some(facts),
+    })
+}
+
+/// Block 0 of a composite scheme (`composite`): its entries as polynomials
+/// in (the n-dependent fields' values, n), read off S at the integer grid
+/// and the valences n0..n0+m+1, the fields replaced by their expressions
+/// in n; checked against block 0 of S itself at n0 and n0 + 1. Returns the
+/// variable t, q(x, t) = det(xI − B_0(t))/(x − 1) (the eigenvalues other
+/// than λ0 = 1) and what was read.
+fn composite_q(req: &Request, r0: &Read, r1: &Read) -> Result<(centre::Variable, BiPoly, String), String> {
+    let fields = r0.centre_fields.clone().ok_or("not a composite scheme")?;
+    let m = r0.analysis.discovered.refinements().len();
+    let symbols: Vec<centre::InN> =
+        fields.iter().map(|f| centre::symbolic(&f.expr, &f.env)).collect::<Result<_, _>>()?;
+    let scheme = schemes::resolve(&req.scheme, &req.params).map_err(|e| e.to_string())?;
+    let valences: Vec<usize> = (0..m + 2).map(|i| PROBE_VALENCE + i).collect();
+    let mut more = Vec::new();
+    for &n in &valences[2..] {
+        more.push(read_rows(req, n).map_err(|e| e.reason)?);
+    }
+    let reads: Vec<&Read> = [r0, r1].into_iter().chain(more.iter()).collect();
+    let key = |fs: &[probe::FieldRead]| fs.iter().map(|f| (f.rule, f.family)).collect::<Vec<_>>();
+    if !reads.iter().all(|r| r.centre_fields.as_deref().map(key) == Some(key(&fields))) {
+        return Err("the centre's stencils read different fields at different valences".into());
+    }
+    let block = |r: &Read, n: usize, values: Option<probe::Substitution>| {
+        composite::block0_values(
+            scheme.as_ref(),
+            &r.analysis.discovered,
+            r.analysis.spectrum.neighbourhood,
+            r.centre.ok_or("no centre vertex")?,
+            &r.reps,
+            &r.orbit_of,
+            &r.free,
+            n,
+            values,
+        )
+    };
+    let points = composite::grid(m, fields.len());
+    let mut at = Vec::new();
+    for (r, &n) in reads.iter().zip(&valences) {
+        let mut per_point = Vec::new();
+        for g in &points {
+            let b = block(r, n, Some(composite::substitution(&fields, g)))?;
+            per_point.push(composite::rational_block(&b, n)?);
+        }
+        at.push(per_point);
+    }
+    let entries = composite::block0_symbolic(&valences, &at, m, &symbols)?;
+    // the formula is block 0 of S at the first two valences
+    for (r, &n) in reads.iter().zip(&valences).take(2) {
+        let actual = block(r, n, None)?;
+        let formula: Option<Vec<Vec<Cyclotomic>>> =
+            entries.iter().map(|row| row.iter().map(|x| x.at(n as i64)).collect()).collect();
+        if formula.as_ref() != Some(&actual) {
+            return Err(format!("the fitted entries disagree with block 0 of S at n = {n}"));
+        }
+    }
+    let size = entries.len();
+    let flat: Vec<centre::InN> = entries.into_iter().flatten().collect();
+    let (variable, polys) = centre::one_variable(&flat)?;
+    let qp = centre::block0_without_one(&polys, size)?;
+    let text = format!(
+        "S is {m} refinement steps: the centre's stencils alone read [{}] at n (checked stencil by stencil), so \
+         the rows away from the centre are read with those fields at 0, and block 0 is fitted as a polynomial of \
+         degree ≤ {m} in them and in n (valences {}..{}, checked against S at {} and {})",
+        fields.iter().map(|f| format!("{} {}", f.rule, f.family)).collect::<Vec<_>>().join(", "),
+        valences[0],
+        valences[valences.len() - 1],
+        valences[0],
+        valences[1]
+    );
+    Ok((variable, qp, text))
+}
+
+/// Composite schemes: q(x, t) of block 0 (its eigenvalues other than 1)
+/// with its variable, as the parametric part computes it.
+pub fn composite_block0_polynomial(req: &Request) -> Result<(centre::Variable, BiPoly), String> {
+    let r0 = read_rows(req, PROBE_VALENCE).map_err(|m| m.reason)?;
+    let r1 = read_rows(req, PROBE_VALENCE + 1).map_err(|m| m.reason)?;
+    composite_q(req, &r0, &r1).map(|(v, q, _)| (v, q))
+}
+
+/// The parametric part of a composite scheme, once the blocks k ≠ 0 are
+/// decided: block 0 (`composite_q`) against λ1 as for one-step schemes
+/// (`centre::decide`).
+fn composite_block0(
+    req: &Request,
+    r0: &Read,
+    r1: &Read,
+    p: &BiPoly,
+    facts: tail::TailFacts,
+    rows_text: String,
+) -> Result<ParametricProof, Missing> {
+    let fail = |why: String| Missing {
+        reason: format!("block 0: {why}"),
+        rows: rows_text.clone(),
+        blocks: Some(facts.clone()),
+    };
+    let (variable, qp, read) = composite_q(req, r0, r1).map_err(fail)?;
+    let lambda1 = centre::lambda1_poly(p, variable);
+    let (n, range) = centre::decide(&qp, &lambda1, variable, facts.threshold).map_err(fail)?;
+    let mut blocks = facts.clone();
+    blocks.threshold = blocks.threshold.max(n);
+    Ok(ParametricProof {
+        rows: format!("{rows_text}; {read}"),
+        block0: Some(Block0 { variable, range }),
+        threshold: blocks.threshold,
+        blocks: Some(blocks),
+        special: None,
     })
 }

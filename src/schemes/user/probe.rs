@@ -47,9 +47,18 @@ pub struct Reads {
 struct Watch {
     valence: usize,
     reads: Reads,
-    /// indicator mode: every field read at the watched valence weighs 1 when
-    /// it is this (rule, family), else 0 (the slots' counts per target)
-    indicator: Option<(String, String)>,
+    /// the weights given to fields read at the watched valence instead of
+    /// their own (None: their own)
+    values: Option<Substitution>,
+}
+
+/// Weights given to the fields read at the watched valence: each listed
+/// (rule, family) weighs its integer; any other field weighs `others`
+/// (None: its own value).
+#[derive(Clone, Debug, Default)]
+pub struct Substitution {
+    pub fields: Vec<((String, String), i64)>,
+    pub others: Option<i64>,
 }
 
 thread_local! {
@@ -68,16 +77,24 @@ pub fn watch<T>(valence: usize, f: impl FnOnce() -> T) -> (T, Reads) {
 /// assembled by `f` counts the slots of that field per target (with the
 /// rule's scale).
 pub fn watch_indicator<T>(valence: usize, field: (&str, &str), f: impl FnOnce() -> T) -> (T, Reads) {
-    watch_with(valence, Some((field.0.to_string(), field.1.to_string())), f)
+    let values = Substitution { fields: vec![((field.0.to_string(), field.1.to_string()), 1)], others: Some(0) };
+    watch_with(valence, Some(values), f)
 }
 
-fn watch_with<T>(valence: usize, indicator: Option<(String, String)>, f: impl FnOnce() -> T) -> (T, Reads) {
+/// `watch` with the fields read at n = `valence` weighing as `values` says
+/// (composite schemes: the rows of S are polynomials in those weights, read
+/// off by evaluating them at several integers, `every_valence::composite`).
+pub fn watch_substituted<T>(valence: usize, values: Substitution, f: impl FnOnce() -> T) -> (T, Reads) {
+    watch_with(valence, Some(values), f)
+}
+
+fn watch_with<T>(valence: usize, values: Option<Substitution>, f: impl FnOnce() -> T) -> (T, Reads) {
     let started = WATCH.with(|w| {
         let mut w = w.borrow_mut();
         if w.is_some() {
             return false;
         }
-        *w = Some(Watch { valence, reads: Reads::default(), indicator });
+        *w = Some(Watch { valence, reads: Reads::default(), values });
         true
     });
     let out = f();
@@ -91,14 +108,14 @@ fn watch_with<T>(valence: usize, indicator: Option<(String, String)>, f: impl Fn
 
 /// Called by `Mask::weight` of a scheme file for every field it reads:
 /// `field` gives (has variables, expression, parameters). Returns the
-/// indicator weight (true: 1, false: 0) in indicator mode at the watched
-/// valence, else None (the field's own value is used).
+/// substituted weight (an integer) at the watched valence when the watch
+/// substitutes this field, else None (the field's own value is used).
 pub(super) fn record(
     rule: &'static str,
     family: &'static str,
     n: usize,
     field: impl FnOnce() -> (bool, Expr, Env),
-) -> Option<bool> {
+) -> Option<i64> {
     WATCH.with(|w| {
         let mut w = w.borrow_mut();
         let w = w.as_mut()?;
@@ -110,6 +127,7 @@ pub(super) fn record(
             let (varies, expr, env) = field();
             w.reads.at_valence.push(FieldRead { rule, family, expr, env, varies });
         }
-        w.indicator.as_ref().map(|(r, f)| r == rule && f == family)
+        let values = w.values.as_ref()?;
+        values.fields.iter().find(|((r, f), _)| r == rule && f == family).map(|(_, v)| *v).or(values.others)
     })
 }

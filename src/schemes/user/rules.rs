@@ -105,8 +105,8 @@ impl<W: Weight> Mask<W> for Shared {
         // the gatherer collects only the families the file weighs
         let k = *self.fields.get(&(rule, slot.family)).ok_or(Inexact)?;
         // `every_valence`: which fields are read at the centre's valence
-        if let Some(hit) = super::probe::record(rule, slot.family, slot.n, || self.weights.field(k)) {
-            return Ok(if hit { W::one() } else { W::zero() });
+        if let Some(value) = super::probe::record(rule, slot.family, slot.n, || self.weights.field(k)) {
+            return Ok(W::ratio(value, 1));
         }
         // a mesh with per-vertex values: the parameter at the vertex concerned
         let vertex = match (self.info.caps.vertex_param, &mesh.vertex_params, slot.at) {
