@@ -156,7 +156,7 @@ fn a_side_with_a_defective_or_collapsing_boundary_fails_naming_that_side() {
     assert!(!m.injective && !m.regular);
     assert!(c.sides[0].ring.is_none(), "side A has no map");
     assert!(c.sides[1].regular && c.sides[1].injective, "side B (2 quads) passes: {:?}", c.sides[1].reasons);
-    assert!(m.explanation.starts_with("side A (sectors 0..3, 4 faces"), "{}", m.explanation);
+    assert!(m.explanation.starts_with("per side: side A (sectors 0..3, 4 faces"), "{}", m.explanation);
     // Catmull–Clark n = 7 crease:5: side A of 5 quads, the rays collapse
     let m = map_at("catmull-clark", &[], 7, "crease:5");
     let c = m.crease.as_ref().unwrap();
@@ -164,7 +164,7 @@ fn a_side_with_a_defective_or_collapsing_boundary_fails_naming_that_side() {
     assert!(!m.injective);
     assert!(c.sides[0].ring.is_none());
     assert!(c.sides[0].explanation.contains("vanish on the sharp rays"), "{}", c.sides[0].explanation);
-    assert!(m.explanation.starts_with("side A (sectors 0..4, 5 faces"), "{}", m.explanation);
+    assert!(m.explanation.starts_with("per side: side A (sectors 0..4, 5 faces"), "{}", m.explanation);
     assert!(c.sides[1].regular && c.sides[1].injective);
     // BLZ's γ: the side of 4 quads passes, and so the crease
     let m = map_at("catmull-clark", &[("blz", "1")], 6, "crease:4");
@@ -212,6 +212,7 @@ fn the_sweep_reads_the_per_side_map() {
     assert_eq!(rows.len(), 4, "{text}");
     assert!(rows[0].contains("PASSES") && rows[1].contains("PASSES"), "{text}");
     assert!(rows[2].contains("FAILS") && rows[2].contains("side B"), "{text}");
-    assert!(rows[3].contains("FAILS") && rows[3].contains("side B (sectors 2..6, 5 faces"), "{text}");
+    // (CSV writes the text's commas as semicolons)
+    assert!(rows[3].contains("FAILS") && rows[3].contains("side B (sectors 2..6; 5 faces"), "{text}");
     assert!(rows[3].contains("vanish on the sharp rays"), "{text}");
 }

@@ -563,8 +563,8 @@ fn crease_map(
     out.spectral_status = failing.map_or(SpectralStatus::Ok, |m| m.spectral_status);
     let named = |m: &CharMap, what: &str| format!("{}: {what}", side_name(m));
     out.explanation = match failing {
-        Some(m) => named(m, &m.explanation),
-        None => sides.iter().map(|m| named(m, &m.explanation)).collect::<Vec<_>>().join("; "),
+        Some(m) => format!("per side: {}", named(m, &m.explanation)),
+        None => format!("per side: {}", sides.iter().map(|m| named(m, &m.explanation)).collect::<Vec<_>>().join("; ")),
     };
     out.regular = sides.iter().all(|m| m.regular);
     out.injective = sides.iter().all(|m| m.regular && m.injective);
