@@ -270,7 +270,12 @@ fn check_map_uncached(
 
 /// A map not checked yet: the analysis's identity and the pair's spectral
 /// status; `c1_spectral` is the spectral verdict the pair stands under.
-fn unchecked(spec: &crate::spectrum::Spectrum, pair: &spectral::Pair, c1_spectral: bool, opts: &CharMapOptions) -> CharMap {
+fn unchecked(
+    spec: &crate::spectrum::Spectrum,
+    pair: &spectral::Pair,
+    c1_spectral: bool,
+    opts: &CharMapOptions,
+) -> CharMap {
     CharMap {
         tagging: spec.tagging.clone(),
         ray_angle_degrees: None,
@@ -474,7 +479,9 @@ fn check_pair(
 /// corners' labels: a corner off the rays (j > 0) names it; otherwise its
 /// two ray corners are on rays s and s + 1 (mod n), and it is sector s.
 fn first_ring_sector(face: &[usize], labels: &[crate::neighbourhood::VertexLabel], n: usize) -> Option<usize> {
-    if let Some(l) = face.iter().map(|&v| &labels[v]).find(|l| l.j > 0 && l.kind != crate::neighbourhood::VertexKind::Centre) {
+    if let Some(l) =
+        face.iter().map(|&v| &labels[v]).find(|l| l.j > 0 && l.kind != crate::neighbourhood::VertexKind::Centre)
+    {
         return Some(l.sector % n);
     }
     let rays: Vec<usize> = face
@@ -575,9 +582,11 @@ fn crease_map(
     out.ring_pixels = sum(&|m| m.ring_pixels);
     out.folded_facets = sum(&|m| m.folded_facets);
     out.ring_facets = sides.iter().map(|m| m.ring_facets).sum();
-    out.min_jacobian_ratio = sides.iter().map(|m| m.min_jacobian_ratio).min_by(|a, b| {
-        a.unwrap_or(f64::NEG_INFINITY).total_cmp(&b.unwrap_or(f64::NEG_INFINITY))
-    }).flatten();
+    out.min_jacobian_ratio = sides
+        .iter()
+        .map(|m| m.min_jacobian_ratio)
+        .min_by(|a, b| a.unwrap_or(f64::NEG_INFINITY).total_cmp(&b.unwrap_or(f64::NEG_INFINITY)))
+        .flatten();
     out.reasons.push(format!(
         "the crease's map, per side (Zorin 2000; Biermann–Levin–Zorin 2000): each side's own subdominant \
          eigenvectors on its own sectors, regular and injective there; floating point, the Jacobian's sign on \
@@ -600,7 +609,10 @@ fn crease_map(
             "S whole (both sides at once; not the crease's criterion): {}",
             if w.regular && w.injective { "regular and injective" } else { "not regular and injective" }
         ),
-        (None, why) => format!("S whole (both sides at once; not the crease's criterion): no map: {}", why.as_deref().unwrap_or("-")),
+        (None, why) => format!(
+            "S whole (both sides at once; not the crease's criterion): no map: {}",
+            why.as_deref().unwrap_or("-")
+        ),
     });
     // the figure shows both sides, each in its own normalisation: side A
     // from ray 0 (the positive x-axis) counter-clockwise to ray K, side B

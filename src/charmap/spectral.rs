@@ -222,13 +222,7 @@ pub fn sector_pair_under(spec: &Spectrum, verdict: &crate::spectrum::Verdict) ->
         pair.status = SpectralStatus::NotDominant;
         pair.explanation = format!(
             "the spectral part of the sector criterion fails ({}), so there is no characteristic map",
-            verdict
-                .reasons
-                .iter()
-                .filter(|r| !r.starts_with("not decided"))
-                .cloned()
-                .collect::<Vec<_>>()
-                .join("; ")
+            verdict.reasons.iter().filter(|r| !r.starts_with("not decided")).cloned().collect::<Vec<_>>().join("; ")
         );
         return pair;
     }
