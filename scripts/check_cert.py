@@ -1131,6 +1131,9 @@ class Checker:
         crease = part.get("crease")
         decoupled = isinstance(crease, dict) and crease.get("decoupled") is True
         crease_word = self.verdict
+        tag = part.get("tag")
+        if isinstance(tag, str) and tag.startswith("crease:") and "crease" in part:
+            self.check_crease_fallback(part, crease, decoupled)
         if decoupled:
             self.verdict = get(crease, "whole_verdict", "crease")
             if self.verdict not in ("PROVED", "DISPROVED", "NOT PROVED"):
@@ -1155,16 +1158,10 @@ class Checker:
         if self.verdict == "NOT PROVED":
             self.lines.append("  --  NOT PROVED: nothing to re-check")
 
-    def check_crease_sides(self, part, crease, word):
-        """The per-side verdict of a crease:K vertex. Each side's points are
-        re-derived from the labels (sector s between rays s and s + 1; an
-        'edge' point lies on ray s; the curve is the centre and the points on
-        rays 0 and K): a side's set must hold every point strictly inside it
-        and none strictly inside the other side, and no row of it may read a
-        column outside it (exactly, on the rows above). Each side's rows are
-        then the principal submatrix, rebuilt here, and its certificate is
-        re-checked like a whole one; the crease's verdict is PROVED iff both
-        sides are, DISPROVED iff one is."""
+    def crease_inside(self, part):
+        """For each point of a crease:K document, the side it lies strictly
+        inside (0: sectors 0..K-1, 1: the rest) or None on the crease curve
+        (the centre and the 'edge' points of rays 0 and K), from the labels."""
         tag = get(part, "tag", "tagged")
         if not isinstance(tag, str) or not tag.startswith("crease:"):
             reject(f"a per-side verdict at a {tag!r} vertex")
@@ -1184,6 +1181,66 @@ class Checker:
             sector = int(m.group(3))
             on_sharp_ray = m.group(1) == "edge" and sector in (0, at)
             inside.append(None if on_sharp_ray else (0 if sector < at else 1))
+        return labels, inside
+
+    def check_crease_fallback(self, part, crease, decoupled):
+        """A crease:K document says whose verdict it gives: 'verdict_of' is
+        'sides' exactly when the sides decouple, else 'S whole' with the
+        reason ('coupled'), the document's verdict then S whole's own. Where
+        every row is exact, a fallback is re-derived here: the dependency
+        closure, through the rows' non-zero entries, of the points strictly
+        inside each side must reach a point strictly inside the other (or a
+        side has no such point); sides that decouple must not be given S
+        whole's verdict."""
+        if not isinstance(crease, dict):
+            raise Malformed("the crease part is not an object")
+        verdict_of = get(crease, "verdict_of", "crease")
+        want = "sides" if decoupled else "S whole"
+        if verdict_of != want:
+            reject(f"the crease's verdict is of {verdict_of!r}, but the document's sides {'decouple' if decoupled else 'do not decouple'}")
+        if decoupled:
+            return
+        why = crease.get("coupled")
+        if not isinstance(why, str) or not why.strip():
+            reject("the crease's sides do not decouple and the document gives no reason")
+        if get(crease, "whole_verdict", "crease") != self.verdict:
+            reject("the sides do not decouple, but the document's verdict is not S whole's")
+        if not get(part, "exact", "tagged"):
+            self.lines.append(f"  --  crease: S whole's verdict (the sides do not decouple: {why}); not re-derived, the rows are not all exact")
+            return
+        labels, inside = self.crease_inside(part)
+        seeds = [[p for p, w in enumerate(inside) if w == k] for k in (0, 1)]
+        crosses = None
+        if all(seeds):
+            for k in (0, 1):
+                seen, todo = set(seeds[k]), list(seeds[k])
+                while todo:
+                    a = todo.pop()
+                    for b in self.rows[a]:  # the non-zero entries only
+                        if b not in seen:
+                            seen.add(b)
+                            todo.append(b)
+                hit = next((p for p in sorted(seen) if inside[p] == 1 - k), None)
+                if hit is not None:
+                    crosses = f"side {k}'s closure reaches {labels[hit]}"
+                    break
+            if crosses is None:
+                reject("the document gives S whole's verdict, but the sides decouple (their closures, re-derived from the rows, stay apart)")
+        else:
+            crosses = "a side has no point strictly inside it"
+        self.ok(f"crease: the sides do not decouple ({crosses}, re-derived from the exact rows): S whole's verdict {self.verdict}")
+
+    def check_crease_sides(self, part, crease, word):
+        """The per-side verdict of a crease:K vertex. Each side's points are
+        re-derived from the labels (sector s between rays s and s + 1; an
+        'edge' point lies on ray s; the curve is the centre and the points on
+        rays 0 and K): a side's set must hold every point strictly inside it
+        and none strictly inside the other side, and no row of it may read a
+        column outside it (exactly, on the rows above). Each side's rows are
+        then the principal submatrix, rebuilt here, and its certificate is
+        re-checked like a whole one; the crease's verdict is PROVED iff both
+        sides are, DISPROVED iff one is."""
+        labels, inside = self.crease_inside(part)
         sides = as_list(get(crease, "sides", "crease"), "sides")
         if len(sides) != 2:
             reject(f"a crease has two sides, the document lists {len(sides)}")

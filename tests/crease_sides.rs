@@ -297,4 +297,34 @@ fn the_checker_rechecks_each_side_and_rejects_tampering() {
     });
     assert_eq!(code, 1, "{text}");
     assert!(text.contains("strictly inside the other side"), "{text}");
+    // the document says whose verdict it gives: the sides' here
+    let doc: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("regular.json")).unwrap()).unwrap();
+    assert_eq!(doc["parts"]["tagged"]["crease"]["verdict_of"], "sides");
+    // ... and a document that claims it does not: rejected
+    let (code, text) = tamper("regular.json", &|d| d["parts"]["tagged"]["crease"]["verdict_of"] = "S whole".into());
+    assert_eq!(code, 1, "{text}");
+    assert!(text.contains("the crease's verdict is of 'S whole'"), "{text}");
+    // S whole's verdict given as the fallback where the sides do decouple
+    // (the regular crease: S whole DISPROVED, the sides PROVED): the checker
+    // re-derives the closures from the exact rows and rejects the fallback
+    let (code, text) = tamper("regular.json", &|d| {
+        let t = &mut d["parts"]["tagged"];
+        t["crease"]["decoupled"] = false.into();
+        t["crease"]["verdict_of"] = "S whole".into();
+        t["crease"]["coupled"] = "claimed without reason".into();
+        t["verdict"] = t["crease"]["whole_verdict"].clone();
+    });
+    assert_eq!(code, 1, "{text}");
+    assert!(text.contains("but the sides decouple"), "{text}");
+    // a fallback without its reason
+    let (code, text) = tamper("regular.json", &|d| {
+        let t = &mut d["parts"]["tagged"];
+        t["crease"]["decoupled"] = false.into();
+        t["crease"]["verdict_of"] = "S whole".into();
+        t["crease"]["coupled"] = serde_json::Value::Null;
+        t["verdict"] = t["crease"]["whole_verdict"].clone();
+    });
+    assert_eq!(code, 1, "{text}");
+    assert!(text.contains("gives no reason"), "{text}");
 }

@@ -15,6 +15,7 @@ mod common;
 
 mod charmap;
 mod charmap_from_rows;
+mod crease_charmap;
 mod curvature_catmull_clark;
 mod curvature_central_ring;
 mod curvature_generalised;

@@ -631,7 +631,7 @@ fn the_boundary_claims_file_verifies() {
     assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let claims = v[0]["claims"].as_array().unwrap();
-    assert_eq!(claims.len(), 26);
+    assert_eq!(claims.len(), 30);
     for c in claims {
         assert_eq!(c["verdict"], "HOLDS", "{c}");
     }

@@ -271,6 +271,9 @@ pub fn tagged_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &super::tagge
             "crease".into(),
             json!({
                 "decoupled": c.coupled.is_none(),
+                // whose verdict the document's is: the sides', or S whole's
+                // where they do not decouple (the fallback, with why)
+                "verdict_of": if c.coupled.is_none() { "sides" } else { "S whole" },
                 "coupled": c.coupled,
                 "whole_verdict": c.whole_verdict.word(),
                 "whole_reason": verdict_reason(&c.whole_verdict),

@@ -139,6 +139,10 @@ pub struct CharMap {
     pub ring_area: Option<f64>,
     pub inner_area: Option<f64>,
     pub reasons: Vec<String>,
+    /// at a `crease:K` vertex: each side's own map, and S whole's beside
+    /// them (`crease_map`); the fields above are then the crease's verdict
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub crease: Option<CreaseMaps>,
     /// the normalised ring (the map rotated so that a sector spoke is on the
     /// positive x-axis, oriented counter-clockwise, outer radius 1)
     #[serde(skip)]
@@ -148,6 +152,24 @@ pub struct CharMap {
     /// level-0 control net faces (normalised), for figures
     #[serde(skip)]
     pub control_net: Vec<Vec<[f64; 2]>>,
+}
+
+/// The characteristic maps of a crease vertex (`--tag crease:K`), side by
+/// side. Each side's map is built from that side's own subdominant
+/// eigenvectors (the principal submatrix on its points,
+/// `spectrum::crease_sides`) on that side's sectors only, and must be
+/// regular and injective there (Zorin 2000; Biermann–Levin–Zorin 2000).
+#[derive(Clone, Debug, Serialize)]
+pub struct CreaseMaps {
+    /// side A's and side B's maps (empty when the sides do not decouple)
+    pub sides: Vec<CharMap>,
+    /// S whole's map (both sides' eigenvectors at once; not the crease's
+    /// criterion), where S whole passes the spectral part
+    pub whole: Option<Box<CharMap>>,
+    /// why S whole has no map, when it has none
+    pub whole_missing: Option<String>,
+    /// why there is no per-side map (the map is then S whole's)
+    pub coupled: Option<String>,
 }
 
 /// Analyse `scheme` at `config` and check its characteristic map.
@@ -232,9 +254,29 @@ fn check_map_uncached(
     if spec.neighbourhood != NeighbourhoodKind::Analysis {
         return Err(Error::Input("the characteristic map needs the analysis neighbourhood".into()));
     }
+    if let Some(crease) = spec.crease.as_ref().filter(|c| c.coupled.is_none()) {
+        return crease_map(scheme, analysis, crease, opts);
+    }
     let tagged = spec.tagging.is_some();
     let pair = if tagged { spectral::sector_pair(spec) } else { spectral::subdominant_pair(spec) };
-    let mut out = CharMap {
+    let mut out = unchecked(spec, &pair, spec.verdict.c1_spectral, opts);
+    check_pair(&mut out, scheme, &analysis.discovered, &pair, opts, rows, None)?;
+    if let Some(why) = spec.crease.as_ref().and_then(|c| c.coupled.clone()) {
+        out.reasons.insert(0, format!("no per-side map: {why}; the map is S whole's"));
+        out.crease = Some(CreaseMaps { sides: Vec::new(), whole: None, whole_missing: None, coupled: Some(why) });
+    }
+    Ok(out)
+}
+
+/// A map not checked yet: the analysis's identity and the pair's spectral
+/// status; `c1_spectral` is the spectral verdict the pair stands under.
+fn unchecked(
+    spec: &crate::spectrum::Spectrum,
+    pair: &spectral::Pair,
+    c1_spectral: bool,
+    opts: &CharMapOptions,
+) -> CharMap {
+    CharMap {
         tagging: spec.tagging.clone(),
         ray_angle_degrees: None,
         scheme: spec.scheme.clone(),
@@ -244,7 +286,7 @@ fn check_map_uncached(
         subdominant_blocks: pair.blocks.clone(),
         spectral_status: pair.status,
         explanation: pair.explanation.clone(),
-        c1_spectral: spec.verdict.c1_spectral,
+        c1_spectral,
         levels: opts.levels,
         refinements: 0,
         resolution: opts.resolution,
@@ -262,26 +304,77 @@ fn check_map_uncached(
         ring_area: None,
         inner_area: None,
         reasons: Vec::new(),
+        crease: None,
         ring: None,
         display: None,
         control_net: Vec::new(),
-    };
+    }
+}
+
+/// One side of a crease vertex, for [`check_pair`]: the pair is defined on
+/// `points` (indices of S, ascending; the pair's values are in this order)
+/// and the map is checked on the first-ring faces flagged in `first_ring`.
+struct SideOfCrease<'a> {
+    points: &'a [usize],
+    first_ring: Vec<bool>,
+    /// the side's bounding sharp rays, counter-clockwise: (first, last)
+    rays: (usize, usize),
+}
+
+/// Build the map of `pair` on the analysis's patch, refine it and check it
+/// (regularity, injectivity on the raster), into `out`. With `side`, the
+/// map of one side of a crease: its values live on that side's points, and
+/// only that side's part of the first ring is refined and checked.
+fn check_pair(
+    out: &mut CharMap,
+    scheme: &dyn Scheme,
+    d: &crate::neighbourhood::Discovered,
+    pair: &spectral::Pair,
+    opts: &CharMapOptions,
+    rows: Option<&net::Net<crate::refine::SparseRow<f64>>>,
+    side: Option<&SideOfCrease>,
+) -> Result<(), Error> {
     if !pair.status.has_map() {
         out.reasons.push(format!("no characteristic map: {}", pair.explanation));
-        return Ok(out);
+        return Ok(());
     }
-    let d = &analysis.discovered;
-    if let Some(why) = collapsed_rays(d, &pair.values) {
+    let tagged = d.config.tagging.is_some();
+    // the pair over the whole analysis set: a side's pair is zero off the
+    // side (for the questions asked of level-0 values: collapsed rays, the
+    // normalisation's reference point, the rays' angle), and undefined
+    // there in the net that is refined
+    let values: Vec<[f64; 2]> = match side {
+        None => pair.values.clone(),
+        Some(side) => {
+            let mut all = vec![[0.0; 2]; d.analysis.len()];
+            for (&k, v) in side.points.iter().zip(&pair.values) {
+                all[k] = *v;
+            }
+            all
+        }
+    };
+    if let Some(why) = collapsed_rays(d, &values) {
         out.spectral_status = SpectralStatus::NotDominant;
         out.explanation = why.clone();
         out.reasons.push(format!("no characteristic map: {why}"));
-        return Ok(out);
+        return Ok(());
     }
-    let level0 = net::initial_points(d, &pair.values)?;
+    let mut level0 = net::initial_points(d, &values)?;
+    if let Some(side) = side {
+        for (k, &v) in d.analysis.iter().enumerate() {
+            if side.points.binary_search(&k).is_err() {
+                level0[v] = None;
+            }
+        }
+    }
     let steps = scheme.topology().steps_per_analysis();
-    let mut fine = match rows.filter(|r| r.refinements == opts.levels * steps) {
-        Some(rows) => rows.evaluate(&pair.values),
-        None => net::refine_net(scheme, d, level0.clone(), opts.levels)?,
+    let refine = |level0: Vec<Option<[f64; 2]>>, levels: usize| match side {
+        None => net::refine_net(scheme, d, level0, levels),
+        Some(side) => net::refine_net_within(scheme, d, level0, levels, &side.first_ring),
+    };
+    let mut fine = match rows.filter(|r| r.refinements == opts.levels * steps && side.is_none()) {
+        Some(rows) => rows.evaluate(&values),
+        None => refine(level0.clone(), opts.levels)?,
     };
     // an eigenvector pair is fixed only up to a linear map; a nearly parallel
     // pair (possible from the full matrix) would squash the ring to a few
@@ -289,7 +382,7 @@ fn check_map_uncached(
     // injectivity are invariant under linear maps)
     let w = isotropic(&ring::extract(&fine));
     net::transform(&mut fine.points, w);
-    let values: Vec<[f64; 2]> = pair.values.iter().map(|&p| net::apply_linear(&w, p)).collect();
+    let values: Vec<[f64; 2]> = values.iter().map(|&p| net::apply_linear(&w, p)).collect();
     let m = normalisation(d, &values, &ring::extract(&fine));
     net::transform(&mut fine.points, m);
     let m = m * w;
@@ -332,8 +425,14 @@ fn check_map_uncached(
         // with the inner copy) on a regular map
         out.winding_number = None;
         out.inner_winding_number = None;
-        let normalised: Vec<[f64; 2]> = pair.values.iter().map(|&p| net::apply_linear(&m, p)).collect();
-        out.ray_angle_degrees = ray_angle(d, &normalised);
+        let normalised: Vec<[f64; 2]> = values.iter().map(|&p| net::apply_linear(&m, p)).collect();
+        out.ray_angle_degrees = match side {
+            None => d.config.tagging.and_then(|t| {
+                let rays = t.sharp_rays(d.config.valence());
+                ray_angle(d, &normalised, (*rays.first()?, *rays.last()?))
+            }),
+            Some(side) => ray_angle(d, &normalised, side.rays),
+        };
         if let Some(a) = out.ray_angle_degrees {
             reasons.push(format!("the sharp rays' images meet at {a:.4}° at the centre"));
         }
@@ -365,7 +464,7 @@ fn check_map_uncached(
     out.reasons = reasons;
 
     if let Some(levels) = opts.display_levels {
-        let mut coarse = net::refine_net(scheme, d, level0.clone(), levels.clamp(1, opts.levels))?;
+        let mut coarse = refine(level0.clone(), levels.clamp(1, opts.levels))?;
         net::transform(&mut coarse.points, m);
         out.display = Some(ring::extract(&coarse));
     }
@@ -373,7 +472,258 @@ fn check_map_uncached(
     net::transform(&mut pts0, m);
     out.control_net = control_net(&d.patch, &pts0);
     out.ring = Some(ring);
+    Ok(())
+}
+
+/// The sector (0..n) a face of the level-0 first ring lies in, from its
+/// corners' labels: a corner off the rays (j > 0) names it; otherwise its
+/// two ray corners are on rays s and s + 1 (mod n), and it is sector s.
+fn first_ring_sector(face: &[usize], labels: &[crate::neighbourhood::VertexLabel], n: usize) -> Option<usize> {
+    if let Some(l) =
+        face.iter().map(|&v| &labels[v]).find(|l| l.j > 0 && l.kind != crate::neighbourhood::VertexKind::Centre)
+    {
+        return Some(l.sector % n);
+    }
+    let rays: Vec<usize> = face
+        .iter()
+        .map(|&v| &labels[v])
+        .filter(|l| l.kind != crate::neighbourhood::VertexKind::Centre && l.j == 0 && l.i > 0)
+        .map(|l| l.sector % n)
+        .collect();
+    rays.iter().copied().find(|&a| rays.contains(&((a + 1) % n)))
+}
+
+/// The crease's map, side by side: each side's own pair (its principal
+/// submatrix's eigenvectors) on its own sectors; the crease passes when
+/// both sides' maps are regular and injective. S whole's map is kept
+/// beside them where S whole passes the spectral part.
+fn crease_map(
+    scheme: &dyn Scheme,
+    analysis: &Analysis,
+    crease: &crate::spectrum::crease_verdict::CreaseVerdict,
+    opts: &CharMapOptions,
+) -> Result<CharMap, Error> {
+    let spec = &analysis.spectrum;
+    let d = &analysis.discovered;
+    let Some(crate::neighbourhood::Tagging::Crease { at }) = d.config.tagging else {
+        return Err(Error::Message("a per-side verdict at a configuration that is not a crease".into()));
+    };
+    let n = d.config.valence();
+    let centre: std::collections::HashSet<usize> = net::centre_set(d).into_iter().collect();
+    let mut sides = Vec::new();
+    for (s, side) in crease.sides.iter().enumerate() {
+        let mut pair = spectral::sector_pair(&side.spectrum);
+        let mut m = unchecked(spec, &pair, side.verdict.c1_spectral, opts);
+        m.tagging = Some(format!("crease:{at} {}", side.name));
+        // the pair on the side's points and on the curve's outer points
+        // that no side's row reads (Loop's second points on the sharp rays),
+        // which the side's refined first ring does read
+        let e = &side.spectrum.eigenvalues;
+        let points = if pair.status.has_map() && e.len() > 2 {
+            let lambdas = if e[1].algebraic_multiplicity >= 2 { [e[1].re; 2] } else { [e[1].re, e[2].re] };
+            match extend_over_curve(analysis, at, s, &side.points, &pair.values, lambdas) {
+                Ok((points, values)) => {
+                    pair.values = values;
+                    points
+                }
+                Err(why) => {
+                    m.reasons.push(format!("no characteristic map: {why}"));
+                    m.explanation = why;
+                    m.spectral_status = SpectralStatus::Missing;
+                    sides.push(m);
+                    continue;
+                }
+            }
+        } else {
+            side.points.clone()
+        };
+        // this side's faces of the first ring: sectors 0..K−1 (A), K..n−1 (B)
+        let first_ring: Vec<bool> = d
+            .patch
+            .faces()
+            .iter()
+            .map(|f| {
+                f.iter().any(|v| centre.contains(v))
+                    && first_ring_sector(f, &d.labels, n).is_some_and(|sector| usize::from(sector >= at) == s)
+            })
+            .collect();
+        let restriction = SideOfCrease { points: &points, first_ring, rays: if s == 0 { (0, at) } else { (at, 0) } };
+        check_pair(&mut m, scheme, d, &pair, opts, None, Some(&restriction))?;
+        sides.push(m);
+    }
+    // S whole's map, where S whole passes the spectral part on its own
+    let whole_pair = spectral::sector_pair_under(spec, &crease.whole);
+    let (whole, whole_missing) = if whole_pair.status.has_map() {
+        let mut w = unchecked(spec, &whole_pair, crease.whole.c1_spectral, opts);
+        match check_pair(&mut w, scheme, d, &whole_pair, opts, None, None) {
+            Ok(()) => (Some(Box::new(w)), None),
+            Err(e) => (None, Some(format!("S whole's map could not be checked: {e}"))),
+        }
+    } else {
+        (None, Some(whole_pair.explanation.clone()))
+    };
+
+    let mut out = unchecked(spec, &spectral::Pair::missing(""), spec.verdict.c1_spectral, opts);
+    out.lambda1 = sides.iter().map(|m| m.lambda1).fold(f64::NAN, f64::max);
+    out.subdominant_blocks = Vec::new();
+    let failing = sides.iter().find(|m| !m.spectral_status.has_map());
+    out.spectral_status = failing.map_or(SpectralStatus::Ok, |m| m.spectral_status);
+    let named = |m: &CharMap, what: &str| format!("{}: {what}", side_name(m));
+    out.explanation = match failing {
+        Some(m) => format!("per side: {}", named(m, &m.explanation)),
+        None => format!("per side: {}", sides.iter().map(|m| named(m, &m.explanation)).collect::<Vec<_>>().join("; ")),
+    };
+    out.regular = sides.iter().all(|m| m.regular);
+    out.injective = sides.iter().all(|m| m.regular && m.injective);
+    out.refinements = sides.iter().map(|m| m.refinements).max().unwrap_or(0);
+    let sum = |f: &dyn Fn(&CharMap) -> Option<usize>| sides.iter().map(f).sum::<Option<usize>>();
+    out.overlap_pixels = sum(&|m| m.overlap_pixels);
+    out.copy_overlap_pixels = sum(&|m| m.copy_overlap_pixels);
+    out.ring_pixels = sum(&|m| m.ring_pixels);
+    out.folded_facets = sum(&|m| m.folded_facets);
+    out.ring_facets = sides.iter().map(|m| m.ring_facets).sum();
+    out.min_jacobian_ratio = sides
+        .iter()
+        .map(|m| m.min_jacobian_ratio)
+        .min_by(|a, b| a.unwrap_or(f64::NEG_INFINITY).total_cmp(&b.unwrap_or(f64::NEG_INFINITY)))
+        .flatten();
+    out.reasons.push(format!(
+        "the crease's map, per side (Zorin 2000; Biermann–Levin–Zorin 2000): each side's own subdominant \
+         eigenvectors on its own sectors, regular and injective there; floating point, the Jacobian's sign on \
+         every facet and injectivity on the raster ({} levels, resolution {})",
+        opts.levels, opts.resolution
+    ));
+    for m in &sides {
+        let verdict = match (m.ring.is_some(), m.regular, m.injective) {
+            (false, _, _) => format!("FAILS: no map: {}", m.explanation),
+            (true, true, true) => "PASSES: regular and injective".to_string(),
+            (true, false, _) => "FAILS: not regular".to_string(),
+            (true, true, false) => "FAILS: not injective".to_string(),
+        };
+        let angle = m.ray_angle_degrees.map(|a| format!("; the sharp rays' images at {a:.4}°")).unwrap_or_default();
+        let said = if m.ring.is_some() { format!(" ({}{angle})", m.explanation) } else { String::new() };
+        out.reasons.push(format!("{}: {verdict}{said}", side_name(m)));
+    }
+    out.reasons.push(match (&whole, &whole_missing) {
+        (Some(w), _) => format!(
+            "S whole (both sides at once; not the crease's criterion): {}",
+            if w.regular && w.injective { "regular and injective" } else { "not regular and injective" }
+        ),
+        (None, why) => format!(
+            "S whole (both sides at once; not the crease's criterion): no map: {}",
+            why.as_deref().unwrap_or("-")
+        ),
+    });
+    // the figure shows both sides, each in its own normalisation: side A
+    // from ray 0 (the positive x-axis) counter-clockwise to ray K, side B
+    // from ray K on round to ray 0, so together they fill the plane
+    if sides.iter().all(|m| m.ring.is_some()) {
+        out.ring = merged(sides.iter().map(|m| m.ring.as_ref()));
+        out.display = merged(sides.iter().map(|m| m.display.as_ref().or(m.ring.as_ref())));
+        out.control_net = sides.iter().flat_map(|m| m.control_net.clone()).collect();
+    }
+    out.crease = Some(CreaseMaps { sides, whole, whole_missing, coupled: None });
     Ok(out)
+}
+
+/// A side's pair (over its points X, indices of S, ascending) extended to
+/// the points R of S that lie on neither side's inside and outside X: the
+/// outer points of the sharp rays, whose rows read only the curve but which
+/// no side's row reads (so the side's closure leaves them out, and its
+/// spectrum is right without them), while the side's refined first ring
+/// reads them. With X ∪ R invariant (checked on the float rows, to the
+/// closure's tolerance), S on it is [[S_XX, 0], [S_RX, S_RR]], and the
+/// eigenvector of λ with x on X has (λ − S_RR) r = S_RX x on R: solved per
+/// component, each with its own λ (λ1, λ2). Refused where λ is an
+/// eigenvalue of S_RR (no unique extension).
+fn extend_over_curve(
+    analysis: &Analysis,
+    at: usize,
+    side: usize,
+    points: &[usize],
+    values: &[[f64; 2]],
+    lambdas: [f64; 2],
+) -> Result<(Vec<usize>, Vec<[f64; 2]>), String> {
+    use crate::spectrum::crease_sides::{side_of, READ_TOLERANCE};
+    let s: &crate::matrix::LocalMatrix<f64> = &analysis.matrix;
+    let labels = &s.labels;
+    let in_x = |p: usize| points.binary_search(&p).is_ok();
+    let extra: Vec<usize> =
+        (0..labels.len()).filter(|&p| !in_x(p) && side_of(&labels[p], at) != Some(1 - side)).collect();
+    if extra.is_empty() {
+        return Ok((points.to_vec(), values.to_vec()));
+    }
+    let scale = s.rows.iter().flatten().fold(0.0f64, |m, (_, w)| m.max(w.abs())).max(1.0);
+    let position = |p: usize| extra.binary_search(&p).ok();
+    let k = extra.len();
+    let mut srr = nalgebra::DMatrix::<f64>::zeros(k, k);
+    let mut srx = vec![[0.0f64; 2]; k];
+    for (i, &r) in extra.iter().enumerate() {
+        for &(b, w) in &s.rows[r] {
+            if let Some(j) = position(b) {
+                srr[(i, j)] = w;
+            } else if let Ok(x) = points.binary_search(&b) {
+                for c in 0..2 {
+                    srx[i][c] += w * values[x][c];
+                }
+            } else if w.abs() > READ_TOLERANCE * scale {
+                return Err(format!(
+                    "the row of {} (outside the side, on the curve) reads {}, strictly inside the other side",
+                    labels[r].name, labels[b].name
+                ));
+            }
+        }
+    }
+    let mut ext = vec![[0.0f64; 2]; k];
+    for c in 0..2 {
+        let a = nalgebra::DMatrix::<f64>::identity(k, k) * lambdas[c] - &srr;
+        let rhs = nalgebra::DVector::from_iterator(k, srx.iter().map(|v| v[c]));
+        let lu = a.clone().lu();
+        let solved = lu.solve(&rhs).filter(|x| x.iter().all(|v| v.is_finite()));
+        // a pivot this small against the matrix is a λ of S_RR
+        let min_singular = a.singular_values().min();
+        let Some(x) = solved.filter(|_| min_singular > 1e-10 * (1.0 + lambdas[c].abs())) else {
+            return Err(format!(
+                "λ = {} is an eigenvalue of the rows of the curve's outer points: the side's eigenvector has no unique extension there",
+                crate::spectrum::fmt_f(lambdas[c])
+            ));
+        };
+        for (i, v) in x.iter().enumerate() {
+            ext[i][c] = *v;
+        }
+    }
+    let mut merged: Vec<(usize, [f64; 2])> =
+        points.iter().copied().zip(values.iter().copied()).chain(extra.iter().copied().zip(ext)).collect();
+    merged.sort_by_key(|(p, _)| *p);
+    Ok(merged.into_iter().unzip())
+}
+
+/// "side A (sectors 0..1, 2 faces, 15 points)" from a side map's tagging.
+fn side_name(m: &CharMap) -> &str {
+    let t = m.tagging.as_deref().unwrap_or("");
+    t.find("side ").map_or(t, |k| &t[k..])
+}
+
+/// The rings of several maps drawn as one (the crease's figure).
+fn merged<'a>(rings: impl Iterator<Item = Option<&'a Ring>>) -> Option<Ring> {
+    let mut out = Ring {
+        ring: Vec::new(),
+        inner: Vec::new(),
+        outer_boundary: Vec::new(),
+        inner_boundary: Vec::new(),
+        ring_polys: Vec::new(),
+        inner_polys: Vec::new(),
+    };
+    for r in rings {
+        let r = r?;
+        out.ring.extend(&r.ring);
+        out.inner.extend(&r.inner);
+        out.outer_boundary.extend(&r.outer_boundary);
+        out.inner_boundary.extend(&r.inner_boundary);
+        out.ring_polys.extend(r.ring_polys.iter().cloned());
+        out.inner_polys.extend(r.inner_polys.iter().cloned());
+    }
+    Some(out)
 }
 
 /// The linear map that orients the ring counter-clockwise, puts the image of
@@ -433,13 +783,10 @@ fn collapsed_rays(d: &crate::neighbourhood::Discovered, values: &[[f64; 2]]) -> 
 }
 
 /// The angle (degrees in [0, 360), counter-clockwise) from the image of the
-/// first sharp ray's vertex next to the centre to that of the last sharp
-/// ray's, `values` over the analysis set; None with fewer than two sharp
-/// rays (a dart) or an image at the centre.
-fn ray_angle(d: &crate::neighbourhood::Discovered, values: &[[f64; 2]]) -> Option<f64> {
-    let tagging = d.config.tagging?;
-    let rays = tagging.sharp_rays(d.config.valence());
-    let (first, last) = (*rays.first()?, *rays.last()?);
+/// vertex next to the centre on ray `first` to that on ray `last`, `values`
+/// over the analysis set; None when the rays are one (a dart) or an image is
+/// at the centre.
+fn ray_angle(d: &crate::neighbourhood::Discovered, values: &[[f64; 2]], (first, last): (usize, usize)) -> Option<f64> {
     if first == last {
         return None;
     }

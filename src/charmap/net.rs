@@ -148,6 +148,31 @@ pub fn refine_net<T: Combine<f64> + Clone>(
     refine_net_visiting(scheme, d, level0, analysis_steps, &mut |_, _| Ok(()))
 }
 
+/// [`refine_net`] of the part of the first ring made of the level-0 patch
+/// faces flagged in `first_ring` (one flag per patch face; the faces that do
+/// not touch the centre are ignored): the ring of one side of a crease
+/// vertex, whose eigenvectors are defined on that side's points only. Only
+/// those faces' descendants are tracked (`outer`), so only their vertices
+/// need to be defined; the rest of the net may stay undefined.
+pub fn refine_net_within<T: Combine<f64> + Clone>(
+    scheme: &dyn Scheme,
+    d: &Discovered,
+    level0: Vec<Option<T>>,
+    analysis_steps: usize,
+    first_ring: &[bool],
+) -> Result<Net<T>, Error> {
+    if first_ring.len() != d.patch.num_faces() {
+        return Err(Error::Message(format!(
+            "{} face flags for a patch of {} faces",
+            first_ring.len(),
+            d.patch.num_faces()
+        )));
+    }
+    let first =
+        |k: usize, points: &[Option<T>]| Ok(apply(d.float_stencils(scheme)[k].iter().map(Option::as_ref), points));
+    refine_net_in::<f64, T>(scheme, d, level0, analysis_steps, Some(first_ring), &first, &mut |_, _| Ok(()))
+}
+
 /// [`refine_net`] to `analysis_steps` levels, showing the net after each
 /// whole analysis step 1, 2, ..., `analysis_steps` to `visit` (with the
 /// level): one refinement for a question asked at every level (the Jordan
@@ -166,7 +191,7 @@ pub fn refine_net_visiting<T: Combine<f64> + Clone>(
     // the first analysis step reuses discovery's float stencils
     let first =
         |k: usize, points: &[Option<T>]| Ok(apply(d.float_stencils(scheme)[k].iter().map(Option::as_ref), points));
-    refine_net_in::<f64, T>(scheme, d, level0, analysis_steps, &first, visit)
+    refine_net_in::<f64, T>(scheme, d, level0, analysis_steps, None, &first, visit)
 }
 
 /// [`refine_net`] with weights of type `W` (e.g. outward-rounded intervals
@@ -192,7 +217,7 @@ pub fn refine_net_exactly_as<W: SchemeWeight, T: Combine<W> + Clone>(
         // pruning decide whether that matters
         Ok(apply(stencils.iter().map(|s| s.as_ref().ok()), points))
     };
-    refine_net_in::<W, T>(scheme, d, level0, analysis_steps, &first, &mut |_, _| Ok(()))
+    refine_net_in::<W, T>(scheme, d, level0, analysis_steps, None, &first, &mut |_, _| Ok(()))
 }
 
 type FirstStep<'a, T> = dyn Fn(usize, &[Option<T>]) -> Result<Vec<Option<T>>, Error> + 'a;
@@ -203,12 +228,13 @@ fn refine_net_in<W: SchemeWeight, T: Combine<W> + Clone>(
     d: &Discovered,
     level0: Vec<Option<T>>,
     analysis_steps: usize,
+    first_ring: Option<&[bool]>,
     first: &FirstStep<T>,
     visit: &mut Visit<T>,
 ) -> Result<Net<T>, Error> {
     let mut last = Err(Error::Message("no pruning margin tried".into()));
     for margin in MARGINS {
-        last = refine_with_margin::<W, T>(scheme, d, level0.clone(), analysis_steps, margin, first, visit);
+        last = refine_with_margin::<W, T>(scheme, d, level0.clone(), analysis_steps, margin, first_ring, first, visit);
         // only a point left undetermined by the pruned margin is worth a
         // wider margin; every other failure is final
         if !matches!(last, Err(Error::NotDetermined(_))) {
@@ -218,12 +244,14 @@ fn refine_net_in<W: SchemeWeight, T: Combine<W> + Clone>(
     last
 }
 
+#[allow(clippy::too_many_arguments)]
 fn refine_with_margin<W: SchemeWeight, T: Combine<W> + Clone>(
     scheme: &dyn Scheme,
     d: &Discovered,
     level0: Vec<Option<T>>,
     analysis_steps: usize,
     margin: usize,
+    first_ring: Option<&[bool]>,
     first: &FirstStep<T>,
     visit: &mut Visit<T>,
 ) -> Result<Net<T>, Error> {
@@ -232,8 +260,14 @@ fn refine_with_margin<W: SchemeWeight, T: Combine<W> + Clone>(
     }
     let steps = scheme.topology().steps_per_analysis();
     let centre0: HashSet<usize> = centre_set(d).into_iter().collect();
+    let mut outer = faces_touching(&d.patch, &centre0);
+    if let Some(only) = first_ring {
+        for (o, keep) in outer.iter_mut().zip(only) {
+            *o &= *keep;
+        }
+    }
     let mut net = Net {
-        outer: faces_touching(&d.patch, &centre0),
+        outer,
         inner: vec![false; d.patch.num_faces()],
         inner2: vec![false; d.patch.num_faces()],
         mesh: d.patch.clone(),

@@ -9,6 +9,9 @@ use crate::spectrum::{Method, Spectrum};
 
 /// Relative size below which the second real direction counts as dependent.
 const INDEPENDENCE_TOL: f64 = 1e-8;
+/// Relative size (of the Euclidean norms) below which a real direction is
+/// rounding noise, not part of the pair.
+const NEGLIGIBLE_PART: f64 = 1e-6;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case")]
@@ -51,7 +54,7 @@ pub struct Pair {
 
 impl Pair {
     /// No pair (yet), with the reason.
-    fn missing(why: &str) -> Pair {
+    pub(crate) fn missing(why: &str) -> Pair {
         Pair {
             status: SpectralStatus::Missing,
             explanation: why.to_string(),
@@ -188,7 +191,12 @@ fn real_pair(vectors: &[Vec<c64>]) -> Option<Vec<[f64; 2]>> {
 fn independent(a: &[f64], b: &[f64]) -> bool {
     let dot = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(p, q)| p * q).sum::<f64>();
     let (aa, bb, ab) = (dot(a, a), dot(b, b), dot(a, b));
-    aa > 0.0 && bb > 0.0 && (aa * bb - ab * ab) > INDEPENDENCE_TOL * aa * bb
+    // a part NEGLIGIBLE_PART times the other's size is rounding (the
+    // imaginary part a dense solver leaves on a real eigenvector), not a
+    // direction: its angle to the other is noise, so the test below alone
+    // would take it and the map would be flat
+    let comparable = aa > NEGLIGIBLE_PART * NEGLIGIBLE_PART * bb && bb > NEGLIGIBLE_PART * NEGLIGIBLE_PART * aa;
+    aa > 0.0 && bb > 0.0 && comparable && (aa * bb - ab * ab) > INDEPENDENCE_TOL * aa * bb
 }
 
 /// The characteristic map's pair at a tagged vertex (the spectrum's
@@ -197,22 +205,24 @@ fn independent(a: &[f64], b: &[f64]) -> bool {
 /// criterion allows two different subdominant eigenvalues: the map is then
 /// scaled by λ1 in one direction and λ2 in the other). `lambda` is λ1.
 pub fn sector_pair(spec: &Spectrum) -> Pair {
+    sector_pair_under(spec, &spec.verdict)
+}
+
+/// [`sector_pair`] of `spec`'s eigenvectors, the spectral part decided by
+/// `verdict`: at a crease vertex whose sides decouple, `spec.verdict` is the
+/// per-side one, and S whole's map is built only where S whole's own
+/// verdict (`crease.whole`) passes.
+pub fn sector_pair_under(spec: &Spectrum, verdict: &crate::spectrum::Verdict) -> Pair {
     let Some(l1) = spec.eigenvalues.get(1) else {
         return Pair::missing("the spectrum has no subdominant eigenvalue");
     };
     let mut pair = Pair::missing("");
     pair.lambda = l1.re;
-    if !spec.verdict.c1_spectral {
+    if !verdict.c1_spectral {
         pair.status = SpectralStatus::NotDominant;
         pair.explanation = format!(
             "the spectral part of the sector criterion fails ({}), so there is no characteristic map",
-            spec.verdict
-                .reasons
-                .iter()
-                .filter(|r| !r.starts_with("not decided"))
-                .cloned()
-                .collect::<Vec<_>>()
-                .join("; ")
+            verdict.reasons.iter().filter(|r| !r.starts_with("not decided")).cloned().collect::<Vec<_>>().join("; ")
         );
         return pair;
     }

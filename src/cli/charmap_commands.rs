@@ -278,6 +278,9 @@ fn certificate_table(c: &crate::certify::CharMapCertificate) -> String {
 }
 
 fn table(m: &CharMap) -> String {
+    if let Some(c) = m.crease.as_ref().filter(|c| !c.sides.is_empty()) {
+        return crease_table(m, c);
+    }
     let mut out = format!(
         "scheme {}  {} {}  λ1 = {}  blocks {}\nlevels {} ({} refinements)  resolution {}\n\n",
         m.scheme,
@@ -307,6 +310,64 @@ fn table(m: &CharMap) -> String {
     if let (Some(r), Some(at)) = (m.min_jacobian_ratio, m.min_jacobian_at) {
         out += &format!("min/max Jacobian {r:.6} at ({:.4}, {:.4})\n", at[0], at[1]);
     }
+    out += "\n";
+    for r in &m.reasons {
+        out += &format!("  - {r}\n");
+    }
+    out
+}
+
+/// The crease's maps as text: the crease's verdict (both sides), each
+/// side's map, S whole's on a line of its own, then the reasons.
+fn crease_table(m: &CharMap, c: &crate::charmap::CreaseMaps) -> String {
+    let yes = |b: bool| if b { "yes" } else { "NO" };
+    let mut out = format!(
+        "scheme {}  {} vertex, valence {}: each side's own characteristic map\nlevels {} ({} refinements)  resolution {}\n\n",
+        m.scheme,
+        m.tagging.as_deref().unwrap_or("crease"),
+        m.valence,
+        m.levels,
+        m.refinements,
+        m.resolution
+    );
+    out += &format!(
+        "crease (both sides): regular {}, injective {}  [floating point: the Jacobian's sign on every facet, \
+         injectivity on the raster at resolution {}]\n",
+        yes(m.regular),
+        yes(m.injective),
+        m.resolution
+    );
+    for side in &c.sides {
+        let name = side.tagging.as_deref().and_then(|t| t.find("side ").map(|k| &t[k..])).unwrap_or("side");
+        out += &format!("  {name}: {}\n", side.explanation);
+        if side.ring.is_none() {
+            out += "    no map\n";
+            continue;
+        }
+        out += &format!("    regular {}  injective {}", yes(side.regular), yes(side.injective));
+        if let Some(a) = side.ray_angle_degrees {
+            out += &format!("  sharp rays' images at {a:.4}°");
+        }
+        if let (Some(o), Some(k), Some(p)) = (side.overlap_pixels, side.copy_overlap_pixels, side.ring_pixels) {
+            out += &format!("  overlap pixels {o} (ring {p}; shared with the scaled copy {k})");
+        }
+        if let Some(r) = side.min_jacobian_ratio {
+            out += &format!("  min/max Jacobian {r:.6}");
+        }
+        out += "\n";
+    }
+    out += &match (&c.whole, &c.whole_missing) {
+        (Some(w), _) => format!(
+            "  S whole (both sides at once; not the crease's criterion): regular {}, injective {} ({})\n",
+            yes(w.regular),
+            yes(w.injective),
+            w.explanation
+        ),
+        (None, why) => format!(
+            "  S whole (both sides at once; not the crease's criterion): no map: {}\n",
+            why.as_deref().unwrap_or("-")
+        ),
+    };
     out += "\n";
     for r in &m.reasons {
         out += &format!("  - {r}\n");

@@ -261,9 +261,11 @@ pub fn crease_verdict(
             name: sides.name(s),
             faces: sides.faces(s),
             size: set.len(),
-            eigenvalues: solved.spectrum.eigenvalues,
-            verdict: solved.spectrum.verdict,
-            exact_analysis: solved.spectrum.exact_analysis,
+            eigenvalues: solved.spectrum.eigenvalues.clone(),
+            verdict: solved.spectrum.verdict.clone(),
+            exact_analysis: solved.spectrum.exact_analysis.clone(),
+            points: set.clone(),
+            spectrum: Box::new(solved.spectrum),
         });
     }
     Ok(Some(CreaseVerdict {

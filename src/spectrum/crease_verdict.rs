@@ -7,6 +7,7 @@ use serde::Serialize;
 
 use super::eigenvalue::Eigenvalue;
 use super::exact::ExactSummary;
+use super::spectrum_result::Spectrum;
 use super::verdict::Verdict;
 
 /// One side's spectrum and verdict (the sector criterion on its own matrix).
@@ -20,6 +21,13 @@ pub struct SideSpectrum {
     pub eigenvalues: Vec<Eigenvalue>,
     pub verdict: Verdict,
     pub exact_analysis: Option<ExactSummary>,
+    /// its points: indices of S (ascending), the principal submatrix's rows
+    #[serde(skip)]
+    pub points: Vec<usize>,
+    /// the side's whole spectrum with its eigenvectors over `points` (the
+    /// per-side characteristic map is built from them, `charmap`)
+    #[serde(skip)]
+    pub spectrum: Box<Spectrum>,
 }
 
 /// The crease's verdict per side, beside S whole's.

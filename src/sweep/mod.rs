@@ -367,6 +367,19 @@ pub fn point(grid: &Grid, n: usize, value: Option<&str>) -> Point {
 /// Why a characteristic map failed, in one line: no map at all (its
 /// explanation), or which of regularity and injectivity failed.
 fn map_failure(m: &crate::charmap::CharMap) -> String {
+    // a crease vertex: each side's own map, the failing ones named
+    if let Some(c) = m.crease.as_ref().filter(|c| !c.sides.is_empty()) {
+        return c
+            .sides
+            .iter()
+            .filter(|side| !(side.regular && side.injective))
+            .map(|side| {
+                let t = side.tagging.as_deref().unwrap_or("");
+                format!("{}: {}", t.find("side ").map_or(t, |k| &t[k..]), map_failure(side))
+            })
+            .collect::<Vec<_>>()
+            .join("; ");
+    }
     match (m.ring.is_some(), m.regular, m.injective) {
         (false, _, _) => m.explanation.clone(),
         (true, false, false) => "neither regular nor injective".into(),
