@@ -682,6 +682,28 @@ struct Window {
     window: Vec<(usize, [i64; 2])>,
 }
 
+/// A window's vertices with their lattice positions: at most 16, so a
+/// vector searched in order (the windows are built by the thousand, and a
+/// hash map per window cost more than the search).
+struct LatticeLayout(Vec<(usize, (i32, i32))>);
+
+impl LatticeLayout {
+    fn get(&self, v: usize) -> Option<(i32, i32)> {
+        self.0.iter().find(|&&(w, _)| w == v).map(|&(_, c)| c)
+    }
+    /// The position of a vertex laid out already.
+    fn at(&self, v: usize) -> (i32, i32) {
+        self.get(v).expect("a laid-out window vertex")
+    }
+    /// The position of `v`, given `c` if it has none yet.
+    fn get_or_insert(&mut self, v: usize, c: (i32, i32)) -> (i32, i32) {
+        self.get(v).unwrap_or_else(|| {
+            self.0.push((v, c));
+            c
+        })
+    }
+}
+
 impl Window {
     fn around(net: &Net<Point>, vf: &[Vec<usize>], f: usize, non_box: bool) -> Result<Window, String> {
         let mesh = &net.mesh;
@@ -712,19 +734,22 @@ impl Window {
         // the next edge of a face turns by 90° (quads) or 120° (triangles,
         // in lattice coordinates whose third direction is (−1, 1))
         let turn = |(x, y): (i32, i32)| if m == 4 { (-y, x) } else { (-x - y, x) };
-        let mut coords: HashMap<usize, (i32, i32)> = face.iter().copied().zip(corners.iter().copied()).collect();
-        let mut placed: HashSet<usize> = HashSet::from([f]);
+        let mut coords = LatticeLayout(face.iter().copied().zip(corners.iter().copied()).collect());
+        // which of the one-ring's faces are laid out (`faces` is sorted)
+        let mut placed: Vec<bool> = faces.iter().map(|&g| g == f).collect();
         let conflict = || "a ring face's one-ring of faces does not lie on one lattice".to_string();
-        while placed.len() < faces.len() {
+        while placed.iter().any(|&p| !p) {
             let mut progress = false;
-            let pending: Vec<usize> = faces.iter().copied().filter(|g| !placed.contains(g)).collect();
-            for g in pending {
+            for (slot, &g) in faces.iter().enumerate() {
+                if placed[slot] {
+                    continue;
+                }
                 let gf = mesh.face(g);
-                let Some(k) = (0..m).find(|&k| coords.contains_key(&gf[k]) && coords.contains_key(&gf[(k + 1) % m]))
+                let Some(k) = (0..m).find(|&k| coords.get(gf[k]).is_some() && coords.get(gf[(k + 1) % m]).is_some())
                 else {
                     continue;
                 };
-                let (a, b) = (coords[&gf[k]], coords[&gf[(k + 1) % m]]);
+                let (a, b) = (coords.at(gf[k]), coords.at(gf[(k + 1) % m]));
                 let e = (b.0 - a.0, b.1 - a.1);
                 let t = turn(e);
                 let mut next = vec![(gf[(k + 2) % m], (b.0 + t.0, b.1 + t.1))];
@@ -732,19 +757,21 @@ impl Window {
                     next.push((gf[(k + 3) % m], (a.0 + t.0, a.1 + t.1)));
                 }
                 for (v, c) in next {
-                    if *coords.entry(v).or_insert(c) != c {
+                    if coords.get_or_insert(v, c) != c {
                         return Err(conflict());
                     }
                 }
-                placed.insert(g);
+                placed[slot] = true;
                 progress = true;
             }
             if !progress {
                 return Err(conflict());
             }
         }
-        let distinct: HashSet<(i32, i32)> = coords.values().copied().collect();
-        if distinct.len() != coords.len() || coords.len() != if m == 4 { 16 } else { 12 } {
+        let mut distinct: Vec<(i32, i32)> = coords.0.iter().map(|&(_, c)| c).collect();
+        distinct.sort_unstable();
+        distinct.dedup();
+        if distinct.len() != coords.0.len() || coords.0.len() != if m == 4 { 16 } else { 12 } {
             return Err(conflict());
         }
         let p = |v: usize| net.points[v].ok_or_else(|| "a window point is not determined".to_string());
@@ -757,7 +784,7 @@ impl Window {
             let gf = mesh.face(g);
             for k in 0..m {
                 let (a, b) = (gf[k], gf[(k + 1) % m]);
-                let (ca, cb) = (coords[&a], coords[&b]);
+                let (ca, cb) = (coords.at(a), coords.at(b));
                 let diff = |from: Point, to: Point| [to[0] - from[0], to[1] - from[1]];
                 match (cb.0 - ca.0, cb.1 - ca.1) {
                     (1, 0) => {
@@ -782,7 +809,7 @@ impl Window {
         }
         // in vertex order: the half-plane direction sums these points'
         // midpoints, and a hash order would change its last bits run to run
-        let mut ids: Vec<usize> = coords.keys().copied().collect();
+        let mut ids: Vec<usize> = coords.0.iter().map(|&(v, _)| v).collect();
         ids.sort_unstable();
         let points = ids.iter().map(|&v| p(v)).collect::<Result<Vec<_>, String>>()?;
         Ok(Window { face: f, faces, along_u, along_v, points, u_pairs, v_pairs, ..Window::default() })
@@ -803,22 +830,17 @@ impl Window {
     /// likewise. The hull: B_V's open support (−1, 1)² about the V-vertex and
     /// B_F's octagon {|·|∞ < 3/2, |·|₁ < 2} about the FCV meet the face for
     /// its 4 corners and the 9 FCVs only.
-    fn non_box(
-        net: &Net<Point>,
-        f: usize,
-        faces: Vec<usize>,
-        coords: &HashMap<usize, (i32, i32)>,
-    ) -> Result<Window, String> {
+    fn non_box(net: &Net<Point>, f: usize, faces: Vec<usize>, coords: &LatticeLayout) -> Result<Window, String> {
         let mesh = &net.mesh;
         // half units: V-vertices at even, FCVs at odd coordinates
         let mut layout: Vec<(usize, [i64; 2])> =
-            coords.iter().map(|(&v, &(x, y))| (v, [2 * x as i64, 2 * y as i64])).collect();
+            coords.0.iter().map(|&(v, (x, y))| (v, [2 * x as i64, 2 * y as i64])).collect();
         for &g in &faces {
             let fp = mesh.face_point(g).ok_or("a face of a ring face's one-ring has no face control vertex")?;
             let sum = mesh
                 .face(g)
                 .iter()
-                .fold([0i64; 2], |s, v| [s[0] + 2 * coords[v].0 as i64, s[1] + 2 * coords[v].1 as i64]);
+                .fold([0i64; 2], |s, &v| [s[0] + 2 * coords.at(v).0 as i64, s[1] + 2 * coords.at(v).1 as i64]);
             layout.push((fp, [sum[0] / 4, sum[1] / 4]));
         }
         layout.sort_unstable();
