@@ -357,6 +357,7 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
     // (C¹) or |u| = 1 (convergence) — `modulus`; only where the block
     // polynomials are real (else the sweep is not exact anyway)
     let mut moduli_followed = not_exact.is_empty();
+    let mut moduli_not_followed_because: Option<String> = None;
     if moduli_followed {
         let one_minus_x: BiPoly = vec![TPoly::int(-1), TPoly::int(1)];
         let targets: Vec<&BiPoly> = lambda_polys.iter().chain(std::iter::once(&one_minus_x)).collect();
@@ -374,7 +375,9 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
                     }
                     Ok(modulus::Crossings::Nothing) => {}
                     Err(why) => {
-                        not_exact.push(format!("moduli of complex pairs are not followed: {why}"));
+                        // matters only where a piece has a non-real
+                        // eigenvalue (below): all-real sets stay exact
+                        moduli_not_followed_because = Some(why);
                         moduli_followed = false;
                         break 'family;
                     }
@@ -434,9 +437,12 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
             // complex pairs; the curvature classes' |μ| = λ1² for a
             // non-real μ is not followed
             let what = if moduli_followed {
-                "|μ| = λ1² for non-real μ (curvature classes) is not followed"
+                "|μ| = λ1² for non-real μ (curvature classes) is not followed".to_string()
             } else {
-                "moduli of complex pairs are not followed"
+                match &moduli_not_followed_because {
+                    Some(why) => format!("moduli of complex pairs are not followed ({why})"),
+                    None => "moduli of complex pairs are not followed".to_string(),
+                }
             };
             let why = format!(
                 "a non-real eigenvalue at {} = {t}: {what}, so the pieces' ends are not proved exact",
