@@ -433,3 +433,67 @@ fn loop_free_vertex_weight_curvature_classes_match_the_hand_derived_sets() {
     assert!(text.contains("curvature zero: (31/64, 49/64)"), "{text}");
     assert!(text.contains("curvature bounded: [31/64, 31/64]"), "{text}");
 }
+
+/// p(x) for p over Q (lowest first), exactly.
+fn eval_q(p: &P, x: &BigRational) -> BigRational {
+    p.iter().rev().fold(BigRational::zero(), |acc, c| acc * x + c)
+}
+
+/// Lin–Luo's unified √3 scheme at n = 3 (issue 27): a complex pair of
+/// block 0 has its modulus overtake λ1 = 1/9 below α = 0.8, which the
+/// candidates of real roots meeting did not see. With the modulus family
+/// the candidate set is complete: the output says exact. Every end is a
+/// rational or the one root of its polynomial in its isolating interval
+/// (the polynomial changes sign there, evaluated exactly here), and the
+/// float spectrum agrees 1e-6 inside and outside each interior end. The
+/// spectrum at α = 0.8 (not C¹ in floating point: |λ3| > 1/9 there) lies
+/// outside the set.
+#[test]
+fn unified_sqrt3_alpha_sets_are_exact_at_valence_3() {
+    let v = json(&["sweep", "unified-sqrt3", "--valences", "3..3", "--param", "alpha=0:2:1/10", "--exact", "--json"]);
+    let c1 = intervals(&v, 3, "c1_spectral");
+    let conv = intervals(&v, 3, "convergent");
+    assert!(!c1.is_empty());
+    let (window_lo, window_hi) = (0.0, 2.0);
+    for (key, set) in [("c1_spectral", c1), ("convergent", conv)] {
+        for iv in set {
+            assert_eq!(iv["endpoints_exact"], true, "{iv}");
+            for (end, inside_sign) in [("from", 1.0), ("to", -1.0)] {
+                let e = &iv[end];
+                let x = e["decimal"].as_f64().unwrap();
+                if let Some(r) = e["polynomial"].as_array() {
+                    let p: P = r.iter().map(|c| rat(c.as_str().unwrap())).collect();
+                    let iv2 = e["isolating_interval"].as_array().unwrap();
+                    let (a, b) = (rat(iv2[0].as_str().unwrap()), rat(iv2[1].as_str().unwrap()));
+                    let (fa, fb) = (eval_q(&p, &a), eval_q(&p, &b));
+                    assert!(fa.clone() * fb < BigRational::zero(), "{key} {end}: no sign change in ({a}, {b})");
+                    let (af, bf) = (num_traits::ToPrimitive::to_f64(&a).unwrap(), num_traits::ToPrimitive::to_f64(&b).unwrap());
+                    assert!(af <= x && x <= bf, "{key} {end}: {x} outside ({af}, {bf})");
+                } else {
+                    assert_eq!(num_traits::ToPrimitive::to_f64(&rat(e["rational"].as_str().unwrap())).unwrap(), x);
+                }
+                if x <= window_lo || x >= window_hi {
+                    continue;
+                }
+                let pick = |value: f64| {
+                    let (c1, conv) = verdict("unified-sqrt3", "alpha", 3, value);
+                    if key == "c1_spectral" {
+                        c1
+                    } else {
+                        conv
+                    }
+                };
+                assert!(pick(x + inside_sign * 1e-6), "{key}: the float verdict fails just inside {x}");
+                assert!(!pick(x - inside_sign * 1e-6), "{key}: the float verdict holds just outside {x}");
+            }
+        }
+    }
+    assert!(!verdict("unified-sqrt3", "alpha", 3, 0.8).0, "float C¹ at 0.8");
+    assert!(
+        c1.iter().all(|iv| iv["to"]["decimal"].as_f64().unwrap() < 0.8 || iv["from"]["decimal"].as_f64().unwrap() > 0.8),
+        "0.8 inside the C¹ set"
+    );
+    let out = subdlab(&["sweep", "unified-sqrt3", "--valences", "3..3", "--param", "alpha=0:2:1/10", "--exact"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(!text.contains("NOT PROVED"), "{text}");
+}

@@ -18,11 +18,11 @@ use num_integer::Integer;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// a·b mod p (p < 2^63).
-fn mul_mod(a: u64, b: u64, p: u64) -> u64 {
+pub(crate) fn mul_mod(a: u64, b: u64, p: u64) -> u64 {
     ((a as u128 * b as u128) % p as u128) as u64
 }
 
-fn pow_mod(mut a: u64, mut e: u64, p: u64) -> u64 {
+pub(crate) fn pow_mod(mut a: u64, mut e: u64, p: u64) -> u64 {
     let mut r = 1u64;
     a %= p;
     while e > 0 {
@@ -37,7 +37,7 @@ fn pow_mod(mut a: u64, mut e: u64, p: u64) -> u64 {
 
 /// Deterministic Miller–Rabin for 64-bit integers (these twelve bases
 /// decide every n < 2^64).
-fn is_prime(n: u64) -> bool {
+pub(crate) fn is_prime(n: u64) -> bool {
     if n < 2 {
         return false;
     }

@@ -34,6 +34,7 @@
 //! intervals are not proved exact.
 
 pub mod curvature;
+pub(crate) mod modulus;
 
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use serde::Serialize;
@@ -316,10 +317,10 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
             pairs.push((pa.clone(), negated(pb), Family::Opposite));
         }
     }
+    // λ1 lives in blocks 1 and g − 1 (Reif's condition as `spectrum` tests
+    // it); without rotations (one block) it is in block 0
+    let lambda_polys: Vec<BiPoly> = if blocks.len() >= 3 { vec![charpoly(&blocks[1])] } else { polys.clone() };
     if s.curvature {
-        // λ1 lives in blocks 1 and g − 1 (Reif's condition as `spectrum`
-        // tests it); without rotations (one block) it is in block 0
-        let lambda_polys: Vec<BiPoly> = if blocks.len() >= 3 { vec![charpoly(&blocks[1])] } else { polys.clone() };
         for (a, b) in curvature::square_pairs(&polys, &lambda_polys) {
             pairs.push((a, b, Family::Square));
         }
@@ -350,6 +351,38 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
         trace(|| format!("n = {n}: norm of degree {}", r.degree()));
         for root in sturm::isolate(&r, &s.lo, &s.hi) {
             cands.push((root, *family));
+        }
+    }
+    // the modulus family: where a non-real root u of a block has |u| = λ1
+    // (C¹) or |u| = 1 (convergence) — `modulus`; only where the block
+    // polynomials are real (else the sweep is not exact anyway)
+    let mut moduli_followed = not_exact.is_empty();
+    let mut moduli_not_followed_because: Option<String> = None;
+    if moduli_followed {
+        let one_minus_x: BiPoly = vec![TPoly::int(-1), TPoly::int(1)];
+        let targets: Vec<&BiPoly> = lambda_polys.iter().chain(std::iter::once(&one_minus_x)).collect();
+        'family: for p in &polys {
+            for target in &targets {
+                match modulus::crossings(p, target) {
+                    Ok(modulus::Crossings::Resultant(r)) => {
+                        trace(|| format!("n = {n}: modulus pair ({}, {}): resultant of degree {}", p.len() - 1, target.len() - 1, r.degree()));
+                        if r.degree() == 0 {
+                            continue;
+                        }
+                        for root in sturm::isolate(&r, &s.lo, &s.hi) {
+                            cands.push((root, Family::Modulus));
+                        }
+                    }
+                    Ok(modulus::Crossings::Nothing) => {}
+                    Err(why) => {
+                        // matters only where a piece has a non-real
+                        // eigenvalue (below): all-real sets stay exact
+                        moduli_not_followed_because = Some(why);
+                        moduli_followed = false;
+                        break 'family;
+                    }
+                }
+            }
         }
     }
     trace(|| format!("n = {n}: {} candidates before merging", cands.len()));
@@ -399,10 +432,20 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
         let mut d = decide(s, n, t)?;
         d.kind = "piece";
         d.all_real = Some(all_real(&polys, t));
-        if d.all_real == Some(false) {
+        if d.all_real == Some(false) && (!moduli_followed || s.curvature) {
+            // with the modulus family the first-order candidates cover
+            // complex pairs; the curvature classes' |μ| = λ1² for a
+            // non-real μ is not followed
+            let what = if moduli_followed {
+                "|μ| = λ1² for non-real μ (curvature classes) is not followed".to_string()
+            } else {
+                match &moduli_not_followed_because {
+                    Some(why) => format!("moduli of complex pairs are not followed ({why})"),
+                    None => "moduli of complex pairs are not followed".to_string(),
+                }
+            };
             let why = format!(
-                "a non-real eigenvalue at {} = {t}: moduli of complex pairs are not followed, so the pieces' ends are \
-                 not proved exact",
+                "a non-real eigenvalue at {} = {t}: {what}, so the pieces' ends are not proved exact",
                 s.param
             );
             if !not_exact.contains(&why) {
@@ -581,6 +624,9 @@ enum Family {
     Opposite,
     /// |x| = y² for a root x of a block and a root y of λ1's block
     Square,
+    /// |u| = λ1 or |u| = 1 for a non-real root u (a complex pair's modulus
+    /// crosses; `modulus`)
+    Modulus,
 }
 
 /// The weakest evidence of several: floating point < certified < exact.

@@ -1,0 +1,617 @@
+//! The modulus family of the exact sweep: the values of t where a non-real
+//! eigenvalue's modulus equals a real root of a target polynomial (λ1's
+//! block polynomial, or x − 1 for convergence).
+//!
+//! Why these and how (ARCHITECTURE.md, "The exact sweep", step 3b):
+//!
+//! - A block polynomial P(x, t) with real coefficients has its non-real
+//!   roots in conjugate pairs u, ū, and |u|² = u·ū is a product of two
+//!   roots of P with distinct indices. So every |u|² is a root of
+//!   E(s) = ∏_{i<j} (s − x_i x_j), the characteristic polynomial of the
+//!   exterior square Λ²(B) of the block (degree D = d(d − 1)/2).
+//! - |u| = r for a real root r of the target T means s = r² is also a root
+//!   of G(s) = ∏_k (s − y_k²), T's root-squared polynomial (Graeffe; the
+//!   y_k are T's roots). E and G have a common root, so their resultant
+//!   Res_s(E, G)(t) vanishes. Its real roots in t contain every such
+//!   crossing, plus spurious ones (products of two real roots, squares of
+//!   other roots of T): candidates are only candidates, each piece is
+//!   still decided at an interior point.
+//!
+//! Computation, exact, by small primes (no subresultant over Q(ζ)[t] of a
+//! 45 × 9 pair, which evaluation over Q would take minutes for):
+//!
+//! 1. The coefficients of P and T as polynomials in t over Q (the sweep's
+//!    block polynomials of real coefficients; at n = 3, 4, 6 they are
+//!    rational, Q(ζ_n) ∩ R = Q); roots constant in t at 0, 1, −1 divided
+//!    out (a constant real root is never one of a non-real pair).
+//! 2. A common scale L (lcm of the denominators): P̃(y) = L^d P(y/L) has
+//!    integer coefficients in t and roots L·x, so E and G of the scaled
+//!    polynomials are E(L²s)·L^{2D}-type rescalings with the same crossings.
+//! 3. Res_s(E, G) is isobaric of weight D·deg G in the coefficients (the
+//!    coefficient of s^{D−k} weighs k); the coefficient of x^{d−k} of P has
+//!    degree ≤ e·k in t (e the larger slope max_k deg_t(c_k)/k of P and T),
+//!    so E's and G's weigh 2e per unit and deg_t Res ≤ 2e·D·deg G =: B.
+//! 4. On |t| = 1 every coefficient of P̃ is at most its integer 1-norm m_k,
+//!    every root at most ρ = 2 max_k ⌈m_k^{1/k}⌉ (Fujiwara), E's
+//!    coefficient of s^{D−k} at most C(D, k) ρ^{2k}: each Sylvester row has
+//!    1-norm at most (1 + ρ²)^D (E's) or (1 + ρ_T²)^{deg G} (G's), and by
+//!    Hadamard |Res(t)| ≤ ((1 + ρ²)(1 + ρ_T²))^{D·deg G} =: M there. Each
+//!    coefficient of Res is a Cauchy integral over |t| = 1, so at most M.
+//! 5. Modulo primes p < 2^31 (p > B): at t = 0, 1, ..., B, E by Newton's
+//!    identities (power sums of P, q_k = (p_k² − p_{2k})/2 the power sums of
+//!    the products, back to coefficients), G by root squaring, Res = det of
+//!    multiplication by E on F_p[s]/(G) (G monic); the values interpolated;
+//!    the images combined by the Chinese remainder theorem until the product
+//!    of the primes exceeds 2M, then the symmetric lift is Res exactly.
+
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+
+use super::BiPoly;
+use crate::numeric::exact::Poly;
+use crate::numeric::modular::{is_prime, pow_mod};
+use crate::numeric::{Rational, TPoly};
+
+/// A polynomial in t over Q, lowest first.
+type QT = Vec<Rational>;
+/// A polynomial in t over Z, lowest first.
+type ZT = Vec<BigInt>;
+
+/// The coefficients of p (of x^0, x^1, ...) as polynomials in t over Q, or
+/// None when one is not rational.
+fn rational_coefficients(p: &BiPoly) -> Option<Vec<QT>> {
+    p.iter()
+        .map(|c: &TPoly| {
+            if !c.is_defined() {
+                return None;
+            }
+            c.coeffs().iter().map(|x| x.to_rational()).collect::<Option<QT>>()
+        })
+        .collect()
+}
+
+fn qt_is_zero(a: &QT) -> bool {
+    a.iter().all(Zero::is_zero)
+}
+
+fn qt_add_scaled(a: &QT, b: &QT, c: &Rational) -> QT {
+    let mut out = vec![<Rational as Zero>::zero(); a.len().max(b.len())];
+    for (k, x) in a.iter().enumerate() {
+        out[k] += x;
+    }
+    for (k, x) in b.iter().enumerate() {
+        out[k] += x * c;
+    }
+    out
+}
+
+/// Divide out roots of p constant in t at 0, 1 and −1 (as often as they
+/// divide): real for every t, they are never one of a non-real pair.
+fn without_constant_roots(mut p: Vec<QT>) -> Vec<QT> {
+    for c in [0i64, 1, -1] {
+        let c = Rational::from_integer(c.into());
+        loop {
+            if p.len() <= 1 {
+                break;
+            }
+            // p(c, t) as a polynomial in t
+            let value = p.iter().rev().fold(QT::new(), |acc, a| qt_add_scaled(a, &acc, &c));
+            if !qt_is_zero(&value) {
+                break;
+            }
+            // synthetic division by (x − c): q_{k−1} = a_k + c q_k
+            let d = p.len() - 1;
+            let mut q = vec![QT::new(); d];
+            q[d - 1] = p[d].clone();
+            for k in (1..d).rev() {
+                q[k - 1] = qt_add_scaled(&p[k], &q[k], &c);
+            }
+            p = q;
+        }
+    }
+    p
+}
+
+fn qt_mul(a: &QT, b: &QT) -> QT {
+    if a.is_empty() || b.is_empty() {
+        return QT::new();
+    }
+    let mut out = vec![<Rational as Zero>::zero(); a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] += x * y;
+        }
+    }
+    out
+}
+
+/// p divided by the monic h in Q[t][x], when h divides p exactly.
+fn divide_exactly(p: &[QT], h: &[QT]) -> Option<Vec<QT>> {
+    let (dp, dh) = (p.len() - 1, h.len() - 1);
+    if dh > dp {
+        return None;
+    }
+    let mut r: Vec<QT> = p.to_vec();
+    let mut q = vec![QT::new(); dp - dh + 1];
+    let minus_one = -<Rational as One>::one();
+    for k in (0..=dp - dh).rev() {
+        let c = r[k + dh].clone();
+        for (i, hc) in h.iter().enumerate() {
+            r[k + i] = qt_add_scaled(&r[k + i], &qt_mul(&c, hc), &minus_one);
+        }
+        q[k] = c;
+    }
+    r.iter().all(qt_is_zero).then_some(q)
+}
+
+/// The polynomial of degree < len through (x_i, y_i) over Q.
+fn interpolate_q(x: &[Rational], y: &[Rational]) -> QT {
+    let n = x.len();
+    let mut dd = y.to_vec();
+    for level in 1..n {
+        for i in (level..n).rev() {
+            dd[i] = (&dd[i] - &dd[i - 1]) / (&x[i] - &x[i - level]);
+        }
+    }
+    let mut out: QT = vec![dd[n - 1].clone()];
+    for i in (0..n - 1).rev() {
+        let mut next = vec![<Rational as Zero>::zero(); out.len() + 1];
+        for (k, c) in out.iter().enumerate() {
+            next[k + 1] += c;
+            next[k] -= c * &x[i];
+        }
+        next[0] += &dd[i];
+        out = next;
+    }
+    out
+}
+
+/// Divide out a repeated factor of p: a root branch of multiplicity two
+/// for every t (unified-sqrt3 has one in every block) makes x_i x_i a root
+/// of E for all t and x_i² one of G, so Res(E, G) vanishes identically.
+/// H = gcd_x(p, ∂p/∂x) is found at integer points t (where its degree is
+/// least, it is H(t): monic, coefficients of degree ≤ e·j in t) and
+/// interpolated; it is used only when H² divides p exactly — then p/H has
+/// every root of p, so no non-real pair is lost. Otherwise p is kept.
+fn without_repeated_factor(p: Vec<QT>) -> Vec<QT> {
+    let d = p.len() - 1;
+    let e = slope(&p);
+    let at = |t: i64| -> Poly {
+        let t = Rational::from_integer(t.into());
+        let coeffs: Vec<Rational> =
+            p.iter().map(|c| c.iter().rev().fold(<Rational as Zero>::zero(), |acc, x| acc * &t + x)).collect();
+        Poly { coeffs }
+    };
+    let mut best: Option<(usize, Vec<(Rational, Poly)>)> = None;
+    for t in 0..(2 * d as i64 + 40) {
+        let f = at(t);
+        let g = f.gcd(&f.derivative());
+        let k = g.degree();
+        if k == 0 {
+            return p;
+        }
+        let need = (e.clone() * Rational::from_integer((k as i64).into())).floor().to_integer().to_usize().unwrap_or(0) + 1;
+        match &mut best {
+            Some((bk, pts)) if *bk == k => pts.push((Rational::from_integer(t.into()), g)),
+            Some((bk, _)) if *bk < k => {}
+            _ => best = Some((k, vec![(Rational::from_integer(t.into()), g)])),
+        }
+        if let Some((bk, pts)) = &best {
+            if pts.len() >= need && *bk == k {
+                let xs: Vec<Rational> = pts.iter().map(|(x, _)| x.clone()).collect();
+                let h: Vec<QT> = (0..=*bk)
+                    .map(|j| {
+                        let ys: Vec<Rational> = pts
+                            .iter()
+                            .map(|(_, g)| g.coeffs.get(j).cloned().unwrap_or_else(<Rational as Zero>::zero))
+                            .collect();
+                        interpolate_q(&xs, &ys)
+                    })
+                    .collect();
+                return match divide_exactly(&p, &h).and_then(|q| divide_exactly(&q, &h).map(|_| q)) {
+                    Some(q) => q,
+                    None => p,
+                };
+            }
+        }
+    }
+    p
+}
+
+/// max over k ≥ 1 of deg_t(c_k)/k, c_k the coefficient of x^{d−k}.
+fn slope(p: &[QT]) -> Rational {
+    let d = p.len() - 1;
+    let mut e = <Rational as Zero>::zero();
+    for k in 1..=d {
+        let deg = p[d - k].iter().rposition(|c| !c.is_zero()).unwrap_or(0);
+        let w = Rational::new((deg as i64).into(), (k as i64).into());
+        if w > e {
+            e = w;
+        }
+    }
+    e
+}
+
+/// P̃(y) = L^d P(y/L): integer coefficients (L a multiple of every
+/// denominator; P monic).
+fn scaled(p: &[QT], l: &BigInt) -> Vec<ZT> {
+    let d = p.len() - 1;
+    p.iter()
+        .enumerate()
+        .map(|(k, a)| {
+            let f = Rational::from_integer(num_traits::pow(l.clone(), d - k));
+            a.iter()
+                .map(|c| {
+                    let v = c * &f;
+                    debug_assert!(v.is_integer());
+                    v.to_integer()
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// Fujiwara's bound on |y| over the roots of P̃ for every |t| = 1:
+/// 2 max_k ⌈m_k^{1/k}⌉, m_k the 1-norm of the coefficient of y^{d−k}.
+fn root_bound(p: &[ZT]) -> BigInt {
+    let d = p.len() - 1;
+    let mut r = BigInt::one();
+    for k in 1..=d {
+        let m: BigInt = p[d - k].iter().map(|c| c.abs()).sum();
+        let root = m.nth_root(k as u32) + 1;
+        if root > r {
+            r = root;
+        }
+    }
+    r * 2
+}
+
+// ---- arithmetic modulo a prime below 2^31 (products fit in u64) ----
+
+fn mm(a: u64, b: u64, p: u64) -> u64 {
+    a * b % p
+}
+
+fn inv(a: u64, p: u64) -> u64 {
+    pow_mod(a, p - 2, p)
+}
+
+fn reduce(c: &BigInt, p: u64) -> u64 {
+    c.mod_floor(&BigInt::from(p)).to_u64().expect("a residue below p")
+}
+
+/// Power sums p_1..p_k of the roots of the monic c (lowest first), by
+/// Newton's identities.
+fn power_sums(c: &[u64], k: usize, p: u64) -> Vec<u64> {
+    let d = c.len() - 1;
+    // b_j = coefficient of x^{d−j}
+    let b = |j: usize| c[d - j];
+    let mut s = vec![0u64; k + 1];
+    for n in 1..=k {
+        // p_n + b_1 p_{n−1} + … + b_{min(n−1, d)} p_{n−min} + [n ≤ d] n b_n = 0
+        let mut acc = if n <= d { mm(n as u64 % p, b(n), p) } else { 0 };
+        for i in 1..=(n - 1).min(d) {
+            acc = (acc + mm(b(i), s[n - i], p)) % p;
+        }
+        s[n] = (p - acc) % p;
+    }
+    s
+}
+
+/// The monic polynomial of degree D (lowest first) with power sums q_1..q_D.
+fn from_power_sums(q: &[u64], dd: usize, p: u64) -> Vec<u64> {
+    let mut e = vec![0u64; dd + 1];
+    e[0] = 1;
+    for k in 1..=dd {
+        let mut acc = 0u64;
+        for i in 1..=k {
+            let term = mm(e[k - i], q[i], p);
+            acc = if i % 2 == 1 { (acc + term) % p } else { (acc + p - term) % p };
+        }
+        e[k] = mm(acc, inv(k as u64, p), p);
+    }
+    let mut out = vec![0u64; dd + 1];
+    for (k, ek) in e.iter().enumerate() {
+        out[dd - k] = if k % 2 == 0 { *ek } else { (p - ek) % p };
+    }
+    out
+}
+
+/// E(s) = ∏_{i<j} (s − x_i x_j) for the roots x of the monic c.
+fn exterior_square(c: &[u64], p: u64) -> Vec<u64> {
+    let d = c.len() - 1;
+    let dd = d * (d - 1) / 2;
+    if dd == 0 {
+        return vec![1];
+    }
+    let s = power_sums(c, 2 * dd, p);
+    let half = inv(2, p);
+    let mut q = vec![0u64; dd + 1];
+    for k in 1..=dd {
+        q[k] = mm((mm(s[k], s[k], p) + p - s[2 * k]) % p, half, p);
+    }
+    from_power_sums(&q, dd, p)
+}
+
+/// G(s) = ∏_k (s − y_k²) for the roots y of the monic c: (−1)^d (Ev(s)² −
+/// s Od(s)²) with c(y) = Ev(y²) + y Od(y²).
+fn root_squared(c: &[u64], p: u64) -> Vec<u64> {
+    let d = c.len() - 1;
+    let even: Vec<u64> = c.iter().step_by(2).copied().collect();
+    let odd: Vec<u64> = c.iter().skip(1).step_by(2).copied().collect();
+    let mut g = vec![0u64; d + 1];
+    for (i, &x) in even.iter().enumerate() {
+        for (j, &y) in even.iter().enumerate() {
+            g[i + j] = (g[i + j] + mm(x, y, p)) % p;
+        }
+    }
+    for (i, &x) in odd.iter().enumerate() {
+        for (j, &y) in odd.iter().enumerate() {
+            g[i + j + 1] = (g[i + j + 1] + p - mm(x, y, p)) % p;
+        }
+    }
+    if d % 2 == 1 {
+        for x in g.iter_mut() {
+            *x = (p - *x) % p;
+        }
+    }
+    g
+}
+
+/// a mod the monic g (lowest first; the result has g's degree entries).
+fn rem_monic(a: &[u64], g: &[u64], p: u64) -> Vec<u64> {
+    let n = g.len() - 1;
+    let mut r = a.to_vec();
+    for top in (n..r.len()).rev() {
+        let c = r[top];
+        if c != 0 {
+            for i in 0..n {
+                r[top - n + i] = (r[top - n + i] + p - mm(c, g[i], p)) % p;
+            }
+        }
+        r[top] = 0;
+    }
+    r.resize(n, 0);
+    r
+}
+
+/// ∏_{G(w) = 0} E(w) = det of multiplication by E on F_p[s]/(G), G monic.
+fn resultant_monic(e: &[u64], g: &[u64], p: u64) -> u64 {
+    let n = g.len() - 1;
+    if n == 0 {
+        return 1;
+    }
+    let mut cols = Vec::with_capacity(n);
+    let mut v = rem_monic(e, g, p);
+    for _ in 0..n {
+        cols.push(v.clone());
+        let mut shifted = vec![0u64; n + 1];
+        shifted[1..].copy_from_slice(&v);
+        v = rem_monic(&shifted, g, p);
+    }
+    // determinant by elimination (of the transpose: the same)
+    let mut m = cols;
+    let mut det = 1u64;
+    for c in 0..n {
+        let Some(r) = (c..n).find(|&r| m[r][c] != 0) else { return 0 };
+        if r != c {
+            m.swap(r, c);
+            det = (p - det) % p;
+        }
+        det = mm(det, m[c][c], p);
+        let iv = inv(m[c][c], p);
+        for r in c + 1..n {
+            if m[r][c] == 0 {
+                continue;
+            }
+            let f = mm(m[r][c], iv, p);
+            for k in c..n {
+                m[r][k] = (m[r][k] + p - mm(f, m[c][k], p)) % p;
+            }
+        }
+    }
+    det
+}
+
+fn eval_mod(a: &[u64], t: u64, p: u64) -> u64 {
+    a.iter().rev().fold(0u64, |acc, &c| (mm(acc, t, p) + c) % p)
+}
+
+/// The coefficients of the polynomial of degree ≤ B through (i, y_i),
+/// i = 0..=B, modulo p (Newton's divided differences).
+fn interpolate_mod(y: &[u64], p: u64) -> Vec<u64> {
+    let n = y.len();
+    let mut dd = y.to_vec();
+    for level in 1..n {
+        let il = inv(level as u64, p);
+        for i in (level..n).rev() {
+            dd[i] = mm((dd[i] + p - dd[i - 1]) % p, il, p);
+        }
+    }
+    let mut out = vec![dd[n - 1]];
+    for i in (0..n - 1).rev() {
+        // out = out·(t − i) + dd[i]
+        let mut next = vec![0u64; out.len() + 1];
+        for (k, &c) in out.iter().enumerate() {
+            next[k + 1] = (next[k + 1] + c) % p;
+            next[k] = (next[k] + p - mm(c, i as u64 % p, p)) % p;
+        }
+        next[0] = (next[0] + dd[i]) % p;
+        out = next;
+    }
+    out
+}
+
+/// The primes below 2^31, largest first.
+fn small_primes() -> impl Iterator<Item = u64> {
+    ((1u64 << 30)..(1u64 << 31)).rev().filter(|&n| n % 2 == 1 && is_prime(n))
+}
+
+/// What the family gives for one pair (block polynomial, target).
+#[derive(Debug)]
+pub(crate) enum Crossings {
+    /// Res_s(E, G) as a polynomial in t over Q (nonzero; may be constant)
+    Resultant(Poly),
+    /// the block has no two roots that can be a non-real pair (degree < 2
+    /// after the constant roots are divided out)
+    Nothing,
+}
+
+/// The polynomial in t whose real roots include every t where a non-real
+/// root u of `block` has |u| equal to a real root of `target` (both monic
+/// in x with real coefficients). Err: why the family cannot be followed
+/// for this pair (coefficients not rational, a resultant that vanishes
+/// identically).
+pub(crate) fn crossings(block: &BiPoly, target: &BiPoly) -> Result<Crossings, String> {
+    let not_rational = "the modulus family needs block polynomials with rational coefficients";
+    let a = rational_coefficients(block).ok_or(not_rational)?;
+    let b = rational_coefficients(target).ok_or(not_rational)?;
+    for p in [&a, &b] {
+        if p.last().map(|c| c.len() == 1 && c[0].is_one()) != Some(true) {
+            return Err("the modulus family needs monic block polynomials".into());
+        }
+    }
+    let a = without_repeated_factor(without_constant_roots(a));
+    let d = a.len() - 1;
+    if d < 2 || b.len() < 2 {
+        return Ok(Crossings::Nothing);
+    }
+    let l = a.iter().chain(&b).flatten().fold(BigInt::one(), |l, c| l.lcm(c.denom()));
+    let (za, zb) = (scaled(&a, &l), scaled(&b, &l));
+    let dd = d * (d - 1) / 2;
+    let ng = b.len() - 1;
+    let e = slope(&a).max(slope(&b));
+    let bound = (e * Rational::from_integer(BigInt::from(2 * dd * ng))).floor().to_integer();
+    let bound = bound.to_usize().filter(|&b| b < 100_000).ok_or("a modulus resultant of too high degree in t")?;
+    let (ra, rb) = (root_bound(&za), root_bound(&zb));
+    let one = BigInt::one();
+    let need_bits = (dd * ng) as u64 * ((&one + &ra * &ra).bits() + (&one + &rb * &rb).bits()) + 2;
+    let mut acc: Vec<BigInt> = Vec::new();
+    let mut modulus = BigInt::one();
+    let mut zero_images = 0;
+    for p in small_primes() {
+        let (pa, pb): (Vec<Vec<u64>>, Vec<Vec<u64>>) = (
+            za.iter().map(|c| c.iter().map(|x| reduce(x, p)).collect()).collect(),
+            zb.iter().map(|c| c.iter().map(|x| reduce(x, p)).collect()).collect(),
+        );
+        let values: Vec<u64> = (0..=bound as u64)
+            .map(|t| {
+                let ca: Vec<u64> = pa.iter().map(|c| eval_mod(c, t, p)).collect();
+                let cb: Vec<u64> = pb.iter().map(|c| eval_mod(c, t, p)).collect();
+                resultant_monic(&exterior_square(&ca, p), &root_squared(&cb, p), p)
+            })
+            .collect();
+        let image = interpolate_mod(&values, p);
+        if modulus.is_one() && image.iter().all(|&c| c == 0) {
+            zero_images += 1;
+            if zero_images == 3 {
+                return Err("the modulus resultant vanishes modulo three primes (identically, probably)".into());
+            }
+            continue;
+        }
+        // Chinese remainders: x ≡ acc (mod M), x ≡ image (mod p)
+        if acc.is_empty() {
+            acc = vec![BigInt::zero(); image.len()];
+        }
+        let pbig = BigInt::from(p);
+        let m_inv = inv(reduce(&modulus, p), p);
+        for (x, &r) in acc.iter_mut().zip(&image) {
+            let xp = reduce(x, p);
+            let k = mm((r + p - xp) % p, m_inv, p);
+            *x += &modulus * BigInt::from(k);
+        }
+        modulus *= &pbig;
+        if modulus.bits() > need_bits {
+            break;
+        }
+    }
+    let half = &modulus / 2;
+    let mut coeffs: Vec<Rational> =
+        acc.iter().map(|x| Rational::from_integer(if x > &half { x - &modulus } else { x.clone() })).collect();
+    while coeffs.len() > 1 && coeffs.last().is_some_and(Zero::is_zero) {
+        coeffs.pop();
+    }
+    if coeffs.iter().all(Zero::is_zero) {
+        return Err("the modulus resultant vanishes identically".into());
+    }
+    Ok(Crossings::Resultant(Poly { coeffs }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const P: u64 = 1_000_000_007;
+
+    #[test]
+    fn power_sums_and_back() {
+        // (x − 2)(x − 3)(x − 5): p_1 = 10, p_2 = 38, p_3 = 160, p_4 = 722
+        let c = [P - 30, 31, P - 10, 1];
+        let s = power_sums(&c, 4, P);
+        assert_eq!(&s[1..], &[10, 38, 160, 722]);
+        assert_eq!(from_power_sums(&s, 3, P), c.to_vec());
+        // products 6, 10, 15: (s − 6)(s − 10)(s − 15) = s³ − 31 s² + 300 s − 900
+        assert_eq!(exterior_square(&c, P), vec![P - 900, 300, P - 31, 1]);
+        // squares 4, 9, 25: s³ − 38 s² + 361 s − 900
+        assert_eq!(root_squared(&c, P), vec![P - 900, 361, P - 38, 1]);
+    }
+
+    /// A polynomial in x with coefficients in Q[t]: rows[k] = coefficients
+    /// of x^k, as (numerator, denominator) of t^0, t^1, ...
+    fn bipoly(rows: &[&[(i64, i64)]]) -> BiPoly {
+        rows.iter()
+            .map(|r| {
+                TPoly::from_coeffs(
+                    r.iter()
+                        .map(|&(a, b)| crate::numeric::Cyclotomic::from_rational(&Rational::new(a.into(), b.into())))
+                        .collect(),
+                )
+            })
+            .collect()
+    }
+
+    fn from_roots_squarefree(factors: &[&[i64]]) -> Poly {
+        let p = factors.iter().fold(Poly { coeffs: vec![Rational::one()] }, |acc, f| {
+            acc.mul(&Poly { coeffs: f.iter().map(|&c| Rational::from_integer(c.into())).collect() })
+        });
+        crate::numeric::sturm::squarefree(&p)
+    }
+
+    #[test]
+    fn a_complex_pair_crossing_a_constant_modulus() {
+        // P = x² + t: for t > 0 the pair ±i√t, |u|² = t; target x − 1/2:
+        // |u| = 1/2 exactly at t = 1/4 (E(s) = s − t, G(s) = s − 1/4,
+        // Res ∝ 1/4 − t; scaled by L = 2: 1 − 4t)
+        let p = bipoly(&[&[(0, 1), (1, 1)], &[], &[(1, 1)]]);
+        let target = bipoly(&[&[(-1, 2)], &[(1, 1)]]);
+        let Crossings::Resultant(r) = crossings(&p, &target).unwrap() else { panic!("no resultant") };
+        assert_eq!(crate::numeric::sturm::squarefree(&r), from_roots_squarefree(&[&[-1, 4]]));
+    }
+
+    #[test]
+    fn a_repeated_branch_is_divided_out() {
+        // P = (x² + t)(x − t/2)², target T = (x − 1/2)(x − t/2): the double
+        // branch t/2 gives (t/2)(t/2) in E and (t/2)² in G for every t, so
+        // Res(E, G) of P itself vanishes identically. With P/(x − t/2) =
+        // (x² + t)(x − t/2): E has roots t (the pair ±i√t), ±i√t·t/2, i.e.
+        // E = (s − t)(s² + t³/4); G has roots 1/4 and t²/4; the product
+        // of E over G's roots is (1/4 − t)(1/16 + t³/4)(t²/4 − t)(t⁴/16 +
+        // t³/4), square-free part ∝ (4t − 1)(4t³ + 1) t (t − 4)(t + 4).
+        // (x² + t)(x² − t x + t²/4) = x⁴ − t x³ + (t + t²/4) x² − t² x + t³/4
+        let p = bipoly(&[&[(0, 1), (0, 1), (0, 1), (1, 4)], &[(0, 1), (0, 1), (-1, 1)], &[(0, 1), (1, 1), (1, 4)], &[(0, 1), (-1, 1)], &[(1, 1)]]);
+        // (x − 1/2)(x − t/2) = x² − (1/2 + t/2) x + t/4
+        let target = bipoly(&[&[(0, 1), (1, 4)], &[(-1, 2), (-1, 2)], &[(1, 1)]]);
+        let Crossings::Resultant(r) = crossings(&p, &target).unwrap() else { panic!("no resultant") };
+        let expected = from_roots_squarefree(&[&[-1, 4], &[1, 0, 0, 4], &[0, 1], &[-4, 1], &[4, 1]]);
+        assert_eq!(crate::numeric::sturm::squarefree(&r), expected);
+    }
+
+    #[test]
+    fn resultant_is_the_product_over_roots() {
+        // E = s − 7, G = (s − 2)(s − 3): E(2) E(3) = 20
+        assert_eq!(resultant_monic(&[P - 7, 1], &[6, P - 5, 1], P), 20);
+        // x² − 1 and (s − 1): 0
+        assert_eq!(resultant_monic(&[P - 1, 0, 1], &[P - 1, 1], P), 0);
+    }
+}
