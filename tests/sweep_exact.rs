@@ -467,7 +467,8 @@ fn unified_sqrt3_alpha_sets_are_exact_at_valence_3() {
                     let (a, b) = (rat(iv2[0].as_str().unwrap()), rat(iv2[1].as_str().unwrap()));
                     let (fa, fb) = (eval_q(&p, &a), eval_q(&p, &b));
                     assert!(fa.clone() * fb < BigRational::zero(), "{key} {end}: no sign change in ({a}, {b})");
-                    let (af, bf) = (num_traits::ToPrimitive::to_f64(&a).unwrap(), num_traits::ToPrimitive::to_f64(&b).unwrap());
+                    let (af, bf) =
+                        (num_traits::ToPrimitive::to_f64(&a).unwrap(), num_traits::ToPrimitive::to_f64(&b).unwrap());
                     assert!(af <= x && x <= bf, "{key} {end}: {x} outside ({af}, {bf})");
                 } else {
                     assert_eq!(num_traits::ToPrimitive::to_f64(&rat(e["rational"].as_str().unwrap())).unwrap(), x);
@@ -490,7 +491,8 @@ fn unified_sqrt3_alpha_sets_are_exact_at_valence_3() {
     }
     assert!(!verdict("unified-sqrt3", "alpha", 3, 0.8).0, "float C¹ at 0.8");
     assert!(
-        c1.iter().all(|iv| iv["to"]["decimal"].as_f64().unwrap() < 0.8 || iv["from"]["decimal"].as_f64().unwrap() > 0.8),
+        c1.iter()
+            .all(|iv| iv["to"]["decimal"].as_f64().unwrap() < 0.8 || iv["from"]["decimal"].as_f64().unwrap() > 0.8),
         "0.8 inside the C¹ set"
     );
     let out = subdlab(&["sweep", "unified-sqrt3", "--valences", "3..3", "--param", "alpha=0:2:1/10", "--exact"]);

@@ -365,7 +365,14 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
             for target in &targets {
                 match modulus::crossings(p, target) {
                     Ok(modulus::Crossings::Resultant(r)) => {
-                        trace(|| format!("n = {n}: modulus pair ({}, {}): resultant of degree {}", p.len() - 1, target.len() - 1, r.degree()));
+                        trace(|| {
+                            format!(
+                                "n = {n}: modulus pair ({}, {}): resultant of degree {}",
+                                p.len() - 1,
+                                target.len() - 1,
+                                r.degree()
+                            )
+                        });
                         if r.degree() == 0 {
                             continue;
                         }
@@ -444,10 +451,8 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
                     None => "moduli of complex pairs are not followed".to_string(),
                 }
             };
-            let why = format!(
-                "a non-real eigenvalue at {} = {t}: {what}, so the pieces' ends are not proved exact",
-                s.param
-            );
+            let why =
+                format!("a non-real eigenvalue at {} = {t}: {what}, so the pieces' ends are not proved exact", s.param);
             if !not_exact.contains(&why) {
                 not_exact.push(why);
             }
