@@ -291,7 +291,9 @@ mod tests {
         for (c, root) in e.components.iter().zip([1.0, 0.5, 1.0 / 3.0]) {
             assert_eq!(c.count, 1);
             assert!(c.may_hold(c64::new(root, 0.0)));
-            assert!(c.max_radius() < 1e-12);
+            // rounding-sized: the a-priori bound 3(k + 1)u·|R|·|A|·|V| of
+            // certify::midrad is about 10⁻¹² here (cond(V) ≈ 10²)
+            assert!(c.max_radius() < 1e-11);
         }
     }
 

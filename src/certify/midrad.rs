@@ -9,12 +9,15 @@
 //! Why the bounds hold (u = 2⁻⁵³, rounding to nearest, k the inner
 //! dimension):
 //!
-//! - A computed complex inner product of length k, in any summation order,
-//!   with or without fused multiply-adds, is within √5·u·|x||y| per term plus
-//!   γ_(k−1)·Σ|x||y| of the exact one (Higham, Accuracy and Stability of
-//!   Numerical Algorithms, 2nd ed., §3.1 and Lemma 3.5): together below
-//!   g·Σ|xₗ||yₗ| with g = 4(k + 2)u for k·u ≤ 1/100. Underflow adds at most
-//!   an absolute 2⁻¹⁰⁷⁴ per operation, covered by the floor below.
+//! - A complex inner product of length k computed in real arithmetic is two
+//!   real inner products of length 2k (Σ aᵣbᵣ − aᵢbᵢ and Σ aᵣbᵢ + aᵢbᵣ); in
+//!   any summation order, fused or not, each term passes through at most 2k
+//!   roundings, so each part is within γ_2k = 2ku/(1 − 2ku) of its terms'
+//!   absolute sum (Higham, Accuracy and Stability of Numerical Algorithms,
+//!   2nd ed., §3.1), and (|aᵣbᵣ| + |aᵢbᵢ|, |aᵣbᵢ| + |aᵢbᵣ|) has length at
+//!   most √2·|a||b|: the error is below √2·γ_2k·Σ|xₗ||yₗ| ≤ g·Σ|xₗ||yₗ| with
+//!   g = 3(k + 1)u for (k + 2)u ≤ 1/100. Underflow adds at most an absolute
+//!   2⁻¹⁰⁷⁴ per operation, covered by the floor below.
 //! - For A = A_c + Δ, |Δ| ≤ ρ entrywise, P = fl(A_c·V), Q = fl(R·P):
 //!   R·A·V − Q = R·Δ·V + R·(A_c·V − P) + (R·P − Q), so
 //!   |R·A·V − Q| ≤ |R|·(ρ + g|A_c|)·|V| + g·|R|·|P| entrywise.
@@ -88,22 +91,11 @@ fn largest(m: &Mat<f64>) -> f64 {
 /// one actually committed.
 const COARSE_EPSILON: f64 = 1e-3;
 
-/// Blocks up to this size are enclosed in interval arithmetic: at most
-/// 3·8³ scalar products, and tighter than the a-priori bounds, whose factor
-/// g·|R|·|P| counts every product's rounding at its worst (the companion
-/// matrix of (x − 1)(x − 1/2)(x − 1/3) in `discs`'s tests gets discs of
-/// radius below 10⁻¹² in intervals, above it from the bounds).
-const SMALL_BLOCK: usize = 8;
-
-/// M ⊇ R·A·V and ε ≥ ‖I − R·V‖∞: interval products for blocks up to
-/// [`SMALL_BLOCK`]; above, floating-point products with a-priori rounding
-/// bounds, or interval products where those give ε ≥ [`COARSE_EPSILON`]
-/// (all are enclosures; which one is used changes only how tight they
-/// are).
+/// M ⊇ R·A·V and ε ≥ ‖I − R·V‖∞: floating-point products with a-priori
+/// rounding bounds, or interval products where those give ε ≥
+/// [`COARSE_EPSILON`] (both are enclosures; which one is used changes only
+/// how tight they are).
 pub fn products(a: &CIntervalMatrix, v: &Mat<c64>, r: &Mat<c64>) -> Result<Products, String> {
-    if a.size <= SMALL_BLOCK {
-        return Ok(interval_products(a, v, r));
-    }
     match fast_products(a, v, r) {
         Ok(p) if p.epsilon < COARSE_EPSILON => Ok(p),
         _ => Ok(interval_products(a, v, r)),
@@ -157,7 +149,7 @@ fn fast_products(a: &CIntervalMatrix, v: &Mat<c64>, r: &Mat<c64>) -> Result<Prod
         return Err(format!("a block of size {k} is beyond the rounding-error bounds"));
     }
     let one = c64::new(1.0, 0.0);
-    let g = 4.0 * (k as f64 + 2.0) * U;
+    let g = 3.0 * (k as f64 + 1.0) * U;
     let a_mid = a.mid();
     // ρ: how far each entry of A reaches from its midpoint (directed rounding)
     let rho = Mat::from_fn(k, k, |i, j| a.get(i, j).distance_from(a_mid[(i, j)]));
