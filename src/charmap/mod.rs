@@ -500,7 +500,7 @@ fn first_ring_sector(face: &[usize], labels: &[crate::neighbourhood::VertexLabel
 fn crease_map(
     scheme: &dyn Scheme,
     analysis: &Analysis,
-    crease: &crate::spectrum::crease_verdict::CreaseVerdict,
+    crease: &crate::spectrum::spectrum_result::CreaseVerdict,
     opts: &CharMapOptions,
 ) -> Result<CharMap, Error> {
     let spec = &analysis.spectrum;

@@ -184,7 +184,7 @@ pub(super) fn spectrum_table(s: &Spectrum) -> String {
 
 /// Each side's leading eigenvalues at a crease vertex (with how they are
 /// known), and S whole's verdict, labelled as not the crease's.
-fn crease_sides_table(c: &crate::spectrum::crease_verdict::CreaseVerdict) -> String {
+fn crease_sides_table(c: &crate::spectrum::spectrum_result::CreaseVerdict) -> String {
     const SHOWN: usize = 6;
     let mut out = String::new();
     for side in &c.sides {

@@ -23,5 +23,5 @@ pub use field::{EvalError, ExprField};
 pub use interval::Interval;
 pub use reading::Reading;
 pub use small::SmallRational;
-pub use tpoly::TPoly;
+pub use tpoly::{BiPoly, TPoly};
 pub use weight::{Inexact, ParamValue, Rational, Weight};

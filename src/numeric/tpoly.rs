@@ -64,6 +64,10 @@ fn is_marker(q: &Rational) -> bool {
     MARKER.with(|m| m.borrow().as_ref() == Some(q))
 }
 
+/// A polynomial in x (lowest first) with coefficients polynomials in t:
+/// the exact sweep's block polynomials P(x, t).
+pub type BiPoly = Vec<TPoly>;
+
 /// Σ c_k t^k, c_k in a cyclotomic field (lowest degree first, no trailing
 /// zeros; empty: zero), or the undefined element (`defined == false`).
 #[derive(Clone, Debug)]

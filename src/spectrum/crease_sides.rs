@@ -30,9 +30,9 @@
 //! re-checked on the exact rows where there are some (a weight the float
 //! rows round to almost zero must be exactly zero).
 
-use super::crease_verdict::{CreaseVerdict, SideSpectrum};
 use super::driver::{self, Assembled, Identity, Problem};
 use super::exact::Candidates;
+use super::spectrum_result::{CreaseVerdict, SideSpectrum};
 use super::verdict::Verdict;
 use crate::error::Error;
 use crate::matrix::local::FullMatrix;

@@ -5,7 +5,6 @@
 
 pub mod analysis;
 pub mod crease_sides;
-pub mod crease_verdict;
 pub mod decomposition;
 pub mod driver;
 pub mod eigen;

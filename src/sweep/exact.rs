@@ -179,8 +179,7 @@ pub struct Decision {
     pub curvature_strict: bool,
 }
 
-/// A polynomial in x (lowest first) with coefficients polynomials in t.
-pub(crate) type BiPoly = Vec<TPoly>;
+pub(crate) use crate::numeric::BiPoly;
 /// A polynomial in x over Q(ζ) (lowest first).
 pub(crate) type CPoly = Vec<Cyclotomic>;
 

@@ -48,10 +48,9 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
-use super::BiPoly;
 use crate::numeric::exact::Poly;
 use crate::numeric::modular::{is_prime, pow_mod};
-use crate::numeric::{Rational, TPoly};
+use crate::numeric::{BiPoly, Rational, TPoly};
 
 /// A polynomial in t over Q, lowest first.
 type QT = Vec<Rational>;
