@@ -270,7 +270,7 @@ fn refine_with_margin<W: SchemeWeight, T: Combine<W> + Clone>(
         outer,
         inner: vec![false; d.patch.num_faces()],
         inner2: vec![false; d.patch.num_faces()],
-        mesh: d.patch.clone(),
+        mesh: PolyMesh::clone(&d.patch),
         points: level0,
         refinements: 0,
     };

@@ -50,14 +50,15 @@ impl std::str::FromStr for NeighbourhoodKind {
 
 pub struct Discovered {
     pub config: Configuration,
-    /// the generous level-0 patch
-    pub patch: PolyMesh,
-    pub labels: Vec<VertexLabel>,
+    /// the generous level-0 patch (shared with every discovery on the same
+    /// host, configuration and patch size: see `PatchTopology`)
+    pub patch: Arc<PolyMesh>,
+    pub labels: Arc<Vec<VertexLabel>>,
     /// the host that refines the patch
     topology: Topology,
     /// one analysis step of the whole patch, made on first use (see
     /// [`Discovered::refinements`])
-    full_step: OnceLock<FullStep>,
+    full_step: OnceLock<Arc<FullStep>>,
     /// float stencils of each refinement (index k: level k+1 from level k),
     /// completed on first use by [`Discovered::float_stencils`]
     stencils: FloatStencils,
@@ -133,12 +134,12 @@ impl Discovered {
         self.full_step.get_or_init(|| {
             let mut refinements: Vec<Refined> = Vec::new();
             for _ in 0..self.topology.steps_per_analysis() {
-                let before = refinements.last().map_or(&self.patch, |r| &r.mesh);
+                let before = refinements.last().map_or(&*self.patch, |r| &r.mesh);
                 // discovery refined part of this patch, and the whole refines
                 // as any mesh the host accepts does
                 refinements.push(self.topology.refine(before).expect("the patch discovery refined refines"));
             }
-            FullStep::new(refinements).expect("a refined patch keeps its lattice chart")
+            Arc::new(FullStep::new(refinements).expect("a refined patch keeps its lattice chart"))
         })
     }
     /// The mesh before refinement k (0 = the patch).
@@ -233,6 +234,61 @@ static DISCOVERIES: Memo<Discovered> = Memo::new(512 << 20);
 /// and the composite and float stencil rows. A generous estimate, used only
 /// to bound the memo.
 const MEMO_BYTES_PER_PATCH_VERTEX: usize = 4096;
+
+/// The part of a discovery attempt that depends on the host, the
+/// configuration, the patch size and the symmetry period alone, not on the
+/// rules' weights: the level-0 patch with its centre and labels, the
+/// rotation's orbits, the sector window and discovery's refinements of one
+/// analysis step. Every scheme and parameter set on one host (a parameter
+/// range decided at many values, a paper's schemes at the same valences, a
+/// failed smaller patch tried again for the next scheme) refines the same
+/// meshes; they are made once per process and shared (`Arc`), and since
+/// each is a deterministic function of the key, a discovery finds exactly
+/// what it would find on meshes of its own.
+struct PatchTopology {
+    patch: Arc<PolyMesh>,
+    centre_set: Vec<usize>,
+    labels: Arc<Vec<VertexLabel>>,
+    rot0: Rotation,
+    /// the window's faces (patch face ids), when the window applies
+    kept: Option<Vec<usize>>,
+    window: Option<PolyMesh>,
+    /// one analysis step of the window (or of the whole patch without one)
+    step: Arc<FullStep>,
+}
+
+/// Patch topologies made in this process, by host, configuration, patch
+/// size, period and whether the window may apply.
+static PATCH_TOPOLOGIES: Memo<PatchTopology> = Memo::new(256 << 20);
+
+fn patch_topology(
+    topology: Topology,
+    config: &Configuration,
+    rings: usize,
+    period: usize,
+    prune: bool,
+) -> Result<Arc<PatchTopology>, Error> {
+    let key = format!("{topology:?} {config:?} rings {rings} period {period} window {prune}");
+    let make = || -> Result<PatchTopology, Error> {
+        let (patch, centre_set) = build_patch(config, rings);
+        let labels = label_vertices(&patch, &centre_set, config.centre.is_face_centred());
+        let rot0 = Rotation::new(&patch, period, true);
+        // Only representatives are walked, so a large symmetric patch is
+        // refined only in the sectors around theirs (vertex ids kept); the
+        // whole step is made later if someone needs it
+        // (`Discovered::refinements`).
+        let kept = if prune { window_faces(&patch, period) } else { None };
+        let window = kept.as_ref().map(|kept| patch.keep_faces(kept)).transpose()?;
+        let mut refinements: Vec<Refined> = Vec::new();
+        for _ in 0..topology.steps_per_analysis() {
+            let before = refinements.last().map_or(window.as_ref().unwrap_or(&patch), |r| &r.mesh);
+            refinements.push(topology.refine(before)?);
+        }
+        let step = Arc::new(FullStep::new(refinements)?);
+        Ok(PatchTopology { patch: Arc::new(patch), centre_set, labels: Arc::new(labels), rot0, kept, window, step })
+    };
+    PATCH_TOPOLOGIES.get_or_try_insert(key, make, |t| t.patch.num_vertices() * MEMO_BYTES_PER_PATCH_VERTEX)
+}
 
 /// [`discover`], shared: the same scheme (by [`Scheme::identity`]) and
 /// configuration are discovered once per process, and every caller gets the
@@ -607,21 +663,16 @@ fn try_discover(
     prune: bool,
     blame_pruning: &mut bool,
 ) -> Result<Discovered, Error> {
-    let (patch, centre_set) = build_patch(config, rings);
-    let labels = label_vertices(&patch, &centre_set, config.centre.is_face_centred());
     let topology = scheme.topology();
     let steps = topology.steps_per_analysis();
-    let chart0 = patch.chart.as_ref().expect("patch has a chart");
     let period = config.rotation_period(scheme);
-    let rot0 = Rotation::new(&patch, period, true);
-    // Only representatives are walked, so a large symmetric patch is refined
-    // only in the sectors around theirs (vertex ids kept); the whole step is
-    // made later if someone needs it (`Discovered::refinements`). A rule cut
-    // off by the window blames pruning, and the patch is tried whole.
-    let kept = if prune { window_faces(&patch, period) } else { None };
-    let window = kept.as_ref().map(|kept| patch.keep_faces(kept)).transpose()?;
+    // the scheme-independent part of this attempt, made once per process
+    // for every scheme and parameter set on the same host (see `PatchTopology`)
+    let shared = patch_topology(topology, config, rings, period, prune)?;
+    let PatchTopology { patch, centre_set, labels, rot0, kept, window, step } = &*shared;
+    let chart0 = patch.chart.as_ref().expect("patch has a chart");
     let windowed = window.is_some();
-    let base = window.as_ref().unwrap_or(&patch);
+    let base: &PolyMesh = window.as_ref().unwrap_or(patch);
     // Whether the window may be why the stencil of vertex v of refinement
     // k+1 could not be evaluated. A rule that fails on the whole patch too
     // needs a larger patch, not the whole one (so no costly retry); that is
@@ -637,21 +688,15 @@ fn try_discover(
             Origin::Corner { face, corner } => Origin::Corner { face: kept[face], corner },
             o @ (Origin::Vertex(_) | Origin::Edge(..)) => o,
         };
-        stencil_f64(scheme, &patch, origin).is_some()
+        stencil_f64(scheme, patch, origin).is_some()
     };
-    let mut refinements: Vec<Refined> = Vec::new();
-    for _ in 0..steps {
-        let before = refinements.last().map_or(base, |r| &r.mesh);
-        refinements.push(crate::refine::connectivity(scheme, before)?);
-    }
-    let step = FullStep::new(refinements)?;
     let (refinements, step_at) = (&step.refinements, &step.step_at);
     let orbits = RepresentativeSteps {
         composer: RefCell::new(Composer::new(StepStencils::new(scheme, base, refinements))),
-        rot0: &rot0,
+        rot0,
         step_at,
         coords: &chart0.vertex_coords,
-        labels: &labels,
+        labels,
         rings,
         last: steps - 1,
         asked: RefCell::new(IdMap::default()),
@@ -789,11 +834,12 @@ fn try_discover(
     let partial = composer.stencils.into_partial();
     let composite = asked.into_iter().filter_map(|(w, v)| Some((v, last_rows.get(&w)?.clone()?))).collect();
     // what discovery refined and evaluated is the whole step unless windowed
-    let (full_step, partial) = if windowed { (OnceLock::new(), None) } else { (OnceLock::from(step), Some(partial)) };
+    let (full_step, partial) =
+        if windowed { (OnceLock::new(), None) } else { (OnceLock::from(Arc::clone(step)), Some(partial)) };
     Ok(Discovered {
         config: config.clone(),
-        patch,
-        labels,
+        patch: Arc::clone(patch),
+        labels: Arc::clone(labels),
         topology,
         full_step,
         stencils: FloatStencils { partial: std::sync::Mutex::new(partial), all: OnceLock::new() },
