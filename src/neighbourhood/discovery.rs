@@ -12,10 +12,9 @@
 //! Both need the old patch large enough that every rule involved can be
 //! evaluated; when one cannot, the patch grows by a ring and discovery restarts.
 
-use std::borrow::Cow;
 use std::cell::RefCell;
 use std::collections::{BTreeSet, HashMap};
-use std::sync::{Arc, OnceLock};
+use std::sync::{Arc, Mutex, OnceLock};
 
 use crate::engine::memo::{Derived, Memo};
 
@@ -255,6 +254,89 @@ struct PatchTopology {
     window: Option<PolyMesh>,
     /// one analysis step of the window (or of the whole patch without one)
     step: Arc<FullStep>,
+    /// the first ring's faces of the window (or patch): the region whose
+    /// descendants the search for the analysis neighbourhood follows
+    region0: Vec<bool>,
+    /// the search's refinements 1, 2, ... (index r − 1), made on first use
+    levels: Mutex<Vec<Arc<SearchLevel>>>,
+}
+
+/// Refinement r ≥ 1 of the search for the analysis neighbourhood: the mesh
+/// after it (pruned to a margin around the region once the first analysis
+/// step is done), the region's descendants on it and its rotation. As
+/// `PatchTopology`, scheme-independent.
+struct SearchLevel {
+    /// refinements past the first analysis step: the origins of the
+    /// refinement's vertices (unpruned ids), for its stencils, which are
+    /// evaluated lazily on the mesh before it; within the step the
+    /// step's own refinements hold them
+    origins: Option<Vec<Origin>>,
+    /// the mesh after this refinement, if it is not the step's own
+    /// (refinement r ≤ steps unpruned)
+    mesh: Option<PolyMesh>,
+    /// pruned: per kept vertex, its id in the unpruned refinement
+    old_ids: Option<Vec<usize>>,
+    region_faces: Vec<bool>,
+    rot: Rotation,
+}
+
+impl PatchTopology {
+    /// The mesh the window's (or patch's) first analysis step starts from.
+    fn base(&self) -> &PolyMesh {
+        self.window.as_ref().unwrap_or(&self.patch)
+    }
+
+    /// The mesh after r refinements, given the levels 1..=r made so far.
+    fn mesh_after<'a>(&'a self, levels: &'a [Arc<SearchLevel>], r: usize) -> &'a PolyMesh {
+        if r == 0 {
+            return self.base();
+        }
+        levels[r - 1].mesh.as_ref().unwrap_or_else(|| &self.step.refinements[r - 1].mesh)
+    }
+
+    /// Search level r (made, with those below it, if nobody has yet).
+    fn level(&self, r: usize, topology: Topology, period: usize, prune: bool) -> Result<Arc<SearchLevel>, Error> {
+        let mut levels = self.levels.lock().unwrap_or_else(|e| e.into_inner());
+        let steps = topology.steps_per_analysis();
+        while levels.len() < r {
+            let i = levels.len() + 1;
+            let (before, region_before) = match i {
+                1 => (self.base(), &self.region0),
+                _ => (self.mesh_after(&levels, i - 1), &levels[i - 2].region_faces),
+            };
+            let in_region = region_entities(before, region_before);
+            // the first analysis step's refinements are the step's own (read,
+            // not copied); later ones are made here
+            let made = if i <= steps { None } else { Some(topology.refine(before)?) };
+            let rf = made.as_ref().unwrap_or_else(|| &self.step.refinements[i - 1]);
+            let descends: Vec<bool> = rf.vertex_origins.iter().map(|o| in_region.contains(o)).collect();
+            let mut region_faces: Vec<bool> = rf
+                .mesh
+                .faces()
+                .iter()
+                .zip(&rf.face_parents)
+                .map(|(f, p)| in_region.contains(p) && f.iter().all(|&v| descends[v]))
+                .collect();
+            let pruned =
+                if prune && i >= steps { prune_around(&rf.mesh, &region_faces, PRUNE_MARGIN, period)? } else { None };
+            let (origins, mut mesh, old_ids) = match made {
+                Some(Refined { mesh, vertex_origins, .. }) => (Some(vertex_origins), Some(mesh), None),
+                None => (None, None, None),
+            };
+            let old_ids = match pruned {
+                Some((pruned, old, region)) => {
+                    mesh = Some(pruned);
+                    region_faces = region;
+                    Some(old)
+                }
+                None => old_ids,
+            };
+            let after = mesh.as_ref().unwrap_or_else(|| &self.step.refinements[i - 1].mesh);
+            let rot = Rotation::new(after, period, false);
+            levels.push(Arc::new(SearchLevel { origins, mesh, old_ids, region_faces, rot }));
+        }
+        Ok(Arc::clone(&levels[r - 1]))
+    }
 }
 
 /// Patch topologies made in this process, by host, configuration, patch
@@ -285,9 +367,31 @@ fn patch_topology(
             refinements.push(topology.refine(before)?);
         }
         let step = Arc::new(FullStep::new(refinements)?);
-        Ok(PatchTopology { patch: Arc::new(patch), centre_set, labels: Arc::new(labels), rot0, kept, window, step })
+        // the first ring: faces touching ring 0 (or deeper rings, see
+        // `CentreKind::first_ring_depth`)
+        let depth = config.centre.first_ring_depth();
+        let region0 = window
+            .as_ref()
+            .unwrap_or(&patch)
+            .faces()
+            .iter()
+            .map(|f| f.iter().any(|&v| labels[v].ring <= depth))
+            .collect();
+        Ok(PatchTopology {
+            patch: Arc::new(patch),
+            centre_set,
+            labels: Arc::new(labels),
+            rot0,
+            kept,
+            window,
+            step,
+            region0,
+            levels: Mutex::new(Vec::new()),
+        })
     };
-    PATCH_TOPOLOGIES.get_or_try_insert(key, make, |t| t.patch.num_vertices() * MEMO_BYTES_PER_PATCH_VERTEX)
+    // the search's later levels (pruned meshes, a few times the patch) are
+    // added after the estimate is taken: counted here in advance
+    PATCH_TOPOLOGIES.get_or_try_insert(key, make, |t| 4 * t.patch.num_vertices() * MEMO_BYTES_PER_PATCH_VERTEX)
 }
 
 /// [`discover`], shared: the same scheme (by [`Scheme::identity`]) and
@@ -644,15 +748,6 @@ impl RepresentativeSteps<'_> {
     }
 }
 
-/// One refinement of the search for the analysis neighbourhood past the
-/// first analysis step: stencils are evaluated only for the vertices the
-/// backward walk reaches (representatives), on the mesh they refine.
-struct LazyLevel<'a> {
-    before: Cow<'a, PolyMesh>,
-    origins: Vec<Origin>,
-    memo: IdMap<usize, Option<Stencil<f64>>>,
-}
-
 /// One attempt on a patch of `rings` rings. With `prune`, refined meshes past
 /// the first analysis step keep only a margin around the region; a failure
 /// that may come from that sets `blame_pruning`.
@@ -669,7 +764,7 @@ fn try_discover(
     // the scheme-independent part of this attempt, made once per process
     // for every scheme and parameter set on the same host (see `PatchTopology`)
     let shared = patch_topology(topology, config, rings, period, prune)?;
-    let PatchTopology { patch, centre_set, labels, rot0, kept, window, step } = &*shared;
+    let PatchTopology { patch, centre_set, labels, rot0, kept, window, step, .. } = &*shared;
     let chart0 = patch.chart.as_ref().expect("patch has a chart");
     let windowed = window.is_some();
     let base: &PolyMesh = window.as_ref().unwrap_or(patch);
@@ -722,56 +817,27 @@ fn try_discover(
     // level 0. This is linear in the stencil sizes (forward dependency sets
     // would cost O(n^3) at the dense central face of a dual scheme), and only
     // representatives are walked (see `Rotation`).
-    // the first ring: faces touching ring 0 (or deeper rings, see `CentreKind::first_ring_depth`)
-    let depth = config.centre.first_ring_depth();
-    let mut region_faces: Vec<bool> = base.faces().iter().map(|f| f.iter().any(|&v| labels[v].ring <= depth)).collect();
-    let mut lazy: Vec<LazyLevel> = Vec::new();
-    // rots[k - 1]: rotation of the mesh after k refinements (pruned when it was)
-    let mut rots: Vec<Rotation> = Vec::new();
+    // Beyond the first analysis step only the region and a margin around it
+    // are kept: the mesh would otherwise grow geometrically with the level,
+    // while the backward walk below only ever reaches a bounded number of
+    // rings around the (shrinking) region. The refined (and pruned) meshes,
+    // their regions and rotations are scheme-independent: `SearchLevel`s of
+    // the shared patch topology, made on first use.
+    // levels[k - 1]: refinement k (its mesh, region, rotation, pruning)
+    let mut levels: Vec<Arc<SearchLevel>> = Vec::new();
+    // per refinement k + 1 > steps: its stencils as this scheme evaluates them
+    let mut lazy: Vec<IdMap<usize, Option<Stencil<f64>>>> = Vec::new();
     let mut collected: BTreeSet<usize> = BTreeSet::new();
     let mut previous: Option<BTreeSet<usize>> = None;
     let mut analysis = None;
     let mut levels_used = 0;
-    let mut mesh_k: Cow<PolyMesh> = Cow::Borrowed(base);
-    // Beyond the first analysis step only the region and a margin around it
-    // are kept: the mesh would otherwise grow geometrically with the level,
-    // while the backward walk below only ever reaches a bounded number of
-    // rings around the (shrinking) region. `relabel[k]`: for the mesh after
-    // refinement k+1, the id each kept vertex had before pruning.
-    let mut relabel: Vec<Option<Vec<usize>>> = Vec::new();
     for r in 1..=MAX_LEVELS * steps {
-        let in_region = region_entities(&mesh_k, &region_faces);
-        // the first analysis step's refinements are discovery's own (read,
-        // not copied); later ones are made here
-        let (refined_mesh, origins, parents): (Cow<PolyMesh>, Cow<[Origin]>, Cow<[Origin]>) = if r <= steps {
-            let rf = &refinements[r - 1];
-            (Cow::Borrowed(&rf.mesh), Cow::Borrowed(&rf.vertex_origins), Cow::Borrowed(&rf.face_parents))
-        } else {
-            let rf = crate::refine::connectivity(scheme, &mesh_k)?;
-            (Cow::Owned(rf.mesh), Cow::Owned(rf.vertex_origins), Cow::Owned(rf.face_parents))
-        };
-        let descends: Vec<bool> = origins.iter().map(|o| in_region.contains(o)).collect();
-        region_faces = refined_mesh
-            .faces()
-            .iter()
-            .zip(parents.iter())
-            .map(|(f, p)| in_region.contains(p) && f.iter().all(|&v| descends[v]))
-            .collect();
-        let before = std::mem::replace(&mut mesh_k, refined_mesh);
+        levels.push(shared.level(r, topology, period, prune)?);
         if r > steps {
-            // kept for evaluating this refinement's stencils on demand
-            lazy.push(LazyLevel { before, origins: origins.into_owned(), memo: IdMap::default() });
+            lazy.push(IdMap::default());
         }
-        let mut old_ids: Option<Vec<usize>> = None;
-        if prune && r >= steps {
-            if let Some((pruned, old, region)) = prune_around(&mesh_k, &region_faces, PRUNE_MARGIN, period)? {
-                mesh_k = Cow::Owned(pruned);
-                region_faces = region;
-                old_ids = Some(old);
-            }
-        }
-        relabel.push(old_ids);
-        rots.push(Rotation::new(&mesh_k, period, false));
+        let level = &levels[r - 1];
+        let (mesh_k, region_faces) = (shared.mesh_after(&levels, r), &level.region_faces);
         if r % steps != 0 {
             continue; // only whole analysis steps are compared
         }
@@ -779,9 +845,9 @@ fn try_discover(
         let mut marked: BTreeSet<usize> = BTreeSet::new();
         for (f, face) in mesh_k.faces().iter().enumerate() {
             if region_faces[f] {
-                marked.extend(face.iter().map(|&v| rots[r - 1].rep(v)));
+                marked.extend(face.iter().map(|&v| level.rot.rep(v)));
                 if let Some(p) = mesh_k.face_point(f) {
-                    marked.insert(rots[r - 1].rep(p));
+                    marked.insert(level.rot.rep(p));
                 }
             }
         }
@@ -789,23 +855,25 @@ fn try_discover(
             let mut marked_below = BTreeSet::new();
             for &v in &marked {
                 // back to the id of the unpruned refinement, which stencils index
-                let v = relabel[k].as_ref().map_or(v, |old| old[v]);
+                let v = levels[k].old_ids.as_ref().map_or(v, |old| old[v]);
                 let support: Option<Vec<usize>> = if k < steps {
                     orbits.composer.borrow_mut().stencils.get(k, v).map(|st| st.support().collect())
                 } else {
-                    let level = &mut lazy[k - steps];
-                    let (before, origin) = (&level.before, level.origins[v]);
-                    let stencil = level.memo.entry(v).or_insert_with(|| stencil_f64(scheme, before, origin));
+                    // refinement k + 1 of the mesh after k refinements
+                    let before = shared.mesh_after(&levels, k);
+                    let origin =
+                        levels[k].origins.as_ref().expect("a refinement past the first step keeps its origins")[v];
+                    let stencil = lazy[k - steps].entry(v).or_insert_with(|| stencil_f64(scheme, before, origin));
                     stencil.as_ref().map(|st| st.support().collect())
                 };
                 let Some(support) = support else {
                     // the mesh this stencil is evaluated on was cut down
-                    *blame_pruning |= (k >= 1 && relabel[k - 1].is_some()) || cut_by_window(k, v, refinements);
+                    *blame_pruning |= (k >= 1 && levels[k - 1].old_ids.is_some()) || cut_by_window(k, v, refinements);
                     return Err(Error::NotDetermined(format!(
                         "first-ring vertex after {r} steps not evaluable in a {rings}-ring patch"
                     )));
                 };
-                let below = if k == 0 { &rot0 } else { &rots[k - 1] };
+                let below = if k == 0 { rot0 } else { &levels[k - 1].rot };
                 marked_below.extend(support.into_iter().map(|u| below.rep(u)));
             }
             marked = marked_below;

@@ -242,3 +242,40 @@ fn windowed_discovery_equals_the_whole_patchs() {
         }
     }
 }
+
+/// Two discoveries on one host, configuration and patch size share the
+/// scheme-independent meshes (`PatchTopology`: the same patch, not a copy),
+/// and each still finds the closed-form neighbourhoods; a different patch
+/// size is a different topology with the same findings. The second scheme
+/// has another identity (name), so the discovery memo does not answer for
+/// it: only the topology is shared.
+#[test]
+fn discoveries_on_one_host_share_the_patch_topology_and_find_the_same_sets() {
+    use super::{discover_with_rings, try_discover};
+    use std::sync::Arc;
+    let first = Support::catmull_clark();
+    let mut second = Support::catmull_clark();
+    second.info.name = "support-cc-second";
+    for n in [5, 7] {
+        let config = Configuration::regular(&first, n).unwrap();
+        let mut blame = false;
+        let a = try_discover(&first, &config, 3, true, &mut blame).unwrap();
+        let b = try_discover(&second, &config, 3, true, &mut blame).unwrap();
+        assert!(Arc::ptr_eq(&a.patch, &b.patch), "n = {n}: one patch for both schemes");
+        assert!(Arc::ptr_eq(&a.labels, &b.labels), "n = {n}: one labelling");
+        let larger = discover_with_rings(&second, &config, 4).unwrap();
+        assert!(!Arc::ptr_eq(&a.patch, &larger.patch), "n = {n}: a 4-ring patch is another topology");
+        assert!(larger.patch.num_vertices() > a.patch.num_vertices());
+        for d in [&a, &b, &larger] {
+            let sizes = (d.set(NeighbourhoodKind::Minimal).len(), d.set(NeighbourhoodKind::Analysis).len());
+            assert_eq!(sizes, (2 * n + 1, 6 * n + 1), "n = {n}: closed-form sizes");
+            assert_eq!(d.analysis_levels, a.analysis_levels, "n = {n}: analysis steps");
+        }
+        // the same vertices, by their labels (ids differ between patch sizes)
+        let labelled = |d: &super::Discovered| -> Vec<_> {
+            d.set(NeighbourhoodKind::Analysis).iter().map(|&v| format!("{:?}", d.labels[v])).collect()
+        };
+        assert_eq!(labelled(&a), labelled(&b), "n = {n}");
+        assert_eq!(labelled(&a), labelled(&larger), "n = {n}");
+    }
+}
