@@ -206,12 +206,12 @@ pub fn growth_test(
     let mut tail = nalgebra::DVector::<f64>::zeros(s);
     for k in 1..16 * window {
         x = &step * x;
-        let r = ring_size(&sampler, x.as_slice()) / scale;
+        // the ring is sampled only over the two averaging windows
         if (window..2 * window).contains(&k) {
-            early += r / window as f64;
+            early += ring_size(&sampler, x.as_slice()) / scale / window as f64;
         }
         if k >= 8 * window {
-            late += r / (8 * window) as f64;
+            late += ring_size(&sampler, x.as_slice()) / scale / (8 * window) as f64;
             tail += &x / (k as f64 * (8 * window) as f64);
         }
     }
