@@ -169,3 +169,21 @@ fn cli_exit_codes_json_and_refusals() {
         assert!(line.contains("--certify"), "{line}");
     }
 }
+
+#[test]
+fn a_boundary_rule_outside_lemma_b3_is_not_proved() {
+    // tests/data/certify/cc-boundary-wide-curve.toml: the boundary vertex
+    // rule (3/16, 5/8, 3/16) is not the ghost-extended bicubic B-spline's
+    // (1/8, 3/4, 1/8) (derivation in the file): the certificate must refuse
+    // to prove, and say why
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/certify/cc-boundary-wide-curve.toml");
+    for k in ["2", "3"] {
+        let out = subdlab(&["charmap", file, "-n", k, "--tag", "boundary", "--certify", "--json"]);
+        assert_eq!(out.status.code(), Some(1), "k = {k}");
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        let c = &v["certificate"];
+        assert_eq!(c["sector_criterion"]["verdict"], "not_proved", "k = {k}: {c}");
+        let why = c["regularity"]["reason"].as_str().unwrap();
+        assert!(why.contains("numerical only") && why.contains("ghost-extended"), "{why}");
+    }
+}
