@@ -20,6 +20,7 @@ mod certify_difference;
 mod certify_nonbox;
 mod certify_soundness;
 mod certify_tagged;
+mod certify_tagged_charmap;
 mod crease_sides;
 mod cyclotomic;
 mod every_valence;

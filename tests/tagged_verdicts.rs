@@ -631,7 +631,7 @@ fn the_boundary_claims_file_verifies() {
     assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let claims = v[0]["claims"].as_array().unwrap();
-    assert_eq!(claims.len(), 30);
+    assert_eq!(claims.len(), 33);
     for c in claims {
         assert_eq!(c["verdict"], "HOLDS", "{c}");
     }
@@ -648,6 +648,10 @@ fn the_boundary_claims_file_verifies() {
         ("loop.crease.regular", "loop.crease.regular.certified"),
         ("cc.crease.four-quad-side", "cc.crease.four-quad-side.certified"),
         ("cc.crease.blz", "cc.crease.blz.certified"),
+        // the sector map's certified route (`charmap --tag boundary --certify`)
+        ("cc.boundary.regular", "cc.boundary.regular.map.certified"),
+        ("cc.boundary.hoppe-collapse", "cc.boundary.hoppe-collapse.certified"),
+        ("cc.boundary.blz-map", "cc.boundary.blz-map.certified"),
     ] {
         assert!(ids.contains(&first) && ids.contains(&second), "{first} / {second}");
     }

@@ -321,7 +321,7 @@ fn certify_charmap_once(
 
 /// Reif's criterion from its three parts: proved when all are, disproved
 /// when one is.
-fn combine(spectrum: &Verdict, regularity: &Verdict, injectivity: &Verdict) -> Verdict {
+pub(super) fn combine(spectrum: &Verdict, regularity: &Verdict, injectivity: &Verdict) -> Verdict {
     let parts = [("spectrum", spectrum), ("regularity", regularity), ("injectivity", injectivity)];
     if let Some((what, Verdict::Disproved(why))) = parts.iter().find(|(_, v)| matches!(v, Verdict::Disproved(_))) {
         return Verdict::Disproved(format!("{what}: {why}"));
@@ -656,47 +656,47 @@ fn certified_net(analysis: &Analysis, cert: &mut CharMapCertificate) -> Result<V
 /// corners of the face get (0,0), (1,0), (1,1), (0,1) (triangles: (0,0),
 /// (1,0), (0,1)), and every window vertex its lattice position.
 #[derive(Default)]
-struct Window {
-    face: usize,
-    faces: Vec<usize>,
+pub(super) struct Window {
+    pub(super) face: usize,
+    pub(super) faces: Vec<usize>,
     /// edge vectors along (1, 0) and along (0, 1)
-    along_u: Vec<Point>,
-    along_v: Vec<Point>,
+    pub(super) along_u: Vec<Point>,
+    pub(super) along_v: Vec<Point>,
     /// every window point, for hulls
-    points: Vec<Point>,
+    pub(super) points: Vec<Point>,
     /// the same edges as net vertex pairs (from, to), for the certificate
     /// document, whose checker recomputes the edge vectors itself
-    u_pairs: Vec<(usize, usize)>,
-    v_pairs: Vec<(usize, usize)>,
+    pub(super) u_pairs: Vec<(usize, usize)>,
+    pub(super) v_pairs: Vec<(usize, usize)>,
     /// non-box windows only (empty otherwise): every window point with its
     /// lattice position in half units (V-vertices even, FCVs odd; the ring
     /// face is [0, 2]²), for the rule check and the certificate document
-    layout: Vec<(usize, [i64; 2])>,
+    pub(super) layout: Vec<(usize, [i64; 2])>,
     /// difference-scheme windows only (None, 0 otherwise): the Jacobian
     /// over the face proved to lie in `jacobian` (lemma C9, not the edge
     /// vectors' range), and the face's image within `radius` of the hull of
     /// `points`
-    jacobian: Option<Interval>,
-    radius: f64,
+    pub(super) jacobian: Option<Interval>,
+    pub(super) radius: f64,
     /// difference-scheme windows only: the window on the lattice
-    window: Vec<(usize, [i64; 2])>,
+    pub(super) window: Vec<(usize, [i64; 2])>,
 }
 
 /// A window's vertices with their lattice positions: at most 16, so a
 /// vector searched in order (the windows are built by the thousand, and a
 /// hash map per window cost more than the search).
-struct LatticeLayout(Vec<(usize, (i32, i32))>);
+pub(super) struct LatticeLayout(pub(super) Vec<(usize, (i32, i32))>);
 
 impl LatticeLayout {
-    fn get(&self, v: usize) -> Option<(i32, i32)> {
+    pub(super) fn get(&self, v: usize) -> Option<(i32, i32)> {
         self.0.iter().find(|&&(w, _)| w == v).map(|&(_, c)| c)
     }
     /// The position of a vertex laid out already.
-    fn at(&self, v: usize) -> (i32, i32) {
+    pub(super) fn at(&self, v: usize) -> (i32, i32) {
         self.get(v).expect("a laid-out window vertex")
     }
     /// The position of `v`, given `c` if it has none yet.
-    fn get_or_insert(&mut self, v: usize, c: (i32, i32)) -> (i32, i32) {
+    pub(super) fn get_or_insert(&mut self, v: usize, c: (i32, i32)) -> (i32, i32) {
         self.get(v).unwrap_or_else(|| {
             self.0.push((v, c));
             c
@@ -884,7 +884,7 @@ impl Window {
     /// An enclosure of the range of det(uᵢ, vⱼ) over the window's edge
     /// vectors (the Jacobian over the face lies in it); the whole line when
     /// a bound is not finite, which decides no sign.
-    fn jacobian_bounds(&self) -> Interval {
+    pub(super) fn jacobian_bounds(&self) -> Interval {
         if let Some(j) = self.jacobian {
             return if j.is_finite() { j } else { Interval::new(f64::NEG_INFINITY, f64::INFINITY) };
         }
@@ -1022,7 +1022,7 @@ fn check_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[Window]) -> Resu
 /// A stencil or mask: weight per control point, exact in machine integers
 /// (every mask weight is a small fraction; a stencil weight that does not
 /// fit is kept spoiled, and a spoiled weight equals no mask weight).
-type Mask = HashMap<usize, SmallRational>;
+pub(super) type Mask = HashMap<usize, SmallRational>;
 
 /// The scheme's rational stencil at `origin`, repeated points merged and
 /// zero weights dropped. Computed in machine-integer rationals first (the
@@ -1030,7 +1030,7 @@ type Mask = HashMap<usize, SmallRational>;
 /// rationals allocate and reduce at every product); a term that left the
 /// machine integers is recomputed in big rationals, so the result is the
 /// exact stencil either way.
-fn exact_stencil(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> Result<Mask, String> {
+pub(super) fn exact_stencil(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin) -> Result<Mask, String> {
     let irrational = |_| "a rule over the ring has an irrational weight".to_string();
     // the gatherer's reason names what the net lacks (a truncated margin, a
     // face the host's rules do not cover)
@@ -1137,7 +1137,7 @@ fn check_non_box_rules(
 
 /// The masks at a regular vertex: bicubic or A_4 (valence-4 quads), ternary
 /// biquadratic, or Loop's (valence-6 triangles).
-fn vertex_masks(
+pub(super) fn vertex_masks(
     mesh: &PolyMesh,
     vf: &[Vec<usize>],
     v: usize,
@@ -1185,7 +1185,7 @@ fn vertex_masks(
 
 /// The mask at an edge between regular faces (ternary: the new vertex on
 /// a–b near a).
-fn edge_mask(
+pub(super) fn edge_mask(
     mesh: &PolyMesh,
     vf: &[Vec<usize>],
     a: usize,
@@ -1336,7 +1336,7 @@ fn dot(d: [f64; 2], p: Point) -> Interval {
 /// hull lies in the open half-plane d·x > 0): the sum of the midpoints,
 /// checked in interval arithmetic; with a `radius`, for every point within
 /// that distance of the hull (d·p − radius·|d| > 0).
-fn half_plane(points: &[Point], radius: f64) -> Result<[f64; 2], String> {
+pub(super) fn half_plane(points: &[Point], radius: f64) -> Result<[f64; 2], String> {
     let d = points.iter().fold([0.0, 0.0], |s, p| [s[0] + p[0].mid(), s[1] + p[1].mid()]);
     let reach =
         Interval::point(radius) * Interval::sqrt(&(Interval::point(d[0]).square() + Interval::point(d[1]).square()));
@@ -1352,7 +1352,7 @@ fn half_plane(points: &[Point], radius: f64) -> Result<[f64; 2], String> {
 /// positive x-axis, upward crossings with the origin on the left counted +1,
 /// downward ones with it on the right −1. The y signs are exact; the sign of
 /// the orientation a × b is taken from its enclosure and must be decided.
-fn polygon_winding(polygon: &[[f64; 2]]) -> Result<i64, String> {
+pub(super) fn polygon_winding(polygon: &[[f64; 2]]) -> Result<i64, String> {
     let k = polygon.len();
     let mut winding = 0i64;
     for i in 0..k {

@@ -48,6 +48,7 @@ pub mod s31;
 pub mod spectrum;
 pub mod step_rotation;
 pub mod tagged;
+pub mod tagged_charmap;
 
 pub use charmap::{certify_charmap, CharMapCertificate};
 pub use spectrum::{certify_analysis, certify_spectrum, SpectrumCertificate, Verdict};

@@ -174,8 +174,25 @@ pub fn charmap(a: &CharmapArgs, scheme: Box<dyn Scheme>) -> Result<i32, Error> {
     check_flags(a)?;
     let style = a.figure.style()?;
     let config = super::commands::configuration(scheme.as_ref(), &a.config)?;
-    if a.certify {
-        super::commands::refuse_tagged("charmap --certify", &config)?;
+    // at a tagged vertex the certificate is the sector map's
+    // (`certify::tagged_charmap`): boundary vertices only, no document yet
+    let tagged = config.tagging.is_some();
+    if a.certify && tagged {
+        if let Some(t) = config.tagging.filter(|t| *t != crate::neighbourhood::Tagging::Boundary) {
+            return Err(Error::Input(format!(
+                "charmap --tag {} --certify: only boundary vertices (--tag boundary) are certified yet; the \
+                 floating-point charmap --tag {} decides this one",
+                t.name(),
+                t.name()
+            )));
+        }
+        if a.certificate.is_some() {
+            return Err(Error::Input(
+                "charmap --tag boundary --certify --certificate: no certificate document at tagged vertices yet \
+                 (spectrum --tag --certify --certificate writes the spectral part's)"
+                    .into(),
+            ));
+        }
     }
     let levels = a.levels.unwrap_or_else(|| crate::charmap::default_levels(scheme.as_ref()));
     let opts = CharMapOptions {
@@ -193,6 +210,30 @@ pub fn charmap(a: &CharmapArgs, scheme: Box<dyn Scheme>) -> Result<i32, Error> {
         &Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false },
     )?;
     let map = check_map(scheme.as_ref(), &analysis, &opts)?;
+    if a.certify && tagged {
+        let c = crate::certify::tagged_charmap::certify_tagged_charmap(scheme.as_ref(), &analysis, a.certify_levels)?;
+        if let Some(out) = &a.out {
+            if map.ring.is_none() {
+                return Err(Error::Input(format!("no figure written: {}", map.explanation)));
+            }
+            let fig = RingFigure { map: &map, copies: a.rings, wedge: a.wedge, sectors: a.sectors, style };
+            plot::save(&fig, out)?;
+            plot::save_data(&fig, a.figure.data_path()?)?;
+        }
+        let status = super::commands::certified_status(&c.sector_criterion, c.conditional);
+        if a.json {
+            #[derive(serde::Serialize)]
+            struct Certified<'a> {
+                #[serde(flatten)]
+                map: &'a CharMap,
+                certificate: &'a crate::certify::tagged_charmap::TaggedCharMapCertificate,
+            }
+            print_json(&Certified { map: &map, certificate: &c })?
+        } else {
+            crate::io::out(&format!("{}\n{}", table(&map), tagged_certificate_table(&c)))?
+        }
+        return Ok(status);
+    }
     let certificate = if a.certify {
         let c = crate::certify::certify_charmap(scheme.as_ref(), &analysis, a.certify_levels)?;
         if let Some(path) = &a.certificate {
@@ -229,6 +270,41 @@ pub fn charmap(a: &CharmapArgs, scheme: Box<dyn Scheme>) -> Result<i32, Error> {
         (false, Some(c)) => crate::io::out(&format!("{}\n{}", table(&map), certificate_table(c)))?,
     }
     Ok(status)
+}
+
+/// The sector map's certificate at a boundary vertex as text.
+fn tagged_certificate_table(c: &crate::certify::tagged_charmap::TaggedCharMapCertificate) -> String {
+    let mut out = format!(
+        "certified sector criterion (Zorin 2000; Biermann–Levin–Zorin 2000): {}{}\n",
+        c.sector_criterion.display(),
+        if c.conditional { ", given the spectral premises confirmed to interval overlap only" } else { "" }
+    );
+    out += &format!(
+        "  spectral part: {} (decided by {})\n",
+        c.spectrum.verdict.display(),
+        c.spectrum.decided_by.unwrap_or("-")
+    );
+    out += &format!("  regularity:    {}\n", c.regularity.display());
+    out += &format!("  injectivity:   {}\n", c.injectivity.display());
+    if let Some(l) = c.levels {
+        out += &format!(
+            "  ring faces at {l} levels: {} ({} across a sharp ray; {} Jacobian > 0, {} Jacobian < 0, {} undecided); \
+             {} stencils compared exactly\n",
+            c.ring_faces, c.boundary_faces, c.positive_faces, c.negative_faces, c.undecided_faces, c.rules_checked
+        );
+    }
+    let f = |x: Option<f64>| x.map_or("-".to_string(), |v| format!("{v:.3e}"));
+    out += &format!(
+        "  eigenvector enclosure radius {}; widest net point {}; doubled chain's winding number {}\n",
+        f(c.eigenvector_radius),
+        f(c.max_point_width),
+        c.winding_number.map_or("-".to_string(), |w| w.to_string())
+    );
+    for r in &c.reasons {
+        out += &format!("  - {r}\n");
+    }
+    out += "  evidence: proof (interval enclosures and exact rational rule and curve checks)\n";
+    out
 }
 
 /// The characteristic-map certificate as text: the three verdicts and the

@@ -71,7 +71,9 @@ fn certified_map(
     levels: &Option<usize>,
     names: CertificateNames,
 ) -> Result<Finding, Error> {
-    subject.refuse_tag("the certified characteristic map")?;
+    if subject.tag.is_some() {
+        return certified_boundary_map(subject, expect, levels, names);
+    }
     over_independent_valences(subject, |subject, n| {
         let (scheme, config) = subject_config(subject, n)?;
         let options =
@@ -104,6 +106,62 @@ fn certified_map(
             format!(
                 "certified spectrum {}, regularity {}, injectivity {} (winding {}{bound})",
                 c.spectrum.verdict.word(),
+                c.regularity.display(),
+                c.injectivity.display(),
+                c.winding_number.map(|w| w.to_string()).unwrap_or_else(|| "-".into())
+            ),
+        ))
+    })
+}
+
+/// The sector criterion at a boundary vertex by the certified sector map
+/// (`charmap --tag boundary --certify`, `certify::tagged_charmap`); other
+/// tags, and certificate documents, are refused in one line.
+fn certified_boundary_map(
+    subject: &Subject,
+    expect: &bool,
+    levels: &Option<usize>,
+    names: CertificateNames,
+) -> Result<Finding, Error> {
+    if subject.tag.as_deref() != Some("boundary") {
+        subject.refuse_tag("the certified characteristic map (boundary vertices only)")?;
+    }
+    over_independent_valences(subject, |subject, n| {
+        if names.path(subject, n).is_some() {
+            return Err(Error::Claim(
+                "tag = \"boundary\": the certified sector map writes no certificate document yet".into(),
+            ));
+        }
+        let (scheme, config) = subject_config(subject, n)?;
+        let options =
+            crate::spectrum::Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
+        let analysis = crate::spectrum::analyse_shared(scheme.as_ref(), &config, &options)?;
+        let most = levels.unwrap_or(crate::certify::charmap::DEFAULT_MAX_LEVELS);
+        let c = crate::certify::tagged_charmap::certify_tagged_charmap(scheme.as_ref(), &analysis, most)?;
+        use crate::certify::Verdict;
+        let got = match &c.sector_criterion {
+            Verdict::Disproved(_) if !c.conditional => false,
+            Verdict::Proved if !c.conditional => true,
+            Verdict::Proved | Verdict::Disproved(_) => {
+                return Err(Error::Undecided(format!(
+                    "n = {n}: the certificate is {} only given a premise confirmed to interval overlap: no \
+                     unconditional proof",
+                    c.sector_criterion.word()
+                )))
+            }
+            Verdict::NotProved(why) => {
+                return Err(Error::Undecided(format!("n = {n}: certificate NOT PROVED ({why})")))
+            }
+        };
+        Ok((
+            got == *expect,
+            if *expect { "proved regular and injective on the sector".into() } else { "disproved".into() },
+            format!(
+                "certified sector criterion {} by the sector map (spectral part {}, decided by {}); regularity {}, \
+                 injectivity {} (doubled winding {})",
+                c.sector_criterion.word(),
+                c.spectrum.verdict.word(),
+                c.spectrum.decided_by.unwrap_or("-"),
                 c.regularity.display(),
                 c.injectivity.display(),
                 c.winding_number.map(|w| w.to_string()).unwrap_or_else(|| "-".into())
