@@ -130,20 +130,33 @@ pub fn primitive_part(f: &[BigInt]) -> Vec<BigInt> {
     f.iter().map(|c| c / &g).collect()
 }
 
-/// Whether d divides f over Z (d primitive, nonzero; by Gauss's lemma this
-/// is divisibility over Q too).
-pub fn divides(d: &[BigInt], f: &[BigInt]) -> bool {
+/// f / d over Z when d divides f (d nonzero, lowest coefficient first),
+/// else None. Every step divides by d's leading coefficient exactly, so no
+/// rational is formed: dividing a degree-394 polynomial with
+/// thousand-digit coefficients by its gcd with the derivative took
+/// seconds over Q, in the gcds of each rational's normalisation. For a
+/// primitive d, divisibility over Z is divisibility over Q (Gauss's lemma).
+pub fn exact_quotient(f: &[BigInt], d: &[BigInt]) -> Option<Vec<BigInt>> {
     let mut r: Vec<BigInt> = f.to_vec();
     while r.last().is_some_and(Zero::is_zero) {
         r.pop();
     }
+    let mut d = d.to_vec();
+    while d.last().is_some_and(Zero::is_zero) {
+        d.pop();
+    }
+    assert!(!d.is_empty(), "division by the zero polynomial");
     let dd = d.len() - 1;
+    if r.len() <= dd {
+        return r.is_empty().then(|| vec![BigInt::zero()]);
+    }
+    let mut quotient = vec![BigInt::zero(); r.len() - dd];
     let lead = &d[dd];
     while r.len() > dd {
         let top = r.len() - 1;
         let (c, rem) = r[top].div_rem(lead);
         if !rem.is_zero() {
-            return false;
+            return None;
         }
         let k = top - dd;
         if !c.is_zero() {
@@ -151,12 +164,19 @@ pub fn divides(d: &[BigInt], f: &[BigInt]) -> bool {
                 r[i + k] -= &c * x;
             }
         }
+        quotient[k] = c;
         r.pop();
         while r.last().is_some_and(Zero::is_zero) {
             r.pop();
         }
     }
-    r.is_empty()
+    r.is_empty().then_some(quotient)
+}
+
+/// Whether d divides f over Z (d primitive, nonzero; by Gauss's lemma this
+/// is divisibility over Q too).
+pub fn divides(d: &[BigInt], f: &[BigInt]) -> bool {
+    exact_quotient(f, d).is_some()
 }
 
 /// The gcd of two nonzero integer polynomials (lowest coefficient first),
@@ -261,6 +281,17 @@ mod tests {
         let f = mul(&big, &z(&[1, 0, 1]));
         let g = mul(&big, &z(&[-1, 1]));
         assert_eq!(gcd(&f, &g), big);
+    }
+
+    #[test]
+    fn exact_quotients() {
+        // (3x² − 5)(7x + 2) / (7x + 2) = 3x² − 5; by x − 1: not exact
+        let a = z(&[-5, 0, 3]);
+        let b = z(&[2, 7]);
+        assert_eq!(exact_quotient(&mul(&a, &b), &b), Some(a.clone()));
+        assert_eq!(exact_quotient(&mul(&a, &b), &z(&[-1, 1])), None);
+        // 2x + 2 by 2x + 1: the remainder 1 is not zero
+        assert_eq!(exact_quotient(&z(&[2, 2]), &z(&[1, 2])), None);
     }
 
     #[test]

@@ -233,9 +233,44 @@ fn slope(p: &[QT]) -> Rational {
     e
 }
 
-/// P̃(y) = L^d P(y/L): integer coefficients (L a multiple of every
-/// denominator; P monic).
-fn scaled(p: &[QT], l: &BigInt) -> Vec<ZT> {
+/// The least common scale L (up to primes above 1000) with L^k·c_{d−k}
+/// integral for every k ≥ 1 and each monic P = Σ c_j x^j given: then
+/// P̃(y) = L^d P(y/L) has integer coefficients.
+///
+/// Why not the lcm of all denominators (as before): a coefficient of
+/// x^{d−k} with denominator 3^{3k} needs L = 3³, not 3^{3d}. The
+/// resultant's coefficients grow like L^{2·D·deg G}: at unified-sqrt3,
+/// n = 3, the lcm was 2⁸·3³⁰ and 12 466 of the 13 355 bits of the largest
+/// coefficient were that content — the primes paid for it, and the
+/// isolation too. Primes below 1000 get the exponent max_k ⌈v_q(den_k)/k⌉
+/// (trial division); any cofactor left is taken whole (still sound:
+/// it divides L, so L^k too).
+fn common_scale(polys: &[&Vec<QT>]) -> BigInt {
+    let small: Vec<u64> = (2u64..1000).filter(|&q| is_prime(q)).collect();
+    let mut exponent = vec![0u64; small.len()];
+    let mut rough = BigInt::one();
+    for p in polys {
+        let d = p.len() - 1;
+        for k in 1..=d {
+            let mut den = p[d - k].iter().fold(BigInt::one(), |l, c| l.lcm(c.denom()));
+            for (i, &q) in small.iter().enumerate() {
+                let qb = BigInt::from(q);
+                let mut v = 0u64;
+                while (&den % &qb).is_zero() {
+                    den /= &qb;
+                    v += 1;
+                }
+                exponent[i] = exponent[i].max(v.div_ceil(k as u64));
+            }
+            rough = rough.lcm(&den);
+        }
+    }
+    small.iter().zip(&exponent).fold(rough, |l, (&q, &e)| l * num_traits::pow(BigInt::from(q), e as usize))
+}
+
+/// P̃(y) = L^d P(y/L) (P monic): integer coefficients when L is a
+/// `common_scale` of P; None when one is not an integer.
+fn scaled(p: &[QT], l: &BigInt) -> Option<Vec<ZT>> {
     let d = p.len() - 1;
     p.iter()
         .enumerate()
@@ -244,8 +279,7 @@ fn scaled(p: &[QT], l: &BigInt) -> Vec<ZT> {
             a.iter()
                 .map(|c| {
                     let v = c * &f;
-                    debug_assert!(v.is_integer());
-                    v.to_integer()
+                    v.is_integer().then(|| v.to_integer())
                 })
                 .collect()
         })
@@ -465,6 +499,7 @@ pub(crate) enum Crossings {
 /// identically).
 pub(crate) fn crossings(block: &BiPoly, target: &BiPoly) -> Result<Crossings, String> {
     let not_rational = "the modulus family needs block polynomials with rational coefficients";
+    let not_integral = "the modulus family's scaled block polynomial is not integral (an internal error)";
     let a = rational_coefficients(block).ok_or(not_rational)?;
     let b = rational_coefficients(target).ok_or(not_rational)?;
     for p in [&a, &b] {
@@ -477,16 +512,18 @@ pub(crate) fn crossings(block: &BiPoly, target: &BiPoly) -> Result<Crossings, St
     if d < 2 || b.len() < 2 {
         return Ok(Crossings::Nothing);
     }
-    let l = a.iter().chain(&b).flatten().fold(BigInt::one(), |l, c| l.lcm(c.denom()));
-    let (za, zb) = (scaled(&a, &l), scaled(&b, &l));
+    let l = common_scale(&[&a, &b]);
+    let (za, zb) = (scaled(&a, &l).ok_or(not_integral)?, scaled(&b, &l).ok_or(not_integral)?);
     let dd = d * (d - 1) / 2;
     let ng = b.len() - 1;
     let e = slope(&a).max(slope(&b));
     let bound = (e * Rational::from_integer(BigInt::from(2 * dd * ng))).floor().to_integer();
     let bound = bound.to_usize().filter(|&b| b < 100_000).ok_or("a modulus resultant of too high degree in t")?;
     let (ra, rb) = (root_bound(&za), root_bound(&zb));
-    let one = BigInt::one();
-    let need_bits = (dd * ng) as u64 * ((&one + &ra * &ra).bits() + (&one + &rb * &rb).bits()) + 2;
+    // |Res(t)| = ∏_{k, i<j} |y_k² − x_i x_j| ≤ (ρ_b² + ρ_a²)^{D·deg G} on
+    // |t| = 1, so every coefficient (a Cauchy integral there) too; twice
+    // that, plus one bit for the sign, is what the primes' product exceeds
+    let need_bits = (dd * ng) as u64 * (&ra * &ra + &rb * &rb).bits() + 2;
     let mut acc: Vec<BigInt> = Vec::new();
     let mut modulus = BigInt::one();
     let mut zero_images = 0;
