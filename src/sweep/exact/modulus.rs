@@ -24,19 +24,20 @@
 //!    block polynomials of real coefficients; at n = 3, 4, 6 they are
 //!    rational, Q(ζ_n) ∩ R = Q); roots constant in t at 0, 1, −1 divided
 //!    out (a constant real root is never one of a non-real pair).
-//! 2. A common scale L (lcm of the denominators): P̃(y) = L^d P(y/L) has
-//!    integer coefficients in t and roots L·x, so E and G of the scaled
-//!    polynomials are E(L²s)·L^{2D}-type rescalings with the same crossings.
+//! 2. A common scale L, the least (up to primes above 1000) with
+//!    L^k·c_{d−k} integral for every k and both polynomials:
+//!    P̃(y) = L^d P(y/L) has integer coefficients in t and roots L·x, so E
+//!    and G of the scaled polynomials have roots L²·x_i x_j and L²·y_k²:
+//!    the same crossings, and Res only multiplied by L^{2D·deg G}.
 //! 3. Res_s(E, G) is isobaric of weight D·deg G in the coefficients (the
 //!    coefficient of s^{D−k} weighs k); the coefficient of x^{d−k} of P has
 //!    degree ≤ e·k in t (e the larger slope max_k deg_t(c_k)/k of P and T),
 //!    so E's and G's weigh 2e per unit and deg_t Res ≤ 2e·D·deg G =: B.
 //! 4. On |t| = 1 every coefficient of P̃ is at most its integer 1-norm m_k,
-//!    every root at most ρ = 2 max_k ⌈m_k^{1/k}⌉ (Fujiwara), E's
-//!    coefficient of s^{D−k} at most C(D, k) ρ^{2k}: each Sylvester row has
-//!    1-norm at most (1 + ρ²)^D (E's) or (1 + ρ_T²)^{deg G} (G's), and by
-//!    Hadamard |Res(t)| ≤ ((1 + ρ²)(1 + ρ_T²))^{D·deg G} =: M there. Each
-//!    coefficient of Res is a Cauchy integral over |t| = 1, so at most M.
+//!    every root at most ρ = 2 max_k ⌈m_k^{1/k}⌉ (Fujiwara). Res(E, G) =
+//!    ∏_{k, i<j} (y_k² − x_i x_j) (both monic), so |Res(t)| ≤
+//!    (ρ_T² + ρ²)^{D·deg G} =: M there. Each coefficient of Res is a Cauchy
+//!    integral over |t| = 1, so at most M.
 //! 5. Modulo primes p < 2^31 (p > B): at t = 0, 1, ..., B, E by Newton's
 //!    identities (power sums of P, q_k = (p_k² − p_{2k})/2 the power sums of
 //!    the products, back to coefficients), G by root squaring, Res = det of
@@ -49,17 +50,19 @@ use num_integer::Integer;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 use crate::numeric::exact::Poly;
-use crate::numeric::modular::{is_prime, pow_mod};
+use crate::numeric::modular::{
+    det_word, eval_word, from_word_values, is_prime, residue, word_inv as inv, word_mul as mm, Lifted,
+};
 use crate::numeric::{BiPoly, Rational, TPoly};
 
 /// A polynomial in t over Q, lowest first.
-type QT = Vec<Rational>;
+pub(crate) type QT = Vec<Rational>;
 /// A polynomial in t over Z, lowest first.
 type ZT = Vec<BigInt>;
 
 /// The coefficients of p (of x^0, x^1, ...) as polynomials in t over Q, or
 /// None when one is not rational.
-fn rational_coefficients(p: &BiPoly) -> Option<Vec<QT>> {
+pub(crate) fn rational_coefficients(p: &BiPoly) -> Option<Vec<QT>> {
     p.iter()
         .map(|c: &TPoly| {
             if !c.is_defined() {
@@ -301,19 +304,7 @@ fn root_bound(p: &[ZT]) -> BigInt {
     r * 2
 }
 
-// ---- arithmetic modulo a prime below 2^31 (products fit in u64) ----
-
-fn mm(a: u64, b: u64, p: u64) -> u64 {
-    a * b % p
-}
-
-fn inv(a: u64, p: u64) -> u64 {
-    pow_mod(a, p - 2, p)
-}
-
-fn reduce(c: &BigInt, p: u64) -> u64 {
-    c.mod_floor(&BigInt::from(p)).to_u64().expect("a residue below p")
-}
+// ---- arithmetic modulo a word prime (`numeric::modular`) ----
 
 /// Power sums p_1..p_k of the roots of the monic c (lowest first), by
 /// Newton's identities.
@@ -424,62 +415,8 @@ fn resultant_monic(e: &[u64], g: &[u64], p: u64) -> u64 {
         shifted[1..].copy_from_slice(&v);
         v = rem_monic(&shifted, g, p);
     }
-    // determinant by elimination (of the transpose: the same)
-    let mut m = cols;
-    let mut det = 1u64;
-    for c in 0..n {
-        let Some(r) = (c..n).find(|&r| m[r][c] != 0) else { return 0 };
-        if r != c {
-            m.swap(r, c);
-            det = (p - det) % p;
-        }
-        det = mm(det, m[c][c], p);
-        let iv = inv(m[c][c], p);
-        for r in c + 1..n {
-            if m[r][c] == 0 {
-                continue;
-            }
-            let f = mm(m[r][c], iv, p);
-            for k in c..n {
-                m[r][k] = (m[r][k] + p - mm(f, m[c][k], p)) % p;
-            }
-        }
-    }
-    det
-}
-
-fn eval_mod(a: &[u64], t: u64, p: u64) -> u64 {
-    a.iter().rev().fold(0u64, |acc, &c| (mm(acc, t, p) + c) % p)
-}
-
-/// The coefficients of the polynomial of degree ≤ B through (i, y_i),
-/// i = 0..=B, modulo p (Newton's divided differences).
-fn interpolate_mod(y: &[u64], p: u64) -> Vec<u64> {
-    let n = y.len();
-    let mut dd = y.to_vec();
-    for level in 1..n {
-        let il = inv(level as u64, p);
-        for i in (level..n).rev() {
-            dd[i] = mm((dd[i] + p - dd[i - 1]) % p, il, p);
-        }
-    }
-    let mut out = vec![dd[n - 1]];
-    for i in (0..n - 1).rev() {
-        // out = out·(t − i) + dd[i]
-        let mut next = vec![0u64; out.len() + 1];
-        for (k, &c) in out.iter().enumerate() {
-            next[k + 1] = (next[k + 1] + c) % p;
-            next[k] = (next[k] + p - mm(c, i as u64 % p, p)) % p;
-        }
-        next[0] = (next[0] + dd[i]) % p;
-        out = next;
-    }
-    out
-}
-
-/// The primes below 2^31, largest first.
-fn small_primes() -> impl Iterator<Item = u64> {
-    ((1u64 << 30)..(1u64 << 31)).rev().filter(|&n| n % 2 == 1 && is_prime(n))
+    // the determinant of the transpose: the same
+    det_word(cols, p)
 }
 
 /// What the family gives for one pair (block polynomial, target).
@@ -524,54 +461,26 @@ pub(crate) fn crossings(block: &BiPoly, target: &BiPoly) -> Result<Crossings, St
     // |t| = 1, so every coefficient (a Cauchy integral there) too; twice
     // that, plus one bit for the sign, is what the primes' product exceeds
     let need_bits = (dd * ng) as u64 * (&ra * &ra + &rb * &rb).bits() + 2;
-    let mut acc: Vec<BigInt> = Vec::new();
-    let mut modulus = BigInt::one();
-    let mut zero_images = 0;
-    for p in small_primes() {
+    let lifted = from_word_values(bound, need_bits, Some(3), |p| {
         let (pa, pb): (Vec<Vec<u64>>, Vec<Vec<u64>>) = (
-            za.iter().map(|c| c.iter().map(|x| reduce(x, p)).collect()).collect(),
-            zb.iter().map(|c| c.iter().map(|x| reduce(x, p)).collect()).collect(),
+            za.iter().map(|c| c.iter().map(|x| residue(x, p)).collect()).collect(),
+            zb.iter().map(|c| c.iter().map(|x| residue(x, p)).collect()).collect(),
         );
-        let values: Vec<u64> = (0..=bound as u64)
+        (0..=bound as u64)
             .map(|t| {
-                let ca: Vec<u64> = pa.iter().map(|c| eval_mod(c, t, p)).collect();
-                let cb: Vec<u64> = pb.iter().map(|c| eval_mod(c, t, p)).collect();
+                let ca: Vec<u64> = pa.iter().map(|c| eval_word(c, t, p)).collect();
+                let cb: Vec<u64> = pb.iter().map(|c| eval_word(c, t, p)).collect();
                 resultant_monic(&exterior_square(&ca, p), &root_squared(&cb, p), p)
             })
-            .collect();
-        let image = interpolate_mod(&values, p);
-        if modulus.is_one() && image.iter().all(|&c| c == 0) {
-            zero_images += 1;
-            if zero_images == 3 {
-                return Err("the modulus resultant vanishes modulo three primes (identically, probably)".into());
-            }
-            continue;
+            .collect()
+    });
+    let coeffs: Vec<Rational> = match lifted {
+        Lifted::GaveUpOnZero => {
+            return Err("the modulus resultant vanishes modulo three primes (identically, probably)".into())
         }
-        // Chinese remainders: x ≡ acc (mod M), x ≡ image (mod p)
-        if acc.is_empty() {
-            acc = vec![BigInt::zero(); image.len()];
-        }
-        let pbig = BigInt::from(p);
-        let m_inv = inv(reduce(&modulus, p), p);
-        for (x, &r) in acc.iter_mut().zip(&image) {
-            let xp = reduce(x, p);
-            let k = mm((r + p - xp) % p, m_inv, p);
-            *x += &modulus * BigInt::from(k);
-        }
-        modulus *= &pbig;
-        if modulus.bits() > need_bits {
-            break;
-        }
-    }
-    let half = &modulus / 2;
-    let mut coeffs: Vec<Rational> =
-        acc.iter().map(|x| Rational::from_integer(if x > &half { x - &modulus } else { x.clone() })).collect();
-    while coeffs.len() > 1 && coeffs.last().is_some_and(Zero::is_zero) {
-        coeffs.pop();
-    }
-    if coeffs.iter().all(Zero::is_zero) {
-        return Err("the modulus resultant vanishes identically".into());
-    }
+        Lifted::Exact(c) if c.is_empty() => return Err("the modulus resultant vanishes identically".into()),
+        Lifted::Exact(c) => c.into_iter().map(Rational::from_integer).collect(),
+    };
     Ok(Crossings::Resultant(Poly { coeffs }))
 }
 
