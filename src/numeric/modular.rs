@@ -450,7 +450,7 @@ mod tests {
     fn polynomials_from_values_modulo_word_primes() {
         // f(t) = −3·10^30 + 7t − t³: coefficients below 2^100; its values
         // modulo each prime give it back exactly
-        let big = BigInt::from(10).pow(30) * 3;
+        let big: BigInt = BigInt::from(10).pow(30u32) * 3;
         let f = vec![-big.clone(), BigInt::from(7), BigInt::zero(), BigInt::from(-1)];
         let value = |p: u64| -> Vec<u64> {
             let r: Vec<u64> = f.iter().map(|c| residue(c, p)).collect();

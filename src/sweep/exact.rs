@@ -1046,4 +1046,18 @@ mod tests {
         let r = rational_norm(&r).unwrap();
         assert_eq!(sturm::squarefree(&r), sturm::primitive(&Poly { coeffs: vec![q(-1, 1), q(1, 1)] }));
     }
+
+    #[test]
+    fn a_common_factor_makes_the_first_coefficients_vanish() {
+        // a = (x − 1)(x² − t) = x³ − x² − t x + t, b = (x − 1)(x − 2) =
+        // x² − 3x + 2: gcd x − 1 for every t, so psc_0 = Res ≡ 0 (proved by
+        // the coefficient bound, modulo primes) and psc_1 ∝ Res(x² − t,
+        // x − 2) = 4 − t: the gcd rises exactly at t = 4
+        let c = |x: i64| TPoly::int(x);
+        let t = TPoly::variable();
+        let a = vec![t.clone(), -t, c(-1), c(1)];
+        let b = vec![c(2), c(-3), c(1)];
+        let r = rational_norm(&first_subresultant(&a, &b).unwrap().unwrap()).unwrap();
+        assert_eq!(sturm::primitive(&r), sturm::primitive(&Poly { coeffs: vec![q(-4, 1), q(1, 1)] }));
+    }
 }

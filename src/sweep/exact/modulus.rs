@@ -567,6 +567,24 @@ mod tests {
     }
 
     #[test]
+    fn the_common_scale_is_the_least_per_power() {
+        // P = x² + (t/3) x − t/72: c_1 has denominator 3 (k = 1: 3¹), c_0
+        // denominator 2³·3² (k = 2: 2^⌈3/2⌉·3^⌈2/2⌉ = 4·3), so L = 12 and
+        // 144·P(y/12) = y² + 4t y − 2t (the lcm 72 would also work, with
+        // 72² instead of 12² in every coefficient)
+        let p = vec![
+            vec![Rational::zero(), Rational::new((-1).into(), 72.into())],
+            vec![Rational::zero(), Rational::new(1.into(), 3.into())],
+            vec![Rational::one()],
+        ];
+        let l = common_scale(&[&p]);
+        assert_eq!(l, BigInt::from(12));
+        let z = scaled(&p, &l).unwrap();
+        let ints = |v: &[i64]| v.iter().map(|&x| BigInt::from(x)).collect::<Vec<_>>();
+        assert_eq!(z, vec![ints(&[0, -2]), ints(&[0, 4]), ints(&[1])]);
+    }
+
+    #[test]
     fn resultant_is_the_product_over_roots() {
         // E = s − 7, G = (s − 2)(s − 3): E(2) E(3) = 20
         assert_eq!(resultant_monic(&[P - 7, 1], &[6, P - 5, 1], P), 20);
