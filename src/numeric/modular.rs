@@ -355,22 +355,23 @@ pub(crate) enum Lifted {
 
 /// The integer polynomial f of degree ≤ `degree` whose every coefficient is
 /// below 2^`bits` in absolute value, from `values(p)` = (f(0), ..., f(degree))
-/// modulo each word prime p. The primes are used until their product
-/// exceeds 2^(bits + 1) (then the symmetric lift is f exactly).
+/// modulo each word prime p (None: p is not usable, skip it — e.g. no
+/// root of unity of the order needed). The primes are used until their
+/// product exceeds 2^(bits + 1) (then the symmetric lift is f exactly).
 /// `give_up_on_zero`: stop after that many all-zero images while every image
 /// so far is zero (None: prove the zero too).
 pub(crate) fn from_word_values(
     degree: usize,
     bits: u64,
     give_up_on_zero: Option<usize>,
-    mut values: impl FnMut(u64) -> Vec<u64>,
+    mut values: impl FnMut(u64) -> Option<Vec<u64>>,
 ) -> Lifted {
     assert!(degree < 1 << 29, "the points 0..degree are distinct modulo word primes");
     let mut acc: Vec<BigInt> = vec![BigInt::zero(); degree + 1];
     let mut modulus = BigInt::one();
     let mut all_zero_so_far = 0usize;
     for p in word_primes() {
-        let v = values(p);
+        let Some(v) = values(p) else { continue };
         debug_assert_eq!(v.len(), degree + 1);
         let image = interpolate_word(&v, p);
         if image.iter().all(|&c| c == 0) && acc.iter().all(Zero::is_zero) {
@@ -454,12 +455,12 @@ mod tests {
         let f = vec![-big.clone(), BigInt::from(7), BigInt::zero(), BigInt::from(-1)];
         let value = |p: u64| -> Vec<u64> {
             let r: Vec<u64> = f.iter().map(|c| residue(c, p)).collect();
-            (0..=5u64).map(|t| eval_word(&r, t, p)).collect()
+            Some((0..=5u64).map(|t| eval_word(&r, t, p)).collect())
         };
         assert_eq!(from_word_values(5, 100, None, value), Lifted::Exact(f.clone()));
         // the zero polynomial: proved (empty), or given up on when asked
-        assert_eq!(from_word_values(3, 100, None, |_| vec![0; 4]), Lifted::Exact(vec![]));
-        assert_eq!(from_word_values(3, 100, Some(2), |_| vec![0; 4]), Lifted::GaveUpOnZero);
+        assert_eq!(from_word_values(3, 100, None, |_| Some(vec![0; 4])), Lifted::Exact(vec![]));
+        assert_eq!(from_word_values(3, 100, Some(2), |_| Some(vec![0; 4])), Lifted::GaveUpOnZero);
         // det [[2, 3], [5, 7]] = −1
         let p = word_primes().next().unwrap();
         assert_eq!(det_word(vec![vec![2, 3], vec![5, 7]], p), p - 1);

@@ -908,10 +908,11 @@ pub(crate) fn first_subresultant(a: &BiPoly, b: &BiPoly) -> Result<Option<CPoly>
     // the same psc_j by values modulo word primes, proved exact by a
     // coefficient bound (`subresultant`) — the cyclotomic eliminations
     // below cost seconds per pair at unified-sqrt3
-    if let (Some(ra), Some(rb)) = (modulus::rational_coefficients(a), modulus::rational_coefficients(b)) {
-        if let Some(c) = subresultant::first_nonzero_psc(&ra, &rb, &bound) {
-            return Ok(Some(c.into_iter().map(|x| Cyclotomic::from_rational(&Rational::from_integer(x))).collect()));
-        }
+    // (Q(ζ_N) coefficients: the norm over the pair's distinct conjugates,
+    // whose roots contain psc_j's — the callers take that norm next anyway)
+    let conjugates = distinct_conjugates(a, b);
+    if let Some(c) = subresultant::first_nonzero_psc(a, b, &conjugates, &bound) {
+        return Ok(Some(c.into_iter().map(|x| Cyclotomic::from_rational(&Rational::from_integer(x))).collect()));
     }
     // psc_j has degree ≤ bound(j) in t: one nonzero value shows it is not
     // identically zero, bound(j) + 1 zeros that it is; the points 0, −1, 1,
@@ -957,6 +958,31 @@ pub(crate) fn interpolate(x: &[Rational], y: &[Cyclotomic]) -> CPoly {
         p.pop();
     }
     p
+}
+
+/// The a in (Z/N)^* (N the lcm of the coefficients' orders) whose σ_a
+/// give the distinct conjugates σ_a(a, b) of the pair, 1 first.
+fn distinct_conjugates(a: &BiPoly, b: &BiPoly) -> Vec<u64> {
+    let order = a.iter().chain(b).flat_map(|c| c.coeffs().iter()).fold(1u64, |l, c| {
+        let m = c.order().unwrap_or(1) as u64;
+        l / crate::numeric::weight::gcd(l as i64, m as i64) as u64 * m
+    });
+    let conj = |p: &BiPoly, s: u64| -> Vec<Vec<Cyclotomic>> {
+        p.iter().map(|c| c.coeffs().iter().map(|x| conjugate(x, s)).collect()).collect()
+    };
+    let mut seen: Vec<(Vec<Vec<Cyclotomic>>, Vec<Vec<Cyclotomic>>)> = Vec::new();
+    let mut out = Vec::new();
+    for s in 1..order.max(2) {
+        if crate::numeric::weight::gcd(s as i64, order as i64) != 1 {
+            continue;
+        }
+        let pair = (conj(a, s), conj(b, s));
+        if !seen.contains(&pair) {
+            seen.push(pair);
+            out.push(s);
+        }
+    }
+    out
 }
 
 /// σ_a(c): ζ_N ↦ ζ_N^a on an element of order dividing N (a coprime to N).

@@ -462,6 +462,7 @@ pub(crate) fn crossings(block: &BiPoly, target: &BiPoly) -> Result<Crossings, St
     // that, plus one bit for the sign, is what the primes' product exceeds
     let need_bits = (dd * ng) as u64 * (&ra * &ra + &rb * &rb).bits() + 2;
     let lifted = from_word_values(bound, need_bits, Some(3), |p| {
+        Some({
         let (pa, pb): (Vec<Vec<u64>>, Vec<Vec<u64>>) = (
             za.iter().map(|c| c.iter().map(|x| residue(x, p)).collect()).collect(),
             zb.iter().map(|c| c.iter().map(|x| residue(x, p)).collect()).collect(),
@@ -473,6 +474,7 @@ pub(crate) fn crossings(block: &BiPoly, target: &BiPoly) -> Result<Crossings, St
                 resultant_monic(&exterior_square(&ca, p), &root_squared(&cb, p), p)
             })
             .collect()
+        })
     });
     let coeffs: Vec<Rational> = match lifted {
         Lifted::GaveUpOnZero => {
