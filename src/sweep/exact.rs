@@ -363,7 +363,13 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
         let targets: Vec<&BiPoly> = lambda_polys.iter().chain(std::iter::once(&one_minus_x)).collect();
         'family: for p in &polys {
             for target in &targets {
-                match modulus::crossings(p, target) {
+                // rational coefficients: the family in Q[t]; Q(ζ_N) ones
+                // (n = 5, 7): its norm over the pair's conjugates
+                let family = match modulus::rational_coefficients(p).and(modulus::rational_coefficients(target)) {
+                    Some(_) => modulus::crossings(p, target),
+                    None => modulus::crossings_cyclotomic(p, target, &distinct_conjugates(p, target)),
+                };
+                match family {
                     Ok(modulus::Crossings::Resultant(r)) => {
                         trace(|| {
                             format!(
@@ -962,7 +968,7 @@ pub(crate) fn interpolate(x: &[Rational], y: &[Cyclotomic]) -> CPoly {
 
 /// The a in (Z/N)^* (N the lcm of the coefficients' orders) whose σ_a
 /// give the distinct conjugates σ_a(a, b) of the pair, 1 first.
-fn distinct_conjugates(a: &BiPoly, b: &BiPoly) -> Vec<u64> {
+pub(crate) fn distinct_conjugates(a: &BiPoly, b: &BiPoly) -> Vec<u64> {
     let order = a.iter().chain(b).flat_map(|c| c.coeffs().iter()).fold(1u64, |l, c| {
         let m = c.order().unwrap_or(1) as u64;
         l / crate::numeric::weight::gcd(l as i64, m as i64) as u64 * m

@@ -227,7 +227,7 @@ fn slope(p: &[QT]) -> Rational {
     let d = p.len() - 1;
     let mut e = <Rational as Zero>::zero();
     for k in 1..=d {
-        let deg = p[d - k].iter().rposition(|c| !c.is_zero()).unwrap_or(0);
+        let deg = p[d - k].iter().rposition(|c| !Zero::is_zero(c)).unwrap_or(0);
         let w = Rational::new((deg as i64).into(), (k as i64).into());
         if w > e {
             e = w;
@@ -484,6 +484,297 @@ pub(crate) fn crossings(block: &BiPoly, target: &BiPoly) -> Result<Crossings, St
         Lifted::Exact(c) => c.into_iter().map(Rational::from_integer).collect(),
     };
     Ok(Crossings::Resultant(Poly { coeffs }))
+}
+
+// ---- block polynomials over Q(ζ_N) (valences 5, 7, ...) ----
+//
+// The same family where the block polynomials are real but not rational:
+// the constant roots and the repeated branch are divided out over Q(ζ_N)
+// (the same steps as above, in cyclotomic arithmetic; the polynomials are
+// small), and Res_s(E, G)(t) — in Q(ζ_N)[t] — is replaced by its norm over
+// the distinct Galois conjugates of the pair (block, target), computed by
+// the embeddings ζ_N ↦ w^a modulo primes p ≡ 1 (mod N) as in
+// `subresultant` (step 4 there): the norm is in Z[t] after the scaling,
+// its roots contain Res's, and each conjugate obeys the same coefficient
+// bound, so the norm's coefficients are at most M^k for k conjugates.
+
+use crate::numeric::{Cyclotomic, Weight};
+use crate::sweep::exact::subresultant::{embedded, primitive_root_of_unity, ZetaPoly};
+
+/// A polynomial in t over Q(ζ), lowest first.
+type KT = Vec<Cyclotomic>;
+
+fn kt_trim(mut a: KT) -> KT {
+    while a.last().is_some_and(Weight::is_zero) {
+        a.pop();
+    }
+    a
+}
+
+fn kt_add_scaled(a: &KT, b: &KT, c: &Cyclotomic) -> KT {
+    let mut out = vec![Cyclotomic::zero(); a.len().max(b.len())];
+    for (k, x) in a.iter().enumerate() {
+        out[k] = out[k].clone() + x.clone();
+    }
+    for (k, x) in b.iter().enumerate() {
+        out[k] = out[k].clone() + x.clone() * c.clone();
+    }
+    kt_trim(out)
+}
+
+fn kt_mul(a: &KT, b: &KT) -> KT {
+    if a.is_empty() || b.is_empty() {
+        return KT::new();
+    }
+    let mut out = vec![Cyclotomic::zero(); a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] = out[i + j].clone() + x.clone() * y.clone();
+        }
+    }
+    kt_trim(out)
+}
+
+fn kt_eval(a: &KT, t: &Cyclotomic) -> Cyclotomic {
+    a.iter().rev().fold(Cyclotomic::zero(), |acc, c| acc * t.clone() + c.clone())
+}
+
+/// Constant roots 0, 1, −1 divided out (as `without_constant_roots`).
+fn k_without_constant_roots(mut p: Vec<KT>) -> Vec<KT> {
+    for c in [0i64, 1, -1] {
+        let c = Cyclotomic::from_rational(&Rational::from_integer(c.into()));
+        while p.len() > 1 {
+            let value = p.iter().rev().fold(KT::new(), |acc, a| kt_add_scaled(a, &acc, &c));
+            if !value.is_empty() {
+                break;
+            }
+            let d = p.len() - 1;
+            let mut q = vec![KT::new(); d];
+            q[d - 1] = p[d].clone();
+            for k in (1..d).rev() {
+                q[k - 1] = kt_add_scaled(&p[k], &q[k], &c);
+            }
+            p = q;
+        }
+    }
+    p
+}
+
+/// p / h for the monic h in Q(ζ)[t][x], when h divides p exactly.
+fn k_divide_exactly(p: &[KT], h: &[KT]) -> Option<Vec<KT>> {
+    let (dp, dh) = (p.len() - 1, h.len() - 1);
+    if dh > dp {
+        return None;
+    }
+    let mut r: Vec<KT> = p.to_vec();
+    let mut q = vec![KT::new(); dp - dh + 1];
+    let minus_one = Cyclotomic::from_rational(&-<Rational as One>::one());
+    for k in (0..=dp - dh).rev() {
+        let c = r[k + dh].clone();
+        for (i, hc) in h.iter().enumerate() {
+            r[k + i] = kt_add_scaled(&r[k + i], &kt_mul(&c, hc), &minus_one);
+        }
+        q[k] = c;
+    }
+    r.iter().all(|c| c.is_empty()).then_some(q)
+}
+
+/// The monic gcd of two polynomials in x over Q(ζ) (Euclid; degree ≤ 10
+/// here, so the cyclotomic fractions stay small).
+fn k_gcd(a: &[Cyclotomic], b: &[Cyclotomic]) -> Vec<Cyclotomic> {
+    let (mut a, mut b) = (kt_trim(a.to_vec()), kt_trim(b.to_vec()));
+    while !b.is_empty() {
+        // a mod b
+        let lead = b[b.len() - 1].clone();
+        while a.len() >= b.len() && !a.is_empty() {
+            let f = a[a.len() - 1].clone() / lead.clone();
+            let shift = a.len() - b.len();
+            for (i, x) in b.iter().enumerate() {
+                a[shift + i] = a[shift + i].clone() - f.clone() * x.clone();
+            }
+            a.pop();
+            a = kt_trim(a);
+        }
+        std::mem::swap(&mut a, &mut b);
+    }
+    match a.last().cloned() {
+        Some(lead) => a.into_iter().map(|c| c / lead.clone()).collect(),
+        None => a,
+    }
+}
+
+/// The repeated branch divided out over Q(ζ) (as `without_repeated_factor`:
+/// H = gcd_x(p, ∂p/∂x) at integer t where its degree is least, its
+/// coefficients interpolated (degree ≤ e·j in t), used only when H²
+/// divides p exactly).
+fn k_without_repeated_factor(p: Vec<KT>) -> Vec<KT> {
+    let d = p.len() - 1;
+    let e = p
+        .iter()
+        .enumerate()
+        .take(d)
+        .map(|(k, c)| Rational::new((c.len().saturating_sub(1) as i64).into(), ((d - k) as i64).into()))
+        .fold(<Rational as Zero>::zero(), |a, b| a.max(b));
+    let mut best: Option<(usize, Vec<(Rational, Vec<Cyclotomic>)>)> = None;
+    for t in 0..(2 * d as i64 + 40) {
+        let tq = Rational::from_integer(t.into());
+        let tc = Cyclotomic::from_rational(&tq);
+        let f: Vec<Cyclotomic> = p.iter().map(|c| kt_eval(c, &tc)).collect();
+        let df: Vec<Cyclotomic> = f
+            .iter()
+            .enumerate()
+            .skip(1)
+            .map(|(k, c)| c.clone() * Cyclotomic::from_rational(&Rational::from_integer((k as i64).into())))
+            .collect();
+        let g = k_gcd(&f, &df);
+        let k = g.len().saturating_sub(1);
+        if k == 0 {
+            return p;
+        }
+        match &mut best {
+            Some((bk, pts)) if *bk == k => pts.push((tq, g)),
+            Some((bk, _)) if *bk < k => {}
+            _ => best = Some((k, vec![(tq, g)])),
+        }
+        let need = (e.clone() * Rational::from_integer((k as i64).into())).floor().to_integer().to_usize().unwrap_or(0) + 1;
+        if let Some((bk, pts)) = &best {
+            if *bk == k && pts.len() >= need {
+                let xs: Vec<Rational> = pts.iter().map(|(x, _)| x.clone()).collect();
+                let h: Vec<KT> = (0..=*bk)
+                    .map(|j| {
+                        let ys: Vec<Cyclotomic> = pts.iter().map(|(_, g)| g[j].clone()).collect();
+                        kt_trim(crate::sweep::exact::interpolate(&xs, &ys))
+                    })
+                    .collect();
+                return match k_divide_exactly(&p, &h).and_then(|q| k_divide_exactly(&q, &h).map(|_| q)) {
+                    Some(q) => q,
+                    None => p,
+                };
+            }
+        }
+    }
+    p
+}
+
+/// The ζ-coefficients (exponent of ζ_N, rational) of one element.
+fn zeta_entries(x: &Cyclotomic, order: u64) -> Vec<(u64, Rational)> {
+    let m = x.order().unwrap_or(1) as u64;
+    x.coefficients().map(|(i, r)| (i as u64 * (order / m), r)).collect()
+}
+
+/// The modulus family's polynomial for block polynomials over Q(ζ_N): the
+/// norm of Res_s(E, G) over the `conjugates` (the a with distinct
+/// σ_a(block, target)), as `crossings` for rational ones.
+pub(crate) fn crossings_cyclotomic(block: &BiPoly, target: &BiPoly, conjugates: &[u64]) -> Result<Crossings, String> {
+    let coefficients = |p: &BiPoly| -> Option<Vec<KT>> {
+        p.iter().map(|c| c.is_defined().then(|| kt_trim(c.coeffs().to_vec()))).collect()
+    };
+    let not_numbers = "the modulus family needs block polynomials with defined coefficients";
+    let (a, b) = (coefficients(block).ok_or(not_numbers)?, coefficients(target).ok_or(not_numbers)?);
+    let one = Cyclotomic::from_rational(&<Rational as One>::one());
+    for p in [&a, &b] {
+        if p.last().map(|c| c.len() == 1 && c[0] == one) != Some(true) {
+            return Err("the modulus family needs monic block polynomials".into());
+        }
+    }
+    let a = k_without_repeated_factor(k_without_constant_roots(a));
+    let d = a.len() - 1;
+    if d < 2 || b.len() < 2 {
+        return Ok(Crossings::Nothing);
+    }
+    let order = a.iter().chain(&b).flatten().fold(1u64, |l, c| {
+        let m = c.order().unwrap_or(1) as u64;
+        l / l.gcd(&m) * m
+    });
+    // the least scale: per power of x, the lcm of the ζ-coefficients' denominators
+    let as_qt = |p: &[KT]| -> Vec<QT> {
+        p.iter()
+            .map(|c| {
+                let den = c.iter().flat_map(|x| zeta_entries(x, order)).fold(BigInt::one(), |l, (_, r)| l.lcm(r.denom()));
+                vec![Rational::new(BigInt::one(), den)]
+            })
+            .collect()
+    };
+    let l = common_scale(&[&as_qt(&a), &as_qt(&b)]);
+    let scale = |p: &[KT]| -> Option<ZetaPoly> {
+        let dp = p.len() - 1;
+        p.iter()
+            .enumerate()
+            .map(|(k, c)| {
+                let f = Rational::from_integer(num_traits::pow(l.clone(), dp - k));
+                c.iter()
+                    .map(|x| {
+                        zeta_entries(x, order)
+                            .into_iter()
+                            .map(|(e, r)| {
+                                let v = r * &f;
+                                v.is_integer().then(|| (e, v.to_integer()))
+                            })
+                            .collect()
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    let not_integral = "the modulus family's scaled block polynomial is not integral (an internal error)";
+    let (za, zb) = (scale(&a).ok_or(not_integral)?, scale(&b).ok_or(not_integral)?);
+    // Fujiwara's bound from the 1-norms over t and ζ (every embedding)
+    let bound_of = |z: &ZetaPoly| -> BigInt {
+        let dz = z.len() - 1;
+        let mut r = BigInt::one();
+        for k in 1..=dz {
+            let m: BigInt = z[dz - k].iter().flatten().map(|(_, c)| c.abs()).sum();
+            r = r.max(m.nth_root(k as u32) + 1);
+        }
+        r * 2
+    };
+    let (ra, rb) = (bound_of(&za), bound_of(&zb));
+    let dd = d * (d - 1) / 2;
+    let ng = b.len() - 1;
+    let slope_k = |p: &[KT]| -> Rational {
+        let dp = p.len() - 1;
+        (1..=dp)
+            .map(|k| Rational::new((p[dp - k].len().saturating_sub(1) as i64).into(), (k as i64).into()))
+            .fold(<Rational as Zero>::zero(), |x, y| x.max(y))
+    };
+    let e = slope_k(&a).max(slope_k(&b));
+    let kc = conjugates.len();
+    let one_bound = (e * Rational::from_integer(BigInt::from(2 * dd * ng))).floor().to_integer();
+    let bound = one_bound
+        .to_usize()
+        .map(|b| b * kc)
+        .filter(|&b| b < 100_000)
+        .ok_or("a modulus resultant of too high degree in t")?;
+    let need_bits = kc as u64 * (dd * ng) as u64 * (&ra * &ra + &rb * &rb).bits() + 2;
+    let lifted = from_word_values(bound, need_bits, Some(3), |p| {
+        if (p - 1) % order != 0 {
+            return None;
+        }
+        let w = primitive_root_of_unity(order, p);
+        let images: Vec<(Vec<Vec<u64>>, Vec<Vec<u64>>)> = conjugates
+            .iter()
+            .map(|&c| {
+                let wc = crate::numeric::modular::pow_mod(w, c, p);
+                (embedded(&za, wc, order, p), embedded(&zb, wc, order, p))
+            })
+            .collect();
+        Some(
+            (0..=bound as u64)
+                .map(|t| {
+                    images.iter().fold(1u64, |acc, (pa, pb)| {
+                        let ca: Vec<u64> = pa.iter().map(|c| eval_word(c, t, p)).collect();
+                        let cb: Vec<u64> = pb.iter().map(|c| eval_word(c, t, p)).collect();
+                        mm(acc, resultant_monic(&exterior_square(&ca, p), &root_squared(&cb, p), p), p)
+                    })
+                })
+                .collect(),
+        )
+    });
+    match lifted {
+        Lifted::GaveUpOnZero => Err("the modulus resultant vanishes modulo three primes (identically, probably)".into()),
+        Lifted::Exact(c) if c.is_empty() => Err("the modulus resultant vanishes identically".into()),
+        Lifted::Exact(c) => Ok(Crossings::Resultant(Poly { coeffs: c.into_iter().map(Rational::from_integer).collect() })),
+    }
 }
 
 #[cfg(test)]

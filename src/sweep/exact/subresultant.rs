@@ -51,10 +51,10 @@ use crate::numeric::modular::{det_word, eval_word, from_word_values, pow_mod, re
 use crate::numeric::{BiPoly, Cyclotomic, Rational, TPoly};
 
 /// An element of Z[ζ_N] as (exponent of ζ_N, integer coefficient) pairs.
-type ZetaInt = Vec<(u64, BigInt)>;
+pub(crate) type ZetaInt = Vec<(u64, BigInt)>;
 
 /// A block polynomial scaled to integer ζ-coefficients: [x^k][t^i].
-type ZetaPoly = Vec<Vec<ZetaInt>>;
+pub(crate) type ZetaPoly = Vec<Vec<ZetaInt>>;
 
 /// N: the lcm of the orders of every coefficient's field; None when one is
 /// undefined.
@@ -110,7 +110,7 @@ fn row_norm_bits(p: &ZetaPoly) -> u64 {
 
 /// A primitive N-th root of unity modulo p (N | p − 1): g^((p−1)/N) of
 /// order exactly N for the first g = 2, 3, ... that gives one.
-fn primitive_root_of_unity(order: u64, p: u64) -> u64 {
+pub(crate) fn primitive_root_of_unity(order: u64, p: u64) -> u64 {
     let prime_factors: Vec<u64> = (2..=order).filter(|q| order % q == 0 && (2..*q).all(|r| q % r != 0)).collect();
     (2..p)
         .map(|g| pow_mod(g, (p - 1) / order, p))
@@ -119,7 +119,7 @@ fn primitive_root_of_unity(order: u64, p: u64) -> u64 {
 }
 
 /// The residues (coefficients of t) of p under ζ_N ↦ w modulo p.
-fn embedded(p: &ZetaPoly, w: u64, order: u64, prime: u64) -> Vec<Vec<u64>> {
+pub(crate) fn embedded(p: &ZetaPoly, w: u64, order: u64, prime: u64) -> Vec<Vec<u64>> {
     p.iter()
         .map(|c| {
             c.iter()
