@@ -515,6 +515,18 @@ fn unified_sqrt3_alpha_sets_are_exact_at_valence_3() {
 /// the modular subresultants, seconds now): the same checks as at n = 3,
 /// and the C¹ set is one interval from 0 whose end the float spectrum
 /// confirms (inside/outside, in the helper).
+/// unified-sqrt3 at n = 5: the block polynomials have coefficients in
+/// Q(√5) (Q(ζ_5) ∩ R), and complex pairs occur on every piece; the modulus
+/// family over Q(ζ_5) (norms over the Galois conjugates) makes the
+/// candidate set complete. The same checks as at n = 3 (every end by an
+/// exact sign change and by the float spectrum 1e-6 inside and outside).
+#[test]
+fn unified_sqrt3_alpha_sets_are_exact_at_valence_5() {
+    let c1 = check_unified_sqrt3_exact_sets(5);
+    assert_eq!(c1.len(), 1, "{c1:?}");
+    assert_eq!(c1[0]["from"]["rational"], "0");
+}
+
 #[test]
 fn unified_sqrt3_alpha_sets_are_exact_at_valence_4() {
     let c1 = check_unified_sqrt3_exact_sets(4);

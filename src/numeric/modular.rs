@@ -453,7 +453,7 @@ mod tests {
         // modulo each prime give it back exactly
         let big: BigInt = BigInt::from(10).pow(30u32) * 3;
         let f = vec![-big.clone(), BigInt::from(7), BigInt::zero(), BigInt::from(-1)];
-        let value = |p: u64| -> Vec<u64> {
+        let value = |p: u64| -> Option<Vec<u64>> {
             let r: Vec<u64> = f.iter().map(|c| residue(c, p)).collect();
             Some((0..=5u64).map(|t| eval_word(&r, t, p)).collect())
         };

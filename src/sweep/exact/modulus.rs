@@ -498,21 +498,25 @@ pub(crate) fn crossings(block: &BiPoly, target: &BiPoly) -> Result<Crossings, St
 // its roots contain Res's, and each conjugate obeys the same coefficient
 // bound, so the norm's coefficients are at most M^k for k conjugates.
 
-use crate::numeric::{Cyclotomic, Weight};
+use crate::numeric::Cyclotomic;
 use crate::sweep::exact::subresultant::{embedded, primitive_root_of_unity, ZetaPoly};
 
 /// A polynomial in t over Q(ζ), lowest first.
 type KT = Vec<Cyclotomic>;
 
+fn kzero() -> Cyclotomic {
+    Cyclotomic::from_rational(&<Rational as Zero>::zero())
+}
+
 fn kt_trim(mut a: KT) -> KT {
-    while a.last().is_some_and(Weight::is_zero) {
+    while a.last().is_some_and(crate::numeric::Weight::is_zero) {
         a.pop();
     }
     a
 }
 
 fn kt_add_scaled(a: &KT, b: &KT, c: &Cyclotomic) -> KT {
-    let mut out = vec![Cyclotomic::zero(); a.len().max(b.len())];
+    let mut out = vec![kzero(); a.len().max(b.len())];
     for (k, x) in a.iter().enumerate() {
         out[k] = out[k].clone() + x.clone();
     }
@@ -526,7 +530,7 @@ fn kt_mul(a: &KT, b: &KT) -> KT {
     if a.is_empty() || b.is_empty() {
         return KT::new();
     }
-    let mut out = vec![Cyclotomic::zero(); a.len() + b.len() - 1];
+    let mut out = vec![kzero(); a.len() + b.len() - 1];
     for (i, x) in a.iter().enumerate() {
         for (j, y) in b.iter().enumerate() {
             out[i + j] = out[i + j].clone() + x.clone() * y.clone();
@@ -536,7 +540,7 @@ fn kt_mul(a: &KT, b: &KT) -> KT {
 }
 
 fn kt_eval(a: &KT, t: &Cyclotomic) -> Cyclotomic {
-    a.iter().rev().fold(Cyclotomic::zero(), |acc, c| acc * t.clone() + c.clone())
+    a.iter().rev().fold(kzero(), |acc, c| acc * t.clone() + c.clone())
 }
 
 /// Constant roots 0, 1, −1 divided out (as `without_constant_roots`).
@@ -857,6 +861,25 @@ mod tests {
         let Crossings::Resultant(r) = crossings(&p, &target).unwrap() else { panic!("no resultant") };
         let expected = from_roots_squarefree(&[&[-1, 4], &[1, 0, 0, 4], &[0, 1], &[-4, 1], &[4, 1]]);
         assert_eq!(monic(&crate::numeric::sturm::squarefree(&r)), monic(&expected));
+    }
+
+    #[test]
+    fn a_crossing_at_a_cyclotomic_modulus_gives_the_norm() {
+        // P = x² + t (the pair ±i√t, |u|² = t) against T = x − γ, γ =
+        // ζ_5 + ζ_5⁴ = 2cos(2π/5) = (√5 − 1)/2: the crossing is t = γ².
+        // Over Q(√5), Res ∝ t − γ²; its conjugate (γ' = ζ_5² + ζ_5³ =
+        // (−1 − √5)/2) gives t − γ'², and γ² + γ'² = 3, γ²γ'² = (γγ')² = 1,
+        // so the norm is ∝ t² − 3t + 1
+        let p = bipoly(&[&[(0, 1), (1, 1)], &[], &[(1, 1)]]);
+        let z = |k: i64| crate::numeric::Cyclotomic::root_of_unity(k, 5).unwrap();
+        let gamma = z(1) + z(4);
+        let target: BiPoly = vec![TPoly::constant(-gamma), TPoly::constant(crate::numeric::Cyclotomic::from_rational(&Rational::one()))];
+        let conjugates = crate::sweep::exact::distinct_conjugates(&p, &target);
+        assert_eq!(conjugates.len(), 2);
+        let Crossings::Resultant(r) = crossings_cyclotomic(&p, &target, &conjugates).unwrap() else {
+            panic!("no resultant")
+        };
+        assert_eq!(monic(&crate::numeric::sturm::squarefree(&r)), monic(&from_roots_squarefree(&[&[1, -3, 1]])));
     }
 
     #[test]
