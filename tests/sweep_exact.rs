@@ -455,7 +455,8 @@ fn eval_q(p: &P, x: &BigRational) -> BigRational {
 /// C¹ set.
 fn check_unified_sqrt3_exact_sets(n: usize) -> Vec<serde_json::Value> {
     let valences = format!("{n}..{n}");
-    let v = json(&["sweep", "unified-sqrt3", "--valences", &valences, "--param", "alpha=0:2:1/10", "--exact", "--json"]);
+    let v =
+        json(&["sweep", "unified-sqrt3", "--valences", &valences, "--param", "alpha=0:2:1/10", "--exact", "--json"]);
     let c1 = intervals(&v, n, "c1_spectral");
     let conv = intervals(&v, n, "convergent");
     assert!(!c1.is_empty());

@@ -463,17 +463,17 @@ pub(crate) fn crossings(block: &BiPoly, target: &BiPoly) -> Result<Crossings, St
     let need_bits = (dd * ng) as u64 * (&ra * &ra + &rb * &rb).bits() + 2;
     let lifted = from_word_values(bound, need_bits, Some(3), |p| {
         Some({
-        let (pa, pb): (Vec<Vec<u64>>, Vec<Vec<u64>>) = (
-            za.iter().map(|c| c.iter().map(|x| residue(x, p)).collect()).collect(),
-            zb.iter().map(|c| c.iter().map(|x| residue(x, p)).collect()).collect(),
-        );
-        (0..=bound as u64)
-            .map(|t| {
-                let ca: Vec<u64> = pa.iter().map(|c| eval_word(c, t, p)).collect();
-                let cb: Vec<u64> = pb.iter().map(|c| eval_word(c, t, p)).collect();
-                resultant_monic(&exterior_square(&ca, p), &root_squared(&cb, p), p)
-            })
-            .collect()
+            let (pa, pb): (Vec<Vec<u64>>, Vec<Vec<u64>>) = (
+                za.iter().map(|c| c.iter().map(|x| residue(x, p)).collect()).collect(),
+                zb.iter().map(|c| c.iter().map(|x| residue(x, p)).collect()).collect(),
+            );
+            (0..=bound as u64)
+                .map(|t| {
+                    let ca: Vec<u64> = pa.iter().map(|c| eval_word(c, t, p)).collect();
+                    let cb: Vec<u64> = pb.iter().map(|c| eval_word(c, t, p)).collect();
+                    resultant_monic(&exterior_square(&ca, p), &root_squared(&cb, p), p)
+                })
+                .collect()
         })
     });
     let coeffs: Vec<Rational> = match lifted {
@@ -640,7 +640,8 @@ fn k_without_repeated_factor(p: Vec<KT>) -> Vec<KT> {
             Some((bk, _)) if *bk < k => {}
             _ => best = Some((k, vec![(tq, g)])),
         }
-        let need = (e.clone() * Rational::from_integer((k as i64).into())).floor().to_integer().to_usize().unwrap_or(0) + 1;
+        let need =
+            (e.clone() * Rational::from_integer((k as i64).into())).floor().to_integer().to_usize().unwrap_or(0) + 1;
         if let Some((bk, pts)) = &best {
             if *bk == k && pts.len() >= need {
                 let xs: Vec<Rational> = pts.iter().map(|(x, _)| x.clone()).collect();
@@ -694,7 +695,8 @@ pub(crate) fn crossings_cyclotomic(block: &BiPoly, target: &BiPoly, conjugates: 
     let as_qt = |p: &[KT]| -> Vec<QT> {
         p.iter()
             .map(|c| {
-                let den = c.iter().flat_map(|x| zeta_entries(x, order)).fold(BigInt::one(), |l, (_, r)| l.lcm(r.denom()));
+                let den =
+                    c.iter().flat_map(|x| zeta_entries(x, order)).fold(BigInt::one(), |l, (_, r)| l.lcm(r.denom()));
                 vec![Rational::new(BigInt::one(), den)]
             })
             .collect()
@@ -775,9 +777,13 @@ pub(crate) fn crossings_cyclotomic(block: &BiPoly, target: &BiPoly, conjugates: 
         )
     });
     match lifted {
-        Lifted::GaveUpOnZero => Err("the modulus resultant vanishes modulo three primes (identically, probably)".into()),
+        Lifted::GaveUpOnZero => {
+            Err("the modulus resultant vanishes modulo three primes (identically, probably)".into())
+        }
         Lifted::Exact(c) if c.is_empty() => Err("the modulus resultant vanishes identically".into()),
-        Lifted::Exact(c) => Ok(Crossings::Resultant(Poly { coeffs: c.into_iter().map(Rational::from_integer).collect() })),
+        Lifted::Exact(c) => {
+            Ok(Crossings::Resultant(Poly { coeffs: c.into_iter().map(Rational::from_integer).collect() }))
+        }
     }
 }
 
@@ -873,7 +879,8 @@ mod tests {
         let p = bipoly(&[&[(0, 1), (1, 1)], &[], &[(1, 1)]]);
         let z = |k: i64| crate::numeric::Cyclotomic::root_of_unity(k, 5).unwrap();
         let gamma = z(1) + z(4);
-        let target: BiPoly = vec![TPoly::constant(-gamma), TPoly::constant(crate::numeric::Cyclotomic::from_rational(&Rational::one()))];
+        let target: BiPoly =
+            vec![TPoly::constant(-gamma), TPoly::constant(crate::numeric::Cyclotomic::from_rational(&Rational::one()))];
         let conjugates = crate::sweep::exact::distinct_conjugates(&p, &target);
         assert_eq!(conjugates.len(), 2);
         let Crossings::Resultant(r) = crossings_cyclotomic(&p, &target, &conjugates).unwrap() else {

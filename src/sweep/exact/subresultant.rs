@@ -81,14 +81,15 @@ fn integer_zeta_poly(p: &BiPoly, order: u64) -> ZetaPoly {
         let m = x.order().unwrap_or(1) as u64;
         x.coefficients().map(|(i, r)| (i as u64 * (order / m), r)).collect()
     };
-    let l = p
-        .iter()
-        .flat_map(|c| c.coeffs().iter().flat_map(entries))
-        .fold(BigInt::one(), |l, (_, r)| l.lcm(r.denom()));
+    let l =
+        p.iter().flat_map(|c| c.coeffs().iter().flat_map(entries)).fold(BigInt::one(), |l, (_, r)| l.lcm(r.denom()));
     let l = Rational::from_integer(l);
     p.iter()
         .map(|c: &TPoly| {
-            c.coeffs().iter().map(|x| entries(x).into_iter().map(|(e, r)| (e, (r * &l).to_integer())).collect()).collect()
+            c.coeffs()
+                .iter()
+                .map(|x| entries(x).into_iter().map(|(e, r)| (e, (r * &l).to_integer())).collect())
+                .collect()
         })
         .collect()
 }
