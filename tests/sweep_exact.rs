@@ -448,11 +448,17 @@ fn eval_q(p: &P, x: &BigRational) -> BigRational {
 /// float spectrum agrees 1e-6 inside and outside each interior end. The
 /// spectrum at α = 0.8 (not C¹ in floating point: |λ3| > 1/9 there) lies
 /// outside the set.
-#[test]
-fn unified_sqrt3_alpha_sets_are_exact_at_valence_3() {
-    let v = json(&["sweep", "unified-sqrt3", "--valences", "3..3", "--param", "alpha=0:2:1/10", "--exact", "--json"]);
-    let c1 = intervals(&v, 3, "c1_spectral");
-    let conv = intervals(&v, 3, "convergent");
+/// The exact sets of unified-sqrt3's α in [0, 2] at valence n: complete
+/// (`endpoints_exact`), every irrational end the one root of its polynomial
+/// in its isolating interval (an exact sign change here), and the float
+/// spectrum agreeing 1e-6 inside and outside each interior end. Returns the
+/// C¹ set.
+fn check_unified_sqrt3_exact_sets(n: usize) -> Vec<serde_json::Value> {
+    let valences = format!("{n}..{n}");
+    let v =
+        json(&["sweep", "unified-sqrt3", "--valences", &valences, "--param", "alpha=0:2:1/10", "--exact", "--json"]);
+    let c1 = intervals(&v, n, "c1_spectral");
+    let conv = intervals(&v, n, "convergent");
     assert!(!c1.is_empty());
     let (window_lo, window_hi) = (0.0, 2.0);
     for (key, set) in [("c1_spectral", c1), ("convergent", conv)] {
@@ -477,7 +483,7 @@ fn unified_sqrt3_alpha_sets_are_exact_at_valence_3() {
                     continue;
                 }
                 let pick = |value: f64| {
-                    let (c1, conv) = verdict("unified-sqrt3", "alpha", 3, value);
+                    let (c1, conv) = verdict("unified-sqrt3", "alpha", n, value);
                     if key == "c1_spectral" {
                         c1
                     } else {
@@ -489,6 +495,12 @@ fn unified_sqrt3_alpha_sets_are_exact_at_valence_3() {
             }
         }
     }
+    c1.clone()
+}
+
+#[test]
+fn unified_sqrt3_alpha_sets_are_exact_at_valence_3() {
+    let c1 = check_unified_sqrt3_exact_sets(3);
     assert!(!verdict("unified-sqrt3", "alpha", 3, 0.8).0, "float C¹ at 0.8");
     assert!(
         c1.iter()
@@ -498,4 +510,28 @@ fn unified_sqrt3_alpha_sets_are_exact_at_valence_3() {
     let out = subdlab(&["sweep", "unified-sqrt3", "--valences", "3..3", "--param", "alpha=0:2:1/10", "--exact"]);
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(!text.contains("NOT PROVED"), "{text}");
+}
+
+/// unified-sqrt3 at n = 4 (exact since the modulus family; minutes before
+/// the modular subresultants, seconds now): the same checks as at n = 3,
+/// and the C¹ set is one interval from 0 whose end the float spectrum
+/// confirms (inside/outside, in the helper).
+/// unified-sqrt3 at n = 5: the block polynomials have coefficients in
+/// Q(√5) (Q(ζ_5) ∩ R), and complex pairs occur on every piece; the modulus
+/// family over Q(ζ_5) (norms over the Galois conjugates) makes the
+/// candidate set complete. The same checks as at n = 3 (every end by an
+/// exact sign change and by the float spectrum 1e-6 inside and outside).
+#[test]
+fn unified_sqrt3_alpha_sets_are_exact_at_valence_5() {
+    let c1 = check_unified_sqrt3_exact_sets(5);
+    assert_eq!(c1.len(), 1, "{c1:?}");
+    assert_eq!(c1[0]["from"]["rational"], "0");
+}
+
+#[test]
+fn unified_sqrt3_alpha_sets_are_exact_at_valence_4() {
+    let c1 = check_unified_sqrt3_exact_sets(4);
+    assert_eq!(c1.len(), 1, "{c1:?}");
+    assert_eq!(c1[0]["from"]["rational"], "0");
+    assert!(c1[0]["to"]["decimal"].as_f64().unwrap() < 2.0);
 }

@@ -130,20 +130,33 @@ pub fn primitive_part(f: &[BigInt]) -> Vec<BigInt> {
     f.iter().map(|c| c / &g).collect()
 }
 
-/// Whether d divides f over Z (d primitive, nonzero; by Gauss's lemma this
-/// is divisibility over Q too).
-pub fn divides(d: &[BigInt], f: &[BigInt]) -> bool {
+/// f / d over Z when d divides f (d nonzero, lowest coefficient first),
+/// else None. Every step divides by d's leading coefficient exactly, so no
+/// rational is formed: dividing a degree-394 polynomial with
+/// thousand-digit coefficients by its gcd with the derivative took
+/// seconds over Q, in the gcds of each rational's normalisation. For a
+/// primitive d, divisibility over Z is divisibility over Q (Gauss's lemma).
+pub fn exact_quotient(f: &[BigInt], d: &[BigInt]) -> Option<Vec<BigInt>> {
     let mut r: Vec<BigInt> = f.to_vec();
     while r.last().is_some_and(Zero::is_zero) {
         r.pop();
     }
+    let mut d = d.to_vec();
+    while d.last().is_some_and(Zero::is_zero) {
+        d.pop();
+    }
+    assert!(!d.is_empty(), "division by the zero polynomial");
     let dd = d.len() - 1;
+    if r.len() <= dd {
+        return r.is_empty().then(|| vec![BigInt::zero()]);
+    }
+    let mut quotient = vec![BigInt::zero(); r.len() - dd];
     let lead = &d[dd];
     while r.len() > dd {
         let top = r.len() - 1;
         let (c, rem) = r[top].div_rem(lead);
         if !rem.is_zero() {
-            return false;
+            return None;
         }
         let k = top - dd;
         if !c.is_zero() {
@@ -151,12 +164,19 @@ pub fn divides(d: &[BigInt], f: &[BigInt]) -> bool {
                 r[i + k] -= &c * x;
             }
         }
+        quotient[k] = c;
         r.pop();
         while r.last().is_some_and(Zero::is_zero) {
             r.pop();
         }
     }
-    r.is_empty()
+    r.is_empty().then_some(quotient)
+}
+
+/// Whether d divides f over Z (d primitive, nonzero; by Gauss's lemma this
+/// is divisibility over Q too).
+pub fn divides(d: &[BigInt], f: &[BigInt]) -> bool {
+    exact_quotient(f, d).is_some()
 }
 
 /// The gcd of two nonzero integer polynomials (lowest coefficient first),
@@ -228,6 +248,159 @@ pub fn gcd(f: &[BigInt], g: &[BigInt]) -> Vec<BigInt> {
     unreachable!("there are infinitely many primes below 2^62 for this purpose")
 }
 
+// ---- polynomials in t known by their values modulo word primes ----
+//
+// The exact sweep's resultants and subresultants are polynomials in t with
+// integer coefficients of a known degree bound B and a proved bound 2^bits
+// on every coefficient. Their values at t = 0, 1, ..., B modulo a prime p
+// (computed in machine words) interpolate to the polynomial modulo p; the
+// images for several primes combine by the Chinese remainder theorem, and
+// once the primes' product exceeds 2^(bits + 1) the symmetric lift is the
+// polynomial itself — no early stop, so the answer is exact whatever the
+// values looked like (von zur Gathen–Gerhard, *Modern Computer Algebra*,
+// §§5.4–5.5).
+
+/// The primes in [2^30, 2^31), largest first: residues below 2^31, so a
+/// product of two fits in a u64 and the remainders stay in hardware
+/// division (the u128 remainders of `mul_mod` cost several times more).
+pub(crate) fn word_primes() -> impl Iterator<Item = u64> {
+    ((1u64 << 30)..(1u64 << 31)).rev().filter(|&n| n % 2 == 1 && is_prime(n))
+}
+
+/// a·b mod p for a word prime p (a, b < p < 2^31).
+#[inline]
+pub(crate) fn word_mul(a: u64, b: u64, p: u64) -> u64 {
+    a * b % p
+}
+
+/// a⁻¹ mod a word prime p (a ≠ 0 mod p).
+pub(crate) fn word_inv(a: u64, p: u64) -> u64 {
+    pow_mod(a, p - 2, p)
+}
+
+/// c mod p in [0, p).
+pub(crate) fn residue(c: &BigInt, p: u64) -> u64 {
+    c.mod_floor(&BigInt::from(p)).to_u64().expect("a residue below p")
+}
+
+/// a(t) mod p (coefficients lowest first, already residues).
+pub(crate) fn eval_word(a: &[u64], t: u64, p: u64) -> u64 {
+    a.iter().rev().fold(0u64, |acc, &c| (word_mul(acc, t, p) + c) % p)
+}
+
+/// The coefficients (lowest first) of the polynomial of degree < len
+/// through (i, y_i), i = 0, 1, ..., modulo p (Newton's divided
+/// differences; p > len, so the points are distinct modulo p).
+pub(crate) fn interpolate_word(y: &[u64], p: u64) -> Vec<u64> {
+    let n = y.len();
+    if n == 0 {
+        return Vec::new();
+    }
+    let mut dd = y.to_vec();
+    for level in 1..n {
+        let il = word_inv(level as u64, p);
+        for i in (level..n).rev() {
+            dd[i] = word_mul((dd[i] + p - dd[i - 1]) % p, il, p);
+        }
+    }
+    let mut out = vec![dd[n - 1]];
+    for i in (0..n - 1).rev() {
+        // out = out·(t − i) + dd[i]
+        let mut next = vec![0u64; out.len() + 1];
+        for (k, &c) in out.iter().enumerate() {
+            next[k + 1] = (next[k + 1] + c) % p;
+            next[k] = (next[k] + p - word_mul(c, i as u64 % p, p)) % p;
+        }
+        next[0] = (next[0] + dd[i]) % p;
+        out = next;
+    }
+    out
+}
+
+/// The determinant of a square matrix modulo a word prime (elimination).
+pub(crate) fn det_word(mut m: Vec<Vec<u64>>, p: u64) -> u64 {
+    let n = m.len();
+    let mut det = 1u64;
+    for c in 0..n {
+        let Some(r) = (c..n).find(|&r| m[r][c] != 0) else { return 0 };
+        if r != c {
+            m.swap(r, c);
+            det = (p - det) % p;
+        }
+        det = word_mul(det, m[c][c], p);
+        let iv = word_inv(m[c][c], p);
+        for r in c + 1..n {
+            if m[r][c] == 0 {
+                continue;
+            }
+            let f = word_mul(m[r][c], iv, p);
+            for k in c..n {
+                m[r][k] = (m[r][k] + p - word_mul(f, m[c][k], p)) % p;
+            }
+        }
+    }
+    det
+}
+
+/// What [`from_word_values`] found.
+#[derive(Debug, PartialEq, Eq)]
+pub(crate) enum Lifted {
+    /// the polynomial exactly (lowest first, trailing zeros trimmed; empty:
+    /// proved identically zero)
+    Exact(Vec<BigInt>),
+    /// `give_up_on_zero` images in a row were zero before any nonzero one:
+    /// the caller asked not to pay for the proof that it vanishes
+    GaveUpOnZero,
+}
+
+/// The integer polynomial f of degree ≤ `degree` whose every coefficient is
+/// below 2^`bits` in absolute value, from `values(p)` = (f(0), ..., f(degree))
+/// modulo each word prime p (None: p is not usable, skip it — e.g. no
+/// root of unity of the order needed). The primes are used until their
+/// product exceeds 2^(bits + 1) (then the symmetric lift is f exactly).
+/// `give_up_on_zero`: stop after that many all-zero images while every image
+/// so far is zero (None: prove the zero too).
+pub(crate) fn from_word_values(
+    degree: usize,
+    bits: u64,
+    give_up_on_zero: Option<usize>,
+    mut values: impl FnMut(u64) -> Option<Vec<u64>>,
+) -> Lifted {
+    assert!(degree < 1 << 29, "the points 0..degree are distinct modulo word primes");
+    let mut acc: Vec<BigInt> = vec![BigInt::zero(); degree + 1];
+    let mut modulus = BigInt::one();
+    let mut all_zero_so_far = 0usize;
+    for p in word_primes() {
+        let Some(v) = values(p) else { continue };
+        debug_assert_eq!(v.len(), degree + 1);
+        let image = interpolate_word(&v, p);
+        if image.iter().all(|&c| c == 0) && acc.iter().all(Zero::is_zero) {
+            all_zero_so_far += 1;
+            if give_up_on_zero.is_some_and(|g| all_zero_so_far >= g) {
+                return Lifted::GaveUpOnZero;
+            }
+        }
+        // Chinese remainders: x ≡ acc (mod M), x ≡ image (mod p)
+        let m_inv = word_inv(residue(&modulus, p), p);
+        for (x, &r) in acc.iter_mut().zip(&image) {
+            let k = word_mul((r + p - residue(x, p)) % p, m_inv, p);
+            if k != 0 {
+                *x += &modulus * BigInt::from(k);
+            }
+        }
+        modulus *= BigInt::from(p);
+        if modulus.bits() > bits + 1 {
+            break;
+        }
+    }
+    let half = &modulus / 2;
+    let mut out: Vec<BigInt> = acc.into_iter().map(|x| if x > half { x - &modulus } else { x }).collect();
+    while out.last().is_some_and(Zero::is_zero) {
+        out.pop();
+    }
+    Lifted::Exact(out)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -261,6 +434,36 @@ mod tests {
         let f = mul(&big, &z(&[1, 0, 1]));
         let g = mul(&big, &z(&[-1, 1]));
         assert_eq!(gcd(&f, &g), big);
+    }
+
+    #[test]
+    fn exact_quotients() {
+        // (3x² − 5)(7x + 2) / (7x + 2) = 3x² − 5; by x − 1: not exact
+        let a = z(&[-5, 0, 3]);
+        let b = z(&[2, 7]);
+        assert_eq!(exact_quotient(&mul(&a, &b), &b), Some(a.clone()));
+        assert_eq!(exact_quotient(&mul(&a, &b), &z(&[-1, 1])), None);
+        // 2x + 2 by 2x + 1: the remainder 1 is not zero
+        assert_eq!(exact_quotient(&z(&[2, 2]), &z(&[1, 2])), None);
+    }
+
+    #[test]
+    fn polynomials_from_values_modulo_word_primes() {
+        // f(t) = −3·10^30 + 7t − t³: coefficients below 2^100; its values
+        // modulo each prime give it back exactly
+        let big: BigInt = BigInt::from(10).pow(30u32) * 3;
+        let f = vec![-big.clone(), BigInt::from(7), BigInt::zero(), BigInt::from(-1)];
+        let value = |p: u64| -> Option<Vec<u64>> {
+            let r: Vec<u64> = f.iter().map(|c| residue(c, p)).collect();
+            Some((0..=5u64).map(|t| eval_word(&r, t, p)).collect())
+        };
+        assert_eq!(from_word_values(5, 100, None, value), Lifted::Exact(f.clone()));
+        // the zero polynomial: proved (empty), or given up on when asked
+        assert_eq!(from_word_values(3, 100, None, |_| Some(vec![0; 4])), Lifted::Exact(vec![]));
+        assert_eq!(from_word_values(3, 100, Some(2), |_| Some(vec![0; 4])), Lifted::GaveUpOnZero);
+        // det [[2, 3], [5, 7]] = −1
+        let p = word_primes().next().unwrap();
+        assert_eq!(det_word(vec![vec![2, 3], vec![5, 7]], p), p - 1);
     }
 
     #[test]

@@ -47,7 +47,18 @@ pub fn squarefree(p: &Poly) -> Poly {
         return p;
     }
     let g = p.gcd(&p.derivative());
-    primitive(&p.div_rem(&g).0)
+    if g.degree() == 0 {
+        return primitive(&p);
+    }
+    // p / g exactly in integers (g divides p; rational division spent its
+    // time normalising thousand-digit fractions)
+    let (f, d) = (integer_coefficients(&p), integer_coefficients(&g));
+    match super::modular::exact_quotient(&f, &d) {
+        Some(q) => primitive(&Poly { coeffs: q.into_iter().map(Rational::from_integer).collect() }),
+        // not reached (the modular gcd is accepted only when it divides
+        // exactly); the rational division stays correct either way
+        None => primitive(&p.div_rem(&g).0),
+    }
 }
 
 /// The Sturm sequence p, p′, −rem(p, p′), ... (each scaled by a positive

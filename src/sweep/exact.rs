@@ -35,6 +35,7 @@
 
 pub mod curvature;
 pub(crate) mod modulus;
+pub(crate) mod subresultant;
 
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use serde::Serialize;
@@ -362,7 +363,13 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
         let targets: Vec<&BiPoly> = lambda_polys.iter().chain(std::iter::once(&one_minus_x)).collect();
         'family: for p in &polys {
             for target in &targets {
-                match modulus::crossings(p, target) {
+                // rational coefficients: the family in Q[t]; Q(ζ_N) ones
+                // (n = 5, 7): its norm over the pair's conjugates
+                let family = match modulus::rational_coefficients(p).and(modulus::rational_coefficients(target)) {
+                    Some(_) => modulus::crossings(p, target),
+                    None => modulus::crossings_cyclotomic(p, target, &distinct_conjugates(p, target)),
+                };
+                match family {
                     Ok(modulus::Crossings::Resultant(r)) => {
                         trace(|| {
                             format!(
@@ -903,6 +910,16 @@ pub(crate) fn first_subresultant(a: &BiPoly, b: &BiPoly) -> Result<Option<CPoly>
             "a subresultant of degree up to {d0} in t: beyond the exact sweep's bound"
         )));
     }
+    // rational coefficients (Q(ζ_N) ∩ R = Q at n = 3, 4, 6; no rotations):
+    // the same psc_j by values modulo word primes, proved exact by a
+    // coefficient bound (`subresultant`) — the cyclotomic eliminations
+    // below cost seconds per pair at unified-sqrt3
+    // (Q(ζ_N) coefficients: the norm over the pair's distinct conjugates,
+    // whose roots contain psc_j's — the callers take that norm next anyway)
+    let conjugates = distinct_conjugates(a, b);
+    if let Some(c) = subresultant::first_nonzero_psc(a, b, &conjugates, &bound) {
+        return Ok(Some(c.into_iter().map(|x| Cyclotomic::from_rational(&Rational::from_integer(x))).collect()));
+    }
     // psc_j has degree ≤ bound(j) in t: one nonzero value shows it is not
     // identically zero, bound(j) + 1 zeros that it is; the points 0, −1, 1,
     // −2, 2, ... keep the numbers small
@@ -947,6 +964,31 @@ pub(crate) fn interpolate(x: &[Rational], y: &[Cyclotomic]) -> CPoly {
         p.pop();
     }
     p
+}
+
+/// The a in (Z/N)^* (N the lcm of the coefficients' orders) whose σ_a
+/// give the distinct conjugates σ_a(a, b) of the pair, 1 first.
+pub(crate) fn distinct_conjugates(a: &BiPoly, b: &BiPoly) -> Vec<u64> {
+    let order = a.iter().chain(b).flat_map(|c| c.coeffs().iter()).fold(1u64, |l, c| {
+        let m = c.order().unwrap_or(1) as u64;
+        l / crate::numeric::weight::gcd(l as i64, m as i64) as u64 * m
+    });
+    let conj = |p: &BiPoly, s: u64| -> Vec<Vec<Cyclotomic>> {
+        p.iter().map(|c| c.coeffs().iter().map(|x| conjugate(x, s)).collect()).collect()
+    };
+    let mut seen: Vec<(Vec<Vec<Cyclotomic>>, Vec<Vec<Cyclotomic>>)> = Vec::new();
+    let mut out = Vec::new();
+    for s in 1..order.max(2) {
+        if crate::numeric::weight::gcd(s as i64, order as i64) != 1 {
+            continue;
+        }
+        let pair = (conj(a, s), conj(b, s));
+        if !seen.contains(&pair) {
+            seen.push(pair);
+            out.push(s);
+        }
+    }
+    out
 }
 
 /// σ_a(c): ζ_N ↦ ζ_N^a on an element of order dividing N (a coprime to N).
@@ -1035,5 +1077,19 @@ mod tests {
         let r = first_subresultant(&a, &b).unwrap().unwrap();
         let r = rational_norm(&r).unwrap();
         assert_eq!(sturm::squarefree(&r), sturm::primitive(&Poly { coeffs: vec![q(-1, 1), q(1, 1)] }));
+    }
+
+    #[test]
+    fn a_common_factor_makes_the_first_coefficients_vanish() {
+        // a = (x − 1)(x² − t) = x³ − x² − t x + t, b = (x − 1)(x − 2) =
+        // x² − 3x + 2: gcd x − 1 for every t, so psc_0 = Res ≡ 0 (proved by
+        // the coefficient bound, modulo primes) and psc_1 ∝ Res(x² − t,
+        // x − 2) = 4 − t: the gcd rises exactly at t = 4
+        let c = |x: i64| TPoly::int(x);
+        let t = TPoly::variable();
+        let a = vec![t.clone(), -t, c(-1), c(1)];
+        let b = vec![c(2), c(-3), c(1)];
+        let r = rational_norm(&first_subresultant(&a, &b).unwrap().unwrap()).unwrap();
+        assert_eq!(sturm::primitive(&r), sturm::primitive(&Poly { coeffs: vec![q(-4, 1), q(1, 1)] }));
     }
 }

@@ -24,19 +24,20 @@
 //!    block polynomials of real coefficients; at n = 3, 4, 6 they are
 //!    rational, Q(ζ_n) ∩ R = Q); roots constant in t at 0, 1, −1 divided
 //!    out (a constant real root is never one of a non-real pair).
-//! 2. A common scale L (lcm of the denominators): P̃(y) = L^d P(y/L) has
-//!    integer coefficients in t and roots L·x, so E and G of the scaled
-//!    polynomials are E(L²s)·L^{2D}-type rescalings with the same crossings.
+//! 2. A common scale L, the least (up to primes above 1000) with
+//!    L^k·c_{d−k} integral for every k and both polynomials:
+//!    P̃(y) = L^d P(y/L) has integer coefficients in t and roots L·x, so E
+//!    and G of the scaled polynomials have roots L²·x_i x_j and L²·y_k²:
+//!    the same crossings, and Res only multiplied by L^{2D·deg G}.
 //! 3. Res_s(E, G) is isobaric of weight D·deg G in the coefficients (the
 //!    coefficient of s^{D−k} weighs k); the coefficient of x^{d−k} of P has
 //!    degree ≤ e·k in t (e the larger slope max_k deg_t(c_k)/k of P and T),
 //!    so E's and G's weigh 2e per unit and deg_t Res ≤ 2e·D·deg G =: B.
 //! 4. On |t| = 1 every coefficient of P̃ is at most its integer 1-norm m_k,
-//!    every root at most ρ = 2 max_k ⌈m_k^{1/k}⌉ (Fujiwara), E's
-//!    coefficient of s^{D−k} at most C(D, k) ρ^{2k}: each Sylvester row has
-//!    1-norm at most (1 + ρ²)^D (E's) or (1 + ρ_T²)^{deg G} (G's), and by
-//!    Hadamard |Res(t)| ≤ ((1 + ρ²)(1 + ρ_T²))^{D·deg G} =: M there. Each
-//!    coefficient of Res is a Cauchy integral over |t| = 1, so at most M.
+//!    every root at most ρ = 2 max_k ⌈m_k^{1/k}⌉ (Fujiwara). Res(E, G) =
+//!    ∏_{k, i<j} (y_k² − x_i x_j) (both monic), so |Res(t)| ≤
+//!    (ρ_T² + ρ²)^{D·deg G} =: M there. Each coefficient of Res is a Cauchy
+//!    integral over |t| = 1, so at most M.
 //! 5. Modulo primes p < 2^31 (p > B): at t = 0, 1, ..., B, E by Newton's
 //!    identities (power sums of P, q_k = (p_k² − p_{2k})/2 the power sums of
 //!    the products, back to coefficients), G by root squaring, Res = det of
@@ -49,17 +50,19 @@ use num_integer::Integer;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 use crate::numeric::exact::Poly;
-use crate::numeric::modular::{is_prime, pow_mod};
+use crate::numeric::modular::{
+    det_word, eval_word, from_word_values, is_prime, residue, word_inv as inv, word_mul as mm, Lifted,
+};
 use crate::numeric::{BiPoly, Rational, TPoly};
 
 /// A polynomial in t over Q, lowest first.
-type QT = Vec<Rational>;
+pub(crate) type QT = Vec<Rational>;
 /// A polynomial in t over Z, lowest first.
 type ZT = Vec<BigInt>;
 
 /// The coefficients of p (of x^0, x^1, ...) as polynomials in t over Q, or
 /// None when one is not rational.
-fn rational_coefficients(p: &BiPoly) -> Option<Vec<QT>> {
+pub(crate) fn rational_coefficients(p: &BiPoly) -> Option<Vec<QT>> {
     p.iter()
         .map(|c: &TPoly| {
             if !c.is_defined() {
@@ -224,7 +227,7 @@ fn slope(p: &[QT]) -> Rational {
     let d = p.len() - 1;
     let mut e = <Rational as Zero>::zero();
     for k in 1..=d {
-        let deg = p[d - k].iter().rposition(|c| !c.is_zero()).unwrap_or(0);
+        let deg = p[d - k].iter().rposition(|c| !Zero::is_zero(c)).unwrap_or(0);
         let w = Rational::new((deg as i64).into(), (k as i64).into());
         if w > e {
             e = w;
@@ -233,9 +236,44 @@ fn slope(p: &[QT]) -> Rational {
     e
 }
 
-/// P̃(y) = L^d P(y/L): integer coefficients (L a multiple of every
-/// denominator; P monic).
-fn scaled(p: &[QT], l: &BigInt) -> Vec<ZT> {
+/// The least common scale L (up to primes above 1000) with L^k·c_{d−k}
+/// integral for every k ≥ 1 and each monic P = Σ c_j x^j given: then
+/// P̃(y) = L^d P(y/L) has integer coefficients.
+///
+/// Why not the lcm of all denominators (as before): a coefficient of
+/// x^{d−k} with denominator 3^{3k} needs L = 3³, not 3^{3d}. The
+/// resultant's coefficients grow like L^{2·D·deg G}: at unified-sqrt3,
+/// n = 3, the lcm was 2⁸·3³⁰ and 12 466 of the 13 355 bits of the largest
+/// coefficient were that content — the primes paid for it, and the
+/// isolation too. Primes below 1000 get the exponent max_k ⌈v_q(den_k)/k⌉
+/// (trial division); any cofactor left is taken whole (still sound:
+/// it divides L, so L^k too).
+fn common_scale(polys: &[&Vec<QT>]) -> BigInt {
+    let small: Vec<u64> = (2u64..1000).filter(|&q| is_prime(q)).collect();
+    let mut exponent = vec![0u64; small.len()];
+    let mut rough = BigInt::one();
+    for p in polys {
+        let d = p.len() - 1;
+        for k in 1..=d {
+            let mut den = p[d - k].iter().fold(BigInt::one(), |l, c| l.lcm(c.denom()));
+            for (i, &q) in small.iter().enumerate() {
+                let qb = BigInt::from(q);
+                let mut v = 0u64;
+                while (&den % &qb).is_zero() {
+                    den /= &qb;
+                    v += 1;
+                }
+                exponent[i] = exponent[i].max(v.div_ceil(k as u64));
+            }
+            rough = rough.lcm(&den);
+        }
+    }
+    small.iter().zip(&exponent).fold(rough, |l, (&q, &e)| l * num_traits::pow(BigInt::from(q), e as usize))
+}
+
+/// P̃(y) = L^d P(y/L) (P monic): integer coefficients when L is a
+/// `common_scale` of P; None when one is not an integer.
+fn scaled(p: &[QT], l: &BigInt) -> Option<Vec<ZT>> {
     let d = p.len() - 1;
     p.iter()
         .enumerate()
@@ -244,8 +282,7 @@ fn scaled(p: &[QT], l: &BigInt) -> Vec<ZT> {
             a.iter()
                 .map(|c| {
                     let v = c * &f;
-                    debug_assert!(v.is_integer());
-                    v.to_integer()
+                    v.is_integer().then(|| v.to_integer())
                 })
                 .collect()
         })
@@ -267,19 +304,7 @@ fn root_bound(p: &[ZT]) -> BigInt {
     r * 2
 }
 
-// ---- arithmetic modulo a prime below 2^31 (products fit in u64) ----
-
-fn mm(a: u64, b: u64, p: u64) -> u64 {
-    a * b % p
-}
-
-fn inv(a: u64, p: u64) -> u64 {
-    pow_mod(a, p - 2, p)
-}
-
-fn reduce(c: &BigInt, p: u64) -> u64 {
-    c.mod_floor(&BigInt::from(p)).to_u64().expect("a residue below p")
-}
+// ---- arithmetic modulo a word prime (`numeric::modular`) ----
 
 /// Power sums p_1..p_k of the roots of the monic c (lowest first), by
 /// Newton's identities.
@@ -390,62 +415,8 @@ fn resultant_monic(e: &[u64], g: &[u64], p: u64) -> u64 {
         shifted[1..].copy_from_slice(&v);
         v = rem_monic(&shifted, g, p);
     }
-    // determinant by elimination (of the transpose: the same)
-    let mut m = cols;
-    let mut det = 1u64;
-    for c in 0..n {
-        let Some(r) = (c..n).find(|&r| m[r][c] != 0) else { return 0 };
-        if r != c {
-            m.swap(r, c);
-            det = (p - det) % p;
-        }
-        det = mm(det, m[c][c], p);
-        let iv = inv(m[c][c], p);
-        for r in c + 1..n {
-            if m[r][c] == 0 {
-                continue;
-            }
-            let f = mm(m[r][c], iv, p);
-            for k in c..n {
-                m[r][k] = (m[r][k] + p - mm(f, m[c][k], p)) % p;
-            }
-        }
-    }
-    det
-}
-
-fn eval_mod(a: &[u64], t: u64, p: u64) -> u64 {
-    a.iter().rev().fold(0u64, |acc, &c| (mm(acc, t, p) + c) % p)
-}
-
-/// The coefficients of the polynomial of degree ≤ B through (i, y_i),
-/// i = 0..=B, modulo p (Newton's divided differences).
-fn interpolate_mod(y: &[u64], p: u64) -> Vec<u64> {
-    let n = y.len();
-    let mut dd = y.to_vec();
-    for level in 1..n {
-        let il = inv(level as u64, p);
-        for i in (level..n).rev() {
-            dd[i] = mm((dd[i] + p - dd[i - 1]) % p, il, p);
-        }
-    }
-    let mut out = vec![dd[n - 1]];
-    for i in (0..n - 1).rev() {
-        // out = out·(t − i) + dd[i]
-        let mut next = vec![0u64; out.len() + 1];
-        for (k, &c) in out.iter().enumerate() {
-            next[k + 1] = (next[k + 1] + c) % p;
-            next[k] = (next[k] + p - mm(c, i as u64 % p, p)) % p;
-        }
-        next[0] = (next[0] + dd[i]) % p;
-        out = next;
-    }
-    out
-}
-
-/// The primes below 2^31, largest first.
-fn small_primes() -> impl Iterator<Item = u64> {
-    ((1u64 << 30)..(1u64 << 31)).rev().filter(|&n| n % 2 == 1 && is_prime(n))
+    // the determinant of the transpose: the same
+    det_word(cols, p)
 }
 
 /// What the family gives for one pair (block polynomial, target).
@@ -465,6 +436,7 @@ pub(crate) enum Crossings {
 /// identically).
 pub(crate) fn crossings(block: &BiPoly, target: &BiPoly) -> Result<Crossings, String> {
     let not_rational = "the modulus family needs block polynomials with rational coefficients";
+    let not_integral = "the modulus family's scaled block polynomial is not integral (an internal error)";
     let a = rational_coefficients(block).ok_or(not_rational)?;
     let b = rational_coefficients(target).ok_or(not_rational)?;
     for p in [&a, &b] {
@@ -477,65 +449,366 @@ pub(crate) fn crossings(block: &BiPoly, target: &BiPoly) -> Result<Crossings, St
     if d < 2 || b.len() < 2 {
         return Ok(Crossings::Nothing);
     }
-    let l = a.iter().chain(&b).flatten().fold(BigInt::one(), |l, c| l.lcm(c.denom()));
-    let (za, zb) = (scaled(&a, &l), scaled(&b, &l));
+    let l = common_scale(&[&a, &b]);
+    let (za, zb) = (scaled(&a, &l).ok_or(not_integral)?, scaled(&b, &l).ok_or(not_integral)?);
     let dd = d * (d - 1) / 2;
     let ng = b.len() - 1;
     let e = slope(&a).max(slope(&b));
     let bound = (e * Rational::from_integer(BigInt::from(2 * dd * ng))).floor().to_integer();
     let bound = bound.to_usize().filter(|&b| b < 100_000).ok_or("a modulus resultant of too high degree in t")?;
     let (ra, rb) = (root_bound(&za), root_bound(&zb));
-    let one = BigInt::one();
-    let need_bits = (dd * ng) as u64 * ((&one + &ra * &ra).bits() + (&one + &rb * &rb).bits()) + 2;
-    let mut acc: Vec<BigInt> = Vec::new();
-    let mut modulus = BigInt::one();
-    let mut zero_images = 0;
-    for p in small_primes() {
-        let (pa, pb): (Vec<Vec<u64>>, Vec<Vec<u64>>) = (
-            za.iter().map(|c| c.iter().map(|x| reduce(x, p)).collect()).collect(),
-            zb.iter().map(|c| c.iter().map(|x| reduce(x, p)).collect()).collect(),
-        );
-        let values: Vec<u64> = (0..=bound as u64)
-            .map(|t| {
-                let ca: Vec<u64> = pa.iter().map(|c| eval_mod(c, t, p)).collect();
-                let cb: Vec<u64> = pb.iter().map(|c| eval_mod(c, t, p)).collect();
-                resultant_monic(&exterior_square(&ca, p), &root_squared(&cb, p), p)
+    // |Res(t)| = ∏_{k, i<j} |y_k² − x_i x_j| ≤ (ρ_b² + ρ_a²)^{D·deg G} on
+    // |t| = 1, so every coefficient (a Cauchy integral there) too; twice
+    // that, plus one bit for the sign, is what the primes' product exceeds
+    let need_bits = (dd * ng) as u64 * (&ra * &ra + &rb * &rb).bits() + 2;
+    let lifted = from_word_values(bound, need_bits, Some(3), |p| {
+        Some({
+            let (pa, pb): (Vec<Vec<u64>>, Vec<Vec<u64>>) = (
+                za.iter().map(|c| c.iter().map(|x| residue(x, p)).collect()).collect(),
+                zb.iter().map(|c| c.iter().map(|x| residue(x, p)).collect()).collect(),
+            );
+            (0..=bound as u64)
+                .map(|t| {
+                    let ca: Vec<u64> = pa.iter().map(|c| eval_word(c, t, p)).collect();
+                    let cb: Vec<u64> = pb.iter().map(|c| eval_word(c, t, p)).collect();
+                    resultant_monic(&exterior_square(&ca, p), &root_squared(&cb, p), p)
+                })
+                .collect()
+        })
+    });
+    let coeffs: Vec<Rational> = match lifted {
+        Lifted::GaveUpOnZero => {
+            return Err("the modulus resultant vanishes modulo three primes (identically, probably)".into())
+        }
+        Lifted::Exact(c) if c.is_empty() => return Err("the modulus resultant vanishes identically".into()),
+        Lifted::Exact(c) => c.into_iter().map(Rational::from_integer).collect(),
+    };
+    Ok(Crossings::Resultant(Poly { coeffs }))
+}
+
+// ---- block polynomials over Q(ζ_N) (valences 5, 7, ...) ----
+//
+// The same family where the block polynomials are real but not rational:
+// the constant roots and the repeated branch are divided out over Q(ζ_N)
+// (the same steps as above, in cyclotomic arithmetic; the polynomials are
+// small), and Res_s(E, G)(t) — in Q(ζ_N)[t] — is replaced by its norm over
+// the distinct Galois conjugates of the pair (block, target), computed by
+// the embeddings ζ_N ↦ w^a modulo primes p ≡ 1 (mod N) as in
+// `subresultant` (step 4 there): the norm is in Z[t] after the scaling,
+// its roots contain Res's, and each conjugate obeys the same coefficient
+// bound, so the norm's coefficients are at most M^k for k conjugates.
+
+use crate::numeric::Cyclotomic;
+use crate::sweep::exact::subresultant::{embedded, primitive_root_of_unity, ZetaPoly};
+
+/// A polynomial in t over Q(ζ), lowest first.
+type KT = Vec<Cyclotomic>;
+
+fn kzero() -> Cyclotomic {
+    Cyclotomic::from_rational(&<Rational as Zero>::zero())
+}
+
+fn kt_trim(mut a: KT) -> KT {
+    while a.last().is_some_and(crate::numeric::Weight::is_zero) {
+        a.pop();
+    }
+    a
+}
+
+fn kt_add_scaled(a: &KT, b: &KT, c: &Cyclotomic) -> KT {
+    let mut out = vec![kzero(); a.len().max(b.len())];
+    for (k, x) in a.iter().enumerate() {
+        out[k] = out[k].clone() + x.clone();
+    }
+    for (k, x) in b.iter().enumerate() {
+        out[k] = out[k].clone() + x.clone() * c.clone();
+    }
+    kt_trim(out)
+}
+
+fn kt_mul(a: &KT, b: &KT) -> KT {
+    if a.is_empty() || b.is_empty() {
+        return KT::new();
+    }
+    let mut out = vec![kzero(); a.len() + b.len() - 1];
+    for (i, x) in a.iter().enumerate() {
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] = out[i + j].clone() + x.clone() * y.clone();
+        }
+    }
+    kt_trim(out)
+}
+
+fn kt_eval(a: &KT, t: &Cyclotomic) -> Cyclotomic {
+    a.iter().rev().fold(kzero(), |acc, c| acc * t.clone() + c.clone())
+}
+
+/// The polynomial in t of degree < len through (x_i, y_i) over Q(ζ)
+/// (Newton's divided differences).
+fn k_interpolate(x: &[Rational], y: &[Cyclotomic]) -> KT {
+    let n = x.len();
+    let q = |r: &Rational| Cyclotomic::from_rational(r);
+    let mut dd = y.to_vec();
+    for level in 1..n {
+        for i in (level..n).rev() {
+            dd[i] = (dd[i].clone() - dd[i - 1].clone()) / q(&(&x[i] - &x[i - level]));
+        }
+    }
+    let mut out: KT = vec![dd[n - 1].clone()];
+    for i in (0..n - 1).rev() {
+        let mut next = vec![kzero(); out.len() + 1];
+        for (k, c) in out.iter().enumerate() {
+            next[k + 1] = next[k + 1].clone() + c.clone();
+            next[k] = next[k].clone() - c.clone() * q(&x[i]);
+        }
+        next[0] = next[0].clone() + dd[i].clone();
+        out = next;
+    }
+    out
+}
+
+/// Constant roots 0, 1, −1 divided out (as `without_constant_roots`).
+fn k_without_constant_roots(mut p: Vec<KT>) -> Vec<KT> {
+    for c in [0i64, 1, -1] {
+        let c = Cyclotomic::from_rational(&Rational::from_integer(c.into()));
+        while p.len() > 1 {
+            let value = p.iter().rev().fold(KT::new(), |acc, a| kt_add_scaled(a, &acc, &c));
+            if !value.is_empty() {
+                break;
+            }
+            let d = p.len() - 1;
+            let mut q = vec![KT::new(); d];
+            q[d - 1] = p[d].clone();
+            for k in (1..d).rev() {
+                q[k - 1] = kt_add_scaled(&p[k], &q[k], &c);
+            }
+            p = q;
+        }
+    }
+    p
+}
+
+/// p / h for the monic h in Q(ζ)[t][x], when h divides p exactly.
+fn k_divide_exactly(p: &[KT], h: &[KT]) -> Option<Vec<KT>> {
+    let (dp, dh) = (p.len() - 1, h.len() - 1);
+    if dh > dp {
+        return None;
+    }
+    let mut r: Vec<KT> = p.to_vec();
+    let mut q = vec![KT::new(); dp - dh + 1];
+    let minus_one = Cyclotomic::from_rational(&-<Rational as One>::one());
+    for k in (0..=dp - dh).rev() {
+        let c = r[k + dh].clone();
+        for (i, hc) in h.iter().enumerate() {
+            r[k + i] = kt_add_scaled(&r[k + i], &kt_mul(&c, hc), &minus_one);
+        }
+        q[k] = c;
+    }
+    r.iter().all(|c| c.is_empty()).then_some(q)
+}
+
+/// The monic gcd of two polynomials in x over Q(ζ) (Euclid; degree ≤ 10
+/// here, so the cyclotomic fractions stay small).
+fn k_gcd(a: &[Cyclotomic], b: &[Cyclotomic]) -> Vec<Cyclotomic> {
+    let (mut a, mut b) = (kt_trim(a.to_vec()), kt_trim(b.to_vec()));
+    while !b.is_empty() {
+        // a mod b
+        let lead = b[b.len() - 1].clone();
+        while a.len() >= b.len() && !a.is_empty() {
+            let f = a[a.len() - 1].clone() / lead.clone();
+            let shift = a.len() - b.len();
+            for (i, x) in b.iter().enumerate() {
+                a[shift + i] = a[shift + i].clone() - f.clone() * x.clone();
+            }
+            a.pop();
+            a = kt_trim(a);
+        }
+        std::mem::swap(&mut a, &mut b);
+    }
+    match a.last().cloned() {
+        Some(lead) => a.into_iter().map(|c| c / lead.clone()).collect(),
+        None => a,
+    }
+}
+
+/// The repeated branch divided out over Q(ζ) (as `without_repeated_factor`:
+/// H = gcd_x(p, ∂p/∂x) at integer t where its degree is least, its
+/// coefficients interpolated (degree ≤ e·j in t), used only when H²
+/// divides p exactly).
+fn k_without_repeated_factor(p: Vec<KT>) -> Vec<KT> {
+    let d = p.len() - 1;
+    let e = p
+        .iter()
+        .enumerate()
+        .take(d)
+        .map(|(k, c)| Rational::new((c.len().saturating_sub(1) as i64).into(), ((d - k) as i64).into()))
+        .fold(<Rational as Zero>::zero(), |a, b| a.max(b));
+    let mut best: Option<(usize, Vec<(Rational, Vec<Cyclotomic>)>)> = None;
+    for t in 0..(2 * d as i64 + 40) {
+        let tq = Rational::from_integer(t.into());
+        let tc = Cyclotomic::from_rational(&tq);
+        let f: Vec<Cyclotomic> = p.iter().map(|c| kt_eval(c, &tc)).collect();
+        let df: Vec<Cyclotomic> = f
+            .iter()
+            .enumerate()
+            .skip(1)
+            .map(|(k, c)| c.clone() * Cyclotomic::from_rational(&Rational::from_integer((k as i64).into())))
+            .collect();
+        let g = k_gcd(&f, &df);
+        let k = g.len().saturating_sub(1);
+        if k == 0 {
+            return p;
+        }
+        match &mut best {
+            Some((bk, pts)) if *bk == k => pts.push((tq, g)),
+            Some((bk, _)) if *bk < k => {}
+            _ => best = Some((k, vec![(tq, g)])),
+        }
+        let need =
+            (e.clone() * Rational::from_integer((k as i64).into())).floor().to_integer().to_usize().unwrap_or(0) + 1;
+        if let Some((bk, pts)) = &best {
+            if *bk == k && pts.len() >= need {
+                let xs: Vec<Rational> = pts.iter().map(|(x, _)| x.clone()).collect();
+                let h: Vec<KT> = (0..=*bk)
+                    .map(|j| {
+                        let ys: Vec<Cyclotomic> = pts.iter().map(|(_, g)| g[j].clone()).collect();
+                        kt_trim(k_interpolate(&xs, &ys))
+                    })
+                    .collect();
+                return match k_divide_exactly(&p, &h).and_then(|q| k_divide_exactly(&q, &h).map(|_| q)) {
+                    Some(q) => q,
+                    None => p,
+                };
+            }
+        }
+    }
+    p
+}
+
+/// The ζ-coefficients (exponent of ζ_N, rational) of one element.
+fn zeta_entries(x: &Cyclotomic, order: u64) -> Vec<(u64, Rational)> {
+    let m = x.order().unwrap_or(1) as u64;
+    x.coefficients().map(|(i, r)| (i as u64 * (order / m), r)).collect()
+}
+
+/// The modulus family's polynomial for block polynomials over Q(ζ_N): the
+/// norm of Res_s(E, G) over the `conjugates` (the a with distinct
+/// σ_a(block, target)), as `crossings` for rational ones.
+pub(crate) fn crossings_cyclotomic(block: &BiPoly, target: &BiPoly, conjugates: &[u64]) -> Result<Crossings, String> {
+    let coefficients = |p: &BiPoly| -> Option<Vec<KT>> {
+        p.iter().map(|c| c.is_defined().then(|| kt_trim(c.coeffs().to_vec()))).collect()
+    };
+    let not_numbers = "the modulus family needs block polynomials with defined coefficients";
+    let (a, b) = (coefficients(block).ok_or(not_numbers)?, coefficients(target).ok_or(not_numbers)?);
+    let one = Cyclotomic::from_rational(&<Rational as One>::one());
+    for p in [&a, &b] {
+        if p.last().map(|c| c.len() == 1 && c[0] == one) != Some(true) {
+            return Err("the modulus family needs monic block polynomials".into());
+        }
+    }
+    let a = k_without_repeated_factor(k_without_constant_roots(a));
+    let d = a.len() - 1;
+    if d < 2 || b.len() < 2 {
+        return Ok(Crossings::Nothing);
+    }
+    let order = a.iter().chain(&b).flatten().fold(1u64, |l, c| {
+        let m = c.order().unwrap_or(1) as u64;
+        l / l.gcd(&m) * m
+    });
+    // the least scale: per power of x, the lcm of the ζ-coefficients' denominators
+    let as_qt = |p: &[KT]| -> Vec<QT> {
+        p.iter()
+            .map(|c| {
+                let den =
+                    c.iter().flat_map(|x| zeta_entries(x, order)).fold(BigInt::one(), |l, (_, r)| l.lcm(r.denom()));
+                vec![Rational::new(BigInt::one(), den)]
+            })
+            .collect()
+    };
+    let l = common_scale(&[&as_qt(&a), &as_qt(&b)]);
+    let scale = |p: &[KT]| -> Option<ZetaPoly> {
+        let dp = p.len() - 1;
+        p.iter()
+            .enumerate()
+            .map(|(k, c)| {
+                let f = Rational::from_integer(num_traits::pow(l.clone(), dp - k));
+                c.iter()
+                    .map(|x| {
+                        zeta_entries(x, order)
+                            .into_iter()
+                            .map(|(e, r)| {
+                                let v = r * &f;
+                                v.is_integer().then(|| (e, v.to_integer()))
+                            })
+                            .collect()
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    let not_integral = "the modulus family's scaled block polynomial is not integral (an internal error)";
+    let (za, zb) = (scale(&a).ok_or(not_integral)?, scale(&b).ok_or(not_integral)?);
+    // Fujiwara's bound from the 1-norms over t and ζ (every embedding)
+    let bound_of = |z: &ZetaPoly| -> BigInt {
+        let dz = z.len() - 1;
+        let mut r = BigInt::one();
+        for k in 1..=dz {
+            let m: BigInt = z[dz - k].iter().flatten().map(|(_, c)| c.abs()).sum();
+            r = r.max(m.nth_root(k as u32) + 1);
+        }
+        r * 2
+    };
+    let (ra, rb) = (bound_of(&za), bound_of(&zb));
+    let dd = d * (d - 1) / 2;
+    let ng = b.len() - 1;
+    let slope_k = |p: &[KT]| -> Rational {
+        let dp = p.len() - 1;
+        (1..=dp)
+            .map(|k| Rational::new((p[dp - k].len().saturating_sub(1) as i64).into(), (k as i64).into()))
+            .fold(<Rational as Zero>::zero(), |x, y| x.max(y))
+    };
+    let e = slope_k(&a).max(slope_k(&b));
+    let kc = conjugates.len();
+    let one_bound = (e * Rational::from_integer(BigInt::from(2 * dd * ng))).floor().to_integer();
+    let bound = one_bound
+        .to_usize()
+        .map(|b| b * kc)
+        .filter(|&b| b < 100_000)
+        .ok_or("a modulus resultant of too high degree in t")?;
+    let need_bits = kc as u64 * (dd * ng) as u64 * (&ra * &ra + &rb * &rb).bits() + 2;
+    let lifted = from_word_values(bound, need_bits, Some(3), |p| {
+        if (p - 1) % order != 0 {
+            return None;
+        }
+        let w = primitive_root_of_unity(order, p);
+        let images: Vec<(Vec<Vec<u64>>, Vec<Vec<u64>>)> = conjugates
+            .iter()
+            .map(|&c| {
+                let wc = crate::numeric::modular::pow_mod(w, c, p);
+                (embedded(&za, wc, order, p), embedded(&zb, wc, order, p))
             })
             .collect();
-        let image = interpolate_mod(&values, p);
-        if modulus.is_one() && image.iter().all(|&c| c == 0) {
-            zero_images += 1;
-            if zero_images == 3 {
-                return Err("the modulus resultant vanishes modulo three primes (identically, probably)".into());
-            }
-            continue;
+        Some(
+            (0..=bound as u64)
+                .map(|t| {
+                    images.iter().fold(1u64, |acc, (pa, pb)| {
+                        let ca: Vec<u64> = pa.iter().map(|c| eval_word(c, t, p)).collect();
+                        let cb: Vec<u64> = pb.iter().map(|c| eval_word(c, t, p)).collect();
+                        mm(acc, resultant_monic(&exterior_square(&ca, p), &root_squared(&cb, p), p), p)
+                    })
+                })
+                .collect(),
+        )
+    });
+    match lifted {
+        Lifted::GaveUpOnZero => {
+            Err("the modulus resultant vanishes modulo three primes (identically, probably)".into())
         }
-        // Chinese remainders: x ≡ acc (mod M), x ≡ image (mod p)
-        if acc.is_empty() {
-            acc = vec![BigInt::zero(); image.len()];
-        }
-        let pbig = BigInt::from(p);
-        let m_inv = inv(reduce(&modulus, p), p);
-        for (x, &r) in acc.iter_mut().zip(&image) {
-            let xp = reduce(x, p);
-            let k = mm((r + p - xp) % p, m_inv, p);
-            *x += &modulus * BigInt::from(k);
-        }
-        modulus *= &pbig;
-        if modulus.bits() > need_bits {
-            break;
+        Lifted::Exact(c) if c.is_empty() => Err("the modulus resultant vanishes identically".into()),
+        Lifted::Exact(c) => {
+            Ok(Crossings::Resultant(Poly { coeffs: c.into_iter().map(Rational::from_integer).collect() }))
         }
     }
-    let half = &modulus / 2;
-    let mut coeffs: Vec<Rational> =
-        acc.iter().map(|x| Rational::from_integer(if x > &half { x - &modulus } else { x.clone() })).collect();
-    while coeffs.len() > 1 && coeffs.last().is_some_and(Zero::is_zero) {
-        coeffs.pop();
-    }
-    if coeffs.iter().all(Zero::is_zero) {
-        return Err("the modulus resultant vanishes identically".into());
-    }
-    Ok(Crossings::Resultant(Poly { coeffs }))
 }
 
 #[cfg(test)]
@@ -618,6 +891,44 @@ mod tests {
         let Crossings::Resultant(r) = crossings(&p, &target).unwrap() else { panic!("no resultant") };
         let expected = from_roots_squarefree(&[&[-1, 4], &[1, 0, 0, 4], &[0, 1], &[-4, 1], &[4, 1]]);
         assert_eq!(monic(&crate::numeric::sturm::squarefree(&r)), monic(&expected));
+    }
+
+    #[test]
+    fn a_crossing_at_a_cyclotomic_modulus_gives_the_norm() {
+        // P = x² + t (the pair ±i√t, |u|² = t) against T = x − γ, γ =
+        // ζ_5 + ζ_5⁴ = 2cos(2π/5) = (√5 − 1)/2: the crossing is t = γ².
+        // Over Q(√5), Res ∝ t − γ²; its conjugate (γ' = ζ_5² + ζ_5³ =
+        // (−1 − √5)/2) gives t − γ'², and γ² + γ'² = 3, γ²γ'² = (γγ')² = 1,
+        // so the norm is ∝ t² − 3t + 1
+        let p = bipoly(&[&[(0, 1), (1, 1)], &[], &[(1, 1)]]);
+        let z = |k: i64| crate::numeric::Cyclotomic::root_of_unity(k, 5).unwrap();
+        let gamma = z(1) + z(4);
+        let target: BiPoly =
+            vec![TPoly::constant(-gamma), TPoly::constant(crate::numeric::Cyclotomic::from_rational(&Rational::one()))];
+        // σ_1 keeps γ, σ_2 sends it to γ' (σ_4, σ_3 repeat them)
+        let conjugates = [1, 2];
+        let Crossings::Resultant(r) = crossings_cyclotomic(&p, &target, &conjugates).unwrap() else {
+            panic!("no resultant")
+        };
+        assert_eq!(monic(&crate::numeric::sturm::squarefree(&r)), monic(&from_roots_squarefree(&[&[1, -3, 1]])));
+    }
+
+    #[test]
+    fn the_common_scale_is_the_least_per_power() {
+        // P = x² + (t/3) x − t/72: c_1 has denominator 3 (k = 1: 3¹), c_0
+        // denominator 2³·3² (k = 2: 2^⌈3/2⌉·3^⌈2/2⌉ = 4·3), so L = 12 and
+        // 144·P(y/12) = y² + 4t y − 2t (the lcm 72 would also work, with
+        // 72² instead of 12² in every coefficient)
+        let p = vec![
+            vec![Rational::zero(), Rational::new((-1).into(), 72.into())],
+            vec![Rational::zero(), Rational::new(1.into(), 3.into())],
+            vec![Rational::one()],
+        ];
+        let l = common_scale(&[&p]);
+        assert_eq!(l, BigInt::from(12));
+        let z = scaled(&p, &l).unwrap();
+        let ints = |v: &[i64]| v.iter().map(|&x| BigInt::from(x)).collect::<Vec<_>>();
+        assert_eq!(z, vec![ints(&[0, -2]), ints(&[0, 4]), ints(&[1])]);
     }
 
     #[test]
