@@ -163,7 +163,8 @@ fn cli_exit_codes_json_and_refusals() {
     for args in [
         &["charmap", "catmull-clark", "-n", "4", "--tag", "crease:2", "--certify"][..],
         &["charmap", "catmull-clark", "-n", "3", "--tag", "corner", "--certify"][..],
-        &["charmap", "catmull-clark", "-n", "3", "--tag", "boundary", "--certify", "--certificate", "/tmp/never.json"][..],
+        &["charmap", "catmull-clark", "-n", "3", "--tag", "boundary", "--certify", "--certificate", "/tmp/never.json"]
+            [..],
     ] {
         let line = common::fails(args);
         assert!(line.contains("--certify"), "{line}");

@@ -46,9 +46,8 @@ use super::discs::eigenvector;
 use super::spectrum::{exact_rows, Verdict};
 use super::tagged::{certify_tagged, Named, TaggedCertificate};
 use crate::charmap::net::{self, Net};
-use crate::matrix::local::assemble_rows;
-use crate::spectrum::reflection::split;
 use crate::error::Error;
+use crate::matrix::local::assemble_rows;
 use crate::mesh::{PolyMesh, VertexTag};
 use crate::neighbourhood::Tagging;
 use crate::numeric::exact::QMatrix;
@@ -56,6 +55,7 @@ use crate::numeric::sturm::{count_roots, squarefree, sturm_chain};
 use crate::numeric::{Interval, Rational, SmallRational, Weight};
 use crate::refine::{connectivity, Origin};
 use crate::sdc::Scheme;
+use crate::spectrum::reflection::split;
 use crate::spectrum::Analysis;
 
 /// Everything `charmap --tag boundary --certify` proves. Field names are
@@ -218,8 +218,7 @@ fn enclosed_eigenvector(
         ("whole", _) => x,
         (parity, Some(image)) => {
             let even = parity == "even";
-            let reps: Vec<usize> =
-                (0..size).filter(|&b| if even { b <= image[b] } else { b < image[b] }).collect();
+            let reps: Vec<usize> = (0..size).filter(|&b| if even { b <= image[b] } else { b < image[b] }).collect();
             if reps.len() != x.len() {
                 return Err("the block's size does not match the reflection".into());
             }
@@ -400,7 +399,10 @@ fn geometric_half(
             return Ok((Verdict::Disproved(why.clone()), Verdict::Disproved(format!("not regular ({why})"))));
         }
         if undecided > 0 {
-            last_reason = format!("at {levels} levels the Jacobian's sign is undecided on {undecided} of {} ring faces", ring.len());
+            last_reason = format!(
+                "at {levels} levels the Jacobian's sign is undecided on {undecided} of {} ring faces",
+                ring.len()
+            );
             continue;
         }
         let sign: i64 = if negative > 0 { -1 } else { 1 };
@@ -474,7 +476,10 @@ fn geometric_half(
             }
             Err(why) => {
                 cert.reasons.extend(level_reasons);
-                return Ok((Verdict::Proved, Verdict::NotProved(format!("the winding number is not certified: {why}"))));
+                return Ok((
+                    Verdict::Proved,
+                    Verdict::NotProved(format!("the winding number is not certified: {why}")),
+                ));
             }
         }
     }
@@ -547,7 +552,9 @@ fn boundary_window(net: &Net<Point>, vf: &[Vec<usize>], f: usize) -> Result<Boun
     let mut distinct: Vec<(i32, i32)> = coords.0.iter().map(|&(_, c)| c).collect();
     distinct.sort_unstable();
     distinct.dedup();
-    if distinct.len() != coords.0.len() || coords.0.iter().any(|&(_, (x, y))| !(-1..=2).contains(&x) || !(-1..=2).contains(&y)) {
+    if distinct.len() != coords.0.len()
+        || coords.0.iter().any(|&(_, (x, y))| !(-1..=2).contains(&x) || !(-1..=2).contains(&y))
+    {
         return Err(conflict());
     }
     let p = |v: usize| net.points[v].ok_or_else(|| "a window point is not determined".to_string());
@@ -743,11 +750,11 @@ fn doubled_winding(
         m[normal] = -m[normal];
         m
     };
-    let directions: Vec<[f64; 2]> = arcs
-        .iter()
-        .map(|&w| half_plane(&windows[w].window.points, 0.0))
-        .collect::<Result<_, String>>()?;
-    let dot = |d: [f64; 2], w: [f64; 2]| Interval::point(d[0]) * Interval::point(w[0]) + Interval::point(d[1]) * Interval::point(w[1]);
+    let directions: Vec<[f64; 2]> =
+        arcs.iter().map(|&w| half_plane(&windows[w].window.points, 0.0)).collect::<Result<_, String>>()?;
+    let dot = |d: [f64; 2], w: [f64; 2]| {
+        Interval::point(d[0]) * Interval::point(w[0]) + Interval::point(d[1]) * Interval::point(w[1])
+    };
     // polygon vertex i is chain vertex i; arcs i−1 and i meet there
     let m = arcs.len();
     let mut polygon = Vec::with_capacity(2 * m);
@@ -874,10 +881,13 @@ fn krawczyk_eigenpair(
             .collect()
     };
     let z: Vec<Interval> = times_r(&f).into_iter().map(|v| Interval::point(0.0) - v).collect();
-    let mut y: Vec<Interval> = z.iter().map(|v| {
-        let m = v.lo.abs().max(v.hi.abs());
-        Interval::symmetric(2.0 * m + 1e-300)
-    }).collect();
+    let mut y: Vec<Interval> = z
+        .iter()
+        .map(|v| {
+            let m = v.lo.abs().max(v.hi.abs());
+            Interval::symmetric(2.0 * m + 1e-300)
+        })
+        .collect();
     for _ in 0..8 {
         // J(ũ + Y) as an interval matrix, then C = I − R·J
         let mu_y = mui + y[s];

@@ -499,7 +499,7 @@ pub(crate) fn crossings(block: &BiPoly, target: &BiPoly) -> Result<Crossings, St
 // bound, so the norm's coefficients are at most M^k for k conjugates.
 
 use crate::numeric::Cyclotomic;
-use crate::sweep::exact::subresultant::{embedded, primitive_root_of_unity, ZetaPoly};
+use crate::sweep::exact::subresultant::{conjugate_images, ZetaPoly};
 
 /// A polynomial in t over Q(ζ), lowest first.
 type KT = Vec<Cyclotomic>;
@@ -777,17 +777,7 @@ pub(crate) fn crossings_cyclotomic(block: &BiPoly, target: &BiPoly, conjugates: 
         .ok_or("a modulus resultant of too high degree in t")?;
     let need_bits = kc as u64 * (dd * ng) as u64 * (&ra * &ra + &rb * &rb).bits() + 2;
     let lifted = from_word_values(bound, need_bits, Some(3), |p| {
-        if (p - 1) % order != 0 {
-            return None;
-        }
-        let w = primitive_root_of_unity(order, p);
-        let images: Vec<(Vec<Vec<u64>>, Vec<Vec<u64>>)> = conjugates
-            .iter()
-            .map(|&c| {
-                let wc = crate::numeric::modular::pow_mod(w, c, p);
-                (embedded(&za, wc, order, p), embedded(&zb, wc, order, p))
-            })
-            .collect();
+        let images = conjugate_images(&za, &zb, conjugates, order, p)?;
         Some(
             (0..=bound as u64)
                 .map(|t| {

@@ -134,6 +134,31 @@ pub(crate) fn embedded(p: &ZetaPoly, w: u64, order: u64, prime: u64) -> Vec<Vec<
         .collect()
 }
 
+/// The images of two polynomials over Q(ζ_N) under the embeddings
+/// ζ_N ↦ w^c of F_p, one pair per conjugate exponent c (w a primitive N-th
+/// root of unity modulo p); None where F_p has none (p ≢ 1 mod N).
+pub(crate) fn conjugate_images(
+    a: &ZetaPoly,
+    b: &ZetaPoly,
+    conjugates: &[u64],
+    order: u64,
+    p: u64,
+) -> Option<Vec<(Vec<Vec<u64>>, Vec<Vec<u64>>)>> {
+    if (p - 1) % order != 0 {
+        return None;
+    }
+    let w = primitive_root_of_unity(order, p);
+    Some(
+        conjugates
+            .iter()
+            .map(|&c| {
+                let wc = pow_mod(w, c, p);
+                (embedded(a, wc, order, p), embedded(b, wc, order, p))
+            })
+            .collect(),
+    )
+}
+
 /// psc_j of a (degree m) and b (degree n) given by their coefficients
 /// modulo p at one t: the determinant of the (m + n − 2j)-square matrix of
 /// the coefficients of x^i a (i < n − j) and x^i b (i < m − j) at the
@@ -181,18 +206,7 @@ pub(crate) fn first_nonzero_psc(
         // |coefficient| ≤ M_j^k < 2^{k·((n−j)·bits_a + (m−j)·bits_b) + 1}
         let bits = k as u64 * ((n - j) as u64 * bits_a + (m - j) as u64 * bits_b) + 1;
         let lifted = from_word_values(degree, bits, None, |p| {
-            // ζ_N needs a primitive N-th root of unity in F_p
-            if (p - 1) % order != 0 {
-                return None;
-            }
-            let w = primitive_root_of_unity(order, p);
-            let images: Vec<(Vec<Vec<u64>>, Vec<Vec<u64>>)> = conjugates
-                .iter()
-                .map(|&c| {
-                    let wc = pow_mod(w, c, p);
-                    (embedded(&za, wc, order, p), embedded(&zb, wc, order, p))
-                })
-                .collect();
+            let images = conjugate_images(&za, &zb, conjugates, order, p)?;
             Some(
                 (0..=degree as u64)
                     .map(|t| {
