@@ -296,6 +296,21 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
         let m = c.field_order();
         l / crate::numeric::weight::gcd(l as i64, m as i64) as u64 * m
     });
+    // Q(ζ_N) with φ(N) > 2: the exact stages work with norms over several
+    // conjugates, minutes where Q takes seconds; minutes without a line
+    // printed look like a hang
+    // (blocks of low degree in t, as non-box's, stay fast: under a second
+    // for k = 3..12)
+    let phi = (1..=field_order).filter(|&k| crate::numeric::weight::gcd(k as i64, field_order as i64) == 1).count();
+    let t_degree = polys.iter().flatten().map(TPoly::degree).max().unwrap_or(0);
+    if phi > 2 && t_degree >= 4 {
+        eprintln!(
+            "sweep --exact: n = {n}: the blocks' coefficients lie in Q(ζ_{field_order}) (degree {phi}) and have degree {t_degree} \
+             in the parameter: the exact \
+             stages work with norms over its conjugates and take long (measured on 2 cores: unified-sqrt3 n = 5 \
+             about 35 s, n = 7 about 3 min)"
+        );
+    }
     let mut not_exact = Vec::new();
     if polys.iter().any(|p| !p.iter().all(TPoly::is_real)) {
         not_exact.push("a block's characteristic polynomial has non-real coefficients".to_string());
