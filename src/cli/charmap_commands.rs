@@ -210,8 +210,9 @@ pub fn charmap(a: &CharmapArgs, scheme: Box<dyn Scheme>) -> Result<i32, Error> {
         &Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false },
     )?;
     let map = check_map(scheme.as_ref(), &analysis, &opts)?;
-    if a.certify && tagged {
-        let c = crate::certify::tagged_charmap::certify_tagged_charmap(scheme.as_ref(), &analysis, a.certify_levels)?;
+    // the figure, if asked for (after the certificate: a refused
+    // certificate writes no figure)
+    let write_figure = || -> Result<(), Error> {
         if let Some(out) = &a.out {
             if map.ring.is_none() {
                 return Err(Error::Input(format!("no figure written: {}", map.explanation)));
@@ -220,6 +221,11 @@ pub fn charmap(a: &CharmapArgs, scheme: Box<dyn Scheme>) -> Result<i32, Error> {
             plot::save(&fig, out)?;
             plot::save_data(&fig, a.figure.data_path()?)?;
         }
+        Ok(())
+    };
+    if a.certify && tagged {
+        let c = crate::certify::tagged_charmap::certify_tagged_charmap(scheme.as_ref(), &analysis, a.certify_levels)?;
+        write_figure()?;
         let status = super::commands::certified_status(&c.sector_criterion, c.conditional);
         if a.json {
             #[derive(serde::Serialize)]
@@ -243,14 +249,7 @@ pub fn charmap(a: &CharmapArgs, scheme: Box<dyn Scheme>) -> Result<i32, Error> {
     } else {
         None
     };
-    if let Some(out) = &a.out {
-        if map.ring.is_none() {
-            return Err(Error::Input(format!("no figure written: {}", map.explanation)));
-        }
-        let fig = RingFigure { map: &map, copies: a.rings, wedge: a.wedge, sectors: a.sectors, style };
-        plot::save(&fig, out)?;
-        plot::save_data(&fig, a.figure.data_path()?)?;
-    }
+    write_figure()?;
     let status = certificate
         .as_ref()
         .map(|c| super::commands::certified_status(&c.c1, c.conditional || c.geometry_conditional))
