@@ -566,7 +566,7 @@ fn reason(v: &Verdict) -> &str {
 type IntervalRowsOf<W> = Vec<Vec<(usize, W)>>;
 
 /// Sparse rows to a dense matrix (a column listed twice is summed).
-fn dense<W: Weight>(rows: &IntervalRowsOf<W>, size: usize, zero: W) -> Vec<Vec<W>> {
+pub(super) fn dense<W: Weight>(rows: &IntervalRowsOf<W>, size: usize, zero: W) -> Vec<Vec<W>> {
     rows.iter()
         .map(|row| {
             let mut d = vec![zero.clone(); size];

@@ -781,16 +781,7 @@ fn interval_matrix(scheme: &dyn Scheme, analysis: &Analysis) -> Result<Vec<Vec<I
     let everyone: Vec<usize> = (0..size).collect();
     let rows = assemble_rows::<Interval>(scheme, &analysis.discovered, analysis.spectrum.neighbourhood, &everyone)
         .map_err(|e| format!("the interval rows of S could not be assembled: {e:?}"))?;
-    Ok(rows
-        .iter()
-        .map(|row| {
-            let mut d = vec![Interval::point(0.0); size];
-            for (c, w) in row {
-                d[*c] = d[*c] + *w;
-            }
-            d
-        })
-        .collect())
+    Ok(super::tagged::dense(&rows, size, Interval::point(0.0)))
 }
 
 /// The block of S the eigenvector lives in (`spectrum::reflection::split`).

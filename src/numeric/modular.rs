@@ -72,7 +72,8 @@ fn primes() -> impl Iterator<Item = u64> {
     ((1u64 << 61)..(1u64 << 62)).rev().filter(|&n| n % 2 == 1 && is_prime(n))
 }
 
-fn inv_mod(a: u64, p: u64) -> u64 {
+/// a⁻¹ mod a prime p (a ≠ 0 mod p), by Fermat.
+pub(crate) fn inv_mod(a: u64, p: u64) -> u64 {
     pow_mod(a, p - 2, p)
 }
 
@@ -102,6 +103,18 @@ fn rem_mod(mut a: Vec<u64>, b: &[u64], p: u64) -> Vec<u64> {
     a
 }
 
+/// One Chinese-remainder step: each x ≡ acc (mod M) becomes the x with
+/// x ≡ acc (mod M) and x ≡ image (mod p), in [0, M·p) (p prime, p ∤ M).
+fn crt_step(acc: &mut [BigInt], modulus: &BigInt, image: &[u64], p: u64) {
+    let m_inv = inv_mod(residue(modulus, p), p);
+    for (x, &r) in acc.iter_mut().zip(image) {
+        let k = mul_mod((r + p - residue(x, p)) % p, m_inv, p);
+        if k != 0 {
+            *x += modulus * BigInt::from(k);
+        }
+    }
+}
+
 /// The monic gcd modulo p (both nonzero).
 fn gcd_mod(a: &[u64], b: &[u64], p: u64) -> Vec<u64> {
     let (mut a, mut b) = (a.to_vec(), b.to_vec());
@@ -115,8 +128,7 @@ fn gcd_mod(a: &[u64], b: &[u64], p: u64) -> Vec<u64> {
 }
 
 fn reduce(f: &[BigInt], p: u64) -> Vec<u64> {
-    let m = BigInt::from(p);
-    trim_mod(f.iter().map(|c| c.mod_floor(&m).to_u64().expect("a residue below p")).collect())
+    trim_mod(f.iter().map(|c| residue(c, p)).collect())
 }
 
 /// The coefficients divided by their gcd, leading coefficient positive.
@@ -218,7 +230,7 @@ pub fn gcd(f: &[BigInt], g: &[BigInt]) -> Vec<BigInt> {
         if d > best {
             continue; // an unlucky prime
         }
-        let hp = h.mod_floor(&pb).to_u64().expect("a residue");
+        let hp = residue(&h, p);
         let image: Vec<u64> = image.iter().map(|&c| mul_mod(c, hp, p)).collect();
         if d < best {
             best = d;
@@ -227,13 +239,7 @@ pub fn gcd(f: &[BigInt], g: &[BigInt]) -> Vec<BigInt> {
             last = None;
             continue;
         }
-        // Chinese remainders: x ≡ acc (mod M), x ≡ image (mod p)
-        let m_inv = inv_mod(modulus.mod_floor(&BigInt::from(p)).to_u64().expect("a residue"), p);
-        for (a, &r) in acc.iter_mut().zip(&image) {
-            let ap = a.mod_floor(&BigInt::from(p)).to_u64().expect("a residue");
-            let t = mul_mod((r + p - ap) % p, m_inv, p);
-            *a += &modulus * BigInt::from(t);
-        }
+        crt_step(&mut acc, &modulus, &image, p);
         modulus *= &pb;
         // the symmetric representative, made primitive
         let half = &modulus / 2;
@@ -273,11 +279,6 @@ pub(crate) fn word_mul(a: u64, b: u64, p: u64) -> u64 {
     a * b % p
 }
 
-/// a⁻¹ mod a word prime p (a ≠ 0 mod p).
-pub(crate) fn word_inv(a: u64, p: u64) -> u64 {
-    pow_mod(a, p - 2, p)
-}
-
 /// c mod p in [0, p).
 pub(crate) fn residue(c: &BigInt, p: u64) -> u64 {
     c.mod_floor(&BigInt::from(p)).to_u64().expect("a residue below p")
@@ -298,7 +299,7 @@ pub(crate) fn interpolate_word(y: &[u64], p: u64) -> Vec<u64> {
     }
     let mut dd = y.to_vec();
     for level in 1..n {
-        let il = word_inv(level as u64, p);
+        let il = inv_mod(level as u64, p);
         for i in (level..n).rev() {
             dd[i] = word_mul((dd[i] + p - dd[i - 1]) % p, il, p);
         }
@@ -328,7 +329,7 @@ pub(crate) fn det_word(mut m: Vec<Vec<u64>>, p: u64) -> u64 {
             det = (p - det) % p;
         }
         det = word_mul(det, m[c][c], p);
-        let iv = word_inv(m[c][c], p);
+        let iv = inv_mod(m[c][c], p);
         for r in c + 1..n {
             if m[r][c] == 0 {
                 continue;
@@ -380,14 +381,7 @@ pub(crate) fn from_word_values(
                 return Lifted::GaveUpOnZero;
             }
         }
-        // Chinese remainders: x ≡ acc (mod M), x ≡ image (mod p)
-        let m_inv = word_inv(residue(&modulus, p), p);
-        for (x, &r) in acc.iter_mut().zip(&image) {
-            let k = word_mul((r + p - residue(x, p)) % p, m_inv, p);
-            if k != 0 {
-                *x += &modulus * BigInt::from(k);
-            }
-        }
+        crt_step(&mut acc, &modulus, &image, p);
         modulus *= BigInt::from(p);
         if modulus.bits() > bits + 1 {
             break;

@@ -51,7 +51,7 @@ use num_traits::{One, Signed, ToPrimitive, Zero};
 
 use crate::numeric::exact::Poly;
 use crate::numeric::modular::{
-    det_word, eval_word, from_word_values, is_prime, residue, word_inv as inv, word_mul as mm, Lifted,
+    det_word, eval_word, from_word_values, inv_mod as inv, is_prime, residue, word_mul as mm, Lifted,
 };
 use crate::numeric::{BiPoly, Rational, TPoly};
 
