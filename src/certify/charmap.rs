@@ -50,7 +50,7 @@ use super::s31;
 use super::spectrum::{certify_analysis, SpectrumCertificate, Verdict};
 use crate::charmap::net::{self, Net};
 use crate::error::Error;
-use crate::mesh::PolyMesh;
+use crate::mesh::{IdMap, IdSet, PolyMesh};
 use crate::numeric::{Interval, Rational, SmallRational, Weight};
 use crate::refine::{connectivity, stencil_at, GatherError, Origin};
 use crate::sdc::host::RegularSpline;
@@ -778,35 +778,34 @@ impl Window {
         if fcv {
             return Window::non_box(net, f, faces, &coords);
         }
-        let (mut along_u, mut along_v) = (Vec::new(), Vec::new());
+        // each lattice edge once: an inner edge of the 3 × 3 block borders
+        // two of its faces, and a repeated difference would only repeat
+        // pairs in the pairwise Jacobian bound (the same hull, at up to
+        // 18 × 18 products instead of 12 × 12)
         let (mut u_pairs, mut v_pairs) = (Vec::new(), Vec::new());
         for &g in &faces {
             let gf = mesh.face(g);
             for k in 0..m {
                 let (a, b) = (gf[k], gf[(k + 1) % m]);
                 let (ca, cb) = (coords.at(a), coords.at(b));
-                let diff = |from: Point, to: Point| [to[0] - from[0], to[1] - from[1]];
-                match (cb.0 - ca.0, cb.1 - ca.1) {
-                    (1, 0) => {
-                        along_u.push(diff(p(a)?, p(b)?));
-                        u_pairs.push((a, b));
-                    }
-                    (-1, 0) => {
-                        along_u.push(diff(p(b)?, p(a)?));
-                        u_pairs.push((b, a));
-                    }
-                    (0, 1) => {
-                        along_v.push(diff(p(a)?, p(b)?));
-                        v_pairs.push((a, b));
-                    }
-                    (0, -1) => {
-                        along_v.push(diff(p(b)?, p(a)?));
-                        v_pairs.push((b, a));
-                    }
-                    _ => {}
+                let (pairs, edge) = match (cb.0 - ca.0, cb.1 - ca.1) {
+                    (1, 0) => (&mut u_pairs, (a, b)),
+                    (-1, 0) => (&mut u_pairs, (b, a)),
+                    (0, 1) => (&mut v_pairs, (a, b)),
+                    (0, -1) => (&mut v_pairs, (b, a)),
+                    _ => continue,
+                };
+                if !pairs.contains(&edge) {
+                    pairs.push(edge);
                 }
             }
         }
+        let diff = |&(from, to): &(usize, usize)| -> Result<Point, String> {
+            let (from, to) = (p(from)?, p(to)?);
+            Ok([to[0] - from[0], to[1] - from[1]])
+        };
+        let along_u = u_pairs.iter().map(diff).collect::<Result<Vec<_>, String>>()?;
+        let along_v = v_pairs.iter().map(diff).collect::<Result<Vec<_>, String>>()?;
         // in vertex order: the half-plane direction sums these points'
         // midpoints, and a hash order would change its last bits run to run
         let mut ids: Vec<usize> = coords.0.iter().map(|&(v, _)| v).collect();
@@ -949,18 +948,18 @@ fn check_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[Window]) -> Resu
     if windows.iter().any(|w| !w.layout.is_empty()) {
         return check_non_box_rules(scheme, mesh, windows);
     }
-    let mut corners: HashSet<usize> = HashSet::new();
-    let mut faces: HashSet<usize> = HashSet::new();
+    let mut corners: IdSet<usize> = IdSet::default();
+    let mut faces: IdSet<usize> = IdSet::default();
     for w in windows {
         corners.extend(mesh.face(w.face).iter().copied());
         faces.extend(w.faces.iter().copied());
     }
-    let refined = connectivity(scheme, mesh).map_err(|e| format!("the net could not be refined: {e}"))?;
+    let origins = origins_over(scheme, mesh, &faces)?;
     let vf = mesh.vertex_faces();
     let ternary = scheme.topology().regular_spline() == RegularSpline::TernaryPrimal;
     let mut fitting: Option<Vec<RegularPart>> = None;
     let mut checked = 0;
-    for &origin in &refined.vertex_origins {
+    for origin in origins {
         let masks: Vec<(RegularPart, Mask)> = match origin {
             Origin::Vertex(v) if corners.contains(&v) => vertex_masks(mesh, &vf, v, ternary)?,
             Origin::Edge(a, b) if corners.contains(&a) || corners.contains(&b) => {
@@ -1019,10 +1018,36 @@ fn check_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[Window]) -> Resu
     }
 }
 
+/// The origins of the new points that one refinement of `mesh` makes over
+/// the faces `faces`, in the order the refinement of the whole mesh lists
+/// them. Only the entities at the windows are checked, so only the windows'
+/// faces are refined (the refinement of the whole net, four or nine times
+/// its faces, was most of the rule check's cost); the sub-mesh keeps the
+/// vertex ids, and its faces map back through `keep`. An edge at a window's
+/// corner has both its faces in the window (the window holds every face at
+/// its corners), so it is interior to the sub-mesh and named as in the whole
+/// mesh.
+fn origins_over(scheme: &dyn Scheme, mesh: &PolyMesh, faces: &IdSet<usize>) -> Result<Vec<Origin>, String> {
+    let mut keep: Vec<usize> = faces.iter().copied().collect();
+    keep.sort_unstable();
+    let refused = |e: Error| format!("the net could not be refined: {e}");
+    let sub = mesh.keep_faces(&keep).map_err(refused)?;
+    let refined = connectivity(scheme, &sub).map_err(refused)?;
+    Ok(refined
+        .vertex_origins
+        .into_iter()
+        .map(|o| match o {
+            Origin::Face(f) => Origin::Face(keep[f]),
+            Origin::Corner { face, corner } => Origin::Corner { face: keep[face], corner },
+            o @ (Origin::Vertex(_) | Origin::Edge(..)) => o,
+        })
+        .collect())
+}
+
 /// A stencil or mask: weight per control point, exact in machine integers
 /// (every mask weight is a small fraction; a stencil weight that does not
 /// fit is kept spoiled, and a spoiled weight equals no mask weight).
-pub(super) type Mask = HashMap<usize, SmallRational>;
+pub(super) type Mask = IdMap<usize, SmallRational>;
 
 /// The scheme's rational stencil at `origin`, repeated points merged and
 /// zero weights dropped. Computed in machine-integer rationals first (the
@@ -1116,7 +1141,7 @@ fn check_non_box_rules(
             }
         };
         let derived = s31::mask(new).ok_or("a new point is not at a control position of the S_3^1 lattice")?;
-        let mut expected: Mask = HashMap::new();
+        let mut expected = Mask::default();
         for (p, weight) in derived {
             let &v = at.get(&p).ok_or("the S_3^1 mask reaches beyond the window")?;
             expected.insert(v, SmallRational::from_rational(&weight));
@@ -1145,8 +1170,8 @@ pub(super) fn vertex_masks(
 ) -> Result<Vec<(RegularPart, Mask)>, String> {
     let around = &vf[v];
     let m = mesh.face(around[0]).len();
-    let mut neighbours: HashSet<usize> = HashSet::new();
-    let mut diagonal: HashSet<usize> = HashSet::new();
+    let mut neighbours: IdSet<usize> = IdSet::default();
+    let mut diagonal: IdSet<usize> = IdSet::default();
     for &g in around {
         let gf = mesh.face(g);
         let k = gf.iter().position(|&x| x == v).ok_or("a vertex's face does not hold it")?;
@@ -1168,7 +1193,7 @@ pub(super) fn vertex_masks(
     Ok(candidates
         .iter()
         .map(|&(kind, centre, edge, diag)| {
-            let mut mask: Mask = HashMap::new();
+            let mut mask = Mask::default();
             mask.insert(v, SmallRational::ratio(centre.0, centre.1));
             for &n in &neighbours {
                 mask.insert(n, SmallRational::ratio(edge.0, edge.1));
@@ -1202,7 +1227,7 @@ pub(super) fn edge_mask(
     }
     if ternary && m == 4 {
         // along the edge (6, 3)/9, across it (1, 7, 1)/9
-        let mut mask: Mask = HashMap::new();
+        let mut mask = Mask::default();
         mask.insert(a, SmallRational::ratio(42, 81));
         mask.insert(b, SmallRational::ratio(21, 81));
         for g in sides {
@@ -1222,7 +1247,7 @@ pub(super) fn edge_mask(
         3 => (RegularPart::ThreeDirectionQuarticBoxSpline, (3, 8), (1, 8)),
         _ => return Err("an edge over the ring borders a face that is neither a quad nor a triangle".into()),
     };
-    let mut mask: Mask = HashMap::new();
+    let mut mask = Mask::default();
     mask.insert(a, SmallRational::ratio(end.0, end.1));
     mask.insert(b, SmallRational::ratio(end.0, end.1));
     for g in sides {
