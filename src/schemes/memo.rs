@@ -9,16 +9,18 @@
 //! type W and key, the result (an `Err(Inexact)` too, so a type that cannot
 //! represent the weights is not asked again).
 
+use crate::mesh::IdMap;
 use crate::numeric::{Inexact, Weight};
 use std::any::{Any, TypeId};
-use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
 type Made = Arc<dyn Any + Send + Sync>;
 
+/// Asked at every slot of every stencil, so keyed with the fast integer
+/// hasher (SipHash was a tenth of stencil weighing).
 #[derive(Default)]
 pub struct WeightMemo {
-    made: Mutex<HashMap<(TypeId, i64), Made>>,
+    made: Mutex<IdMap<(TypeId, i64), Made>>,
 }
 
 impl WeightMemo {
