@@ -1,3 +1,8 @@
+// jemalloc: a sixth of `verify`'s time was glibc's malloc and free of small
+// vectors (see Cargo.toml)
+#[global_allocator]
+static ALLOCATOR: tikv_jemallocator::Jemalloc = tikv_jemallocator::Jemalloc;
+
 fn main() {
     // Like other command-line tools, end quietly when the reader of our output
     // goes away (`subdlab spectrum ... | head`): Rust ignores SIGPIPE by
