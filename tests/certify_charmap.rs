@@ -252,3 +252,34 @@ fn four_three_eons_of_quads_or_of_triangles_are_proved() {
     assert!(text.contains("certified C1 (Reif's criterion): PROVED"), "{text}");
     assert!(text.contains("regular part: three-direction quartic box spline"), "{text}");
 }
+
+/// The rule check's control: Catmull–Clark with the vertex rule moved off
+/// the bicubic B-spline's at every valence (centre 1 − 7/(4n) − 1/(8n), each
+/// edge neighbour 1/(8n²) more: at n = 4 the centre weight is 17/32, neither
+/// the bicubic mask's 9/16 nor A_4's 1/2). Every regular vertex of the ring's
+/// windows then fails both masks, in the windows the check keeps (one per
+/// rotation orbit, `certify::window_orbits`) as in every other: NOT PROVED,
+/// numerically only, at every valence.
+#[test]
+fn a_vertex_rule_that_is_no_box_splines_is_not_proved() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cc-off-vertex.toml");
+    std::fs::write(
+        &path,
+        "name = \"cc-off-vertex\"\ntopology = \"primal-quad\"\n[vertex]\ncentre = \"1 - 7 / (4 n) - 1 / (8 n)\"\n\
+         edge = \"3 / (2 n^2) + 1 / (8 n^2)\"\nface = \"1 / (4 n^2)\"\n[edge]\nends = \"3/8\"\nside = \"1/16\"\n\
+         [face]\ncorner = \"1 / n\"\n",
+    )
+    .unwrap();
+    let scheme = schemes::resolve(path.to_str().unwrap(), &[]).unwrap();
+    for n in [3, 5, 8] {
+        let c = certificate(scheme.as_ref(), n);
+        assert_eq!(c.spectrum.verdict, Verdict::Proved, "n = {n}: the spectrum is not what fails");
+        assert!(
+            matches!(&c.regularity, Verdict::NotProved(w) if w.starts_with("numerical only") && w.contains("not one box spline")),
+            "n = {n}: {:?}",
+            c.regularity
+        );
+        assert!(matches!(c.c1, Verdict::NotProved(_)), "n = {n}");
+    }
+}

@@ -48,6 +48,7 @@ use super::difference;
 use super::discs::eigenvector;
 use super::s31;
 use super::spectrum::{certify_analysis, SpectrumCertificate, Verdict};
+use super::window_orbits;
 use crate::charmap::net::{self, Net};
 use crate::error::Error;
 use crate::mesh::{IdMap, IdSet, PolyMesh};
@@ -370,7 +371,12 @@ fn geometric_half(
         }
         let Some((mut ring, mut inside, mut windows)) = chosen else { continue };
         let mut lattice = None;
-        let part = match check_rules(scheme, &net.mesh, &windows) {
+        // one window per rotation orbit: the others' entities are their
+        // images, and their stencils the images of theirs (`window_orbits`)
+        let period = d.config.rotation_period(scheme);
+        let to_check: Vec<&Window> =
+            window_orbits::representatives(&net, ring, period).into_iter().map(|i| &windows[i]).collect();
+        let part = match check_rules(scheme, &net.mesh, &to_check) {
             Ok(part) => part,
             // no box spline over a triangle ring: the scheme's own regular
             // rules with the difference-scheme bounds (lemma C9), on the
@@ -944,7 +950,7 @@ impl Window {
 /// entity (the candidates are intersected: the bicubic B-spline and A_4
 /// share their edge and face masks and differ at vertices). Returns the box
 /// spline and the number of stencils compared.
-fn check_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[Window]) -> Result<(RegularPart, usize), String> {
+fn check_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[&Window]) -> Result<(RegularPart, usize), String> {
     if windows.iter().any(|w| !w.layout.is_empty()) {
         return check_non_box_rules(scheme, mesh, windows);
     }
@@ -1084,7 +1090,7 @@ pub(super) fn exact_stencil(scheme: &dyn Scheme, mesh: &PolyMesh, origin: Origin
 fn check_non_box_rules(
     scheme: &dyn Scheme,
     mesh: &PolyMesh,
-    windows: &[Window],
+    windows: &[&Window],
 ) -> Result<(RegularPart, usize), String> {
     // per origin of interest, the window whose layout places it (any one:
     // the derived mask is symmetric under the lattice's rotations and

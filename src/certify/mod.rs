@@ -49,6 +49,7 @@ pub mod spectrum;
 pub mod step_rotation;
 pub mod tagged;
 pub mod tagged_charmap;
+pub mod window_orbits;
 
 pub use charmap::{certify_charmap, CharMapCertificate};
 pub use spectrum::{certify_analysis, certify_spectrum, SpectrumCertificate, Verdict};
