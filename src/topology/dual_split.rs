@@ -6,8 +6,6 @@
 //! the new vertex near a face corner over the face's corners. Regular part:
 //! the biquadratic B-spline (binary dual refinement of quads).
 
-use crate::mesh::IdMap;
-
 use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
@@ -21,40 +19,35 @@ use crate::sdc::Origin;
 use crate::topology::chart_builder::ChartBuilder;
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
+    // the new point at corner k of face f is number start[f] + k: face
+    // corners are numbered in face order, so no map from (face, vertex) is
+    // needed (a half-edge look-up gives the corner of a vertex in a face)
+    let mut start = Vec::with_capacity(mesh.num_faces() + 1);
     let mut origins = Vec::new();
-    let mut corner_id: IdMap<(usize, usize), usize> = IdMap::default(); // (face, old vertex) -> new
     for (f, face) in mesh.faces().iter().enumerate() {
-        for (k, &v) in face.iter().enumerate() {
-            corner_id.insert((f, v), origins.len());
-            origins.push(Origin::Corner { face: f, corner: k });
-        }
+        start.push(origins.len());
+        origins.extend((0..face.len()).map(|k| Origin::Corner { face: f, corner: k }));
     }
-    let mut faces = Vec::new();
-    let mut parents = Vec::new();
+    let corner = |f: usize, k: usize| start[f] + k % mesh.face(f).len();
+    let mut faces: Vec<Vec<usize>> = Vec::with_capacity(mesh.num_faces() + origins.len() + mesh.num_vertices());
+    let mut parents = Vec::with_capacity(faces.capacity());
     for (f, face) in mesh.faces().iter().enumerate() {
-        faces.push(face.iter().map(|&v| corner_id[&(f, v)]).collect());
+        faces.push((0..face.len()).map(|k| corner(f, k)).collect());
         parents.push(Origin::Face(f));
     }
     for (a, b) in mesh.edges() {
-        let (Some((f, _)), Some((g, _))) = (mesh.half_edge(a, b), mesh.half_edge(b, a)) else {
+        // f holds a -> b with a at corner ka (b at ka + 1), g holds b -> a
+        let (Some((f, ka)), Some((g, kb))) = (mesh.half_edge(a, b), mesh.half_edge(b, a)) else {
             continue;
         };
-        faces.push(vec![corner_id[&(f, b)], corner_id[&(f, a)], corner_id[&(g, a)], corner_id[&(g, b)]]);
+        faces.push(vec![corner(f, ka + 1), corner(f, ka), corner(g, kb + 1), corner(g, kb)]);
         parents.push(Origin::Edge(a, b));
     }
     for v in 0..mesh.num_vertices() {
-        let Some(fan) = mesh.vertex_fan(v) else {
+        let Some(fan) = mesh.fan_corners(v) else {
             continue;
         };
-        let ids: Vec<usize> = fan
-            .iter()
-            .map(|cyc| {
-                // the fan gives vertex cycles; find the face that has this cycle at v
-                let (f, _) = mesh.half_edge(v, cyc[1]).expect("fan edge exists");
-                corner_id[&(f, v)]
-            })
-            .collect();
-        faces.push(ids);
+        faces.push(fan.iter().map(|&(f, k)| corner(f, k)).collect());
         parents.push(Origin::Vertex(v));
     }
     let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| Error::Input(e.to_string()))?;

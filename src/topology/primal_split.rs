@@ -21,9 +21,14 @@ use crate::topology::chart_builder::ChartBuilder;
 
 pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, Error> {
     let nv = mesh.num_vertices();
-    let mut origins: Vec<Origin> = (0..nv).map(Origin::Vertex).collect();
-    let mut edge_id: IdMap<(usize, usize), usize> = IdMap::default();
-    for (a, b) in mesh.edges() {
+    let edges = mesh.edges();
+    // sized up front: growing these by doubling copied the large meshes of
+    // discovery and of the certificates' nets several times
+    let mut origins: Vec<Origin> = Vec::with_capacity(nv + edges.len() + mesh.num_faces());
+    origins.extend((0..nv).map(Origin::Vertex));
+    let mut edge_id: IdMap<(usize, usize), usize> =
+        IdMap::with_capacity_and_hasher(2 * edges.len(), Default::default());
+    for (a, b) in edges {
         let id = origins.len();
         origins.push(Origin::Edge(a, b));
         edge_id.insert((a, b), id);
@@ -37,8 +42,9 @@ pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, Error> {
             origins.push(Origin::Face(f));
         }
     }
-    let mut faces = Vec::new();
-    let mut parents = Vec::new();
+    let corners: usize = mesh.faces().iter().map(Vec::len).sum();
+    let mut faces = Vec::with_capacity(corners + mesh.num_faces());
+    let mut parents = Vec::with_capacity(corners + mesh.num_faces());
     for (f, face) in mesh.faces().iter().enumerate() {
         let m = face.len();
         let e = |k: usize| edge_id[&(face[k % m], face[(k + 1) % m])];

@@ -36,14 +36,19 @@ use crate::topology::chart_builder::ChartBuilder;
 
 pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
     let nv = mesh.num_vertices();
-    let mut origins: Vec<Origin> = (0..nv).map(Origin::Vertex).collect();
+    // sized up front: the refinements of discovery's patches are large, and
+    // growing these by doubling copied them several times
+    let mut origins: Vec<Origin> = Vec::with_capacity(nv + mesh.num_faces());
+    origins.extend((0..nv).map(Origin::Vertex));
     let mut face_vertex = Vec::with_capacity(mesh.num_faces());
     for f in 0..mesh.num_faces() {
         face_vertex.push(origins.len());
         origins.push(Origin::Face(f));
     }
-    let mut faces = Vec::new();
-    let mut parents = Vec::new();
+    // two triangles per interior edge, at most 3 per triangle's corners
+    let corners: usize = mesh.faces().iter().map(Vec::len).sum();
+    let mut faces = Vec::with_capacity(corners);
+    let mut parents = Vec::with_capacity(corners);
     // every edge once, in the order of `PolyMesh::edges` (the half-edge of
     // face f at corner k, unless its twin comes first), with the face that
     // holds it read off directly instead of looked up

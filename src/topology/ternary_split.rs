@@ -41,16 +41,21 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
         )));
     }
     let nv = mesh.num_vertices();
-    let mut origins: Vec<Origin> = (0..nv).map(Origin::Vertex).collect();
-    let mut edge_id: IdMap<(usize, usize), usize> = IdMap::default();
-    for (a, b) in mesh.edges() {
+    let edges = mesh.edges();
+    // sized up front: discovery's patches are large, and growing these by
+    // doubling copied them several times
+    let mut origins: Vec<Origin> = Vec::with_capacity(nv + 2 * edges.len() + 4 * mesh.num_faces());
+    origins.extend((0..nv).map(Origin::Vertex));
+    let mut edge_id: IdMap<(usize, usize), usize> =
+        IdMap::with_capacity_and_hasher(2 * edges.len(), Default::default());
+    for (a, b) in edges {
         edge_id.insert((a, b), origins.len());
         origins.push(Origin::Edge(a, b));
         edge_id.insert((b, a), origins.len());
         origins.push(Origin::Edge(b, a));
     }
-    let mut faces = Vec::new();
-    let mut parents = Vec::new();
+    let mut faces = Vec::with_capacity(9 * mesh.num_faces());
+    let mut parents = Vec::with_capacity(9 * mesh.num_faces());
     for (f, face) in mesh.faces().iter().enumerate() {
         let inner: Vec<usize> = (0..4)
             .map(|k| {
