@@ -44,6 +44,17 @@ definition of S, and everything else is recomputed here.
   the stencils being the scheme's rules, the box-spline Jacobian and hull
   bounds over a window, the covering of the neighbourhood, the windows'
   lattice layout and the chain (listed in the document's `trusted`).
+- The sector map at a boundary vertex (the `sector` part beside `tagged`,
+  Checker.sector; subdlab's lemmas B1–B6): λ1's and λ2's eigenvectors by
+  Krawczyk's test on the reflection blocks rebuilt from the rows (the
+  document's x̃, μ̃, R and Y, K(Y) recomputed here), μ inside its named
+  disc; the normal coordinate's vanishing on the sharp curve (invariance
+  exactly, the curve block's characteristic polynomial and a Sturm count
+  over Q); the net by the exact stencils; the ghost points 2b − p and every
+  face's det(u_i, v_j); the sharp rows on the line and monotone; the chain
+  doubled by the mirror here and its winding number counted exactly.
+  Trusted: the rules (Catmull–Clark's, the ghost-extended B-spline's over
+  the windows), the windows' layout, the covering and the chain.
 - Lemma C9 (regular part `difference-scheme`, DifferenceLattice), from the
   document's exact mask, windows and second-difference bases alone:
   re-derived exactly (Fractions, integers) — every mask class an affine
