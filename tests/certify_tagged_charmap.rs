@@ -310,11 +310,7 @@ fn tampered_sector_certificates_are_rejected() {
         "net point moved",
     );
     // a face's Jacobian sign flipped (k = 3 is proved negative)
-    rejected(
-        tamper(&|d| d["parts"]["sector"]["faces"][5]["sign"] = "+".into()),
-        "claimed +",
-        "sign flipped",
-    );
+    rejected(tamper(&|d| d["parts"]["sector"]["faces"][5]["sign"] = "+".into()), "claimed +", "sign flipped");
     // a face dropped from the ring: the chain's windows no longer line up
     rejected(
         tamper(&|d| {
@@ -355,11 +351,7 @@ fn tampered_sector_certificates_are_rejected() {
     );
     // the scheme's rules altered: a wrong weight in S's rows (the boundary
     // vertex rule 3/4, 1/8, 1/8 made 5/8) and in a refinement stencil
-    rejected(
-        tamper(&|d| d["parts"]["tagged"]["rows"][0][0][1] = "5/8".into()),
-        "sum to 1",
-        "a row weight",
-    );
+    rejected(tamper(&|d| d["parts"]["tagged"]["rows"][0][0][1] = "5/8".into()), "sum to 1", "a row weight");
     rejected(
         tamper(&|d| {
             let st = &mut d["parts"]["sector"]["points"]["stencils"][0][0][1];
@@ -370,15 +362,42 @@ fn tampered_sector_certificates_are_rejected() {
     );
     // the normal coordinate swapped: λ2 = 1/2 is the curve's tangent
     // eigenvalue (odd), so its eigenvector is not shown to vanish
-    rejected(
-        tamper(&|d| d["parts"]["sector"]["normal"] = "lambda2".into()),
-        "not shown to vanish",
-        "normal swapped",
-    );
+    rejected(tamper(&|d| d["parts"]["sector"]["normal"] = "lambda2".into()), "not shown to vanish", "normal swapped");
     // a verdict word other than PROVED in a sector part
     rejected(
         tamper(&|d| d["parts"]["sector"]["injectivity"] = "NOT PROVED".into()),
         "PROVED sector map only",
         "verdict word",
     );
+}
+
+#[test]
+fn the_example_registry_writes_sector_documents_the_checker_accepts() {
+    if !python3_available() {
+        eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
+        return;
+    }
+    // examples/claims/boundary-blz.toml's certified sector maps: Hoppe
+    // k = 2, 3 and BLZ k = 2..8 PROVED (re-derived), Hoppe k = 5..8
+    // DISPROVED (the tagged part only, never a PROVED sector map)
+    let dir = tempfile::tempdir().unwrap();
+    let claims = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/claims/boundary-blz.toml");
+    let out = subdlab(&["verify", "--claims", claims, "--certificates", dir.path().to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let cases = [
+        ("cc.boundary.regular.map.certified", 2..=3, "(tagged PROVED, sector criterion PROVED)"),
+        ("cc.boundary.blz-map.certified", 2..=8, "(tagged PROVED, sector criterion PROVED)"),
+        (
+            "cc.boundary.hoppe-collapse.certified",
+            5..=8,
+            "(tagged PROVED; sector criterion not re-checked (claimed DISPROVED))",
+        ),
+    ];
+    for (id, ks, want) in cases {
+        for k in ks {
+            let (code, text) = check_certificate(&dir.path().join(format!("{id}-n{k}.json")));
+            assert_eq!(code, 0, "{id} k = {k}: {text}");
+            assert!(text.contains(&format!("CERTIFICATE ACCEPTED {want}")), "{id} k = {k}: {text}");
+        }
+    }
 }
