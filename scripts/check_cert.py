@@ -2203,7 +2203,7 @@ class Checker:
         ghosts_total = 0
         want_positions = {(x, y) for x in range(-1, 3) for y in range(-1, 3)}
         for f, face in enumerate(faces):
-            value, net = {}, {}
+            value, net, ghosts = {}, {}, {}
             for entry in as_list(get(face, "layout", "face"), f"face {f} layout"):
                 entry = as_list(entry, f"face {f} layout entry")
                 if len(entry) not in (3, 4) or any(isinstance(v, bool) or not isinstance(v, int) for v in entry):
@@ -2221,9 +2221,16 @@ class Checker:
                     if not on_line(pts[b]):
                         reject(f"face {f}: the ghost at {pos} reflects through a point not exactly on the rays' line")
                     value[pos] = tuple(ball_sub((2 * pts[b][i][0], 2 * pts[b][i][1]), pts[q][i]) for i in (0, 1))
+                    ghosts[pos] = (b, q)
                     ghosts_total += 1
             if set(value) != want_positions:
                 reject(f"face {f}: the window is not the 4 × 4 positions −1..2 × −1..2")
+            # a ghost at q is 2b − p with b = q + e and p = q + 2e (a unit step
+            # e) the net points the layout puts there
+            for pos, (b, q) in ghosts.items():
+                if not any(net.get((pos[0] + ex, pos[1] + ey)) == b and net.get((pos[0] + 2 * ex, pos[1] + 2 * ey)) == q
+                           for ex, ey in ((1, 0), (-1, 0), (0, 1), (0, -1))):
+                    reject(f"face {f}: the ghost at {pos} is not 2b − p of the net points one and two steps beside it")
             if any(c not in net for c in ((0, 0), (1, 0), (1, 1), (0, 1))):
                 reject(f"face {f}: a corner of the face itself is a ghost")
             us = [tuple(ball_sub(value[(x + 1, y)][i], value[(x, y)][i]) for i in (0, 1)) for x in range(-1, 2) for y in range(-1, 3)]

@@ -338,6 +338,22 @@ fn tampered_sector_certificates_are_rejected() {
         "ghost",
         "ghost rule altered",
     );
+    // a ghost's p made its b (2b − b = b: the window's missing row would be
+    // the ray's copy), which is not the point two steps beside it
+    rejected(
+        tamper(&|d| {
+            for f in d["parts"]["sector"]["faces"].as_array_mut().unwrap() {
+                for e in f["layout"].as_array_mut().unwrap() {
+                    if e.as_array().unwrap().len() == 4 {
+                        e[3] = e[2].clone();
+                        return;
+                    }
+                }
+            }
+        }),
+        "is not 2b − p",
+        "ghost's p replaced",
+    );
     // the winding data altered: the number, and one polygon point mirrored
     rejected(tamper(&|d| d["parts"]["sector"]["chain"]["number"] = 1.into()), "winds", "winding number");
     rejected(

@@ -756,8 +756,9 @@ pub fn sector_part(
              and over the ring faces' windows the ghost-extended bicubic B-spline's (compared exactly by subdlab: \
              lemma B3)",
             "each window is its ring face's one-ring laid out on the lattice, the missing positions across a sharp \
-             ray filled by 2b − p with b on the ray (the checker confirms b's normal coordinate is exactly 0), and the \
-             rows are the face's edges on a sharp ray",
+             ray filled by 2b − p with b on the ray (the checker confirms that b and p are the net points one and two \
+             steps beside the ghost and that b's normal coordinate is exactly 0), and the rows are the face's edges \
+             on a sharp ray",
             "the ring faces and their scaled copies cover the punctured sector, and the chain is the inner boundary \
              of the ring from one sharp ray to the other, arc i the ring face beside its edge i",
         ],
