@@ -44,6 +44,17 @@ definition of S, and everything else is recomputed here.
   the stencils being the scheme's rules, the box-spline Jacobian and hull
   bounds over a window, the covering of the neighbourhood, the windows'
   lattice layout and the chain (listed in the document's `trusted`).
+- The sector map at a boundary vertex (the `sector` part beside `tagged`,
+  Checker.sector; subdlab's lemmas B1–B6): λ1's and λ2's eigenvectors by
+  Krawczyk's test on the reflection blocks rebuilt from the rows (the
+  document's x̃, μ̃, R and Y, K(Y) recomputed here), μ inside its named
+  disc; the normal coordinate's vanishing on the sharp curve (invariance
+  exactly, the curve block's characteristic polynomial and a Sturm count
+  over Q); the net by the exact stencils; the ghost points 2b − p and every
+  face's det(u_i, v_j); the sharp rows on the line and monotone; the chain
+  doubled by the mirror here and its winding number counted exactly.
+  Trusted: the rules (Catmull–Clark's, the ghost-extended B-spline's over
+  the windows), the windows' layout, the covering and the chain.
 - Lemma C9 (regular part `difference-scheme`, DifferenceLattice), from the
   document's exact mask, windows and second-difference bases alone:
   re-derived exactly (Fractions, integers) — every mask class an affine
@@ -651,6 +662,64 @@ def charpoly_by_interpolation(s):
     return p
 
 
+def poly_at(p, x):
+    """p(x), p lowest coefficient first (exact)."""
+    v = Fraction(0)
+    for c in reversed(p):
+        v = v * x + c
+    return v
+
+
+def _trim(p):
+    p = list(p)
+    while p and p[-1] == 0:
+        p.pop()
+    return p
+
+
+def _poly_rem(a, b):
+    a, b = _trim(a), _trim(b)
+    while len(a) >= len(b) and a:
+        f = a[-1] / b[-1]
+        shift = len(a) - len(b)
+        for i, c in enumerate(b):
+            a[shift + i] -= f * c
+        a = _trim(a)
+    return a
+
+
+def sturm_count(p, lo, hi):
+    """The number of distinct real roots of p in (lo, hi] (Sturm's theorem
+    on the squarefree part p / gcd(p, p′))."""
+    p = _trim(p)
+    d = [i * c for i, c in enumerate(p)][1:]
+    g, h = p, _trim(d)
+    while h:
+        g, h = h, _poly_rem(g, h)
+    if len(g) > 1:
+        # exact division p / g
+        q = [Fraction(0)] * (len(p) - len(g) + 1)
+        r = list(p)
+        for i in range(len(q) - 1, -1, -1):
+            q[i] = r[i + len(g) - 1] / g[-1]
+            for j, c in enumerate(g):
+                r[i + j] -= q[i] * c
+        p = _trim(q)
+    chain = [p, _trim([i * c for i, c in enumerate(p)][1:])]
+    while chain[-1] and len(chain[-1]) > 1:
+        r = _poly_rem(chain[-2], chain[-1])
+        if not r:
+            break
+        chain.append([-c for c in r])
+    chain = [c for c in chain if c]
+
+    def changes(x):
+        signs = [v for v in (poly_at(c, x) for c in chain) if v != 0]
+        return sum(1 for a, b in zip(signs, signs[1:]) if (a > 0) != (b > 0))
+
+    return changes(lo) - changes(hi)
+
+
 def root_multiplicity(p, r):
     """(m, q): r is a root of p of multiplicity m, p = (x − r)^m q."""
     p = list(p)
@@ -752,15 +821,24 @@ class Checker:
         parts = get(doc, "parts", "document")
         if not isinstance(parts, dict) or not parts:
             raise Malformed("'parts' is not a non-empty object")
-        unknown = sorted(set(parts) - {"spectrum", "charmap", "tagged"})
+        unknown = sorted(set(parts) - {"spectrum", "charmap", "tagged", "sector"})
         if unknown:
-            reject(f"part(s) {', '.join(unknown)}: this checker re-checks only the 'spectrum', 'charmap' and 'tagged' parts")
+            reject(f"part(s) {', '.join(unknown)}: this checker re-checks only the 'spectrum', 'charmap', 'tagged' and 'sector' parts")
         if "tagged" in parts:
-            if len(parts) != 1:
-                reject("a tagged document holds the tagged part alone")
+            if set(parts) - {"tagged", "sector"}:
+                reject("a tagged document holds the tagged part and at most the sector part")
             self.ok(f"document: {doc.get('scheme')} at a tagged vertex of {doc.get('valence')} sectors, {doc.get('neighbourhood')} neighbourhood")
             self.tagged(parts["tagged"])
+            if "sector" in parts:
+                self.sector(parts["sector"])
+            elif doc.get("sector_omitted"):
+                # a sector map not PROVED writes no sector part: only the
+                # spectral verdict is re-checked, never the map's claim
+                self.lines.append(f"  --  no sector part: {doc['sector_omitted']}")
+                self.verdict = f"tagged {self.verdict}; sector criterion not re-checked (claimed {doc.get('sector_claimed')})"
             return
+        if "sector" in parts:
+            reject("a sector part without the tagged part it rests on")
         if "spectrum" not in parts:
             reject("the document has no spectrum part, on which every other part rests")
         self.ok(f"document: {doc.get('scheme')} at valence {doc.get('valence')}, {doc.get('neighbourhood')} neighbourhood")
@@ -2062,6 +2140,322 @@ class Checker:
             reject(f"winding: the polygon winds {number} time(s) about the centre, the document claims {claimed!r}")
         self.ok(f"winding: {k} half-planes hold their windows, each w_i lies in H_i ∩ H_(i+1); the polygon winds "
                 f"{number} time(s), counted exactly")
+        return number
+
+    # -- the sector characteristic map at a boundary vertex (subdlab's
+    #    certify::tagged_charmap, lemmas B1–B6)
+
+    def sector(self, part):
+        """Re-derive a PROVED sector map: λ1's and λ2's eigenvectors by
+        Krawczyk's test on the reflection blocks rebuilt from the rows (B1),
+        the normal coordinate's vanishing on the sharp curve by Sturm over Q
+        (B2), the net by the exact stencils in interval arithmetic with the
+        ghost points 2b − p computed here (B3), every face's Jacobian sign
+        from det(u_i, v_j) (B4), the tangent coordinate's monotonicity along
+        the sharp rows (B5) and the doubled chain's winding number (B6)."""
+        what = "sector"
+        for key in ("regularity", "injectivity", "sector_criterion"):
+            if get(part, key, what) != "PROVED":
+                reject(f"a sector part is written for a PROVED sector map only, its {key} is {part[key]!r}")
+        if self.verdict != "PROVED":
+            reject(f"the sector map needs the tagged spectral part PROVED, it is {self.verdict}")
+        claims = get(self.part, "claims", "tagged")
+        if claims.get("enclosures") != "PROVED":
+            reject("the sector map's eigenvectors are the enclosure route's λ1 and λ2, and that route did not prove the spectral part")
+        if self.reflection is None:
+            reject("the sector map needs the reflection keeping the sharp rays")
+        n = self.size
+        named = [self.tagged_component(claims.get(w), w) for w in ("lambda1", "lambda2")]
+        eig = as_list(get(part, "eigenvectors", what), "eigenvectors", 2)
+        vecs, mus = [], []
+        for w, (m, ci), e in zip(("λ1", "λ2"), named, eig):
+            if (get(e, "block", w), get(e, "component", w)) != (m, ci):
+                reject(f"{w}'s eigenvector is given for block {e.get('block')} component {e.get('component')}, the spectral part names block {m} component {ci}")
+            x, mu = self.krawczyk(m, ci, e, w)
+            vecs.append(self.spread(m, x))
+            mus.append((m, mu))
+        self.ok("B1: λ1's and λ2's eigenvectors enclosed by Krawczyk's test (K(Y) ⊂ int Y) on the reflection blocks rebuilt "
+                "from the rows, each eigenvalue inside its named disc; spread over S's points by the reflection")
+        normal = {"lambda1": 0, "lambda2": 1}.get(get(part, "normal", what))
+        if normal is None:
+            raise Malformed(f"sector: normal {part['normal']!r} is neither 'lambda1' nor 'lambda2'")
+        tangent = 1 - normal
+        curve = [as_int(c, "curve point", n) for c in as_list(get(part, "curve", what), "curve")]
+        self.sharp_curve_vanishing(curve, *mus[normal], ("λ1", "λ2")[normal])
+        x0 = [(vecs[0][a], vecs[1][a]) for a in range(n)]
+        for c in curve:
+            xm, xr = x0[c][normal]
+            if not xm - xr <= 0 <= xm + xr:
+                reject(f"the eigenvector proved to vanish on the curve has an enclosure excluding 0 at point {c}")
+            x0[c] = tuple((0, 0) if i == normal else x0[c][i] for i in (0, 1))
+        levels = as_int(get(part, "levels", what), "sector levels")
+        pts = self.refined_points(get(part, "points", what), x0)
+        self.ok(f"net: {len(pts) - n} refined point(s) from the {n} analysis points by exact stencils ({levels} "
+                "analysis steps), in interval arithmetic, the normal coordinate exactly 0 on the curve")
+        on_line = lambda p: p[normal] == (0, 0)
+        faces = as_list(get(part, "faces", what), "sector faces")
+        if not faces:
+            reject("no ring faces")
+        windows, net_points, signs = [], [], []
+        row_sign = None
+        rows_seen = 0
+        worst = None
+        ghosts_total = 0
+        want_positions = {(x, y) for x in range(-1, 3) for y in range(-1, 3)}
+        for f, face in enumerate(faces):
+            value, net, ghosts = {}, {}, {}
+            for entry in as_list(get(face, "layout", "face"), f"face {f} layout"):
+                entry = as_list(entry, f"face {f} layout entry")
+                if len(entry) not in (3, 4) or any(isinstance(v, bool) or not isinstance(v, int) for v in entry):
+                    raise Malformed(f"face {f}: a layout entry is not [x, y, point] or [x, y, b, p]")
+                pos = (entry[0], entry[1])
+                if pos in value:
+                    reject(f"face {f}: position {pos} given twice")
+                if len(entry) == 3:
+                    q = as_int(entry[2], "window point", len(pts))
+                    value[pos] = pts[q]
+                    net[pos] = q
+                else:
+                    # the ghost rule across a sharp ray: 2b − p, b on the ray
+                    b, q = (as_int(v, "ghost point", len(pts)) for v in entry[2:])
+                    if not on_line(pts[b]):
+                        reject(f"face {f}: the ghost at {pos} reflects through a point not exactly on the rays' line")
+                    value[pos] = tuple(ball_sub((2 * pts[b][i][0], 2 * pts[b][i][1]), pts[q][i]) for i in (0, 1))
+                    ghosts[pos] = (b, q)
+                    ghosts_total += 1
+            if set(value) != want_positions:
+                reject(f"face {f}: the window is not the 4 × 4 positions −1..2 × −1..2")
+            # a ghost at q is 2b − p with b = q + e and p = q + 2e (a unit step
+            # e) the net points the layout puts there
+            for pos, (b, q) in ghosts.items():
+                if not any(net.get((pos[0] + ex, pos[1] + ey)) == b and net.get((pos[0] + 2 * ex, pos[1] + 2 * ey)) == q
+                           for ex, ey in ((1, 0), (-1, 0), (0, 1), (0, -1))):
+                    reject(f"face {f}: the ghost at {pos} is not 2b − p of the net points one and two steps beside it")
+            if any(c not in net for c in ((0, 0), (1, 0), (1, 1), (0, 1))):
+                reject(f"face {f}: a corner of the face itself is a ghost")
+            us = [tuple(ball_sub(value[(x + 1, y)][i], value[(x, y)][i]) for i in (0, 1)) for x in range(-1, 2) for y in range(-1, 3)]
+            vs = [tuple(ball_sub(value[(x, y + 1)][i], value[(x, y)][i]) for i in (0, 1)) for x in range(-1, 3) for y in range(-1, 2)]
+            lo = hi = None
+            for ux, uy in us:
+                for vx, vy in vs:
+                    dm, dr = ball_sub(ball_mul(ux, vy, P), ball_mul(uy, vx, P))
+                    lo = dm - dr if lo is None else min(lo, dm - dr)
+                    hi = dm + dr if hi is None else max(hi, dm + dr)
+            claim = get(face, "sign", "face")
+            if claim == "+" and lo > 0:
+                signs.append(1)
+                margin = lo
+            elif claim == "-" and hi < 0:
+                signs.append(-1)
+                margin = -hi
+            elif claim in ("+", "-"):
+                reject(f"face {f}: the Jacobian is claimed {claim}, but det(u_i, v_j) over its window ranges over "
+                       f"[{lo / UNIT:.3e}, {hi / UNIT:.3e}]")
+            else:
+                raise Malformed(f"face {f}: sign {claim!r}")
+            worst = margin if worst is None else min(worst, margin)
+            # B5: along each sharp row the normal coordinate is 0 and the
+            # tangent one moves with one sign (in the face's orientation)
+            for r in as_list(get(face, "rows", "face"), f"face {f} rows"):
+                r = [tuple(as_list(c, "row position", 2)) for c in as_list(r, "row", 4)]
+                steps = {(b[0] - a[0], b[1] - a[1]) for a, b in zip(r, r[1:])}
+                if len(steps) != 1 or abs(next(iter(steps))[0]) + abs(next(iter(steps))[1]) != 1:
+                    reject(f"face {f}: a sharp row is not four window positions one unit step apart")
+                if any(c not in net for c in r):
+                    reject(f"face {f}: a sharp row holds a position that is not a net point")
+                for c in r:
+                    if not on_line(value[c]):
+                        reject(f"face {f}: a sharp row's point is not exactly on the rays' line")
+                for a, b in zip(r, r[1:]):
+                    dm, dr = ball_sub(value[b][tangent], value[a][tangent])
+                    if not (dm - dr > 0 or dm + dr < 0):
+                        reject(f"face {f}: the tangent coordinate's direction along a sharp row is undecided")
+                    up = dm - dr > 0
+                    if row_sign is None:
+                        row_sign = up
+                    elif row_sign != up:
+                        reject("the two sharp rays' neighbourhoods are not shown to map to one side of the line")
+                rows_seen += 1
+            windows.append(list(value.values()))
+            net_points.append(set(net.values()))
+        if len(set(signs)) != 1:
+            reject("regularity needs every ring face of one Jacobian sign")
+        sign = signs[0]
+        self.ok(f"B3/B4: {len(faces)} ring faces' windows with {ghosts_total} ghost point(s) 2b − p computed here (b "
+                f"exactly on the line); every det(u_i, v_j) proved {'> 0' if sign > 0 else '< 0'} (least margin "
+                f"{float(Fraction(worst, UNIT)):.3e})")
+        if rows_seen == 0:
+            reject("no sharp row: the rays' images are not checked")
+        self.ok(f"B5: {rows_seen} sharp row(s) exactly on the line, the tangent coordinate strictly "
+                f"{'increasing' if row_sign else 'decreasing'} along every one")
+        number = self.doubled_winding(get(part, "chain", what), pts, windows, net_points, normal)
+        if number != sign:
+            reject(f"the doubled chain winds {number} time(s), not the Jacobian's sign {sign}")
+        self.ok(f"B6: the doubled chain winds {number} time(s) = the Jacobian's sign (Peters–Reif); trusted, not "
+                "re-checked: " + "; ".join(as_list(get(part, "trusted", what), "trusted")))
+        self.verdict = f"tagged {self.verdict}, sector criterion PROVED"
+
+    def krawczyk(self, m, ci, e, w):
+        """Krawczyk's test for the simple eigenpair of block m with x_s = 1:
+        F(x, μ) = B·x − μ·x, K(Y) = −R·F(ũ) + (I − R·J(ũ + Y))·Y over the
+        block rebuilt from the rows; K(Y) ⊂ int Y proves one zero in ũ + K(Y)
+        for every B in the interval block (any R). Returns x's balls and μ's
+        enclosure (Fractions)."""
+        order, (mr, _, rr, _) = self.reflection_block(m)
+        k = len(order)
+        a = [[(mr[i][j], rr[i][j]) for j in range(k)] for i in range(k)]
+        s = as_int(get(e, "s", w), f"{w} s", k)
+        xt = [ball_of_float(as_float(v, f"{w} x")) for v in as_list(get(e, "x", w), f"{w} x", k)]
+        if xt[s] != (UNIT, 0):
+            reject(f"{w}: the approximation's normalised entry x_s is not 1")
+        mu = ball_of_float(as_float(get(e, "mu", w), f"{w} mu"))
+        r = [[ball_of_float(as_float(v, f"{w} R")) for v in as_list(row, f"{w} R row", k)] for row in as_list(get(e, "r", w), f"{w} R", k)]
+        y = []
+        for v in as_list(get(e, "y", w), f"{w} y", k):
+            ym, yr = ball_of_float(as_float(v, f"{w} y"))
+            if not as_float(v, f"{w} y") > 0:
+                reject(f"{w}: a radius of Y is not positive")
+            # Y may be any box: at least 2^-(P-32), where the grid's own
+            # rounding (one unit per product) cannot fill it
+            y.append((0, max(ym + yr, 1 << 32)))
+
+        def dot(xs, ys):
+            mid = sum(p[0] * q[0] for p, q in zip(xs, ys))
+            rad = sum(abs(p[0]) * q[1] + p[1] * abs(q[0]) + p[1] * q[1] for p, q in zip(xs, ys))
+            return shift_ball(mid, rad, P)
+
+        f = [ball_sub(dot(a[i], xt), ball_mul(mu, xt[i], P)) for i in range(k)]
+        z = [(-bm, br) for bm, br in (dot(r[i], f) for i in range(k))]
+        mu_y = ball_add(mu, y[s])
+        jac = [[None] * k for _ in range(k)]
+        for i in range(k):
+            for l in range(k):
+                if l == s:
+                    jac[i][l] = (-UNIT, 0) if i == s else (-(xt[i][0] + y[i][0]), xt[i][1] + y[i][1])
+                elif i == l:
+                    jac[i][l] = ball_sub(a[i][l], mu_y)
+                else:
+                    jac[i][l] = a[i][l]
+        cols = [[jac[i][l] for i in range(k)] for l in range(k)]
+        kr = []
+        for i in range(k):
+            c_row = []
+            for l in range(k):
+                rm, rd = dot(r[i], cols[l])
+                c_row.append(((UNIT if i == l else 0) - rm, rd))
+            kr.append(ball_add(z[i], dot(c_row, y)))
+        for i in range(k):
+            if not (kr[i][0] - kr[i][1] > -y[i][1] and kr[i][0] + kr[i][1] < y[i][1]):
+                reject(f"{w}: Krawczyk's test fails (K(Y) is not inside Y at entry {i}): the eigenvector is not enclosed")
+        mu_m, mu_r = ball_add(mu, kr[s])
+        lo, hi = Fraction(mu_m - mu_r, UNIT), Fraction(mu_m + mu_r, UNIT)
+        discs = self.components[m][ci]
+        if len(discs) != 1:
+            reject(f"{w}'s component holds {len(discs)} discs")
+        d = discs[0]
+        far = max((lo - d.re) ** 2, (hi - d.re) ** 2)
+        if not far + d.im * d.im < d.r * d.r:
+            reject(f"{w}: the eigenvalue Krawczyk's test found is not inside the named disc")
+        x = [(UNIT, 0) if i == s else ball_add(xt[i], kr[i]) for i in range(k)]
+        return x, (lo, hi)
+
+    def spread(self, m, x):
+        """From block m's basis to S's points: even (m = 0) the same value at a
+        point and its mirror, odd (m = 1) opposite values, 0 at an odd block's
+        fixed points."""
+        p, n = self.reflection, self.size
+        order = [b for b in range(n) if (b <= p[b] if m == 0 else b < p[b])]
+        if len(order) != len(x):
+            reject("the eigenvector's size is not its block's")
+        out = [(0, 0)] * n
+        for i, b in enumerate(order):
+            out[b] = x[i]
+            if p[b] != b:
+                out[p[b]] = x[i] if m == 0 else (-x[i][0], x[i][1])
+        return out
+
+    def sharp_curve_vanishing(self, curve, m, mu, w):
+        """B2: the curve (holding the centre) is invariant under S and the
+        reflection, exactly; the curve's block of the parity of w's block
+        has no root of its characteristic polynomial in w's enclosure
+        (Sturm over Q), so w's eigenvector vanishes on the curve."""
+        if curve != sorted(set(curve)) or not curve:
+            reject("the curve's points are not strictly ascending")
+        labels = as_list(get(self.part, "labels", "tagged"), "labels", self.size)
+        if not any(labels[c] == "centre" for c in curve):
+            reject("the sharp curve does not hold the centre")
+        members = set(curve)
+        for a in curve:
+            for b, x in self.rows[a].items():
+                if b not in members:
+                    reject(f"the sharp curve is not invariant: the row of {labels[a]} reads {labels[b]}")
+                if len(x) > 1:
+                    reject("a weight of the sharp curve's rows is not rational")
+        p = self.reflection
+        if any(p[c] not in members for c in curve):
+            reject("the reflection does not keep the sharp curve")
+        reps = [b for b in curve if (b <= p[b] if m == 0 else b < p[b])]
+        q = lambda a, b: (self.rows[a].get(b) or (Fraction(0),))[0]
+        blk = [[q(a, b) if p[b] == b else q(a, b) + (1 if m == 0 else -1) * q(a, p[b]) for b in reps] for a in reps]
+        lo, hi = mu
+        if blk:
+            cp = charpoly_by_interpolation(blk)
+            if poly_at(cp, lo) == 0 or sturm_count(cp, lo, hi) != 0:
+                reject(f"{w}'s enclosure [{float(lo)}, {float(hi)}] may hold an eigenvalue of the sharp curve's "
+                       f"{'even' if m == 0 else 'odd'} block: its eigenvector is not shown to vanish on the rays")
+        self.ok(f"B2: the sharp curve ({len(curve)} points, the centre and both rays) invariant under S and the "
+                f"reflection, exactly; its {'even' if m == 0 else 'odd'} block ({len(blk)}×{len(blk)}) has no eigenvalue in "
+                f"{w}'s enclosure (Sturm over Q): {w}'s eigenvector vanishes on the rays, the normal coordinate")
+
+    def doubled_winding(self, chain, pts, windows, net_points, normal):
+        """B6: the chain from ray to ray and its mirror image in the rays'
+        line (σ negates the normal coordinate), built here: every window of
+        the chain in its half-plane, rigorously; every polygon point in the
+        half-planes of the arcs beside it, exactly; the ends on the line; the
+        doubled polygon's winding number counted exactly."""
+        what = "chain"
+        arcs = [as_int(a, "chain arc", len(windows)) for a in as_list(get(chain, "arcs", what), "chain arcs")]
+        m = len(arcs)
+        if m < 1:
+            reject("an empty chain")
+        verts = [as_int(v, "chain vertex", len(pts)) for v in as_list(get(chain, "vertices", what), "chain vertices", m + 1)]
+        dirs = [tuple(Fraction(as_float(c, "direction")) for c in as_list(d, "direction", 2)) for d in as_list(get(chain, "directions", what), "chain directions", m)]
+        poly = [tuple(Fraction(as_float(c, "polygon point")) for c in as_list(w, "polygon point", 2)) for w in as_list(get(chain, "polygon", what), "chain polygon", m + 1)]
+        for i, v in enumerate(verts):
+            for arc in ([i - 1] if i >= 1 else []) + ([i] if i < m else []):
+                if v not in net_points[arcs[arc]]:
+                    reject(f"chain vertex {i} is not a point of the window of arc {arc} beside it")
+                if not dirs[arc][0] * poly[i][0] + dirs[arc][1] * poly[i][1] > 0:
+                    reject(f"polygon point w_{i} is not in the half-plane of arc {arc}")
+        for i in (0, m):
+            if pts[verts[i]][normal] != (0, 0) or poly[i][normal] != 0:
+                reject("an end of the chain is not exactly on the rays' line")
+        for i, arc in enumerate(arcs):
+            dx, dy = ball_of_float(float(dirs[i][0])), ball_of_float(float(dirs[i][1]))
+            for p in windows[arc]:
+                dm, dr = ball_add(ball_mul(dx, p[0], P), ball_mul(dy, p[1], P))
+                if not dm - dr > 0:
+                    reject(f"a point of arc {i}'s window is not proved in its half-plane d_{i}·p > 0")
+        sigma = lambda w: tuple(-c if j == normal else c for j, c in enumerate(w))
+        doubled = poly + [sigma(poly[i]) for i in range(m - 1, 0, -1)]
+        number = 0
+        for i in range(len(doubled)):
+            (ax, ay), (bx, by) = doubled[i], doubled[(i + 1) % len(doubled)]
+            up, down = ay <= 0 < by, by <= 0 < ay
+            if not (up or down):
+                continue
+            cross = ax * by - ay * bx
+            if cross == 0:
+                reject("an edge of the doubled polygon passes through the centre")
+            if up and cross > 0:
+                number += 1
+            elif down and cross < 0:
+                number -= 1
+        claimed = get(chain, "number", what)
+        if claimed != number:
+            reject(f"the doubled polygon winds {number} time(s) about the centre, the document claims {claimed!r}")
+        self.ok(f"B6: the chain's {m} windows in their half-planes, each w_i in the half-planes beside it, the ends on "
+                f"the line; the polygon doubled here by the mirror winds {number} time(s), counted exactly")
         return number
 
 

@@ -39,7 +39,7 @@
 //! floating-point route, a third, independent one.
 
 use crate::common;
-use common::subdlab;
+use common::{check_certificate, check_tampered_certificate, python3_available, subdlab};
 use subdlab::certify::tagged_charmap::certify_tagged_charmap;
 use subdlab::certify::Verdict;
 use subdlab::charmap::{check_map, CharMapOptions};
@@ -163,8 +163,6 @@ fn cli_exit_codes_json_and_refusals() {
     for args in [
         &["charmap", "catmull-clark", "-n", "4", "--tag", "crease:2", "--certify"][..],
         &["charmap", "catmull-clark", "-n", "3", "--tag", "corner", "--certify"][..],
-        &["charmap", "catmull-clark", "-n", "3", "--tag", "boundary", "--certify", "--certificate", "/tmp/never.json"]
-            [..],
     ] {
         let line = common::fails(args);
         assert!(line.contains("--certify"), "{line}");
@@ -186,5 +184,236 @@ fn a_boundary_rule_outside_lemma_b3_is_not_proved() {
         assert_eq!(c["sector_criterion"]["verdict"], "not_proved", "k = {k}: {c}");
         let why = c["regularity"]["reason"].as_str().unwrap();
         assert!(why.contains("numerical only") && why.contains("ghost-extended"), "{why}");
+    }
+}
+
+/// `subdlab charmap catmull-clark ARGS --tag boundary --certify --certificate DIR/FILE`.
+fn write_sector_certificate(dir: &std::path::Path, file: &str, args: &[&str]) -> std::path::PathBuf {
+    let path = dir.join(file);
+    let mut all = vec!["charmap", "catmull-clark"];
+    all.extend_from_slice(args);
+    all.extend_from_slice(&["--tag", "boundary", "--certify", "--certificate", path.to_str().unwrap()]);
+    let out = subdlab(&all);
+    assert!(out.status.code().is_some_and(|c| c <= 1), "{}", String::from_utf8_lossy(&out.stderr));
+    path
+}
+
+#[test]
+fn the_independent_checker_re_derives_proved_sector_maps() {
+    if !python3_available() {
+        eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    // the PROVED cases of the module doc (Hoppe k = 2, 3; BLZ k = 2, 5, 12):
+    // the checker rebuilds the eigenvectors (Krawczyk), the curve's
+    // vanishing (Sturm), the net, every Jacobian sign and the winding
+    for (file, args) in [
+        ("hoppe2.json", &["-n", "2"][..]),
+        ("hoppe3.json", &["-n", "3"][..]),
+        ("blz2.json", &["-n", "2", "-p", "blz=1"][..]),
+        ("blz5.json", &["-n", "5", "-p", "blz=1"][..]),
+        ("blz12.json", &["-n", "12", "-p", "blz=1"][..]),
+    ] {
+        let (code, text) = check_certificate(&write_sector_certificate(dir.path(), file, args));
+        assert_eq!(code, 0, "{file}: {text}");
+        assert!(text.contains("CERTIFICATE ACCEPTED (tagged PROVED, sector criterion PROVED)"), "{file}: {text}");
+        for lemma in ["B1:", "B2:", "B3/B4:", "B5:", "B6:"] {
+            assert!(text.contains(lemma), "{file}: {lemma} not re-checked: {text}");
+        }
+    }
+    // Hoppe k = 3: λ1 = (11 + √57)/32 (even) is the normal coordinate, the
+    // doubled chain winds once (the module doc's derivation)
+    let text = check_certificate(&dir.path().join("hoppe3.json")).1;
+    assert!(text.contains("no eigenvalue in λ1's enclosure"), "{text}");
+}
+
+#[test]
+fn a_disproved_sector_map_writes_no_sector_part() {
+    if !python3_available() {
+        eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    // Hoppe k = 5: the spectral part holds, the map does not (both
+    // eigenvectors vanish on the rays): the document holds the tagged part
+    // only, and the checker re-checks that, never the map
+    let path = write_sector_certificate(dir.path(), "hoppe5.json", &["-n", "5"]);
+    let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    assert!(doc["parts"].get("sector").is_none());
+    assert_eq!(doc["sector_claimed"], "DISPROVED");
+    let (code, text) = check_certificate(&path);
+    assert_eq!(code, 0, "{text}");
+    assert!(text.contains("ACCEPTED (tagged PROVED; sector criterion not re-checked (claimed DISPROVED))"), "{text}");
+    assert!(!text.contains("sector criterion PROVED"), "{text}");
+    // Hoppe k = 3's sector part grafted onto it: rejected (its eigenvectors
+    // are not k = 5's: the blocks rebuilt from k = 5's rows differ)
+    let donor = write_sector_certificate(dir.path(), "hoppe3.json", &["-n", "3"]);
+    let donor: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&donor).unwrap()).unwrap();
+    let (code, text) = check_tampered_certificate(dir.path(), "hoppe5.json", &|d| {
+        d["parts"]["sector"] = donor["parts"]["sector"].clone();
+    });
+    assert_eq!(code, 1, "{text}");
+    assert!(text.contains("REJECTED"), "{text}");
+}
+
+#[test]
+fn tampered_sector_certificates_are_rejected() {
+    if !python3_available() {
+        eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    write_sector_certificate(dir.path(), "hoppe3.json", &["-n", "3"]);
+    let tamper = |edit: &dyn Fn(&mut serde_json::Value)| check_tampered_certificate(dir.path(), "hoppe3.json", edit);
+    let rejected = |(code, text): (i32, String), why: &str, what: &str| {
+        assert_eq!(code, 1, "{what}: {text}");
+        assert!(text.contains("CERTIFICATE REJECTED") && text.contains(why), "{what}: {text}");
+    };
+    // an eigenvector enclosure shifted: x̃ moved by 10⁻³ in one entry, far
+    // outside Y, so Krawczyk's operator leaves the box
+    rejected(
+        tamper(&|d| {
+            let e = &mut d["parts"]["sector"]["eigenvectors"][0];
+            let s = e["s"].as_u64().unwrap() as usize;
+            let j = if s == 0 { 1 } else { 0 };
+            let x = e["x"][j].as_f64().unwrap();
+            e["x"][j] = (x + 1e-3).into();
+        }),
+        "Krawczyk",
+        "eigenvector shifted",
+    );
+    // the eigenvalue claimed in another block's component
+    rejected(
+        tamper(&|d| d["parts"]["sector"]["eigenvectors"][0]["component"] = 0.into()),
+        "the spectral part names",
+        "eigenvector of another component",
+    );
+    // a net point moved: a sharp row's point (normal coordinate exactly 0)
+    // made the level-0 face point face[r1,s0,1], strictly inside sector 0,
+    // where the normal coordinate (mode 1: sin(π/3) > 0) is not 0
+    rejected(
+        tamper(&|d| {
+            let sector = &mut d["parts"]["sector"];
+            let n0 = sector["points"]["level0"].as_u64().unwrap() as usize;
+            let face = sector["faces"].as_array().unwrap().iter().find(|f| !f["rows"].as_array().unwrap().is_empty());
+            let face = face.unwrap().clone();
+            let at = face["rows"][0][1].clone();
+            let entry = face["layout"].as_array().unwrap().iter().find(|e| e[0] == at[0] && e[1] == at[1]).unwrap();
+            let point = entry[2].as_u64().unwrap() as usize;
+            assert!(point >= n0, "the row's point is a refined one");
+            let labels = d["parts"]["tagged"]["labels"].as_array().unwrap();
+            let inside = labels.iter().position(|l| l == "face[r1,s0,1]").unwrap();
+            d["parts"]["sector"]["points"]["stencils"][point - n0] = serde_json::json!([[inside, "1/1"]]);
+        }),
+        "line",
+        "net point moved",
+    );
+    // a face's Jacobian sign flipped (k = 3 is proved negative)
+    rejected(tamper(&|d| d["parts"]["sector"]["faces"][5]["sign"] = "+".into()), "claimed +", "sign flipped");
+    // a face dropped from the ring: the chain's windows no longer line up
+    rejected(
+        tamper(&|d| {
+            let arcs = d["parts"]["sector"]["chain"]["arcs"].clone();
+            let first = arcs[0].as_u64().unwrap() as usize;
+            d["parts"]["sector"]["faces"].as_array_mut().unwrap().remove(first);
+        }),
+        "chain vertex",
+        "face dropped",
+    );
+    // a ghost point made the mirror of a point off the line
+    rejected(
+        tamper(&|d| {
+            for f in d["parts"]["sector"]["faces"].as_array_mut().unwrap() {
+                for e in f["layout"].as_array_mut().unwrap() {
+                    if e.as_array().unwrap().len() == 4 {
+                        let (b, p) = (e[2].clone(), e[3].clone());
+                        e[2] = p;
+                        e[3] = b;
+                        return;
+                    }
+                }
+            }
+        }),
+        "ghost",
+        "ghost rule altered",
+    );
+    // a ghost's p made its b (2b − b = b: the window's missing row would be
+    // the ray's copy), which is not the point two steps beside it
+    rejected(
+        tamper(&|d| {
+            for f in d["parts"]["sector"]["faces"].as_array_mut().unwrap() {
+                for e in f["layout"].as_array_mut().unwrap() {
+                    if e.as_array().unwrap().len() == 4 {
+                        e[3] = e[2].clone();
+                        return;
+                    }
+                }
+            }
+        }),
+        "is not 2b − p",
+        "ghost's p replaced",
+    );
+    // the winding data altered: the number, and one polygon point mirrored
+    rejected(tamper(&|d| d["parts"]["sector"]["chain"]["number"] = 1.into()), "winds", "winding number");
+    rejected(
+        tamper(&|d| {
+            let w = &mut d["parts"]["sector"]["chain"]["polygon"][3];
+            let (x, y) = (w[0].as_f64().unwrap(), w[1].as_f64().unwrap());
+            *w = serde_json::json!([-x, -y]);
+        }),
+        "half-plane",
+        "polygon point moved",
+    );
+    // the scheme's rules altered: a wrong weight in S's rows (the boundary
+    // vertex rule 3/4, 1/8, 1/8 made 5/8) and in a refinement stencil
+    rejected(tamper(&|d| d["parts"]["tagged"]["rows"][0][0][1] = "5/8".into()), "sum to 1", "a row weight");
+    rejected(
+        tamper(&|d| {
+            let st = &mut d["parts"]["sector"]["points"]["stencils"][0][0][1];
+            *st = "1/3".into();
+        }),
+        "do not sum to 1",
+        "a stencil weight",
+    );
+    // the normal coordinate swapped: λ2 = 1/2 is the curve's tangent
+    // eigenvalue (odd), so its eigenvector is not shown to vanish
+    rejected(tamper(&|d| d["parts"]["sector"]["normal"] = "lambda2".into()), "not shown to vanish", "normal swapped");
+    // a verdict word other than PROVED in a sector part
+    rejected(
+        tamper(&|d| d["parts"]["sector"]["injectivity"] = "NOT PROVED".into()),
+        "PROVED sector map only",
+        "verdict word",
+    );
+}
+
+#[test]
+fn the_example_registry_writes_sector_documents_the_checker_accepts() {
+    if !python3_available() {
+        eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
+        return;
+    }
+    // examples/claims/boundary-blz.toml's certified sector maps: Hoppe
+    // k = 2, 3 and BLZ k = 2..8 PROVED (re-derived), Hoppe k = 5..8
+    // DISPROVED (the tagged part only, never a PROVED sector map)
+    let dir = tempfile::tempdir().unwrap();
+    let claims = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/claims/boundary-blz.toml");
+    let out = subdlab(&["verify", "--claims", claims, "--certificates", dir.path().to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let cases = [
+        ("cc.boundary.regular.map.certified", 2..=3, "(tagged PROVED, sector criterion PROVED)"),
+        ("cc.boundary.blz-map.certified", 2..=8, "(tagged PROVED, sector criterion PROVED)"),
+        (
+            "cc.boundary.hoppe-collapse.certified",
+            5..=8,
+            "(tagged PROVED; sector criterion not re-checked (claimed DISPROVED))",
+        ),
+    ];
+    for (id, ks, want) in cases {
+        for k in ks {
+            let (code, text) = check_certificate(&dir.path().join(format!("{id}-n{k}.json")));
+            assert_eq!(code, 0, "{id} k = {k}: {text}");
+            assert!(text.contains(&format!("CERTIFICATE ACCEPTED {want}")), "{id} k = {k}: {text}");
+        }
     }
 }

@@ -432,45 +432,19 @@ fn record_stencils<W: ExactWeight>(
     Ok((net?.points, dag))
 }
 
-/// The characteristic-map part: the exact refinement from the level-0 net
-/// (the analysis points) to the decisive level, restricted to the points the
-/// windows use and their ancestors; per ring face its window's edges and the
-/// claimed Jacobian sign; the winding computation; the verdicts and the
-/// premises taken as trusted. `Err`: why the part cannot be written.
-pub fn charmap_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &CharMapCertificate) -> Result<Value, String> {
-    let e = cert
-        .evidence
-        .as_ref()
-        .ok_or("the characteristic map's regularity was not decided: there is no proof to export")?;
-    let (points, dag) = record_stencils::<Rational>(scheme, analysis, e.levels)
-        .or_else(|_| record_stencils::<Cyclotomic>(scheme, analysis, e.levels))
-        .map_err(|err| format!("the net could not be re-refined with exact weights: {err}"))?;
-    let n0 = analysis.discovered.analysis.len();
-    let node = |v: usize| points.get(v).copied().flatten().map(|n| n.0).ok_or("a window point has no exact stencil");
-    // the nodes the windows use and all their ancestors, renumbered in
-    // creation order (a topological order: parents come first); the level-0
-    // points keep their matrix indices 0..n0
+/// The nodes `roots` use and all their ancestors, renumbered in creation
+/// order (a topological order: parents come first; the level-0 points keep
+/// their matrix indices 0..n0): the new index of every node (usize::MAX
+/// where not needed) and the needed refined nodes' stencils over the new
+/// indices.
+#[allow(clippy::type_complexity)]
+fn pruned_stencils(
+    dag: &[Option<Vec<(usize, Cyclotomic)>>],
+    n0: usize,
+    roots: impl IntoIterator<Item = usize>,
+) -> Result<(Vec<usize>, Vec<Vec<(usize, ExactValue)>>), String> {
     let mut needed = vec![false; dag.len()];
-    let mut stack: Vec<usize> = Vec::new();
-    let mut faces = Vec::with_capacity(e.faces.len());
-    let pairs = |edges: &[(usize, usize)]| -> Result<Vec<[usize; 2]>, String> {
-        edges.iter().map(|&(a, b)| Ok([node(a)?, node(b)?])).collect()
-    };
-    for f in &e.faces {
-        let layout: Vec<(usize, [i64; 2])> =
-            f.layout.iter().map(|&(v, c)| Ok((node(v)?, c))).collect::<Result<_, &str>>()?;
-        let window: Vec<(usize, [i64; 2])> =
-            f.window.iter().map(|&(v, c)| Ok((node(v)?, c))).collect::<Result<_, &str>>()?;
-        faces.push((pairs(&f.u_edges)?, pairs(&f.v_edges)?, f.sign, layout, window));
-    }
-    let chain: Vec<usize> = match &e.winding {
-        Some(w) => w.vertices.iter().map(|&v| node(v)).collect::<Result<_, _>>()?,
-        None => Vec::new(),
-    };
-    stack.extend(faces.iter().flat_map(|(u, v, _, l, w)| {
-        u.iter().chain(v).flatten().copied().chain(l.iter().map(|p| p.0)).chain(w.iter().map(|p| p.0))
-    }));
-    stack.extend(chain.iter().copied());
+    let mut stack: Vec<usize> = roots.into_iter().collect();
     while let Some(i) = stack.pop() {
         if !std::mem::replace(&mut needed[i], true) {
             if let Some(s) = &dag[i] {
@@ -490,6 +464,49 @@ pub fn charmap_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &CharMapCert
             stencils.push(s.iter().map(|(p, w)| (index[*p], exact_value(w))).collect());
         }
     }
+    Ok((index, stencils))
+}
+
+/// The characteristic-map part: the exact refinement from the level-0 net
+/// (the analysis points) to the decisive level, restricted to the points the
+/// windows use and their ancestors; per ring face its window's edges and the
+/// claimed Jacobian sign; the winding computation; the verdicts and the
+/// premises taken as trusted. `Err`: why the part cannot be written.
+pub fn charmap_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &CharMapCertificate) -> Result<Value, String> {
+    let e = cert
+        .evidence
+        .as_ref()
+        .ok_or("the characteristic map's regularity was not decided: there is no proof to export")?;
+    let (points, dag) = record_stencils::<Rational>(scheme, analysis, e.levels)
+        .or_else(|_| record_stencils::<Cyclotomic>(scheme, analysis, e.levels))
+        .map_err(|err| format!("the net could not be re-refined with exact weights: {err}"))?;
+    let n0 = analysis.discovered.analysis.len();
+    let node = |v: usize| points.get(v).copied().flatten().map(|n| n.0).ok_or("a window point has no exact stencil");
+    // the nodes the windows use and all their ancestors, renumbered in
+    // creation order (a topological order: parents come first); the level-0
+    // points keep their matrix indices 0..n0
+    let mut faces = Vec::with_capacity(e.faces.len());
+    let pairs = |edges: &[(usize, usize)]| -> Result<Vec<[usize; 2]>, String> {
+        edges.iter().map(|&(a, b)| Ok([node(a)?, node(b)?])).collect()
+    };
+    for f in &e.faces {
+        let layout: Vec<(usize, [i64; 2])> =
+            f.layout.iter().map(|&(v, c)| Ok((node(v)?, c))).collect::<Result<_, &str>>()?;
+        let window: Vec<(usize, [i64; 2])> =
+            f.window.iter().map(|&(v, c)| Ok((node(v)?, c))).collect::<Result<_, &str>>()?;
+        faces.push((pairs(&f.u_edges)?, pairs(&f.v_edges)?, f.sign, layout, window));
+    }
+    let chain: Vec<usize> = match &e.winding {
+        Some(w) => w.vertices.iter().map(|&v| node(v)).collect::<Result<_, _>>()?,
+        None => Vec::new(),
+    };
+    let roots = faces
+        .iter()
+        .flat_map(|(u, v, _, l, w)| {
+            u.iter().chain(v).flatten().copied().chain(l.iter().map(|p| p.0)).chain(w.iter().map(|p| p.0))
+        })
+        .chain(chain.iter().copied());
+    let (index, stencils) = pruned_stencils(&dag, n0, roots)?;
     let faces: Vec<Value> = faces
         .iter()
         .map(|(u, v, sign, layout, window)| {
@@ -630,4 +647,155 @@ fn add_enclosure(block: &mut Value, diagonalisation: &Option<Diagonalisation>, c
     if let Value::Object(map) = block {
         map.extend(fields.into_iter().map(|(k, x)| (k.to_string(), x)));
     }
+}
+
+/// The sector part (`certify::tagged_charmap`, lemmas B1–B6) of a PROVED
+/// sector map, beside the tagged spectral part: per eigenvector of the pair
+/// Krawczyk's data on its reflection block (the checker rebuilds the block
+/// from the rows and recomputes K(Y)); the sharp curve's points; the exact
+/// stencil DAG of the net at the decisive level (restricted to the points
+/// the windows use and their ancestors); per ring face its ghost-extended
+/// window (each of the 4 × 4 positions a net point or a ghost 2b − p), the
+/// rows along its sharp edges and the claimed Jacobian sign; the inner
+/// chain with its half-planes and float polygon. `Err`: why the part is not
+/// written (the sector criterion is not PROVED, or an eigenvector was
+/// enclosed by the disc bound only).
+pub fn sector_part(
+    scheme: &dyn Scheme,
+    analysis: &Analysis,
+    cert: &super::tagged_charmap::TaggedCharMapCertificate,
+) -> Result<Value, String> {
+    use super::tagged_charmap::WindowSource;
+    let e = cert.evidence.as_ref().ok_or_else(|| match &cert.sector_criterion {
+        Verdict::Proved => "the sector map is PROVED, but an eigenvector was enclosed by the disc bound only (no \
+                            Krawczyk data to re-check): no sector part is written"
+            .to_string(),
+        other => format!(
+            "the sector criterion is {}: only a PROVED sector map is exported (the spectral part is, in `tagged`)",
+            other.word()
+        ),
+    })?;
+    let (points, dag) = record_stencils::<Rational>(scheme, analysis, e.levels)
+        .or_else(|_| record_stencils::<Cyclotomic>(scheme, analysis, e.levels))
+        .map_err(|err| format!("the net could not be re-refined with exact weights: {err}"))?;
+    let n0 = analysis.discovered.analysis.len();
+    let node = |v: usize| points.get(v).copied().flatten().map(|n| n.0).ok_or("a window point has no exact stencil");
+    let mut roots = Vec::new();
+    for f in &e.faces {
+        for (_, from) in &f.layout {
+            match *from {
+                WindowSource::Net(v) => roots.push(node(v)?),
+                WindowSource::Ghost(b, p) => roots.extend([node(b)?, node(p)?]),
+            }
+        }
+    }
+    for &v in &e.chain.vertices {
+        roots.push(node(v)?);
+    }
+    let (index, stencils) = pruned_stencils(&dag, n0, roots)?;
+    let id = |v: usize| -> Result<usize, String> { Ok(index[node(v)?]) };
+    let faces: Vec<Value> = e
+        .faces
+        .iter()
+        .map(|f| -> Result<Value, String> {
+            let layout: Vec<Value> = f
+                .layout
+                .iter()
+                .map(|&((x, y), from)| match from {
+                    WindowSource::Net(v) => Ok(json!([x, y, id(v)?])),
+                    WindowSource::Ghost(b, p) => Ok(json!([x, y, id(b)?, id(p)?])),
+                })
+                .collect::<Result<_, String>>()?;
+            let rows: Vec<Vec<[i32; 2]>> = f.rows.iter().map(|r| r.iter().map(|&(x, y)| [x, y]).collect()).collect();
+            Ok(json!({ "sign": if f.sign > 0 { "+" } else { "-" }, "layout": layout, "rows": rows }))
+        })
+        .collect::<Result<_, _>>()?;
+    let block_index = |name: &str| cert.spectrum.blocks.iter().position(|b| b.name == name);
+    let eigenvectors: Vec<Value> = e
+        .eigenvectors
+        .iter()
+        .map(|v| {
+            json!({
+                "block": block_index(v.block),
+                "component": v.component,
+                "s": v.s,
+                "x": v.x,
+                "mu": v.mu,
+                "r": v.r,
+                "y": v.y,
+            })
+        })
+        .collect();
+    let c = &e.chain;
+    let chain_vertices: Vec<usize> = c.vertices.iter().map(|&v| id(v)).collect::<Result<_, _>>()?;
+    Ok(json!({
+        "statement": cert.statement,
+        "regularity": cert.regularity.word(),
+        "injectivity": cert.injectivity.word(),
+        "sector_criterion": cert.sector_criterion.word(),
+        "levels": e.levels,
+        "normal": if e.normal == 0 { "lambda1" } else { "lambda2" },
+        "eigenvectors": eigenvectors,
+        "curve": e.curve,
+        "points": {
+            "level0": n0,
+            "note": "points 0..level0 are the analysis points by matrix index; point level0 + k is stencil k \
+                     over earlier points (creation order across the refinement levels)",
+            "stencils": stencils,
+        },
+        "faces": faces,
+        "chain": {
+            "vertices": chain_vertices,
+            "arcs": c.arcs,
+            "directions": c.directions,
+            "polygon": c.polygon,
+            "number": c.number,
+        },
+        "trusted": [
+            "the stencils are Catmull–Clark's rules with the boundary tag (their weights are checked to sum to 1), \
+             and over the ring faces' windows the ghost-extended bicubic B-spline's (compared exactly by subdlab: \
+             lemma B3)",
+            "each window is its ring face's one-ring laid out on the lattice, the missing positions across a sharp \
+             ray filled by 2b − p with b on the ray (the checker confirms that b and p are the net points one and two \
+             steps beside the ghost and that b's normal coordinate is exactly 0), and the rows are the face's edges \
+             on a sharp ray",
+            "the ring faces and their scaled copies cover the punctured sector, and the chain is the inner boundary \
+             of the ring from one sharp ray to the other, arc i the ring face beside its edge i",
+        ],
+    }))
+}
+
+/// The sector map's document at a boundary vertex: the tagged spectral part
+/// and, where the sector criterion is PROVED and exportable within
+/// [`MAX_DOCUMENT_BYTES`], the `sector` part; otherwise `sector_omitted`
+/// says why (a DISPROVED or NOT PROVED sector map writes no sector part, so
+/// no checker can accept it as PROVED).
+pub fn write_tagged_charmap(
+    path: &std::path::Path,
+    scheme: &dyn Scheme,
+    analysis: &Analysis,
+    cert: &super::tagged_charmap::TaggedCharMapCertificate,
+) -> Result<(), Error> {
+    let tagged = tagged_part(scheme, analysis, &cert.spectrum);
+    let omitted = |why: String| {
+        let mut doc = document(analysis, vec![("tagged", tagged.clone())]);
+        doc["sector_omitted"] = json!(why);
+        doc["sector_claimed"] = json!(cert.sector_criterion.word());
+        doc
+    };
+    let doc = match sector_part(scheme, analysis, cert) {
+        Ok(sector) => {
+            let mut doc = document(analysis, vec![("tagged", tagged.clone()), ("sector", sector)]);
+            let size = serde_json::to_string(&doc).map(|t| t.len()).unwrap_or(usize::MAX);
+            if size <= MAX_DOCUMENT_BYTES {
+                doc["sector_omitted"] = Value::Null;
+                doc["sector_claimed"] = json!(cert.sector_criterion.word());
+                doc
+            } else {
+                omitted(format!("the sector part would take {size} bytes, above {MAX_DOCUMENT_BYTES}"))
+            }
+        }
+        Err(why) => omitted(why),
+    };
+    write(path, &doc)
 }

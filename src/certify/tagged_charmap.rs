@@ -97,6 +97,75 @@ pub struct TaggedCharMapCertificate {
     /// of the chain doubled by the mirror
     pub winding_number: Option<i64>,
     pub reasons: Vec<String>,
+    /// what a certificate document exports of a PROVED sector map (the
+    /// proof's input and claims at its decisive level, `export::sector_part`);
+    /// `None` where the sector criterion is not PROVED
+    #[serde(skip)]
+    pub evidence: Option<SectorEvidence>,
+}
+
+/// The data of a PROVED sector map that an independent checker re-derives
+/// the verdict from (`export::sector_part`, `scripts/check_cert.py`).
+#[derive(Clone, Debug)]
+pub struct SectorEvidence {
+    /// analysis steps of the interval net
+    pub levels: usize,
+    /// 0: λ1's eigenvector vanishes on the sharp curve, 1: λ2's
+    pub normal: usize,
+    /// the sharp curve's points (matrix indices)
+    pub curve: Vec<usize>,
+    /// λ1's and λ2's eigenvectors, each proved by Krawczyk's test on its block
+    pub eigenvectors: [EigenvectorEvidence; 2],
+    /// per ring face (in the order the winding data names them)
+    pub faces: Vec<FaceEvidence>,
+    pub chain: ChainEvidence,
+}
+
+/// Krawczyk's test of one eigenpair of a reflection block (`krawczyk_eigenpair`):
+/// the float approximation ũ = (x̃, μ̃) with x̃_s = 1, the float matrix R and
+/// the radii of the box Y with K(Y) ⊂ int Y.
+#[derive(Clone, Debug)]
+pub struct EigenvectorEvidence {
+    /// "even", "odd" or "whole"
+    pub block: &'static str,
+    pub component: usize,
+    pub s: usize,
+    pub x: Vec<f64>,
+    pub mu: f64,
+    pub r: Vec<Vec<f64>>,
+    pub y: Vec<f64>,
+}
+
+/// Where a ghost-extended window's position takes its value from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum WindowSource {
+    /// a vertex of the refined net
+    Net(usize),
+    /// the ghost point 2b − p (b on a sharp ray, p its neighbour across)
+    Ghost(usize, usize),
+}
+
+/// A ring face's window: its 4 × 4 positions, the rows of positions along
+/// its sharp edges (in the face's orientation) and the sign its Jacobian
+/// was proved to have.
+#[derive(Clone, Debug)]
+pub struct FaceEvidence {
+    pub layout: Vec<((i32, i32), WindowSource)>,
+    pub rows: Vec<Vec<(i32, i32)>>,
+    pub sign: i8,
+}
+
+/// The inner chain of lemma B6: net vertices from ray to ray, the ring
+/// face (index into the faces) beside each of its edges, the half-planes'
+/// directions and the float polygon's points (one per chain vertex, before
+/// mirroring), and the winding number of the doubled polygon.
+#[derive(Clone, Debug)]
+pub struct ChainEvidence {
+    pub vertices: Vec<usize>,
+    pub arcs: Vec<usize>,
+    pub directions: Vec<[f64; 2]>,
+    pub polygon: Vec<[f64; 2]>,
+    pub number: i64,
 }
 
 const STATEMENT: &str = "the sector characteristic map at the boundary vertex (the eigenvectors of λ1 and λ2 of \
@@ -146,6 +215,7 @@ pub fn certify_tagged_charmap(
         max_point_width: None,
         winding_number: None,
         reasons: Vec::new(),
+        evidence: None,
     };
     let geometric = match &cert.spectrum.verdict {
         Verdict::Proved => geometric_half(scheme, analysis, max_levels, &mut cert),
@@ -167,13 +237,14 @@ pub fn certify_tagged_charmap(
 }
 
 /// Lemma B1: a real enclosure of the eigenvector of `named` over S's points
-/// (matrix order), and the radius of its disc-based enclosure.
+/// (matrix order), the radius of its enclosure, and Krawczyk's data where
+/// that test gave it (a document exports only those: `SectorEvidence`).
 fn enclosed_eigenvector(
     spectrum: &TaggedCertificate,
     rows: &[Vec<Interval>],
     named: &Named,
     size: usize,
-) -> Result<(Vec<Interval>, f64), String> {
+) -> Result<(Vec<Interval>, f64, Option<EigenvectorEvidence>), String> {
     let block = spectrum
         .blocks
         .iter()
@@ -204,14 +275,16 @@ fn enclosed_eigenvector(
     // clusters near 0 or 1/8 give radii of 1e-2): Krawczyk's test on the
     // block itself, started from the enclosure's midpoint, gives a tight one
     // when it succeeds; the disc bound stands otherwise.
-    let (x, radius) = match block_matrix(rows, spectrum.reflection.as_ref(), block.name)
+    let (x, radius, evidence) = match block_matrix(rows, spectrum.reflection.as_ref(), block.name)
         .and_then(|a| krawczyk_eigenpair(&a, &x, component))
     {
-        Ok(tight) => {
+        Ok((tight, mut evidence)) => {
             let width = tight.iter().map(|v| v.width()).fold(0.0, f64::max);
-            (tight, width)
+            evidence.block = block.name;
+            evidence.component = named.component;
+            (tight, width, Some(evidence))
         }
-        Err(_) => (x, radius),
+        Err(_) => (x, radius, None),
     };
     // from the block's basis to S's points (`spectrum::reflection::split`)
     let values = match (block.name, spectrum.reflection.as_ref()) {
@@ -233,7 +306,7 @@ fn enclosed_eigenvector(
         }
         (_, None) => return Err("the blocks are the reflection's, but the reflection is not recorded".into()),
     };
-    Ok((values, radius))
+    Ok((values, radius, evidence))
 }
 
 /// Lemma B2: the sharp curve's points (matrix indices) and, per eigenvector
@@ -328,8 +401,8 @@ fn geometric_half(
     let d = &analysis.discovered;
     let size = d.analysis.len();
     let rows = interval_matrix(scheme, analysis)?;
-    let (v1, r1) = enclosed_eigenvector(&cert.spectrum, &rows, l1, size)?;
-    let (v2, r2) = enclosed_eigenvector(&cert.spectrum, &rows, l2, size)?;
+    let (v1, r1, e1) = enclosed_eigenvector(&cert.spectrum, &rows, l1, size)?;
+    let (v2, r2, e2) = enclosed_eigenvector(&cert.spectrum, &rows, l2, size)?;
     cert.eigenvector_radius = Some(r1.max(r2));
     let (curve, vanish) = vanishing_on_curve(scheme, analysis, &cert.spectrum, [l1, l2])?;
     cert.curve_points = curve.len();
@@ -452,10 +525,32 @@ fn geometric_half(
             ["λ1", "λ2"][tangent]
         ));
         match doubled_winding(&net, &ring, &inside, &windows, normal) {
-            Ok(number) => {
+            Ok(chain) => {
+                let number = chain.number;
                 cert.winding_number = Some(number);
                 cert.reasons.extend(level_reasons);
                 if number == sign {
+                    // what a document exports: Krawczyk's data for both
+                    // eigenvectors (a disc-bound enclosure is not exported)
+                    if let (Some(a), Some(b)) = (e1.clone(), e2.clone()) {
+                        let faces = windows
+                            .iter()
+                            .zip(&bounds)
+                            .map(|(w, b)| FaceEvidence {
+                                layout: w.layout.clone(),
+                                rows: w.row_positions.clone(),
+                                sign: if b.lo > 0.0 { 1 } else { -1 },
+                            })
+                            .collect();
+                        cert.evidence = Some(SectorEvidence {
+                            levels,
+                            normal,
+                            curve: curve.clone(),
+                            eigenvectors: [a, b],
+                            faces,
+                            chain,
+                        });
+                    }
                     cert.reasons.push(format!(
                         "the annulus's inner chain, doubled by the mirror in the rays' line, winds {number} time \
                          around the centre"
@@ -491,6 +586,9 @@ fn geometric_half(
 struct BoundaryWindow {
     window: Window,
     rows: Vec<Vec<Point>>,
+    /// every position's source, and the rows' positions (for the document)
+    layout: Vec<((i32, i32), WindowSource)>,
+    row_positions: Vec<Vec<(i32, i32)>>,
 }
 
 /// Lemma B3: the window of a ring face, ghost-extended across a sharp ray.
@@ -561,8 +659,10 @@ fn boundary_window(net: &Net<Point>, vf: &[Vec<usize>], f: usize) -> Result<Boun
     let at: HashMap<(i32, i32), usize> = coords.0.iter().map(|&(v, c)| (c, v)).collect();
     // every position of the window: a net vertex, or a ghost
     let mut value: HashMap<(i32, i32), Point> = HashMap::new();
+    let mut source: HashMap<(i32, i32), WindowSource> = HashMap::new();
     for (&c, &v) in &at {
         value.insert(c, p(v)?);
+        source.insert(c, WindowSource::Net(v));
     }
     let mut ghosts = 0;
     for x in -1..=2 {
@@ -587,11 +687,12 @@ fn boundary_window(net: &Net<Point>, vf: &[Vec<usize>], f: usize) -> Result<Boun
                 }
                 let (pb, pp) = (p(b)?, p(pv)?);
                 let two = Interval::point(2.0);
-                ghost = Some([two * pb[0] - pp[0], two * pb[1] - pp[1]]);
+                ghost = Some(([two * pb[0] - pp[0], two * pb[1] - pp[1]], WindowSource::Ghost(b, pv)));
                 break;
             }
-            let g = ghost.ok_or("a ring face's window lacks a point that no sharp ray accounts for")?;
+            let (g, from) = ghost.ok_or("a ring face's window lacks a point that no sharp ray accounts for")?;
             value.insert((x, y), g);
+            source.insert((x, y), from);
             ghosts += 1;
         }
     }
@@ -610,6 +711,7 @@ fn boundary_window(net: &Net<Point>, vf: &[Vec<usize>], f: usize) -> Result<Boun
     // the rows on a sharp ray: the face's own sharp edges (the limit along
     // one is the cubic B-spline of the four ray points of its window row)
     let mut rows = Vec::new();
+    let mut row_positions = Vec::new();
     if ghosts > 0 {
         for k in 0..4 {
             let (a, b) = (face[k], face[(k + 1) % 4]);
@@ -618,14 +720,21 @@ fn boundary_window(net: &Net<Point>, vf: &[Vec<usize>], f: usize) -> Result<Boun
             }
             let (ca, cb) = (coords.at(a), coords.at(b));
             let step = (cb.0 - ca.0, cb.1 - ca.1);
-            let row: Vec<Point> = (-1..=2).map(|s| value[&(ca.0 + s * step.0, ca.1 + s * step.1)]).collect();
-            rows.push(row);
+            let positions: Vec<(i32, i32)> = (-1..=2).map(|s| (ca.0 + s * step.0, ca.1 + s * step.1)).collect();
+            rows.push(positions.iter().map(|c| value[c]).collect());
+            row_positions.push(positions);
         }
     }
     let mut ids: Vec<(i32, i32)> = value.keys().copied().collect();
     ids.sort_unstable();
     let points: Vec<Point> = ids.iter().map(|c| value[c]).collect();
-    Ok(BoundaryWindow { window: Window { face: f, faces, along_u, along_v, points, ..Window::default() }, rows })
+    let layout = ids.iter().map(|c| (*c, source[c])).collect();
+    Ok(BoundaryWindow {
+        window: Window { face: f, faces, along_u, along_v, points, ..Window::default() },
+        rows,
+        layout,
+        row_positions,
+    })
 }
 
 /// Lemma B3's rule check: at every entity the windows' limits depend on,
@@ -691,7 +800,7 @@ fn doubled_winding(
     inside: &[usize],
     windows: &[BoundaryWindow],
     normal: usize,
-) -> Result<i64, String> {
+) -> Result<ChainEvidence, String> {
     let mesh = &net.mesh;
     let mut half: HashSet<(usize, usize)> = HashSet::new();
     for &f in inside {
@@ -768,11 +877,13 @@ fn doubled_winding(
         }
         polygon.push(w);
     }
+    let half_polygon = polygon.clone();
     // the mirrored chain back: σw_{m−1}, …, σw_1 (the ends lie on the line)
     for i in (1..m).rev() {
         polygon.push(mirror(polygon[i]));
     }
-    polygon_winding(&polygon)
+    let number = polygon_winding(&polygon)?;
+    Ok(ChainEvidence { vertices, arcs, directions, polygon: half_polygon, number })
 }
 
 /// S on the analysis neighbourhood, every weight enclosed (dense rows).
@@ -808,7 +919,7 @@ fn krawczyk_eigenpair(
     a: &[Vec<Interval>],
     start: &[Interval],
     component: &super::discs::Component,
-) -> Result<Vec<Interval>, String> {
+) -> Result<(Vec<Interval>, EigenvectorEvidence), String> {
     use nalgebra::{DMatrix, DVector};
     let k = a.len();
     if k == 0 || start.len() != k {
@@ -922,7 +1033,17 @@ fn krawczyk_eigenpair(
             if !held {
                 return Err("the eigenvalue found is not shown to be the named one".into());
             }
-            return Ok((0..k).map(|i| if i == s { Interval::point(1.0) } else { xi[i] + kr[i] }).collect());
+            let x_enclosed = (0..k).map(|i| if i == s { Interval::point(1.0) } else { xi[i] + kr[i] }).collect();
+            let evidence = EigenvectorEvidence {
+                block: "",
+                component: 0,
+                s,
+                x: x.iter().copied().collect(),
+                mu,
+                r: (0..k).map(|i| (0..k).map(|j| r[(i, j)]).collect()).collect(),
+                y: y.iter().map(|v| v.hi).collect(),
+            };
+            return Ok((x_enclosed, evidence));
         }
         // ε-inflation
         y = kr

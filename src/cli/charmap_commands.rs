@@ -57,7 +57,8 @@ pub struct CharmapArgs {
     pub certify_levels: usize,
     /// also write the certificate document (JSON, atomically) for an
     /// independent checker (`python3 scripts/check_cert.py FILE`): the
-    /// spectral and the characteristic-map parts
+    /// spectral and the characteristic-map parts (at a boundary vertex: the
+    /// tagged spectral part and the sector map's)
     #[arg(long, value_name = "FILE", requires = "certify")]
     pub certificate: Option<PathBuf>,
     /// machine-readable JSON output
@@ -175,7 +176,8 @@ pub fn charmap(a: &CharmapArgs, scheme: Box<dyn Scheme>) -> Result<i32, Error> {
     let style = a.figure.style()?;
     let config = super::commands::configuration(scheme.as_ref(), &a.config)?;
     // at a tagged vertex the certificate is the sector map's
-    // (`certify::tagged_charmap`): boundary vertices only, no document yet
+    // (`certify::tagged_charmap`): boundary vertices only; its document is
+    // `export::write_tagged_charmap`'s
     let tagged = config.tagging.is_some();
     if a.certify && tagged {
         if let Some(t) = config.tagging.filter(|t| *t != crate::neighbourhood::Tagging::Boundary) {
@@ -185,13 +187,6 @@ pub fn charmap(a: &CharmapArgs, scheme: Box<dyn Scheme>) -> Result<i32, Error> {
                 t.name(),
                 t.name()
             )));
-        }
-        if a.certificate.is_some() {
-            return Err(Error::Input(
-                "charmap --tag boundary --certify --certificate: no certificate document at tagged vertices yet \
-                 (spectrum --tag --certify --certificate writes the spectral part's)"
-                    .into(),
-            ));
         }
     }
     let levels = a.levels.unwrap_or_else(|| crate::charmap::default_levels(scheme.as_ref()));
@@ -225,6 +220,9 @@ pub fn charmap(a: &CharmapArgs, scheme: Box<dyn Scheme>) -> Result<i32, Error> {
     };
     if a.certify && tagged {
         let c = crate::certify::tagged_charmap::certify_tagged_charmap(scheme.as_ref(), &analysis, a.certify_levels)?;
+        if let Some(path) = &a.certificate {
+            crate::certify::export::write_tagged_charmap(path, scheme.as_ref(), &analysis, &c)?;
+        }
         write_figure()?;
         let status = super::commands::certified_status(&c.sector_criterion, c.conditional);
         if a.json {

@@ -115,8 +115,8 @@ fn certified_map(
 }
 
 /// The sector criterion at a boundary vertex by the certified sector map
-/// (`charmap --tag boundary --certify`, `certify::tagged_charmap`); other
-/// tags, and certificate documents, are refused in one line.
+/// (`charmap --tag boundary --certify`, `certify::tagged_charmap`), with its
+/// certificate document where asked for; other tags are refused in one line.
 fn certified_boundary_map(
     subject: &Subject,
     expect: &bool,
@@ -127,17 +127,17 @@ fn certified_boundary_map(
         subject.refuse_tag("the certified characteristic map (boundary vertices only)")?;
     }
     over_independent_valences(subject, |subject, n| {
-        if names.path(subject, n).is_some() {
-            return Err(Error::Claim(
-                "tag = \"boundary\": the certified sector map writes no certificate document yet".into(),
-            ));
-        }
         let (scheme, config) = subject_config(subject, n)?;
         let options =
             crate::spectrum::Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
         let analysis = crate::spectrum::analyse_shared(scheme.as_ref(), &config, &options)?;
         let most = levels.unwrap_or(crate::certify::charmap::DEFAULT_MAX_LEVELS);
         let c = crate::certify::tagged_charmap::certify_tagged_charmap(scheme.as_ref(), &analysis, most)?;
+        // the document: the tagged part and, for a PROVED map, the sector
+        // part (`export::write_tagged_charmap`)
+        if let Some(path) = names.path(subject, n) {
+            crate::certify::export::write_tagged_charmap(&path, scheme.as_ref(), &analysis, &c)?;
+        }
         use crate::certify::Verdict;
         let got = match &c.sector_criterion {
             Verdict::Disproved(_) if !c.conditional => false,
