@@ -127,6 +127,12 @@ pub struct CurvatureSets {
     pub square_candidates: Vec<Endpoint>,
     /// candidate points whose class could not be decided (in no set)
     pub undecided: Vec<String>,
+    /// the classes' candidate set is proved complete (the first-order one
+    /// is, and |μ| = λ1² is followed for real and non-real μ)
+    pub exact: bool,
+    /// why the curvature sets are not proved exact beyond the first-order
+    /// reasons (`not_exact_because` of the valence), when they are not
+    pub not_exact_because: Vec<String>,
 }
 
 /// The exact sets at one valence.
@@ -370,25 +376,38 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
     }
     // the modulus family: where a non-real root u of a block has |u| = λ1
     // (C¹) or |u| = 1 (convergence) — `modulus`; only where the block
-    // polynomials are real (else the sweep is not exact anyway)
+    // polynomials are real (else the sweep is not exact anyway). With
+    // `--curvature`, the same family against λ1's root-squared polynomial
+    // (roots y²): |u| = λ1², u·ū = λ1⁴, where the class of a non-real μ
+    // can change (`curvature`, "non-real μ").
     let mut moduli_followed = not_exact.is_empty();
     let mut moduli_not_followed_because: Option<String> = None;
+    let mut square_moduli_not_followed_because: Option<String> = None;
     if moduli_followed {
         let one_minus_x: BiPoly = vec![TPoly::int(-1), TPoly::int(1)];
-        let targets: Vec<&BiPoly> = lambda_polys.iter().chain(std::iter::once(&one_minus_x)).collect();
+        let mut targets: Vec<(BiPoly, Family)> = lambda_polys.iter().map(|l| (l.clone(), Family::Modulus)).collect();
+        targets.push((one_minus_x, Family::Modulus));
+        if s.curvature {
+            targets.extend(lambda_polys.iter().map(|l| (curvature::root_squared(l), Family::ModulusSquare)));
+        }
+        // (block outer, target inner: the order the candidates were always
+        // found in, so a merged end keeps the same defining polynomial)
         'family: for p in &polys {
-            for target in &targets {
+            for (target, family) in &targets {
+                if *family == Family::ModulusSquare && square_moduli_not_followed_because.is_some() {
+                    continue;
+                }
                 // rational coefficients: the family in Q[t]; Q(ζ_N) ones
                 // (n = 5, 7): its norm over the pair's conjugates
-                let family = match modulus::rational_coefficients(p).and(modulus::rational_coefficients(target)) {
+                let found = match modulus::rational_coefficients(p).and(modulus::rational_coefficients(target)) {
                     Some(_) => modulus::crossings(p, target),
                     None => modulus::crossings_cyclotomic(p, target, &distinct_conjugates(p, target)),
                 };
-                match family {
+                match found {
                     Ok(modulus::Crossings::Resultant(r)) => {
                         trace(|| {
                             format!(
-                                "n = {n}: modulus pair ({}, {}): resultant of degree {}",
+                                "n = {n}: modulus pair ({}, {}, {family:?}): resultant of degree {}",
                                 p.len() - 1,
                                 target.len() - 1,
                                 r.degree()
@@ -398,10 +417,15 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
                             continue;
                         }
                         for root in sturm::isolate(&r, &s.lo, &s.hi) {
-                            cands.push((root, Family::Modulus));
+                            cands.push((root, *family));
                         }
                     }
                     Ok(modulus::Crossings::Nothing) => {}
+                    Err(why) if *family == Family::ModulusSquare => {
+                        // the curvature sets alone lose exactness, and
+                        // only where a piece has a non-real eigenvalue
+                        square_moduli_not_followed_because = Some(why);
+                    }
                     Err(why) => {
                         // matters only where a piece has a non-real
                         // eigenvalue (below): all-real sets stay exact
@@ -442,7 +466,9 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
         c.recognise_rational();
     }
     merged.sort_by(|a, b| a.0.mid().cmp(&b.0.mid()));
-    let square_family: Vec<bool> = merged.iter().map(|(_, f)| f.contains(&Family::Square)).collect();
+    // |μ| = λ1² can hold at these: |x| = y² for a real x, or u·ū = y⁴
+    let square_family: Vec<bool> =
+        merged.iter().map(|(_, f)| f.contains(&Family::Square) || f.contains(&Family::ModulusSquare)).collect();
     let merged: Vec<RealRoot> = merged.into_iter().map(|(c, _)| c).collect();
     trace(|| format!("n = {n}: {} candidates", merged.len()));
     // sample points of the open pieces
@@ -456,26 +482,37 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
     // decide: pieces, range ends, candidates
     let mut decisions = Vec::new();
     let mut piece = Vec::new();
+    // reasons the curvature sets alone are not proved exact
+    let mut curvature_not_exact: Vec<String> = Vec::new();
     for t in &samples {
         let mut d = decide(s, n, t)?;
         d.kind = "piece";
         d.all_real = Some(all_real(&polys, t));
-        if d.all_real == Some(false) && (!moduli_followed || s.curvature) {
+        if d.all_real == Some(false) {
             // with the modulus family the first-order candidates cover
-            // complex pairs; the curvature classes' |μ| = λ1² for a
-            // non-real μ is not followed
-            let what = if moduli_followed {
-                "|μ| = λ1² for non-real μ (curvature classes) is not followed".to_string()
-            } else {
-                match &moduli_not_followed_because {
+            // complex pairs, and with its square targets the curvature
+            // classes' |μ| = λ1² for a non-real μ
+            if !moduli_followed {
+                let what = match &moduli_not_followed_because {
                     Some(why) => format!("moduli of complex pairs are not followed ({why})"),
                     None => "moduli of complex pairs are not followed".to_string(),
+                };
+                let why = format!(
+                    "a non-real eigenvalue at {} = {t}: {what}, so the pieces' ends are not proved exact",
+                    s.param
+                );
+                if !not_exact.contains(&why) {
+                    not_exact.push(why);
                 }
-            };
-            let why =
-                format!("a non-real eigenvalue at {} = {t}: {what}, so the pieces' ends are not proved exact", s.param);
-            if !not_exact.contains(&why) {
-                not_exact.push(why);
+            } else if let (true, Some(because)) = (s.curvature, &square_moduli_not_followed_because) {
+                let why = format!(
+                    "a non-real eigenvalue at {} = {t}: |μ| = λ1² for non-real μ is not followed ({because}), so the \
+                     curvature sets' ends are not proved exact (the first-order sets' are)",
+                    s.param
+                );
+                if !curvature_not_exact.contains(&why) {
+                    curvature_not_exact.push(why);
+                }
             }
         }
         piece.push(d.clone());
@@ -553,7 +590,11 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
     }
     trace(|| format!("n = {n}: decided"));
     let exact = not_exact.is_empty();
-    let sets = |pick: &dyn Fn(&Decision) -> bool, evidence_of: &dyn Fn(&Decision) -> &str| -> Vec<ExactInterval> {
+    let curvature_exact = exact && curvature_not_exact.is_empty();
+    let sets = |pick: &dyn Fn(&Decision) -> bool,
+                evidence_of: &dyn Fn(&Decision) -> &str,
+                exact: bool|
+     -> Vec<ExactInterval> {
         // the sequence lo, piece 0, cand 0, piece 1, ..., piece k, hi
         let mut seq: Vec<(Option<&RealRoot>, &Decision)> = Vec::new();
         seq.push((Some(&fences[0]), &at_lo));
@@ -606,11 +647,12 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
     fn class_evidence(d: &Decision) -> &str {
         d.curvature_evidence.as_deref().unwrap_or("floating point")
     }
-    let convergent = sets(&|d| d.convergent, &first_order);
-    let c1_spectral = sets(&|d| d.c1_spectral, &first_order);
+    let convergent = sets(&|d| d.convergent, &first_order, exact);
+    let c1_spectral = sets(&|d| d.c1_spectral, &first_order, exact);
     let curvature = s.curvature.then(|| {
-        let class_set =
-            |class: CurvatureClass| sets(&move |d: &Decision| d.curvature_class == Some(class), &class_evidence);
+        let class_set = |class: CurvatureClass| {
+            sets(&move |d: &Decision| d.curvature_class == Some(class), &class_evidence, curvature_exact)
+        };
         CurvatureSets {
             zero: class_set(CurvatureClass::Zero),
             bounded: class_set(CurvatureClass::Bounded),
@@ -622,6 +664,8 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
                 .map(|(c, _)| endpoint(c))
                 .collect(),
             undecided: undecided.clone(),
+            exact: curvature_exact,
+            not_exact_because: curvature_not_exact.clone(),
         }
     });
     Ok(ValenceSets {
@@ -653,6 +697,9 @@ enum Family {
     /// |u| = λ1 or |u| = 1 for a non-real root u (a complex pair's modulus
     /// crosses; `modulus`)
     Modulus,
+    /// |u| = λ1² for a non-real root u: u·ū = y⁴, the modulus family
+    /// against λ1's root-squared block polynomial (`--curvature`)
+    ModulusSquare,
 }
 
 /// The weakest evidence of several: floating point < certified < exact.
