@@ -354,6 +354,11 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
         )
     });
     let mut cands: Vec<(RealRoot, Family)> = Vec::new();
+    // one pair per Galois orbit: a conjugate pair's norm is the same
+    // polynomial, so the same candidates (`one_per_galois_orbit`)
+    let all_pairs = pairs.len();
+    let pairs = one_per_galois_orbit(pairs);
+    trace(|| format!("n = {n}: {} pairs, {} up to conjugation", all_pairs, pairs.len()));
     for (a, b, family) in &pairs {
         let r = first_subresultant(a, b)?;
         trace(|| {
@@ -391,9 +396,17 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
             targets.extend(lambda_polys.iter().map(|l| (curvature::root_squared(l), Family::ModulusSquare)));
         }
         // (block outer, target inner: the order the candidates were always
-        // found in, so a merged end keeps the same defining polynomial)
-        'family: for p in &polys {
-            for (target, family) in &targets {
+        // found in, so a merged end keeps the same defining polynomial),
+        // one pair per Galois orbit as for the first-order pairs
+        let modulus_pairs: Vec<(BiPoly, BiPoly, Family)> = polys
+            .iter()
+            .flat_map(|p| targets.iter().map(move |(target, family)| (p.clone(), target.clone(), *family)))
+            .collect();
+        let all_modulus_pairs = modulus_pairs.len();
+        let modulus_pairs = one_per_galois_orbit(modulus_pairs);
+        trace(|| format!("n = {n}: {all_modulus_pairs} modulus pairs, {} up to conjugation", modulus_pairs.len()));
+        'family: for (p, target, family) in &modulus_pairs {
+            {
                 if *family == Family::ModulusSquare && square_moduli_not_followed_because.is_some() {
                     continue;
                 }
@@ -1051,6 +1064,41 @@ pub(crate) fn distinct_conjugates(a: &BiPoly, b: &BiPoly) -> Vec<u64> {
         }
     }
     out
+}
+
+/// The pairs (A, B, kind) with one representative per Galois orbit, in
+/// their first order.
+///
+/// Why it is enough: for σ_c (ζ_N ↦ ζ_N^c, c coprime to N) and the pair
+/// Q = σ_c(P), the conjugates of Q are σ_a σ_c(P) = σ_b(P): the same set
+/// as P's (the σ form a group). The subresultant of Q is σ_c of P's (σ_c
+/// is a field automorphism, so the first nonzero psc_j has the same j),
+/// and the modulus resultant likewise (its reductions are canonical,
+/// `modulus`, step 4 of "The exact sweep: speed"). Both are replaced by
+/// their norm — the product over the distinct conjugates — so Q's norm is
+/// P's up to a constant factor: the same real roots, the same candidates.
+/// At n = 5 the blocks' polynomials P_1 and P_2 are exchanged by σ_2
+/// (σ_a(B_m) = B_{am}), so (P_0, P_2) is (P_0, P_1)'s conjugate, (P_2, P_2′)
+/// is (P_1, P_1′)'s, (P_2, x − 1) is (P_1, x − 1)'s. Pairs are compared as
+/// they are ordered (A, B): (P_1, P_2) and (P_2, P_1) are kept both (their
+/// polynomials are not conjugate as ordered pairs, only up to a sign).
+fn one_per_galois_orbit<K: PartialEq + Copy>(pairs: Vec<(BiPoly, BiPoly, K)>) -> Vec<(BiPoly, BiPoly, K)> {
+    let conj = |p: &BiPoly, a: u64| -> BiPoly {
+        p.iter().map(|c| TPoly::from_coeffs(c.coeffs().iter().map(|x| conjugate(x, a)).collect())).collect()
+    };
+    let mut kept: Vec<(BiPoly, BiPoly, K)> = Vec::new();
+    for (a, b, kind) in pairs {
+        let conjugates = distinct_conjugates(&a, &b);
+        // σ_1 is the pair itself: an exact repeat is dropped too
+        let seen = conjugates.iter().any(|&s| {
+            let (ca, cb) = if s == 1 { (a.clone(), b.clone()) } else { (conj(&a, s), conj(&b, s)) };
+            kept.iter().any(|(ka, kb, kk)| *kk == kind && *ka == ca && *kb == cb)
+        });
+        if !seen {
+            kept.push((a, b, kind));
+        }
+    }
+    kept
 }
 
 /// σ_a(c): ζ_N ↦ ζ_N^a on an element of order dividing N (a coprime to N).
