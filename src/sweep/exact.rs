@@ -357,7 +357,11 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
     // one pair per Galois orbit: a conjugate pair's norm is the same
     // polynomial, so the same candidates (`one_per_galois_orbit`)
     let all_pairs = pairs.len();
-    let pairs = one_per_galois_orbit(pairs);
+    let pairs = one_per_galois_orbit(pairs, |a, b, family| match family {
+        Family::Meeting => Some((b.clone(), a.clone())),
+        Family::Opposite => Some((negated(b), negated(a))),
+        _ => None,
+    });
     trace(|| format!("n = {n}: {} pairs, {} up to conjugation", all_pairs, pairs.len()));
     for (a, b, family) in &pairs {
         let r = first_subresultant(a, b)?;
@@ -403,7 +407,8 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
             .flat_map(|p| targets.iter().map(move |(target, family)| (p.clone(), target.clone(), *family)))
             .collect();
         let all_modulus_pairs = modulus_pairs.len();
-        let modulus_pairs = one_per_galois_orbit(modulus_pairs);
+        // (a block against a target: no reading the other way round)
+        let modulus_pairs = one_per_galois_orbit(modulus_pairs, |_, _, _| None);
         trace(|| format!("n = {n}: {all_modulus_pairs} modulus pairs, {} up to conjugation", modulus_pairs.len()));
         'family: for (p, target, family) in &modulus_pairs {
             {
@@ -1082,7 +1087,18 @@ pub(crate) fn distinct_conjugates(a: &BiPoly, b: &BiPoly) -> Vec<u64> {
 /// is (P_1, P_1′)'s, (P_2, x − 1) is (P_1, x − 1)'s. Pairs are compared as
 /// they are ordered (A, B): (P_1, P_2) and (P_2, P_1) are kept both (their
 /// polynomials are not conjugate as ordered pairs, only up to a sign).
-fn one_per_galois_orbit<K: PartialEq + Copy>(pairs: Vec<(BiPoly, BiPoly, K)>) -> Vec<(BiPoly, BiPoly, K)> {
+///
+/// `swapped` gives, for the kinds whose pair can be read the other way
+/// round with the same candidates, that reading: (B, A) for two branches
+/// meeting (psc_j(B, A) = ±psc_j(A, B)), (B(−x), A(−x)) for a branch
+/// meeting another's negative, stored as (A(x), B(−x)) (the common roots
+/// negated: psc_j of f(−x), g(−x) is ±psc_j of f, g). With it the orbit of
+/// (P_1, P_2) at n = 7 (σ_3: P_1 → P_3 → P_2 → P_1) also holds (P_1, P_3)
+/// and (P_2, P_3): their norms agree up to sign.
+fn one_per_galois_orbit<K: PartialEq + Copy>(
+    pairs: Vec<(BiPoly, BiPoly, K)>,
+    swapped: impl Fn(&BiPoly, &BiPoly, K) -> Option<(BiPoly, BiPoly)>,
+) -> Vec<(BiPoly, BiPoly, K)> {
     let conj = |p: &BiPoly, a: u64| -> BiPoly {
         p.iter().map(|c| TPoly::from_coeffs(c.coeffs().iter().map(|x| conjugate(x, a)).collect())).collect()
     };
@@ -1090,9 +1106,13 @@ fn one_per_galois_orbit<K: PartialEq + Copy>(pairs: Vec<(BiPoly, BiPoly, K)>) ->
     for (a, b, kind) in pairs {
         let conjugates = distinct_conjugates(&a, &b);
         // σ_1 is the pair itself: an exact repeat is dropped too
+        let readings: Vec<(BiPoly, BiPoly)> =
+            std::iter::once((a.clone(), b.clone())).chain(swapped(&a, &b, kind)).collect();
         let seen = conjugates.iter().any(|&s| {
-            let (ca, cb) = if s == 1 { (a.clone(), b.clone()) } else { (conj(&a, s), conj(&b, s)) };
-            kept.iter().any(|(ka, kb, kk)| *kk == kind && *ka == ca && *kb == cb)
+            readings.iter().any(|(x, y)| {
+                let (ca, cb) = if s == 1 { (x.clone(), y.clone()) } else { (conj(x, s), conj(y, s)) };
+                kept.iter().any(|(ka, kb, kk)| *kk == kind && *ka == ca && *kb == cb)
+            })
         });
         if !seen {
             kept.push((a, b, kind));
