@@ -607,9 +607,9 @@ fn k_interpolate(x: &[Rational], y: &[Cyclotomic]) -> KT {
     out
 }
 
-/// The factor constant in t divided out when its roots are all real (as
-/// `without_constant_roots`: f = gcd_k P_k over Q(ζ), monic; "all real"
-/// read from its norm to Q, whose roots hold f's), else 0, ±1 only.
+/// The factor constant in t divided out when it has rational coefficients
+/// and its roots are all real (as `without_constant_roots`: f = gcd_k P_k
+/// over Q(ζ), monic), else 0, ±1 only.
 fn k_without_constant_roots(p: Vec<KT>) -> Vec<KT> {
     let t_len = p.iter().map(Vec::len).max().unwrap_or(0);
     let f = (0..t_len)
@@ -617,7 +617,8 @@ fn k_without_constant_roots(p: Vec<KT>) -> Vec<KT> {
         .filter(|slice| !slice.is_empty())
         .fold(None, |g: Option<Vec<Cyclotomic>>, slice| Some(g.map_or_else(|| k_gcd(&slice, &[]), |g| k_gcd(&g, &slice))));
     if let Some(f) = f.filter(|f| f.len() >= 2) {
-        let real = crate::sweep::exact::rational_norm(&f).is_ok_and(|norm| all_roots_real(&norm));
+        let rational: Option<Vec<Rational>> = f.iter().map(Cyclotomic::to_rational).collect();
+        let real = rational.is_some_and(|coeffs| all_roots_real(&Poly { coeffs }));
         if real {
             let h: Vec<KT> = f.iter().map(|c| kt_trim(vec![c.clone()])).collect();
             if let Some(q) = k_divide_exactly(&p, &h) {
