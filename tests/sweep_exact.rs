@@ -535,3 +535,94 @@ fn unified_sqrt3_alpha_sets_are_exact_at_valence_4() {
     assert_eq!(c1[0]["from"]["rational"], "0");
     assert!(c1[0]["to"]["decimal"].as_f64().unwrap() < 2.0);
 }
+
+/// The curvature classes where μ is a complex pair
+/// (`tests/data/catmull-clark-complex-centre.toml`, `sweep --exact
+/// --curvature`), derived by hand:
+///
+/// - Only Fourier block 0 reads the centre's rule. On the 1-ring (v, e, f)
+///   it is [[1/2 − b, b, 1/2], [3/8, 1/2, 1/8], [1/4, 1/2, 1/4]] (edge
+///   point 3/8 (v + e_j) + 1/16 (e_{j±1} + f_{j−1} + f_j), face point 1/4
+///   of its corners), rows summing to 1: eigenvalue 1, and the other two
+///   have sum trace − 1 = 1/4 − b and product det = ((1/2 − b)/16 − b/16 +
+///   1/2 · 1/16) = (1 − 2b)/16. Discriminant (1/4 − b)² − (1 − 2b)/4 =
+///   b² − 3/16 < 0 on [0, 2/5] (2/5 < √3/4): a complex pair μ, μ̄ with
+///   |μ|² = (1 − 2b)/16.
+/// - λ1 is Catmull–Clark's (blocks 1, 2 do not read b): block m on the
+///   1-ring has x² − (5 + c)/8 x + 1/16, c = cos(2πm/n) (sum (5 + c)/8,
+///   product ((5 + c)² − (1 + c)(9 + c))/256 = 1/16); n = 3, c = −1/2:
+///   16x² − 9x + 1, λ1 = (9 + √17)/32 ≈ 0.41010, the other root ≈ 0.15240.
+///   The outer rings add 1/8, 1/16, 1/32, 1/64 (Stam).
+/// - λ1² = (49 + 9√17)/512 ≈ 0.16818: every real eigenvalue below λ1 is
+///   below λ1² (0.15240, 1/8, ...), so the class is |μ| against λ1²:
+///   |μ|² = λ1⁴ ⟺ (1 − 2b)/16 = (3778 + 882√17)/262144 ⟺ b* = (6303 −
+///   441√17)/16384 ≈ 0.273725, the smaller root of 16384 b² − 12606 b +
+///   2223 (irreducible: discriminant 882²·17). |μ| falls as b grows:
+///   unbounded on [0, b*), bounded at b*, zero on (b*, 2/5]; C¹ on all of
+///   [0, 2/5] (|μ|² ≤ 1/16 < λ1²).
+///
+/// Before, the classes' ends were floating point (the modulus resultant
+/// against λ1's block vanished identically: 1/8 · 1/32 = (1/16)², and
+/// |μ| = λ1² for non-real μ was not followed at all) and put the end at
+/// 1/4. The end is re-checked with `subdlab curvature` 1e-6 on each side.
+#[test]
+fn curvature_classes_with_a_complex_mu_are_exact() {
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/catmull-clark-complex-centre.toml");
+    let v = json(&["sweep", file, "--valences", "3..3", "--param", "b=0:2/5:1/10", "--exact", "--curvature", "--json"]);
+    let set = &v["valences"][0];
+    assert_eq!(set["exact"], true, "{}", set["not_exact_because"]);
+    let c = &set["curvature"];
+    assert_eq!(c["exact"], true, "{}", c["not_exact_because"]);
+    assert!(c["undecided"].as_array().unwrap().is_empty(), "{}", c["undecided"]);
+    // a piece has a non-real eigenvalue, so the exactness above rests on the
+    // modulus family (not on an all-real spectrum)
+    let decisions = set["decisions"].as_array().unwrap();
+    assert!(decisions.iter().any(|d| d["all_real"] == false), "no piece with a complex pair");
+    for key in ["convergent", "c1_spectral"] {
+        let i = set[key].as_array().unwrap();
+        assert_eq!(i.len(), 1, "{key}");
+        assert_eq!((i[0]["from"]["rational"].as_str(), i[0]["to"]["rational"].as_str()), (Some("0"), Some("2/5")));
+    }
+    // b* as the root of m = 16384 b² − 12606 b + 2223 (made monic for rem)
+    let m: P = vec![rat("2223/16384"), rat("-12606/16384"), rat("1")];
+    let b_star = (6303.0 - 441.0 * 17f64.sqrt()) / 16384.0;
+    let is_b_star = |e: &serde_json::Value, what: &str| {
+        assert!(e["rational"].is_null(), "{what}: {e}");
+        let p: P = e["polynomial"].as_array().unwrap().iter().map(|x| rat(x.as_str().unwrap())).collect();
+        assert!(rem(&p, &m).is_empty(), "{what}: {e} does not vanish at b*");
+        let iv = e["isolating_interval"].as_array().unwrap();
+        let (lo, hi) = (rat(iv[0].as_str().unwrap()), rat(iv[1].as_str().unwrap()));
+        let (lo, hi) = (num_traits::ToPrimitive::to_f64(&lo).unwrap(), num_traits::ToPrimitive::to_f64(&hi).unwrap());
+        assert!(lo <= b_star + 1e-14 && b_star - 1e-14 <= hi, "{what}: ({lo}, {hi}) misses {b_star}");
+        // the other root of m (≈ 0.4957) is outside [0, 2/5], so b* is the one
+    };
+    let one = |key: &str| -> serde_json::Value {
+        let list = c[key].as_array().unwrap();
+        assert_eq!(list.len(), 1, "{key}: {list:?}");
+        list[0].clone()
+    };
+    let (u, b, z) = (one("unbounded"), one("bounded"), one("zero"));
+    assert_eq!(u["from"]["rational"], "0");
+    assert_eq!((u["from_closed"].as_bool(), u["to_closed"].as_bool()), (Some(true), Some(false)));
+    is_b_star(&u["to"], "unbounded to");
+    assert_eq!((b["from_closed"].as_bool(), b["to_closed"].as_bool()), (Some(true), Some(true)));
+    is_b_star(&b["from"], "bounded from");
+    is_b_star(&b["to"], "bounded to");
+    assert_eq!((z["from_closed"].as_bool(), z["to_closed"].as_bool()), (Some(false), Some(true)));
+    is_b_star(&z["from"], "zero from");
+    assert_eq!(z["to"]["rational"], "2/5");
+    for i in [&u, &b, &z] {
+        assert_eq!(i["endpoints_exact"], true);
+    }
+    // b* is a root of the non-real |μ| = λ1² family
+    let squares = c["square_candidates"].as_array().unwrap();
+    assert!(squares.iter().any(|e| (e["decimal"].as_f64().unwrap() - b_star).abs() < 1e-12), "{squares:?}");
+    // the floating-point analysis 1e-6 on each side, and at the old end 1/4
+    let class_at = |b: f64| -> String {
+        let c = json(&["curvature", file, "-n", "3", "--param", &format!("b={b:.12}"), "--json", "--no-exact"]);
+        c["class"].as_str().unwrap().to_string()
+    };
+    assert_eq!(class_at(b_star - 1e-6), "unbounded");
+    assert_eq!(class_at(b_star + 1e-6), "zero");
+    assert_eq!(class_at(0.26), "unbounded");
+}

@@ -264,6 +264,10 @@ fn sweep_exact(args: &SweepArgs) -> Result<(), Error> {
                 text.push_str(&format!("  NOT PROVED EXACT: {why}\n"));
             }
         }
+        // the curvature sets' own reasons (the first-order sets above stay exact)
+        for why in v.curvature.iter().flat_map(|c| &c.not_exact_because) {
+            text.push_str(&format!("  curvature sets NOT PROVED EXACT: {why}\n"));
+        }
     }
     text.push_str(&format!("({seconds:.2} s)\n"));
     out_text(&text)

@@ -127,6 +127,12 @@ pub struct CurvatureSets {
     pub square_candidates: Vec<Endpoint>,
     /// candidate points whose class could not be decided (in no set)
     pub undecided: Vec<String>,
+    /// the classes' candidate set is proved complete (the first-order one
+    /// is, and |μ| = λ1² is followed for real and non-real μ)
+    pub exact: bool,
+    /// why the curvature sets are not proved exact beyond the first-order
+    /// reasons (`not_exact_because` of the valence), when they are not
+    pub not_exact_because: Vec<String>,
 }
 
 /// The exact sets at one valence.
@@ -348,6 +354,15 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
         )
     });
     let mut cands: Vec<(RealRoot, Family)> = Vec::new();
+    // one pair per Galois orbit: a conjugate pair's norm is the same
+    // polynomial, so the same candidates (`one_per_galois_orbit`)
+    let all_pairs = pairs.len();
+    let pairs = one_per_galois_orbit(pairs, |a, b, family| match family {
+        Family::Meeting => Some((b.clone(), a.clone())),
+        Family::Opposite => Some((negated(b), negated(a))),
+        _ => None,
+    });
+    trace(|| format!("n = {n}: {} pairs, {} up to conjugation", all_pairs, pairs.len()));
     for (a, b, family) in &pairs {
         let r = first_subresultant(a, b)?;
         trace(|| {
@@ -370,25 +385,47 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
     }
     // the modulus family: where a non-real root u of a block has |u| = λ1
     // (C¹) or |u| = 1 (convergence) — `modulus`; only where the block
-    // polynomials are real (else the sweep is not exact anyway)
+    // polynomials are real (else the sweep is not exact anyway). With
+    // `--curvature`, the same family against λ1's root-squared polynomial
+    // (roots y²): |u| = λ1², u·ū = λ1⁴, where the class of a non-real μ
+    // can change (`curvature`, "non-real μ").
     let mut moduli_followed = not_exact.is_empty();
     let mut moduli_not_followed_because: Option<String> = None;
+    let mut square_moduli_not_followed_because: Option<String> = None;
     if moduli_followed {
         let one_minus_x: BiPoly = vec![TPoly::int(-1), TPoly::int(1)];
-        let targets: Vec<&BiPoly> = lambda_polys.iter().chain(std::iter::once(&one_minus_x)).collect();
-        'family: for p in &polys {
-            for target in &targets {
+        let mut targets: Vec<(BiPoly, Family)> = lambda_polys.iter().map(|l| (l.clone(), Family::Modulus)).collect();
+        targets.push((one_minus_x, Family::Modulus));
+        if s.curvature {
+            targets.extend(lambda_polys.iter().map(|l| (curvature::root_squared(l), Family::ModulusSquare)));
+        }
+        // (block outer, target inner: the order the candidates were always
+        // found in, so a merged end keeps the same defining polynomial),
+        // one pair per Galois orbit as for the first-order pairs
+        let modulus_pairs: Vec<(BiPoly, BiPoly, Family)> = polys
+            .iter()
+            .flat_map(|p| targets.iter().map(move |(target, family)| (p.clone(), target.clone(), *family)))
+            .collect();
+        let all_modulus_pairs = modulus_pairs.len();
+        // (a block against a target: no reading the other way round)
+        let modulus_pairs = one_per_galois_orbit(modulus_pairs, |_, _, _| None);
+        trace(|| format!("n = {n}: {all_modulus_pairs} modulus pairs, {} up to conjugation", modulus_pairs.len()));
+        'family: for (p, target, family) in &modulus_pairs {
+            {
+                if *family == Family::ModulusSquare && square_moduli_not_followed_because.is_some() {
+                    continue;
+                }
                 // rational coefficients: the family in Q[t]; Q(ζ_N) ones
                 // (n = 5, 7): its norm over the pair's conjugates
-                let family = match modulus::rational_coefficients(p).and(modulus::rational_coefficients(target)) {
+                let found = match modulus::rational_coefficients(p).and(modulus::rational_coefficients(target)) {
                     Some(_) => modulus::crossings(p, target),
                     None => modulus::crossings_cyclotomic(p, target, &distinct_conjugates(p, target)),
                 };
-                match family {
+                match found {
                     Ok(modulus::Crossings::Resultant(r)) => {
                         trace(|| {
                             format!(
-                                "n = {n}: modulus pair ({}, {}): resultant of degree {}",
+                                "n = {n}: modulus pair ({}, {}, {family:?}): resultant of degree {}",
                                 p.len() - 1,
                                 target.len() - 1,
                                 r.degree()
@@ -398,10 +435,15 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
                             continue;
                         }
                         for root in sturm::isolate(&r, &s.lo, &s.hi) {
-                            cands.push((root, Family::Modulus));
+                            cands.push((root, *family));
                         }
                     }
                     Ok(modulus::Crossings::Nothing) => {}
+                    Err(why) if *family == Family::ModulusSquare => {
+                        // the curvature sets alone lose exactness, and
+                        // only where a piece has a non-real eigenvalue
+                        square_moduli_not_followed_because = Some(why);
+                    }
                     Err(why) => {
                         // matters only where a piece has a non-real
                         // eigenvalue (below): all-real sets stay exact
@@ -442,7 +484,9 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
         c.recognise_rational();
     }
     merged.sort_by(|a, b| a.0.mid().cmp(&b.0.mid()));
-    let square_family: Vec<bool> = merged.iter().map(|(_, f)| f.contains(&Family::Square)).collect();
+    // |μ| = λ1² can hold at these: |x| = y² for a real x, or u·ū = y⁴
+    let square_family: Vec<bool> =
+        merged.iter().map(|(_, f)| f.contains(&Family::Square) || f.contains(&Family::ModulusSquare)).collect();
     let merged: Vec<RealRoot> = merged.into_iter().map(|(c, _)| c).collect();
     trace(|| format!("n = {n}: {} candidates", merged.len()));
     // sample points of the open pieces
@@ -456,26 +500,37 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
     // decide: pieces, range ends, candidates
     let mut decisions = Vec::new();
     let mut piece = Vec::new();
+    // reasons the curvature sets alone are not proved exact
+    let mut curvature_not_exact: Vec<String> = Vec::new();
     for t in &samples {
         let mut d = decide(s, n, t)?;
         d.kind = "piece";
         d.all_real = Some(all_real(&polys, t));
-        if d.all_real == Some(false) && (!moduli_followed || s.curvature) {
+        if d.all_real == Some(false) {
             // with the modulus family the first-order candidates cover
-            // complex pairs; the curvature classes' |μ| = λ1² for a
-            // non-real μ is not followed
-            let what = if moduli_followed {
-                "|μ| = λ1² for non-real μ (curvature classes) is not followed".to_string()
-            } else {
-                match &moduli_not_followed_because {
+            // complex pairs, and with its square targets the curvature
+            // classes' |μ| = λ1² for a non-real μ
+            if !moduli_followed {
+                let what = match &moduli_not_followed_because {
                     Some(why) => format!("moduli of complex pairs are not followed ({why})"),
                     None => "moduli of complex pairs are not followed".to_string(),
+                };
+                let why = format!(
+                    "a non-real eigenvalue at {} = {t}: {what}, so the pieces' ends are not proved exact",
+                    s.param
+                );
+                if !not_exact.contains(&why) {
+                    not_exact.push(why);
                 }
-            };
-            let why =
-                format!("a non-real eigenvalue at {} = {t}: {what}, so the pieces' ends are not proved exact", s.param);
-            if !not_exact.contains(&why) {
-                not_exact.push(why);
+            } else if let (true, Some(because)) = (s.curvature, &square_moduli_not_followed_because) {
+                let why = format!(
+                    "a non-real eigenvalue at {} = {t}: |μ| = λ1² for non-real μ is not followed ({because}), so the \
+                     curvature sets' ends are not proved exact (the first-order sets' are)",
+                    s.param
+                );
+                if !curvature_not_exact.contains(&why) {
+                    curvature_not_exact.push(why);
+                }
             }
         }
         piece.push(d.clone());
@@ -553,7 +608,11 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
     }
     trace(|| format!("n = {n}: decided"));
     let exact = not_exact.is_empty();
-    let sets = |pick: &dyn Fn(&Decision) -> bool, evidence_of: &dyn Fn(&Decision) -> &str| -> Vec<ExactInterval> {
+    let curvature_exact = exact && curvature_not_exact.is_empty();
+    let sets = |pick: &dyn Fn(&Decision) -> bool,
+                evidence_of: &dyn Fn(&Decision) -> &str,
+                exact: bool|
+     -> Vec<ExactInterval> {
         // the sequence lo, piece 0, cand 0, piece 1, ..., piece k, hi
         let mut seq: Vec<(Option<&RealRoot>, &Decision)> = Vec::new();
         seq.push((Some(&fences[0]), &at_lo));
@@ -606,11 +665,12 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
     fn class_evidence(d: &Decision) -> &str {
         d.curvature_evidence.as_deref().unwrap_or("floating point")
     }
-    let convergent = sets(&|d| d.convergent, &first_order);
-    let c1_spectral = sets(&|d| d.c1_spectral, &first_order);
+    let convergent = sets(&|d| d.convergent, &first_order, exact);
+    let c1_spectral = sets(&|d| d.c1_spectral, &first_order, exact);
     let curvature = s.curvature.then(|| {
-        let class_set =
-            |class: CurvatureClass| sets(&move |d: &Decision| d.curvature_class == Some(class), &class_evidence);
+        let class_set = |class: CurvatureClass| {
+            sets(&move |d: &Decision| d.curvature_class == Some(class), &class_evidence, curvature_exact)
+        };
         CurvatureSets {
             zero: class_set(CurvatureClass::Zero),
             bounded: class_set(CurvatureClass::Bounded),
@@ -622,6 +682,8 @@ fn valence(s: &ExactSweep, n: usize) -> Result<ValenceSets, Error> {
                 .map(|(c, _)| endpoint(c))
                 .collect(),
             undecided: undecided.clone(),
+            exact: curvature_exact,
+            not_exact_because: curvature_not_exact.clone(),
         }
     });
     Ok(ValenceSets {
@@ -653,6 +715,9 @@ enum Family {
     /// |u| = λ1 or |u| = 1 for a non-real root u (a complex pair's modulus
     /// crosses; `modulus`)
     Modulus,
+    /// |u| = λ1² for a non-real root u: u·ū = y⁴, the modulus family
+    /// against λ1's root-squared block polynomial (`--curvature`)
+    ModulusSquare,
 }
 
 /// The weakest evidence of several: floating point < certified < exact.
@@ -1004,6 +1069,56 @@ pub(crate) fn distinct_conjugates(a: &BiPoly, b: &BiPoly) -> Vec<u64> {
         }
     }
     out
+}
+
+/// The pairs (A, B, kind) with one representative per Galois orbit, in
+/// their first order.
+///
+/// Why it is enough: for σ_c (ζ_N ↦ ζ_N^c, c coprime to N) and the pair
+/// Q = σ_c(P), the conjugates of Q are σ_a σ_c(P) = σ_b(P): the same set
+/// as P's (the σ form a group). The subresultant of Q is σ_c of P's (σ_c
+/// is a field automorphism, so the first nonzero psc_j has the same j),
+/// and the modulus resultant likewise (its reductions are canonical,
+/// `modulus`, step 4 of "The exact sweep: speed"). Both are replaced by
+/// their norm — the product over the distinct conjugates — so Q's norm is
+/// P's up to a constant factor: the same real roots, the same candidates.
+/// At n = 5 the blocks' polynomials P_1 and P_2 are exchanged by σ_2
+/// (σ_a(B_m) = B_{am}), so (P_0, P_2) is (P_0, P_1)'s conjugate, (P_2, P_2′)
+/// is (P_1, P_1′)'s, (P_2, x − 1) is (P_1, x − 1)'s. Pairs are compared as
+/// they are ordered (A, B): (P_1, P_2) and (P_2, P_1) are kept both (their
+/// polynomials are not conjugate as ordered pairs, only up to a sign).
+///
+/// `swapped` gives, for the kinds whose pair can be read the other way
+/// round with the same candidates, that reading: (B, A) for two branches
+/// meeting (psc_j(B, A) = ±psc_j(A, B)), (B(−x), A(−x)) for a branch
+/// meeting another's negative, stored as (A(x), B(−x)) (the common roots
+/// negated: psc_j of f(−x), g(−x) is ±psc_j of f, g). With it the orbit of
+/// (P_1, P_2) at n = 7 (σ_3: P_1 → P_3 → P_2 → P_1) also holds (P_1, P_3)
+/// and (P_2, P_3): their norms agree up to sign.
+fn one_per_galois_orbit<K: PartialEq + Copy>(
+    pairs: Vec<(BiPoly, BiPoly, K)>,
+    swapped: impl Fn(&BiPoly, &BiPoly, K) -> Option<(BiPoly, BiPoly)>,
+) -> Vec<(BiPoly, BiPoly, K)> {
+    let conj = |p: &BiPoly, a: u64| -> BiPoly {
+        p.iter().map(|c| TPoly::from_coeffs(c.coeffs().iter().map(|x| conjugate(x, a)).collect())).collect()
+    };
+    let mut kept: Vec<(BiPoly, BiPoly, K)> = Vec::new();
+    for (a, b, kind) in pairs {
+        let conjugates = distinct_conjugates(&a, &b);
+        // σ_1 is the pair itself: an exact repeat is dropped too
+        let readings: Vec<(BiPoly, BiPoly)> =
+            std::iter::once((a.clone(), b.clone())).chain(swapped(&a, &b, kind)).collect();
+        let seen = conjugates.iter().any(|&s| {
+            readings.iter().any(|(x, y)| {
+                let (ca, cb) = if s == 1 { (x.clone(), y.clone()) } else { (conj(x, s), conj(y, s)) };
+                kept.iter().any(|(ka, kb, kk)| *kk == kind && *ka == ca && *kb == cb)
+            })
+        });
+        if !seen {
+            kept.push((a, b, kind));
+        }
+    }
+    kept
 }
 
 /// σ_a(c): ζ_N ↦ ζ_N^a on an element of order dividing N (a coprime to N).

@@ -12,12 +12,16 @@
 //! - the order of the eigenvalues' moduli or their multiplicities change —
 //!   the candidates the exact sweep already has (branches meeting, or
 //!   meeting each other's negatives);
-//! - |x(t)| = y(t)² for a root x of some block polynomial P_a and a root y
-//!   of the polynomial of λ1's block: x = y² or −x = y², i.e. a common
-//!   root of P_a(±x) and the root-squared polynomial G(P)(x) = (−1)^d
-//!   P(√x) P(−√x) (Graeffe's transform: its roots are the squares of P's).
-//!   These pairs go through the same first-non-vanishing principal
-//!   subresultant machinery as the others ([`square_pairs`]).
+//! - |x(t)| = y(t)² for a real root x of some block polynomial P_a and a
+//!   root y of the polynomial of λ1's block: x = y² or −x = y², i.e. a
+//!   common root of P_a(±x) and the root-squared polynomial G(P)(x) =
+//!   (−1)^d P(√x) P(−√x) (Graeffe's transform: its roots are the squares
+//!   of P's). These pairs go through the same first-non-vanishing
+//!   principal subresultant machinery as the others ([`square_pairs`]).
+//! - |u(t)| = y(t)² for a non-real root u: u·ū = y⁴, the modulus family
+//!   (`modulus`) with the target G(P) (roots y², so its own root-squared
+//!   polynomial has the roots y⁴) — the exact sweep adds these targets
+//!   with `--curvature`.
 //!
 //! Every open piece between the candidates is decided at one rational
 //! point by the ordinary second-order analysis (`curvature::curvature`,
@@ -29,11 +33,11 @@
 //! a root of the |x| = y² family above, where such an equality can happen —
 //! otherwise the point is left undecided and named.
 //!
-//! Assumptions (stated in the output's `not_exact_because` when they cannot
-//! be checked): the moduli are followed only for real eigenvalues (as for
-//! the first-order sets), and which eigenfunctions vanish on the ring is
-//! constant on each open piece (it is decided in floating point at the
-//! piece's point).
+//! Assumptions: which eigenfunctions vanish on the ring is constant on each
+//! open piece (it is decided in floating point at the piece's point). Where
+//! the non-real family cannot be followed (its resultant vanishes
+//! identically) and a piece has a non-real eigenvalue, the curvature sets'
+//! `not_exact_because` says so.
 
 use crate::curvature::{curvature, CurvatureClass, CurvatureOptions, Evidence, EIG_TOL};
 use crate::error::Error;

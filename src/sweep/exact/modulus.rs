@@ -90,7 +90,7 @@ fn qt_add_scaled(a: &QT, b: &QT, c: &Rational) -> QT {
 
 /// Divide out roots of p constant in t at 0, 1 and −1 (as often as they
 /// divide): real for every t, they are never one of a non-real pair.
-fn without_constant_roots(mut p: Vec<QT>) -> Vec<QT> {
+fn without_unit_roots(mut p: Vec<QT>) -> Vec<QT> {
     for c in [0i64, 1, -1] {
         let c = Rational::from_integer(c.into());
         loop {
@@ -113,6 +113,46 @@ fn without_constant_roots(mut p: Vec<QT>) -> Vec<QT> {
         }
     }
     p
+}
+
+/// Whether every root of the nonzero f (over Q) is real: its square-free
+/// part has as many real roots as its degree (Sturm count).
+pub(crate) fn all_roots_real(f: &Poly) -> bool {
+    let sq = crate::numeric::sturm::squarefree(f);
+    if sq.degree() == 0 {
+        return true;
+    }
+    let bound = crate::numeric::sturm::root_bound(&sq);
+    let chain = crate::numeric::sturm::sturm_chain(&sq);
+    crate::numeric::sturm::count_roots(&chain, &-bound.clone(), &bound) == sq.degree()
+}
+
+/// Divide out the factor of p constant in t, when all its roots are real:
+/// a real root is never one of a non-real pair, so the crossings are
+/// unchanged. Why: P = Σ_k t^k P_k(x), and f(x) divides P for every t iff
+/// it divides every P_k, so f = gcd_k P_k is the largest such factor. Two
+/// constant roots a, b of the block and c of the target with a·b = c² make
+/// Res(E, G) vanish identically (Catmull–Clark's outer eigenvalues 1/8 ·
+/// 1/32 = (1/16)²) — the family would be lost for nothing. A constant
+/// factor with non-real roots is kept (a constant pair can still cross a
+/// moving target), and then only 0, ±1 are divided out, as always.
+fn without_constant_roots(p: Vec<QT>) -> Vec<QT> {
+    let t_len = p.iter().map(Vec::len).max().unwrap_or(0);
+    let f = (0..t_len)
+        .map(|k| Poly {
+            coeffs: p.iter().map(|c| c.get(k).cloned().unwrap_or_else(<Rational as Zero>::zero)).collect(),
+        })
+        .filter(|slice| !slice.is_zero())
+        .fold(None, |g: Option<Poly>, slice| Some(g.map_or_else(|| slice.gcd(&slice), |g| g.gcd(&slice))));
+    match f {
+        Some(f) if f.degree() >= 1 && all_roots_real(&f) => {
+            // f is monic (Poly::gcd) and holds every constant root with its
+            // multiplicity (f² | P for all t would make f² | gcd_k P_k = f)
+            let h: Vec<QT> = f.coeffs.iter().map(|c| vec![c.clone()]).collect();
+            divide_exactly(&p, &h).unwrap_or_else(|| without_unit_roots(p))
+        }
+        _ => without_unit_roots(p),
+    }
 }
 
 fn qt_mul(a: &QT, b: &QT) -> QT {
@@ -567,8 +607,30 @@ fn k_interpolate(x: &[Rational], y: &[Cyclotomic]) -> KT {
     out
 }
 
-/// Constant roots 0, 1, −1 divided out (as `without_constant_roots`).
-fn k_without_constant_roots(mut p: Vec<KT>) -> Vec<KT> {
+/// The factor constant in t divided out when it has rational coefficients
+/// and its roots are all real (as `without_constant_roots`: f = gcd_k P_k
+/// over Q(ζ), monic), else 0, ±1 only.
+fn k_without_constant_roots(p: Vec<KT>) -> Vec<KT> {
+    let t_len = p.iter().map(Vec::len).max().unwrap_or(0);
+    let f = (0..t_len)
+        .map(|k| kt_trim(p.iter().map(|c| c.get(k).cloned().unwrap_or_else(kzero)).collect()))
+        .filter(|slice| !slice.is_empty())
+        .fold(None, |g: Option<Vec<Cyclotomic>>, slice| Some(g.map_or_else(|| k_gcd(&slice, &[]), |g| k_gcd(&g, &slice))));
+    if let Some(f) = f.filter(|f| f.len() >= 2) {
+        let rational: Option<Vec<Rational>> = f.iter().map(Cyclotomic::to_rational).collect();
+        let real = rational.is_some_and(|coeffs| all_roots_real(&Poly { coeffs }));
+        if real {
+            let h: Vec<KT> = f.iter().map(|c| kt_trim(vec![c.clone()])).collect();
+            if let Some(q) = k_divide_exactly(&p, &h) {
+                return q;
+            }
+        }
+    }
+    k_without_unit_roots(p)
+}
+
+/// Constant roots 0, 1, −1 divided out (as `without_unit_roots`).
+fn k_without_unit_roots(mut p: Vec<KT>) -> Vec<KT> {
     for c in [0i64, 1, -1] {
         let c = Cyclotomic::from_rational(&Rational::from_integer(c.into()));
         while p.len() > 1 {
@@ -880,6 +942,41 @@ mod tests {
         let target = bipoly(&[&[(0, 1), (1, 4)], &[(-1, 2), (-1, 2)], &[(1, 1)]]);
         let Crossings::Resultant(r) = crossings(&p, &target).unwrap() else { panic!("no resultant") };
         let expected = from_roots_squarefree(&[&[-1, 4], &[1, 0, 0, 4], &[0, 1], &[-4, 1], &[4, 1]]);
+        assert_eq!(monic(&crate::numeric::sturm::squarefree(&r)), monic(&expected));
+    }
+
+    #[test]
+    fn constant_real_roots_are_divided_out() {
+        // P = (x − 1/8)(x − 1/32)(x² + t) against T = (x − 1/16)(x − 1/2):
+        // the constant roots give 1/8 · 1/32 = 1/256 = (1/16)² in E and G
+        // for every t, so Res(E, G) of P itself vanishes identically
+        // (Catmull–Clark's outer eigenvalues do this). Without the constant
+        // factor (1/8, 1/32 real): E = s − t (the pair ±i√t, |u|² = t), G =
+        // (s − 1/256)(s − 1/4), Res ∝ (t − 1/256)(t − 1/4): |u| = 1/16 and
+        // |u| = 1/2.
+        // (x − 1/8)(x − 1/32) = x² − (5/32) x + 1/256; times (x² + t):
+        // x⁴ − (5/32) x³ + (1/256 + t) x² − (5t/32) x + t/256
+        let p = bipoly(&[&[(0, 1), (1, 256)], &[(0, 1), (-5, 32)], &[(1, 256), (1, 1)], &[(-5, 32)], &[(1, 1)]]);
+        // (x − 1/16)(x − 1/2) = x² − (9/16) x + 1/32
+        let target = bipoly(&[&[(1, 32)], &[(-9, 16)], &[(1, 1)]]);
+        let Crossings::Resultant(r) = crossings(&p, &target).unwrap() else { panic!("no resultant") };
+        let expected = from_roots_squarefree(&[&[-1, 256], &[-1, 4]]);
+        assert_eq!(monic(&crate::numeric::sturm::squarefree(&r)), monic(&expected));
+    }
+
+    #[test]
+    fn a_constant_complex_pair_is_kept() {
+        // P = (x² + 1/4)(x − t): the constant pair ±i/2 has |u| = 1/2, and
+        // the target T = x − t reaches it at t = ±1/2, so the constant
+        // factor x² + 1/4 (non-real roots) must stay. E has roots
+        // (i/2)(−i/2) = 1/4 and ±(i/2)t: E = (s − 1/4)(s² + t²/4); G =
+        // s − t²; Res = E(t²) = (t² − 1/4)(t⁴ + t²/4) = (t² − 1/4) t² (t² +
+        // 1/4), square-free ∝ (4t² − 1) t (4t² + 1).
+        // (x² + 1/4)(x − t) = x³ − t x² + x/4 − t/4
+        let p = bipoly(&[&[(0, 1), (-1, 4)], &[(1, 4)], &[(0, 1), (-1, 1)], &[(1, 1)]]);
+        let target = bipoly(&[&[(0, 1), (-1, 1)], &[(1, 1)]]);
+        let Crossings::Resultant(r) = crossings(&p, &target).unwrap() else { panic!("no resultant") };
+        let expected = from_roots_squarefree(&[&[-1, 0, 4], &[0, 1], &[1, 0, 4]]);
         assert_eq!(monic(&crate::numeric::sturm::squarefree(&r)), monic(&expected));
     }
 
