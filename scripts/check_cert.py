@@ -2127,14 +2127,9 @@ class Checker:
             for j in (i, (i + 1) % k):
                 if not Fraction(d[j][0]) * wp[i][0] + Fraction(d[j][1]) * wp[i][1] > 0:
                     reject(f"winding: polygon point w_{i} is not in the half-plane H_{j}")
-        number = 0
-        for i in range(k):
-            (ax, ay), (bx, by) = wp[i], wp[(i + 1) % k]
-            cross = ax * by - ay * bx
-            if ay <= 0 < by and cross > 0:
-                number += 1
-            elif by <= 0 < ay and cross < 0:
-                number -= 1
+        number = winding_about_centre(wp)
+        if number is None:
+            reject("winding: an edge of the polygon passes through the centre")
         claimed = get(w, "number", what)
         if claimed != number:
             reject(f"winding: the polygon winds {number} time(s) about the centre, the document claims {claimed!r}")
@@ -2438,25 +2433,37 @@ class Checker:
                     reject(f"a point of arc {i}'s window is not proved in its half-plane d_{i}·p > 0")
         sigma = lambda w: tuple(-c if j == normal else c for j, c in enumerate(w))
         doubled = poly + [sigma(poly[i]) for i in range(m - 1, 0, -1)]
-        number = 0
-        for i in range(len(doubled)):
-            (ax, ay), (bx, by) = doubled[i], doubled[(i + 1) % len(doubled)]
-            up, down = ay <= 0 < by, by <= 0 < ay
-            if not (up or down):
-                continue
-            cross = ax * by - ay * bx
-            if cross == 0:
-                reject("an edge of the doubled polygon passes through the centre")
-            if up and cross > 0:
-                number += 1
-            elif down and cross < 0:
-                number -= 1
+        number = winding_about_centre(doubled)
+        if number is None:
+            reject("an edge of the doubled polygon passes through the centre")
         claimed = get(chain, "number", what)
         if claimed != number:
             reject(f"the doubled polygon winds {number} time(s) about the centre, the document claims {claimed!r}")
         self.ok(f"B6: the chain's {m} windows in their half-planes, each w_i in the half-planes beside it, the ends on "
                 f"the line; the polygon doubled here by the mirror winds {number} time(s), counted exactly")
         return number
+
+
+def winding_about_centre(poly):
+    """The winding number of the closed polygon `poly` (exact coordinates)
+    about the origin, by signed crossings of the positive x-axis (an edge
+    from y <= 0 to y > 0 counts +1 where it crosses at x > 0, the reverse
+    -1); None when an edge that crosses the axis passes through the origin,
+    where the number is not defined."""
+    number = 0
+    for i in range(len(poly)):
+        (ax, ay), (bx, by) = poly[i], poly[(i + 1) % len(poly)]
+        up, down = ay <= 0 < by, by <= 0 < ay
+        if not (up or down):
+            continue
+        cross = ax * by - ay * bx
+        if cross == 0:
+            return None
+        if up and cross > 0:
+            number += 1
+        elif down and cross < 0:
+            number -= 1
+    return number
 
 
 # The non-box S_3^1 window (subdlab's lemma C3′), re-derived from the lattice

@@ -546,12 +546,7 @@ pub fn charmap_part(scheme: &dyn Scheme, analysis: &Analysis, cert: &CharMapCert
         "regular_part": cert.regular_part,
         "levels": e.levels,
         "eigenvector": { "block": 1, "disc": e.lambda1_row },
-        "points": {
-            "level0": n0,
-            "note": "points 0..level0 are the analysis points by matrix index; point level0 + k is stencil k \
-                     over earlier points (creation order across the refinement levels)",
-            "stencils": stencils,
-        },
+        "points": points_json(n0, stencils),
         "faces": faces,
         "winding": winding,
         "trusted": [
@@ -737,12 +732,7 @@ pub fn sector_part(
         "normal": if e.normal == 0 { "lambda1" } else { "lambda2" },
         "eigenvectors": eigenvectors,
         "curve": e.curve,
-        "points": {
-            "level0": n0,
-            "note": "points 0..level0 are the analysis points by matrix index; point level0 + k is stencil k \
-                     over earlier points (creation order across the refinement levels)",
-            "stencils": stencils,
-        },
+        "points": points_json(n0, stencils),
         "faces": faces,
         "chain": {
             "vertices": chain_vertices,
@@ -798,4 +788,15 @@ pub fn write_tagged_charmap(
         Err(why) => omitted(why),
     };
     write(path, &doc)
+}
+
+/// The refined net's points as both documents (interior and sector map)
+/// write them: the analysis points, then each stencil over earlier points.
+fn points_json(level0: usize, stencils: impl serde::Serialize) -> Value {
+    json!({
+        "level0": level0,
+        "note": "points 0..level0 are the analysis points by matrix index; point level0 + k is stencil k over \
+                 earlier points (creation order across the refinement levels)",
+        "stencils": stencils,
+    })
 }

@@ -615,7 +615,9 @@ fn k_without_constant_roots(p: Vec<KT>) -> Vec<KT> {
     let f = (0..t_len)
         .map(|k| kt_trim(p.iter().map(|c| c.get(k).cloned().unwrap_or_else(kzero)).collect()))
         .filter(|slice| !slice.is_empty())
-        .fold(None, |g: Option<Vec<Cyclotomic>>, slice| Some(g.map_or_else(|| k_gcd(&slice, &[]), |g| k_gcd(&g, &slice))));
+        .fold(None, |g: Option<Vec<Cyclotomic>>, slice| {
+            Some(g.map_or_else(|| k_gcd(&slice, &[]), |g| k_gcd(&g, &slice)))
+        });
     if let Some(f) = f.filter(|f| f.len() >= 2) {
         let rational: Option<Vec<Rational>> = f.iter().map(Cyclotomic::to_rational).collect();
         let real = rational.is_some_and(|coeffs| all_roots_real(&Poly { coeffs }));
