@@ -283,3 +283,81 @@ fn a_vertex_rule_that_is_no_box_splines_is_not_proved() {
         assert!(matches!(c.c1, Verdict::NotProved(_)), "n = {n}");
     }
 }
+
+/// The net of a certificate's first try (two analysis steps; the points are
+/// placeholders, the faces and flags do not depend on them), its ring
+/// (outer, not inner) and the rotation period.
+fn ring_net(name: &str, n: usize) -> (subdlab::charmap::net::Net<[f64; 2]>, Vec<usize>, usize) {
+    let scheme = schemes::resolve(name, &[]).unwrap();
+    let config = Configuration::regular(scheme.as_ref(), n).unwrap();
+    let analysis = analyse(scheme.as_ref(), &config, &Options::default()).unwrap();
+    let d = &analysis.discovered;
+    let level0 = vec![Some([0.0, 0.0]); d.patch.num_vertices()];
+    let net = subdlab::charmap::net::refine_net_exactly_as::<f64, [f64; 2]>(scheme.as_ref(), d, level0, 2).unwrap();
+    let ring: Vec<usize> = (0..net.mesh.num_faces()).filter(|&f| net.outer[f] && !net.inner[f]).collect();
+    (net, ring, config.rotation_period(scheme.as_ref()))
+}
+
+/// The image of face f under the rotation by `period` sectors, rebuilt here
+/// from the net's lattice chart (sector s + period, same coordinates) and
+/// the half-edge of its first two turned corners.
+fn turned_face(net: &subdlab::charmap::net::Net<[f64; 2]>, period: usize, f: usize) -> usize {
+    let chart = net.mesh.chart.as_ref().expect("the net keeps its chart");
+    let n = chart.sectors();
+    let turn = |v: usize| {
+        let c = chart.vertex_coords[v];
+        let to = subdlab::mesh::LatticeCoord { sector: (c.sector + period) % n, ..c };
+        chart.vertex_coords.iter().position(|&x| x == to).expect("the turned point is in the net")
+    };
+    let face = net.mesh.face(f);
+    net.mesh.half_edge(turn(face[0]), turn(face[1])).expect("the turned edge is in the net").0
+}
+
+/// `certify::window_orbits`: the ring's faces fall into orbits of g = n /
+/// period faces (every sector of a regular configuration is alike), and
+/// each orbit holds exactly one face whose window the rule check keeps.
+#[test]
+fn every_orbit_of_ring_faces_has_exactly_one_checked_window() {
+    use subdlab::certify::window_orbits::representatives;
+    for (name, n) in [("catmull-clark", 5), ("loop", 7), ("doo-sabin", 6), ("tps", 4), ("catmull-clark", 3)] {
+        let (net, ring, period) = ring_net(name, n);
+        let reps = representatives(&net, &ring, period);
+        let g = n / period;
+        assert_eq!(reps.len() * g, ring.len(), "{name} n = {n}: {} of {} faces", reps.len(), ring.len());
+        let kept: std::collections::HashSet<usize> = reps.iter().map(|&i| ring[i]).collect();
+        for &f in &ring {
+            let mut orbit = vec![f];
+            while orbit.len() < g {
+                orbit.push(turned_face(&net, period, *orbit.last().unwrap()));
+            }
+            assert_eq!(turned_face(&net, period, orbit[g - 1]), f, "{name} n = {n}: g turns close the orbit");
+            let met = orbit.iter().filter(|h| kept.contains(h)).count();
+            assert_eq!(met, 1, "{name} n = {n}: the orbit of face {f} holds {met} checked windows");
+        }
+    }
+}
+
+/// Data the rotation does not carry turn the reduction off: every window is
+/// checked.
+#[test]
+fn data_the_rotation_does_not_keep_turn_the_one_orbit_check_off() {
+    use subdlab::certify::window_orbits::representatives;
+    let (mut net, ring, period) = ring_net("catmull-clark", 5);
+    assert!(representatives(&net, &ring, period).len() < ring.len());
+    // one vertex's parameter differs from its images'
+    let mut params = vec![0.5; net.mesh.num_vertices()];
+    params[net.mesh.face(ring[0])[0]] = 0.25;
+    net.mesh.vertex_params = Some(params);
+    assert_eq!(representatives(&net, &ring, period).len(), ring.len(), "an asymmetric per-vertex parameter");
+    // the same parameter everywhere keeps the symmetry
+    net.mesh.vertex_params = Some(vec![0.5; net.mesh.num_vertices()]);
+    assert!(representatives(&net, &ring, period).len() < ring.len());
+    // lattice directions are not carried by the rotation
+    net.mesh.vertex_params = None;
+    net.mesh.lattice_dirs = Some(vec![0; net.mesh.num_faces()]);
+    assert_eq!(representatives(&net, &ring, period).len(), ring.len(), "lattice directions");
+    // a ring flag that does not turn: the ring itself is not invariant
+    net.mesh.lattice_dirs = None;
+    net.inner[ring[0]] = true;
+    assert_eq!(representatives(&net, &ring, period).len(), ring.len(), "a ring that does not turn");
+}
