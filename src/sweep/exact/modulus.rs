@@ -539,7 +539,7 @@ pub(crate) fn crossings(block: &BiPoly, target: &BiPoly) -> Result<Crossings, St
 // bound, so the norm's coefficients are at most M^k for k conjugates.
 
 use crate::numeric::Cyclotomic;
-use crate::sweep::exact::subresultant::{conjugate_images, ZetaPoly};
+use crate::sweep::exact::subresultant::{norm_values, ZetaPoly};
 
 /// A polynomial in t over Q(ζ), lowest first.
 type KT = Vec<Cyclotomic>;
@@ -841,18 +841,9 @@ pub(crate) fn crossings_cyclotomic(block: &BiPoly, target: &BiPoly, conjugates: 
         .ok_or("a modulus resultant of too high degree in t")?;
     let need_bits = kc as u64 * (dd * ng) as u64 * (&ra * &ra + &rb * &rb).bits() + 2;
     let lifted = from_word_values(bound, need_bits, Some(3), |p| {
-        let images = conjugate_images(&za, &zb, conjugates, order, p)?;
-        Some(
-            (0..=bound as u64)
-                .map(|t| {
-                    images.iter().fold(1u64, |acc, (pa, pb)| {
-                        let ca: Vec<u64> = pa.iter().map(|c| eval_word(c, t, p)).collect();
-                        let cb: Vec<u64> = pb.iter().map(|c| eval_word(c, t, p)).collect();
-                        mm(acc, resultant_monic(&exterior_square(&ca, p), &root_squared(&cb, p), p), p)
-                    })
-                })
-                .collect(),
-        )
+        norm_values(&za, &zb, conjugates, order, p, bound, |ca, cb| {
+            resultant_monic(&exterior_square(ca, p), &root_squared(cb, p), p)
+        })
     });
     match lifted {
         Lifted::GaveUpOnZero => {

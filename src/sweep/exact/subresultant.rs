@@ -47,7 +47,7 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
-use crate::numeric::modular::{det_word, eval_word, from_word_values, pow_mod, residue, Lifted};
+use crate::numeric::modular::{det_word, eval_word, from_word_values, mul_mod, pow_mod, residue, Lifted};
 use crate::numeric::{BiPoly, Cyclotomic, Rational, TPoly};
 
 /// An element of Z[ζ_N] as (exponent of ζ_N, integer coefficient) pairs.
@@ -137,7 +137,7 @@ pub(crate) fn embedded(p: &ZetaPoly, w: u64, order: u64, prime: u64) -> Vec<Vec<
 /// The images of two polynomials over Q(ζ_N) under the embeddings
 /// ζ_N ↦ w^c of F_p, one pair per conjugate exponent c (w a primitive N-th
 /// root of unity modulo p); None where F_p has none (p ≢ 1 mod N).
-pub(crate) fn conjugate_images(
+fn conjugate_images(
     a: &ZetaPoly,
     b: &ZetaPoly,
     conjugates: &[u64],
@@ -154,6 +154,33 @@ pub(crate) fn conjugate_images(
             .map(|&c| {
                 let wc = pow_mod(w, c, p);
                 (embedded(a, wc, order, p), embedded(b, wc, order, p))
+            })
+            .collect(),
+    )
+}
+
+/// The values at t = 0..=degree, modulo p, of the norm of `f(a, b)` over
+/// the pair's conjugates: the product over the embeddings of
+/// [`conjugate_images`] of `f` applied to the two polynomials' coefficients
+/// at t. None where F_p has no N-th root of unity.
+pub(crate) fn norm_values(
+    a: &ZetaPoly,
+    b: &ZetaPoly,
+    conjugates: &[u64],
+    order: u64,
+    p: u64,
+    degree: usize,
+    f: impl Fn(&[u64], &[u64]) -> u64,
+) -> Option<Vec<u64>> {
+    let images = conjugate_images(a, b, conjugates, order, p)?;
+    Some(
+        (0..=degree as u64)
+            .map(|t| {
+                images.iter().fold(1u64, |acc, (ia, ib)| {
+                    let ca: Vec<u64> = ia.iter().map(|c| eval_word(c, t, p)).collect();
+                    let cb: Vec<u64> = ib.iter().map(|c| eval_word(c, t, p)).collect();
+                    mul_mod(acc, f(&ca, &cb), p)
+                })
             })
             .collect(),
     )
@@ -206,18 +233,7 @@ pub(crate) fn first_nonzero_psc(
         // |coefficient| ≤ M_j^k < 2^{k·((n−j)·bits_a + (m−j)·bits_b) + 1}
         let bits = k as u64 * ((n - j) as u64 * bits_a + (m - j) as u64 * bits_b) + 1;
         let lifted = from_word_values(degree, bits, None, |p| {
-            let images = conjugate_images(&za, &zb, conjugates, order, p)?;
-            Some(
-                (0..=degree as u64)
-                    .map(|t| {
-                        images.iter().fold(1u64, |acc, (ra, rb)| {
-                            let ca: Vec<u64> = ra.iter().map(|c| eval_word(c, t, p)).collect();
-                            let cb: Vec<u64> = rb.iter().map(|c| eval_word(c, t, p)).collect();
-                            acc * psc_word(&ca, &cb, j, p) % p
-                        })
-                    })
-                    .collect(),
-            )
+            norm_values(&za, &zb, conjugates, order, p, degree, |ca, cb| psc_word(ca, cb, j, p))
         });
         match lifted {
             Lifted::Exact(c) if c.iter().all(Zero::is_zero) => continue,
