@@ -50,11 +50,15 @@ definition of S, and everything else is recomputed here.
   document's x̃, μ̃, R and Y, K(Y) recomputed here), μ inside its named
   disc; the normal coordinate's vanishing on the sharp curve (invariance
   exactly, the curve block's characteristic polynomial and a Sturm count
-  over Q); the net by the exact stencils; the ghost points 2b − p and every
-  face's det(u_i, v_j); the sharp rows on the line and monotone; the chain
-  doubled by the mirror here and its winding number counted exactly.
-  Trusted: the rules (Catmull–Clark's, the ghost-extended B-spline's over
-  the windows), the windows' layout, the covering and the chain.
+  over Q); the net by the exact stencils; per the document's host the
+  window's positions and ghost points (bicubic B-spline, Catmull–Clark:
+  4 × 4 windows, 2b − p through the ray point b; three-direction quartic
+  box spline, Loop: 12-point triangle windows, a + b − p through the
+  midpoint of the sharp edge a–b) and every face's det(u_i, v_j); the sharp
+  rows on the line and monotone; the chain doubled by the mirror here and
+  its winding number counted exactly. Trusted: the rules (the scheme's,
+  the ghost-extended host box spline's over the windows), the windows'
+  layout, the covering and the chain.
 - Lemma C9 (regular part `difference-scheme`, DifferenceLattice), from the
   document's exact mask, windows and second-difference bases alone:
   re-derived exactly (Fractions, integers) — every mask class an affine
@@ -2145,7 +2149,8 @@ class Checker:
         Krawczyk's test on the reflection blocks rebuilt from the rows (B1),
         the normal coordinate's vanishing on the sharp curve by Sturm over Q
         (B2), the net by the exact stencils in interval arithmetic with the
-        ghost points 2b − p computed here (B3), every face's Jacobian sign
+        host's ghost points (2b − p for the bicubic B-spline, a + b − p for
+        the quartic box spline) computed here (B3), every face's Jacobian sign
         from det(u_i, v_j) (B4), the tangent coordinate's monotonicity along
         the sharp rows (B5) and the doubled chain's winding number (B6)."""
         what = "sector"
@@ -2196,13 +2201,28 @@ class Checker:
         rows_seen = 0
         worst = None
         ghosts_total = 0
-        want_positions = {(x, y) for x in range(-1, 3) for y in range(-1, 3)}
+        # the host box spline of the windows (lemma B3): its lattice, the
+        # face's corners, the window's positions and the ghost rule across a
+        # sharp ray, all rebuilt here from the host's name
+        host = get(part, "host", what)
+        if host == "bicubic B-spline":
+            steps = [(1, 0), (0, 1), (-1, 0), (0, -1)]
+            corners = [(0, 0), (1, 0), (1, 1), (0, 1)]
+            want_positions = {(x, y) for x in range(-1, 3) for y in range(-1, 3)}
+        elif host == "three-direction quartic box spline":
+            # the third lattice direction is (−1, 1); the window of the face
+            # (0,0), (1,0), (0,1) is its corners and their six neighbours each
+            steps = [(1, 0), (0, 1), (-1, 1), (-1, 0), (0, -1), (1, -1)]
+            corners = [(0, 0), (1, 0), (0, 1)]
+            want_positions = {(c[0] + e[0], c[1] + e[1]) for c in corners for e in steps + [(0, 0)]}
+        else:
+            raise Malformed(f"sector: host {host!r} is neither the bicubic B-spline nor the three-direction quartic box spline")
         for f, face in enumerate(faces):
             value, net, ghosts = {}, {}, {}
             for entry in as_list(get(face, "layout", "face"), f"face {f} layout"):
                 entry = as_list(entry, f"face {f} layout entry")
-                if len(entry) not in (3, 4) or any(isinstance(v, bool) or not isinstance(v, int) for v in entry):
-                    raise Malformed(f"face {f}: a layout entry is not [x, y, point] or [x, y, b, p]")
+                if len(entry) not in (3, 4, 5) or any(isinstance(v, bool) or not isinstance(v, int) for v in entry):
+                    raise Malformed(f"face {f}: a layout entry is not [x, y, point], [x, y, b, p] or [x, y, a, b, p]")
                 pos = (entry[0], entry[1])
                 if pos in value:
                     reject(f"face {f}: position {pos} given twice")
@@ -2210,26 +2230,47 @@ class Checker:
                     q = as_int(entry[2], "window point", len(pts))
                     value[pos] = pts[q]
                     net[pos] = q
-                else:
-                    # the ghost rule across a sharp ray: 2b − p, b on the ray
-                    b, q = (as_int(v, "ghost point", len(pts)) for v in entry[2:])
-                    if not on_line(pts[b]):
-                        reject(f"face {f}: the ghost at {pos} reflects through a point not exactly on the rays' line")
-                    value[pos] = tuple(ball_sub((2 * pts[b][i][0], 2 * pts[b][i][1]), pts[q][i]) for i in (0, 1))
-                    ghosts[pos] = (b, q)
-                    ghosts_total += 1
+                    continue
+                # the ghost rule across a sharp ray: a + b − p, a and b on
+                # the ray ([x, y, b, p] is 2b − p: a = b)
+                a, b, q = (as_int(v, "ghost point", len(pts)) for v in ([entry[2]] + entry[2:] if len(entry) == 4 else entry[2:]))
+                if (len(entry) == 4) != (host == "bicubic B-spline"):
+                    reject(f"face {f}: the ghost at {pos} is not the {host}'s ghost rule")
+                if not (on_line(pts[a]) and on_line(pts[b])):
+                    reject(f"face {f}: the ghost at {pos} reflects through a point not exactly on the rays' line")
+                value[pos] = tuple(ball_sub(ball_add(pts[a][i], pts[b][i]), pts[q][i]) for i in (0, 1))
+                ghosts[pos] = (a, b, q)
+                ghosts_total += 1
             if set(value) != want_positions:
-                reject(f"face {f}: the window is not the 4 × 4 positions −1..2 × −1..2")
-            # a ghost at q is 2b − p with b = q + e and p = q + 2e (a unit step
-            # e) the net points the layout puts there
-            for pos, (b, q) in ghosts.items():
-                if not any(net.get((pos[0] + ex, pos[1] + ey)) == b and net.get((pos[0] + 2 * ex, pos[1] + 2 * ey)) == q
-                           for ex, ey in ((1, 0), (-1, 0), (0, 1), (0, -1))):
-                    reject(f"face {f}: the ghost at {pos} is not 2b − p of the net points one and two steps beside it")
-            if any(c not in net for c in ((0, 0), (1, 0), (1, 1), (0, 1))):
+                reject(f"face {f}: the window is not the {host}'s {len(want_positions)} positions")
+            # the ghost's points where the host puts them: bicubic, 2b − p
+            # with b = q + e and p = q + 2e (a unit step e); quartic box,
+            # a + b − p with a = q + d_i, b = q + d_(i+1) (a lattice triangle
+            # with q) and p = a + b − q, the apex across the edge a–b
+            for pos, (a, b, q) in ghosts.items():
+                if host == "bicubic B-spline":
+                    ok = a == b and any(net.get((pos[0] + ex, pos[1] + ey)) == b and net.get((pos[0] + 2 * ex, pos[1] + 2 * ey)) == q
+                                        for ex, ey in steps)
+                    rule = "2b − p of the net points one and two steps beside it"
+                else:
+                    ok = False
+                    for i in range(6):
+                        pa = (pos[0] + steps[i][0], pos[1] + steps[i][1])
+                        pb = (pos[0] + steps[(i + 1) % 6][0], pos[1] + steps[(i + 1) % 6][1])
+                        pp = (pa[0] + pb[0] - pos[0], pa[1] + pb[1] - pos[1])
+                        if {net.get(pa), net.get(pb)} == {a, b} and None not in (net.get(pa), net.get(pb)) and net.get(pp) == q:
+                            ok = True
+                    rule = "a + b − p of a lattice edge a–b beside it and the apex p across that edge"
+                if not ok:
+                    reject(f"face {f}: the ghost at {pos} is not {rule}")
+            if any(c not in net for c in corners):
                 reject(f"face {f}: a corner of the face itself is a ghost")
-            us = [tuple(ball_sub(value[(x + 1, y)][i], value[(x, y)][i]) for i in (0, 1)) for x in range(-1, 2) for y in range(-1, 3)]
-            vs = [tuple(ball_sub(value[(x, y + 1)][i], value[(x, y)][i]) for i in (0, 1)) for x in range(-1, 3) for y in range(-1, 2)]
+            # the derivatives along the lattice's first two directions are
+            # convex combinations of the window's differences along them
+            us = [tuple(ball_sub(value[(x + 1, y)][i], value[(x, y)][i]) for i in (0, 1))
+                  for (x, y) in sorted(want_positions) if (x + 1, y) in want_positions]
+            vs = [tuple(ball_sub(value[(x, y + 1)][i], value[(x, y)][i]) for i in (0, 1))
+                  for (x, y) in sorted(want_positions) if (x, y + 1) in want_positions]
             lo = hi = None
             for ux, uy in us:
                 for vx, vy in vs:
@@ -2253,9 +2294,9 @@ class Checker:
             # tangent one moves with one sign (in the face's orientation)
             for r in as_list(get(face, "rows", "face"), f"face {f} rows"):
                 r = [tuple(as_list(c, "row position", 2)) for c in as_list(r, "row", 4)]
-                steps = {(b[0] - a[0], b[1] - a[1]) for a, b in zip(r, r[1:])}
-                if len(steps) != 1 or abs(next(iter(steps))[0]) + abs(next(iter(steps))[1]) != 1:
-                    reject(f"face {f}: a sharp row is not four window positions one unit step apart")
+                row_steps = {(b[0] - a[0], b[1] - a[1]) for a, b in zip(r, r[1:])}
+                if len(row_steps) != 1 or next(iter(row_steps)) not in steps:
+                    reject(f"face {f}: a sharp row is not four window positions one lattice step apart")
                 if any(c not in net for c in r):
                     reject(f"face {f}: a sharp row holds a position that is not a net point")
                 for c in r:
@@ -2276,8 +2317,9 @@ class Checker:
         if len(set(signs)) != 1:
             reject("regularity needs every ring face of one Jacobian sign")
         sign = signs[0]
-        self.ok(f"B3/B4: {len(faces)} ring faces' windows with {ghosts_total} ghost point(s) 2b − p computed here (b "
-                f"exactly on the line); every det(u_i, v_j) proved {'> 0' if sign > 0 else '< 0'} (least margin "
+        self.ok(f"B3/B4: {len(faces)} ring faces' windows of the {host} with {ghosts_total} ghost point(s) "
+                f"{'2b − p' if host == 'bicubic B-spline' else 'a + b − p'} computed here (a, b exactly on the line); "
+                f"every det(u_i, v_j) proved {'> 0' if sign > 0 else '< 0'} (least margin "
                 f"{float(Fraction(worst, UNIT)):.3e})")
         if rows_seen == 0:
             reject("no sharp row: the rays' images are not checked")

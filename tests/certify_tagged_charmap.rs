@@ -36,7 +36,8 @@
 //!
 //! Every PROVED here has its negative control in the same file (k = 1, 4
 //! spectral; k = 5..8 geometric), and every verdict is compared with the
-//! floating-point route, a third, independent one.
+//! floating-point route, a third, independent one. Loop's boundary (the
+//! triangle host) is `tests/certify_loop_sector.rs`.
 
 use crate::common;
 use common::{check_certificate, check_tampered_certificate, python3_available, subdlab};
@@ -139,15 +140,6 @@ fn blz_boundaries_are_proved() {
 }
 
 #[test]
-fn loop_is_not_proved_but_never_disproved() {
-    // the ghost construction 2b − p is the bicubic B-spline's; Loop's
-    // boundary is not covered, and must say so rather than decide
-    let c = certify("loop", &[], 3).cert;
-    assert_eq!(c.spectrum.verdict, Verdict::Proved);
-    assert!(matches!(&c.sector_criterion, Verdict::NotProved(w) if w.contains("numerical only")), "{c:?}");
-}
-
-#[test]
 fn cli_exit_codes_json_and_refusals() {
     let out = subdlab(&["charmap", "catmull-clark", "-n", "3", "--tag", "boundary", "--certify"]);
     assert_eq!(out.status.code(), Some(0));
@@ -158,8 +150,6 @@ fn cli_exit_codes_json_and_refusals() {
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["certificate"]["sector_criterion"]["verdict"], "disproved");
     assert_eq!(v["certificate"]["spectrum"]["verdict"], "proved");
-    let out = subdlab(&["charmap", "loop", "-n", "3", "--tag", "boundary", "--certify"]);
-    assert_eq!(out.status.code(), Some(1));
     for args in [
         &["charmap", "catmull-clark", "-n", "4", "--tag", "crease:2", "--certify"][..],
         &["charmap", "catmull-clark", "-n", "3", "--tag", "corner", "--certify"][..],

@@ -17,6 +17,7 @@ mod certificate_checker;
 mod certify;
 mod certify_charmap;
 mod certify_difference;
+mod certify_loop_sector;
 mod certify_nonbox;
 mod certify_soundness;
 mod certify_tagged;

@@ -631,7 +631,7 @@ fn the_boundary_claims_file_verifies() {
     assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let claims = v[0]["claims"].as_array().unwrap();
-    assert_eq!(claims.len(), 33);
+    assert_eq!(claims.len(), 37);
     for c in claims {
         assert_eq!(c["verdict"], "HOLDS", "{c}");
     }
@@ -652,6 +652,10 @@ fn the_boundary_claims_file_verifies() {
         ("cc.boundary.regular", "cc.boundary.regular.map.certified"),
         ("cc.boundary.hoppe-collapse", "cc.boundary.hoppe-collapse.certified"),
         ("cc.boundary.blz-map", "cc.boundary.blz-map.certified"),
+        ("loop.boundary.hoppe-passes", "loop.boundary.hoppe-map.certified"),
+        ("loop.boundary.hoppe-defective", "loop.boundary.hoppe-defective.map.certified"),
+        ("loop.boundary.hoppe-collapse", "loop.boundary.hoppe-collapse.certified"),
+        ("loop.boundary.blz", "loop.boundary.blz-map.certified"),
     ] {
         assert!(ids.contains(&first) && ids.contains(&second), "{first} / {second}");
     }

@@ -680,7 +680,7 @@ pub fn sector_part(
         for (_, from) in &f.layout {
             match *from {
                 WindowSource::Net(v) => roots.push(node(v)?),
-                WindowSource::Ghost(b, p) => roots.extend([node(b)?, node(p)?]),
+                WindowSource::Ghost(a, b, p) => roots.extend([node(a)?, node(b)?, node(p)?]),
             }
         }
     }
@@ -698,7 +698,9 @@ pub fn sector_part(
                 .iter()
                 .map(|&((x, y), from)| match from {
                     WindowSource::Net(v) => Ok(json!([x, y, id(v)?])),
-                    WindowSource::Ghost(b, p) => Ok(json!([x, y, id(b)?, id(p)?])),
+                    // 2b − p (a = b, the bicubic host) as [x, y, b, p], else a + b − p as [x, y, a, b, p]
+                    WindowSource::Ghost(a, b, p) if a == b => Ok(json!([x, y, id(b)?, id(p)?])),
+                    WindowSource::Ghost(a, b, p) => Ok(json!([x, y, id(a)?, id(b)?, id(p)?])),
                 })
                 .collect::<Result<_, String>>()?;
             let rows: Vec<Vec<[i32; 2]>> = f.rows.iter().map(|r| r.iter().map(|&(x, y)| [x, y]).collect()).collect();
@@ -725,6 +727,7 @@ pub fn sector_part(
     let chain_vertices: Vec<usize> = c.vertices.iter().map(|&v| id(v)).collect::<Result<_, _>>()?;
     Ok(json!({
         "statement": cert.statement,
+        "host": e.host.name(),
         "regularity": cert.regularity.word(),
         "injectivity": cert.injectivity.word(),
         "sector_criterion": cert.sector_criterion.word(),
@@ -742,15 +745,26 @@ pub fn sector_part(
             "number": c.number,
         },
         "trusted": [
-            "the stencils are Catmull–Clark's rules with the boundary tag (their weights are checked to sum to 1), \
-             and over the ring faces' windows the ghost-extended bicubic B-spline's (compared exactly by subdlab: \
-             lemma B3)",
-            "each window is its ring face's one-ring laid out on the lattice, the missing positions across a sharp \
-             ray filled by 2b − p with b on the ray (the checker confirms that b and p are the net points one and two \
-             steps beside the ghost and that b's normal coordinate is exactly 0), and the rows are the face's edges \
-             on a sharp ray",
+            format!(
+                "the stencils are {}'s rules with the boundary tag (their weights are checked to sum to 1), and over \
+                 the ring faces' windows the ghost-extended {}'s (compared exactly by subdlab: lemma B3)",
+                analysis.spectrum.scheme,
+                e.host.name()
+            ),
+            format!(
+                "each window is its ring face's one-ring laid out on the {} lattice, the missing positions across a \
+                 sharp ray filled by {} (the checker confirms the positions of the points the ghost is built from \
+                 and that those on the ray have normal coordinate exactly 0), and the rows are the face's edges on a \
+                 sharp ray",
+                if e.host == super::tagged_charmap::GhostHost::Bicubic { "square" } else { "triangle" },
+                if e.host == super::tagged_charmap::GhostHost::Bicubic {
+                    "2b − p with b on the ray and p two steps beside the ghost"
+                } else {
+                    "a + b − p with a–b a sharp edge and p the apex opposite the ghost across it"
+                }
+            ),
             "the ring faces and their scaled copies cover the punctured sector, and the chain is the inner boundary \
-             of the ring from one sharp ray to the other, arc i the ring face beside its edge i",
+             of the ring from one sharp ray to the other, arc i the ring face beside its edge i".to_string(),
         ],
     }))
 }

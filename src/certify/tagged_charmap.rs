@@ -108,6 +108,8 @@ pub struct TaggedCharMapCertificate {
 /// the verdict from (`export::sector_part`, `scripts/check_cert.py`).
 #[derive(Clone, Debug)]
 pub struct SectorEvidence {
+    /// the box spline of the windows and its ghost extension (lemma B3)
+    pub host: GhostHost,
     /// analysis steps of the interval net
     pub levels: usize,
     /// 0: λ1's eigenvector vanishes on the sharp curve, 1: λ2's
@@ -141,8 +143,153 @@ pub struct EigenvectorEvidence {
 pub enum WindowSource {
     /// a vertex of the refined net
     Net(usize),
-    /// the ghost point 2b − p (b on a sharp ray, p its neighbour across)
-    Ghost(usize, usize),
+    /// the ghost point a + b − p: a and b on a sharp ray, p across it
+    /// (`GhostHost::ghost_candidates`: Catmull–Clark's 2b − p has a = b)
+    Ghost(usize, usize, usize),
+}
+
+/// The regular part a ring face's window is a patch of, with the lattice its
+/// one-ring lies on and the linear ghost extension across a sharp ray that
+/// makes the box spline's rules reproduce the boundary rules (lemma B3 of
+/// ARCHITECTURE.md). One mechanism for both hosts: only the face's shape,
+/// the window's positions and the ghost's stencil differ.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GhostHost {
+    /// primal quads: the bicubic B-spline, 4 × 4 windows, ghost 2b − p
+    Bicubic,
+    /// primal triangles: the three-direction quartic box spline, 12-point
+    /// windows, ghost a + b − p
+    QuarticBox,
+}
+
+impl GhostHost {
+    /// The host whose faces have `sides` sides.
+    pub fn of(sides: usize) -> Option<GhostHost> {
+        match sides {
+            4 => Some(GhostHost::Bicubic),
+            3 => Some(GhostHost::QuarticBox),
+            _ => None,
+        }
+    }
+
+    pub fn regular_part(self) -> RegularPart {
+        match self {
+            GhostHost::Bicubic => RegularPart::BicubicBSpline,
+            GhostHost::QuarticBox => RegularPart::ThreeDirectionQuarticBoxSpline,
+        }
+    }
+
+    /// The name a certificate document gives the host (`sector.host`).
+    pub fn name(self) -> &'static str {
+        self.regular_part().describe()
+    }
+
+    fn sides(self) -> usize {
+        match self {
+            GhostHost::Bicubic => 4,
+            GhostHost::QuarticBox => 3,
+        }
+    }
+
+    /// Faces at a regular vertex inside, and at a regular vertex on a sharp
+    /// ray (a straight boundary: half the lattice's turn).
+    fn valences(self) -> (usize, usize) {
+        match self {
+            GhostHost::Bicubic => (4, 2),
+            GhostHost::QuarticBox => (6, 3),
+        }
+    }
+
+    /// The face's corners on the lattice, in its orientation.
+    fn corners(self) -> &'static [(i32, i32)] {
+        match self {
+            GhostHost::Bicubic => &[(0, 0), (1, 0), (1, 1), (0, 1)],
+            GhostHost::QuarticBox => &[(0, 0), (1, 0), (0, 1)],
+        }
+    }
+
+    /// The next edge of a face turns by 90° (quads) or by 120° (triangles,
+    /// in lattice coordinates whose third direction is (−1, 1)).
+    fn turn(self, (x, y): (i32, i32)) -> (i32, i32) {
+        match self {
+            GhostHost::Bicubic => (-y, x),
+            GhostHost::QuarticBox => (-x - y, x),
+        }
+    }
+
+    /// The lattice's unit steps: the directions of the edges.
+    fn steps(self) -> &'static [(i32, i32)] {
+        match self {
+            GhostHost::Bicubic => &[(1, 0), (0, 1), (-1, 0), (0, -1)],
+            GhostHost::QuarticBox => &[(1, 0), (0, 1), (-1, 1), (-1, 0), (0, -1), (1, -1)],
+        }
+    }
+
+    /// The positions of the face's window: the control points whose basis
+    /// functions do not vanish on the face (the 4 × 4 grid of the bicubic
+    /// B-spline; the face's three corners and their nine neighbours for the
+    /// quartic box spline, the union of the corners' one-rings).
+    fn positions(self) -> Vec<(i32, i32)> {
+        match self {
+            GhostHost::Bicubic => (-1..=2).flat_map(|x| (-1..=2).map(move |y| (x, y))).collect(),
+            GhostHost::QuarticBox => {
+                let mut all: Vec<(i32, i32)> = self
+                    .corners()
+                    .iter()
+                    .flat_map(|&c| std::iter::once(c).chain(self.steps().iter().map(move |s| (c.0 + s.0, c.1 + s.1))))
+                    .collect();
+                all.sort_unstable();
+                all.dedup();
+                all
+            }
+        }
+    }
+
+    /// The ways the ghost at a missing position q may be built, each as
+    /// (a, b, p) positions, the ghost being a + b − p with a and b on a
+    /// sharp ray and p across it (lemma B3):
+    ///
+    /// * bicubic B-spline: a = b = q + e, p = q + 2e for a unit step e (the
+    ///   point reflection 2b − p through the ray vertex; across the ray the
+    ///   tensor rules act as the cubic B-spline's on rows r₋₁ = 2r₀ − r₁,
+    ///   r₀, r₁: the new row 0 is (r₋₁ + 6r₀ + r₁)/8 = r₀, so along the ray
+    ///   they reduce to (1, 6, 1)/8 and the midpoint);
+    /// * quartic box spline: a and b the ends of the lattice edge opposite
+    ///   q in a triangle (a = q + dᵢ, b = q + dᵢ₊₁ for consecutive unit
+    ///   steps), p = a + b − q the apex on the other side: the reflection of
+    ///   p through the midpoint of the edge a–b. Derivation (ARCHITECTURE.md,
+    ///   B3): on the boundary row v_i = (i, 0) with r_i = (i, 1) and ghosts
+    ///   g_i = (i + 1, −1) = v_i + v_{i+1} − r_i, the box spline's edge rule
+    ///   at v_i–v_{i+1} is 3/8 (v_i + v_{i+1}) + 1/8 (r_i + g_i) =
+    ///   1/2 (v_i + v_{i+1}), and its vertex rule at v_i is
+    ///   10/16 v_i + 1/16 (v_{i−1} + v_{i+1} + r_i + r_{i−1} + g_i + g_{i−1})
+    ///   = 3/4 v_i + 1/8 (v_{i−1} + v_{i+1}): Loop's boundary rules. The
+    ///   refined ghost row is again a + b − p of the refined net (checked
+    ///   for both parities of the new row −1 in ARCHITECTURE.md). The point
+    ///   reflection 2b − p does not do this for triangles: its vertex rule
+    ///   at a ray vertex is not symmetric in v_{i±1}.
+    fn ghost_candidates(self, q: (i32, i32)) -> Vec<[(i32, i32); 3]> {
+        let add = |a: (i32, i32), b: (i32, i32)| (a.0 + b.0, a.1 + b.1);
+        match self {
+            GhostHost::Bicubic => self
+                .steps()
+                .iter()
+                .map(|&e| {
+                    let b = add(q, e);
+                    [b, b, add(b, e)]
+                })
+                .collect(),
+            GhostHost::QuarticBox => {
+                let steps = self.steps();
+                (0..steps.len())
+                    .map(|i| {
+                        let (a, b) = (add(q, steps[i]), add(q, steps[(i + 1) % steps.len()]));
+                        [a, b, (a.0 + b.0 - q.0, a.1 + b.1 - q.1)]
+                    })
+                    .collect()
+            }
+        }
+    }
 }
 
 /// A ring face's window: its 4 × 4 positions, the rows of positions along
@@ -393,11 +540,15 @@ fn geometric_half(
     let (Verdict::Proved, Some(l1), Some(l2)) = (&route.verdict, &route.lambda1, &route.lambda2) else {
         return Err("the enclosure route did not prove the spectral part, so no eigenvector pair is enclosed".into());
     };
-    if scheme.topology().faces_per_face() != 4 || analysis.discovered.patch.faces().iter().any(|f| f.len() != 4) {
-        return Err("numerical only: ghost windows across a sharp ray are derived for the bicubic B-spline (primal \
-                    quads: Catmull–Clark) only"
-            .into());
-    }
+    let faces = analysis.discovered.patch.faces();
+    let host = match faces.first().map(|f| f.len()).and_then(GhostHost::of) {
+        Some(host) if scheme.topology().faces_per_face() == 4 && faces.iter().all(|f| f.len() == host.sides()) => host,
+        _ => {
+            return Err("numerical only: ghost windows across a sharp ray are derived for the bicubic B-spline \
+                        (primal quads) and the three-direction quartic box spline (primal triangles) only"
+                .into())
+        }
+    };
     let d = &analysis.discovered;
     let size = d.analysis.len();
     let rows = interval_matrix(scheme, analysis)?;
@@ -442,15 +593,16 @@ fn geometric_half(
         let vf = net.mesh.vertex_faces();
         let ring: Vec<usize> = (0..net.mesh.num_faces()).filter(|&f| net.outer[f] && !net.inner[f]).collect();
         let inside: Vec<usize> = (0..net.mesh.num_faces()).filter(|&f| net.outer[f] && net.inner[f]).collect();
-        let windows = match ring.iter().map(|&f| boundary_window(&net, &vf, f)).collect::<Result<Vec<_>, String>>() {
-            Ok(w) => w,
-            Err(why) => {
-                last_reason = format!("at {levels} levels: {why}");
-                continue;
-            }
-        };
-        cert.rules_checked = check_boundary_rules(scheme, &net.mesh, &windows)?;
-        cert.regular_part = Some(RegularPart::BicubicBSpline);
+        let windows =
+            match ring.iter().map(|&f| boundary_window(&net, &vf, f, host)).collect::<Result<Vec<_>, String>>() {
+                Ok(w) => w,
+                Err(why) => {
+                    last_reason = format!("at {levels} levels: {why}");
+                    continue;
+                }
+            };
+        cert.rules_checked = check_boundary_rules(scheme, &net.mesh, &windows, host)?;
+        cert.regular_part = Some(host.regular_part());
         let bounds: Vec<Interval> = windows.iter().map(|w| w.window.jacobian_bounds()).collect();
         let positive = bounds.iter().filter(|b| b.lo > 0.0).count();
         let negative = bounds.iter().filter(|b| b.hi < 0.0).count();
@@ -512,10 +664,11 @@ fn geometric_half(
         let mut level_reasons = Vec::new();
         level_reasons.push(format!(
             "the Jacobian is proved {} on all {} ring faces at {levels} levels ({} of them across a sharp ray, with \
-             ghost points; ghost-extended bicubic B-spline rules, {} compared exactly)",
+             ghost points; ghost-extended {} rules, {} compared exactly)",
             if sign > 0 { "positive" } else { "negative" },
             ring.len(),
             cert.boundary_faces,
+            host.name(),
             cert.rules_checked
         ));
         level_reasons.push(format!(
@@ -543,6 +696,7 @@ fn geometric_half(
                             })
                             .collect();
                         cert.evidence = Some(SectorEvidence {
+                            host,
                             levels,
                             normal,
                             curve: curve.clone(),
@@ -592,35 +746,36 @@ struct BoundaryWindow {
 }
 
 /// Lemma B3: the window of a ring face, ghost-extended across a sharp ray.
-/// The face's corners must be regular: interior with four quads, or on a
-/// sharp ray (two sharp edges) with two. The one-ring's faces are laid out
-/// on the lattice as inside; every missing position q of the 4 × 4 window
-/// next to a laid-out ray point b = q + e (e a unit step) with p = q + 2e
-/// laid out gets the ghost point 2b − p, b on the ray and the step across
-/// it (the ray runs perpendicular to e through b: b has two sharp edges,
-/// neither along e).
-fn boundary_window(net: &Net<Point>, vf: &[Vec<usize>], f: usize) -> Result<BoundaryWindow, String> {
+/// The face's corners must be regular: interior (four quads, six
+/// triangles), or on a sharp ray with two sharp edges (two quads, three
+/// triangles). The one-ring's faces are laid out on the host's lattice as
+/// inside; every missing position q of the window gets the host's ghost
+/// a + b − p (`GhostHost::ghost_candidates`), a and b laid-out vertices on a
+/// sharp ray (for triangles, the ends of a sharp edge), p laid out across,
+/// and exactly one such construction must exist.
+fn boundary_window(net: &Net<Point>, vf: &[Vec<usize>], f: usize, host: GhostHost) -> Result<BoundaryWindow, String> {
     let mesh = &net.mesh;
     let face = mesh.face(f);
-    if face.len() != 4 {
+    let m = host.sides();
+    if face.len() != m {
         return Err(format!("a ring face has {} sides", face.len()));
     }
     let on_ray = |v: usize| matches!(mesh.vertex_tag(v), VertexTag::Crease(_, _));
+    let (inner, ray) = host.valences();
     for &c in face {
         let regular = match mesh.vertex_tag(c) {
-            VertexTag::Smooth => vf[c].len() == 4,
-            VertexTag::Crease(_, _) => vf[c].len() == 2,
+            VertexTag::Smooth => vf[c].len() == inner,
+            VertexTag::Crease(_, _) => vf[c].len() == ray,
             _ => false,
         };
-        if !regular || vf[c].iter().any(|&g| mesh.face(g).len() != 4) {
+        if !regular || vf[c].iter().any(|&g| mesh.face(g).len() != m) {
             return Err("a ring face has a corner that is not regular (interior or on a sharp ray)".into());
         }
     }
     let mut faces: Vec<usize> = face.iter().flat_map(|&c| vf[c].iter().copied()).collect();
     faces.sort_unstable();
     faces.dedup();
-    let corners = [(0, 0), (1, 0), (1, 1), (0, 1)];
-    let mut coords = LatticeLayout(face.iter().copied().zip(corners.iter().copied()).collect());
+    let mut coords = LatticeLayout(face.iter().copied().zip(host.corners().iter().copied()).collect());
     let mut placed: Vec<bool> = faces.iter().map(|&g| g == f).collect();
     let conflict = || "a ring face's one-ring of faces does not lie on one lattice".to_string();
     while placed.iter().any(|&p| !p) {
@@ -630,12 +785,16 @@ fn boundary_window(net: &Net<Point>, vf: &[Vec<usize>], f: usize) -> Result<Boun
                 continue;
             }
             let gf = mesh.face(g);
-            let Some(k) = (0..4).find(|&k| coords.get(gf[k]).is_some() && coords.get(gf[(k + 1) % 4]).is_some()) else {
+            let Some(k) = (0..m).find(|&k| coords.get(gf[k]).is_some() && coords.get(gf[(k + 1) % m]).is_some()) else {
                 continue;
             };
-            let (a, b) = (coords.at(gf[k]), coords.at(gf[(k + 1) % 4]));
-            let t = (-(b.1 - a.1), b.0 - a.0);
-            for (v, c) in [(gf[(k + 2) % 4], (b.0 + t.0, b.1 + t.1)), (gf[(k + 3) % 4], (a.0 + t.0, a.1 + t.1))] {
+            let (a, b) = (coords.at(gf[k]), coords.at(gf[(k + 1) % m]));
+            let t = host.turn((b.0 - a.0, b.1 - a.1));
+            let mut next = vec![(gf[(k + 2) % m], (b.0 + t.0, b.1 + t.1))];
+            if m == 4 {
+                next.push((gf[(k + 3) % m], (a.0 + t.0, a.1 + t.1)));
+            }
+            for (v, c) in next {
                 if coords.get_or_insert(v, c) != c {
                     return Err(conflict());
                 }
@@ -647,12 +806,11 @@ fn boundary_window(net: &Net<Point>, vf: &[Vec<usize>], f: usize) -> Result<Boun
             return Err(conflict());
         }
     }
+    let positions = host.positions();
     let mut distinct: Vec<(i32, i32)> = coords.0.iter().map(|&(_, c)| c).collect();
     distinct.sort_unstable();
     distinct.dedup();
-    if distinct.len() != coords.0.len()
-        || coords.0.iter().any(|&(_, (x, y))| !(-1..=2).contains(&x) || !(-1..=2).contains(&y))
-    {
+    if distinct.len() != coords.0.len() || coords.0.iter().any(|(_, c)| !positions.contains(c)) {
         return Err(conflict());
     }
     let p = |v: usize| net.points[v].ok_or_else(|| "a window point is not determined".to_string());
@@ -664,64 +822,74 @@ fn boundary_window(net: &Net<Point>, vf: &[Vec<usize>], f: usize) -> Result<Boun
         value.insert(c, p(v)?);
         source.insert(c, WindowSource::Net(v));
     }
+    let laid = |w: usize| at.iter().find(|(_, &u)| u == w).map(|(&c, _)| c);
     let mut ghosts = 0;
-    for x in -1..=2 {
-        for y in -1..=2 {
-            if at.contains_key(&(x, y)) {
+    for &q in &positions {
+        if at.contains_key(&q) {
+            continue;
+        }
+        let mut found: Option<(usize, usize, usize)> = None;
+        for [aq, bq, pq] in host.ghost_candidates(q) {
+            let (Some(&a), Some(&b), Some(&pv)) = (at.get(&aq), at.get(&bq), at.get(&pq)) else { continue };
+            if !(on_ray(a) && on_ray(b)) {
                 continue;
             }
-            let mut ghost = None;
-            for e in [(1, 0), (-1, 0), (0, 1), (0, -1)] {
-                let (bq, pq) = ((x + e.0, y + e.1), (x + 2 * e.0, y + 2 * e.1));
-                let (Some(&b), Some(&pv)) = (at.get(&bq), at.get(&pq)) else { continue };
-                // b on a sharp ray that crosses the step e: its sharp edges
-                // go to its two laid-out neighbours perpendicular to e
+            let across = if a == b {
+                // one ray vertex b: the ray crosses the step q → b, so b's
+                // sharp edges (those the window holds, at least one) go to
+                // laid-out neighbours on the line through b perpendicular to it
                 let VertexTag::Crease(s, t) = mesh.vertex_tag(b) else { continue };
-                // (each of them the window holds lies on the line through
-                // b perpendicular to e, and the window holds one)
-                let laid = |w: usize| at.iter().find(|(_, &u)| u == w).map(|(&c, _)| c);
-                let across = |c: (i32, i32)| (c.0 - bq.0) * e.0 + (c.1 - bq.1) * e.1 == 0;
+                let e = (bq.0 - q.0, bq.1 - q.1);
+                let perpendicular = |c: (i32, i32)| (c.0 - bq.0) * e.0 + (c.1 - bq.1) * e.1 == 0;
                 let (ls, lt) = (laid(s), laid(t));
-                if (ls.is_none() && lt.is_none()) || ![ls, lt].into_iter().flatten().all(across) {
-                    continue;
-                }
-                let (pb, pp) = (p(b)?, p(pv)?);
-                let two = Interval::point(2.0);
-                ghost = Some(([two * pb[0] - pp[0], two * pb[1] - pp[1]], WindowSource::Ghost(b, pv)));
-                break;
+                !(ls.is_none() && lt.is_none()) && [ls, lt].into_iter().flatten().all(perpendicular)
+            } else {
+                // a sharp edge a–b: the ray runs along it, q on one side, p on the other
+                mesh.is_sharp(a, b)
+            };
+            if !across {
+                continue;
             }
-            let (g, from) = ghost.ok_or("a ring face's window lacks a point that no sharp ray accounts for")?;
-            value.insert((x, y), g);
-            source.insert((x, y), from);
-            ghosts += 1;
+            if found.is_some_and(|g| g != (a, b, pv)) {
+                return Err("a ring face's window has a position two sharp rays extend differently".into());
+            }
+            found = Some((a, b, pv));
         }
+        let (a, b, pv) = found.ok_or("a ring face's window lacks a point that no sharp ray accounts for")?;
+        let (pa, pb, pp) = (p(a)?, p(b)?, p(pv)?);
+        value.insert(q, [pa[0] + pb[0] - pp[0], pa[1] + pb[1] - pp[1]]);
+        source.insert(q, WindowSource::Ghost(a, b, pv));
+        ghosts += 1;
     }
+    // the derivatives along the lattice's first two directions are convex
+    // combinations of the window's differences along them (each box spline
+    // without that direction is a non-negative partition of unity, and both
+    // ends of a difference it weighs on the face are window positions)
     let (mut along_u, mut along_v) = (Vec::new(), Vec::new());
     let diff = |a: Point, b: Point| [b[0] - a[0], b[1] - a[1]];
-    for x in -1..=2 {
-        for y in -1..=2 {
-            if x < 2 {
-                along_u.push(diff(value[&(x, y)], value[&(x + 1, y)]));
-            }
-            if y < 2 {
-                along_v.push(diff(value[&(x, y)], value[&(x, y + 1)]));
-            }
+    for &(x, y) in &positions {
+        if let Some(&next) = value.get(&(x + 1, y)) {
+            along_u.push(diff(value[&(x, y)], next));
+        }
+        if let Some(&next) = value.get(&(x, y + 1)) {
+            along_v.push(diff(value[&(x, y)], next));
         }
     }
     // the rows on a sharp ray: the face's own sharp edges (the limit along
-    // one is the cubic B-spline of the four ray points of its window row)
+    // one is the cubic B-spline of the four ray points of its window row,
+    // for both hosts: the boundary rules are that curve's)
     let mut rows = Vec::new();
     let mut row_positions = Vec::new();
     if ghosts > 0 {
-        for k in 0..4 {
-            let (a, b) = (face[k], face[(k + 1) % 4]);
+        for k in 0..m {
+            let (a, b) = (face[k], face[(k + 1) % m]);
             if !(on_ray(a) && on_ray(b) && mesh.is_sharp(a, b)) {
                 continue;
             }
             let (ca, cb) = (coords.at(a), coords.at(b));
             let step = (cb.0 - ca.0, cb.1 - ca.1);
             let positions: Vec<(i32, i32)> = (-1..=2).map(|s| (ca.0 + s * step.0, ca.1 + s * step.1)).collect();
-            rows.push(positions.iter().map(|c| value[c]).collect());
+            rows.push(positions.iter().map(|c| value.get(c).copied().ok_or_else(conflict)).collect::<Result<_, _>>()?);
             row_positions.push(positions);
         }
     }
@@ -737,12 +905,21 @@ fn boundary_window(net: &Net<Point>, vf: &[Vec<usize>], f: usize) -> Result<Boun
     })
 }
 
-/// Lemma B3's rule check: at every entity the windows' limits depend on,
-/// the scheme's rational stencil equals the ghost-extended bicubic
-/// B-spline's: inside, Catmull–Clark's regular masks; at a vertex on a
-/// sharp ray, 3/4 on it and 1/8 on its two ray neighbours; on a sharp edge,
-/// the midpoint. Returns the number of stencils compared.
-fn check_boundary_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[BoundaryWindow]) -> Result<usize, String> {
+/// Lemma B3's rule check: at every entity the windows' limits depend on
+/// (the ring faces' corners and the edges meeting them; for quads also the
+/// one-ring's faces), the scheme's rational stencil equals the
+/// ghost-extended host box spline's: inside, the host's regular masks
+/// (bicubic: 9/16, 3/32, 1/64; 3/8, 1/16; 1/4. quartic box: 5/8, 1/16;
+/// 3/8, 3/8, 1/8, 1/8); at a vertex on a sharp ray, 3/4 on it and 1/8 on its
+/// two ray neighbours; on a sharp edge, the midpoint — what either host's
+/// rules give on its ghost extension (`GhostHost::ghost_candidates`), the
+/// cubic B-spline's along the ray. Returns the number of stencils compared.
+fn check_boundary_rules(
+    scheme: &dyn Scheme,
+    mesh: &PolyMesh,
+    windows: &[BoundaryWindow],
+    host: GhostHost,
+) -> Result<usize, String> {
     let mut corners: HashSet<usize> = HashSet::new();
     let mut faces: HashSet<usize> = HashSet::new();
     for w in windows {
@@ -759,29 +936,32 @@ fn check_boundary_rules(scheme: &dyn Scheme, mesh: &PolyMesh, windows: &[Boundar
                 VertexTag::Crease(a, b) => [(v, ratio(3, 4)), (a, ratio(1, 8)), (b, ratio(1, 8))].into_iter().collect(),
                 _ => vertex_masks(mesh, &vf, v, false)?
                     .into_iter()
-                    .find(|(k, _)| *k == RegularPart::BicubicBSpline)
+                    .find(|(k, _)| *k == host.regular_part())
                     .map(|(_, m)| m)
-                    .ok_or("a vertex over the ring is not a regular quad vertex")?,
+                    .ok_or("a vertex over the ring is not a regular vertex of the host")?,
             },
             Origin::Edge(a, b) if corners.contains(&a) || corners.contains(&b) => {
                 if mesh.is_sharp(a, b) {
                     [(a, ratio(1, 2)), (b, ratio(1, 2))].into_iter().collect()
                 } else {
                     let (kind, m) = edge_mask(mesh, &vf, a, b, false)?;
-                    if kind != RegularPart::BicubicBSpline {
-                        return Err("an edge over the ring is not between two quads".into());
+                    if kind != host.regular_part() {
+                        return Err("an edge over the ring is not between two faces of the host".into());
                     }
                     m
                 }
             }
-            Origin::Face(g) if faces.contains(&g) => mesh.face(g).iter().map(|&v| (v, ratio(1, 4))).collect(),
+            Origin::Face(g) if faces.contains(&g) && host == GhostHost::Bicubic => {
+                mesh.face(g).iter().map(|&v| (v, ratio(1, 4))).collect()
+            }
             _ => continue,
         };
         let got = exact_stencil(scheme, mesh, origin)?;
         if got != mask {
             return Err(format!(
-                "numerical only: at {origin:?} the stencil is not the ghost-extended bicubic B-spline's mask, so the \
-                 ring is not a B-spline of its net"
+                "numerical only: at {origin:?} the stencil is not the ghost-extended {}'s mask, so the ring is not \
+                 a box spline of its net",
+                host.name()
             ));
         }
         checked += 1;
@@ -805,8 +985,8 @@ fn doubled_winding(
     let mut half: HashSet<(usize, usize)> = HashSet::new();
     for &f in inside {
         let face = mesh.face(f);
-        for k in 0..4 {
-            half.insert((face[k], face[(k + 1) % 4]));
+        for k in 0..face.len() {
+            half.insert((face[k], face[(k + 1) % face.len()]));
         }
     }
     let ring_of_half: HashMap<(usize, usize), usize> = ring
@@ -814,7 +994,7 @@ fn doubled_winding(
         .enumerate()
         .flat_map(|(i, &f)| {
             let face = mesh.face(f);
-            (0..4).map(move |k| ((face[k], face[(k + 1) % 4]), i))
+            (0..face.len()).map(move |k| ((face[k], face[(k + 1) % face.len()]), i))
         })
         .collect();
     // the inner chain: the inside region's boundary edges with a ring face
