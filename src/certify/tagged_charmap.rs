@@ -20,10 +20,13 @@
 //!    collapse to the centre).
 //! 3. **Net and windows (B3).** The net is refined in interval arithmetic
 //!    with the scheme's rules; a ring face on a sharp ray gets its missing
-//!    window row as ghost points 2b − p (b on the ray, p its neighbour
-//!    across), and the rules at every boundary entity of the windows are
-//!    compared exactly with the ghost-extended bicubic B-spline's (boundary
-//!    vertex (1, 6, 1)/8 along the ray, boundary edge midpoint).
+//!    window positions as ghost points of its host box spline
+//!    (`GhostHost`: the bicubic B-spline's 2b − p, b on the ray and p its
+//!    neighbour across; the three-direction quartic box spline's a + b − p,
+//!    a–b the sharp edge and p the apex across it), and the rules at every
+//!    boundary entity of the windows are compared exactly with the
+//!    ghost-extended box spline's (boundary vertex (1, 6, 1)/8 along the
+//!    ray, boundary edge midpoint: the same for both hosts).
 //! 4. **Regularity (B4)** from the window Jacobian bounds, as inside.
 //! 5. **Rays again (B5).** Along each ray the tangent coordinate's
 //!    differences of the boundary row, in the face's own orientation, have
