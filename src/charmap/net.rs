@@ -23,7 +23,7 @@ use crate::mesh::PolyMesh;
 use crate::neighbourhood::Discovered;
 
 use crate::error::Error;
-use crate::refine::{apply, step, Combine, Step, StepStencil};
+use crate::refine::{apply, connectivity, stencils_of, Combine, StepStencil};
 use crate::sdc::{Origin, Scheme, SchemeWeight};
 
 /// Largest number of faces of a refined net: peak memory is about 1 KB per
@@ -313,20 +313,34 @@ fn refine_with_margin<W: SchemeWeight, T: Combine<W> + Clone>(
                 net.refinements + 1
             )));
         }
-        let Step { refined: r, stencils } = step::<W>(scheme, &net.mesh)?;
-        let points = apply(stencils.iter().map(StepStencil::stencil), &net.points);
-        net = descend(&net, r.mesh, &r.vertex_origins, &r.face_parents, points);
-        if net.refinements == 2 * steps {
-            if let (Some(coords), Some(chart)) = (&centre_coords, net.mesh.chart.as_ref().filter(|c| c.scale == 1)) {
+        // The refined connectivity first, then the faces pruning will keep,
+        // and only then the stencils, for the kept faces' vertices alone: the
+        // rest is dropped by the pruning anyway (about a fifth of a deep
+        // level's vertices, the outer half of the margin band's children).
+        let r = connectivity(scheme, &net.mesh)?;
+        let [outer, inner, mut inner2] = descend_flags(&net, &r.mesh, &r.vertex_origins, &r.face_parents);
+        if net.refinements + 1 == 2 * steps {
+            if let (Some(coords), Some(chart)) = (&centre_coords, r.mesh.chart.as_ref().filter(|c| c.scale == 1)) {
                 let centre2: HashSet<usize> =
-                    (0..net.mesh.num_vertices()).filter(|&v| coords.contains(&chart.vertex_coords[v])).collect();
+                    (0..r.mesh.num_vertices()).filter(|&v| coords.contains(&chart.vertex_coords[v])).collect();
                 if centre2.len() == centre0.len() {
-                    net.inner2 = faces_touching(&net.mesh, &centre2);
+                    inner2 = faces_touching(&r.mesh, &centre2);
                 }
             }
         }
+        let keep = faces_near(&r.mesh, &outer, margin);
+        let mut wanted = vec![false; r.mesh.num_vertices()];
+        for &f in &keep {
+            for v in face_vertices(&r.mesh, f) {
+                wanted[v] = true;
+            }
+        }
+        let stencils =
+            stencils_of::<W>(scheme, &net.mesh, &r, wanted.iter().enumerate().filter(|(_, &w)| w).map(|(v, _)| v))?;
+        let points = apply(stencils.iter().map(StepStencil::stencil), &net.points);
+        net = Net { mesh: r.mesh, points, outer, inner, inner2, refinements: net.refinements + 1 };
         check_defined(&net)?;
-        net = prune(net, margin)?;
+        net = restrict(net, &keep)?;
         if net.refinements % steps == 0 {
             visit(net.refinements / steps, &net)?;
         }
@@ -377,18 +391,56 @@ fn refuse_beyond_limit(
 /// The net one refinement down: the refined mesh (taken, not copied: the
 /// deeper levels hold most of a certificate's faces) with the flags carried.
 fn descend<T>(old: &Net<T>, mesh: PolyMesh, origins: &[Origin], parents: &[Origin], points: Vec<Option<T>>) -> Net<T> {
+    let [outer, inner, inner2] = descend_flags(old, &mesh, origins, parents);
+    Net { outer, inner, inner2, mesh, points, refinements: old.refinements + 1 }
+}
+
+/// `outer`, `inner` and `inner2` of the refined `mesh`: a new face descends
+/// from a region when its parent entity and every vertex's origin are
+/// entities of the region (`neighbourhood::discovery::region_entities`).
+fn descend_flags<T>(old: &Net<T>, mesh: &PolyMesh, origins: &[Origin], parents: &[Origin]) -> [Vec<bool>; 3] {
     let carry = |flags: &[bool]| -> Vec<bool> {
-        let ents = crate::neighbourhood::discovery::region_entities(&old.mesh, flags);
-        let from: Vec<bool> = origins.iter().map(|o| ents.contains(o)).collect();
-        mesh.faces().iter().zip(parents).map(|(f, p)| ents.contains(p) && f.iter().all(|&v| from[v])).collect()
+        let region = Region::new(&old.mesh, flags);
+        let from: Vec<bool> = origins.iter().map(|&o| region.contains(o)).collect();
+        mesh.faces().iter().zip(parents).map(|(f, &p)| region.contains(p) && f.iter().all(|&v| from[v])).collect()
     };
-    Net {
-        outer: carry(&old.outer),
-        inner: carry(&old.inner),
-        inner2: carry(&old.inner2),
-        mesh,
-        points,
-        refinements: old.refinements + 1,
+    [carry(&old.outer), carry(&old.inner), carry(&old.inner2)]
+}
+
+/// The entities of the faces flagged in a mesh (their vertices, edges in
+/// both orientations, faces and corners: `region_entities`' set), asked
+/// from per-face and per-vertex flags and the mesh's half-edges rather than
+/// from a set of every entity, which at a net's deeper levels meant hashing
+/// a million origins per level for three regions.
+struct Region<'a> {
+    mesh: &'a PolyMesh,
+    faces: &'a [bool],
+    vertices: Vec<bool>,
+}
+
+impl<'a> Region<'a> {
+    fn new(mesh: &'a PolyMesh, faces: &'a [bool]) -> Region<'a> {
+        let mut vertices = vec![false; mesh.num_vertices()];
+        for (_, face) in mesh.faces().iter().enumerate().filter(|(f, _)| faces[*f]) {
+            for &v in face {
+                vertices[v] = true;
+            }
+        }
+        Region { mesh, faces, vertices }
+    }
+
+    fn contains(&self, o: Origin) -> bool {
+        let flagged = |f: usize| self.faces.get(f).copied().unwrap_or(false);
+        match o {
+            Origin::Vertex(v) => self.vertices.get(v).copied().unwrap_or(false),
+            // an edge of a flagged face, in either orientation: each
+            // half-edge belongs to one face at most
+            Origin::Edge(a, b) => {
+                [(a, b), (b, a)].into_iter().any(|(x, y)| self.mesh.half_edge(x, y).is_some_and(|(f, _)| flagged(f)))
+            }
+            Origin::Face(f) => flagged(f),
+            Origin::Corner { face, corner } => flagged(face) && corner < self.mesh.face(face).len(),
+        }
     }
 }
 
@@ -422,7 +474,13 @@ fn check_defined<T>(net: &Net<T>) -> Result<(), Error> {
 /// (`check_defined`), never as a silent error, and `refine_net` then retries
 /// with a wider one.
 fn prune<T: Clone>(net: Net<T>, margin: usize) -> Result<Net<T>, Error> {
-    let mesh = &net.mesh;
+    let keep = faces_near(&net.mesh, &net.outer, margin);
+    restrict(net, &keep)
+}
+
+/// The faces within `margin` vertex rings of the `outer` faces (those with
+/// a corner reached), in face order.
+fn faces_near(mesh: &PolyMesh, outer: &[bool], margin: usize) -> Vec<usize> {
     // Breadth-first growth from the outer faces' corners, `margin` face
     // layers deep. Only the last layer's vertices are expanded at each
     // step (the earlier ones were), so the cost is linear in the vertices
@@ -431,7 +489,7 @@ fn prune<T: Clone>(net: Net<T>, margin: usize) -> Result<Net<T>, Error> {
     // (and hashing every id) was most of a certificate's time.
     let mut near = vec![false; mesh.num_vertices()];
     let mut frontier: Vec<usize> = Vec::new();
-    for f in (0..mesh.num_faces()).filter(|&f| net.outer[f]) {
+    for f in (0..mesh.num_faces()).filter(|&f| outer[f]) {
         for &v in mesh.face(f) {
             if !near[v] {
                 near[v] = true;
@@ -454,9 +512,14 @@ fn prune<T: Clone>(net: Net<T>, margin: usize) -> Result<Net<T>, Error> {
         }
         frontier = next;
     }
-    let keep: Vec<usize> = (0..mesh.num_faces()).filter(|&f| mesh.face(f).iter().any(|&v| near[v])).collect();
+    (0..mesh.num_faces()).filter(|&f| mesh.face(f).iter().any(|&v| near[v])).collect()
+}
+
+/// The net on the faces `keep` only, renumbered, every flag and point of a
+/// kept face carried.
+fn restrict<T: Clone>(net: Net<T>, keep: &[usize]) -> Result<Net<T>, Error> {
     // carry every attribute (charts, FCVs, face centres, lattice directions)
-    let (new_mesh, old) = mesh.restrict(&keep)?;
+    let (new_mesh, old) = net.mesh.restrict(keep)?;
     // each kept vertex appears once in `old`: its row is moved, not cloned
     let mut all_points = net.points;
     let points: Vec<Option<T>> = old.iter().map(|&v| all_points[v].take()).collect();
@@ -485,6 +548,32 @@ pub fn facet_triangles(mesh: &PolyMesh, f: usize) -> Vec<[usize; 3]> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `Region` answers exactly what `region_entities`' set holds, for every
+    /// origin of a small mixed mesh (quads and triangles, open rim) and every
+    /// pattern of flagged faces, including origins of no face (reversed and
+    /// non-existent edges, out-of-range ids).
+    #[test]
+    fn the_dense_region_holds_exactly_the_region_entities() {
+        // a 3×2 grid of quads (vertices 0..12, row-major, 4 per row) with
+        // the last quad split into two triangles
+        let q = |a: usize| vec![a, a + 1, a + 5, a + 4];
+        let faces = vec![q(0), q(1), q(2), q(4), q(5), vec![6, 7, 11], vec![6, 11, 10]];
+        let mesh = PolyMesh::new(12, faces).unwrap();
+        let nf = mesh.num_faces();
+        for pattern in 0u32..(1 << nf) {
+            let flags: Vec<bool> = (0..nf).map(|f| pattern >> f & 1 == 1).collect();
+            let set = crate::neighbourhood::discovery::region_entities(&mesh, &flags);
+            let dense = Region::new(&mesh, &flags);
+            let mut origins: Vec<Origin> = (0..14).map(Origin::Vertex).collect();
+            origins.extend((0..13).flat_map(|a| (0..13).map(move |b| Origin::Edge(a, b))));
+            origins.extend((0..nf + 1).map(Origin::Face));
+            origins.extend((0..nf + 1).flat_map(|f| (0..4).map(move |corner| Origin::Corner { face: f, corner })));
+            for o in origins {
+                assert_eq!(dense.contains(o), set.contains(&o), "{o:?} with faces {flags:?}");
+            }
+        }
+    }
 
     #[test]
     fn the_estimate_refuses_only_past_the_limit_and_names_the_levels_that_fit() {

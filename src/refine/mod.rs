@@ -109,17 +109,32 @@ pub fn step_selected<W: SchemeWeight>(
     select: impl FnOnce(&Refined) -> Result<Vec<usize>, Error>,
 ) -> Result<Step<W>, Error> {
     let refined = connectivity(rules, mesh)?;
+    let stencils = stencils_of(rules, mesh, &refined, select(&refined)?)?;
+    Ok(Step { refined, stencils })
+}
+
+/// The stencils of the new vertices `vertices` of `refined` (a refinement
+/// of `mesh` by `rules`'s host), the others [`StepStencil::NotSelected`]:
+/// for callers that decide from the refined connectivity which vertices
+/// they keep (a pruned net) before any rule is evaluated. A vertex listed
+/// twice is evaluated once.
+pub fn stencils_of<W: SchemeWeight>(
+    rules: &dyn Scheme,
+    mesh: &PolyMesh,
+    refined: &Refined,
+    vertices: impl IntoIterator<Item = usize>,
+) -> Result<Vec<StepStencil<W>>, Error> {
     let mut stencils: Vec<StepStencil<W>> = vec![StepStencil::NotSelected; refined.vertex_origins.len()];
     let mut done = vec![false; stencils.len()];
-    for v in select(&refined)? {
+    for v in vertices {
         if std::mem::replace(&mut done[v], true) {
             continue;
         }
-        stencils[v] = new_stencil(rules, mesh, &refined, v)
+        stencils[v] = new_stencil(rules, mesh, refined, v)
             .map_err(|Inexact| Error::Numeric(format!("{}: a weight is not representable exactly", rules.name())))?
             .into();
     }
-    Ok(Step { refined, stencils })
+    Ok(stencils)
 }
 
 /// The stencil of new vertex `v` of `refined`, a refinement of `mesh` by
