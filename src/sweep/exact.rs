@@ -996,8 +996,11 @@ pub(crate) fn first_subresultant(a: &BiPoly, b: &BiPoly) -> Result<Option<CPoly>
     // below cost seconds per pair at unified-sqrt3
     // (Q(ζ_N) coefficients: the norm over the pair's distinct conjugates,
     // whose roots contain psc_j's — the callers take that norm next anyway)
+    // psc_j below the degree of a common factor proved by exact division
+    // vanish identically: no values needed to prove them zero
+    let known_zero = subresultant::proved_common_degree(a, b);
     let conjugates = distinct_conjugates(a, b);
-    if let Some(c) = subresultant::first_nonzero_psc(a, b, &conjugates, &bound) {
+    if let Some(c) = subresultant::first_nonzero_psc(a, b, &conjugates, &bound, known_zero) {
         return Ok(Some(c.into_iter().map(|x| Cyclotomic::from_rational(&Rational::from_integer(x))).collect()));
     }
     // psc_j has degree ≤ bound(j) in t: one nonzero value shows it is not
@@ -1006,7 +1009,7 @@ pub(crate) fn first_subresultant(a: &BiPoly, b: &BiPoly) -> Result<Option<CPoly>
     let points: Vec<Rational> =
         (0..=d0 as i64).map(|i| if i % 2 == 0 { q(i / 2, 1) } else { q(-(i + 1) / 2, 1) }).collect();
     let evals: Vec<(CPoly, CPoly)> = points.iter().map(|t| (eval_x(a, t), eval_x(b, t))).collect();
-    for j in 0..=m.min(n) {
+    for j in known_zero..=m.min(n) {
         let dj = bound(j);
         let values: Vec<Cyclotomic> = evals[..=dj].iter().map(|(x, y)| psc(x, y, j)).collect();
         if values.iter().any(|v| !Weight::is_zero(v)) {
