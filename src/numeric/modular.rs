@@ -557,6 +557,36 @@ mod tests {
     }
 
     #[test]
+    fn word_arithmetic_agrees_with_hardware_remainders() {
+        let primes: Vec<u64> = word_primes().take(3).collect();
+        assert_eq!(primes[0], (1u64 << 31) - 1); // 2^31 − 1 is prime (Mersenne)
+        for &p in primes.iter().chain([3u64, 5, 1_000_000_007].iter()) {
+            let w = WordPrime::new(p);
+            // Barrett against the hardware remainder, at the edges and inside
+            for x in [0, 1, p - 1, p, p + 1, 2 * p - 1, p * p - 1, (p - 1) * (p - 1) + p, u64::MAX, u64::MAX - p] {
+                assert_eq!(w.reduce(x), x % p, "{x} mod {p}");
+            }
+            let mut x = 0x9e37_79b9_7f4a_7c15u64;
+            for _ in 0..1000 {
+                x = x.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+                assert_eq!(w.reduce(x), x % p);
+            }
+            // inverses: a·a⁻¹ ≡ 1, and the table of 1..n is the same
+            let table = word_inverses(50.min(p as usize - 1), p);
+            for a in 1..table.len() as u64 {
+                assert_eq!(a * word_inv(a, p) % p, 1, "{a}⁻¹ mod {p}");
+                assert_eq!(table[a as usize], word_inv(a, p));
+            }
+            assert_eq!((p - 1) * word_inv(p - 1, p) % p, 1);
+        }
+        // interpolation through (i, f(i)) of f = 3 + 2t − t³ (mod p)
+        let p = primes[1];
+        let f = |t: u64| (3 + 2 * t + p * p - t * t * t % p) % p;
+        let y: Vec<u64> = (0..6).map(f).collect();
+        assert_eq!(interpolate_word(&y, p), vec![3, 2, 0, p - 1, 0, 0]);
+    }
+
+    #[test]
     fn primes_are_prime() {
         assert!(is_prime(2_305_843_009_213_693_951)); // 2^61 − 1, a Mersenne prime
         assert!(!is_prime(3_215_031_751)); // a strong pseudoprime to bases 2, 3, 5, 7

@@ -1224,5 +1224,31 @@ mod tests {
         let b = vec![c(2), c(-3), c(1)];
         let r = rational_norm(&first_subresultant(&a, &b).unwrap().unwrap()).unwrap();
         assert_eq!(sturm::primitive(&r), sturm::primitive(&Poly { coeffs: vec![q(-4, 1), q(1, 1)] }));
+        // the common factor x − 1 is found and proved by division: psc_0
+        // is skipped, and the answer above is unchanged
+        assert_eq!(subresultant::proved_common_degree(&a, &b), 1);
+    }
+
+    #[test]
+    fn a_common_factor_moving_with_t_is_proved_by_division() {
+        // a = (x − t)²(x + 1) = x³ + (1 − 2t)x² + (t² − 2t)x + t²,
+        // b = (x − t)²(x − 3) = x³ − (3 + 2t)x² + (t² + 6t)x − 3t²:
+        // gcd (x − t)² for every t, so deg gcd = 2 over Q(t)
+        let c = |x: i64| TPoly::int(x);
+        let t = TPoly::variable();
+        let t2 = t.clone() * t.clone();
+        let a = vec![t2.clone(), t2.clone() - c(2) * t.clone(), c(1) - c(2) * t.clone(), c(1)];
+        let b = vec![c(-3) * t2.clone(), t2.clone() + c(6) * t.clone(), c(-3) - c(2) * t.clone(), c(1)];
+        assert_eq!(subresultant::proved_common_degree(&a, &b), 2);
+        // coprime for all but finitely many t: nothing is claimed
+        // (x² − t and x − 2 meet only at t = 4)
+        let f = vec![-t.clone(), c(0), c(1)];
+        let g = vec![c(-2), c(1)];
+        assert_eq!(subresultant::proved_common_degree(&f, &g), 0);
+        // (x − t)(x + 1) against (x − t − 1)(x + 1): the common factor
+        // x + 1 only (x − t never meets x − t − 1)
+        let h = vec![-t.clone(), c(1) - t.clone(), c(1)];
+        let k = vec![-t.clone() - c(1), -t.clone(), c(1)];
+        assert_eq!(subresultant::proved_common_degree(&h, &k), 1);
     }
 }
