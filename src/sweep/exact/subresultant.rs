@@ -45,7 +45,7 @@
 
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, Zero};
 
 use crate::numeric::modular::{det_word, eval_word, from_word_values, pow_mod, residue, word_mul, Lifted};
 use crate::numeric::{BiPoly, Cyclotomic, Rational, TPoly};
@@ -219,7 +219,7 @@ fn psc_word(a: &[u64], b: &[u64], j: usize, p: u64) -> u64 {
 /// exact path then says why.
 ///
 /// `known_zero`: psc_0, ..., psc_{known_zero − 1} are already proved to
-/// vanish identically ([`proved_common_degree`]); the search starts there.
+/// vanish identically (`exact::proved_common_degree`); the search starts there.
 pub(crate) fn first_nonzero_psc(
     a: &BiPoly,
     b: &BiPoly,
@@ -247,69 +247,4 @@ pub(crate) fn first_nonzero_psc(
         }
     }
     None
-}
-
-/// The degree k of a monic factor H ∈ Q[t][x] common to a and b (rational
-/// coefficients, constant leading coefficients), proved by exact division
-/// of both; 0 when none is found. Then deg gcd_x(a, b) ≥ k over the field
-/// Q(t), so psc_0, ..., psc_{k−1} vanish identically (the fundamental
-/// theorem on subresultants, von zur Gathen–Gerhard, *Modern Computer
-/// Algebra*, §6.10) — without the primes that proving each of them zero
-/// from its values needs (at unified-sqrt3, n = 3, two thirds of the
-/// first-order pairs' time: every block has a double branch, so the blocks'
-/// gcds have degree 2 for every α).
-///
-/// How: gcd_x(a(x, t₀), b(x, t₀)) at t₀ = 0, 1, 2, ... over Q (monic); its
-/// degree is at least deg H everywhere and equals it except at finitely
-/// many t₀, so the points of least degree k are kept. H's coefficient of
-/// x^{k−j} is ± an elementary symmetric function of j roots, which grow at
-/// most like |t|^e (e the slope max_k deg_t(c_k)/k of a), and lies in Q[t]
-/// (a monic factor of a monic polynomial over Q[t], Gauss), so it has
-/// degree ≤ e·j: ⌊e·k⌋ + 1 points determine H. Nothing here is trusted
-/// without the final exact divisions: a wrong interpolation (too few
-/// points of the true degree) fails them and gives 0, the search from j = 0.
-pub(crate) fn proved_common_degree(a: &BiPoly, b: &BiPoly) -> usize {
-    use crate::numeric::exact::Poly;
-    use crate::sweep::exact::modulus::{divide_exactly, interpolate_q, rational_coefficients, slope, QT};
-    let (Some(qa), Some(qb)) = (rational_coefficients(a), rational_coefficients(b)) else { return 0 };
-    let (da, db) = (qa.len() - 1, qb.len() - 1);
-    if da == 0 || db == 0 {
-        return 0;
-    }
-    let e = slope(&qa).min(slope(&qb));
-    let at = |p: &[QT], t: i64| -> Poly {
-        let t = Rational::from_integer(t.into());
-        Poly { coeffs: p.iter().map(|c| c.iter().rev().fold(Rational::zero(), |acc, x| acc * &t + x)).collect() }
-    };
-    // (degree, points of that degree) for the least degree seen
-    let mut best: Option<(usize, Vec<(Rational, Poly)>)> = None;
-    for t in 0..(2 * da.max(db) as i64 + 40) {
-        let g = at(&qa, t).gcd(&at(&qb, t));
-        let k = g.degree();
-        if k == 0 {
-            return 0;
-        }
-        match &mut best {
-            Some((bk, points)) if *bk == k => points.push((Rational::from_integer(t.into()), g)),
-            Some((bk, _)) if *bk < k => continue,
-            _ => best = Some((k, vec![(Rational::from_integer(t.into()), g)])),
-        }
-        let (bk, points) = best.as_ref().expect("set above");
-        let need = (e.clone() * Rational::from_integer((*bk as i64).into())).floor().to_integer();
-        let need = need.to_usize().unwrap_or(usize::MAX).saturating_add(1);
-        if points.len() < need {
-            continue;
-        }
-        let xs: Vec<Rational> = points.iter().map(|(x, _)| x.clone()).collect();
-        let h: Vec<QT> = (0..=*bk)
-            .map(|j| {
-                let ys: Vec<Rational> =
-                    points.iter().map(|(_, g)| g.coeffs.get(j).cloned().unwrap_or_else(Rational::zero)).collect();
-                interpolate_q(&xs, &ys)
-            })
-            .collect();
-        let divides = |p: &[QT]| divide_exactly(p, &h).is_some();
-        return if divides(&qa) && divides(&qb) { *bk } else { 0 };
-    }
-    0
 }
