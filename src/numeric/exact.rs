@@ -434,6 +434,10 @@ impl Poly {
     /// The coefficients times the lcm of their denominators (integers, the
     /// same roots).
     pub fn integer_multiple(&self) -> Vec<num_bigint::BigInt> {
+        // integer coefficients: themselves (no lcm, no normalised products)
+        if self.coeffs.iter().all(|c| c.is_integer()) {
+            return self.coeffs.iter().map(|c| c.numer().clone()).collect();
+        }
         let l = self.coeffs.iter().fold(num_bigint::BigInt::one(), |l, c| num_integer::Integer::lcm(&l, c.denom()));
         self.coeffs.iter().map(|c| (c * Rational::from_integer(l.clone())).to_integer()).collect()
     }

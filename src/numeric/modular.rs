@@ -269,14 +269,94 @@ pub fn gcd(f: &[BigInt], g: &[BigInt]) -> Vec<BigInt> {
 /// The primes in [2^30, 2^31), largest first: residues below 2^31, so a
 /// product of two fits in a u64 and the remainders stay in hardware
 /// division (the u128 remainders of `mul_mod` cost several times more).
+///
+/// The list is found once per process and grown on demand (Miller–Rabin on
+/// every odd number below 2^31 from the top, in u128 arithmetic, was a few
+/// per cent of an exact sweep when each resultant searched it again).
 pub(crate) fn word_primes() -> impl Iterator<Item = u64> {
-    ((1u64 << 30)..(1u64 << 31)).rev().filter(|&n| n % 2 == 1 && is_prime(n))
+    (0usize..).map_while(word_prime)
+}
+
+/// The i-th word prime (largest first), None past the last one.
+fn word_prime(i: usize) -> Option<u64> {
+    static FOUND: std::sync::Mutex<Vec<u64>> = std::sync::Mutex::new(Vec::new());
+    let mut found = FOUND.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+    while found.len() <= i {
+        let below = found.last().copied().unwrap_or(1u64 << 31);
+        let next = ((1u64 << 30)..below).rev().find(|&n| n % 2 == 1 && is_prime(n))?;
+        found.push(next);
+    }
+    Some(found[i])
+}
+
+/// a⁻¹ modulo a word prime p (a ≢ 0): the extended Euclidean algorithm in
+/// machine integers (Fermat's a^(p−2) needs 60 u128 remainders, which
+/// were a quarter of an exact sweep's time inside the eliminations).
+pub(crate) fn word_inv(a: u64, p: u64) -> u64 {
+    let (mut r0, mut r1) = (p as i64, (a % p) as i64);
+    let (mut s0, mut s1) = (0i64, 1i64);
+    while r1 != 0 {
+        let q = r0 / r1;
+        (r0, r1) = (r1, r0 - q * r1);
+        (s0, s1) = (s1, s0 - q * s1);
+    }
+    debug_assert_eq!(r0, 1, "{a} is invertible modulo the prime {p}");
+    s0.rem_euclid(p as i64) as u64
+}
+
+/// The inverses of 1, 2, ..., n modulo a word prime p > n (index 0 unused):
+/// inv(k) = −⌊p/k⌋·inv(p mod k), from p = ⌊p/k⌋·k + (p mod k).
+pub(crate) fn word_inverses(n: usize, p: u64) -> Vec<u64> {
+    let mut inv = vec![0u64; n + 1];
+    if n >= 1 {
+        inv[1] = 1;
+    }
+    for k in 2..=n as u64 {
+        inv[k as usize] = (p - p / k) * inv[(p % k) as usize] % p;
+    }
+    inv
 }
 
 /// a·b mod p for a word prime p (a, b < p < 2^31).
 #[inline]
 pub(crate) fn word_mul(a: u64, b: u64, p: u64) -> u64 {
     a * b % p
+}
+
+/// A word prime with its Barrett constant m = ⌊2^64/p⌋: x mod p for any
+/// x < 2^64 by one high multiplication and at most one subtraction.
+/// Why: a 64-bit division costs tens of cycles, and the determinants,
+/// interpolations and exterior squares of the exact sweep do little else
+/// (a remainder per product). Correctness: with m > 2^64/p − 1 and
+/// q = ⌊x·m/2^64⌋, x/p − 1 − x/2^64 < q ≤ x/p, so q ≥ ⌊x/p⌋ − 1 and
+/// x − q·p lies in [0, 2p).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct WordPrime {
+    pub p: u64,
+    m: u64,
+}
+
+impl WordPrime {
+    pub(crate) fn new(p: u64) -> WordPrime {
+        debug_assert!(p > 2 && p < 1 << 32, "a word prime");
+        WordPrime { p, m: u64::MAX / p }
+    }
+    /// x mod p.
+    #[inline]
+    pub(crate) fn reduce(self, x: u64) -> u64 {
+        let q = ((x as u128 * self.m as u128) >> 64) as u64;
+        let r = x - q * self.p;
+        if r >= self.p {
+            r - self.p
+        } else {
+            r
+        }
+    }
+    /// a·b mod p (a, b < 2^32).
+    #[inline]
+    pub(crate) fn mul(self, a: u64, b: u64) -> u64 {
+        self.reduce(a * b)
+    }
 }
 
 /// c mod p in [0, p).
@@ -286,7 +366,10 @@ pub(crate) fn residue(c: &BigInt, p: u64) -> u64 {
 
 /// a(t) mod p (coefficients lowest first, already residues).
 pub(crate) fn eval_word(a: &[u64], t: u64, p: u64) -> u64 {
-    a.iter().rev().fold(0u64, |acc, &c| (word_mul(acc, t, p) + c) % p)
+    let w = WordPrime::new(p);
+    let t = w.reduce(t);
+    // acc·t + c < p² + p < 2^63
+    a.iter().rev().fold(0u64, |acc, &c| w.reduce(acc * t + c))
 }
 
 /// The coefficients (lowest first) of the polynomial of degree < len
@@ -298,22 +381,27 @@ pub(crate) fn interpolate_word(y: &[u64], p: u64) -> Vec<u64> {
         return Vec::new();
     }
     let mut dd = y.to_vec();
+    let inverses = word_inverses(n, p);
+    let w = WordPrime::new(p);
+    // one remainder per step: (x + p − y)·z < 2p·p < 2^63
     for level in 1..n {
-        let il = inv_mod(level as u64, p);
+        let il = inverses[level];
         for i in (level..n).rev() {
-            dd[i] = word_mul((dd[i] + p - dd[i - 1]) % p, il, p);
+            dd[i] = w.reduce((dd[i] + p - dd[i - 1]) * il);
         }
     }
-    let mut out = vec![dd[n - 1]];
+    // out ← out·(t − i) + dd[i], in place from the top: the new
+    // coefficient of t^k is out_{k−1} + (p − i)·out_k (< p + p² < 2^63)
+    let mut out = vec![0u64; n];
+    out[0] = dd[n - 1];
     for i in (0..n - 1).rev() {
-        // out = out·(t − i) + dd[i]
-        let mut next = vec![0u64; out.len() + 1];
-        for (k, &c) in out.iter().enumerate() {
-            next[k + 1] = (next[k + 1] + c) % p;
-            next[k] = (next[k] + p - word_mul(c, i as u64 % p, p)) % p;
+        let minus_i = (p - i as u64 % p) % p;
+        let len = n - 1 - i;
+        out[len] = out[len - 1];
+        for k in (1..len).rev() {
+            out[k] = w.reduce(out[k - 1] + minus_i * out[k]);
         }
-        next[0] = (next[0] + dd[i]) % p;
-        out = next;
+        out[0] = w.reduce(dd[i] + minus_i * out[0]);
     }
     out
 }
@@ -321,6 +409,7 @@ pub(crate) fn interpolate_word(y: &[u64], p: u64) -> Vec<u64> {
 /// The determinant of a square matrix modulo a word prime (elimination).
 pub(crate) fn det_word(mut m: Vec<Vec<u64>>, p: u64) -> u64 {
     let n = m.len();
+    let w = WordPrime::new(p);
     let mut det = 1u64;
     for c in 0..n {
         let Some(r) = (c..n).find(|&r| m[r][c] != 0) else { return 0 };
@@ -328,15 +417,19 @@ pub(crate) fn det_word(mut m: Vec<Vec<u64>>, p: u64) -> u64 {
             m.swap(r, c);
             det = (p - det) % p;
         }
-        det = word_mul(det, m[c][c], p);
-        let iv = inv_mod(m[c][c], p);
-        for r in c + 1..n {
-            if m[r][c] == 0 {
+        det = w.mul(det, m[c][c]);
+        let iv = word_inv(m[c][c], p);
+        let (top, rest) = m.split_at_mut(c + 1);
+        let pivot_row = &top[c];
+        for row in rest.iter_mut() {
+            if row[c] == 0 {
                 continue;
             }
-            let f = word_mul(m[r][c], iv, p);
-            for k in c..n {
-                m[r][k] = (m[r][k] + p - word_mul(f, m[c][k], p)) % p;
+            // row −= f·pivot row, one remainder per entry:
+            // x + (p − f)·y < p + p² < 2^63
+            let minus_f = p - w.mul(row[c], iv);
+            for (x, &y) in row[c..].iter_mut().zip(&pivot_row[c..]) {
+                *x = w.reduce(*x + minus_f * y);
             }
         }
     }
@@ -386,6 +479,9 @@ pub(crate) fn from_word_values(
         if modulus.bits() > bits + 1 {
             break;
         }
+    }
+    if std::env::var_os("SUBDLAB_EXACT_TRACE").is_some() {
+        eprintln!("  from_word_values: degree {degree}, {bits} bits, {} bits of primes", modulus.bits());
     }
     let half = &modulus / 2;
     let mut out: Vec<BigInt> = acc.into_iter().map(|x| if x > half { x - &modulus } else { x }).collect();
@@ -458,6 +554,36 @@ mod tests {
         // det [[2, 3], [5, 7]] = −1
         let p = word_primes().next().unwrap();
         assert_eq!(det_word(vec![vec![2, 3], vec![5, 7]], p), p - 1);
+    }
+
+    #[test]
+    fn word_arithmetic_agrees_with_hardware_remainders() {
+        let primes: Vec<u64> = word_primes().take(3).collect();
+        assert_eq!(primes[0], (1u64 << 31) - 1); // 2^31 − 1 is prime (Mersenne)
+        for &p in primes.iter().chain([3u64, 5, 1_000_000_007].iter()) {
+            let w = WordPrime::new(p);
+            // Barrett against the hardware remainder, at the edges and inside
+            for x in [0, 1, p - 1, p, p + 1, 2 * p - 1, p * p - 1, (p - 1) * (p - 1) + p, u64::MAX, u64::MAX - p] {
+                assert_eq!(w.reduce(x), x % p, "{x} mod {p}");
+            }
+            let mut x = 0x9e37_79b9_7f4a_7c15u64;
+            for _ in 0..1000 {
+                x = x.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+                assert_eq!(w.reduce(x), x % p);
+            }
+            // inverses: a·a⁻¹ ≡ 1, and the table of 1..n is the same
+            let table = word_inverses(50.min(p as usize - 1), p);
+            for a in 1..table.len() as u64 {
+                assert_eq!(a * word_inv(a, p) % p, 1, "{a}⁻¹ mod {p}");
+                assert_eq!(table[a as usize], word_inv(a, p));
+            }
+            assert_eq!((p - 1) * word_inv(p - 1, p) % p, 1);
+        }
+        // interpolation through (i, f(i)) of f = 3 + 2t − t³ (mod p)
+        let p = primes[1];
+        let f = |t: u64| (3 + 2 * t + p * p - t * t * t % p) % p;
+        let y: Vec<u64> = (0..6).map(f).collect();
+        assert_eq!(interpolate_word(&y, p), vec![3, 2, 0, p - 1, 0, 0]);
     }
 
     #[test]

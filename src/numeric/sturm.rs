@@ -15,11 +15,29 @@ use num_traits::{One, Signed, Zero};
 /// without common factor (the same roots and the same signs everywhere).
 pub fn primitive(p: &Poly) -> Poly {
     let p = trimmed(p);
-    let l = p.coeffs.iter().fold(BigInt::one(), |l, c| l.lcm(c.denom()));
-    let ints: Vec<BigInt> = p.coeffs.iter().map(|c| (c * Rational::from_integer(l.clone())).to_integer()).collect();
-    let g = ints.iter().fold(BigInt::zero(), |g, c| g.gcd(c));
+    // integer coefficients (the exact sweep's polynomials, mostly already
+    // primitive): no lcm and no rational products, whose normalising gcds
+    // on thousand-bit numbers were a tenth of a sweep
+    let ints: Vec<BigInt> = if p.coeffs.iter().all(|c| c.is_integer()) {
+        p.coeffs.iter().map(|c| c.numer().clone()).collect()
+    } else {
+        let l = p.coeffs.iter().fold(BigInt::one(), |l, c| l.lcm(c.denom()));
+        p.coeffs.iter().map(|c| (c * Rational::from_integer(l.clone())).to_integer()).collect()
+    };
+    // the content, with its sign from the leading coefficient's scaling
+    // unchanged (a gcd is nonnegative); 1 ends the search
+    let mut g = BigInt::zero();
+    for c in &ints {
+        g = g.gcd(c);
+        if g.is_one() {
+            break;
+        }
+    }
     if g.is_zero() {
         return p;
+    }
+    if g.is_one() {
+        return Poly { coeffs: ints.into_iter().map(Rational::from_integer).collect() };
     }
     Poly { coeffs: ints.into_iter().map(|c| Rational::from_integer(c / &g)).collect() }
 }
@@ -154,10 +172,31 @@ impl RealRoot {
             self.hi = m;
         }
     }
-    /// Bisect until the interval is narrower than `width`.
+    /// Bisect until the interval is narrower than `width`: the same steps
+    /// as repeated [`RealRoot::bisect`], with one evaluation each. The sign
+    /// just inside lo (bisect's s_lo) is the sign on the whole of (lo, root),
+    /// so it does not change when lo moves towards the root: found once.
     pub fn refine(&mut self, width: &Rational) {
-        while self.rational.is_none() && &(&self.hi - &self.lo) >= width {
-            self.bisect();
+        if self.rational.is_some() || &(&self.hi - &self.lo) < width {
+            return;
+        }
+        let s_lo = match self.poly.sign_at(&self.lo) {
+            0 => self.poly.derivative().sign_at(&self.lo),
+            s => s,
+        };
+        let two = Rational::from_integer(2.into());
+        while &(&self.hi - &self.lo) >= width {
+            let m = (&self.lo + &self.hi) / &two;
+            let v = self.poly.sign_at(&m);
+            if v == 0 {
+                *self = RealRoot { rational: Some(m.clone()), lo: m.clone(), hi: m, poly: self.poly.clone() };
+                return;
+            }
+            if v == s_lo {
+                self.lo = m;
+            } else {
+                self.hi = m;
+            }
         }
     }
     /// Try the small-denominator rationals near the root: a rational root

@@ -996,8 +996,11 @@ pub(crate) fn first_subresultant(a: &BiPoly, b: &BiPoly) -> Result<Option<CPoly>
     // below cost seconds per pair at unified-sqrt3
     // (Q(ζ_N) coefficients: the norm over the pair's distinct conjugates,
     // whose roots contain psc_j's — the callers take that norm next anyway)
+    // psc_j below the degree of a common factor proved by exact division
+    // vanish identically: no values needed to prove them zero
+    let known_zero = proved_common_degree(a, b);
     let conjugates = distinct_conjugates(a, b);
-    if let Some(c) = subresultant::first_nonzero_psc(a, b, &conjugates, &bound) {
+    if let Some(c) = subresultant::first_nonzero_psc(a, b, &conjugates, &bound, known_zero) {
         return Ok(Some(c.into_iter().map(|x| Cyclotomic::from_rational(&Rational::from_integer(x))).collect()));
     }
     // psc_j has degree ≤ bound(j) in t: one nonzero value shows it is not
@@ -1006,7 +1009,7 @@ pub(crate) fn first_subresultant(a: &BiPoly, b: &BiPoly) -> Result<Option<CPoly>
     let points: Vec<Rational> =
         (0..=d0 as i64).map(|i| if i % 2 == 0 { q(i / 2, 1) } else { q(-(i + 1) / 2, 1) }).collect();
     let evals: Vec<(CPoly, CPoly)> = points.iter().map(|t| (eval_x(a, t), eval_x(b, t))).collect();
-    for j in 0..=m.min(n) {
+    for j in known_zero..=m.min(n) {
         let dj = bound(j);
         let values: Vec<Cyclotomic> = evals[..=dj].iter().map(|(x, y)| psc(x, y, j)).collect();
         if values.iter().any(|v| !Weight::is_zero(v)) {
@@ -1014,6 +1017,75 @@ pub(crate) fn first_subresultant(a: &BiPoly, b: &BiPoly) -> Result<Option<CPoly>
         }
     }
     Err(Error::Message("no principal subresultant coefficient is nonzero (not a polynomial pair)".into()))
+}
+
+/// The degree k of a monic factor H ∈ Q[t][x] common to a and b (rational
+/// coefficients, constant leading coefficients), proved by exact division
+/// of both; 0 when none is found. Then deg gcd_x(a, b) ≥ k over the field
+/// Q(t), so psc_0, ..., psc_{k−1} vanish identically (the fundamental
+/// theorem on subresultants, von zur Gathen–Gerhard, *Modern Computer
+/// Algebra*, §6.10) — without the primes that proving each of them zero
+/// from its values needs (at unified-sqrt3, n = 3, two thirds of the
+/// first-order pairs' time: every block has a double branch, so the blocks'
+/// gcds have degree 2 for every α).
+///
+/// How: gcd_x(a(x, t₀), b(x, t₀)) at t₀ = 0, 1, 2, ... over Q (monic); its
+/// degree is at least deg H everywhere and equals it except at finitely
+/// many t₀, so the points of least degree k are kept. H's coefficient of
+/// x^{k−j} is ± an elementary symmetric function of j roots, which grow at
+/// most like |t|^e (e the slope max_k deg_t(c_k)/k of a), and lies in Q[t]
+/// (a monic factor of a monic polynomial over Q[t], Gauss), so it has
+/// degree ≤ e·j: ⌊e·k⌋ + 1 points determine H. Nothing here is trusted
+/// without the final exact divisions: a wrong interpolation (too few
+/// points of the true degree) fails them and gives 0, the search from j = 0.
+pub(crate) fn proved_common_degree(a: &BiPoly, b: &BiPoly) -> usize {
+    use crate::numeric::exact::Poly;
+    use crate::sweep::exact::modulus::{divide_exactly, interpolate_q, rational_coefficients, slope, QT};
+    let (Some(qa), Some(qb)) = (rational_coefficients(a), rational_coefficients(b)) else { return 0 };
+    let (da, db) = (qa.len() - 1, qb.len() - 1);
+    if da == 0 || db == 0 {
+        return 0;
+    }
+    let e = slope(&qa).min(slope(&qb));
+    let at = |p: &[QT], t: i64| -> Poly {
+        let t = Rational::from_integer(t.into());
+        Poly {
+            coeffs: p.iter().map(|c| c.iter().rev().fold(<Rational as Zero>::zero(), |acc, x| acc * &t + x)).collect(),
+        }
+    };
+    // (degree, points of that degree) for the least degree seen
+    let mut best: Option<(usize, Vec<(Rational, Poly)>)> = None;
+    for t in 0..(2 * da.max(db) as i64 + 40) {
+        let g = at(&qa, t).gcd(&at(&qb, t));
+        let k = g.degree();
+        if k == 0 {
+            return 0;
+        }
+        match &mut best {
+            Some((bk, points)) if *bk == k => points.push((Rational::from_integer(t.into()), g)),
+            Some((bk, _)) if *bk < k => continue,
+            _ => best = Some((k, vec![(Rational::from_integer(t.into()), g)])),
+        }
+        let (bk, points) = best.as_ref().expect("set above");
+        let need = (e.clone() * Rational::from_integer((*bk as i64).into())).floor().to_integer();
+        let need = need.to_usize().unwrap_or(usize::MAX).saturating_add(1);
+        if points.len() < need {
+            continue;
+        }
+        let xs: Vec<Rational> = points.iter().map(|(x, _)| x.clone()).collect();
+        let h: Vec<QT> = (0..=*bk)
+            .map(|j| {
+                let ys: Vec<Rational> = points
+                    .iter()
+                    .map(|(_, g)| g.coeffs.get(j).cloned().unwrap_or_else(<Rational as Zero>::zero))
+                    .collect();
+                interpolate_q(&xs, &ys)
+            })
+            .collect();
+        let divides = |p: &[QT]| divide_exactly(p, &h).is_some();
+        return if divides(&qa) && divides(&qb) { *bk } else { 0 };
+    }
+    0
 }
 
 /// The polynomial of degree < len through (x_i, y_i) (Newton form, then
@@ -1221,5 +1293,31 @@ mod tests {
         let b = vec![c(2), c(-3), c(1)];
         let r = rational_norm(&first_subresultant(&a, &b).unwrap().unwrap()).unwrap();
         assert_eq!(sturm::primitive(&r), sturm::primitive(&Poly { coeffs: vec![q(-4, 1), q(1, 1)] }));
+        // the common factor x − 1 is found and proved by division: psc_0
+        // is skipped, and the answer above is unchanged
+        assert_eq!(proved_common_degree(&a, &b), 1);
+    }
+
+    #[test]
+    fn a_common_factor_moving_with_t_is_proved_by_division() {
+        // a = (x − t)²(x + 1) = x³ + (1 − 2t)x² + (t² − 2t)x + t²,
+        // b = (x − t)²(x − 3) = x³ − (3 + 2t)x² + (t² + 6t)x − 3t²:
+        // gcd (x − t)² for every t, so deg gcd = 2 over Q(t)
+        let c = |x: i64| TPoly::int(x);
+        let t = TPoly::variable();
+        let t2 = t.clone() * t.clone();
+        let a = vec![t2.clone(), t2.clone() - c(2) * t.clone(), c(1) - c(2) * t.clone(), c(1)];
+        let b = vec![c(-3) * t2.clone(), t2.clone() + c(6) * t.clone(), c(-3) - c(2) * t.clone(), c(1)];
+        assert_eq!(proved_common_degree(&a, &b), 2);
+        // coprime for all but finitely many t: nothing is claimed
+        // (x² − t and x − 2 meet only at t = 4)
+        let f = vec![-t.clone(), c(0), c(1)];
+        let g = vec![c(-2), c(1)];
+        assert_eq!(proved_common_degree(&f, &g), 0);
+        // (x − t)(x + 1) against (x − t − 1)(x + 1): the common factor
+        // x + 1 only (x − t never meets x − t − 1)
+        let h = vec![-t.clone(), c(1) - t.clone(), c(1)];
+        let k = vec![-t.clone() - c(1), -t.clone(), c(1)];
+        assert_eq!(proved_common_degree(&h, &k), 1);
     }
 }

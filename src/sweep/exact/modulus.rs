@@ -51,7 +51,7 @@ use num_traits::{One, Signed, ToPrimitive, Zero};
 
 use crate::numeric::exact::Poly;
 use crate::numeric::modular::{
-    det_word, eval_word, from_word_values, inv_mod as inv, is_prime, residue, word_mul as mm, Lifted,
+    det_word, eval_word, from_word_values, is_prime, residue, word_inverses, word_mul as mm, Lifted, WordPrime,
 };
 use crate::numeric::{BiPoly, Rational, TPoly};
 
@@ -169,7 +169,7 @@ fn qt_mul(a: &QT, b: &QT) -> QT {
 }
 
 /// p divided by the monic h in Q[t][x], when h divides p exactly.
-fn divide_exactly(p: &[QT], h: &[QT]) -> Option<Vec<QT>> {
+pub(crate) fn divide_exactly(p: &[QT], h: &[QT]) -> Option<Vec<QT>> {
     let (dp, dh) = (p.len() - 1, h.len() - 1);
     if dh > dp {
         return None;
@@ -188,7 +188,7 @@ fn divide_exactly(p: &[QT], h: &[QT]) -> Option<Vec<QT>> {
 }
 
 /// The polynomial of degree < len through (x_i, y_i) over Q.
-fn interpolate_q(x: &[Rational], y: &[Rational]) -> QT {
+pub(crate) fn interpolate_q(x: &[Rational], y: &[Rational]) -> QT {
     let n = x.len();
     let mut dd = y.to_vec();
     for level in 1..n {
@@ -263,7 +263,7 @@ fn without_repeated_factor(p: Vec<QT>) -> Vec<QT> {
 }
 
 /// max over k ≥ 1 of deg_t(c_k)/k, c_k the coefficient of x^{d−k}.
-fn slope(p: &[QT]) -> Rational {
+pub(crate) fn slope(p: &[QT]) -> Rational {
     let d = p.len() - 1;
     let mut e = <Rational as Zero>::zero();
     for k in 1..=d {
@@ -353,11 +353,13 @@ fn power_sums(c: &[u64], k: usize, p: u64) -> Vec<u64> {
     // b_j = coefficient of x^{d−j}
     let b = |j: usize| c[d - j];
     let mut s = vec![0u64; k + 1];
+    let w = WordPrime::new(p);
     for n in 1..=k {
         // p_n + b_1 p_{n−1} + … + b_{min(n−1, d)} p_{n−min} + [n ≤ d] n b_n = 0
         let mut acc = if n <= d { mm(n as u64 % p, b(n), p) } else { 0 };
         for i in 1..=(n - 1).min(d) {
-            acc = (acc + mm(b(i), s[n - i], p)) % p;
+            // one remainder: acc + b·s < p + p² < 2^63
+            acc = w.reduce(acc + b(i) * s[n - i]);
         }
         s[n] = (p - acc) % p;
     }
@@ -368,13 +370,16 @@ fn power_sums(c: &[u64], k: usize, p: u64) -> Vec<u64> {
 fn from_power_sums(q: &[u64], dd: usize, p: u64) -> Vec<u64> {
     let mut e = vec![0u64; dd + 1];
     e[0] = 1;
+    let inverses = word_inverses(dd, p);
+    let w = WordPrime::new(p);
     for k in 1..=dd {
         let mut acc = 0u64;
         for i in 1..=k {
-            let term = mm(e[k - i], q[i], p);
-            acc = if i % 2 == 1 { (acc + term) % p } else { (acc + p - term) % p };
+            // ± e·q with one remainder: acc + (p − e)·q < p + p² < 2^63
+            let ei = if i % 2 == 1 { e[k - i] } else { (p - e[k - i]) % p };
+            acc = w.reduce(acc + ei * q[i]);
         }
-        e[k] = mm(acc, inv(k as u64, p), p);
+        e[k] = mm(acc, inverses[k], p);
     }
     let mut out = vec![0u64; dd + 1];
     for (k, ek) in e.iter().enumerate() {
@@ -391,10 +396,12 @@ fn exterior_square(c: &[u64], p: u64) -> Vec<u64> {
         return vec![1];
     }
     let s = power_sums(c, 2 * dd, p);
-    let half = inv(2, p);
+    let half = p.div_ceil(2); // 2⁻¹ modulo the odd p
+    let w = WordPrime::new(p);
     let mut q = vec![0u64; dd + 1];
     for k in 1..=dd {
-        q[k] = mm((mm(s[k], s[k], p) + p - s[2 * k]) % p, half, p);
+        // (s_k² + p − s_2k)·2⁻¹ with two remainders
+        q[k] = w.mul(w.reduce(s[k] * s[k] + p - s[2 * k]), half);
     }
     from_power_sums(&q, dd, p)
 }
@@ -406,14 +413,17 @@ fn root_squared(c: &[u64], p: u64) -> Vec<u64> {
     let even: Vec<u64> = c.iter().step_by(2).copied().collect();
     let odd: Vec<u64> = c.iter().skip(1).step_by(2).copied().collect();
     let mut g = vec![0u64; d + 1];
+    let w = WordPrime::new(p);
     for (i, &x) in even.iter().enumerate() {
         for (j, &y) in even.iter().enumerate() {
-            g[i + j] = (g[i + j] + mm(x, y, p)) % p;
+            g[i + j] = w.reduce(g[i + j] + x * y);
         }
     }
     for (i, &x) in odd.iter().enumerate() {
+        // − x·y as (p − x)·y: one remainder
+        let minus_x = (p - x) % p;
         for (j, &y) in odd.iter().enumerate() {
-            g[i + j + 1] = (g[i + j + 1] + p - mm(x, y, p)) % p;
+            g[i + j + 1] = w.reduce(g[i + j + 1] + minus_x * y);
         }
     }
     if d % 2 == 1 {
@@ -427,12 +437,15 @@ fn root_squared(c: &[u64], p: u64) -> Vec<u64> {
 /// a mod the monic g (lowest first; the result has g's degree entries).
 fn rem_monic(a: &[u64], g: &[u64], p: u64) -> Vec<u64> {
     let n = g.len() - 1;
+    let w = WordPrime::new(p);
     let mut r = a.to_vec();
     for top in (n..r.len()).rev() {
         let c = r[top];
         if c != 0 {
+            // r −= c·g with one remainder: x + (p − c)·y < p + p² < 2^63
+            let minus_c = p - c;
             for i in 0..n {
-                r[top - n + i] = (r[top - n + i] + p - mm(c, g[i], p)) % p;
+                r[top - n + i] = w.reduce(r[top - n + i] + minus_c * g[i]);
             }
         }
         r[top] = 0;

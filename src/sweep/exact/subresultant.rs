@@ -47,7 +47,7 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 
-use crate::numeric::modular::{det_word, eval_word, from_word_values, mul_mod, pow_mod, residue, Lifted};
+use crate::numeric::modular::{det_word, eval_word, from_word_values, pow_mod, residue, word_mul, Lifted};
 use crate::numeric::{BiPoly, Cyclotomic, Rational, TPoly};
 
 /// An element of Z[ζ_N] as (exponent of ζ_N, integer coefficient) pairs.
@@ -179,7 +179,7 @@ pub(crate) fn norm_values(
                 images.iter().fold(1u64, |acc, (ia, ib)| {
                     let ca: Vec<u64> = ia.iter().map(|c| eval_word(c, t, p)).collect();
                     let cb: Vec<u64> = ib.iter().map(|c| eval_word(c, t, p)).collect();
-                    mul_mod(acc, f(&ca, &cb), p)
+                    word_mul(acc, f(&ca, &cb), p)
                 })
             })
             .collect(),
@@ -217,18 +217,22 @@ fn psc_word(a: &[u64], b: &[u64], j: usize, p: u64) -> u64 {
 /// None when every psc_j vanishes identically (not a pair of polynomials
 /// of positive degree), or the coefficients are not numbers: the caller's
 /// exact path then says why.
+///
+/// `known_zero`: psc_0, ..., psc_{known_zero − 1} are already proved to
+/// vanish identically (`exact::proved_common_degree`); the search starts there.
 pub(crate) fn first_nonzero_psc(
     a: &BiPoly,
     b: &BiPoly,
     conjugates: &[u64],
     bound: &dyn Fn(usize) -> usize,
+    known_zero: usize,
 ) -> Option<Vec<BigInt>> {
     let order = common_order(&[a, b])?;
     let (za, zb) = (integer_zeta_poly(a, order), integer_zeta_poly(b, order));
     let (m, n) = (za.len() - 1, zb.len() - 1);
     let (bits_a, bits_b) = (row_norm_bits(&za), row_norm_bits(&zb));
     let k = conjugates.len();
-    for j in 0..=m.min(n) {
+    for j in known_zero..=m.min(n) {
         let degree = k * bound(j);
         // |coefficient| ≤ M_j^k < 2^{k·((n−j)·bits_a + (m−j)·bits_b) + 1}
         let bits = k as u64 * ((n - j) as u64 * bits_a + (m - j) as u64 * bits_b) + 1;
