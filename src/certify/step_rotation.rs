@@ -102,7 +102,7 @@ fn exact_stencil(scheme: &dyn Scheme, analysis: &Analysis, k: usize, v: usize) -
             let st = st.merged();
             // a spoiled weight (beyond machine integers) equals nothing: the
             // composed rows decide such a scheme
-            if st.terms.iter().any(|(_, w)| w.to_rational().is_none()) {
+            if st.terms.iter().any(|(_, w)| w.is_spoiled()) {
                 return None;
             }
             Some(ExactStencil::Rational(tidy(st.terms)))
