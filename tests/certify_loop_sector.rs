@@ -38,7 +38,7 @@
 //! passes, certificate NOT PROVED at B3), each with the checker's verdict.
 
 use crate::common;
-use common::{check_certificate, check_tampered_certificate, python3_available, subdlab};
+use common::{check_certificate, check_tampered_certificate, python3_available, subdlab, write_sector_certificate};
 use subdlab::certify::tagged_charmap::{certify_tagged_charmap, TaggedCharMapCertificate};
 use subdlab::certify::Verdict;
 use subdlab::charmap::{check_map, CharMapOptions};
@@ -252,17 +252,6 @@ fn cli_proves_loop_k3_and_disproves_k7() {
     assert_eq!(v["certificate"]["sector_criterion"]["verdict"], "disproved");
 }
 
-/// `subdlab charmap SCHEME ARGS --tag boundary --certify --certificate DIR/FILE`.
-fn write_certificate(dir: &std::path::Path, file: &str, scheme: &str, args: &[&str]) -> std::path::PathBuf {
-    let path = dir.join(file);
-    let mut all = vec!["charmap", scheme];
-    all.extend_from_slice(args);
-    all.extend_from_slice(&["--tag", "boundary", "--certify", "--certificate", path.to_str().unwrap()]);
-    let out = subdlab(&all);
-    assert!(out.status.code().is_some_and(|c| c <= 1), "{}", String::from_utf8_lossy(&out.stderr));
-    path
-}
-
 #[test]
 fn the_checker_re_derives_loops_proved_sector_maps_and_agrees_on_the_controls() {
     if !python3_available() {
@@ -278,7 +267,7 @@ fn the_checker_re_derives_loops_proved_sector_maps_and_agrees_on_the_controls() 
         ("blz6.json", &["-n", "6", "-p", "blz=1"][..]),
         ("blz12.json", &["-n", "12", "-p", "blz=1"][..]),
     ] {
-        let (code, text) = check_certificate(&write_certificate(dir.path(), file, "loop", args));
+        let (code, text) = check_certificate(&write_sector_certificate(dir.path(), file, "loop", args));
         assert_eq!(code, 0, "{file}: {text}");
         assert!(text.contains("CERTIFICATE ACCEPTED (tagged PROVED, sector criterion PROVED)"), "{file}: {text}");
         assert!(text.contains("three-direction quartic box spline with"), "{file}: {text}");
@@ -293,7 +282,7 @@ fn the_checker_re_derives_loops_proved_sector_maps_and_agrees_on_the_controls() 
         ("hoppe7.json", "loop", &["-n", "7"][..], "DISPROVED"),
         ("wide3.json", WIDE_CURVE, &["-n", "3"][..], "NOT PROVED"),
     ] {
-        let path = write_certificate(dir.path(), file, scheme, args);
+        let path = write_sector_certificate(dir.path(), file, scheme, args);
         let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
         assert!(doc["parts"].get("sector").is_none(), "{file}");
         assert_eq!(doc["sector_claimed"], claimed, "{file}");
@@ -317,7 +306,7 @@ fn tampered_loop_sector_certificates_are_rejected() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    write_certificate(dir.path(), "hoppe4.json", "loop", &["-n", "4"]);
+    write_sector_certificate(dir.path(), "hoppe4.json", "loop", &["-n", "4"]);
     let tamper = |edit: &dyn Fn(&mut serde_json::Value)| check_tampered_certificate(dir.path(), "hoppe4.json", edit);
     let rejected = |(code, text): (i32, String), why: &str, what: &str| {
         assert_eq!(code, 1, "{what}: {text}");

@@ -40,7 +40,7 @@
 //! triangle host) is `tests/certify_loop_sector.rs`.
 
 use crate::common;
-use common::{check_certificate, check_tampered_certificate, python3_available, subdlab};
+use common::{check_certificate, check_tampered_certificate, python3_available, subdlab, write_sector_certificate};
 use subdlab::certify::tagged_charmap::certify_tagged_charmap;
 use subdlab::certify::Verdict;
 use subdlab::charmap::{check_map, CharMapOptions};
@@ -177,17 +177,6 @@ fn a_boundary_rule_outside_lemma_b3_is_not_proved() {
     }
 }
 
-/// `subdlab charmap catmull-clark ARGS --tag boundary --certify --certificate DIR/FILE`.
-fn write_sector_certificate(dir: &std::path::Path, file: &str, args: &[&str]) -> std::path::PathBuf {
-    let path = dir.join(file);
-    let mut all = vec!["charmap", "catmull-clark"];
-    all.extend_from_slice(args);
-    all.extend_from_slice(&["--tag", "boundary", "--certify", "--certificate", path.to_str().unwrap()]);
-    let out = subdlab(&all);
-    assert!(out.status.code().is_some_and(|c| c <= 1), "{}", String::from_utf8_lossy(&out.stderr));
-    path
-}
-
 #[test]
 fn the_independent_checker_re_derives_proved_sector_maps() {
     if !python3_available() {
@@ -205,7 +194,7 @@ fn the_independent_checker_re_derives_proved_sector_maps() {
         ("blz5.json", &["-n", "5", "-p", "blz=1"][..]),
         ("blz12.json", &["-n", "12", "-p", "blz=1"][..]),
     ] {
-        let (code, text) = check_certificate(&write_sector_certificate(dir.path(), file, args));
+        let (code, text) = check_certificate(&write_sector_certificate(dir.path(), file, "catmull-clark", args));
         assert_eq!(code, 0, "{file}: {text}");
         assert!(text.contains("CERTIFICATE ACCEPTED (tagged PROVED, sector criterion PROVED)"), "{file}: {text}");
         for lemma in ["B1:", "B2:", "B3/B4:", "B5:", "B6:"] {
@@ -228,7 +217,7 @@ fn a_disproved_sector_map_writes_no_sector_part() {
     // Hoppe k = 5: the spectral part holds, the map does not (both
     // eigenvectors vanish on the rays): the document holds the tagged part
     // only, and the checker re-checks that, never the map
-    let path = write_sector_certificate(dir.path(), "hoppe5.json", &["-n", "5"]);
+    let path = write_sector_certificate(dir.path(), "hoppe5.json", "catmull-clark", &["-n", "5"]);
     let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
     assert!(doc["parts"].get("sector").is_none());
     assert_eq!(doc["sector_claimed"], "DISPROVED");
@@ -238,7 +227,7 @@ fn a_disproved_sector_map_writes_no_sector_part() {
     assert!(!text.contains("sector criterion PROVED"), "{text}");
     // Hoppe k = 3's sector part grafted onto it: rejected (its eigenvectors
     // are not k = 5's: the blocks rebuilt from k = 5's rows differ)
-    let donor = write_sector_certificate(dir.path(), "hoppe3.json", &["-n", "3"]);
+    let donor = write_sector_certificate(dir.path(), "hoppe3.json", "catmull-clark", &["-n", "3"]);
     let donor: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&donor).unwrap()).unwrap();
     let (code, text) = check_tampered_certificate(dir.path(), "hoppe5.json", &|d| {
         d["parts"]["sector"] = donor["parts"]["sector"].clone();
@@ -254,7 +243,7 @@ fn tampered_sector_certificates_are_rejected() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    write_sector_certificate(dir.path(), "hoppe3.json", &["-n", "3"]);
+    write_sector_certificate(dir.path(), "hoppe3.json", "catmull-clark", &["-n", "3"]);
     let tamper = |edit: &dyn Fn(&mut serde_json::Value)| check_tampered_certificate(dir.path(), "hoppe3.json", edit);
     let rejected = |(code, text): (i32, String), why: &str, what: &str| {
         assert_eq!(code, 1, "{what}: {text}");

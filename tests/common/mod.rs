@@ -202,6 +202,19 @@ pub fn check_certificate(path: &std::path::Path) -> (i32, String) {
     (out.status.code().unwrap_or(-1), String::from_utf8_lossy(&out.stdout).to_string())
 }
 
+/// `subdlab charmap SCHEME ARGS --tag boundary --certify --certificate
+/// DIR/FILE` (a certified sector map at a boundary vertex); the file's path.
+/// The command must decide (exit 0 or 1), never fail.
+pub fn write_sector_certificate(dir: &std::path::Path, file: &str, scheme: &str, args: &[&str]) -> std::path::PathBuf {
+    let path = dir.join(file);
+    let mut all = vec!["charmap", scheme];
+    all.extend_from_slice(args);
+    all.extend_from_slice(&["--tag", "boundary", "--certify", "--certificate", path.to_str().unwrap()]);
+    let out = subdlab(&all);
+    assert!(out.status.code().is_some_and(|c| c <= 1), "{}", String::from_utf8_lossy(&out.stderr));
+    path
+}
+
 /// `subdlab spectrum ARGS --certify --certificate DIR/FILE`; the file's path.
 pub fn write_spectrum_certificate(dir: &std::path::Path, file: &str, args: &[&str]) -> std::path::PathBuf {
     let path = dir.join(file);
