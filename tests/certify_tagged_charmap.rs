@@ -40,7 +40,10 @@
 //! triangle host) is `tests/certify_loop_sector.rs`.
 
 use crate::common;
-use common::{check_certificate, check_tampered_certificate, python3_available, subdlab, write_sector_certificate};
+use common::{
+    assert_rejected, check_certificate, check_tampered_certificate, python3_available, subdlab,
+    write_sector_certificate,
+};
 use subdlab::certify::tagged_charmap::certify_tagged_charmap;
 use subdlab::certify::Verdict;
 use subdlab::charmap::{check_map, CharMapOptions};
@@ -245,10 +248,7 @@ fn tampered_sector_certificates_are_rejected() {
     let dir = tempfile::tempdir().unwrap();
     write_sector_certificate(dir.path(), "hoppe3.json", "catmull-clark", &["-n", "3"]);
     let tamper = |edit: &dyn Fn(&mut serde_json::Value)| check_tampered_certificate(dir.path(), "hoppe3.json", edit);
-    let rejected = |(code, text): (i32, String), why: &str, what: &str| {
-        assert_eq!(code, 1, "{what}: {text}");
-        assert!(text.contains("CERTIFICATE REJECTED") && text.contains(why), "{what}: {text}");
-    };
+    let rejected = assert_rejected;
     // an eigenvector enclosure shifted: x̃ moved by 10⁻³ in one entry, far
     // outside Y, so Krawczyk's operator leaves the box
     rejected(
@@ -372,9 +372,12 @@ fn the_example_registry_writes_sector_documents_the_checker_accepts() {
         eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
         return;
     }
-    // examples/claims/boundary-blz.toml's certified sector maps: Hoppe
-    // k = 2, 3 and BLZ k = 2..8 PROVED (re-derived), Hoppe k = 5..8
-    // DISPROVED (the tagged part only, never a PROVED sector map)
+    // examples/claims/boundary-blz.toml's certified sector maps, written by
+    // one run of the file: Catmull–Clark Hoppe k = 2, 3 and BLZ k = 2..8
+    // PROVED (re-derived), Hoppe k = 5..8 DISPROVED (the tagged part only,
+    // never a PROVED sector map); Loop Hoppe k = 2..5 and BLZ k = 2..12
+    // PROVED (re-derived), Hoppe k = 6 (spectral part DISPROVED) and
+    // k = 7..9 (the map DISPROVED) without a sector part
     let dir = tempfile::tempdir().unwrap();
     let claims = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/claims/boundary-blz.toml");
     let out = subdlab(&["verify", "--claims", claims, "--certificates", dir.path().to_str().unwrap()]);
@@ -385,6 +388,18 @@ fn the_example_registry_writes_sector_documents_the_checker_accepts() {
         (
             "cc.boundary.hoppe-collapse.certified",
             5..=8,
+            "(tagged PROVED; sector criterion not re-checked (claimed DISPROVED))",
+        ),
+        ("loop.boundary.hoppe-map.certified", 2..=5, "(tagged PROVED, sector criterion PROVED)"),
+        ("loop.boundary.blz-map.certified", 2..=12, "(tagged PROVED, sector criterion PROVED)"),
+        (
+            "loop.boundary.hoppe-defective.map.certified",
+            6..=6,
+            "(tagged DISPROVED; sector criterion not re-checked (claimed DISPROVED))",
+        ),
+        (
+            "loop.boundary.hoppe-collapse.certified",
+            7..=9,
             "(tagged PROVED; sector criterion not re-checked (claimed DISPROVED))",
         ),
     ];

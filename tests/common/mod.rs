@@ -225,6 +225,13 @@ pub fn write_spectrum_certificate(dir: &std::path::Path, file: &str, args: &[&st
     path
 }
 
+/// The checker's answer `(code, text)` on a tampered document is a
+/// rejection (exit 1) whose reason contains `why`; `what` names the edit.
+pub fn assert_rejected((code, text): (i32, String), why: &str, what: &str) {
+    assert_eq!(code, 1, "{what}: {text}");
+    assert!(text.contains("CERTIFICATE REJECTED") && text.contains(why), "{what}: {text}");
+}
+
 /// A copy of the certificate `dir/file` with `edit` applied, written to
 /// `dir/bad-file` and checked: the checker's exit status and output.
 pub fn check_tampered_certificate(
