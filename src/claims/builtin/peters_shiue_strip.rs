@@ -3,12 +3,15 @@
 //! defective eigenvalue, the block triangular form of V⁻¹ S⁺ V, the
 //! 1/2-eigenvectors of S⁺ and the joint spectral radius bound.
 
+use std::sync::Arc;
+
 use num_traits::Zero;
 
 use crate::claims::builtin::data::{
     exact, field, int_in, ints, lattice_node, not_decided, small_window, text, MAX_DATA_WINDOW,
 };
 use crate::claims::verdict::Finding;
+use crate::engine::memo::Memo;
 use crate::error::Error;
 use crate::numeric::exact::q;
 use crate::numeric::Rational;
@@ -23,9 +26,41 @@ struct Strip {
     window: String,
 }
 
+/// The strip claims' shared work. The four Lemma 3.3 claims and the
+/// transition-curve claim of `claims/peters-shiue.toml` read one strip (the
+/// same scheme, node, window and shift), and its exact eigenvectors and the
+/// 2^11 products of the JSR bound are most of each claim's time: each is made
+/// once per data and shared. Keyed by the data without the fields that only
+/// say what to compare (`length` and `bound` do not change the strip).
+static STRIPS: Memo<Strip> = Memo::new(64 << 20);
+static EIGENBASES: Memo<Vec<Vec<Rational>>> = Memo::new(64 << 20);
+static JSR: Memo<crate::spectrum::strip::JsrBounds> = Memo::new(1 << 20);
+
+fn strip_key(data: &toml::Value) -> String {
+    let mut table = data.as_table().cloned().unwrap_or_default();
+    table.remove("length");
+    table.remove("bound");
+    toml::Value::Table(table).to_string()
+}
+
+/// Bytes a matrix of rationals holds, about (for the memo's budget).
+fn rational_bytes(rows: &[Vec<Rational>]) -> usize {
+    rows.iter()
+        .map(|r| r.iter().map(|x| 32 + 8 * (x.numer().bits() + x.denom().bits()) as usize / 64).sum::<usize>())
+        .sum()
+}
+
+fn strip(data: &toml::Value) -> Result<Arc<Strip>, Error> {
+    STRIPS.get_or_try_insert(
+        strip_key(data),
+        || make_strip(data),
+        |st| rational_bytes(&st.s) + rational_bytes(&st.s_plus),
+    )
+}
+
 /// S (window to the same positions) and S⁺ (shifted by `shift`) on the window
 /// [x0, x1] × [y0, y1] of the planar lattice around the node `faces`.
-fn strip(data: &toml::Value) -> Result<Strip, Error> {
+fn make_strip(data: &toml::Value) -> Result<Strip, Error> {
     use crate::spectrum::strip::window_matrices;
     let (scheme, config, spokes) = lattice_node(data)?;
     let w = small_window(data, MAX_DATA_WINDOW)?;
@@ -74,7 +109,11 @@ pub fn strip_defective(data: &toml::Value) -> Result<Finding, Error> {
     ))
 }
 
-fn eigenbasis(st: &Strip) -> Result<Vec<Vec<Rational>>, Error> {
+fn eigenbasis(data: &toml::Value, st: &Strip) -> Result<Arc<Vec<Vec<Rational>>>, Error> {
+    EIGENBASES.get_or_try_insert(strip_key(data), || make_eigenbasis(st), |b| rational_bytes(b))
+}
+
+fn make_eigenbasis(st: &Strip) -> Result<Vec<Vec<Rational>>, Error> {
     let basis = crate::spectrum::strip::exact_eigenvectors(&st.s, &st.leading);
     if basis.len() != st.leading.len() {
         return Err(Error::Claim(format!(
@@ -92,7 +131,7 @@ fn eigenbasis(st: &Strip) -> Result<Vec<Vec<Rational>>, Error> {
 /// (Q⁺) is of the remaining size.
 pub fn strip_structure(data: &toml::Value) -> Result<Finding, Error> {
     let st = strip(data)?;
-    let basis = eigenbasis(&st)?;
+    let basis = eigenbasis(data, &st)?;
     let k = basis.len();
     let Some(a) = crate::spectrum::strip::action_on(&st.s_plus, &basis) else {
         return Ok(Finding::new(
@@ -140,7 +179,7 @@ pub fn strip_structure(data: &toml::Value) -> Result<Finding, Error> {
 /// the eigenvector is v_i − 2 m_i v0; v_i + m_i v0 is one only where m_i = 0.
 pub fn strip_shifted_eigenvectors(data: &toml::Value) -> Result<Finding, Error> {
     let st = strip(data)?;
-    let basis = eigenbasis(&st)?;
+    let basis = eigenbasis(data, &st)?;
     let a = crate::spectrum::strip::action_on(&st.s_plus, &basis)
         .ok_or_else(|| Error::Undecided("the leading eigenvectors are not invariant under S⁺".into()))?;
     let half = q(1, 2);
@@ -177,19 +216,26 @@ pub fn strip_shifted_eigenvectors(data: &toml::Value) -> Result<Finding, Error> 
 pub fn strip_jsr(data: &toml::Value) -> Result<Finding, Error> {
     use crate::spectrum::strip::{jsr_bounds, orthogonal_complement, to_f64};
     let st = strip(data)?;
-    let basis = eigenbasis(&st)?;
+    let basis = eigenbasis(data, &st)?;
     let n = st.s.len();
     if crate::spectrum::strip::action_on(&st.s_plus, &basis).is_none() {
         return Err(Error::Undecided("the leading eigenvectors are not invariant under S⁺: Q⁺ is not defined".into()));
     }
     let length = int_in(data, "length", 1, 16)? as usize;
     let bound = crate::numeric::Weight::to_f64(&exact(text(data, "bound")?)?);
-    let w = faer::Mat::from_fn(n, basis.len(), |i, j| crate::numeric::Weight::to_f64(&basis[j][i]));
-    let c = orthogonal_complement(&w)?;
-    let (s, sp) = (to_f64(&st.s), to_f64(&st.s_plus));
-    let q43 = c.transpose() * &s * &c;
-    let qp = c.transpose() * &sp * &c;
-    let b = jsr_bounds(&[q43, qp], length, 4)?;
+    let bounds = JSR.get_or_try_insert(
+        format!("{} length {length}", strip_key(data)),
+        || {
+            let w = faer::Mat::from_fn(n, basis.len(), |i, j| crate::numeric::Weight::to_f64(&basis[j][i]));
+            let c = orthogonal_complement(&w)?;
+            let (s, sp) = (to_f64(&st.s), to_f64(&st.s_plus));
+            let q43 = c.transpose() * &s * &c;
+            let qp = c.transpose() * &sp * &c;
+            jsr_bounds(&[q43, qp], length, 4)
+        },
+        |b| 64 + 8 * b.lower_word.len(),
+    )?;
+    let b = &*bounds;
     let word: Vec<&str> = b.lower_word.iter().rev().map(|&k| if k == 0 { "Q43" } else { "Q+" }).collect();
     let finding = Finding::new(
         b.upper < bound,
