@@ -145,14 +145,7 @@ fn reduce(mut p: Vec<BigInt>, phi: &Phi) -> Vec<BigInt> {
 /// would allocate on every step (it was a quarter of an exact row's cost).
 fn content_gcd(d: &BigInt, cs: &[BigInt]) -> BigInt {
     let Some(mut g) = d.magnitude().to_u64() else {
-        let mut g = d.clone();
-        for c in cs {
-            if g.is_one() {
-                break;
-            }
-            g = g.gcd(c);
-        }
-        return g;
+        return super::content::content(std::iter::once(d).chain(cs));
     };
     for c in cs {
         if g <= 1 {

@@ -522,7 +522,7 @@ pub fn roots_inside_disc(p: &Poly, r: &Rational) -> bool {
         // h_k = f_d·f_{k+1} − f_0·f_{d−k−1}, k = 0..d−1: f_d² times the
         // monic recursion's step, whatever f_d's sign
         let mut h: Vec<BigInt> = (1..=d).map(|k| &lead * &f[k] - &c * &f[d - k]).collect();
-        let g = h.iter().fold(BigInt::zero(), |g, x| if g.is_one() { g } else { num_integer::Integer::gcd(&g, x) });
+        let g = super::content::content(&h);
         if !g.is_zero() && !g.is_one() {
             h.iter_mut().for_each(|x| *x /= &g);
         }
@@ -581,7 +581,7 @@ pub fn roots_outside_disc(p: &Poly, r: &Rational) -> Option<usize> {
             sign = -sign;
         }
         let mut h: Vec<BigInt> = (1..=d).map(|k| &lead * &f[k] - &c * &f[d - k]).collect();
-        let g = h.iter().fold(BigInt::zero(), |g, x| if g.is_one() { g } else { num_integer::Integer::gcd(&g, x) });
+        let g = super::content::content(&h);
         if !g.is_zero() && !g.is_one() {
             h.iter_mut().for_each(|x| *x /= &g);
         }

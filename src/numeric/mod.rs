@@ -4,6 +4,7 @@
 //! rational recognition, and exact polynomial/matrix algebra.
 
 pub mod berkowitz;
+pub mod content;
 pub mod cyclotomic;
 pub mod cyclotomic_element;
 pub mod exact;

@@ -133,7 +133,7 @@ fn reduce(f: &[BigInt], p: u64) -> Vec<u64> {
 
 /// The coefficients divided by their gcd, leading coefficient positive.
 pub fn primitive_part(f: &[BigInt]) -> Vec<BigInt> {
-    let g = f.iter().fold(BigInt::zero(), |g, c| g.gcd(c));
+    let g = super::content::content(f);
     if g.is_zero() {
         return f.to_vec();
     }

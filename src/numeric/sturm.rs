@@ -26,13 +26,7 @@ pub fn primitive(p: &Poly) -> Poly {
     };
     // the content, with its sign from the leading coefficient's scaling
     // unchanged (a gcd is nonnegative); 1 ends the search
-    let mut g = BigInt::zero();
-    for c in &ints {
-        g = g.gcd(c);
-        if g.is_one() {
-            break;
-        }
-    }
+    let g = super::content::content(&ints);
     if g.is_zero() {
         return p;
     }
