@@ -72,4 +72,32 @@ mod tests {
             assert_eq!(content(&cs), want, "{cs:?}");
         }
     }
+
+    /// The same on pseudo-random vectors: a random common factor of 0 to 4
+    /// words times random cofactors of 0 to 4 words, signs mixed, zeros
+    /// among them (a fixed linear congruential generator: reproducible).
+    #[test]
+    fn content_equals_the_fold_on_random_vectors() {
+        fn next(state: &mut u64) -> u64 {
+            *state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            *state
+        }
+        fn random_big(words: u64, state: &mut u64) -> BigInt {
+            (0..words).fold(BigInt::zero(), |acc, _| (acc << 64u32) + BigInt::from(next(state)))
+        }
+        let mut state: u64 = 0x9e37_79b9_7f4a_7c15;
+        for _ in 0..300 {
+            let factor_words = next(&mut state) % 5;
+            let factor: BigInt = random_big(factor_words, &mut state) + BigInt::one();
+            let len = (next(&mut state) % 8) as usize;
+            let mut cs: Vec<BigInt> = Vec::new();
+            for _ in 0..len {
+                let words = next(&mut state) % 5;
+                let c: BigInt = &factor * random_big(words, &mut state);
+                cs.push(if next(&mut state) % 2 == 0 { -c } else { c });
+            }
+            let want = cs.iter().fold(BigInt::zero(), |g, c| g.gcd(c));
+            assert_eq!(content(&cs), want, "{cs:?}");
+        }
+    }
 }
