@@ -149,8 +149,10 @@ impl HalfEdges {
                 *at += 1;
             }
         }
+        // each row was filled in face order, so a stable sort by end vertex
+        // orders it by (end vertex, face, corner) comparing one key
         for v in 0..num_vertices {
-            out[start[v] as usize..start[v + 1] as usize].sort_unstable();
+            out[start[v] as usize..start[v + 1] as usize].sort_by_key(|e| e.0);
         }
         HalfEdges { start, out }
     }
