@@ -117,6 +117,13 @@ struct HalfEdges {
     out: Vec<(u32, u32, u32)>,
 }
 
+/// Each corner's successor in the face cycle, in corner order (the last
+/// corner's is the first): a face's sides without an integer division per
+/// corner, in the loops that every new mesh runs over all its corners.
+fn cyclic_next(face: &[VertexId]) -> impl Iterator<Item = &VertexId> {
+    face.iter().skip(1).chain(face.first())
+}
+
 /// `x` as a stored id (see [`HalfEdges`]).
 fn small(x: usize) -> u32 {
     u32::try_from(x).expect("a mesh has fewer than 2^32 vertices, faces and corners")
@@ -143,9 +150,9 @@ impl HalfEdges {
         let mut out = vec![(0, 0, 0); total as usize];
         for (fi, face) in faces.iter().enumerate() {
             let f = small(fi);
-            for (k, &a) in face.iter().enumerate() {
+            for (k, (&a, &b)) in face.iter().zip(cyclic_next(face)).enumerate() {
                 let at = &mut start[a + 1];
-                out[*at as usize] = (small(face[(k + 1) % face.len()]), f, k as u32);
+                out[*at as usize] = (small(b), f, k as u32);
                 *at += 1;
             }
         }
@@ -316,10 +323,10 @@ impl PolyMesh {
             if face.len() < 3 {
                 return Some(MeshError::DegenerateFace { face: fi });
             }
-            face.iter().enumerate().find_map(|(k, &a)| {
+            face.iter().zip(cyclic_next(face)).find_map(|(&a, &b)| {
                 if a >= num_vertices {
                     Some(MeshError::BadIndex { face: fi, index: a })
-                } else if a == face[(k + 1) % face.len()] {
+                } else if a == b {
                     Some(MeshError::DegenerateFace { face: fi })
                 } else {
                     None
@@ -535,8 +542,7 @@ impl PolyMesh {
     pub fn edges(&self) -> Vec<(VertexId, VertexId)> {
         let mut out = Vec::new();
         for face in &self.faces {
-            for k in 0..face.len() {
-                let (a, b) = (face[k], face[(k + 1) % face.len()]);
+            for (&a, &b) in face.iter().zip(cyclic_next(face)) {
                 if self.lists_edge(a, b) {
                     out.push((a, b));
                 }
@@ -566,8 +572,7 @@ impl PolyMesh {
         let mut side_edge = vec![usize::MAX; sides];
         let mut edges = Vec::new();
         for (f, face) in self.faces.iter().enumerate() {
-            for k in 0..face.len() {
-                let (a, b) = (face[k], face[(k + 1) % face.len()]);
+            for (k, (&a, &b)) in face.iter().zip(cyclic_next(face)).enumerate() {
                 if self.lists_edge(a, b) {
                     side_edge[face_start[f] + k] = edges.len();
                     edges.push((a, b));
@@ -575,9 +580,8 @@ impl PolyMesh {
             }
         }
         for (f, face) in self.faces.iter().enumerate() {
-            for k in 0..face.len() {
+            for (k, (&a, &b)) in face.iter().zip(cyclic_next(face)).enumerate() {
                 if side_edge[face_start[f] + k] == usize::MAX {
-                    let (a, b) = (face[k], face[(k + 1) % face.len()]);
                     let (g, kg) = self.half_edges.get(b, a).expect("a side that does not list its edge has a twin");
                     side_edge[face_start[f] + k] = side_edge[face_start[g] + kg];
                 }
