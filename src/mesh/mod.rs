@@ -7,5 +7,5 @@ pub mod polymesh;
 pub mod tags;
 
 pub use lattice::{Chart, LatticeCoord, SectorKind};
-pub use polymesh::{FaceId, IdMap, IdSet, PolyMesh, VertexId};
+pub use polymesh::{EdgeNumbering, FaceId, IdMap, IdSet, PolyMesh, VertexId};
 pub use tags::{Tags, VertexTag};

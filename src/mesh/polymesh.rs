@@ -103,38 +103,81 @@ pub(crate) fn corner_offsets(num_vertices: usize, faces: &[Vec<VertexId>]) -> Ve
 /// group, and read with a scan or a binary search, this is several times
 /// cheaper than a hash map keyed by vertex pairs, and building the meshes of
 /// each refinement level is a large part of analysing a high valence.
+///
+/// Ids are stored as `u32` (12 bytes a half-edge instead of 24): the rows of
+/// every refined mesh are written once and mostly read a little, so their
+/// size (fresh memory touched, page faults) is much of what they cost. A
+/// mesh has far fewer than 2³² vertices and faces (refinement stops at
+/// `refine::mesh::MAX_REFINED_FACES`); more is refused with a panic rather
+/// than truncated.
 #[derive(Clone, Debug, Default)]
 struct HalfEdges {
-    start: Vec<usize>,
+    start: Vec<u32>,
     /// (end vertex b, face, index of a in that face)
-    out: Vec<(VertexId, FaceId, usize)>,
+    out: Vec<(u32, u32, u32)>,
+}
+
+/// Each corner's successor in the face cycle, in corner order (the last
+/// corner's is the first): a face's sides without an integer division per
+/// corner, in the loops that every new mesh runs over all its corners.
+fn cyclic_next(face: &[VertexId]) -> impl Iterator<Item = &VertexId> {
+    face.iter().skip(1).chain(face.first())
+}
+
+/// `x` as a stored id (see [`HalfEdges`]).
+fn small(x: usize) -> u32 {
+    u32::try_from(x).expect("a mesh has fewer than 2^32 vertices, faces and corners")
 }
 
 impl HalfEdges {
     /// Every corner of `faces` as a half-edge (indices must be valid).
     fn new(num_vertices: usize, faces: &[Vec<VertexId>]) -> HalfEdges {
-        let start = corner_offsets(num_vertices, faces);
-        let mut fill = start.clone();
-        let mut out = vec![(0, 0, 0); start[num_vertices]];
-        for (fi, face) in faces.iter().enumerate() {
-            for (k, &a) in face.iter().enumerate() {
-                out[fill[a]] = (face[(k + 1) % face.len()], fi, k);
-                fill[a] += 1;
+        // start[a + 1] counts a's corners, then holds where a's row starts,
+        // then (advanced while filling) where it ends, which is where a + 1's
+        // starts: one array, no cursor copy
+        let mut start = vec![0u32; num_vertices + 1];
+        for face in faces {
+            for &a in face {
+                start[a + 1] += 1;
             }
         }
+        let mut total = 0u32;
+        for count in &mut start[1..] {
+            let c = *count;
+            *count = total;
+            total = total.checked_add(c).expect("a mesh has fewer than 2^32 corners");
+        }
+        let mut out = vec![(0, 0, 0); total as usize];
+        for (fi, face) in faces.iter().enumerate() {
+            let f = small(fi);
+            for (k, (&a, &b)) in face.iter().zip(cyclic_next(face)).enumerate() {
+                let at = &mut start[a + 1];
+                out[*at as usize] = (small(b), f, k as u32);
+                *at += 1;
+            }
+        }
+        // each row was filled in face order, so a stable sort by end vertex
+        // orders it by (end vertex, face, corner) comparing one key
         for v in 0..num_vertices {
-            out[start[v]..start[v + 1]].sort_unstable();
+            out[start[v] as usize..start[v + 1] as usize].sort_by_key(|e| e.0);
         }
         HalfEdges { start, out }
+    }
+
+    /// The half-edges leaving `a` (empty for an unknown vertex).
+    fn row(&self, a: VertexId) -> &[(u32, u32, u32)] {
+        match (self.start.get(a), self.start.get(a + 1)) {
+            (Some(&s), Some(&e)) => &self.out[s as usize..e as usize],
+            _ => &[],
+        }
     }
 
     /// A half-edge that two faces (or one face twice) use in the same
     /// direction: the one whose second use comes first in face order.
     fn first_repeated(&self) -> Option<MeshError> {
-        let mut first: Option<(FaceId, usize, VertexId, VertexId)> = None;
+        let mut first: Option<(u32, u32, VertexId, u32)> = None;
         for a in 0..self.start.len() - 1 {
-            let group = &self.out[self.start[a]..self.start[a + 1]];
-            for pair in group.windows(2) {
+            for pair in self.row(a).windows(2) {
                 // sorted by (b, face, corner): the later use is the second
                 if pair[0].0 == pair[1].0 {
                     let (b, f, k) = pair[1];
@@ -144,17 +187,57 @@ impl HalfEdges {
                 }
             }
         }
-        first.map(|(_, _, a, b)| MeshError::NonManifoldEdge { a, b })
+        first.map(|(_, _, a, b)| MeshError::NonManifoldEdge { a, b: b as usize })
     }
 
     fn get(&self, a: VertexId, b: VertexId) -> Option<(FaceId, usize)> {
-        let group = &self.out[*self.start.get(a)?..*self.start.get(a + 1)?];
+        let group = self.row(a);
+        let b = u32::try_from(b).ok()?;
         let found = if group.len() <= 16 {
             group.iter().find(|e| e.0 == b)
         } else {
             group.binary_search_by_key(&b, |e| e.0).ok().map(|i| &group[i])
         };
-        found.map(|&(_, f, k)| (f, k))
+        found.map(|&(_, f, k)| (f as usize, k as usize))
+    }
+
+    /// The first corner of `a` in face order (face, index of a in it), where
+    /// its fan walk starts; `None` for a vertex of no face.
+    fn first_corner(&self, a: VertexId) -> Option<(FaceId, usize)> {
+        self.row(a).iter().map(|&(_, f, k)| (f, k)).min().map(|(f, k)| (f as usize, k as usize))
+    }
+}
+
+/// The undirected edges of a mesh in [`PolyMesh::edges`] order, and for
+/// every face side the number of its edge in that list: a split gives each
+/// edge its new vertices in edge order and finds them again from the faces
+/// on both sides by index, where a hash map keyed by vertex pairs cost a
+/// large part of refining the big meshes of discovery and the nets.
+#[derive(Clone, Debug)]
+pub struct EdgeNumbering {
+    /// the edges, each once, as [`PolyMesh::edges`] lists them
+    pub edges: Vec<(VertexId, VertexId)>,
+    /// where the sides of face f start in `side_edge` (compressed rows)
+    face_start: Vec<usize>,
+    /// per face side (side k of face f runs from corner k to corner k + 1)
+    /// the number of its edge
+    side_edge: Vec<usize>,
+}
+
+impl EdgeNumbering {
+    /// The number of the edge on side k of face f (from its corner k to
+    /// corner k + 1; k below the face's size).
+    pub fn side(&self, f: FaceId, k: usize) -> usize {
+        debug_assert!(self.face_start[f] + k < self.face_start[f + 1]);
+        self.side_edge[self.face_start[f] + k]
+    }
+
+    /// The number of the edge on side k of face f, and whether the edge
+    /// list has it starting at `from` (one end of that side): for splits
+    /// that make new vertices per edge direction.
+    pub fn side_from(&self, f: FaceId, k: usize, from: VertexId) -> (usize, bool) {
+        let e = self.side(f, k);
+        (e, self.edges[e].0 == from)
     }
 }
 
@@ -162,10 +245,9 @@ impl HalfEdges {
 pub struct PolyMesh {
     faces: Vec<Vec<VertexId>>,
     num_vertices: usize,
-    /// half-edge (a -> b) -> (face, index of a in that face)
+    /// half-edge (a -> b) -> (face, index of a in that face); also each
+    /// vertex's first corner in face order, where walks around it start
     half_edges: HalfEdges,
-    /// one face corner per vertex, to start walks around it
-    vertex_corner: Vec<Option<(FaceId, usize)>>,
     /// The fan of each vertex as (face, corner) pairs, walked on first use
     /// (None inside: an open fan): rules ask for the fan of a high-valence
     /// centre once per face or edge around it, and rebuilding it by half-edge
@@ -241,10 +323,10 @@ impl PolyMesh {
             if face.len() < 3 {
                 return Some(MeshError::DegenerateFace { face: fi });
             }
-            face.iter().enumerate().find_map(|(k, &a)| {
+            face.iter().zip(cyclic_next(face)).find_map(|(&a, &b)| {
                 if a >= num_vertices {
                     Some(MeshError::BadIndex { face: fi, index: a })
-                } else if a == face[(k + 1) % face.len()] {
+                } else if a == b {
                     Some(MeshError::DegenerateFace { face: fi })
                 } else {
                     None
@@ -259,19 +341,10 @@ impl PolyMesh {
         if let Some(e) = half_edges.first_repeated().or(bad) {
             return Err(e);
         }
-        let mut vertex_corner = vec![None; num_vertices];
-        for (fi, face) in faces.iter().enumerate() {
-            for (k, &a) in face.iter().enumerate() {
-                if vertex_corner[a].is_none() {
-                    vertex_corner[a] = Some((fi, k));
-                }
-            }
-        }
         Ok(PolyMesh {
             faces,
             num_vertices,
             half_edges,
-            vertex_corner,
             fans: (0..num_vertices).map(|_| OnceLock::new()).collect(),
             incident: OnceLock::new(),
             every_face_has_point: false,
@@ -289,7 +362,8 @@ impl PolyMesh {
         if points.len() != self.faces.len() {
             return Err(Error::Input(format!("{} face point entries for {} faces", points.len(), self.faces.len())));
         }
-        if let Some(&v) = points.iter().flatten().find(|&&v| v >= self.num_vertices || self.vertex_corner[v].is_some())
+        if let Some(&v) =
+            points.iter().flatten().find(|&&v| v >= self.num_vertices || self.half_edges.first_corner(v).is_some())
         {
             return Err(Error::Input(format!("face point {v} is missing or is a corner of a face")));
         }
@@ -327,7 +401,7 @@ impl PolyMesh {
                     )))
                 }
                 None => {
-                    if self.vertex_corner[v].is_some() {
+                    if self.half_edges.first_corner(v).is_some() {
                         return Err(Error::Input(format!(
                             "a regular-lattice scheme needs a closed mesh; vertex {} is on the boundary",
                             v + 1
@@ -468,14 +542,52 @@ impl PolyMesh {
     pub fn edges(&self) -> Vec<(VertexId, VertexId)> {
         let mut out = Vec::new();
         for face in &self.faces {
-            for k in 0..face.len() {
-                let (a, b) = (face[k], face[(k + 1) % face.len()]);
-                if self.half_edges.get(b, a).is_none() || a < b {
+            for (&a, &b) in face.iter().zip(cyclic_next(face)) {
+                if self.lists_edge(a, b) {
                     out.push((a, b));
                 }
             }
         }
         out
+    }
+
+    /// Whether [`Self::edges`] lists the edge {a, b} as the half-edge
+    /// a -> b (a face holds a -> b): when its twin is missing or a < b.
+    fn lists_edge(&self, a: VertexId, b: VertexId) -> bool {
+        a < b || self.half_edges.get(b, a).is_none()
+    }
+
+    /// [`Self::edges`] with, for every face side, the number of its edge
+    /// in that list (see [`EdgeNumbering`]).
+    pub fn edge_numbering(&self) -> EdgeNumbering {
+        let mut face_start = Vec::with_capacity(self.faces.len() + 1);
+        let mut sides = 0;
+        for face in &self.faces {
+            face_start.push(sides);
+            sides += face.len();
+        }
+        face_start.push(sides);
+        // the sides that list their edge are numbered in face order, as
+        // `edges` lists them; every other side is the twin of one of those
+        let mut side_edge = vec![usize::MAX; sides];
+        let mut edges = Vec::new();
+        for (f, face) in self.faces.iter().enumerate() {
+            for (k, (&a, &b)) in face.iter().zip(cyclic_next(face)).enumerate() {
+                if self.lists_edge(a, b) {
+                    side_edge[face_start[f] + k] = edges.len();
+                    edges.push((a, b));
+                }
+            }
+        }
+        for (f, face) in self.faces.iter().enumerate() {
+            for (k, (&a, &b)) in face.iter().zip(cyclic_next(face)).enumerate() {
+                if side_edge[face_start[f] + k] == usize::MAX {
+                    let (g, kg) = self.half_edges.get(b, a).expect("a side that does not list its edge has a twin");
+                    side_edge[face_start[f] + k] = side_edge[face_start[g] + kg];
+                }
+            }
+        }
+        EdgeNumbering { edges, face_start, side_edge }
     }
 
     /// True when the edge {a, b} has a face on both sides.
@@ -511,7 +623,7 @@ impl PolyMesh {
     }
 
     fn walk_fan(&self, v: VertexId) -> Fan {
-        let (f0, k0) = self.vertex_corner[v]?;
+        let (f0, k0) = self.half_edges.first_corner(v)?;
         let mut fan = Vec::new();
         let (mut f, mut k) = (f0, k0);
         loop {
@@ -545,7 +657,10 @@ impl PolyMesh {
     /// from a cache built for all vertices at the first call).
     pub fn incident_faces(&self, v: VertexId) -> &[FaceId] {
         let all = self.incident.get_or_init(|| {
-            let mut out = vec![Vec::new(); self.num_vertices];
+            // sized to the corners (as `vertex_faces`): no growing, and the
+            // boxed slices below reuse the allocations
+            let offsets = corner_offsets(self.num_vertices, &self.faces);
+            let mut out: Vec<Vec<FaceId>> = offsets.windows(2).map(|w| Vec::with_capacity(w[1] - w[0])).collect();
             for (fi, face) in self.faces.iter().enumerate() {
                 for &c in face {
                     if out[c].last() != Some(&fi) {
@@ -560,7 +675,10 @@ impl PolyMesh {
 
     /// For every vertex, the list of faces incident to it.
     pub fn vertex_faces(&self) -> Vec<Vec<FaceId>> {
-        let mut out = vec![Vec::new(); self.num_vertices];
+        // each list sized to its corners first: growing them one face at a
+        // time was most of the cost on the nets' large meshes
+        let offsets = corner_offsets(self.num_vertices, &self.faces);
+        let mut out: Vec<Vec<FaceId>> = offsets.windows(2).map(|w| Vec::with_capacity(w[1] - w[0])).collect();
         for (fi, face) in self.faces.iter().enumerate() {
             for &v in face {
                 out[v].push(fi);
@@ -651,5 +769,83 @@ mod tag_tests {
         assert_eq!(m.vertex_tag(1), VertexTag::Corner);
         let t = m.tags.as_ref().unwrap().renumbered(&[1, 4]);
         assert!(t.is_sharp(0, 1) && t.sharp_edges().len() == 1 && t.corners().is_empty());
+    }
+}
+
+#[cfg(test)]
+mod edge_tests {
+    use super::*;
+
+    /// Meshes with boundaries, mixed face sizes and a closed one: a 3 x 2
+    /// grid of quads with its first quad split into two triangles, and the
+    /// cube.
+    fn meshes() -> Vec<PolyMesh> {
+        // grid vertex (i, j) is 4 j + i, i in 0..4, j in 0..3
+        let at = |i: usize, j: usize| 4 * j + i;
+        let mut grid = vec![vec![at(0, 0), at(1, 0), at(1, 1)], vec![at(0, 0), at(1, 1), at(0, 1)]];
+        for j in 0..2 {
+            for i in 0..3 {
+                if (i, j) != (0, 0) {
+                    grid.push(vec![at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)]);
+                }
+            }
+        }
+        let cube = vec![
+            vec![0, 3, 2, 1],
+            vec![4, 5, 6, 7],
+            vec![0, 1, 5, 4],
+            vec![1, 2, 6, 5],
+            vec![2, 3, 7, 6],
+            vec![3, 0, 4, 7],
+        ];
+        vec![PolyMesh::new(12, grid).unwrap(), PolyMesh::new(8, cube).unwrap()]
+    }
+
+    /// The numbering lists the edges `edges` lists, and every face side's
+    /// number names the edge between its two corners (either way round);
+    /// the two sides of an interior edge share the number.
+    #[test]
+    fn every_side_finds_its_edge_by_number() {
+        for m in meshes() {
+            let numbering = m.edge_numbering();
+            assert_eq!(numbering.edges, m.edges());
+            let mut sides_per_edge = vec![0; numbering.edges.len()];
+            for (f, face) in m.faces().iter().enumerate() {
+                for k in 0..face.len() {
+                    let (a, b) = (face[k], face[(k + 1) % face.len()]);
+                    let e = numbering.side(f, k);
+                    assert!(numbering.edges[e] == (a, b) || numbering.edges[e] == (b, a), "face {f} side {k}");
+                    assert_eq!(numbering.side_from(f, k, a), (e, numbering.edges[e].0 == a));
+                    assert_eq!(numbering.side_from(f, k, b).1, numbering.edges[e].0 == b);
+                    sides_per_edge[e] += 1;
+                }
+            }
+            for (e, &(a, b)) in numbering.edges.iter().enumerate() {
+                let expected = if m.is_interior_edge(a, b) { 2 } else { 1 };
+                assert_eq!(sides_per_edge[e], expected, "edge {a}-{b}");
+            }
+        }
+    }
+
+    /// A fan starts at the vertex's first corner in face order, and every
+    /// half-edge is found in the face that holds it, at the right corner.
+    #[test]
+    fn fans_start_at_the_first_corner_and_half_edges_are_found() {
+        for m in meshes() {
+            for v in 0..m.num_vertices() {
+                let first =
+                    m.faces().iter().enumerate().find_map(|(f, face)| Some((f, face.iter().position(|&c| c == v)?)));
+                if let Some(fan) = m.fan_corners(v) {
+                    assert_eq!(Some(fan[0]), first, "vertex {v}");
+                }
+            }
+            for (f, face) in m.faces().iter().enumerate() {
+                for k in 0..face.len() {
+                    assert_eq!(m.half_edge(face[k], face[(k + 1) % face.len()]), Some((f, k)));
+                }
+            }
+            assert_eq!(m.half_edge(0, m.num_vertices()), None);
+            assert_eq!(m.half_edge(m.num_vertices(), 0), None);
+        }
     }
 }

@@ -304,18 +304,18 @@ impl PatchTopology {
                 1 => (self.base(), &self.region0),
                 _ => (self.mesh_after(&levels, i - 1), &levels[i - 2].region_faces),
             };
-            let in_region = region_entities(before, region_before);
+            let in_region = RegionEntities::new(before, region_before);
             // the first analysis step's refinements are the step's own (read,
             // not copied); later ones are made here
             let made = if i <= steps { None } else { Some(topology.refine(before)?) };
             let rf = made.as_ref().unwrap_or_else(|| &self.step.refinements[i - 1]);
-            let descends: Vec<bool> = rf.vertex_origins.iter().map(|o| in_region.contains(o)).collect();
+            let descends: Vec<bool> = rf.vertex_origins.iter().map(|&o| in_region.contains(o)).collect();
             let mut region_faces: Vec<bool> = rf
                 .mesh
                 .faces()
                 .iter()
                 .zip(&rf.face_parents)
-                .map(|(f, p)| in_region.contains(p) && f.iter().all(|&v| descends[v]))
+                .map(|(f, &p)| in_region.contains(p) && f.iter().all(|&v| descends[v]))
                 .collect();
             let pruned =
                 if prune && i >= steps { prune_around(&rf.mesh, &region_faces, PRUNE_MARGIN, period)? } else { None };
@@ -923,6 +923,8 @@ fn try_discover(
 /// Vertices, edges (both orientations), faces and corners of the region
 /// faces, as origins: the old entities whose new vertices descend from the
 /// region (also used to follow the characteristic ring through refinement).
+/// The definition; the search asks [`RegionEntities`], which answers the same
+/// without building the set.
 pub fn region_entities(mesh: &PolyMesh, region_faces: &[bool]) -> IdSet<Origin> {
     let mut set = IdSet::default();
     for (f, face) in mesh.faces().iter().enumerate() {
@@ -939,6 +941,43 @@ pub fn region_entities(mesh: &PolyMesh, region_faces: &[bool]) -> IdSet<Origin> 
         }
     }
     set
+}
+
+/// The entities of the region faces ([`region_entities`]' set), asked from
+/// per-face and per-vertex flags and the mesh's half-edges instead of
+/// hashed into a set: the search asks for every new vertex and face of
+/// each refinement whether it descends from the region, and building the
+/// set of every entity of the region was a large part of a search level.
+pub struct RegionEntities<'a> {
+    mesh: &'a PolyMesh,
+    faces: &'a [bool],
+    /// the corners of the region faces
+    vertices: Vec<bool>,
+}
+
+impl<'a> RegionEntities<'a> {
+    pub fn new(mesh: &'a PolyMesh, region_faces: &'a [bool]) -> RegionEntities<'a> {
+        let mut vertices = vec![false; mesh.num_vertices()];
+        for (face, _) in mesh.faces().iter().zip(region_faces).filter(|(_, &flagged)| flagged) {
+            face.iter().for_each(|&v| vertices[v] = true);
+        }
+        RegionEntities { mesh, faces: region_faces, vertices }
+    }
+
+    /// Whether `o` is in [`region_entities`]' set.
+    pub fn contains(&self, o: Origin) -> bool {
+        let flagged = |f: usize| self.faces.get(f).copied().unwrap_or(false);
+        match o {
+            Origin::Vertex(v) => self.vertices.get(v).copied().unwrap_or(false),
+            // a side of a region face, either way round: each half-edge is
+            // a side of one face at most
+            Origin::Edge(a, b) => {
+                [(a, b), (b, a)].into_iter().any(|(x, y)| self.mesh.half_edge(x, y).is_some_and(|(f, _)| flagged(f)))
+            }
+            Origin::Face(f) => flagged(f),
+            Origin::Corner { face, corner } => flagged(face) && corner < self.mesh.face(face).len(),
+        }
+    }
 }
 
 /// Sectors kept on each side of the representatives' sectors `0..period` in

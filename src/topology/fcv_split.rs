@@ -15,8 +15,6 @@
 //! (face) and new-quad FCV (corner) rules. Regular part: the four-directional
 //! S_3^1 non-box spline (`certify::s31`).
 
-use crate::mesh::IdMap;
-
 use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
@@ -47,12 +45,10 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
             origins.push(Origin::Vertex(v));
         }
     }
-    let mut edge_id: IdMap<(usize, usize), usize> = IdMap::default();
-    for (a, b) in mesh.edges() {
-        edge_id.insert((a, b), origins.len());
-        edge_id.insert((b, a), origins.len());
-        origins.push(Origin::Edge(a, b));
-    }
+    // the edge points in edge order, found from a face's sides by number
+    let numbering = mesh.edge_numbering();
+    let edge_base = origins.len();
+    origins.extend(numbering.edges.iter().map(|&(a, b)| Origin::Edge(a, b)));
     let face_id: Vec<usize> = (0..mesh.num_faces())
         .map(|f| {
             origins.push(Origin::Face(f));
@@ -67,9 +63,9 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
         for k in 0..m {
             faces.push(vec![
                 vertex_id[face[k]],
-                edge_id[&(face[k], face[(k + 1) % m])],
+                edge_base + numbering.side(f, k),
                 face_id[f],
-                edge_id[&(face[(k + m - 1) % m], face[k])],
+                edge_base + numbering.side(f, (k + m - 1) % m),
             ]);
             parents.push(Origin::Face(f));
             new_fcv.push(Some(origins.len()));

@@ -6,8 +6,6 @@
 //! rules of the primal quad and triangle hosts (declarations, the gatherer's
 //! routing of tagged origins, and what a split does to tags).
 
-use crate::mesh::IdMap;
-
 use crate::error::Error;
 use crate::mesh::{PolyMesh, Tags, VertexId, VertexTag};
 use crate::sdc::host::{Refined, TriangleSplit};
@@ -21,19 +19,13 @@ use crate::topology::chart_builder::ChartBuilder;
 
 pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, Error> {
     let nv = mesh.num_vertices();
-    let edges = mesh.edges();
+    // the edge points in edge order, found from a face's sides by number
+    let numbering = mesh.edge_numbering();
     // sized up front: growing these by doubling copied the large meshes of
     // discovery and of the certificates' nets several times
-    let mut origins: Vec<Origin> = Vec::with_capacity(nv + edges.len() + mesh.num_faces());
+    let mut origins: Vec<Origin> = Vec::with_capacity(nv + numbering.edges.len() + mesh.num_faces());
     origins.extend((0..nv).map(Origin::Vertex));
-    let mut edge_id: IdMap<(usize, usize), usize> =
-        IdMap::with_capacity_and_hasher(2 * edges.len(), Default::default());
-    for (a, b) in edges {
-        let id = origins.len();
-        origins.push(Origin::Edge(a, b));
-        edge_id.insert((a, b), id);
-        edge_id.insert((b, a), id);
-    }
+    origins.extend(numbering.edges.iter().map(|&(a, b)| Origin::Edge(a, b)));
     let wants_face_point = |len: usize| len >= 4 || tri == TriangleSplit::FacePointQuads;
     let mut face_point = vec![None; mesh.num_faces()];
     for (f, face) in mesh.faces().iter().enumerate() {
@@ -47,7 +39,8 @@ pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, Error> {
     let mut parents = Vec::with_capacity(corners + mesh.num_faces());
     for (f, face) in mesh.faces().iter().enumerate() {
         let m = face.len();
-        let e = |k: usize| edge_id[&(face[k % m], face[(k + 1) % m])];
+        // the point of the edge on side k (mod m) of the face
+        let e = |k: usize| nv + numbering.side(f, k % m);
         match face_point[f] {
             Some(c) => {
                 for (k, &v) in face.iter().enumerate() {

@@ -14,8 +14,6 @@
 //! (the new vertex near a corner). Regular part: the biquadratic B-spline
 //! with the ternary mask (ternary primal refinement of quads).
 
-use crate::mesh::IdMap;
-
 use crate::error::Error;
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
@@ -41,19 +39,14 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
         )));
     }
     let nv = mesh.num_vertices();
-    let edges = mesh.edges();
+    // two points per edge (one nearer each end), in edge order, found from
+    // a face's sides by number
+    let numbering = mesh.edge_numbering();
     // sized up front: discovery's patches are large, and growing these by
     // doubling copied them several times
-    let mut origins: Vec<Origin> = Vec::with_capacity(nv + 2 * edges.len() + 4 * mesh.num_faces());
+    let mut origins: Vec<Origin> = Vec::with_capacity(nv + 2 * numbering.edges.len() + 4 * mesh.num_faces());
     origins.extend((0..nv).map(Origin::Vertex));
-    let mut edge_id: IdMap<(usize, usize), usize> =
-        IdMap::with_capacity_and_hasher(2 * edges.len(), Default::default());
-    for (a, b) in edges {
-        edge_id.insert((a, b), origins.len());
-        origins.push(Origin::Edge(a, b));
-        edge_id.insert((b, a), origins.len());
-        origins.push(Origin::Edge(b, a));
-    }
+    origins.extend(numbering.edges.iter().flat_map(|&(a, b)| [Origin::Edge(a, b), Origin::Edge(b, a)]));
     let mut faces = Vec::with_capacity(9 * mesh.num_faces());
     let mut parents = Vec::with_capacity(9 * mesh.num_faces());
     for (f, face) in mesh.faces().iter().enumerate() {
@@ -64,13 +57,20 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
             })
             .collect();
         let [v0, v1, v2, v3] = [face[0], face[1], face[2], face[3]];
-        let e = |a: usize, b: usize| edge_id[&(a, b)];
-        // grid point (i, j), i along v0 -> v1, j along v0 -> v3
+        // the point Edge(a, b) of the edge on side k, a being one end of
+        // that side: edge number i has Edge(its first end, ..) at 2i, the
+        // reverse at 2i + 1
+        let e = |k: usize, a: usize| {
+            let (i, forward) = numbering.side_from(f, k, a);
+            nv + 2 * i + usize::from(!forward)
+        };
+        // grid point (i, j), i along v0 -> v1, j along v0 -> v3 (side k runs
+        // from corner k to corner k + 1: side 3 is v3 -> v0, side 2 v2 -> v3)
         let grid = [
-            [v0, e(v0, v3), e(v3, v0), v3],
-            [e(v0, v1), inner[0], inner[3], e(v3, v2)],
-            [e(v1, v0), inner[1], inner[2], e(v2, v3)],
-            [v1, e(v1, v2), e(v2, v1), v2],
+            [v0, e(3, v0), e(3, v3), v3],
+            [e(0, v0), inner[0], inner[3], e(2, v3)],
+            [e(0, v1), inner[1], inner[2], e(2, v2)],
+            [v1, e(1, v1), e(1, v2), v2],
         ];
         for i in 0..3 {
             for j in 0..3 {

@@ -279,3 +279,31 @@ fn discoveries_on_one_host_share_the_patch_topology_and_find_the_same_sets() {
         assert_eq!(labelled(&a), labelled(&larger), "n = {n}");
     }
 }
+
+/// `RegionEntities` answers what `region_entities`' set holds: on the patch
+/// of each regular configuration below (quads with Catmull–Clark's host,
+/// triangles with Loop's, and the faces of Doo–Sabin's), with every third
+/// face flagged, for every origin of one refinement of the patch, every
+/// face parent, every entity of the set and a few entities of no mesh.
+#[test]
+fn region_entities_answer_what_the_set_holds() {
+    use super::{region_entities, RegionEntities};
+    use crate::neighbourhood::builder::build_patch;
+    for scheme in [Support::catmull_clark(), Support::loop_(), Support::doo_sabin()] {
+        for n in [3, 5, 8] {
+            let config = Configuration::regular(&scheme, n).unwrap();
+            let (patch, _) = build_patch(&config, 3);
+            let flags: Vec<bool> = (0..patch.num_faces()).map(|f| f % 3 == 0).collect();
+            let set = region_entities(&patch, &flags);
+            let region = RegionEntities::new(&patch, &flags);
+            let refined = scheme.info.topology.refine(&patch).unwrap();
+            let (nv, nf) = (patch.num_vertices(), patch.num_faces());
+            let off =
+                [Origin::Vertex(nv), Origin::Edge(0, nv), Origin::Face(nf), Origin::Corner { face: 0, corner: 9 }];
+            let asked = refined.vertex_origins.iter().chain(&refined.face_parents).chain(&set).chain(&off);
+            for &o in asked {
+                assert_eq!(region.contains(o), set.contains(&o), "{}, n = {n}: {o:?}", scheme.info.name);
+            }
+        }
+    }
+}
