@@ -20,6 +20,7 @@ use std::collections::HashSet;
 use nalgebra::{Matrix2, Vector2};
 
 use crate::mesh::PolyMesh;
+use crate::neighbourhood::discovery::RegionEntities;
 use crate::neighbourhood::Discovered;
 
 use crate::error::Error;
@@ -400,48 +401,11 @@ fn descend<T>(old: &Net<T>, mesh: PolyMesh, origins: &[Origin], parents: &[Origi
 /// entities of the region (`neighbourhood::discovery::region_entities`).
 fn descend_flags<T>(old: &Net<T>, mesh: &PolyMesh, origins: &[Origin], parents: &[Origin]) -> [Vec<bool>; 3] {
     let carry = |flags: &[bool]| -> Vec<bool> {
-        let region = Region::new(&old.mesh, flags);
+        let region = RegionEntities::new(&old.mesh, flags);
         let from: Vec<bool> = origins.iter().map(|&o| region.contains(o)).collect();
         mesh.faces().iter().zip(parents).map(|(f, &p)| region.contains(p) && f.iter().all(|&v| from[v])).collect()
     };
     [carry(&old.outer), carry(&old.inner), carry(&old.inner2)]
-}
-
-/// The entities of the faces flagged in a mesh (their vertices, edges in
-/// both orientations, faces and corners: `region_entities`' set), asked
-/// from per-face and per-vertex flags and the mesh's half-edges rather than
-/// from a set of every entity, which at a net's deeper levels meant hashing
-/// a million origins per level for three regions.
-struct Region<'a> {
-    mesh: &'a PolyMesh,
-    faces: &'a [bool],
-    vertices: Vec<bool>,
-}
-
-impl<'a> Region<'a> {
-    fn new(mesh: &'a PolyMesh, faces: &'a [bool]) -> Region<'a> {
-        let mut vertices = vec![false; mesh.num_vertices()];
-        for (_, face) in mesh.faces().iter().enumerate().filter(|(f, _)| faces[*f]) {
-            for &v in face {
-                vertices[v] = true;
-            }
-        }
-        Region { mesh, faces, vertices }
-    }
-
-    fn contains(&self, o: Origin) -> bool {
-        let flagged = |f: usize| self.faces.get(f).copied().unwrap_or(false);
-        match o {
-            Origin::Vertex(v) => self.vertices.get(v).copied().unwrap_or(false),
-            // an edge of a flagged face, in either orientation: each
-            // half-edge belongs to one face at most
-            Origin::Edge(a, b) => {
-                [(a, b), (b, a)].into_iter().any(|(x, y)| self.mesh.half_edge(x, y).is_some_and(|(f, _)| flagged(f)))
-            }
-            Origin::Face(f) => flagged(f),
-            Origin::Corner { face, corner } => flagged(face) && corner < self.mesh.face(face).len(),
-        }
-    }
 }
 
 fn face_vertices(mesh: &PolyMesh, f: usize) -> impl Iterator<Item = usize> + '_ {
@@ -548,32 +512,6 @@ pub fn facet_triangles(mesh: &PolyMesh, f: usize) -> Vec<[usize; 3]> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// `Region` answers exactly what `region_entities`' set holds, for every
-    /// origin of a small mixed mesh (quads and triangles, open rim) and every
-    /// pattern of flagged faces, including origins of no face (reversed and
-    /// non-existent edges, out-of-range ids).
-    #[test]
-    fn the_dense_region_holds_exactly_the_region_entities() {
-        // a 3×2 grid of quads (vertices 0..12, row-major, 4 per row) with
-        // the last quad split into two triangles
-        let q = |a: usize| vec![a, a + 1, a + 5, a + 4];
-        let faces = vec![q(0), q(1), q(2), q(4), q(5), vec![6, 7, 11], vec![6, 11, 10]];
-        let mesh = PolyMesh::new(12, faces).unwrap();
-        let nf = mesh.num_faces();
-        for pattern in 0u32..(1 << nf) {
-            let flags: Vec<bool> = (0..nf).map(|f| pattern >> f & 1 == 1).collect();
-            let set = crate::neighbourhood::discovery::region_entities(&mesh, &flags);
-            let dense = Region::new(&mesh, &flags);
-            let mut origins: Vec<Origin> = (0..14).map(Origin::Vertex).collect();
-            origins.extend((0..13).flat_map(|a| (0..13).map(move |b| Origin::Edge(a, b))));
-            origins.extend((0..nf + 1).map(Origin::Face));
-            origins.extend((0..nf + 1).flat_map(|f| (0..4).map(move |corner| Origin::Corner { face: f, corner })));
-            for o in origins {
-                assert_eq!(dense.contains(o), set.contains(&o), "{o:?} with faces {flags:?}");
-            }
-        }
-    }
 
     #[test]
     fn the_estimate_refuses_only_past_the_limit_and_names_the_levels_that_fit() {
