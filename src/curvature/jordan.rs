@@ -235,8 +235,8 @@ pub fn growth_test(
         let gs = inf_norm(g).max(1e-300);
         // one function at levels nothing else samples: refine it (not the
         // unit rows), once for every level
-        for ring in RingSampler::ring_values_each_level(scheme, &analysis.discovered, levels, g)? {
-            top_levels.push(ring.iter().map(|v| v.abs()).fold(0.0, f64::max) / gs);
+        for size in RingSampler::ring_sizes_each_level(scheme, &analysis.discovered, levels, g)? {
+            top_levels.push(size / gs);
         }
         let last = top_levels.len();
         if last >= 3 {
