@@ -93,3 +93,37 @@ fn a_function_refined_as_data_has_the_ring_size_of_its_rows() {
         }
     }
 }
+
+/// The ring sizes of many functions taken together
+/// (`RingSampler::ring_sizes`, the growth test's windows of iterates) are,
+/// to the last bit, the largest |value| of each function's ring values
+/// (`RingSampler::ring_values`): each value is summed over its row in the
+/// same order. Catmull–Clark n = 5 and a 4-3 eon of QQTQT, levels 2, on
+/// functions without symmetry.
+#[test]
+fn ring_sizes_taken_together_are_each_function_s_own() {
+    use subdlab::curvature::sampler::RingSampler;
+    for (name, n, faces) in [("catmull-clark", 5, None), ("four-three", 5, Some("QQTQT"))] {
+        let scheme = subdlab::schemes::build(name, &[]).unwrap();
+        let config = match faces {
+            Some(f) => Configuration::with_faces(scheme.as_ref(), n, f).unwrap(),
+            None => Configuration::regular(scheme.as_ref(), n).unwrap(),
+        };
+        let options = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
+        let analysis = analyse_shared(scheme.as_ref(), &config, &options).unwrap();
+        let d = &analysis.discovered;
+        let sampler = RingSampler::new(scheme.as_ref(), d, 2).unwrap();
+        let xs: Vec<Vec<f64>> = (0..7)
+            .map(|j| {
+                (0..d.analysis.len())
+                    .map(|k| (((k + 3 * j) * 7 + 3) % 11) as f64 - 4.5 + 0.37 * (k * j) as f64)
+                    .collect()
+            })
+            .collect();
+        let together = sampler.ring_sizes(&xs);
+        for (x, size) in xs.iter().zip(together) {
+            let own = sampler.ring_values(x).iter().map(|v| v.abs()).fold(0.0, f64::max);
+            assert_eq!(own.to_bits(), size.to_bits(), "{name} n = {n}");
+        }
+    }
+}
