@@ -49,18 +49,27 @@ fn the_map_from_unit_rows_is_the_refined_map() {
 }
 
 /// One function refined as data, once for levels 1..3
-/// (`RingSampler::ring_values_each_level`, the Jordan
-/// growth test's route at levels nothing else samples) has on the ring the
-/// values its unit rows refined to that level give
-/// (`RingSampler::ring_values`): the same rules, mesh and pruning applied to the data instead of the rows, so the same
-/// ring vertices in the same order and values equal up to rounding.
-/// Catmull–Clark n = 5, Loop n = 7 and a 4-3 eon of quads and triangles,
-/// levels 1..3, on a function with no symmetry (so a wrong vertex order
-/// shows).
+/// (`RingSampler::ring_sizes_each_level`, the Jordan growth test's route at
+/// levels nothing else samples) has the ring size (largest |value| over the
+/// ring) that its unit rows refined to that level give
+/// (`RingSampler::ring_values`): the same rules, mesh and pruning applied to
+/// the data instead of the rows, so sizes equal up to rounding. Catmull–Clark
+/// n = 5, Loop n = 7 and 4-3 eons of six quads (rotation-symmetric: one
+/// sector refined with the data turned), of QTQT (a half-turn) and of QQTQT
+/// (no symmetry: the whole ring), on functions without symmetry, each with
+/// a bump at a different vertex so that the largest value lies in different
+/// sectors (a wrongly turned sector shows).
 #[test]
-fn a_function_refined_as_data_has_the_ring_values_of_its_rows() {
+fn a_function_refined_as_data_has_the_ring_size_of_its_rows() {
     use subdlab::curvature::sampler::RingSampler;
-    for (name, n, faces) in [("catmull-clark", 5, None), ("loop", 7, None), ("four-three", 5, Some("QQTQT"))] {
+    let cases = [
+        ("catmull-clark", 5, None),
+        ("loop", 7, None),
+        ("four-three", 6, Some("QQQQQQ")),
+        ("four-three", 4, Some("QTQT")),
+        ("four-three", 5, Some("QQTQT")),
+    ];
+    for (name, n, faces) in cases {
         let scheme = subdlab::schemes::build(name, &[]).unwrap();
         let config = match faces {
             Some(f) => Configuration::with_faces(scheme.as_ref(), n, f).unwrap(),
@@ -69,15 +78,52 @@ fn a_function_refined_as_data_has_the_ring_values_of_its_rows() {
         let options = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
         let analysis = analyse_shared(scheme.as_ref(), &config, &options).unwrap();
         let d = &analysis.discovered;
-        let x: Vec<f64> = (0..d.analysis.len()).map(|k| ((k * 7 + 3) % 11) as f64 - 4.5 + 0.1 * k as f64).collect();
-        let each = RingSampler::ring_values_each_level(scheme.as_ref(), d, 3, &x).unwrap();
-        assert_eq!(each.len(), 3, "{name} n = {n}: one ring per level");
-        for (levels, once) in (1..=3).zip(each) {
-            let rows = RingSampler::new(scheme.as_ref(), d, levels).unwrap().ring_values(&x);
-            assert_eq!(rows.len(), once.len(), "{name} n = {n}, {levels} levels: one value per ring vertex");
-            for (a, b) in rows.iter().zip(&once) {
-                assert_relative_eq!(*a, *b, epsilon = 1e-11, max_relative = 1e-11);
+        let size = d.analysis.len();
+        for bump in [1, size / 3, size / 2, size - 1] {
+            let x: Vec<f64> = (0..size)
+                .map(|k| ((k * 7 + 3) % 11) as f64 - 4.5 + 0.1 * k as f64 + if k == bump { 40.0 } else { 0.0 })
+                .collect();
+            let each = RingSampler::ring_sizes_each_level(scheme.as_ref(), d, 3, &x).unwrap();
+            assert_eq!(each.len(), 3, "{name} n = {n}: one size per level");
+            for (levels, once) in (1..=3).zip(each) {
+                let rows = RingSampler::new(scheme.as_ref(), d, levels).unwrap().ring_values(&x);
+                let largest = rows.iter().map(|v| v.abs()).fold(0.0, f64::max);
+                assert_relative_eq!(largest, once, epsilon = 1e-11, max_relative = 1e-11);
             }
+        }
+    }
+}
+
+/// The ring sizes of many functions taken together
+/// (`RingSampler::ring_sizes`, the growth test's windows of iterates) are,
+/// to the last bit, the largest |value| of each function's ring values
+/// (`RingSampler::ring_values`): each value is summed over its row in the
+/// same order. Catmull–Clark n = 5 and a 4-3 eon of QQTQT, levels 2, on
+/// functions without symmetry.
+#[test]
+fn ring_sizes_taken_together_are_each_function_s_own() {
+    use subdlab::curvature::sampler::RingSampler;
+    for (name, n, faces) in [("catmull-clark", 5, None), ("four-three", 5, Some("QQTQT"))] {
+        let scheme = subdlab::schemes::build(name, &[]).unwrap();
+        let config = match faces {
+            Some(f) => Configuration::with_faces(scheme.as_ref(), n, f).unwrap(),
+            None => Configuration::regular(scheme.as_ref(), n).unwrap(),
+        };
+        let options = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
+        let analysis = analyse_shared(scheme.as_ref(), &config, &options).unwrap();
+        let d = &analysis.discovered;
+        let sampler = RingSampler::new(scheme.as_ref(), d, 2).unwrap();
+        let xs: Vec<Vec<f64>> = (0..7)
+            .map(|j| {
+                (0..d.analysis.len())
+                    .map(|k| (((k + 3 * j) * 7 + 3) % 11) as f64 - 4.5 + 0.37 * (k * j) as f64)
+                    .collect()
+            })
+            .collect();
+        let together = sampler.ring_sizes(&xs);
+        for (x, size) in xs.iter().zip(together) {
+            let own = sampler.ring_values(x).iter().map(|v| v.abs()).fold(0.0, f64::max);
+            assert_eq!(own.to_bits(), size.to_bits(), "{name} n = {n}");
         }
     }
 }

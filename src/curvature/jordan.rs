@@ -131,10 +131,6 @@ fn generic(size: usize) -> Vec<f64> {
         .collect()
 }
 
-fn ring_size(sampler: &RingSampler, x: &[f64]) -> f64 {
-    sampler.ring_values(x).iter().map(|v| v.abs()).fold(0.0, f64::max)
-}
-
 fn inf_norm(x: &[f64]) -> f64 {
     x.iter().map(|v| v.abs()).fold(0.0, f64::max)
 }
@@ -202,19 +198,25 @@ pub fn growth_test(
     let mut x = nalgebra::DVector::<f64>::from_vec(generic(s));
     x = &projector * x;
     let scale = inf_norm(x.as_slice()).max(1e-300);
-    let (mut early, mut late) = (0.0, 0.0);
     let mut tail = nalgebra::DVector::<f64>::zeros(s);
+    // the ring is sampled only over the two averaging windows: the iterates
+    // there are kept and their ring sizes taken together afterwards
+    let (mut early_x, mut late_x) = (Vec::with_capacity(window), Vec::with_capacity(8 * window));
     for k in 1..16 * window {
         x = &step * x;
-        // the ring is sampled only over the two averaging windows
         if (window..2 * window).contains(&k) {
-            early += ring_size(&sampler, x.as_slice()) / scale / window as f64;
+            early_x.push(x.as_slice().to_vec());
         }
         if k >= 8 * window {
-            late += ring_size(&sampler, x.as_slice()) / scale / (8 * window) as f64;
+            late_x.push(x.as_slice().to_vec());
             tail += &x / (k as f64 * (8 * window) as f64);
         }
     }
+    // summed in step order, as when each was added at its step
+    let mean = |xs: &[Vec<f64>], over: usize| {
+        sampler.ring_sizes(xs).into_iter().fold(0.0, |a, size| a + size / scale / over as f64)
+    };
+    let (early, late) = (mean(&early_x, window), mean(&late_x, 8 * window));
     let ratio = if early > 0.0 { late / early } else { f64::NAN };
     let grows = ratio > 3.0;
     let projected: Vec<f64> = above.iter().map(|e| e.re).collect();
@@ -235,8 +237,8 @@ pub fn growth_test(
         let gs = inf_norm(g).max(1e-300);
         // one function at levels nothing else samples: refine it (not the
         // unit rows), once for every level
-        for ring in RingSampler::ring_values_each_level(scheme, &analysis.discovered, levels, g)? {
-            top_levels.push(ring.iter().map(|v| v.abs()).fold(0.0, f64::max) / gs);
+        for size in RingSampler::ring_sizes_each_level(scheme, &analysis.discovered, levels, g)? {
+            top_levels.push(size / gs);
         }
         let last = top_levels.len();
         if last >= 3 {

@@ -10,7 +10,7 @@
 
 use faer::c64;
 
-use crate::charmap::net::{facet_triangles, refine_net, refine_net_visiting, Net};
+use crate::charmap::net::{centre_set, facet_triangles, refine_net, refine_net_visiting, refine_net_within, Net};
 use crate::error::Error;
 use crate::neighbourhood::Discovered;
 use crate::refine::{Combine, SparseRow};
@@ -129,28 +129,53 @@ impl RingSampler {
         Ok(RingSampler { net, ring_faces, ring_vertices, size: d.analysis.len() })
     }
 
-    /// The ring values of one level-0 function `x` (analysis order) after
-    /// each of 1, 2, ..., `levels` analysis steps, refining the function
-    /// itself rather than unit rows (a single value per vertex instead of a
-    /// row over the neighbourhood) and once for all levels: for a function
-    /// sampled once at levels no other question asks for (the growth test's
-    /// growing direction at levels 1..5). Entry l − 1 equals
-    /// `RingSampler::new(.., l).ring_values(x)`: the same rules, mesh and
-    /// pruning, applied to the data instead of the rows.
-    pub fn ring_values_each_level(
+    /// The ring size (largest |value| over the ring vertices) of one level-0
+    /// function `x` (analysis order) after each of 1, 2, ..., `levels`
+    /// analysis steps, refining the function itself rather than unit rows:
+    /// for a function sampled once at levels no other question asks for (the
+    /// growth test's growing direction at levels 1..5). Entry l − 1 is the
+    /// largest |value| of `RingSampler::new(.., l).ring_values(x)`: the same
+    /// rules, mesh and pruning, applied to the data instead of the rows.
+    ///
+    /// On a rotation-symmetric configuration (see [`Sectors`]) only one
+    /// sector's share of the first ring is refined, carrying the g turns of
+    /// the data at once: the rules commute with the rotation, so the turned
+    /// data's values on that sector are the data's values on the other
+    /// sectors, and the largest over all of them is the ring size. The net
+    /// is then about 1/g of the whole ring's, its connectivity, pruning and
+    /// stencils made once for the g functions.
+    pub fn ring_sizes_each_level(
         scheme: &dyn Scheme,
         d: &Discovered,
         levels: usize,
         x: &[f64],
-    ) -> Result<Vec<Vec<f64>>, Error> {
-        let level0 = on_analysis_vertices(d, |k| [x[k]]);
+    ) -> Result<Vec<f64>, Error> {
         // one value per vertex: the memory is the net's faces
+        let level0 = on_analysis_vertices(d, |k| [x[k]]);
         refuse_beyond_memory(scheme, d, &level0, levels, |net| net.mesh.num_faces() as f64 * FACE_BYTES)?;
-        let mut each = vec![Vec::new(); levels];
+        let largest = |values: &mut dyn Iterator<Item = f64>| values.map(f64::abs).fold(0.0, f64::max);
+        if let Some(sectors) = Sectors::of(scheme, d) {
+            let level0 = on_analysis_vertices(d, |k| Turns(sectors.turns.iter().map(|t| x[t[k]]).collect()));
+            // one net per level (`refine_net_within` shows no level but its
+            // last): the levels below the last cost about a third more
+            return (1..=levels)
+                .map(|level| {
+                    let net = refine_net_within(scheme, d, level0.clone(), level, &sectors.first_ring)?;
+                    let (_, ring_vertices) = ring_of(&net)?;
+                    let net = &net;
+                    Ok(largest(
+                        &mut ring_vertices.iter().flat_map(|&v| {
+                            net.points[v].as_ref().expect("ring vertices are defined").0.iter().copied()
+                        }),
+                    ))
+                })
+                .collect();
+        }
+        let mut each = vec![0.0; levels];
         refine_net_visiting(scheme, d, level0, levels, &mut |level, net: &Net<[f64; 1]>| {
             let (_, ring_vertices) = ring_of(net)?;
             each[level - 1] =
-                ring_vertices.iter().map(|&v| net.points[v].expect("ring vertices are defined")[0]).collect();
+                largest(&mut ring_vertices.iter().map(|&v| net.points[v].expect("ring vertices are defined")[0]));
             Ok(())
         })?;
         Ok(each)
@@ -172,6 +197,40 @@ impl RingSampler {
             .collect()
     }
 
+    /// The ring size (largest |value| over the ring vertices) of each of the
+    /// real functions `xs`, as `ring_values` gives the values: each value
+    /// summed over its row in the row's order. The functions are taken
+    /// together, each row entry applied to all of them at once (one pass
+    /// over the rows instead of one per function: the growth test sizes
+    /// hundreds of iterates on one ring).
+    pub fn ring_sizes(&self, xs: &[Vec<f64>]) -> Vec<f64> {
+        let m = xs.len();
+        // the functions side by side: entry k of every function contiguous
+        let mut by_entry = vec![0.0; self.size * m];
+        for (j, x) in xs.iter().enumerate() {
+            for (k, v) in x.iter().enumerate() {
+                by_entry[k * m + j] = *v;
+            }
+        }
+        let mut sizes = vec![0.0f64; m];
+        let mut values = vec![0.0f64; m];
+        for &v in &self.ring_vertices {
+            let row = self.net.points[v].as_ref().expect("ring vertices are defined");
+            // the start of `Iterator::sum` for f64 (the sign of a zero is
+            // lost to the absolute value anyway)
+            values.fill(-0.0);
+            for (k, w) in &row.entries {
+                for (value, x) in values.iter_mut().zip(&by_entry[k * m..(k + 1) * m]) {
+                    *value += w * x;
+                }
+            }
+            for (size, value) in sizes.iter_mut().zip(&values) {
+                *size = size.max(value.abs());
+            }
+        }
+        sizes
+    }
+
     /// A real function's values on the ring vertices.
     pub fn ring_values(&self, x: &[f64]) -> Vec<f64> {
         self.ring_vertices.iter().map(|&v| self.value(v, x).unwrap_or(f64::NAN)).collect()
@@ -185,5 +244,97 @@ impl RingSampler {
     /// The ring's facets as triangles of net vertex ids.
     pub fn ring_triangles(&self) -> Vec<[usize; 3]> {
         self.ring_faces.iter().flat_map(|&f| facet_triangles(&self.net.mesh, f)).collect()
+    }
+}
+
+/// Data turned by each rotation of the configuration, refined together: one
+/// value per turn at every net vertex.
+#[derive(Clone, Debug)]
+struct Turns(Vec<f64>);
+
+impl Combine<f64> for Turns {
+    /// Each turn's value summed in the terms' order, as `[f64; 1]` sums it.
+    fn combine(terms: &[(f64, &Self)]) -> Self {
+        let mut out = vec![0.0; terms.first().map_or(0, |(_, t)| t.0.len())];
+        for (w, t) in terms {
+            for (o, v) in out.iter_mut().zip(&t.0) {
+                *o += w * v;
+            }
+        }
+        Turns(out)
+    }
+}
+
+/// A fundamental domain of the configuration's rotation ρ (order g > 1) in
+/// the first ring, and the analysis vertices turned: `turns[k][i]` is the
+/// analysis index of ρ^k applied to analysis vertex i. The first-ring faces
+/// are the disjoint union of ρ^k(domain), k = 0..g, so a function's
+/// refined values on the descendants of ρ^k(domain) are those of the
+/// function turned by ρ^k (value at v: the function at ρ^k(v)) on the
+/// domain's descendants.
+struct Sectors {
+    /// per patch face: in the domain
+    first_ring: Vec<bool>,
+    turns: Vec<Vec<usize>>,
+}
+
+impl Sectors {
+    /// `None` where there is no rotation, or where it does not act freely on
+    /// the first-ring faces (a central face turned onto itself) or does not
+    /// map the analysis neighbourhood onto itself: the whole ring is refined
+    /// then.
+    fn of(scheme: &dyn Scheme, d: &Discovered) -> Option<Sectors> {
+        let period = d.config.rotation_period(scheme);
+        let rotation = crate::neighbourhood::discovery::Rotation::new(&d.patch, period, true);
+        let g = rotation.order();
+        if g <= 1 {
+            return None;
+        }
+        let mesh = &*d.patch;
+        let mut index = vec![usize::MAX; mesh.num_vertices()];
+        for (k, &v) in d.analysis.iter().enumerate() {
+            index[v] = k;
+        }
+        let mut turn = Vec::with_capacity(d.analysis.len());
+        for &v in &d.analysis {
+            let t = index[rotation.turned(v)?];
+            (t != usize::MAX).then_some(())?;
+            turn.push(t);
+        }
+        let mut turns = vec![(0..d.analysis.len()).collect::<Vec<usize>>()];
+        for _ in 1..g {
+            let last = turns.last().expect("the identity is first");
+            turns.push(last.iter().map(|&i| turn[i]).collect());
+        }
+        // the face a face is turned to: the one with its first side turned,
+        // holding every turned corner
+        let turned_face = |f: usize| -> Option<usize> {
+            let face = mesh.face(f);
+            let image: Vec<usize> = face.iter().map(|&v| rotation.turned(v)).collect::<Option<_>>()?;
+            let (h, _) = mesh.half_edge(image[0], image[1])?;
+            let other = mesh.face(h);
+            (other.len() == image.len() && image.iter().all(|v| other.contains(v))).then_some(h)
+        };
+        let centre: std::collections::HashSet<usize> = centre_set(d).into_iter().collect();
+        let mut seen = vec![false; mesh.num_faces()];
+        let mut first_ring = vec![false; mesh.num_faces()];
+        for f in 0..mesh.num_faces() {
+            if seen[f] || !mesh.face(f).iter().any(|v| centre.contains(v)) {
+                continue;
+            }
+            first_ring[f] = true;
+            let mut orbit = vec![f];
+            let mut at = turned_face(f)?;
+            while at != f {
+                orbit.push(at);
+                at = turned_face(at)?;
+                (orbit.len() <= g).then_some(())?;
+            }
+            (orbit.len() == g).then_some(())?;
+            for o in orbit {
+                seen[o] = true;
+            }
+        }
+        Some(Sectors { first_ring, turns })
     }
 }

@@ -122,62 +122,101 @@ fn height(r: &Rational) -> usize {
     (r.numer().bits() + r.denom().bits()) as usize
 }
 
-pub fn rank_of(rows: usize, cols: usize, mut a: Vec<Rational>) -> usize {
-    echelon(rows, cols, &mut a, false).len()
+/// The rank of the `rows` × `cols` rational matrix `a` (row-major).
+pub fn rank_of(rows: usize, cols: usize, a: Vec<Rational>) -> usize {
+    integer_echelon(rows, cols, &a, false).1.len()
 }
 
-/// Gaussian elimination in place on the `rows` × `cols` matrix `a` (row-major)
-/// with exact pivots; returns the pivot columns (row k holds pivot k). With
-/// `reduced` the pivots are scaled to 1 and cleared above as well as below
-/// (reduced row echelon form, as the null space needs); without, only below
-/// (enough for the rank, and cheaper).
-fn echelon(rows: usize, cols: usize, a: &mut [Rational], reduced: bool) -> Vec<usize> {
+/// Gaussian elimination of the `rows` × `cols` rational matrix `a`
+/// (row-major) over the integers: the rows (scaled to integers) in echelon
+/// form and the pivot columns (row k holds pivot k). With `reduced` every
+/// pivot column is cleared above its pivot too (a reduced form whose pivots
+/// are not scaled to 1: row k over its pivot is the reduced row).
+///
+/// Each row is first scaled by the common denominator of its entries, then
+/// row r ← p·row r − a_rc·pivot row (p the pivot, non-zero), each changed
+/// row divided by the gcd of its entries. Every step multiplies a row by a
+/// non-zero rational or adds a multiple of another row, so the row space,
+/// the rank and the pivot columns (the first column at which each rank is
+/// reached, whichever pivots are chosen) are those over Q, and a reduced
+/// row over its pivot is the reduced row over Q; but no entry is a fraction
+/// to normalise (one gcd per changed row instead of one per entry and
+/// operation, which made rational elimination the exact analyses' largest
+/// cost). Rows without an entry in the pivot column are untouched, so
+/// sparse local matrices stay cheap.
+fn integer_echelon(rows: usize, cols: usize, a: &[Rational], reduced: bool) -> (Vec<Vec<BigInt>>, Vec<usize>) {
+    let mut m: Vec<Vec<BigInt>> = a.chunks(cols.max(1)).take(rows).map(integer_row).collect();
     let mut pivots = Vec::new();
     for c in 0..cols {
         let rank = pivots.len();
         if rank == rows {
             break;
         }
-        // the pivot of smallest height: the result does not depend on which
-        // row is chosen (the pivot columns and the reduced form are unique),
-        // but small pivots keep the fractions short
-        let Some(p) = (rank..rows).filter(|&r| !a[r * cols + c].is_zero()).min_by_key(|&r| height(&a[r * cols + c]))
-        else {
+        // the pivot of fewest bits keeps the products short; any non-zero
+        // one gives the same row space
+        let Some(p) = (rank..rows).filter(|&r| !m[r][c].is_zero()).min_by_key(|&r| m[r][c].bits()) else {
             continue;
         };
-        for j in 0..cols {
-            a.swap(rank * cols + j, p * cols + j);
-        }
-        if reduced {
-            let piv = a[rank * cols + c].clone();
-            for j in c..cols {
-                a[rank * cols + j] = &a[rank * cols + j] / &piv;
-            }
-        }
-        let piv = a[rank * cols + c].clone();
-        // local matrices are sparse: only the pivot row's non-zero columns
-        // change the other rows
-        let support: Vec<usize> = (c..cols).filter(|&j| !a[rank * cols + j].is_zero()).collect();
+        m.swap(rank, p);
+        let pivot_row = std::mem::take(&mut m[rank]);
         let others = if reduced { 0..rows } else { rank + 1..rows };
-        for r in others {
-            if r == rank || a[r * cols + c].is_zero() {
+        for (r, row) in m.iter_mut().enumerate().skip(others.start).take(others.len()) {
+            if r == rank || row[c].is_zero() {
                 continue;
             }
-            let m = &a[r * cols + c] / &piv;
-            for &j in &support {
-                let t = &m * &a[rank * cols + j];
-                a[r * cols + j] = &a[r * cols + j] - t;
-            }
+            eliminate(row, &pivot_row, c);
         }
+        m[rank] = pivot_row;
         pivots.push(c);
     }
-    pivots
+    (m, pivots)
+}
+
+/// row ← p·row − row_c·pivot_row (p = pivot_row[c]), then made primitive.
+/// Every entry is scaled, those before `c` too (a row above the pivot row
+/// has its own pivot there; the pivot row is zero there).
+fn eliminate(row: &mut [BigInt], pivot_row: &[BigInt], c: usize) {
+    let piv = &pivot_row[c];
+    // column c becomes p·f − f·p = 0: taken out, not computed
+    let f = std::mem::take(&mut row[c]);
+    for (x, y) in row.iter_mut().zip(pivot_row).enumerate().filter(|(j, _)| *j != c).map(|(_, xy)| xy) {
+        if !x.is_zero() {
+            *x *= piv;
+        }
+        if !y.is_zero() {
+            *x -= &f * y;
+        }
+    }
+    make_primitive(row);
+}
+
+/// A rational row times the least common multiple of its denominators: an
+/// integer row with the same span.
+fn integer_row(row: &[Rational]) -> Vec<BigInt> {
+    let l = row.iter().filter(|x| !x.is_zero()).fold(BigInt::one(), |l, x| num_integer::Integer::lcm(&l, x.denom()));
+    row.iter().map(|x| if x.is_zero() { BigInt::zero() } else { x.numer() * (&l / x.denom()) }).collect()
+}
+
+/// Divide an integer row by the gcd of its entries (nothing for a zero row).
+fn make_primitive(row: &mut [BigInt]) {
+    let mut g = BigInt::zero();
+    for x in row.iter().filter(|x| !x.is_zero()) {
+        g = num_integer::Integer::gcd(&g, x);
+        if g.is_one() {
+            return;
+        }
+    }
+    if !g.is_zero() {
+        for x in row.iter_mut().filter(|x| !x.is_zero()) {
+            *x /= &g;
+        }
+    }
 }
 
 /// The pivot columns of the `rows` × `cols` matrix `a` (row-major) under
 /// Gaussian elimination: a maximal set of linearly independent columns.
-pub fn pivot_columns(rows: usize, cols: usize, mut a: Vec<Rational>) -> Vec<usize> {
-    echelon(rows, cols, &mut a, false)
+pub fn pivot_columns(rows: usize, cols: usize, a: Vec<Rational>) -> Vec<usize> {
+    integer_echelon(rows, cols, &a, false).1
 }
 
 /// The inverse of the `n` × `n` matrix `a` (row-major) by Gauss–Jordan on
@@ -191,24 +230,30 @@ pub fn inverse(n: usize, a: &[Rational]) -> Option<Vec<Rational>> {
         }
         aug[i * cols + n + i] = Rational::one();
     }
-    let pivots = echelon(n, cols, &mut aug, true);
+    let (m, pivots) = integer_echelon(n, cols, &aug, true);
     if pivots.len() < n || pivots.iter().any(|&c| c >= n) {
         return None;
     }
-    Some((0..n).flat_map(|i| aug[i * cols + n..(i + 1) * cols].to_vec()).collect())
+    // row i is d_i·[e_i | row i of the inverse]
+    Some(
+        (0..n)
+            .flat_map(|i| m[i][n..].iter().map(|x| Rational::new(x.clone(), m[i][i].clone())).collect::<Vec<_>>())
+            .collect(),
+    )
 }
 
 /// A basis of the null space {x : A x = 0} of the `rows` × `cols` matrix `a`
 /// (row-major), by reduction to row echelon form: one vector per free column.
-pub fn null_space(rows: usize, cols: usize, mut a: Vec<Rational>) -> Vec<Vec<Rational>> {
-    let pivots = echelon(rows, cols, &mut a, true);
+pub fn null_space(rows: usize, cols: usize, a: Vec<Rational>) -> Vec<Vec<Rational>> {
+    let (m, pivots) = integer_echelon(rows, cols, &a, true);
     let free: Vec<usize> = (0..cols).filter(|c| !pivots.contains(c)).collect();
     free.iter()
         .map(|&f| {
             let mut x = vec![Rational::zero(); cols];
             x[f] = Rational::one();
             for (r, &pc) in pivots.iter().enumerate() {
-                x[pc] = -a[r * cols + f].clone();
+                // the reduced row over its pivot: −(entry at f)/pivot
+                x[pc] = -Rational::new(m[r][f].clone(), m[r][pc].clone());
             }
             x
         })
@@ -812,6 +857,87 @@ mod tests {
         assert_eq!(roots_above(&p, &q(1, 4)), Some(1));
         // a root of modulus exactly r stays undecided (−1/4 at r = 1/4)
         assert_eq!(roots_above(&Poly::from_roots(&[q(1, 2), q(-1, 4)]), &q(1, 4)), None);
+    }
+
+    /// A = B·C with B = [I_k; M] and C = [I_k | N]: its top-left k × k
+    /// block is I_k and its columns are combinations of B's k columns, so
+    /// its rank is k by construction, whatever M and N. Rows scaled by
+    /// non-zero fractions and rows and columns shuffled keep the rank; the
+    /// entries (fractions with denominators up to 9, signs mixed) make the
+    /// integer elimination's rows long and their gcds non-trivial.
+    #[test]
+    fn integer_elimination_finds_the_rank_kernel_and_inverse_of_a_product_of_rank_k() {
+        let mut state: u64 = 0x2545_F491_4F6C_DD1D;
+        let mut next = |m: u64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state % m
+        };
+        for trial in 0..200 {
+            let rows = 1 + next(9) as usize;
+            let cols = 1 + next(9) as usize;
+            let k = next(rows.min(cols) as u64 + 1) as usize;
+            let mut frac = |zero_share: u64| {
+                if next(10) < zero_share {
+                    q(0, 1)
+                } else {
+                    q(next(19) as i64 - 9, 1 + next(9) as i64)
+                }
+            };
+            let b: Vec<Vec<Rational>> = (0..rows)
+                .map(|i| (0..k).map(|j| if i < k { q((i == j) as i64, 1) } else { frac(3) }).collect())
+                .collect();
+            let c: Vec<Vec<Rational>> = (0..k)
+                .map(|i| (0..cols).map(|j| if j < k { q((i == j) as i64, 1) } else { frac(3) }).collect())
+                .collect();
+            let mut a: Vec<Vec<Rational>> = (0..rows)
+                .map(|i| (0..cols).map(|j| (0..k).fold(q(0, 1), |s, t| s + &b[i][t] * &c[t][j])).collect())
+                .collect();
+            for row in a.iter_mut() {
+                let s = q(1 + next(7) as i64, 1 + next(5) as i64) * q(if next(2) == 0 { 1 } else { -1 }, 1);
+                for x in row.iter_mut() {
+                    *x = &*x * &s;
+                }
+            }
+            for i in (1..rows).rev() {
+                a.swap(i, next(i as u64 + 1) as usize);
+            }
+            let perm: Vec<usize> = {
+                let mut p: Vec<usize> = (0..cols).collect();
+                for i in (1..cols).rev() {
+                    p.swap(i, next(i as u64 + 1) as usize);
+                }
+                p
+            };
+            let flat: Vec<Rational> = a.iter().flat_map(|row| perm.iter().map(|&j| row[j].clone())).collect();
+            assert_eq!(rank_of(rows, cols, flat.clone()), k, "trial {trial}: {rows}×{cols} of rank {k}");
+            assert_eq!(pivot_columns(rows, cols, flat.clone()).len(), k, "trial {trial}");
+            // cols − k vectors, each with a 1 at its own free column (so
+            // independent) and each mapped to zero
+            let kernel = null_space(rows, cols, flat.clone());
+            assert_eq!(kernel.len(), cols - k, "trial {trial}");
+            for x in &kernel {
+                for i in 0..rows {
+                    let ax = (0..cols).fold(q(0, 1), |s, j| s + &flat[i * cols + j] * &x[j]);
+                    assert!(ax.is_zero(), "trial {trial}: A x ≠ 0");
+                }
+            }
+            // a square matrix of full rank has an inverse, A·A⁻¹ = I; one
+            // of lower rank none
+            if rows == cols {
+                let inv = inverse(rows, &flat);
+                assert_eq!(inv.is_some(), k == rows, "trial {trial}");
+                if let Some(inv) = inv {
+                    for i in 0..rows {
+                        for j in 0..rows {
+                            let e = (0..rows).fold(q(0, 1), |s, t| s + &flat[i * rows + t] * &inv[t * rows + j]);
+                            assert_eq!(e, q((i == j) as i64, 1), "trial {trial}");
+                        }
+                    }
+                }
+            }
+        }
     }
 
     #[test]
