@@ -162,6 +162,19 @@ pub fn refine_net_within<T: Combine<f64> + Clone>(
     analysis_steps: usize,
     first_ring: &[bool],
 ) -> Result<Net<T>, Error> {
+    refine_net_within_visiting(scheme, d, level0, analysis_steps, first_ring, &mut |_, _| Ok(()))
+}
+
+/// [`refine_net_within`] showing the net after each whole analysis step to
+/// `visit`, as [`refine_net_visiting`] does for the whole first ring.
+pub fn refine_net_within_visiting<T: Combine<f64> + Clone>(
+    scheme: &dyn Scheme,
+    d: &Discovered,
+    level0: Vec<Option<T>>,
+    analysis_steps: usize,
+    first_ring: &[bool],
+    visit: &mut Visit<T>,
+) -> Result<Net<T>, Error> {
     if first_ring.len() != d.patch.num_faces() {
         return Err(Error::Message(format!(
             "{} face flags for a patch of {} faces",
@@ -171,7 +184,7 @@ pub fn refine_net_within<T: Combine<f64> + Clone>(
     }
     let first =
         |k: usize, points: &[Option<T>]| Ok(apply(d.float_stencils(scheme)[k].iter().map(Option::as_ref), points));
-    refine_net_in::<f64, T>(scheme, d, level0, analysis_steps, Some(first_ring), &first, &mut |_, _| Ok(()))
+    refine_net_in::<f64, T>(scheme, d, level0, analysis_steps, Some(first_ring), &first, visit)
 }
 
 /// [`refine_net`] to `analysis_steps` levels, showing the net after each

@@ -10,7 +10,9 @@
 
 use faer::c64;
 
-use crate::charmap::net::{centre_set, facet_triangles, refine_net, refine_net_visiting, refine_net_within, Net};
+use crate::charmap::net::{
+    centre_set, facet_triangles, refine_net, refine_net_visiting, refine_net_within_visiting, Net,
+};
 use crate::error::Error;
 use crate::neighbourhood::Discovered;
 use crate::refine::{Combine, SparseRow};
@@ -156,20 +158,26 @@ impl RingSampler {
         let largest = |values: &mut dyn Iterator<Item = f64>| values.map(f64::abs).fold(0.0, f64::max);
         if let Some(sectors) = Sectors::of(scheme, d) {
             let level0 = on_analysis_vertices(d, |k| Turns(sectors.turns.iter().map(|t| x[t[k]]).collect()));
-            // one net per level (`refine_net_within` shows no level but its
-            // last): the levels below the last cost about a third more
-            return (1..=levels)
-                .map(|level| {
-                    let net = refine_net_within(scheme, d, level0.clone(), level, &sectors.first_ring)?;
-                    let (_, ring_vertices) = ring_of(&net)?;
-                    let net = &net;
-                    Ok(largest(
-                        &mut ring_vertices.iter().flat_map(|&v| {
+            // one refinement shows every level (the net shown at level l is
+            // the one refined to l levels; a level shown again under a wider
+            // pruning margin overwrites its value)
+            let mut each = vec![0.0; levels];
+            refine_net_within_visiting(
+                scheme,
+                d,
+                level0,
+                levels,
+                &sectors.first_ring,
+                &mut |level, net: &Net<Turns>| {
+                    let (_, ring_vertices) = ring_of(net)?;
+                    each[level - 1] =
+                        largest(&mut ring_vertices.iter().flat_map(|&v| {
                             net.points[v].as_ref().expect("ring vertices are defined").0.iter().copied()
-                        }),
-                    ))
-                })
-                .collect();
+                        }));
+                    Ok(())
+                },
+            )?;
+            return Ok(each);
         }
         let mut each = vec![0.0; levels];
         refine_net_visiting(scheme, d, level0, levels, &mut |level, net: &Net<[f64; 1]>| {

@@ -199,14 +199,8 @@ fn integer_row(row: &[Rational]) -> Vec<BigInt> {
 
 /// Divide an integer row by the gcd of its entries (nothing for a zero row).
 fn make_primitive(row: &mut [BigInt]) {
-    let mut g = BigInt::zero();
-    for x in row.iter().filter(|x| !x.is_zero()) {
-        g = num_integer::Integer::gcd(&g, x);
-        if g.is_one() {
-            return;
-        }
-    }
-    if !g.is_zero() {
+    let g = super::content::content(row.iter().filter(|x| !x.is_zero()));
+    if !g.is_zero() && !g.is_one() {
         for x in row.iter_mut().filter(|x| !x.is_zero()) {
             *x /= &g;
         }
