@@ -6,6 +6,7 @@ use crate::mesh::{PolyMesh, SectorKind};
 use crate::numeric::Inexact;
 use crate::numeric::Weight;
 use crate::schemes::entry::SchemeEntry;
+use crate::schemes::memo::WeightMemo;
 use crate::sdc::slots::{weigh, Host, Mask, Slot, Wants};
 use crate::sdc::Topology;
 use crate::sdc::{Caps, CentreKind, MeshDomain, Params, Rules, Scheme, SchemeInfo};
@@ -13,6 +14,11 @@ use crate::sdc::{Origin, RuleResult};
 
 pub struct DooSabin {
     params: Params,
+    /// the m weights α_0..α_{m−1} of an m-gon, per weight type: asked at
+    /// every corner slot of every stencil, and in interval or cyclotomic
+    /// arithmetic each is a cosine enclosure or a field element and a
+    /// division (a fifth of a certified Doo–Sabin map)
+    weights_made: WeightMemo,
 }
 
 const INFO: SchemeInfo = SchemeInfo {
@@ -29,7 +35,7 @@ pub fn entry() -> SchemeEntry {
         name: INFO.name,
         description: INFO.description,
         params: Vec::new,
-        build: |params| Box::new(DooSabin { params }),
+        build: |params| Box::new(DooSabin { params, weights_made: WeightMemo::new() }),
     }
 }
 
@@ -46,9 +52,17 @@ impl Wants for DooSabin {
 
 impl<W: Weight> Mask<W> for DooSabin {
     fn weight(&self, _mesh: &PolyMesh, _rule: &'static str, slot: &Slot) -> Result<W, Inexact> {
-        let (j, m) = (slot.j as i64, slot.n as i64);
-        let w = (W::int(3) + W::int(2) * W::cos_2pi(j, m)?) / W::int(4 * m);
-        Ok(if j == 0 { w + W::ratio(1, 4) } else { w })
+        let m = slot.n as i64;
+        let alpha = |j: i64| -> Result<W, Inexact> {
+            let w = (W::int(3) + W::int(2) * W::cos_2pi(j, m)?) / W::int(4 * m);
+            Ok(if j == 0 { w + W::ratio(1, 4) } else { w })
+        };
+        if slot.j >= slot.n {
+            // not a corner slot of the face: as the formula says
+            return alpha(slot.j as i64);
+        }
+        let all = self.weights_made.get::<W, Vec<W>>(m, || (0..m).map(alpha).collect())?;
+        Ok(all[slot.j].clone())
     }
 }
 
