@@ -46,10 +46,30 @@ pub fn decompose(matrix: &LocalMatrix<f64>, period: usize, n: usize, method: Met
 /// orbit o's representative, over all columns).
 pub fn decompose_dft(rows: &[&[(usize, f64)]], orbits: Orbits) -> Result<Decomposition, Error> {
     let blocks = fourier_blocks_from_rows(rows, &orbits);
-    // the blocks are independent eigenproblems: solved side by side, and
-    // collected in block order, so the result does not depend on scheduling
-    let solved: Vec<Result<Vec<eigen::BlockEigen>, Error>> =
-        blocks.par_iter().map(|b| eigen::block_eigen(&b.matrix)).collect();
+    // S is real, so block g − m is the complex conjugate of block m (its
+    // entries are sums of the same real weights times conjugate powers of
+    // ω): its eigenvalues and eigenvectors are the conjugates of block m's.
+    // Only blocks 0..=g/2 are solved; the rest are read off their partners
+    // (half the eigenproblems at large valences). The blocks are independent
+    // eigenproblems: solved side by side, and collected in block order, so
+    // the result does not depend on scheduling.
+    let g = orbits.group_order;
+    let partner = |m: usize| if m > g / 2 { Some(g - m) } else { None };
+    let mut solved: Vec<Option<Result<Vec<eigen::BlockEigen>, Error>>> = blocks
+        .par_iter()
+        .map(|b| if partner(b.index).is_some() { None } else { Some(eigen::block_eigen(&b.matrix)) })
+        .collect();
+    for m in 0..blocks.len() {
+        if let Some(p) = partner(blocks[m].index) {
+            let conjugated = match &solved[p] {
+                Some(Ok(list)) => Ok(list.iter().map(eigen::BlockEigen::conjugate).collect()),
+                Some(Err(e)) => Err(e.clone()),
+                None => unreachable!("a partner below g/2 is solved"),
+            };
+            solved[m] = Some(conjugated);
+        }
+    }
+    let solved = solved.into_iter().map(|s| s.expect("every block solved or conjugated"));
     let mut all = Vec::new();
     for (b, eigen) in blocks.iter().zip(solved) {
         all.extend(eigen?.into_iter().map(|e| Eigenvalue::from_block(e, b.index)));
@@ -129,4 +149,59 @@ fn merge(list: Vec<Eigenvalue>) -> Vec<Eigenvalue> {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A rotation-symmetric real matrix of order g = 7 (a centre and two
+    /// free orbits, pseudo-random weights): every block g − m has the
+    /// conjugate spectrum of block m when both are solved on their own, and
+    /// the decomposition (which solves blocks 0..=g/2 and conjugates the
+    /// rest) lists the same eigenvalues as solving all g blocks.
+    #[test]
+    fn conjugate_blocks_have_conjugate_spectra() {
+        let g = 7;
+        let mut member = vec![(0, 0)];
+        member.extend((0..g).map(|t| (1, t)));
+        member.extend((0..g).map(|t| (2, t)));
+        let orbits =
+            Orbits { group_order: g, member, representative: vec![0, 1, 1 + g], fixed: vec![true, false, false] };
+        let mut state: u64 = 12345;
+        let mut weight = || {
+            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        };
+        let size = 1 + 2 * g;
+        let rows: Vec<Vec<(usize, f64)>> = (0..3).map(|_| (0..size).map(|c| (c, weight())).collect()).collect();
+        let refs: Vec<&[(usize, f64)]> = rows.iter().map(|r| r.as_slice()).collect();
+        let blocks = fourier_blocks_from_rows(&refs, &orbits);
+        let values = |b: &Mat<c64>| -> Vec<c64> {
+            eigen::block_eigen(b).unwrap().iter().flat_map(|e| std::iter::repeat_n(e.value, e.algebraic)).collect()
+        };
+        // equal as multisets: each value matched to an unused one within 1e-10
+        let close = |a: &[c64], b: &[c64]| {
+            let mut used = vec![false; b.len()];
+            a.len() == b.len()
+                && a.iter().all(|x| match (0..b.len()).find(|&j| !used[j] && (x - b[j]).norm() < 1e-10) {
+                    Some(j) => {
+                        used[j] = true;
+                        true
+                    }
+                    None => false,
+                })
+        };
+        let mut all = Vec::new();
+        for m in 0..g {
+            let own = values(&blocks[m].matrix);
+            let partner: Vec<c64> = values(&blocks[(g - m) % g].matrix).iter().map(|z| z.conj()).collect();
+            assert!(close(&own, &partner), "block {m}");
+            all.extend(own);
+        }
+        let d = decompose_dft(&refs, orbits).unwrap();
+        let listed: Vec<c64> =
+            d.eigenvalues.iter().flat_map(|e| std::iter::repeat_n(e.value(), e.algebraic_multiplicity)).collect();
+        assert!(close(&listed, &all));
+    }
 }

@@ -34,6 +34,18 @@ pub struct BlockEigen {
     pub right: Vec<Vec<c64>>,
 }
 
+impl BlockEigen {
+    /// The eigenvalue and eigenvectors of the conjugate matrix.
+    pub fn conjugate(&self) -> BlockEigen {
+        BlockEigen {
+            value: self.value.conj(),
+            algebraic: self.algebraic,
+            geometric: self.geometric,
+            right: self.right.iter().map(|x| x.iter().map(|z| z.conj()).collect()).collect(),
+        }
+    }
+}
+
 pub fn block_eigen(b: &Mat<c64>) -> Result<Vec<BlockEigen>, Error> {
     let n = b.nrows();
     if n == 0 {
