@@ -6,6 +6,23 @@ use subdlab::charmap::{check_map, check_map_over, net, CharMapOptions};
 use subdlab::neighbourhood::{Configuration, NeighbourhoodKind};
 use subdlab::spectrum::{analyse_shared, Options};
 
+/// The scheme and its float analysis (analysis neighbourhood) at valence n,
+/// with the face sequence `faces` where the scheme has mixed sectors.
+fn analysis_of(
+    name: &str,
+    n: usize,
+    faces: Option<&str>,
+) -> (Box<dyn subdlab::sdc::Scheme>, std::sync::Arc<subdlab::spectrum::Analysis>) {
+    let scheme = subdlab::schemes::build(name, &[]).unwrap();
+    let config = match faces {
+        Some(f) => Configuration::with_faces(scheme.as_ref(), n, f).unwrap(),
+        None => Configuration::regular(scheme.as_ref(), n).unwrap(),
+    };
+    let options = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
+    let analysis = analyse_shared(scheme.as_ref(), &config, &options).unwrap();
+    (scheme, analysis)
+}
+
 /// The map read off refined unit rows (as `curvature` does) is the map
 /// refined from the eigenvectors: the same verdict, facets and pixel
 /// counts, and ring points equal up to rounding (a composed row and a
@@ -70,13 +87,7 @@ fn a_function_refined_as_data_has_the_ring_size_of_its_rows() {
         ("four-three", 5, Some("QQTQT")),
     ];
     for (name, n, faces) in cases {
-        let scheme = subdlab::schemes::build(name, &[]).unwrap();
-        let config = match faces {
-            Some(f) => Configuration::with_faces(scheme.as_ref(), n, f).unwrap(),
-            None => Configuration::regular(scheme.as_ref(), n).unwrap(),
-        };
-        let options = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
-        let analysis = analyse_shared(scheme.as_ref(), &config, &options).unwrap();
+        let (scheme, analysis) = analysis_of(name, n, faces);
         let d = &analysis.discovered;
         let size = d.analysis.len();
         for bump in [1, size / 3, size / 2, size - 1] {
@@ -104,13 +115,7 @@ fn a_function_refined_as_data_has_the_ring_size_of_its_rows() {
 fn ring_sizes_taken_together_are_each_function_s_own() {
     use subdlab::curvature::sampler::RingSampler;
     for (name, n, faces) in [("catmull-clark", 5, None), ("four-three", 5, Some("QQTQT"))] {
-        let scheme = subdlab::schemes::build(name, &[]).unwrap();
-        let config = match faces {
-            Some(f) => Configuration::with_faces(scheme.as_ref(), n, f).unwrap(),
-            None => Configuration::regular(scheme.as_ref(), n).unwrap(),
-        };
-        let options = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
-        let analysis = analyse_shared(scheme.as_ref(), &config, &options).unwrap();
+        let (scheme, analysis) = analysis_of(name, n, faces);
         let d = &analysis.discovered;
         let sampler = RingSampler::new(scheme.as_ref(), d, 2).unwrap();
         let xs: Vec<Vec<f64>> = (0..7)
