@@ -6,20 +6,13 @@
 //! The checker needs `python3` (standard library only); where it is absent
 //! the tests say so and pass (CI's machine has it).
 
+use crate::common::checker_can_run;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant};
 
 const CHECKER: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scripts/check_cert.py");
-
-fn python3() -> bool {
-    let found = Command::new("python3").arg("--version").output().is_ok_and(|o| o.status.success());
-    if !found {
-        eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
-    }
-    found
-}
 
 /// Writes the certificate of `COMMAND ARGS --certify` (`spectrum` or
 /// `charmap`) to `dir/name.json`.
@@ -88,7 +81,7 @@ fn assert_rejected_file(path: &Path, because: &str) {
 
 #[test]
 fn certificates_of_catmull_clark_loop_and_doo_sabin_are_accepted() {
-    if !python3() {
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -155,7 +148,7 @@ fn certified_claims() -> Vec<(String, String, usize)> {
 /// file is removed once accepted (the whole set is about half a gigabyte).
 #[test]
 fn every_certificate_of_the_registry_is_accepted() {
-    if !python3() {
+    if !checker_can_run() {
         return;
     }
     let claims = certified_claims();
@@ -207,7 +200,7 @@ fn every_certificate_of_the_registry_is_accepted() {
 
 #[test]
 fn the_disproof_of_a_block_2_dominant_loop_variant_is_accepted() {
-    if !python3() {
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -227,7 +220,7 @@ fn charmap_certificate(dir: &Path, name: &str, args: &[&str]) -> PathBuf {
 /// folded control (regularity DISPROVED by faces of both proved signs).
 #[test]
 fn charmap_certificates_are_accepted() {
-    if !python3() {
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -257,7 +250,7 @@ fn charmap_certificates_are_accepted() {
 
 #[test]
 fn tampered_charmap_parts_are_rejected() {
-    if !python3() {
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -310,7 +303,7 @@ fn tampered_charmap_parts_are_rejected() {
 /// missing one of them or laid out otherwise.
 #[test]
 fn a_non_box_charmap_certificate_is_re_derived_and_its_tampering_rejected() {
-    if !python3() {
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -357,7 +350,7 @@ fn a_non_box_charmap_certificate_is_re_derived_and_its_tampering_rejected() {
 /// checker cannot re-verify it.
 #[test]
 fn a_certificate_without_exact_rows_is_rejected() {
-    if !python3() {
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -387,7 +380,7 @@ fn nudged(ratio: &str) -> String {
 
 #[test]
 fn tampered_certificates_are_rejected() {
-    if !python3() {
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -516,7 +509,7 @@ fn tampered_certificates_are_rejected() {
 /// each turned into a PROVED.
 #[test]
 fn the_soundness_controls_are_re_derived_and_their_flips_rejected() {
-    if !python3() {
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -552,7 +545,7 @@ fn the_soundness_controls_are_re_derived_and_their_flips_rejected() {
 /// eigenvalues below the truth, rejected.
 #[test]
 fn the_exact_route_is_re_derived_and_its_tamperings_rejected() {
-    if !python3() {
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -594,7 +587,7 @@ fn the_exact_route_is_re_derived_and_its_tamperings_rejected() {
 /// recomputes B^k from the exact rows.
 #[test]
 fn polar_bi2_certificates_by_lemma_s6_are_accepted() {
-    if !python3() {
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -641,7 +634,7 @@ fn add_ratio(a: &str, b: &num_rational::BigRational) -> String {
 
 #[test]
 fn tampered_lemma_s6_evidence_is_rejected() {
-    if !python3() {
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -751,7 +744,7 @@ fn tampered_lemma_s6_evidence_is_rejected() {
 /// or another λ1 is rejected.
 #[test]
 fn an_exact_disproof_at_a_defective_lambda1_is_re_derived() {
-    if !python3() {
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -814,7 +807,7 @@ fn tampered(source: &Path, dir: &Path, name: &str, edit: &str) -> PathBuf {
 
 #[test]
 fn kobbelt_sqrt3_difference_scheme_certificates_are_re_derived_and_accepted() {
-    if !python3() {
+    if !checker_can_run() {
         return;
     }
     for n in ["4", "5"] {
@@ -837,7 +830,7 @@ fn kobbelt_sqrt3_difference_scheme_certificates_are_re_derived_and_accepted() {
 
 #[test]
 fn tampered_difference_scheme_parts_are_rejected() {
-    if !python3() {
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -916,7 +909,7 @@ fn tampered_difference_scheme_parts_are_rejected() {
 
 #[test]
 fn the_documents_own_constants_are_not_used() {
-    if !python3() {
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();

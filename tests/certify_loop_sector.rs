@@ -39,8 +39,7 @@
 
 use crate::common;
 use common::{
-    assert_rejected, check_certificate, check_tampered_certificate, python3_available, subdlab,
-    write_sector_certificate,
+    assert_rejected, check_certificate, check_tampered_certificate, checker_can_run, subdlab, write_sector_certificate,
 };
 use subdlab::certify::tagged_charmap::{certify_tagged_charmap, TaggedCharMapCertificate};
 use subdlab::certify::Verdict;
@@ -257,8 +256,7 @@ fn cli_proves_loop_k3_and_disproves_k7() {
 
 #[test]
 fn the_checker_re_derives_loops_proved_sector_maps_and_agrees_on_the_controls() {
-    if !python3_available() {
-        eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -304,8 +302,7 @@ fn the_checker_re_derives_loops_proved_sector_maps_and_agrees_on_the_controls() 
 
 #[test]
 fn tampered_loop_sector_certificates_are_rejected() {
-    if !python3_available() {
-        eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();

@@ -39,7 +39,7 @@
 //! PROVED must be its PASSES, every DISPROVED its FAILS.
 
 use crate::common;
-use common::{check_certificate, check_tampered_certificate, python3_available, subdlab, write_spectrum_certificate};
+use common::{check_certificate, check_tampered_certificate, checker_can_run, subdlab, write_spectrum_certificate};
 use subdlab::certify::tagged::{certify_tagged, TaggedCertificate};
 use subdlab::certify::Verdict;
 use subdlab::neighbourhood::{Configuration, Tagging};
@@ -264,8 +264,7 @@ fn the_command_line_exits_and_speaks_json_like_the_interior_certificate() {
 /// counting Schur–Cohn): accepted as written, rejected when tampered with.
 #[test]
 fn the_independent_checker_accepts_tagged_certificates_and_rejects_tampered_ones() {
-    if !python3_available() {
-        eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();

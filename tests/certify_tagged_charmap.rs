@@ -41,8 +41,7 @@
 
 use crate::common;
 use common::{
-    assert_rejected, check_certificate, check_tampered_certificate, python3_available, subdlab,
-    write_sector_certificate,
+    assert_rejected, check_certificate, check_tampered_certificate, checker_can_run, subdlab, write_sector_certificate,
 };
 use subdlab::certify::tagged_charmap::certify_tagged_charmap;
 use subdlab::certify::Verdict;
@@ -182,8 +181,7 @@ fn a_boundary_rule_outside_lemma_b3_is_not_proved() {
 
 #[test]
 fn the_independent_checker_re_derives_proved_sector_maps() {
-    if !python3_available() {
-        eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -212,8 +210,7 @@ fn the_independent_checker_re_derives_proved_sector_maps() {
 
 #[test]
 fn a_disproved_sector_map_writes_no_sector_part() {
-    if !python3_available() {
-        eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -241,8 +238,7 @@ fn a_disproved_sector_map_writes_no_sector_part() {
 
 #[test]
 fn tampered_sector_certificates_are_rejected() {
-    if !python3_available() {
-        eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -368,8 +364,7 @@ fn tampered_sector_certificates_are_rejected() {
 
 #[test]
 fn the_example_registry_writes_sector_documents_the_checker_accepts() {
-    if !python3_available() {
-        eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
+    if !checker_can_run() {
         return;
     }
     // examples/claims/boundary-blz.toml's certified sector maps, written by

@@ -27,7 +27,7 @@
 //!   and the crease with it, naming that side.
 
 use crate::common;
-use common::{check_certificate, check_tampered_certificate, python3_available, write_spectrum_certificate};
+use common::{check_certificate, check_tampered_certificate, checker_can_run, write_spectrum_certificate};
 use subdlab::certify::tagged::{certify_tagged, TaggedCertificate};
 use subdlab::certify::Verdict;
 use subdlab::neighbourhood::{Configuration, Tagging};
@@ -250,8 +250,7 @@ fn sides_that_read_across_the_crease_do_not_decouple() {
 
 #[test]
 fn the_checker_rechecks_each_side_and_rejects_tampering() {
-    if !python3_available() {
-        eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
+    if !checker_can_run() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();

@@ -18,24 +18,33 @@ use num_traits::{One, Signed, ToPrimitive, Zero};
 
 /// gcd(c_0, c_1, ...) ≥ 0 (0 for no or only zero coefficients).
 pub fn content<'a>(coefficients: impl IntoIterator<Item = &'a BigInt>) -> BigInt {
+    let mut rest = coefficients.into_iter();
     let mut g = BigInt::zero();
-    for c in coefficients {
+    while let Some(c) = rest.next() {
         if g.is_one() {
             break;
         }
         if g.is_zero() {
             g = c.abs();
-            continue;
+        } else {
+            let r = c.mod_floor(&g);
+            if !r.is_zero() {
+                g = g.gcd(&r);
+            }
         }
-        // a word-sized gcd finishes in machine integers
-        if let Some(w) = g.to_u64() {
-            let r = (c.magnitude() % w).to_u64().expect("a remainder modulo a word is a word");
-            g = BigInt::from(w.gcd(&r));
-            continue;
-        }
-        let r = c.mod_floor(&g);
-        if !r.is_zero() {
-            g = g.gcd(&r);
+        // once the running gcd fits a machine word, the rest is word
+        // arithmetic (a BigInt per step allocates; most denominators of a
+        // subdivision matrix's exact rows are words from the start)
+        if let Some(w) = g.to_u64().filter(|&w| w > 1) {
+            let mut w = w;
+            for c in rest.by_ref() {
+                if w == 1 {
+                    break;
+                }
+                let r = (c.magnitude() % w).to_u64().expect("a remainder modulo a word is a word");
+                w = w.gcd(&r);
+            }
+            return BigInt::from(w);
         }
     }
     g

@@ -139,22 +139,11 @@ fn reduce(mut p: Vec<BigInt>, phi: &Phi) -> Vec<BigInt> {
     p
 }
 
-/// gcd(d, c_0, c_1, ...) for a positive d. Almost every denominator met in
-/// a subdivision matrix fits a machine word: then each c_i is reduced modulo
-/// the running gcd and the rest is word arithmetic, where `BigInt::gcd`
-/// would allocate on every step (it was a quarter of an exact row's cost).
+/// gcd(d, c_0, c_1, ...) for a positive d (`numeric::content`, which
+/// finishes in machine words once the running gcd is one: almost every
+/// denominator met in a subdivision matrix is).
 fn content_gcd(d: &BigInt, cs: &[BigInt]) -> BigInt {
-    let Some(mut g) = d.magnitude().to_u64() else {
-        return super::content::content(std::iter::once(d).chain(cs));
-    };
-    for c in cs {
-        if g <= 1 {
-            break;
-        }
-        let r = (c.magnitude() % g).to_u64().expect("a remainder modulo a word is a word");
-        g = g.gcd(&r);
-    }
-    BigInt::from(g)
+    super::content::content(std::iter::once(d).chain(cs))
 }
 
 /// The numerators of a·b reduced modulo Φ_l, computed in machine words when

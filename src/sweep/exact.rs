@@ -1039,53 +1039,18 @@ pub(crate) fn first_subresultant(a: &BiPoly, b: &BiPoly) -> Result<Option<CPoly>
 /// without the final exact divisions: a wrong interpolation (too few
 /// points of the true degree) fails them and gives 0, the search from j = 0.
 pub(crate) fn proved_common_degree(a: &BiPoly, b: &BiPoly) -> usize {
-    use crate::numeric::exact::Poly;
-    use crate::sweep::exact::modulus::{divide_exactly, interpolate_q, rational_coefficients, slope, QT};
+    use crate::sweep::exact::modulus::{divide_exactly, interpolated_factor, rational_coefficients, slope, value_at};
     let (Some(qa), Some(qb)) = (rational_coefficients(a), rational_coefficients(b)) else { return 0 };
     let (da, db) = (qa.len() - 1, qb.len() - 1);
     if da == 0 || db == 0 {
         return 0;
     }
     let e = slope(&qa).min(slope(&qb));
-    let at = |p: &[QT], t: i64| -> Poly {
-        let t = Rational::from_integer(t.into());
-        Poly {
-            coeffs: p.iter().map(|c| c.iter().rev().fold(<Rational as Zero>::zero(), |acc, x| acc * &t + x)).collect(),
-        }
-    };
-    // (degree, points of that degree) for the least degree seen
-    let mut best: Option<(usize, Vec<(Rational, Poly)>)> = None;
-    for t in 0..(2 * da.max(db) as i64 + 40) {
-        let g = at(&qa, t).gcd(&at(&qb, t));
-        let k = g.degree();
-        if k == 0 {
-            return 0;
-        }
-        match &mut best {
-            Some((bk, points)) if *bk == k => points.push((Rational::from_integer(t.into()), g)),
-            Some((bk, _)) if *bk < k => continue,
-            _ => best = Some((k, vec![(Rational::from_integer(t.into()), g)])),
-        }
-        let (bk, points) = best.as_ref().expect("set above");
-        let need = (e.clone() * Rational::from_integer((*bk as i64).into())).floor().to_integer();
-        let need = need.to_usize().unwrap_or(usize::MAX).saturating_add(1);
-        if points.len() < need {
-            continue;
-        }
-        let xs: Vec<Rational> = points.iter().map(|(x, _)| x.clone()).collect();
-        let h: Vec<QT> = (0..=*bk)
-            .map(|j| {
-                let ys: Vec<Rational> = points
-                    .iter()
-                    .map(|(_, g)| g.coeffs.get(j).cloned().unwrap_or_else(<Rational as Zero>::zero))
-                    .collect();
-                interpolate_q(&xs, &ys)
-            })
-            .collect();
-        let divides = |p: &[QT]| divide_exactly(p, &h).is_some();
-        return if divides(&qa) && divides(&qb) { *bk } else { 0 };
+    let tries = 2 * da.max(db) as i64 + 40;
+    match interpolated_factor(&e, tries, |t| value_at(&qa, t).gcd(&value_at(&qb, t))) {
+        Some(h) if divide_exactly(&qa, &h).is_some() && divide_exactly(&qb, &h).is_some() => h.len() - 1,
+        _ => 0,
     }
-    0
 }
 
 /// The polynomial of degree < len through (x_i, y_i) (Newton form, then

@@ -191,8 +191,12 @@ pub fn assert_registry_verdict(id: &str, want: subdlab::claims::Verdict) {
 
 /// Whether `python3` runs here (the certificate checker's tests skip, saying
 /// so, where it does not).
-pub fn python3_available() -> bool {
-    std::process::Command::new("python3").arg("--version").output().is_ok_and(|o| o.status.success())
+pub fn checker_can_run() -> bool {
+    let found = std::process::Command::new("python3").arg("--version").output().is_ok_and(|o| o.status.success());
+    if !found {
+        eprintln!("SKIPPED: python3 is not installed; the certificate checker cannot run");
+    }
+    found
 }
 
 /// `scripts/check_cert.py FILE`: its exit status and standard output.

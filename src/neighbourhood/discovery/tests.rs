@@ -306,30 +306,30 @@ fn region_entities_answer_what_the_set_holds() {
             }
         }
     }
+}
 
-    /// `RegionEntities` answers exactly what `region_entities`' set holds, for every
-    /// origin of a small mixed mesh (quads and triangles, open rim) and every
-    /// pattern of flagged faces, including origins of no face (reversed and
-    /// non-existent edges, out-of-range ids).
-    #[test]
-    fn the_dense_region_holds_exactly_the_region_entities() {
-        // a 3×2 grid of quads (vertices 0..12, row-major, 4 per row) with
-        // the last quad split into two triangles
-        let q = |a: usize| vec![a, a + 1, a + 5, a + 4];
-        let faces = vec![q(0), q(1), q(2), q(4), q(5), vec![6, 7, 11], vec![6, 11, 10]];
-        let mesh = PolyMesh::new(12, faces).unwrap();
-        let nf = mesh.num_faces();
-        for pattern in 0u32..(1 << nf) {
-            let flags: Vec<bool> = (0..nf).map(|f| pattern >> f & 1 == 1).collect();
-            let set = super::region_entities(&mesh, &flags);
-            let dense = super::RegionEntities::new(&mesh, &flags);
-            let mut origins: Vec<Origin> = (0..14).map(Origin::Vertex).collect();
-            origins.extend((0..13).flat_map(|a| (0..13).map(move |b| Origin::Edge(a, b))));
-            origins.extend((0..nf + 1).map(Origin::Face));
-            origins.extend((0..nf + 1).flat_map(|f| (0..4).map(move |corner| Origin::Corner { face: f, corner })));
-            for o in origins {
-                assert_eq!(dense.contains(o), set.contains(&o), "{o:?} with faces {flags:?}");
-            }
+/// `RegionEntities` answers exactly what `region_entities`' set holds, for every
+/// origin of a small mixed mesh (quads and triangles, open rim) and every
+/// pattern of flagged faces, including origins of no face (reversed and
+/// non-existent edges, out-of-range ids).
+#[test]
+fn the_dense_region_holds_exactly_the_region_entities() {
+    // a 3×2 grid of quads (vertices 0..12, row-major, 4 per row) with
+    // the last quad split into two triangles
+    let q = |a: usize| vec![a, a + 1, a + 5, a + 4];
+    let faces = vec![q(0), q(1), q(2), q(4), q(5), vec![6, 7, 11], vec![6, 11, 10]];
+    let mesh = PolyMesh::new(12, faces).unwrap();
+    let nf = mesh.num_faces();
+    for pattern in 0u32..(1 << nf) {
+        let flags: Vec<bool> = (0..nf).map(|f| pattern >> f & 1 == 1).collect();
+        let set = super::region_entities(&mesh, &flags);
+        let dense = super::RegionEntities::new(&mesh, &flags);
+        let mut origins: Vec<Origin> = (0..14).map(Origin::Vertex).collect();
+        origins.extend((0..13).flat_map(|a| (0..13).map(move |b| Origin::Edge(a, b))));
+        origins.extend((0..nf + 1).map(Origin::Face));
+        origins.extend((0..nf + 1).flat_map(|f| (0..4).map(move |corner| Origin::Corner { face: f, corner })));
+        for o in origins {
+            assert_eq!(dense.contains(o), set.contains(&o), "{o:?} with faces {flags:?}");
         }
     }
 }

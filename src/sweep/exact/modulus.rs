@@ -218,48 +218,68 @@ pub(crate) fn interpolate_q(x: &[Rational], y: &[Rational]) -> QT {
 /// every root of p, so no non-real pair is lost. Otherwise p is kept.
 fn without_repeated_factor(p: Vec<QT>) -> Vec<QT> {
     let d = p.len() - 1;
-    let e = slope(&p);
-    let at = |t: i64| -> Poly {
-        let t = Rational::from_integer(t.into());
-        let coeffs: Vec<Rational> =
-            p.iter().map(|c| c.iter().rev().fold(<Rational as Zero>::zero(), |acc, x| acc * &t + x)).collect();
-        Poly { coeffs }
-    };
+    let h = interpolated_factor(&slope(&p), 2 * d as i64 + 40, |t| {
+        let f = value_at(&p, t);
+        f.gcd(&f.derivative())
+    });
+    match h.and_then(|h| divide_exactly(&p, &h).and_then(|q| divide_exactly(&q, &h).map(|_| q))) {
+        Some(q) => q,
+        None => p,
+    }
+}
+
+/// p ∈ Q[t][x] at t (coefficients of x, lowest first).
+pub(crate) fn value_at(p: &[QT], t: i64) -> Poly {
+    let t = Rational::from_integer(t.into());
+    Poly { coeffs: p.iter().map(|c| c.iter().rev().fold(<Rational as Zero>::zero(), |acc, x| acc * &t + x)).collect() }
+}
+
+/// A monic H ∈ Q[t][x] read off its values: `at(t₀)` (t₀ = 0, 1, ...,
+/// `tries` − 1) is a monic polynomial over Q whose degree is at least
+/// deg H everywhere and equals it but at finitely many t₀, and which is
+/// H(t₀) there (a gcd in x at t₀ of polynomials H divides). The points of
+/// least degree k are kept; H's coefficient of x^{k−j} is ± an elementary
+/// symmetric function of j roots, growing at most like |t|^e (`e` the
+/// slope of the polynomials H divides), so it has degree ≤ e·j and
+/// ⌊e·k⌋ + 1 points of degree k determine H, coefficient by coefficient.
+/// `None` when a point has degree 0 (no common factor) or the points run
+/// out. Nothing here is trusted: the caller accepts H only by exact
+/// division (a wrong interpolation, from too few points of the true
+/// degree, fails it).
+pub(crate) fn interpolated_factor(e: &Rational, tries: i64, at: impl Fn(i64) -> Poly) -> Option<Vec<QT>> {
+    // (degree, points of that degree) for the least degree seen
     let mut best: Option<(usize, Vec<(Rational, Poly)>)> = None;
-    for t in 0..(2 * d as i64 + 40) {
-        let f = at(t);
-        let g = f.gcd(&f.derivative());
+    for t in 0..tries {
+        let g = at(t);
         let k = g.degree();
         if k == 0 {
-            return p;
+            return None;
         }
-        let need =
-            (e.clone() * Rational::from_integer((k as i64).into())).floor().to_integer().to_usize().unwrap_or(0) + 1;
         match &mut best {
-            Some((bk, pts)) if *bk == k => pts.push((Rational::from_integer(t.into()), g)),
-            Some((bk, _)) if *bk < k => {}
+            Some((bk, points)) if *bk == k => points.push((Rational::from_integer(t.into()), g)),
+            Some((bk, _)) if *bk < k => continue,
             _ => best = Some((k, vec![(Rational::from_integer(t.into()), g)])),
         }
-        if let Some((bk, pts)) = &best {
-            if pts.len() >= need && *bk == k {
-                let xs: Vec<Rational> = pts.iter().map(|(x, _)| x.clone()).collect();
-                let h: Vec<QT> = (0..=*bk)
-                    .map(|j| {
-                        let ys: Vec<Rational> = pts
-                            .iter()
-                            .map(|(_, g)| g.coeffs.get(j).cloned().unwrap_or_else(<Rational as Zero>::zero))
-                            .collect();
-                        interpolate_q(&xs, &ys)
-                    })
-                    .collect();
-                return match divide_exactly(&p, &h).and_then(|q| divide_exactly(&q, &h).map(|_| q)) {
-                    Some(q) => q,
-                    None => p,
-                };
-            }
+        let (bk, points) = best.as_ref().expect("set above");
+        let need = (e.clone() * Rational::from_integer((*bk as i64).into())).floor().to_integer();
+        let need = need.to_usize().unwrap_or(usize::MAX).saturating_add(1);
+        if points.len() < need {
+            continue;
         }
+        let xs: Vec<Rational> = points.iter().map(|(x, _)| x.clone()).collect();
+        return Some(
+            (0..=*bk)
+                .map(|j| {
+                    let ys: Vec<Rational> = points
+                        .iter()
+                        .map(|(_, g)| g.coeffs.get(j).cloned().unwrap_or_else(<Rational as Zero>::zero))
+                        .collect();
+                    interpolate_q(&xs, &ys)
+                })
+                .collect(),
+        );
     }
-    p
+    None
 }
 
 /// max over k ≥ 1 of deg_t(c_k)/k, c_k the coefficient of x^{d−k}.
