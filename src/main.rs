@@ -1,7 +1,39 @@
 // jemalloc: a sixth of `verify`'s time was glibc's malloc and free of small
 // vectors (see Cargo.toml)
 #[global_allocator]
-static ALLOCATOR: tikv_jemallocator::Jemalloc = tikv_jemallocator::Jemalloc;
+static ALLOCATOR: ZeroByMemset = ZeroByMemset(tikv_jemallocator::Jemalloc);
+
+/// jemalloc with zeroed allocations (`vec![0; n]`, `calloc`) zeroed by
+/// `memset`. jemalloc zeroes a large block it recycles by handing its pages
+/// back to the kernel (`madvise(MADV_DONTNEED)`) so that they come back
+/// zero: every page is then faulted in again on first touch, and each call
+/// interrupts the other threads to flush their TLBs. Half the main job's
+/// page faults were such re-faults of recycled meshes and rasters. The
+/// buffers are written right after anyway, so writing the zeros costs
+/// little; only fresh pages, which the kernel hands out zeroed, are touched
+/// earlier than they would be.
+struct ZeroByMemset(tikv_jemallocator::Jemalloc);
+
+// SAFETY: every call is forwarded to jemalloc with the same layout; the
+// zeroing writes only the `layout.size()` bytes the allocation owns.
+unsafe impl std::alloc::GlobalAlloc for ZeroByMemset {
+    unsafe fn alloc(&self, layout: std::alloc::Layout) -> *mut u8 {
+        unsafe { self.0.alloc(layout) }
+    }
+    unsafe fn alloc_zeroed(&self, layout: std::alloc::Layout) -> *mut u8 {
+        let p = unsafe { self.0.alloc(layout) };
+        if !p.is_null() {
+            unsafe { std::ptr::write_bytes(p, 0, layout.size()) };
+        }
+        p
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: std::alloc::Layout) {
+        unsafe { self.0.dealloc(ptr, layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: std::alloc::Layout, new_size: usize) -> *mut u8 {
+        unsafe { self.0.realloc(ptr, layout, new_size) }
+    }
+}
 
 fn main() {
     // Like other command-line tools, end quietly when the reader of our output
