@@ -1230,13 +1230,17 @@ class Checker:
         exact = claims.get("exact_route")
         exact_word = self.check_tagged_exact(exact) if exact is not None else None
         enc_word = None
-        if get(claims, "enclosures", "claims") == "PROVED":
+        enc_claim = get(claims, "enclosures", "claims")
+        if enc_claim == "PROVED":
             self.check_tagged_proof(claims)
             enc_word = "PROVED"
+        elif enc_claim == "DISPROVED":
+            self.check_tagged_disproof()
+            enc_word = "DISPROVED"
         if self.verdict == "PROVED" and "PROVED" not in (enc_word, exact_word):
             reject("PROVED, but neither route's proof is in the document")
-        if self.verdict == "DISPROVED" and exact_word != "DISPROVED":
-            reject("DISPROVED without the exact route's disproof (this checker re-checks no enclosure disproof of a tagged vertex)")
+        if self.verdict == "DISPROVED" and "DISPROVED" not in (enc_word, exact_word):
+            reject("DISPROVED, but neither route's disproof is in the document")
         if self.verdict == "NOT PROVED":
             self.lines.append("  --  NOT PROVED: nothing to re-check")
 
@@ -1428,6 +1432,61 @@ class Checker:
                         reject(f"block {m} component {i} is not shown below λ2 in modulus")
         self.ok("PROVED by the enclosures (lemma T4): λ0 = 1 alone and simple, λ1 and λ2 single real positive "
                 "eigenvalues below it, every other disc below both in modulus")
+
+    def check_tagged_disproof(self):
+        """Lemma T4's disproofs, found on the discs recomputed above (the
+        document names no witness; nothing is taken from it but the discs,
+        each checked to hold its Gershgorin disc, and their components,
+        checked disjoint: a component of k discs holds exactly k eigenvalues).
+        (1) A component whose every disc lies outside the closed unit disc
+        holds an eigenvalue of modulus > 1. (2) Otherwise, with λ0's
+        component the only one that may hold 1 (one disc), two one-disc
+        components A and B whose discs lie above every disc of every other
+        component in modulus hold the two eigenvalues of largest modulus
+        after λ0; if one of them is proved not real (its disc misses the
+        axis) or real (the mirror test of the proof) and negative, λ1 and λ2
+        are not both real and positive."""
+        one = Fraction(1)
+        unit = Disc(1, 0, 0)
+        everything = [(m, i, c) for m, comps in self.components.items() for i, c in enumerate(comps)]
+        for m, i, c in everything:
+            if c and all(mod_separated(d, unit) for d in c):
+                self.ok(f"DISPROVED by the enclosures (lemma T4): block {m} component {i} ({len(c)} eigenvalue(s)) "
+                        "lies outside the closed unit disc")
+                return
+        holding = [(m, i) for m, i, c in everything if any(holds(d, one) for d in c)]
+        if len(holding) != 1 or len(self.components[holding[0][0]][holding[0][1]]) != 1:
+            reject(f"DISPROVED by the enclosures, but {len(holding)} components may hold 1 (λ0 not separated) and "
+                   "none lies outside the unit disc")
+        rest = [(m, i, c) for m, i, c in everything if (m, i) != holding[0]]
+        # for each one-disc component, the others not wholly below it in modulus
+        not_below = {}
+        for m, i, c in rest:
+            if len(c) == 1:
+                not_below[(m, i)] = {(m2, i2) for m2, i2, c2 in rest
+                                     if (m2, i2) != (m, i) and not all(mod_separated(c[0], o) for o in c2)}
+
+        def real(m, i, d):
+            mirror = Disc(d.re, -d.im, d.r)
+            return meets_real_axis(d) and all(disjoint(mirror, o) for j, oc in enumerate(self.components[m])
+                                              if j != i for o in oc)
+
+        for a, above_a in not_below.items():
+            for b, above_b in not_below.items():
+                if a >= b or not above_a <= {b} or not above_b <= {a}:
+                    continue
+                for (m, i) in (a, b):
+                    d = self.components[m][i][0]
+                    if not meets_real_axis(d):
+                        self.ok(f"DISPROVED by the enclosures (lemma T4): the two leading eigenvalues after λ0 are "
+                                f"single and separated; the one in block {m} component {i} is not real")
+                        return
+                    # real, and every real point of its disc < 0
+                    if real(m, i, d) and d.re < 0 and d.r * d.r - d.im * d.im < d.re * d.re:
+                        self.ok(f"DISPROVED by the enclosures (lemma T4): the two leading eigenvalues after λ0 are "
+                                f"single and separated; the one in block {m} component {i} is real and negative")
+                        return
+        reject("DISPROVED by the enclosures, but no disproof of lemma T4 is found on the recomputed discs")
 
     def check_tagged_exact(self, claim):
         """Lemma T7 recomputed from the rows: this checker's characteristic

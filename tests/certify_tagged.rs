@@ -311,3 +311,71 @@ fn the_independent_checker_accepts_tagged_certificates_and_rejects_tampered_ones
     assert_eq!(code, 1, "{text}");
     assert!(text.contains("REJECTED"), "{text}");
 }
+
+/// Lemma T4's two disproofs, made by the enclosures alone and re-derived by
+/// the independent checker from its own discs. Loop's file with the
+/// boundary vertex rule (a, 1 − 2a, a) along the boundary: the boundary
+/// curve is refined by its own rules (the vertex rule and the midpoint), so
+/// on (v₋₁, v₀, v₁) the matrix [[1/2, 1/2, 0], [a, 1 − 2a, a], [0, 1/2, 1/2]]
+/// gives eigenvalues of S: 1, 1/2 (odd) and its trace minus both,
+/// 2 − 2a − 3/2 = 1/2 − 2a (even). a = 1: −3/2, outside the unit disc.
+/// a = 9/16: −5/8, above every other eigenvalue in modulus — the interior's
+/// sine modes at k = 25 are 3/8 + cos(mπ/25)/4 ≤ 3/8 + cos(π/25)/4 < 0.6231
+/// (they vanish on the boundary rays, so the changed vertex rule does not
+/// reach them) and the tangent 1/2 — so λ1 is negative. At k = 25 S has 78
+/// points, above the 64 the exact route re-decides once the enclosures have
+/// decided, so the document carries the enclosures' disproof alone; at
+/// k = 3 the exact route (lemma T7) runs and disproves the same rules, a
+/// second route.
+#[test]
+fn enclosure_disproofs_are_rechecked_by_the_independent_checker() {
+    if !checker_can_run() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let loop_file = std::fs::read_to_string(format!("{}/schemes/loop.toml", env!("CARGO_MANIFEST_DIR"))).unwrap();
+    let cases =
+        [("outside", "1", "-1", "outside the closed unit disc"), ("negative", "9/16", "-1/8", "real and negative")];
+    for (name, a, centre, why) in cases {
+        let rules = loop_file.replace(
+            "[vertex-crease]\ncentre = \"3/4\"\ncrease = \"1/8\"",
+            &format!("[vertex-crease]\ncentre = \"{centre}\"\ncrease = \"{a}\""),
+        );
+        assert_ne!(rules, loop_file, "the boundary vertex rule of schemes/loop.toml moved");
+        let scheme = dir.path().join(format!("{name}.toml"));
+        std::fs::write(&scheme, rules).unwrap();
+        let scheme = scheme.to_str().unwrap();
+        let path =
+            write_spectrum_certificate(dir.path(), &format!("{name}.json"), &[scheme, "-n", "25", "--tag", "boundary"]);
+        let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+        let t = &doc["parts"]["tagged"];
+        assert_eq!(t["verdict"], "DISPROVED", "{name}: {t}");
+        assert_eq!(t["decided_by"], "enclosures", "{name}: the exact route should not have run");
+        assert_eq!(t["claims"]["enclosures"], "DISPROVED", "{name}");
+        let (code, text) = check_certificate(&path);
+        assert_eq!(code, 0, "{name}: {text}");
+        assert!(text.contains("ACCEPTED (DISPROVED)") && text.contains(why), "{name}: {text}");
+        // the second route: the same rules at k = 3, disproved exactly
+        let small = write_spectrum_certificate(
+            dir.path(),
+            &format!("{name}-3.json"),
+            &[scheme, "-n", "3", "--tag", "boundary"],
+        );
+        let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&small).unwrap()).unwrap();
+        assert_eq!(doc["parts"]["tagged"]["claims"]["exact_route"]["verdict"], "DISPROVED", "{name} at k = 3");
+    }
+    // negative control: a proved boundary (Loop's own rules) presented as an
+    // enclosure disproof; the checker finds none on the discs
+    write_spectrum_certificate(dir.path(), "proved.json", &["loop", "-n", "25", "--tag", "boundary"]);
+    let (code, text) = check_certificate(&dir.path().join("proved.json"));
+    assert!(code == 0 && text.contains("ACCEPTED (PROVED)"), "{text}");
+    common::assert_rejected(
+        check_tampered_certificate(dir.path(), "proved.json", &|d| {
+            let t = &mut d["parts"]["tagged"];
+            t["verdict"] = "DISPROVED".into();
+            t["claims"]["enclosures"] = "DISPROVED".into();
+        }),
+        "no disproof of lemma T4",
+        "a proof relabelled as an enclosure disproof",
+    );
+}
