@@ -59,8 +59,8 @@ fn verify(claims: &[String]) -> Vec<Value> {
     std::fs::write(&path, format!("paper = \"t\"\ntitle = \"t\"\n{}", claims.concat())).unwrap();
     let out = subdlab(&["verify", "--claims", path.to_str().unwrap(), "--json"]);
     assert!(!String::from_utf8_lossy(&out.stderr).contains("panicked"), "a panic");
-    let v: Value = serde_json::from_slice(&out.stdout)
-        .unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&out.stderr)));
+    let v: Value =
+        serde_json::from_slice(&out.stdout).unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&out.stderr)));
     v[0]["claims"].as_array().unwrap().clone()
 }
 
