@@ -20,6 +20,7 @@ mod lin_luo_statements;
 mod negative_controls;
 mod notebooks;
 mod parameter_range_claims;
+mod parameter_range_curvature;
 mod readme_figures;
 mod registry_corrections;
 mod registry_independent;

@@ -7,23 +7,21 @@
 //! chain tops sampled on the ring) is confirmed by a second route before it
 //! decides anything: the growth test of `curvature::jordan` (projected
 //! iteration, and the limit of the growing direction level by level), and,
-//! where S is rational, the exact nullities of S − λ²I and (S − λ²I)². When
-//! the routes disagree the claim is INCONCLUSIVE with both.
+//! where S is rational, the exact nullities of S − λ²I and (S − λ²I)²
+//! (`claims::common::curvature`, shared with `parameter-range`). When the
+//! routes disagree the claim is INCONCLUSIVE with both.
 
 use serde::Deserialize;
 
 use crate::claims::check_kind::CheckKind;
-use crate::claims::common::spectra::{subject_config, Cache};
+use crate::claims::common::curvature::{compute, evidence};
+use crate::claims::common::spectra::Cache;
 use crate::claims::common::values::{env_for, eval};
 use crate::claims::schedule;
 use crate::claims::subject::Subject;
 use crate::claims::verdict::Finding;
-use crate::curvature::jordan::{exact_jordan, growth_test, ExactJordan, GrowthTest};
-use crate::curvature::{curvature_of_analysis, Curvature as SecondOrder, CurvatureOptions, Evidence, EIG_TOL};
 use crate::error::Error;
-use crate::neighbourhood::NeighbourhoodKind;
-use crate::numeric::Rational;
-use crate::spectrum::{analyse_shared, fmt_f, Options};
+use crate::spectrum::fmt_f;
 
 /// `class = "bounded"` or `class = ["zero", "bounded"]` (any of them).
 #[derive(Clone, Debug, Deserialize)]
@@ -85,130 +83,6 @@ impl ClassSpec {
         }
         Ok(v)
     }
-}
-
-/// One valence: the analysis and the second routes.
-struct Computed {
-    c: SecondOrder,
-    growth: Option<Result<GrowthTest, Error>>,
-    exact: Option<ExactJordan>,
-}
-
-/// The analysis of the subject at valence n (exact when λ and μ read as
-/// small rationals, as `subdlab curvature` does), with the second routes
-/// when |μ| = λ².
-fn compute(subject: &Subject, n: usize, levels: usize) -> Result<Computed, Error> {
-    if subject.neighbourhood.as_deref().is_some_and(|k| k != "analysis") {
-        return Err(Error::Claim(
-            "the curvature check uses the analysis neighbourhood; leave 'neighbourhood' out".into(),
-        ));
-    }
-    subject.refuse_tag("the curvature check")?;
-    let (scheme, config) = subject_config(subject, n)?;
-    let opts = CurvatureOptions { levels, ..CurvatureOptions::default() };
-    let options = Options { neighbourhood: NeighbourhoodKind::Analysis, method: None, exact: false };
-    let mut analysis = analyse_shared(scheme.as_ref(), &config, &options)?;
-    let mut c = curvature_of_analysis(scheme.as_ref(), &analysis, &opts)?;
-    let readable = |x: f64| crate::numeric::recognise::recognise(x).is_some();
-    let rational = analysis.spectrum.eigenvalues.get(1).is_some_and(|e| e.recognised.is_some())
-        && c.mu.as_ref().is_some_and(|m| m.im == 0.0 && readable(m.re));
-    if rational {
-        analysis = analyse_shared(scheme.as_ref(), &config, &Options { exact: true, ..options })?;
-        c = curvature_of_analysis(scheme.as_ref(), &analysis, &opts)?;
-    }
-    let at_lambda2 = c.mu_over_lambda_squared.is_some_and(|r| (r - 1.0).abs() <= EIG_TOL);
-    let (mut growth, mut exact) = (None, None);
-    if at_lambda2 {
-        let lambda = c.lambda.ok_or_else(|| Error::Undecided("no subdominant eigenvalue".into()))?;
-        growth = Some(growth_test(scheme.as_ref(), &analysis, lambda, levels, 5));
-        let lambda_exact = analysis.spectrum.eigenvalues.get(1).and_then(|e| e.exact.as_deref()).and_then(parse_q);
-        if let Some(l) = lambda_exact {
-            exact = exact_jordan(&analysis, &(l.clone() * l));
-        }
-    }
-    Ok(Computed { c, growth, exact })
-}
-
-fn parse_q(s: &str) -> Option<Rational> {
-    let (p, q) = s.split_once('/').unwrap_or((s, "1"));
-    let (p, q): (num_bigint::BigInt, num_bigint::BigInt) = (p.trim().parse().ok()?, q.trim().parse().ok()?);
-    (q != num_bigint::BigInt::from(0)).then(|| Rational::new(p, q))
-}
-
-/// The float route's finding at λ²: (defective, a chain top shows on the ring).
-fn float_jordan(c: &SecondOrder) -> (bool, bool, String) {
-    let Some(l2) = c.lambda_squared else { return (false, false, String::new()) };
-    let at: Vec<_> = c.examined.iter().filter(|e| (e.modulus - l2).abs() <= EIG_TOL * l2 && !e.vanishes).collect();
-    let defective = at.iter().any(|e| e.defective);
-    let visible = at.iter().any(|e| e.jordan_visible == Some(true));
-    let text = at
-        .iter()
-        .map(|e| {
-            format!(
-                "{} algebraic {} geometric {}{}",
-                fmt_f(e.re),
-                e.algebraic_multiplicity,
-                e.geometric_multiplicity,
-                match e.jordan_visible {
-                    Some(true) => ", chain tops show on the ring",
-                    Some(false) => ", chain tops vanish on the ring",
-                    None => "",
-                }
-            )
-        })
-        .collect::<Vec<_>>()
-        .join("; ");
-    (defective, visible, text)
-}
-
-/// The evidence of one valence, and whether the routes agree on the Jordan
-/// structure at λ² (None: the class does not hinge on it).
-fn evidence(k: &Computed) -> (String, Option<bool>) {
-    let c = &k.c;
-    let mut parts = vec![match c.evidence {
-        Evidence::Exact => "|μ| against λ² compared exactly (both proven rational roots)".to_string(),
-        Evidence::FloatingPoint => format!(
-            "|μ| against λ² in floating point (relative tolerance {EIG_TOL:e}; |μ|/λ² = {})",
-            c.mu_over_lambda_squared.map(fmt_f).unwrap_or_else(|| "-".into())
-        ),
-        Evidence::None => "no second-order comparison (first-order test fails)".to_string(),
-    }];
-    let Some(growth) = &k.growth else { return (parts.join("; "), None) };
-    let (defective, visible, text) = float_jordan(c);
-    parts.push(format!(
-        "Jordan structure at λ²: (a) floating-point multiplicities (cluster size against the SVD null space of B − λ²I per Fourier block; chain tops refined {} levels on the ring): {}",
-        c.levels,
-        if text.is_empty() { "no eigenfunction of λ² on the ring".into() } else { text }
-    ));
-    let float_says = defective && visible;
-    let agree = match growth {
-        Ok(g) => {
-            parts.push(format!("(b) {}", g.explanation));
-            let growth_says = g.grows && g.top_visible == Some(true);
-            let undecided = g.grows && g.top_visible.is_none();
-            !undecided && growth_says == float_says
-        }
-        Err(e) => {
-            parts.push(format!("(b) growth test not run: {e}"));
-            false
-        }
-    };
-    let mut agree = agree;
-    if let Some(x) = &k.exact {
-        parts.push(format!(
-            "(c) exact: S − ({})I on the rational {}×{} S has nullity {}, its square {} ({})",
-            x.eigenvalue,
-            x.size,
-            x.size,
-            x.nullity,
-            x.nullity_squared,
-            if x.defective { "a Jordan block" } else { "no Jordan block" }
-        ));
-        if x.defective != defective {
-            agree = false;
-        }
-    }
-    (parts.join("; "), Some(agree))
 }
 
 /// A stated F(μ) at valence n, reduced mod the group order, sorted.

@@ -2,7 +2,9 @@
 //! parameter ("C¹ for 1/4 − cos(2π/k)/4 < a_k ≤ 3/4"), decided from the
 //! exact parameter sets of `sweep --exact` (`sweep::exact`): per
 //! configuration, the set of t in a rational window where the scheme
-//! converges or is spectrally C¹, as intervals with exact algebraic ends.
+//! converges, is spectrally C¹, or (`condition = "bounded-curvature"`) is
+//! spectrally C¹ with curvature class zero or bounded (`sweep --exact
+//! --curvature`), as intervals with exact algebraic ends.
 //!
 //! Two readings, registered separately where both are possible:
 //! - `asserts = "inside"`: every t of the stated range satisfies the
@@ -24,7 +26,10 @@
 //! of the range outside the set, or with `exactly` also a point of the set
 //! outside the range) and is confirmed there by a second route: the interval
 //! certificate of the spectrum at t* (`spectrum --certify`), which must prove
-//! (t* in the set) or disprove (t* outside it) spectral C¹; without that
+//! (t* in the set) or disprove (t* outside it) spectral C¹ — for a curvature
+//! range, or prove it and the registry's curvature route at t* (exact |μ|
+//! against λ² where rational, the Jordan structure at λ² confirmed by the
+//! growth test and exact nullities) must give the class; without that
 //! confirmation the claim is INCONCLUSIVE.
 
 use std::cmp::Ordering;
@@ -35,18 +40,20 @@ use serde::Deserialize;
 
 use crate::claims::check_kind::CheckKind;
 use crate::claims::common::configurations::over_independent_valences;
+use crate::claims::common::curvature::confirmed_class;
 use crate::claims::common::spectra::Cache;
 use crate::claims::common::values::{env_for, subject_params};
 use crate::claims::subject::Subject;
 use crate::claims::verdict::Finding;
+use crate::curvature::CurvatureClass;
 use crate::error::Error;
 use crate::numeric::expr::{Env, Expr};
-use crate::numeric::sturm::RealRoot;
+use crate::numeric::sturm::{self, RealRoot};
 use crate::numeric::{Cyclotomic, Interval, ParamValue, Rational, Weight};
-use crate::sweep::exact::{ExactInterval, ExactSweep, ValenceSets};
+use crate::sweep::exact::{Decision, ExactInterval, ExactSweep, ValenceSets};
 
-/// A statement about the parameter range where a scheme converges or is
-/// spectrally C¹.
+/// A statement about the parameter range where a scheme converges, is
+/// spectrally C¹, or has bounded curvature.
 #[derive(Clone, Debug, Deserialize)]
 pub struct ParameterRange {
     #[serde(flatten)]
@@ -60,7 +67,7 @@ pub struct ParameterRange {
     /// range's own ends, which must then be rational
     #[serde(default)]
     pub window: Option<[String; 2]>,
-    /// "c1-spectral" (default) or "convergent"
+    /// "c1-spectral" (default), "convergent" or "bounded-curvature"
     #[serde(default = "c1")]
     pub condition: String,
     /// "inside" (every t in the range satisfies the condition) or "exactly"
@@ -74,6 +81,119 @@ pub struct ParameterRange {
 
 fn c1() -> String {
     "c1-spectral".into()
+}
+
+/// What the statement asserts at each t of the range.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Condition {
+    C1Spectral,
+    Convergent,
+    /// spectrally C¹ with curvature class zero or bounded (|μ| < λ1², or
+    /// |μ| = λ1² without a visible Jordan block): "bounded curvature" read
+    /// as the registry's `curvature` claims read it, "does not blow up".
+    /// Not applicable (not C¹) and unbounded fail.
+    BoundedCurvature,
+}
+
+impl Condition {
+    fn of(text: &str) -> Result<Condition, Error> {
+        match text {
+            "c1-spectral" => Ok(Condition::C1Spectral),
+            "convergent" => Ok(Condition::Convergent),
+            "bounded-curvature" => Ok(Condition::BoundedCurvature),
+            _ => Err(Error::Claim(format!("condition '{text}': use c1-spectral, convergent or bounded-curvature"))),
+        }
+    }
+
+    fn what(self) -> &'static str {
+        match self {
+            Condition::C1Spectral => "spectrally C¹",
+            Condition::Convergent => "convergent",
+            Condition::BoundedCurvature => "spectrally C¹ with bounded curvature (class zero or bounded)",
+        }
+    }
+
+    /// The condition at a decided point of the sweep (None: the class was
+    /// not decided there).
+    fn passes(self, d: &Decision) -> Option<bool> {
+        match self {
+            Condition::C1Spectral => Some(d.c1_spectral),
+            Condition::Convergent => Some(d.convergent),
+            Condition::BoundedCurvature => {
+                d.curvature_class.map(|k| matches!(k, CurvatureClass::Zero | CurvatureClass::Bounded))
+            }
+        }
+    }
+
+    /// The computed set where the condition holds: for bounded curvature
+    /// the union of the zero and bounded class sets (an undecided candidate
+    /// is in neither, so no interval of the union holds it).
+    fn set(self, sets: &ValenceSets) -> Result<Vec<ExactInterval>, Error> {
+        match self {
+            Condition::C1Spectral => Ok(sets.c1_spectral.clone()),
+            Condition::Convergent => Ok(sets.convergent.clone()),
+            Condition::BoundedCurvature => {
+                let c = sets
+                    .curvature
+                    .as_ref()
+                    .ok_or_else(|| Error::Message("the exact sweep gave no curvature sets".into()))?;
+                Ok(union(&[&c.zero, &c.bounded]))
+            }
+        }
+    }
+
+    /// Why the sets cannot show that the statement holds (None: they can):
+    /// candidates not proved complete, or, for a curvature range, the class
+    /// sets not proved complete or (with `exactly`) a candidate of the
+    /// window whose class is undecided (it might belong to the set). With
+    /// `inside` an undecided candidate in the range needs no rule: the set
+    /// excludes it, so the range is not inside the set.
+    fn incomplete(self, sets: &ValenceSets, exactly: bool) -> Option<String> {
+        if !sets.exact {
+            return Some(sets.not_exact_because.join("; "));
+        }
+        let c = sets.curvature.as_ref().filter(|_| self == Condition::BoundedCurvature)?;
+        if !c.exact {
+            return Some(c.not_exact_because.join("; "));
+        }
+        (exactly && !c.undecided.is_empty()).then(|| format!("curvature class undecided at {}", c.undecided.join("; ")))
+    }
+}
+
+/// The union of disjoint intervals of one sweep's sets (the curvature
+/// classes): sorted by their lower ends (exactly, a closed end first), and
+/// two consecutive ones joined where one ends at the number the next
+/// starts from and one of them holds that number. Two class sets of one
+/// sweep are built from one sequence of pieces and candidates, so such a
+/// shared end is one fence and the joined interval has no hole.
+fn union(parts: &[&[ExactInterval]]) -> Vec<ExactInterval> {
+    let mut all: Vec<ExactInterval> = parts.iter().flat_map(|p| p.iter().cloned()).collect();
+    all.sort_by(|x, y| {
+        let (mut a, mut b) = (x.from_root.clone(), y.from_root.clone());
+        match sturm::compare(&mut a, &mut b) {
+            Some(true) => Ordering::Less,
+            Some(false) => Ordering::Greater,
+            None => y.from_closed.cmp(&x.from_closed),
+        }
+    });
+    let mut out: Vec<ExactInterval> = Vec::new();
+    for i in all {
+        if let Some(last) = out.last_mut() {
+            let (mut a, mut b) = (last.to_root.clone(), i.from_root.clone());
+            if (last.to_closed || i.from_closed) && sturm::same_root(&mut a, &mut b) {
+                let evidence =
+                    crate::sweep::exact::weakest_of([last.evidence.as_str(), i.evidence.as_str()].into_iter());
+                last.evidence = evidence.unwrap_or_default();
+                last.endpoints_exact &= i.endpoints_exact;
+                last.to = i.to;
+                last.to_root = i.to_root;
+                last.to_closed = i.to_closed;
+                continue;
+            }
+        }
+        out.push(i);
+    }
+    out
 }
 
 /// The stated range, parsed: (lower closed, A, B, upper closed).
@@ -255,8 +375,8 @@ fn poly_at(p: &[Rational], c: &Cyclotomic) -> bool {
 fn exact_sets(sweep: &ExactSweep, n: usize) -> Result<Arc<ValenceSets>, Error> {
     static MEMO: OnceLock<Mutex<HashMap<String, Arc<ValenceSets>>>> = OnceLock::new();
     let key = format!(
-        "{}|{:?}|{:?}|{}|{}|{}|{}|{n}",
-        sweep.scheme, sweep.fixed, sweep.faces, sweep.param, sweep.lo, sweep.hi, sweep.certify
+        "{}|{:?}|{:?}|{}|{}|{}|{}|{}|{n}",
+        sweep.scheme, sweep.fixed, sweep.faces, sweep.param, sweep.lo, sweep.hi, sweep.certify, sweep.curvature
     );
     let memo = MEMO.get_or_init(Default::default);
     if let Some(v) = memo.lock().map_err(|_| Error::Message("memo poisoned".into()))?.get(&key) {
@@ -322,7 +442,7 @@ impl ParameterRange {
             fixed,
             faces: subject.faces_for(n).map(str::to_string),
             certify: self.certified,
-            curvature: false,
+            curvature: Condition::of(&self.condition)? == Condition::BoundedCurvature,
         })
     }
 
@@ -342,6 +462,7 @@ impl ParameterRange {
     /// The comparison at one configuration: (statement holds, stated, computed).
     fn at(&self, subject: &Subject, n: usize, evidence: &Mutex<Vec<String>>) -> Result<(bool, String, String), Error> {
         let (lo_closed, a_text, b_text, hi_closed) = parse_range(&self.range)?;
+        let condition = Condition::of(&self.condition)?;
         let env = env_for(subject, n)?;
         let (a, b) = (Stated::of(&a_text, &env)?, Stated::of(&b_text, &env)?);
         let sweep = self.sweep(subject, n)?;
@@ -358,49 +479,10 @@ impl ParameterRange {
         // followed) cannot show that the statement holds; they can still
         // lead to a refutation, which rests on the certified witness alone
         // (the certificate at one rational point does not use the sets)
-        let incomplete = (!sets.exact).then(|| sets.not_exact_because.join("; "));
-        let list = match self.condition.as_str() {
-            "convergent" => &sets.convergent,
-            _ => &sets.c1_spectral,
-        };
-        let mut routes = vec![Route::Exact];
-        let mut cmp = |root: &RealRoot, s: &Stated| -> Result<Ordering, Error> {
-            let (o, r) = compare(root, s)?;
-            routes.push(r);
-            Ok(o)
-        };
-        // does interval i hold the whole range?
-        let mut holds_range = |i: &ExactInterval| -> Result<bool, Error> {
-            let from = cmp(&i.from_root, &a)?;
-            let to = cmp(&i.to_root, &b)?;
-            let from_ok = from == Ordering::Less || (from == Ordering::Equal && (i.from_closed || !lo_closed));
-            let to_ok = to == Ordering::Greater || (to == Ordering::Equal && (i.to_closed || !hi_closed));
-            Ok(from_ok && to_ok)
-        };
-        let mut inside = false;
-        for i in list.iter() {
-            if holds_range(i)? {
-                inside = true;
-            }
-        }
-        let holds = match self.asserts.as_str() {
-            "inside" => inside,
-            _ => {
-                // exactly: one interval, with the range's ends and closedness
-                match &list[..] {
-                    [i] => {
-                        let from = cmp(&i.from_root, &a)?;
-                        let to = cmp(&i.to_root, &b)?;
-                        from == Ordering::Equal
-                            && to == Ordering::Equal
-                            && i.from_closed == lo_closed
-                            && i.to_closed == hi_closed
-                    }
-                    _ => false,
-                }
-            }
-        };
-        let what = if self.condition == "convergent" { "convergent" } else { "spectrally C¹" };
+        let incomplete = condition.incomplete(&sets, self.asserts == "exactly");
+        let list = condition.set(&sets)?;
+        let (holds, route) = self.decide(&list, &a, lo_closed, &b, hi_closed)?;
+        let what = condition.what();
         let set_text = if list.is_empty() {
             "nowhere in the window".to_string()
         } else {
@@ -408,68 +490,153 @@ impl ParameterRange {
         };
         let piece_evidence =
             crate::sweep::exact::weakest_of(list.iter().map(|i| i.evidence.as_str())).unwrap_or_else(|| {
-                if self.certified {
+                if self.certified && condition != Condition::BoundedCurvature {
                     "certified".into()
                 } else {
                     "floating point".into()
                 }
             });
-        let comparison = if routes.contains(&Route::Certified) {
-            "ends compared exactly (an irrational stated end located by its interval enclosure)"
-        } else {
-            "ends compared exactly"
+        let comparison = match route {
+            Route::Certified => "ends compared exactly (an irrational stated end located by its interval enclosure)",
+            Route::Exact => "ends compared exactly",
         };
         if let (true, Some(why)) = (holds, &incomplete) {
             return Err(Error::Undecided(format!("n = {n}: the exact sets are not proved complete ({why})")));
         }
         let ends = match &incomplete {
             None => "ends exact".to_string(),
-            Some(_) => "ends exact candidates, the set NOT PROVED complete (complex pairs' moduli not followed): \
-                        the refutation rests on the certified witness alone"
+            Some(_) if !sets.exact => "ends exact candidates, the set NOT PROVED complete (complex pairs' moduli not \
+                                      followed): the refutation rests on the certified witness alone"
                 .to_string(),
+            Some(why) => format!(
+                "ends exact candidates, the curvature sets NOT PROVED complete ({why}): the refutation rests on the \
+                 second route alone"
+            ),
+        };
+        // the curvature class is floating point even where |μ| and λ1² are
+        // compared exactly (ARCHITECTURE.md, "Curvature classes in the exact
+        // sweep", step 5): the verdict says so
+        let class_note = match condition {
+            Condition::BoundedCurvature => {
+                "; the class in floating point: ring test, characteristic map and Jordan \
+                                            structure, even where |μ| and λ1² are compared exactly"
+            }
+            _ => "",
         };
         let mut computed = format!(
-            "{what} for {} in {set_text} within [{}, {}] ({ends}; pieces decided: {piece_evidence}; {comparison})",
+            "{what} for {} in {set_text} within [{}, {}] ({ends}; pieces decided: {piece_evidence}{class_note}; \
+             {comparison})",
             self.parameter, sweep.lo, sweep.hi
         );
         if !holds {
-            // the second route: a rational witness where the statement fails,
-            // decided by the interval certificate
-            let mut witness = self.witness(&sets, &a, lo_closed, &b, hi_closed)?;
-            if witness.is_none() {
-                // no decided point lies where they disagree: search the gaps
-                // between the ends (a disagreement on a tiny interval)
-                witness = self.gap_witness(list, &sweep, &a, lo_closed, &b, hi_closed)?;
-            }
-            let Some((t, should_pass)) = witness else {
-                return Err(Error::Undecided(format!(
-                    "n = {n}: the exact sets disagree with the statement ({set_text}) only at irrational points or \
-                     on a gap narrower than the ends' brackets (1e-24, or a stated end's enclosure); no rational \
-                     witness to confirm it by a second route"
-                )));
-            };
-            computed.push_str(&format!(
-                "; confirmed at {} = {t}: {}",
-                self.parameter,
-                self.confirm(&sweep, n, &t, should_pass)?
-            ));
+            computed.push_str(&self.refutation(
+                condition,
+                subject,
+                &sweep,
+                &sets,
+                &list,
+                &set_text,
+                [&a, &b],
+                [lo_closed, hi_closed],
+            )?);
         }
         if let Ok(mut e) = evidence.lock() {
             e.push(piece_evidence);
         }
-        let stated = format!(
-            "{} for {} in {}{}, {}{}{}",
-            if self.asserts == "inside" { format!("{what} for every") } else { format!("{what} exactly") },
-            self.parameter,
-            if lo_closed { "[" } else { "(" },
-            a_text,
-            b_text,
-            if hi_closed { "]" } else { ")" },
-            if self.asserts == "exactly" { format!(" within [{}, {}]", sweep.lo, sweep.hi) } else { String::new() }
-        )
-        .replacen(&format!("{what} for every for"), &format!("{what} for every"), 1)
-        .replacen(&format!("{what} exactly for"), &format!("{what} exactly for"), 1);
+        let range =
+            format!("{}{a_text}, {b_text}{}", if lo_closed { "[" } else { "(" }, if hi_closed { "]" } else { ")" });
+        let stated = match self.asserts.as_str() {
+            "inside" => format!("{what} for every {} in {range}", self.parameter),
+            _ => format!("{what} exactly for {} in {range} within [{}, {}]", self.parameter, sweep.lo, sweep.hi),
+        };
         Ok((holds, stated, computed))
+    }
+
+    /// Whether the computed set satisfies the statement (`inside`: an
+    /// interval holds the range; `exactly`: the set is one interval with the
+    /// range's ends and closedness), and how the ends were compared.
+    fn decide(
+        &self,
+        list: &[ExactInterval],
+        a: &Stated,
+        lo_closed: bool,
+        b: &Stated,
+        hi_closed: bool,
+    ) -> Result<(bool, Route), Error> {
+        let mut route = Route::Exact;
+        let mut cmp = |root: &RealRoot, s: &Stated| -> Result<Ordering, Error> {
+            let (o, r) = compare(root, s)?;
+            route = route.max(r);
+            Ok(o)
+        };
+        // every interval is compared as for `inside`, whatever the reading
+        // (the comparisons' route is reported)
+        let mut inside = false;
+        for i in list {
+            let from = cmp(&i.from_root, a)?;
+            let to = cmp(&i.to_root, b)?;
+            let from_ok = from == Ordering::Less || (from == Ordering::Equal && (i.from_closed || !lo_closed));
+            let to_ok = to == Ordering::Greater || (to == Ordering::Equal && (i.to_closed || !hi_closed));
+            inside |= from_ok && to_ok;
+        }
+        let holds = match self.asserts.as_str() {
+            "inside" => inside,
+            // exactly: one interval, with the range's ends and closedness
+            _ => match list {
+                [i] => {
+                    let from = cmp(&i.from_root, a)?;
+                    let to = cmp(&i.to_root, b)?;
+                    from == Ordering::Equal
+                        && to == Ordering::Equal
+                        && i.from_closed == lo_closed
+                        && i.to_closed == hi_closed
+                }
+                _ => false,
+            },
+        };
+        Ok((holds, route))
+    }
+
+    /// The second route of a failing statement: a rational witness where it
+    /// fails, confirmed there (the text appended to the computed value), or
+    /// `Error::Undecided` when there is none or it is not confirmed.
+    #[allow(clippy::too_many_arguments)]
+    fn refutation(
+        &self,
+        condition: Condition,
+        subject: &Subject,
+        sweep: &ExactSweep,
+        sets: &ValenceSets,
+        list: &[ExactInterval],
+        set_text: &str,
+        [a, b]: [&Stated; 2],
+        [lo_closed, hi_closed]: [bool; 2],
+    ) -> Result<String, Error> {
+        let n = sweep.valences[0];
+        let mut witness = self.witness(condition, sets, a, lo_closed, b, hi_closed)?;
+        if witness.is_none() {
+            // no decided point lies where they disagree: search the gaps
+            // between the ends (a disagreement on a tiny interval)
+            witness = self.gap_witness(list, sweep, a, lo_closed, b, hi_closed)?;
+        }
+        let Some((t, should_pass)) = witness else {
+            let undecided = match &sets.curvature {
+                Some(c) if condition == Condition::BoundedCurvature && !c.undecided.is_empty() => {
+                    format!(" (curvature class undecided at {})", c.undecided.join("; "))
+                }
+                _ => String::new(),
+            };
+            return Err(Error::Undecided(format!(
+                "n = {n}: the exact sets disagree with the statement ({set_text}) only at irrational points or \
+                 on a gap narrower than the ends' brackets (1e-24, or a stated end's enclosure){undecided}; no \
+                 rational witness to confirm it by a second route"
+            )));
+        };
+        Ok(format!(
+            "; confirmed at {} = {t}: {}",
+            self.parameter,
+            self.confirm(condition, subject, sweep, &t, should_pass)?
+        ))
     }
 
     /// A rational point where the statement fails: in the range but outside
@@ -477,6 +644,7 @@ impl ParameterRange {
     /// outside the range (should_pass = true). From the sweep's decided points.
     fn witness(
         &self,
+        condition: Condition,
         sets: &ValenceSets,
         a: &Stated,
         lo_closed: bool,
@@ -484,8 +652,7 @@ impl ParameterRange {
         hi_closed: bool,
     ) -> Result<Option<(Rational, bool)>, Error> {
         for d in &sets.decisions {
-            let Some(t) = &d.point else { continue };
-            let passes = if self.condition == "convergent" { d.convergent } else { d.c1_spectral };
+            let (Some(t), Some(passes)) = (&d.point, condition.passes(d)) else { continue };
             let inside = in_range(t, a, lo_closed, b, hi_closed)?;
             if inside && !passes {
                 return Ok(Some((t.clone(), false)));
@@ -569,9 +736,23 @@ impl ParameterRange {
         Ok(None)
     }
 
-    /// The interval certificate at t: it must prove (should_pass) or
-    /// disprove spectral C¹ there.
-    fn confirm(&self, sweep: &ExactSweep, n: usize, t: &Rational, should_pass: bool) -> Result<String, Error> {
+    /// The second route at the witness t: the interval certificate of the
+    /// spectrum there must prove (should_pass) or disprove spectral C¹,
+    /// unconditionally. For a curvature range a disproof suffices for a
+    /// failing point (no class); otherwise C¹ must be proved and the
+    /// registry's curvature route at t (`confirmed_class`: exact |μ|
+    /// against λ² where both are rational, the Jordan structure at λ²
+    /// confirmed by the growth test and exact nullities) must put the class
+    /// on the same side.
+    fn confirm(
+        &self,
+        condition: Condition,
+        subject: &Subject,
+        sweep: &ExactSweep,
+        t: &Rational,
+        should_pass: bool,
+    ) -> Result<String, Error> {
+        let n = sweep.valences[0];
         let mut params = sweep.fixed.clone();
         params.push((sweep.param.clone(), t.to_string()));
         let scheme = crate::schemes::resolve(&sweep.scheme, &params)?;
@@ -587,24 +768,47 @@ impl ParameterRange {
         let analysis = crate::spectrum::analyse(scheme.as_ref(), &config, &options)?;
         let c = crate::certify::certify_analysis(scheme.as_ref(), &analysis)?;
         use crate::certify::Verdict as V;
-        let confirmed = match (&c.verdict, should_pass, self.condition.as_str()) {
-            (V::Proved, true, _) if !c.conditional => true,
-            // spectral C¹ disproved at a point of the range: the C¹ reading fails
-            (V::Disproved(_), false, "c1-spectral") if !c.conditional => true,
-            _ => false,
+        let proved = matches!(c.verdict, V::Proved) && !c.conditional;
+        let disproved = matches!(c.verdict, V::Disproved(_)) && !c.conditional;
+        let unconfirmed = |what: String| {
+            Error::Undecided(format!(
+                "n = {n}: the exact sets disagree with the statement at {} = {t}, but {what} (a second route must \
+                 confirm a refutation)",
+                sweep.param
+            ))
         };
-        if !confirmed {
-            return Err(Error::Undecided(format!(
-                "n = {n}: the exact sets disagree with the statement at {} = {t}, but the interval certificate there \
-                 gives {} (a second route must confirm a refutation)",
-                sweep.param,
-                c.verdict.display()
-            )));
+        let certificate = if should_pass { "proves" } else { "disproves" };
+        match condition {
+            // spectral C¹ disproved at a point of the range: the C¹ reading
+            // fails (a convergence range is refuted only by a proof of C¹
+            // outside it)
+            Condition::C1Spectral | Condition::Convergent
+                if (should_pass && proved) || (!should_pass && disproved && condition == Condition::C1Spectral) =>
+            {
+                Ok(format!("the interval certificate {certificate} spectral C¹ there (second route)"))
+            }
+            Condition::BoundedCurvature if !should_pass && disproved => {
+                Ok("the interval certificate disproves spectral C¹ there (no curvature class; second route)".into())
+            }
+            Condition::BoundedCurvature if proved => {
+                let mut at = subject.clone();
+                at.params.insert(self.parameter.clone(), t.to_string());
+                let (class, ev) = confirmed_class(&at, n)?;
+                let bounded = matches!(class, CurvatureClass::Zero | CurvatureClass::Bounded);
+                if bounded != should_pass {
+                    return Err(unconfirmed(format!(
+                        "the second-order analysis there gives class {} ({ev})",
+                        class.name()
+                    )));
+                }
+                Ok(format!(
+                    "the interval certificate proves spectral C¹ there and the second-order analysis gives class {} \
+                     ({ev}; second route)",
+                    class.name()
+                ))
+            }
+            _ => Err(unconfirmed(format!("the interval certificate there gives {}", c.verdict.display()))),
         }
-        Ok(format!(
-            "the interval certificate {} spectral C¹ there (second route)",
-            if should_pass { "proves" } else { "disproves" }
-        ))
     }
 }
 
@@ -613,9 +817,7 @@ impl CheckKind for ParameterRange {
 
     fn validate(&self) -> Result<(), Error> {
         parse_range(&self.range)?;
-        if !matches!(self.condition.as_str(), "c1-spectral" | "convergent") {
-            return Err(Error::Claim(format!("condition '{}': use c1-spectral or convergent", self.condition)));
-        }
+        Condition::of(&self.condition)?;
         if !matches!(self.asserts.as_str(), "inside" | "exactly") {
             return Err(Error::Claim(format!(
                 "asserts '{}': use inside (every t of the range) or exactly (the range is the whole set in the window)",
