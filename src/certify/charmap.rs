@@ -346,8 +346,12 @@ fn geometric_half(
     // (windows with face control vertices) or a box spline
     let non_box = scheme.topology().regular_spline() == RegularSpline::NonBoxS31;
     let mut last_reason = String::new();
+    // one refinement for every level tried: level l's net continues level
+    // l − 1's, and is the net `refine_net_exactly_as(.., l)` gives
+    let mut nets = net::ExactLevels::<Interval, Point>::new(scheme, d, level0);
     for levels in 2..=max_levels {
-        let net = net::refine_net_exactly_as::<Interval, Point>(scheme, d, level0.clone(), levels)
+        let net = nets
+            .at(levels)
             .map_err(|e| format!("the interval net could not be refined {levels} levels: {e}"))?;
         // two annuli (C4): the ring, and the ring scaled by λ1 (whose faces'
         // one-rings stay inside the first ring, as a dual scheme's outermost
@@ -374,8 +378,9 @@ fn geometric_half(
         // one window per rotation orbit: the others' entities are their
         // images, and their stencils the images of theirs (`window_orbits`)
         let period = d.config.rotation_period(scheme);
+        let mut places = window_orbits::representative_of(net, ring, period);
         let to_check: Vec<&Window> =
-            window_orbits::representatives(&net, ring, period).into_iter().map(|i| &windows[i]).collect();
+            (0..ring.len()).filter(|&i| places[i].rep == i).map(|i| &windows[i]).collect();
         let part = match check_rules(scheme, &net.mesh, &to_check) {
             Ok(part) => part,
             // no box spline over a triangle ring: the scheme's own regular
@@ -398,6 +403,9 @@ fn geometric_half(
                     }
                 }
                 let Some((r, i, (w, checked, bound))) = found else { continue };
+                if !std::ptr::eq(r, ring) {
+                    places = window_orbits::representative_of(net, r, period);
+                }
                 (ring, inside, windows) = (r, i, w);
                 lattice = Some(bound);
                 (RegularPart::DifferenceScheme, checked)
@@ -406,9 +414,30 @@ fn geometric_half(
         };
         cert.regular_part = Some(part.0);
         cert.rules_checked = part.1;
-        let bounds: Vec<Interval> = windows.iter().map(Window::jacobian_bounds).collect();
-        let positive = bounds.iter().filter(|b| b.lo > 0.0).count();
-        let negative = bounds.iter().filter(|b| b.hi < 0.0).count();
+        // the Jacobian bounded once per orbit and layout (lemma C5′): the
+        // faces of an orbit whose windows are laid out alike are rotated
+        // copies with the same Jacobian, so the first of them (in ring
+        // order) bounds them all; the counts count every face
+        let mut bounded: HashMap<(usize, usize), usize> = HashMap::new();
+        let mut reps: Vec<usize> = Vec::new();
+        let group: Vec<usize> = places
+            .iter()
+            .enumerate()
+            .map(|(i, p)| {
+                *bounded.entry((p.rep, p.corner)).or_insert_with(|| {
+                    reps.push(i);
+                    reps.len() - 1
+                })
+            })
+            .collect();
+        let bounds: Vec<Interval> = reps.iter().map(|&i| windows[i].jacobian_bounds()).collect();
+        let signs: Vec<i8> = bounds
+            .iter()
+            .map(|b| if b.lo > 0.0 { 1 } else if b.hi < 0.0 { -1 } else { 0 })
+            .collect();
+        let sign_of = |i: usize| signs[group[i]];
+        let positive = (0..ring.len()).filter(|&i| sign_of(i) > 0).count();
+        let negative = (0..ring.len()).filter(|&i| sign_of(i) < 0).count();
         let undecided = ring.len() - positive - negative;
         cert.levels = Some(levels);
         cert.ring_faces = ring.len();
@@ -422,8 +451,8 @@ fn geometric_half(
             lambda1_row: cert.spectrum.proof.as_ref().and_then(|p| p.lambda1_row).unwrap_or(usize::MAX),
             faces: windows
                 .iter()
-                .zip(&bounds)
-                .map(|(w, b)| FaceEvidence {
+                .enumerate()
+                .map(|(i, w)| FaceEvidence {
                     u_edges: w.u_pairs.clone(),
                     v_edges: w.v_pairs.clone(),
                     layout: w
@@ -433,21 +462,16 @@ fn geometric_half(
                         .copied()
                         .collect(),
                     window: w.window.clone(),
-                    sign: if b.lo > 0.0 {
-                        1
-                    } else if b.hi < 0.0 {
-                        -1
-                    } else {
-                        0
-                    },
+                    sign: sign_of(i),
                 })
                 .collect(),
             winding: None,
             difference: lattice.clone(),
         });
         if positive > 0 && negative > 0 {
-            // the witnesses quote the tightest bounds: the pairwise ones
-            let bounds: Vec<Interval> = windows.iter().map(Window::jacobian_pairwise_bound).collect();
+            // the witnesses quote the tightest bounds, the pairwise ones, of
+            // two representatives (a bound on one is a bound on its orbit)
+            let bounds: Vec<Interval> = reps.iter().map(|&i| windows[i].jacobian_pairwise_bound()).collect();
             let centre = |f: usize| {
                 let face = net.mesh.face(f);
                 let mut c = [0.0; 2];
@@ -470,9 +494,9 @@ fn geometric_half(
             let neg = most(&|a, b| a.hi < b.hi);
             let pos = most(&|a, b| a.lo > b.lo);
             cert.fold_witness = Some(FoldWitness {
-                negative_at: centre(ring[neg]),
+                negative_at: centre(ring[reps[neg]]),
                 negative_upper_bound: bounds[neg].hi,
-                positive_at: centre(ring[pos]),
+                positive_at: centre(ring[reps[pos]]),
                 positive_lower_bound: bounds[pos].lo,
             });
             let why = format!(
@@ -490,7 +514,8 @@ fn geometric_half(
             continue;
         }
         let sign = if negative > 0 { -1.0 } else { 1.0 };
-        record_margins(cert, &net, &bounds, sign, scheme.topology().faces_per_face());
+        // over the representatives: their bounds hold on their orbits
+        record_margins(cert, net, &bounds, sign, scheme.topology().faces_per_face());
         let regular = format!(
             "the Jacobian is proved {} on all {} ring faces at {levels} levels ({} rules)",
             if sign > 0.0 { "positive" } else { "negative" },
@@ -503,7 +528,7 @@ fn geometric_half(
             regular
         };
         cert.reasons.push(regular);
-        let winding = winding_number(&net, ring, inside, &windows);
+        let winding = winding_number(net, ring, inside, &windows);
         if let (Ok((_, e)), Some(evidence)) = (&winding, cert.evidence.as_mut()) {
             evidence.winding = Some(e.clone());
         }
@@ -1409,6 +1434,101 @@ pub(super) fn polygon_winding(polygon: &[[f64; 2]]) -> Result<i64, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::neighbourhood::Configuration;
+    use crate::spectrum::{analyse, Options};
+
+    /// Per ring face of the certified net at `levels` (the annulus the
+    /// certificate takes: the first whose faces all have box-spline
+    /// windows): the Jacobian sign from the face's own window, as every face
+    /// was bounded before the orbit reduction, and the position of its
+    /// orbit's place. None when no annulus has such windows.
+    fn own_signs(
+        scheme: &dyn Scheme,
+        analysis: &Analysis,
+        levels: usize,
+    ) -> Option<(Vec<i8>, Vec<window_orbits::OrbitPlace>)> {
+        let mut cert = certify_charmap(scheme, analysis, DEFAULT_MAX_LEVELS).unwrap();
+        let level0 = certified_net(analysis, &mut cert).unwrap();
+        let d = &analysis.discovered;
+        let net = net::refine_net_exactly_as::<Interval, Point>(scheme, d, level0, levels).unwrap();
+        let vf = net.mesh.vertex_faces();
+        let faces = |keep: &dyn Fn(usize) -> bool| (0..net.mesh.num_faces()).filter(|&f| keep(f)).collect::<Vec<_>>();
+        let annuli = [
+            (faces(&|f| net.outer[f] && !net.inner[f]), faces(&|f| net.outer[f] && net.inner[f])),
+            (faces(&|f| net.inner[f] && !net.inner2[f]), faces(&|f| net.inner2[f])),
+        ];
+        for (ring, _) in annuli.iter().filter(|(_, inside)| !inside.is_empty()) {
+            let Ok(windows) = ring.iter().map(|&f| Window::around(&net, &vf, f, false)).collect::<Result<Vec<_>, _>>()
+            else {
+                continue;
+            };
+            let signs = windows
+                .iter()
+                .map(|w| {
+                    let b = w.jacobian_bounds();
+                    if b.lo > 0.0 {
+                        1
+                    } else if b.hi < 0.0 {
+                        -1
+                    } else {
+                        0
+                    }
+                })
+                .collect();
+            let period = d.config.rotation_period(scheme);
+            return Some((signs, window_orbits::representative_of(&net, ring, period)));
+        }
+        None
+    }
+
+    /// Lemma C5′ against the route it replaced: at every level the
+    /// certificate tries, every ring face's own window proves the sign that
+    /// the first face of its orbit laid out alike proves (so the route that
+    /// bounded every face decided the same at every level), no orbit holds
+    /// both signs, each orbit has g members, and the counts and the
+    /// document's per-face signs are the all-faces ones. The signs are a
+    /// second computation (each face's own enclosures), not the
+    /// certificate's.
+    #[test]
+    fn one_jacobian_bound_per_orbit_decides_as_every_face_does() {
+        for (name, n) in [("catmull-clark", 5), ("loop", 7), ("doo-sabin", 5), ("catmull-clark", 3), ("loop", 4)] {
+            let scheme = crate::schemes::build(name, &[]).unwrap();
+            let config = Configuration::regular(scheme.as_ref(), n).unwrap();
+            let analysis = analyse(scheme.as_ref(), &config, &Options::default()).unwrap();
+            let cert = certify_charmap(scheme.as_ref(), &analysis, DEFAULT_MAX_LEVELS).unwrap();
+            let who = format!("{name} n = {n}");
+            assert_eq!(cert.regularity, Verdict::Proved, "{who}");
+            let decisive = cert.levels.expect("decided");
+            let g = n / config.rotation_period(scheme.as_ref());
+            for levels in 2..=decisive {
+                let Some((own, places)) = own_signs(scheme.as_ref(), &analysis, levels) else { continue };
+                for i in 0..own.len() {
+                    let first = places.iter().position(|p| *p == places[i]).unwrap();
+                    assert_eq!(own[i], own[first], "{who} at {levels} levels: faces {i} and {first}, laid out alike");
+                    let r = places[i].rep;
+                    assert!(own[i] * own[r] >= 0, "{who} at {levels} levels: face {i} and its representative {r}");
+                }
+                // every orbit has g faces
+                let reps: Vec<usize> = (0..places.len()).filter(|&i| places[i].rep == i).collect();
+                assert_eq!(reps.len() * g, own.len(), "{who}");
+                for &r in &reps {
+                    assert_eq!(places.iter().filter(|p| p.rep == r).count(), g, "{who}: the orbit of face {r}");
+                }
+                if levels == decisive {
+                    let count = |s: i8| own.iter().filter(|&&x| x == s).count();
+                    assert_eq!(cert.ring_faces, own.len(), "{who}");
+                    assert_eq!(
+                        (cert.positive_faces, cert.negative_faces, cert.undecided_faces),
+                        (count(1), count(-1), count(0)),
+                        "{who}"
+                    );
+                    let evidence = cert.evidence.as_ref().expect("evidence of a decided map");
+                    let claimed: Vec<i8> = evidence.faces.iter().map(|f| f.sign).collect();
+                    assert_eq!(claimed, own, "{who}: the document's signs are every face's own");
+                }
+            }
+        }
+    }
 
     /// The regular n-gon at angle offset `phase`, traversed `turns` times
     /// (negative: clockwise): its winding number about the origin is
