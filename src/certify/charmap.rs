@@ -363,24 +363,26 @@ fn geometric_half(
             (faces(&|f| net.outer[f] && !net.inner[f]), faces(&|f| net.outer[f] && net.inner[f])),
             (faces(&|f| net.inner[f] && !net.inner2[f]), faces(&|f| net.inner2[f])),
         ];
+        // the ring's faces in orbits of the rotation (C3, C5′)
+        let period = d.config.rotation_period(scheme);
         let mut chosen = None;
         for (ring, inside) in annuli.iter().filter(|(_, inside)| !inside.is_empty()) {
-            match ring.iter().map(|&f| Window::around(&net, &vf, f, non_box)).collect::<Result<Vec<_>, String>>() {
+            let orbits = window_orbits::RingOrbits::new(net, ring, period);
+            match ring_windows(net, &vf, ring, &orbits, non_box) {
                 Ok(w) => {
-                    chosen = Some((ring, inside, w));
+                    chosen = Some((ring, inside, w, orbits));
                     break;
                 }
                 Err(why) => last_reason = format!("at {levels} levels: {why}"),
             }
         }
-        let Some((mut ring, mut inside, mut windows)) = chosen else { continue };
+        let Some((mut ring, mut inside, mut windows, orbits)) = chosen else { continue };
         let mut lattice = None;
         // one window per rotation orbit: the others' entities are their
         // images, and their stencils the images of theirs (`window_orbits`)
-        let period = d.config.rotation_period(scheme);
-        let mut places = window_orbits::representative_of(net, ring, period);
+        let mut orbit_rep = orbits.representative_of(ring.len());
         let to_check: Vec<&Window> =
-            (0..ring.len()).filter(|&i| places[i].rep == i).map(|i| &windows[i]).collect();
+            (0..ring.len()).filter(|&i| orbit_rep[i] == i).map(|i| &windows[i]).collect();
         let part = match check_rules(scheme, &net.mesh, &to_check) {
             Ok(part) => part,
             // no box spline over a triangle ring: the scheme's own regular
@@ -404,7 +406,7 @@ fn geometric_half(
                 }
                 let Some((r, i, (w, checked, bound))) = found else { continue };
                 if !std::ptr::eq(r, ring) {
-                    places = window_orbits::representative_of(net, r, period);
+                    orbit_rep = window_orbits::representative_of(net, r, period);
                 }
                 (ring, inside, windows) = (r, i, w);
                 lattice = Some(bound);
@@ -414,28 +416,20 @@ fn geometric_half(
         };
         cert.regular_part = Some(part.0);
         cert.rules_checked = part.1;
-        // the Jacobian bounded once per orbit and layout (lemma C5′): the
-        // faces of an orbit whose windows are laid out alike are rotated
-        // copies with the same Jacobian, so the first of them (in ring
-        // order) bounds them all; the counts count every face
-        let mut bounded: HashMap<(usize, usize), usize> = HashMap::new();
-        let mut reps: Vec<usize> = Vec::new();
-        let group: Vec<usize> = places
-            .iter()
-            .enumerate()
-            .map(|(i, p)| {
-                *bounded.entry((p.rep, p.corner)).or_insert_with(|| {
-                    reps.push(i);
-                    reps.len() - 1
-                })
-            })
-            .collect();
+        // the Jacobian bounded on the orbits' representatives only (lemma
+        // C5′): a face's Jacobian is its representative's, so a sign proved
+        // there is proved on the orbit, and the counts count every face
+        let reps: Vec<usize> = (0..ring.len()).filter(|&i| orbit_rep[i] == i).collect();
+        let mut group = vec![usize::MAX; ring.len()];
+        for (k, &i) in reps.iter().enumerate() {
+            group[i] = k;
+        }
         let bounds: Vec<Interval> = reps.iter().map(|&i| windows[i].jacobian_bounds()).collect();
         let signs: Vec<i8> = bounds
             .iter()
             .map(|b| if b.lo > 0.0 { 1 } else if b.hi < 0.0 { -1 } else { 0 })
             .collect();
-        let sign_of = |i: usize| signs[group[i]];
+        let sign_of = |i: usize| signs[group[orbit_rep[i]]];
         let positive = (0..ring.len()).filter(|&i| sign_of(i) > 0).count();
         let negative = (0..ring.len()).filter(|&i| sign_of(i) < 0).count();
         let undecided = ring.len() - positive - negative;
@@ -561,6 +555,34 @@ fn geometric_half(
     Err(last_reason)
 }
 
+/// Every ring face's window: laid out (`Window::around`) on each orbit's
+/// representative and turned from it onto the orbit's other faces, one
+/// turn at a time (lemma C5′: the rotation is a checked automorphism of the
+/// net, so a turned layout is a layout of the image face, starting at the
+/// image of the representative's first corner). The document lists each
+/// face's window so; the checker takes its edges as listed.
+fn ring_windows(
+    net: &Net<Point>,
+    vf: &[Vec<usize>],
+    ring: &[usize],
+    orbits: &window_orbits::RingOrbits,
+    non_box: bool,
+) -> Result<Vec<Window>, String> {
+    let mut out: Vec<Option<Window>> = (0..ring.len()).map(|_| None).collect();
+    for orbit in &orbits.orbits {
+        let mut window = Window::around(net, vf, ring[orbit[0]], non_box)?;
+        for (k, &p) in orbit.iter().enumerate() {
+            let next = if k + 1 < orbit.len() { Some(window.turned(net, orbits)?) } else { None };
+            out[p] = Some(window);
+            match next {
+                Some(w) => window = w,
+                None => break,
+            }
+        }
+    }
+    Ok(out.into_iter().map(|w| w.expect("the orbits cover the ring")).collect())
+}
+
 /// The ring's windows for lemma C9 (`certify::difference`): per face its
 /// own edges, the Jacobian bound (refined on the window where undecided) and the hull radius δ from
 /// the window's second differences and the lattice constants.
@@ -589,6 +611,7 @@ fn difference_windows(
             along_u: vec![u],
             along_v: vec![v],
             points: vec![p(a)?, p(b)?, p(c)?],
+            ids: vec![a, b, c],
             u_pairs: vec![(a, b)],
             v_pairs: vec![(a, c)],
             layout: Vec::new(),
@@ -695,6 +718,8 @@ pub(super) struct Window {
     pub(super) along_v: Vec<Point>,
     /// every window point, for hulls
     pub(super) points: Vec<Point>,
+    /// the net vertices of `points`, in the same (ascending) order
+    pub(super) ids: Vec<usize>,
     /// the same edges as net vertex pairs (from, to), for the certificate
     /// document, whose checker recomputes the edge vectors itself
     pub(super) u_pairs: Vec<(usize, usize)>,
@@ -842,7 +867,7 @@ impl Window {
         let mut ids: Vec<usize> = coords.0.iter().map(|&(v, _)| v).collect();
         ids.sort_unstable();
         let points = ids.iter().map(|&v| p(v)).collect::<Result<Vec<_>, String>>()?;
-        Ok(Window { face: f, faces, along_u, along_v, points, u_pairs, v_pairs, ..Window::default() })
+        Ok(Window { face: f, faces, along_u, along_v, points, ids, u_pairs, v_pairs, ..Window::default() })
     }
 
     /// The window of a ring face of the non-box S_3^1 spline (lemma C3′ of
@@ -908,7 +933,52 @@ impl Window {
             .map(|&(v, _)| v)
             .collect();
         let points = hull.iter().map(|&v| p(v)).collect::<Result<Vec<_>, String>>()?;
-        Ok(Window { face: f, faces, along_u, along_v, points, u_pairs, v_pairs, layout, ..Window::default() })
+        Ok(Window { face: f, faces, along_u, along_v, points, ids: hull, u_pairs, v_pairs, layout, ..Window::default() })
+    }
+
+    /// The window of the image of this window's face under the rotation of
+    /// `orbits`: every vertex turned, lattice positions kept, the edge
+    /// vectors and points read at the turned vertices (in ascending order,
+    /// as `around` and `non_box` list them: the winding's half-plane sums
+    /// their midpoints in that order).
+    fn turned(&self, net: &Net<Point>, orbits: &window_orbits::RingOrbits) -> Result<Window, String> {
+        let mesh = &net.mesh;
+        let lost = || "a window vertex has no image under the rotation".to_string();
+        let t = |v: usize| orbits.turned(v).ok_or_else(lost);
+        let face_of = |g: usize| -> Result<usize, String> {
+            let gf = mesh.face(g);
+            mesh.half_edge(t(gf[0])?, t(gf[1])?).map(|(h, _)| h).ok_or_else(lost)
+        };
+        let p = |v: usize| net.points[v].ok_or_else(|| "a window point is not determined".to_string());
+        let pairs = |edges: &[(usize, usize)]| -> Result<Vec<(usize, usize)>, String> {
+            edges.iter().map(|&(a, b)| Ok((t(a)?, t(b)?))).collect()
+        };
+        let diff = |&(from, to): &(usize, usize)| -> Result<Point, String> {
+            let (from, to) = (p(from)?, p(to)?);
+            Ok([to[0] - from[0], to[1] - from[1]])
+        };
+        let (u_pairs, v_pairs) = (pairs(&self.u_pairs)?, pairs(&self.v_pairs)?);
+        let along_u = u_pairs.iter().map(diff).collect::<Result<Vec<_>, String>>()?;
+        let along_v = v_pairs.iter().map(diff).collect::<Result<Vec<_>, String>>()?;
+        let mut ids = self.ids.iter().map(|&v| t(v)).collect::<Result<Vec<_>, String>>()?;
+        ids.sort_unstable();
+        let points = ids.iter().map(|&v| p(v)).collect::<Result<Vec<_>, String>>()?;
+        let mut layout = self.layout.iter().map(|&(v, c)| Ok((t(v)?, c))).collect::<Result<Vec<_>, String>>()?;
+        layout.sort_unstable();
+        let mut faces = self.faces.iter().map(|&g| face_of(g)).collect::<Result<Vec<_>, String>>()?;
+        faces.sort_unstable();
+        Ok(Window {
+            face: face_of(self.face)?,
+            faces,
+            along_u,
+            along_v,
+            points,
+            ids,
+            u_pairs,
+            v_pairs,
+            layout,
+            ..Window::default()
+        })
     }
 
     /// An enclosure of the range of det(uᵢ, vⱼ) over the window's edge
@@ -1446,7 +1516,7 @@ mod tests {
         scheme: &dyn Scheme,
         analysis: &Analysis,
         levels: usize,
-    ) -> Option<(Vec<i8>, Vec<window_orbits::OrbitPlace>)> {
+    ) -> Option<(Vec<i8>, Vec<usize>)> {
         let mut cert = certify_charmap(scheme, analysis, DEFAULT_MAX_LEVELS).unwrap();
         let level0 = certified_net(analysis, &mut cert).unwrap();
         let d = &analysis.discovered;
@@ -1482,12 +1552,11 @@ mod tests {
     }
 
     /// Lemma C5′ against the route it replaced: at every level the
-    /// certificate tries, every ring face's own window proves the sign that
-    /// the first face of its orbit laid out alike proves (so the route that
-    /// bounded every face decided the same at every level), no orbit holds
-    /// both signs, each orbit has g members, and the counts and the
-    /// document's per-face signs are the all-faces ones. The signs are a
-    /// second computation (each face's own enclosures), not the
+    /// certificate tries, every ring face's own window proves the sign its
+    /// representative's does (so the route that bounded every face decided
+    /// the same at every level), each orbit has g members, and the counts
+    /// and the document's per-face signs are the all-faces ones. The signs
+    /// are a second computation (each face's own enclosures), not the
     /// certificate's.
     #[test]
     fn one_jacobian_bound_per_orbit_decides_as_every_face_does() {
@@ -1501,18 +1570,15 @@ mod tests {
             let decisive = cert.levels.expect("decided");
             let g = n / config.rotation_period(scheme.as_ref());
             for levels in 2..=decisive {
-                let Some((own, places)) = own_signs(scheme.as_ref(), &analysis, levels) else { continue };
+                let Some((own, rep)) = own_signs(scheme.as_ref(), &analysis, levels) else { continue };
                 for i in 0..own.len() {
-                    let first = places.iter().position(|p| *p == places[i]).unwrap();
-                    assert_eq!(own[i], own[first], "{who} at {levels} levels: faces {i} and {first}, laid out alike");
-                    let r = places[i].rep;
-                    assert!(own[i] * own[r] >= 0, "{who} at {levels} levels: face {i} and its representative {r}");
+                    assert_eq!(own[i], own[rep[i]], "{who} at {levels} levels: face {i} and its representative");
                 }
                 // every orbit has g faces
-                let reps: Vec<usize> = (0..places.len()).filter(|&i| places[i].rep == i).collect();
+                let reps: Vec<usize> = (0..rep.len()).filter(|&i| rep[i] == i).collect();
                 assert_eq!(reps.len() * g, own.len(), "{who}");
                 for &r in &reps {
-                    assert_eq!(places.iter().filter(|p| p.rep == r).count(), g, "{who}: the orbit of face {r}");
+                    assert_eq!(rep.iter().filter(|&&x| x == r).count(), g, "{who}: the orbit of face {r}");
                 }
                 if levels == decisive {
                     let count = |s: i8| own.iter().filter(|&&x| x == s).count();

@@ -30,66 +30,91 @@ use crate::neighbourhood::discovery::Rotation;
 /// one per orbit of the rotation by `period` sectors, or every position
 /// when no rotation of the net is established.
 pub fn representatives<T>(net: &Net<T>, ring: &[usize], period: usize) -> Vec<usize> {
-    let of = representative_of(net, ring, period);
-    (0..ring.len()).filter(|&i| of[i].rep == i).collect()
+    RingOrbits::new(net, ring, period).orbits.iter().map(|o| o[0]).collect()
 }
 
-/// Where a ring face stands in its orbit.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct OrbitPlace {
-    /// the position in the ring of the orbit's representative (the face's
-    /// own for a representative)
-    pub rep: usize,
-    /// the representative's corner that the rotation carries to this face's
-    /// first corner (0 for a representative): faces of one orbit with the
-    /// same corner have their windows laid out alike (`Window::around` puts
-    /// the first corner at the origin), rotated copies of each other
-    pub corner: usize,
+/// Per position in `ring`, the position of its orbit's representative
+/// (itself for a representative, and for every face when no rotation of the
+/// net is established).
+pub fn representative_of<T>(net: &Net<T>, ring: &[usize], period: usize) -> Vec<usize> {
+    RingOrbits::new(net, ring, period).representative_of(ring.len())
 }
 
-/// Per position in `ring`, its place in its orbit (itself with corner 0 for
-/// a representative, and for every face when no rotation of the net is
-/// established). The ring must be a union of orbits (the ring flags are
-/// among what the rotation is checked to keep); a face whose orbit holds no
-/// representative in the ring represents itself.
-pub fn representative_of<T>(net: &Net<T>, ring: &[usize], period: usize) -> Vec<OrbitPlace> {
-    let itself = |i: usize| OrbitPlace { rep: i, corner: 0 };
-    let Some(rotation) = rotation_of(net, period) else { return (0..ring.len()).map(itself).collect() };
-    let mesh = &net.mesh;
-    let mut position = vec![usize::MAX; mesh.num_faces()];
-    for (i, &f) in ring.iter().enumerate() {
-        position[f] = i;
+/// The ring's faces in orbits of the rotation by `period` sectors (lemmas
+/// C3 and C5′): each orbit in turn order from its representative, as
+/// positions in `ring`, with the vertex turn that carries each member onto
+/// the next. Every face is its own orbit when no rotation is established,
+/// and also when the orbits are not what a free rotation of the ring gives
+/// (an image outside the ring, a face with two corners in one orbit).
+pub struct RingOrbits {
+    pub orbits: Vec<Vec<usize>>,
+    rotation: Option<Rotation>,
+}
+
+impl RingOrbits {
+    pub fn new<T>(net: &Net<T>, ring: &[usize], period: usize) -> RingOrbits {
+        let singletons = || RingOrbits { orbits: (0..ring.len()).map(|i| vec![i]).collect(), rotation: None };
+        let Some(rotation) = rotation_of(net, period) else { return singletons() };
+        let mesh = &net.mesh;
+        let mut position = vec![usize::MAX; mesh.num_faces()];
+        for (i, &f) in ring.iter().enumerate() {
+            position[f] = i;
+        }
+        // the image of a face: the face holding the turned first edge (the
+        // rotation was checked to map every face onto one, corners in order)
+        let turned = |f: usize| -> Option<usize> {
+            let face = mesh.face(f);
+            let (a, b) = (rotation.turned(face[0])?, rotation.turned(face[1])?);
+            mesh.half_edge(a, b).map(|(g, _)| g)
+        };
+        let mut placed = vec![false; ring.len()];
+        let mut orbits = Vec::new();
+        for i in 0..ring.len() {
+            if placed[i] || !represents(mesh, &rotation, ring[i]) {
+                continue;
+            }
+            let mut orbit = vec![i];
+            let mut f = ring[i];
+            loop {
+                let Some(g) = turned(f) else { return singletons() };
+                let p = position[g];
+                if p == i {
+                    break;
+                }
+                // a second representative in one orbit is a face with two
+                // corners in one orbit (it represents itself)
+                if p == usize::MAX || placed[p] || orbit.len() >= rotation.order() || represents(mesh, &rotation, g) {
+                    return singletons();
+                }
+                orbit.push(p);
+                f = g;
+            }
+            for &p in &orbit {
+                placed[p] = true;
+            }
+            orbits.push(orbit);
+        }
+        if placed.contains(&false) {
+            return singletons();
+        }
+        RingOrbits { orbits, rotation: Some(rotation) }
     }
-    // the image of a face: the face holding the turned first edge (the
-    // rotation was checked to map every face onto one, corners in order)
-    let turned = |f: usize| -> Option<usize> {
-        let face = mesh.face(f);
-        let (a, b) = (rotation.turned(face[0])?, rotation.turned(face[1])?);
-        mesh.half_edge(a, b).map(|(g, _)| g)
-    };
-    (0..ring.len())
-        .map(|i| {
-            if represents(mesh, &rotation, ring[i]) {
-                return itself(i);
+
+    /// Per position, the position of its orbit's representative.
+    pub fn representative_of(&self, len: usize) -> Vec<usize> {
+        let mut of = vec![usize::MAX; len];
+        for orbit in &self.orbits {
+            for &p in orbit {
+                of[p] = orbit[0];
             }
-            // turn the face and its first corner together until the face
-            // is its orbit's representative
-            let (mut f, mut first) = (ring[i], mesh.face(ring[i])[0]);
-            for _ in 1..rotation.order() {
-                match (turned(f), rotation.turned(first)) {
-                    (Some(g), Some(v)) if position[g] != usize::MAX => (f, first) = (g, v),
-                    _ => return itself(i),
-                }
-                if represents(mesh, &rotation, f) {
-                    return match mesh.face(f).iter().position(|&c| c == first) {
-                        Some(corner) => OrbitPlace { rep: position[f], corner },
-                        None => itself(i),
-                    };
-                }
-            }
-            itself(i)
-        })
-        .collect()
+        }
+        of
+    }
+
+    /// The vertex that `v` is turned to (None without a rotation).
+    pub(crate) fn turned(&self, v: usize) -> Option<usize> {
+        self.rotation.as_ref()?.turned(v)
+    }
 }
 
 /// The rotation of the net by `period` sectors, when it is an automorphism
