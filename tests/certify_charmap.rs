@@ -288,8 +288,20 @@ fn a_vertex_rule_that_is_no_box_splines_is_not_proved() {
 /// placeholders, the faces and flags do not depend on them), its ring
 /// (outer, not inner) and the rotation period.
 fn ring_net(name: &str, n: usize) -> (subdlab::charmap::net::Net<[f64; 2]>, Vec<usize>, usize) {
+    ring_net_of(name, n, None)
+}
+
+/// [`ring_net`] of a face sequence around the centre (mixed meshes).
+fn ring_net_of(
+    name: &str,
+    n: usize,
+    faces: Option<&str>,
+) -> (subdlab::charmap::net::Net<[f64; 2]>, Vec<usize>, usize) {
     let scheme = schemes::resolve(name, &[]).unwrap();
-    let config = Configuration::regular(scheme.as_ref(), n).unwrap();
+    let config = match faces {
+        Some(f) => Configuration::with_faces(scheme.as_ref(), n, f).unwrap(),
+        None => Configuration::regular(scheme.as_ref(), n).unwrap(),
+    };
     let analysis = analyse(scheme.as_ref(), &config, &Options::default()).unwrap();
     let d = &analysis.discovered;
     let level0 = vec![Some([0.0, 0.0]); d.patch.num_vertices()];
@@ -360,4 +372,35 @@ fn data_the_rotation_does_not_keep_turn_the_one_orbit_check_off() {
     net.mesh.lattice_dirs = None;
     net.inner[ring[0]] = true;
     assert_eq!(representatives(&net, &ring, period).len(), ring.len(), "a ring that does not turn");
+}
+
+/// `window_orbits::representative_of` (lemma C5′: one Jacobian bound per
+/// orbit): on a 4-3 eon with a half-turn (QQTQQT, period 3) every ring
+/// face's representative is the face itself or its image under the turn
+/// rebuilt here from the chart, and each orbit has two faces; the eon QQQQT
+/// has no rotation (its period is its valence), so every face is its own
+/// representative, as are all faces of a net whose data the rotation does
+/// not keep.
+#[test]
+fn orbits_of_a_half_turn_eon_have_two_faces_and_an_asymmetric_eon_none() {
+    use subdlab::certify::window_orbits::representative_of;
+    let itself = |n: usize| (0..n).collect::<Vec<_>>();
+    let (net, ring, period) = ring_net_of("four-three", 6, Some("QQTQQT"));
+    assert_eq!(period, 3);
+    let rep = representative_of(&net, &ring, period);
+    let mut moved = 0;
+    for (i, &f) in ring.iter().enumerate() {
+        assert_eq!(rep.iter().filter(|&&x| x == rep[i]).count(), 2, "face {f}: an orbit of the half-turn");
+        let r = ring[rep[i]];
+        if r != f {
+            moved += 1;
+            assert_eq!(r, turned_face(&net, period, f), "face {f}: representative {r} is not its image");
+        }
+    }
+    assert_eq!(2 * moved, ring.len());
+    let (net, ring, period) = ring_net_of("four-three", 5, Some("QQQQT"));
+    assert_eq!(representative_of(&net, &ring, period), itself(ring.len()), "no rotation");
+    let (mut net, ring, period) = ring_net("catmull-clark", 5);
+    net.mesh.lattice_dirs = Some(vec![0; net.mesh.num_faces()]);
+    assert_eq!(representative_of(&net, &ring, period), itself(ring.len()), "lattice directions");
 }

@@ -346,8 +346,12 @@ fn geometric_half(
     // (windows with face control vertices) or a box spline
     let non_box = scheme.topology().regular_spline() == RegularSpline::NonBoxS31;
     let mut last_reason = String::new();
+    // one refinement for every level tried: level l's net continues level
+    // l − 1's, and is the net `refine_net_exactly_as(.., l)` gives
+    let mut nets = net::ExactLevels::<Interval, Point>::new(scheme, d, level0);
     for levels in 2..=max_levels {
-        let net = net::refine_net_exactly_as::<Interval, Point>(scheme, d, level0.clone(), levels)
+        let net = nets
+            .at(levels)
             .map_err(|e| format!("the interval net could not be refined {levels} levels: {e}"))?;
         // two annuli (C4): the ring, and the ring scaled by λ1 (whose faces'
         // one-rings stay inside the first ring, as a dual scheme's outermost
@@ -359,23 +363,26 @@ fn geometric_half(
             (faces(&|f| net.outer[f] && !net.inner[f]), faces(&|f| net.outer[f] && net.inner[f])),
             (faces(&|f| net.inner[f] && !net.inner2[f]), faces(&|f| net.inner2[f])),
         ];
+        // the ring's faces in orbits of the rotation (C3, C5′)
+        let period = d.config.rotation_period(scheme);
         let mut chosen = None;
         for (ring, inside) in annuli.iter().filter(|(_, inside)| !inside.is_empty()) {
-            match ring.iter().map(|&f| Window::around(&net, &vf, f, non_box)).collect::<Result<Vec<_>, String>>() {
+            let orbits = window_orbits::RingOrbits::new(net, ring, period);
+            match ring_windows(net, &vf, ring, &orbits, non_box) {
                 Ok(w) => {
-                    chosen = Some((ring, inside, w));
+                    chosen = Some((ring, inside, w, orbits));
                     break;
                 }
                 Err(why) => last_reason = format!("at {levels} levels: {why}"),
             }
         }
-        let Some((mut ring, mut inside, mut windows)) = chosen else { continue };
+        let Some((mut ring, mut inside, mut windows, orbits)) = chosen else { continue };
         let mut lattice = None;
         // one window per rotation orbit: the others' entities are their
         // images, and their stencils the images of theirs (`window_orbits`)
-        let period = d.config.rotation_period(scheme);
+        let mut orbit_rep = orbits.representative_of(ring.len());
         let to_check: Vec<&Window> =
-            window_orbits::representatives(&net, ring, period).into_iter().map(|i| &windows[i]).collect();
+            (0..ring.len()).filter(|&i| orbit_rep[i] == i).map(|i| &windows[i]).collect();
         let part = match check_rules(scheme, &net.mesh, &to_check) {
             Ok(part) => part,
             // no box spline over a triangle ring: the scheme's own regular
@@ -398,6 +405,9 @@ fn geometric_half(
                     }
                 }
                 let Some((r, i, (w, checked, bound))) = found else { continue };
+                if !std::ptr::eq(r, ring) {
+                    orbit_rep = window_orbits::representative_of(net, r, period);
+                }
                 (ring, inside, windows) = (r, i, w);
                 lattice = Some(bound);
                 (RegularPart::DifferenceScheme, checked)
@@ -406,9 +416,22 @@ fn geometric_half(
         };
         cert.regular_part = Some(part.0);
         cert.rules_checked = part.1;
-        let bounds: Vec<Interval> = windows.iter().map(Window::jacobian_bounds).collect();
-        let positive = bounds.iter().filter(|b| b.lo > 0.0).count();
-        let negative = bounds.iter().filter(|b| b.hi < 0.0).count();
+        // the Jacobian bounded on the orbits' representatives only (lemma
+        // C5′): a face's Jacobian is its representative's, so a sign proved
+        // there is proved on the orbit, and the counts count every face
+        let reps: Vec<usize> = (0..ring.len()).filter(|&i| orbit_rep[i] == i).collect();
+        let mut group = vec![usize::MAX; ring.len()];
+        for (k, &i) in reps.iter().enumerate() {
+            group[i] = k;
+        }
+        let bounds: Vec<Interval> = reps.iter().map(|&i| windows[i].jacobian_bounds()).collect();
+        let signs: Vec<i8> = bounds
+            .iter()
+            .map(|b| if b.lo > 0.0 { 1 } else if b.hi < 0.0 { -1 } else { 0 })
+            .collect();
+        let sign_of = |i: usize| signs[group[orbit_rep[i]]];
+        let positive = (0..ring.len()).filter(|&i| sign_of(i) > 0).count();
+        let negative = (0..ring.len()).filter(|&i| sign_of(i) < 0).count();
         let undecided = ring.len() - positive - negative;
         cert.levels = Some(levels);
         cert.ring_faces = ring.len();
@@ -422,8 +445,8 @@ fn geometric_half(
             lambda1_row: cert.spectrum.proof.as_ref().and_then(|p| p.lambda1_row).unwrap_or(usize::MAX),
             faces: windows
                 .iter()
-                .zip(&bounds)
-                .map(|(w, b)| FaceEvidence {
+                .enumerate()
+                .map(|(i, w)| FaceEvidence {
                     u_edges: w.u_pairs.clone(),
                     v_edges: w.v_pairs.clone(),
                     layout: w
@@ -433,21 +456,16 @@ fn geometric_half(
                         .copied()
                         .collect(),
                     window: w.window.clone(),
-                    sign: if b.lo > 0.0 {
-                        1
-                    } else if b.hi < 0.0 {
-                        -1
-                    } else {
-                        0
-                    },
+                    sign: sign_of(i),
                 })
                 .collect(),
             winding: None,
             difference: lattice.clone(),
         });
         if positive > 0 && negative > 0 {
-            // the witnesses quote the tightest bounds: the pairwise ones
-            let bounds: Vec<Interval> = windows.iter().map(Window::jacobian_pairwise_bound).collect();
+            // the witnesses quote the tightest bounds, the pairwise ones, of
+            // two representatives (a bound on one is a bound on its orbit)
+            let bounds: Vec<Interval> = reps.iter().map(|&i| windows[i].jacobian_pairwise_bound()).collect();
             let centre = |f: usize| {
                 let face = net.mesh.face(f);
                 let mut c = [0.0; 2];
@@ -470,9 +488,9 @@ fn geometric_half(
             let neg = most(&|a, b| a.hi < b.hi);
             let pos = most(&|a, b| a.lo > b.lo);
             cert.fold_witness = Some(FoldWitness {
-                negative_at: centre(ring[neg]),
+                negative_at: centre(ring[reps[neg]]),
                 negative_upper_bound: bounds[neg].hi,
-                positive_at: centre(ring[pos]),
+                positive_at: centre(ring[reps[pos]]),
                 positive_lower_bound: bounds[pos].lo,
             });
             let why = format!(
@@ -490,7 +508,8 @@ fn geometric_half(
             continue;
         }
         let sign = if negative > 0 { -1.0 } else { 1.0 };
-        record_margins(cert, &net, &bounds, sign, scheme.topology().faces_per_face());
+        // over the representatives: their bounds hold on their orbits
+        record_margins(cert, net, &bounds, sign, scheme.topology().faces_per_face());
         let regular = format!(
             "the Jacobian is proved {} on all {} ring faces at {levels} levels ({} rules)",
             if sign > 0.0 { "positive" } else { "negative" },
@@ -503,7 +522,7 @@ fn geometric_half(
             regular
         };
         cert.reasons.push(regular);
-        let winding = winding_number(&net, ring, inside, &windows);
+        let winding = winding_number(net, ring, inside, &windows);
         if let (Ok((_, e)), Some(evidence)) = (&winding, cert.evidence.as_mut()) {
             evidence.winding = Some(e.clone());
         }
@@ -536,6 +555,34 @@ fn geometric_half(
     Err(last_reason)
 }
 
+/// Every ring face's window: laid out (`Window::around`) on each orbit's
+/// representative and turned from it onto the orbit's other faces, one
+/// turn at a time (lemma C5′: the rotation is a checked automorphism of the
+/// net, so a turned layout is a layout of the image face, starting at the
+/// image of the representative's first corner). The document lists each
+/// face's window so; the checker takes its edges as listed.
+fn ring_windows(
+    net: &Net<Point>,
+    vf: &[Vec<usize>],
+    ring: &[usize],
+    orbits: &window_orbits::RingOrbits,
+    non_box: bool,
+) -> Result<Vec<Window>, String> {
+    let mut out: Vec<Option<Window>> = (0..ring.len()).map(|_| None).collect();
+    for orbit in &orbits.orbits {
+        let mut window = Window::around(net, vf, ring[orbit[0]], non_box)?;
+        for (k, &p) in orbit.iter().enumerate() {
+            let next = if k + 1 < orbit.len() { Some(window.turned(net, orbits)?) } else { None };
+            out[p] = Some(window);
+            match next {
+                Some(w) => window = w,
+                None => break,
+            }
+        }
+    }
+    Ok(out.into_iter().map(|w| w.expect("the orbits cover the ring")).collect())
+}
+
 /// The ring's windows for lemma C9 (`certify::difference`): per face its
 /// own edges, the Jacobian bound (refined on the window where undecided) and the hull radius δ from
 /// the window's second differences and the lattice constants.
@@ -564,6 +611,7 @@ fn difference_windows(
             along_u: vec![u],
             along_v: vec![v],
             points: vec![p(a)?, p(b)?, p(c)?],
+            ids: vec![a, b, c],
             u_pairs: vec![(a, b)],
             v_pairs: vec![(a, c)],
             layout: Vec::new(),
@@ -670,6 +718,8 @@ pub(super) struct Window {
     pub(super) along_v: Vec<Point>,
     /// every window point, for hulls
     pub(super) points: Vec<Point>,
+    /// the net vertices of `points`, in the same (ascending) order
+    pub(super) ids: Vec<usize>,
     /// the same edges as net vertex pairs (from, to), for the certificate
     /// document, whose checker recomputes the edge vectors itself
     pub(super) u_pairs: Vec<(usize, usize)>,
@@ -817,7 +867,7 @@ impl Window {
         let mut ids: Vec<usize> = coords.0.iter().map(|&(v, _)| v).collect();
         ids.sort_unstable();
         let points = ids.iter().map(|&v| p(v)).collect::<Result<Vec<_>, String>>()?;
-        Ok(Window { face: f, faces, along_u, along_v, points, u_pairs, v_pairs, ..Window::default() })
+        Ok(Window { face: f, faces, along_u, along_v, points, ids, u_pairs, v_pairs, ..Window::default() })
     }
 
     /// The window of a ring face of the non-box S_3^1 spline (lemma C3′ of
@@ -883,7 +933,52 @@ impl Window {
             .map(|&(v, _)| v)
             .collect();
         let points = hull.iter().map(|&v| p(v)).collect::<Result<Vec<_>, String>>()?;
-        Ok(Window { face: f, faces, along_u, along_v, points, u_pairs, v_pairs, layout, ..Window::default() })
+        Ok(Window { face: f, faces, along_u, along_v, points, ids: hull, u_pairs, v_pairs, layout, ..Window::default() })
+    }
+
+    /// The window of the image of this window's face under the rotation of
+    /// `orbits`: every vertex turned, lattice positions kept, the edge
+    /// vectors and points read at the turned vertices (in ascending order,
+    /// as `around` and `non_box` list them: the winding's half-plane sums
+    /// their midpoints in that order).
+    fn turned(&self, net: &Net<Point>, orbits: &window_orbits::RingOrbits) -> Result<Window, String> {
+        let mesh = &net.mesh;
+        let lost = || "a window vertex has no image under the rotation".to_string();
+        let t = |v: usize| orbits.turned(v).ok_or_else(lost);
+        let face_of = |g: usize| -> Result<usize, String> {
+            let gf = mesh.face(g);
+            mesh.half_edge(t(gf[0])?, t(gf[1])?).map(|(h, _)| h).ok_or_else(lost)
+        };
+        let p = |v: usize| net.points[v].ok_or_else(|| "a window point is not determined".to_string());
+        let pairs = |edges: &[(usize, usize)]| -> Result<Vec<(usize, usize)>, String> {
+            edges.iter().map(|&(a, b)| Ok((t(a)?, t(b)?))).collect()
+        };
+        let diff = |&(from, to): &(usize, usize)| -> Result<Point, String> {
+            let (from, to) = (p(from)?, p(to)?);
+            Ok([to[0] - from[0], to[1] - from[1]])
+        };
+        let (u_pairs, v_pairs) = (pairs(&self.u_pairs)?, pairs(&self.v_pairs)?);
+        let along_u = u_pairs.iter().map(diff).collect::<Result<Vec<_>, String>>()?;
+        let along_v = v_pairs.iter().map(diff).collect::<Result<Vec<_>, String>>()?;
+        let mut ids = self.ids.iter().map(|&v| t(v)).collect::<Result<Vec<_>, String>>()?;
+        ids.sort_unstable();
+        let points = ids.iter().map(|&v| p(v)).collect::<Result<Vec<_>, String>>()?;
+        let mut layout = self.layout.iter().map(|&(v, c)| Ok((t(v)?, c))).collect::<Result<Vec<_>, String>>()?;
+        layout.sort_unstable();
+        let mut faces = self.faces.iter().map(|&g| face_of(g)).collect::<Result<Vec<_>, String>>()?;
+        faces.sort_unstable();
+        Ok(Window {
+            face: face_of(self.face)?,
+            faces,
+            along_u,
+            along_v,
+            points,
+            ids,
+            u_pairs,
+            v_pairs,
+            layout,
+            ..Window::default()
+        })
     }
 
     /// An enclosure of the range of det(uᵢ, vⱼ) over the window's edge
@@ -1409,6 +1504,97 @@ pub(super) fn polygon_winding(polygon: &[[f64; 2]]) -> Result<i64, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::neighbourhood::Configuration;
+    use crate::spectrum::{analyse, Options};
+
+    /// Per ring face of the certified net at `levels` (the annulus the
+    /// certificate takes: the first whose faces all have box-spline
+    /// windows): the Jacobian sign from the face's own window, as every face
+    /// was bounded before the orbit reduction, and the position of its
+    /// orbit's place. None when no annulus has such windows.
+    fn own_signs(
+        scheme: &dyn Scheme,
+        analysis: &Analysis,
+        levels: usize,
+    ) -> Option<(Vec<i8>, Vec<usize>)> {
+        let mut cert = certify_charmap(scheme, analysis, DEFAULT_MAX_LEVELS).unwrap();
+        let level0 = certified_net(analysis, &mut cert).unwrap();
+        let d = &analysis.discovered;
+        let net = net::refine_net_exactly_as::<Interval, Point>(scheme, d, level0, levels).unwrap();
+        let vf = net.mesh.vertex_faces();
+        let faces = |keep: &dyn Fn(usize) -> bool| (0..net.mesh.num_faces()).filter(|&f| keep(f)).collect::<Vec<_>>();
+        let annuli = [
+            (faces(&|f| net.outer[f] && !net.inner[f]), faces(&|f| net.outer[f] && net.inner[f])),
+            (faces(&|f| net.inner[f] && !net.inner2[f]), faces(&|f| net.inner2[f])),
+        ];
+        for (ring, _) in annuli.iter().filter(|(_, inside)| !inside.is_empty()) {
+            let Ok(windows) = ring.iter().map(|&f| Window::around(&net, &vf, f, false)).collect::<Result<Vec<_>, _>>()
+            else {
+                continue;
+            };
+            let signs = windows
+                .iter()
+                .map(|w| {
+                    let b = w.jacobian_bounds();
+                    if b.lo > 0.0 {
+                        1
+                    } else if b.hi < 0.0 {
+                        -1
+                    } else {
+                        0
+                    }
+                })
+                .collect();
+            let period = d.config.rotation_period(scheme);
+            return Some((signs, window_orbits::representative_of(&net, ring, period)));
+        }
+        None
+    }
+
+    /// Lemma C5′ against the route it replaced: at every level the
+    /// certificate tries, every ring face's own window proves the sign its
+    /// representative's does (so the route that bounded every face decided
+    /// the same at every level), each orbit has g members, and the counts
+    /// and the document's per-face signs are the all-faces ones. The signs
+    /// are a second computation (each face's own enclosures), not the
+    /// certificate's.
+    #[test]
+    fn one_jacobian_bound_per_orbit_decides_as_every_face_does() {
+        for (name, n) in [("catmull-clark", 5), ("loop", 7), ("doo-sabin", 5), ("catmull-clark", 3), ("loop", 4)] {
+            let scheme = crate::schemes::build(name, &[]).unwrap();
+            let config = Configuration::regular(scheme.as_ref(), n).unwrap();
+            let analysis = analyse(scheme.as_ref(), &config, &Options::default()).unwrap();
+            let cert = certify_charmap(scheme.as_ref(), &analysis, DEFAULT_MAX_LEVELS).unwrap();
+            let who = format!("{name} n = {n}");
+            assert_eq!(cert.regularity, Verdict::Proved, "{who}");
+            let decisive = cert.levels.expect("decided");
+            let g = n / config.rotation_period(scheme.as_ref());
+            for levels in 2..=decisive {
+                let Some((own, rep)) = own_signs(scheme.as_ref(), &analysis, levels) else { continue };
+                for i in 0..own.len() {
+                    assert_eq!(own[i], own[rep[i]], "{who} at {levels} levels: face {i} and its representative");
+                }
+                // every orbit has g faces
+                let reps: Vec<usize> = (0..rep.len()).filter(|&i| rep[i] == i).collect();
+                assert_eq!(reps.len() * g, own.len(), "{who}");
+                for &r in &reps {
+                    assert_eq!(rep.iter().filter(|&&x| x == r).count(), g, "{who}: the orbit of face {r}");
+                }
+                if levels == decisive {
+                    let count = |s: i8| own.iter().filter(|&&x| x == s).count();
+                    assert_eq!(cert.ring_faces, own.len(), "{who}");
+                    assert_eq!(
+                        (cert.positive_faces, cert.negative_faces, cert.undecided_faces),
+                        (count(1), count(-1), count(0)),
+                        "{who}"
+                    );
+                    let evidence = cert.evidence.as_ref().expect("evidence of a decided map");
+                    let claimed: Vec<i8> = evidence.faces.iter().map(|f| f.sign).collect();
+                    assert_eq!(claimed, own, "{who}: the document's signs are every face's own");
+                }
+            }
+        }
+    }
 
     /// The regular n-gon at angle offset `phase`, traversed `turns` times
     /// (negative: clockwise): its winding number about the origin is

@@ -30,9 +30,90 @@ use crate::neighbourhood::discovery::Rotation;
 /// one per orbit of the rotation by `period` sectors, or every position
 /// when no rotation of the net is established.
 pub fn representatives<T>(net: &Net<T>, ring: &[usize], period: usize) -> Vec<usize> {
-    match rotation_of(net, period) {
-        Some(rotation) => (0..ring.len()).filter(|&i| represents(&net.mesh, &rotation, ring[i])).collect(),
-        None => (0..ring.len()).collect(),
+    RingOrbits::new(net, ring, period).orbits.iter().map(|o| o[0]).collect()
+}
+
+/// Per position in `ring`, the position of its orbit's representative
+/// (itself for a representative, and for every face when no rotation of the
+/// net is established).
+pub fn representative_of<T>(net: &Net<T>, ring: &[usize], period: usize) -> Vec<usize> {
+    RingOrbits::new(net, ring, period).representative_of(ring.len())
+}
+
+/// The ring's faces in orbits of the rotation by `period` sectors (lemmas
+/// C3 and C5′): each orbit in turn order from its representative, as
+/// positions in `ring`, with the vertex turn that carries each member onto
+/// the next. Every face is its own orbit when no rotation is established,
+/// and also when the orbits are not what a free rotation of the ring gives
+/// (an image outside the ring, a face with two corners in one orbit).
+pub struct RingOrbits {
+    pub orbits: Vec<Vec<usize>>,
+    rotation: Option<Rotation>,
+}
+
+impl RingOrbits {
+    pub fn new<T>(net: &Net<T>, ring: &[usize], period: usize) -> RingOrbits {
+        let singletons = || RingOrbits { orbits: (0..ring.len()).map(|i| vec![i]).collect(), rotation: None };
+        let Some(rotation) = rotation_of(net, period) else { return singletons() };
+        let mesh = &net.mesh;
+        let mut position = vec![usize::MAX; mesh.num_faces()];
+        for (i, &f) in ring.iter().enumerate() {
+            position[f] = i;
+        }
+        // the image of a face: the face holding the turned first edge (the
+        // rotation was checked to map every face onto one, corners in order)
+        let turned = |f: usize| -> Option<usize> {
+            let face = mesh.face(f);
+            let (a, b) = (rotation.turned(face[0])?, rotation.turned(face[1])?);
+            mesh.half_edge(a, b).map(|(g, _)| g)
+        };
+        let mut placed = vec![false; ring.len()];
+        let mut orbits = Vec::new();
+        for i in 0..ring.len() {
+            if placed[i] || !represents(mesh, &rotation, ring[i]) {
+                continue;
+            }
+            let mut orbit = vec![i];
+            let mut f = ring[i];
+            loop {
+                let Some(g) = turned(f) else { return singletons() };
+                let p = position[g];
+                if p == i {
+                    break;
+                }
+                // a second representative in one orbit is a face with two
+                // corners in one orbit (it represents itself)
+                if p == usize::MAX || placed[p] || orbit.len() >= rotation.order() || represents(mesh, &rotation, g) {
+                    return singletons();
+                }
+                orbit.push(p);
+                f = g;
+            }
+            for &p in &orbit {
+                placed[p] = true;
+            }
+            orbits.push(orbit);
+        }
+        if placed.contains(&false) {
+            return singletons();
+        }
+        RingOrbits { orbits, rotation: Some(rotation) }
+    }
+
+    /// Per position, the position of its orbit's representative.
+    pub fn representative_of(&self, len: usize) -> Vec<usize> {
+        let mut of = vec![usize::MAX; len];
+        for orbit in &self.orbits {
+            for &p in orbit {
+                of[p] = orbit[0];
+            }
+        }
+        of
+    }
+
+    /// The vertex that `v` is turned to (None without a rotation).
+    pub(crate) fn turned(&self, v: usize) -> Option<usize> {
+        self.rotation.as_ref()?.turned(v)
     }
 }
 

@@ -16,10 +16,11 @@
 //! scaled by λ1 together with all smaller copies.
 
 use std::collections::HashSet;
+use std::marker::PhantomData;
 
 use nalgebra::{Matrix2, Vector2};
 
-use crate::mesh::PolyMesh;
+use crate::mesh::{LatticeCoord, PolyMesh};
 use crate::neighbourhood::discovery::RegionEntities;
 use crate::neighbourhood::Discovered;
 
@@ -217,7 +218,17 @@ pub fn refine_net_exactly_as<W: SchemeWeight, T: Combine<W> + Clone>(
     level0: Vec<Option<T>>,
     analysis_steps: usize,
 ) -> Result<Net<T>, Error> {
-    let first = |k: usize, points: &[Option<T>]| -> Result<Vec<Option<T>>, Error> {
+    let first = exact_first_step::<W, T>(scheme, d);
+    refine_net_in::<W, T>(scheme, d, level0, analysis_steps, None, &first, &mut |_, _| Ok(()))
+}
+
+/// The first analysis step of [`refine_net_exactly_as`]: discovery's
+/// refinements with the rules evaluated in `W`.
+fn exact_first_step<'a, W: SchemeWeight, T: Combine<W> + Clone>(
+    scheme: &'a dyn Scheme,
+    d: &'a Discovered,
+) -> impl Fn(usize, &[Option<T>]) -> Result<Vec<Option<T>>, Error> + 'a {
+    move |k: usize, points: &[Option<T>]| -> Result<Vec<Option<T>>, Error> {
         let r = &d.refinements()[k];
         let before = d.mesh_before(k);
         let stencils = (0..r.vertex_origins.len())
@@ -230,8 +241,7 @@ pub fn refine_net_exactly_as<W: SchemeWeight, T: Combine<W> + Clone>(
         // a missing stencil leaves its point undefined; `check_defined` and
         // pruning decide whether that matters
         Ok(apply(stencils.iter().map(|s| s.as_ref().ok()), points))
-    };
-    refine_net_in::<W, T>(scheme, d, level0, analysis_steps, None, &first, &mut |_, _| Ok(()))
+    }
 }
 
 type FirstStep<'a, T> = dyn Fn(usize, &[Option<T>]) -> Result<Vec<Option<T>>, Error> + 'a;
@@ -258,7 +268,6 @@ fn refine_net_in<W: SchemeWeight, T: Combine<W> + Clone>(
     last
 }
 
-#[allow(clippy::too_many_arguments)]
 fn refine_with_margin<W: SchemeWeight, T: Combine<W> + Clone>(
     scheme: &dyn Scheme,
     d: &Discovered,
@@ -272,54 +281,111 @@ fn refine_with_margin<W: SchemeWeight, T: Combine<W> + Clone>(
     if analysis_steps == 0 {
         return Err(Error::Input("the characteristic ring needs at least one analysis step".into()));
     }
-    let steps = scheme.topology().steps_per_analysis();
-    let centre0: HashSet<usize> = centre_set(d).into_iter().collect();
-    let mut outer = faces_touching(&d.patch, &centre0);
-    if let Some(only) = first_ring {
-        for (o, keep) in outer.iter_mut().zip(only) {
-            *o &= *keep;
+    let mut refining = Refining::<W, T>::start(scheme, d, level0, margin, first_ring, first)?;
+    visit(1, &refining.net)?;
+    refining.refuse_beyond_limit(analysis_steps)?;
+    let steps = refining.steps;
+    for _ in steps..analysis_steps * steps {
+        refining.refine_once()?;
+        if refining.net.refinements % steps == 0 {
+            visit(refining.net.refinements / steps, &refining.net)?;
         }
     }
-    let mut net = Net {
-        outer,
-        inner: vec![false; d.patch.num_faces()],
-        inner2: vec![false; d.patch.num_faces()],
-        mesh: PolyMesh::clone(&d.patch),
-        points: level0,
-        refinements: 0,
-    };
-    // the first analysis step reuses discovery's refinements, whose vertex ids
-    // the successor map (lattice charts) refers to
-    for k in 0..steps {
-        let r = &d.refinements()[k];
-        let points = first(k, &net.points)?;
-        net = descend(&net, r.mesh.clone(), &r.vertex_origins, &r.face_parents, points);
-    }
-    let centre1: HashSet<usize> = centre0
-        .iter()
-        .map(|&v| {
-            d.successor(v)
-                .ok_or_else(|| Error::Message("a centre vertex has no successor after one analysis step".into()))
+    Ok(refining.net)
+}
+
+/// A refinement under way with one pruning margin: the net after some
+/// whole refinements, and what the next ones need. `refine_with_margin`
+/// drives it to one level; [`ExactLevels`] stops at every level on the way.
+struct Refining<'a, W, T> {
+    scheme: &'a dyn Scheme,
+    margin: usize,
+    /// refinements per analysis step
+    steps: usize,
+    /// the centre's lattice coordinates (for `inner2`), and its size
+    centre_coords: Option<HashSet<LatticeCoord>>,
+    centre_len: usize,
+    /// the pruned net after the first analysis step: first-ring faces and
+    /// the others (the estimate of `refuse_beyond_limit`)
+    region: usize,
+    rest: usize,
+    net: Net<T>,
+    weight: PhantomData<W>,
+}
+
+impl<'a, W: SchemeWeight, T: Combine<W> + Clone> Refining<'a, W, T> {
+    /// The net after the first analysis step (discovery's refinements),
+    /// checked and pruned.
+    fn start(
+        scheme: &'a dyn Scheme,
+        d: &Discovered,
+        level0: Vec<Option<T>>,
+        margin: usize,
+        first_ring: Option<&[bool]>,
+        first: &FirstStep<T>,
+    ) -> Result<Self, Error> {
+        let steps = scheme.topology().steps_per_analysis();
+        let centre0: HashSet<usize> = centre_set(d).into_iter().collect();
+        let mut outer = faces_touching(&d.patch, &centre0);
+        if let Some(only) = first_ring {
+            for (o, keep) in outer.iter_mut().zip(only) {
+                *o &= *keep;
+            }
+        }
+        let mut net = Net {
+            outer,
+            inner: vec![false; d.patch.num_faces()],
+            inner2: vec![false; d.patch.num_faces()],
+            mesh: PolyMesh::clone(&d.patch),
+            points: level0,
+            refinements: 0,
+        };
+        // the first analysis step reuses discovery's refinements, whose vertex ids
+        // the successor map (lattice charts) refers to
+        for k in 0..steps {
+            let r = &d.refinements()[k];
+            let points = first(k, &net.points)?;
+            net = descend(&net, r.mesh.clone(), &r.vertex_origins, &r.face_parents, points);
+        }
+        let centre1: HashSet<usize> = centre0
+            .iter()
+            .map(|&v| {
+                d.successor(v)
+                    .ok_or_else(|| Error::Message("a centre vertex has no successor after one analysis step".into()))
+            })
+            .collect::<Result<_, _>>()?;
+        net.inner = faces_touching(&net.mesh, &centre1);
+        // the centre after k analysis steps is the set of vertices at the centre's
+        // lattice coordinates (each level's chart counts in its own units), as
+        // `Discovered::successor` finds it after one step
+        let centre_coords: Option<HashSet<_>> =
+            d.patch.chart.as_ref().map(|c| centre0.iter().map(|&v| c.vertex_coords[v]).collect());
+        check_defined(&net)?;
+        net = prune(net, margin)?;
+        let region = net.outer.iter().filter(|&&o| o).count();
+        let rest = net.mesh.num_faces() - region;
+        Ok(Refining {
+            scheme,
+            margin,
+            steps,
+            centre_coords,
+            centre_len: centre0.len(),
+            region,
+            rest,
+            net,
+            weight: PhantomData,
         })
-        .collect::<Result<_, _>>()?;
-    net.inner = faces_touching(&net.mesh, &centre1);
-    // the centre after k analysis steps is the set of vertices at the centre's
-    // lattice coordinates (each level's chart counts in its own units), as
-    // `Discovered::successor` finds it after one step
-    let centre_coords: Option<HashSet<_>> =
-        d.patch.chart.as_ref().map(|c| centre0.iter().map(|&v| c.vertex_coords[v]).collect());
-    check_defined(&net)?;
-    net = prune(net, margin)?;
-    visit(1, &net)?;
-    let region = net.outer.iter().filter(|&&o| o).count();
-    refuse_beyond_limit(
-        region,
-        net.mesh.num_faces() - region,
-        scheme.topology().faces_per_face(),
-        steps,
-        analysis_steps,
-    )?;
-    for _ in steps..analysis_steps * steps {
+    }
+
+    /// [`refuse_beyond_limit`] for a refinement to `analysis_steps` levels.
+    fn refuse_beyond_limit(&self, analysis_steps: usize) -> Result<(), Error> {
+        let factor = self.scheme.topology().faces_per_face();
+        refuse_beyond_limit(self.region, self.rest, factor, self.steps, analysis_steps)
+    }
+
+    /// One more refinement, checked and pruned.
+    fn refine_once(&mut self) -> Result<(), Error> {
+        let (scheme, steps, net) = (self.scheme, self.steps, &self.net);
         let bound = net.mesh.num_faces() * 4;
         if bound > MAX_NET_FACES {
             return Err(Error::Input(format!(
@@ -332,17 +398,17 @@ fn refine_with_margin<W: SchemeWeight, T: Combine<W> + Clone>(
         // rest is dropped by the pruning anyway (about a fifth of a deep
         // level's vertices, the outer half of the margin band's children).
         let r = connectivity(scheme, &net.mesh)?;
-        let [outer, inner, mut inner2] = descend_flags(&net, &r.mesh, &r.vertex_origins, &r.face_parents);
+        let [outer, inner, mut inner2] = descend_flags(net, &r.mesh, &r.vertex_origins, &r.face_parents);
         if net.refinements + 1 == 2 * steps {
-            if let (Some(coords), Some(chart)) = (&centre_coords, r.mesh.chart.as_ref().filter(|c| c.scale == 1)) {
+            if let (Some(coords), Some(chart)) = (&self.centre_coords, r.mesh.chart.as_ref().filter(|c| c.scale == 1)) {
                 let centre2: HashSet<usize> =
                     (0..r.mesh.num_vertices()).filter(|&v| coords.contains(&chart.vertex_coords[v])).collect();
-                if centre2.len() == centre0.len() {
+                if centre2.len() == self.centre_len {
                     inner2 = faces_touching(&r.mesh, &centre2);
                 }
             }
         }
-        let keep = faces_near(&r.mesh, &outer, margin);
+        let keep = faces_near(&r.mesh, &outer, self.margin);
         let mut wanted = vec![false; r.mesh.num_vertices()];
         for &f in &keep {
             for v in face_vertices(&r.mesh, f) {
@@ -352,14 +418,77 @@ fn refine_with_margin<W: SchemeWeight, T: Combine<W> + Clone>(
         let stencils =
             stencils_of::<W>(scheme, &net.mesh, &r, wanted.iter().enumerate().filter(|(_, &w)| w).map(|(v, _)| v))?;
         let points = apply(stencils.iter().map(StepStencil::stencil), &net.points);
-        net = Net { mesh: r.mesh, points, outer, inner, inner2, refinements: net.refinements + 1 };
-        check_defined(&net)?;
-        net = restrict(net, &keep)?;
-        if net.refinements % steps == 0 {
-            visit(net.refinements / steps, &net)?;
-        }
+        let refined = Net { mesh: r.mesh, points, outer, inner, inner2, refinements: net.refinements + 1 };
+        check_defined(&refined)?;
+        self.net = restrict(refined, &keep)?;
+        Ok(())
     }
-    Ok(net)
+}
+
+/// [`refine_net_exactly_as`] at a rising sequence of levels from one
+/// refinement: the certificate tries levels 2, 3, … until one decides, and
+/// each level's net continues the previous one's instead of refining from
+/// level 0 again. [`ExactLevels::at`]`(l)` is the net (or the error)
+/// `refine_net_exactly_as(.., l)` gives: the same steps with the first
+/// pruning margin, the limit checked for level l before its steps, as there.
+/// Where the first margin leaves a point undetermined, the wider margins'
+/// retries are `refine_net_exactly_as` itself, at that level and every later
+/// one, so no path differs from it.
+pub struct ExactLevels<'a, W, T> {
+    scheme: &'a dyn Scheme,
+    d: &'a Discovered,
+    level0: Vec<Option<T>>,
+    /// the first margin's refinement; None before the first level and after
+    /// it failed (then `whole` holds each level's net from level 0)
+    refining: Option<Refining<'a, W, T>>,
+    failed: bool,
+    whole: Option<Net<T>>,
+}
+
+impl<'a, W: SchemeWeight, T: Combine<W> + Clone> ExactLevels<'a, W, T> {
+    pub fn new(scheme: &'a dyn Scheme, d: &'a Discovered, level0: Vec<Option<T>>) -> Self {
+        ExactLevels { scheme, d, level0, refining: None, failed: false, whole: None }
+    }
+
+    /// The net of `analysis_steps` levels; levels are asked in rising order
+    /// (an earlier level than the last one asked is an error).
+    pub fn at(&mut self, analysis_steps: usize) -> Result<&Net<T>, Error> {
+        if !self.failed {
+            match self.advance(analysis_steps) {
+                Ok(()) => return Ok(&self.refining.as_ref().expect("advanced").net),
+                Err(Error::NotDetermined(_)) => {
+                    self.failed = true;
+                    self.refining = None;
+                }
+                Err(e) => return Err(e),
+            }
+        }
+        let net = refine_net_exactly_as::<W, T>(self.scheme, self.d, self.level0.clone(), analysis_steps)?;
+        Ok(self.whole.insert(net))
+    }
+
+    /// The first margin's refinement continued to `analysis_steps` levels.
+    fn advance(&mut self, analysis_steps: usize) -> Result<(), Error> {
+        if analysis_steps == 0 {
+            return Err(Error::Input("the characteristic ring needs at least one analysis step".into()));
+        }
+        if self.refining.is_none() {
+            let first = exact_first_step::<W, T>(self.scheme, self.d);
+            let start = Refining::start(self.scheme, self.d, self.level0.clone(), MARGINS[0], None, &first)?;
+            self.refining = Some(start);
+        }
+        let refining = self.refining.as_mut().expect("started");
+        if refining.net.refinements > analysis_steps * refining.steps {
+            return Err(Error::Message(format!(
+                "the net is refined past {analysis_steps} levels already: levels are asked in rising order"
+            )));
+        }
+        refining.refuse_beyond_limit(analysis_steps)?;
+        while refining.net.refinements < analysis_steps * refining.steps {
+            refining.refine_once()?;
+        }
+        Ok(())
+    }
 }
 
 /// Refuse up front a request whose last level would exceed
