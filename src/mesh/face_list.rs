@@ -7,7 +7,10 @@
 
 use std::ops::Index;
 
-use super::polymesh::VertexId;
+/// A vertex of a mesh: an index into its vertex list (defined here, below
+/// `polymesh`, which re-exports it, so that the files of `mesh` import in
+/// one direction).
+pub type VertexId = usize;
 
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct FaceList {

@@ -9,12 +9,12 @@ use std::collections::{HashMap, HashSet};
 use std::hash::{BuildHasherDefault, Hasher};
 use std::sync::OnceLock;
 
+pub use super::face_list::VertexId;
 use super::face_list::FaceList;
 use super::lattice::Chart;
 use super::tags::{Tags, VertexTag};
 use crate::error::Error;
 
-pub type VertexId = usize;
 pub type FaceId = usize;
 
 /// A multiplicative (Fx-style) hasher for the small integer keys of mesh
