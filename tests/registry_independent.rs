@@ -1053,7 +1053,7 @@ fn limit_jacobians_at_regular_ring_vertices(
     let mesh = &fine.mesh;
     let faces = mesh.faces();
     let ring: HashSet<usize> =
-        (0..faces.len()).filter(|&f| fine.outer[f] && !fine.inner[f]).flat_map(|f| faces[f].clone()).collect();
+        (0..faces.len()).filter(|&f| fine.outer[f] && !fine.inner[f]).flat_map(|f| faces[f].to_vec()).collect();
     let orientation = (0..faces.len())
         .filter(|&f| fine.outer[f])
         .map(|f| signed_area(&faces[f].iter().map(|&v| fine.points[v].unwrap()).collect::<Vec<_>>()))

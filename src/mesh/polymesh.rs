@@ -9,11 +9,12 @@ use std::collections::{HashMap, HashSet};
 use std::hash::{BuildHasherDefault, Hasher};
 use std::sync::OnceLock;
 
+pub use super::face_list::VertexId;
+use super::face_list::FaceList;
 use super::lattice::Chart;
 use super::tags::{Tags, VertexTag};
 use crate::error::Error;
 
-pub type VertexId = usize;
 pub type FaceId = usize;
 
 /// A multiplicative (Fx-style) hasher for the small integer keys of mesh
@@ -84,10 +85,13 @@ pub type IdSet<K> = HashSet<K, IdBuild>;
 /// Where each vertex's corners start in a list of all face corners grouped
 /// by vertex (compressed rows): vertex v owns `offsets[v]..offsets[v + 1]`.
 /// Indices must be valid.
-pub(crate) fn corner_offsets(num_vertices: usize, faces: &[Vec<VertexId>]) -> Vec<usize> {
+pub(crate) fn corner_offsets<F: AsRef<[VertexId]>>(
+    num_vertices: usize,
+    faces: impl IntoIterator<Item = F>,
+) -> Vec<usize> {
     let mut offsets = vec![0usize; num_vertices + 1];
     for face in faces {
-        for &v in face {
+        for &v in face.as_ref() {
             offsets[v + 1] += 1;
         }
     }
@@ -130,13 +134,14 @@ fn small(x: usize) -> u32 {
 }
 
 impl HalfEdges {
-    /// Every corner of `faces` as a half-edge (indices must be valid).
-    fn new(num_vertices: usize, faces: &[Vec<VertexId>]) -> HalfEdges {
+    /// Every corner of the first `count` faces as a half-edge (their
+    /// indices must be valid).
+    fn new(num_vertices: usize, faces: &FaceList, count: usize) -> HalfEdges {
         // start[a + 1] counts a's corners, then holds where a's row starts,
         // then (advanced while filling) where it ends, which is where a + 1's
         // starts: one array, no cursor copy
         let mut start = vec![0u32; num_vertices + 1];
-        for face in faces {
+        for face in faces.iter().take(count) {
             for &a in face {
                 start[a + 1] += 1;
             }
@@ -148,7 +153,7 @@ impl HalfEdges {
             total = total.checked_add(c).expect("a mesh has fewer than 2^32 corners");
         }
         let mut out = vec![(0, 0, 0); total as usize];
-        for (fi, face) in faces.iter().enumerate() {
+        for (fi, face) in faces.iter().take(count).enumerate() {
             let f = small(fi);
             for (k, (&a, &b)) in face.iter().zip(cyclic_next(face)).enumerate() {
                 let at = &mut start[a + 1];
@@ -243,7 +248,7 @@ impl EdgeNumbering {
 
 #[derive(Clone, Debug)]
 pub struct PolyMesh {
-    faces: Vec<Vec<VertexId>>,
+    faces: FaceList,
     num_vertices: usize,
     /// half-edge (a -> b) -> (face, index of a in that face); also each
     /// vertex's first corner in face order, where walks around it start
@@ -251,8 +256,11 @@ pub struct PolyMesh {
     /// The fan of each vertex as (face, corner) pairs, walked on first use
     /// (None inside: an open fan): rules ask for the fan of a high-valence
     /// centre once per face or edge around it, and rebuilding it by half-edge
-    /// walks each time made discovery quadratic in the valence.
-    fans: Vec<OnceLock<Fan>>,
+    /// walks each time made discovery quadratic in the valence. The table
+    /// itself is made at the first query: many meshes (the last level of a
+    /// search or of a net) are never asked, and filling a slot per vertex
+    /// was a large part of building them.
+    fans: OnceLock<Box<[OnceLock<Fan>]>>,
     /// The faces at each vertex in face order, built on first use (the tag
     /// queries of a tagged mesh ask at every vertex and edge point).
     incident: OnceLock<Box<[Box<[FaceId]>]>>,
@@ -315,7 +323,8 @@ impl From<MeshError> for crate::error::Error {
 }
 
 impl PolyMesh {
-    pub fn new(num_vertices: usize, faces: Vec<Vec<VertexId>>) -> Result<Self, MeshError> {
+    pub fn new(num_vertices: usize, faces: impl Into<FaceList>) -> Result<Self, MeshError> {
+        let faces = faces.into();
         // face cycles are checked in face order; a repeated half-edge is
         // reported only if it comes before the first bad face, so the error
         // is the first defect in face order
@@ -337,7 +346,7 @@ impl PolyMesh {
             Some(MeshError::DegenerateFace { face } | MeshError::BadIndex { face, .. }) => *face,
             _ => faces.len(),
         };
-        let half_edges = HalfEdges::new(num_vertices, &faces[..good]);
+        let half_edges = HalfEdges::new(num_vertices, &faces, good);
         if let Some(e) = half_edges.first_repeated().or(bad) {
             return Err(e);
         }
@@ -345,7 +354,7 @@ impl PolyMesh {
             faces,
             num_vertices,
             half_edges,
-            fans: (0..num_vertices).map(|_| OnceLock::new()).collect(),
+            fans: OnceLock::new(),
             incident: OnceLock::new(),
             every_face_has_point: false,
             chart: None,
@@ -459,7 +468,10 @@ impl PolyMesh {
             }
             id[v]
         };
-        let faces: Vec<Vec<usize>> = keep.iter().map(|&f| self.faces[f].iter().map(|&v| take(v)).collect()).collect();
+        let mut faces = self.faces_sized_for(keep);
+        for &f in keep {
+            faces.push_iter(self.faces[f].iter().map(|&v| take(v)));
+        }
         let points: Vec<Option<usize>> = if self.face_points.is_empty() {
             Vec::new()
         } else {
@@ -486,7 +498,8 @@ impl PolyMesh {
     /// evaluated at it). Unlike [`PolyMesh::restrict`] nothing is renumbered,
     /// so ids, chart coordinates and per-vertex data mean what they meant.
     pub fn keep_faces(&self, keep: &[FaceId]) -> Result<PolyMesh, Error> {
-        let faces: Vec<Vec<usize>> = keep.iter().map(|&f| self.faces[f].clone()).collect();
+        let mut faces = self.faces_sized_for(keep);
+        keep.iter().for_each(|&f| faces.push(&self.faces[f]));
         let mut m = PolyMesh::new(self.num_vertices, faces).map_err(|e| Error::Input(e.to_string()))?;
         if !self.face_points.is_empty() {
             m = m.with_face_points(keep.iter().map(|&f| self.face_points[f]).collect())?;
@@ -501,6 +514,11 @@ impl PolyMesh {
             face_sector: keep.iter().map(|&f| c.face_sector[f]).collect(),
         });
         Ok(m)
+    }
+
+    /// An empty face list with room for the faces `keep`.
+    fn faces_sized_for(&self, keep: &[FaceId]) -> FaceList {
+        FaceList::with_capacity(keep.len(), keep.iter().map(|&f| self.faces[f].len()).sum())
     }
 
     /// The face control vertex of face f, if the mesh carries them.
@@ -520,7 +538,7 @@ impl PolyMesh {
     pub fn num_faces(&self) -> usize {
         self.faces.len()
     }
-    pub fn faces(&self) -> &[Vec<VertexId>] {
+    pub fn faces(&self) -> &FaceList {
         &self.faces
     }
     pub fn face(&self, f: FaceId) -> &[VertexId] {
@@ -535,7 +553,7 @@ impl PolyMesh {
     /// Face `f` rotated so that it starts at its corner `k`.
     pub fn face_from(&self, f: FaceId, k: usize) -> Vec<VertexId> {
         let face = &self.faces[f];
-        (0..face.len()).map(|t| face[(k + t) % face.len()]).collect()
+        face[k..].iter().chain(&face[..k]).copied().collect()
     }
 
     /// Undirected edges, each once, as (a, b) with the half-edge a->b present.
@@ -606,7 +624,8 @@ impl PolyMesh {
     /// corner the walk starts at; `None` on the boundary. Cached for all
     /// vertices at the first call.
     pub fn fan_corners(&self, v: VertexId) -> Option<&[(FaceId, usize)]> {
-        self.fans.get(v)?.get_or_init(|| self.walk_fan(v)).as_deref()
+        let fans = self.fans.get_or_init(|| (0..self.num_vertices).map(|_| OnceLock::new()).collect());
+        fans.get(v)?.get_or_init(|| self.walk_fan(v)).as_deref()
     }
 
     /// The neighbours of `v` in fan order (the second corner of each fan face)
@@ -824,6 +843,92 @@ mod edge_tests {
                 let expected = if m.is_interior_edge(a, b) { 2 } else { 1 };
                 assert_eq!(sides_per_edge[e], expected, "edge {a}-{b}");
             }
+        }
+    }
+
+    /// Random grids of quads, some split into triangles, with vertex ids
+    /// permuted and faces shuffled (a fixed linear congruential sequence):
+    /// the mesh keeps the faces given, finds every side's half-edge at its
+    /// face and corner, and each vertex's fan is its corners exactly once,
+    /// starting at its first corner, each face holding the side from v to
+    /// the previous face's corner before v (None on the grid's border), as
+    /// read off the face vectors directly; `restrict` and `keep_faces` keep
+    /// the faces asked for.
+    #[test]
+    fn random_meshes_keep_their_faces_half_edges_and_fans() {
+        let mut state = 99u64;
+        let mut next = |m: usize| {
+            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((state >> 33) % m as u64) as usize
+        };
+        for _ in 0..10 {
+            let (w, h) = (2 + next(5), 2 + next(5));
+            let nv = (w + 1) * (h + 1);
+            let mut perm: Vec<usize> = (0..nv).collect();
+            for i in (1..nv).rev() {
+                perm.swap(i, next(i + 1));
+            }
+            let at = |i: usize, j: usize| perm[j * (w + 1) + i];
+            let mut faces = Vec::new();
+            for j in 0..h {
+                for i in 0..w {
+                    let q = [at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)];
+                    match next(3) {
+                        0 => faces.push(q.to_vec()),
+                        d => {
+                            let k = d - 1; // split along the diagonal from corner k
+                            faces.push(vec![q[k], q[k + 1], q[k + 2]]);
+                            faces.push(vec![q[k + 2], q[(k + 3) % 4], q[k]]);
+                        }
+                    }
+                }
+            }
+            for i in (1..faces.len()).rev() {
+                faces.swap(i, next(i + 1));
+            }
+            let m = PolyMesh::new(nv, faces.clone()).unwrap();
+            assert_eq!(m.faces().to_vec(), faces);
+            assert_eq!(m.num_faces(), faces.len());
+            for (f, face) in faces.iter().enumerate() {
+                assert_eq!(m.face(f), face.as_slice());
+                for k in 0..face.len() {
+                    assert_eq!(m.half_edge(face[k], face[(k + 1) % face.len()]), Some((f, k)));
+                    assert_eq!(m.face_from(f, k), [&face[k..], &face[..k]].concat());
+                }
+            }
+            let border = |v: usize| (0..=w).any(|i| v == at(i, 0) || v == at(i, h)) || (0..=h).any(|j| v == at(0, j) || v == at(w, j));
+            for v in 0..nv {
+                let corners: Vec<(usize, usize)> = faces
+                    .iter()
+                    .enumerate()
+                    .flat_map(|(f, face)| face.iter().enumerate().filter(move |&(_, &c)| c == v).map(move |(k, _)| (f, k)))
+                    .collect();
+                match m.fan_corners(v) {
+                    None => assert!(border(v), "vertex {v}"),
+                    Some(fan) => {
+                        assert!(!border(v), "vertex {v}");
+                        assert_eq!(fan[0], corners[0]);
+                        let mut sorted = fan.to_vec();
+                        sorted.sort_unstable();
+                        assert_eq!(sorted, corners, "vertex {v}: its corners once each");
+                        for (i, &(f, k)) in fan.iter().enumerate() {
+                            let face = &faces[f];
+                            let prev = face[(k + face.len() - 1) % face.len()];
+                            let (g, kg) = fan[(i + 1) % fan.len()];
+                            assert_eq!(faces[g][(kg + 1) % faces[g].len()], prev, "vertex {v}: fan order");
+                        }
+                        assert_eq!(m.valence(v), Some(fan.len()));
+                    }
+                }
+                let around: Vec<usize> = corners.iter().map(|c| c.0).collect();
+                assert_eq!(m.incident_faces(v), around.as_slice());
+            }
+            let keep: Vec<usize> = (0..faces.len()).filter(|_| next(2) == 0).collect();
+            let kept = m.keep_faces(&keep).unwrap();
+            assert_eq!(kept.faces().to_vec(), keep.iter().map(|&f| faces[f].clone()).collect::<Vec<_>>());
+            let (restricted, old) = m.restrict(&keep).unwrap();
+            let back: Vec<Vec<usize>> = restricted.faces().iter().map(|f| f.iter().map(|&v| old[v]).collect()).collect();
+            assert_eq!(back, kept.faces().to_vec());
         }
     }
 

@@ -94,7 +94,8 @@ impl FullStep {
             refinements.last().ok_or_else(|| Error::Message("an analysis step has at least one refinement".into()))?;
         let chart =
             last.mesh.chart.as_ref().ok_or_else(|| Error::Message("refined patch lost its lattice chart".into()))?;
-        let step_at = chart.vertex_coords.iter().enumerate().map(|(i, c)| (*c, i)).collect();
+        let mut step_at = IdMap::with_capacity_and_hasher(chart.vertex_coords.len(), Default::default());
+        step_at.extend(chart.vertex_coords.iter().enumerate().map(|(i, c)| (*c, i)));
         Ok(FullStep { refinements, step_at })
     }
 }
@@ -526,7 +527,9 @@ fn stencil_f64(scheme: &dyn Scheme, mesh: &PolyMesh, o: Origin) -> Option<Stenci
 pub(crate) struct Rotation {
     /// per vertex: its representative and the number of period-turns from it
     rep: Vec<(usize, usize)>,
-    /// per representative: the orbit, in turn order (empty for non-representatives)
+    /// per representative: the orbit, in turn order (empty for
+    /// non-representatives); no entry at all for a rotation made without
+    /// orbits (`complete` false: the windowed meshes of the search)
     orbit: Vec<Vec<usize>>,
     /// the order of the rotation: n / period, 1 for the identity that stands
     /// in where the mesh shows no symmetry
@@ -551,7 +554,8 @@ impl Rotation {
             return Rotation::identity(size);
         }
         let g = n / period;
-        let at: IdMap<LatticeCoord, usize> = chart.vertex_coords.iter().enumerate().map(|(v, c)| (*c, v)).collect();
+        let mut at: IdMap<LatticeCoord, usize> = IdMap::with_capacity_and_hasher(size, Default::default());
+        at.extend(chart.vertex_coords.iter().enumerate().map(|(v, c)| (*c, v)));
         if at.len() != size {
             return Rotation::identity(size); // coordinates do not identify vertices
         }
@@ -566,8 +570,9 @@ impl Rotation {
             };
             rep.push((r, c.sector / period));
         }
-        let mut orbit = vec![Vec::new(); size];
+        let mut orbit = Vec::new();
         if complete {
+            orbit = vec![Vec::new(); size];
             for (v, &(r, _)) in rep.iter().enumerate() {
                 if r == v {
                     orbit[r] = vec![usize::MAX; if chart.vertex_coords[v].is_centre() { 1 } else { g }];
@@ -592,7 +597,7 @@ impl Rotation {
     /// made without its orbits (`complete` false).
     pub(crate) fn turned(&self, v: usize) -> Option<usize> {
         let (r, t) = self.rep[v];
-        let orbit = &self.orbit[r];
+        let orbit = self.orbit.get(r)?;
         (!orbit.is_empty()).then(|| orbit[(t + 1) % orbit.len()])
     }
 
@@ -600,9 +605,10 @@ impl Rotation {
         self.rep[v].0
     }
 
-    /// All members of the orbit of representative `r`.
+    /// All members of the orbit of representative `r` (none on a rotation
+    /// made without its orbits).
     pub(crate) fn orbit(&self, r: usize) -> &[usize] {
-        &self.orbit[r]
+        self.orbit.get(r).map_or(&[], Vec::as_slice)
     }
 }
 
@@ -841,18 +847,21 @@ fn try_discover(
         if r % steps != 0 {
             continue; // only whole analysis steps are compared
         }
-        // representatives of the region's vertices after r refinements
-        let mut marked: BTreeSet<usize> = BTreeSet::new();
+        // representatives of the region's vertices after r refinements, as
+        // sorted lists without repeats (a set's order, without a tree node
+        // per vertex: these sets are rebuilt at every level)
+        let mut marked: Vec<usize> = Vec::new();
         for (f, face) in mesh_k.faces().iter().enumerate() {
             if region_faces[f] {
                 marked.extend(face.iter().map(|&v| level.rot.rep(v)));
                 if let Some(p) = mesh_k.face_point(f) {
-                    marked.insert(level.rot.rep(p));
+                    marked.push(level.rot.rep(p));
                 }
             }
         }
+        sort_dedup(&mut marked);
         for k in (0..r).rev() {
-            let mut marked_below = BTreeSet::new();
+            let mut marked_below = Vec::new();
             for &v in &marked {
                 // back to the id of the unpruned refinement, which stencils index
                 let v = levels[k].old_ids.as_ref().map_or(v, |old| old[v]);
@@ -876,6 +885,7 @@ fn try_discover(
                 let below = if k == 0 { rot0 } else { &levels[k - 1].rot };
                 marked_below.extend(support.into_iter().map(|u| below.rep(u)));
             }
+            sort_dedup(&mut marked_below);
             marked = marked_below;
         }
         collected.extend(marked);
@@ -918,6 +928,12 @@ fn try_discover(
         composite,
         derived: Derived::default(),
     })
+}
+
+/// `ids` sorted, each once: a set's iteration order.
+fn sort_dedup(ids: &mut Vec<usize>) {
+    ids.sort_unstable();
+    ids.dedup();
 }
 
 /// Vertices, edges (both orientations), faces and corners of the region

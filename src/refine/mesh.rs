@@ -245,7 +245,7 @@ pub fn add_face_control_vertices(
         fcv.push(Some(pts.len()));
         pts.push([scale * c[0], scale * c[1], scale * c[2]]);
     }
-    let mut m = PolyMesh::new(pts.len(), mesh.faces().to_vec())
+    let mut m = PolyMesh::new(pts.len(), mesh.faces().clone())
         .map_err(|e| Error::Input(e.to_string()))?
         .with_face_points(fcv)?;
     // the old vertices keep their ids, and so their tags

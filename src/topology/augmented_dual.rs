@@ -38,7 +38,7 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
         return Err(Error::Input("dual split: F-faces are not first in face order".to_string()));
     }
     let mut origins = base.vertex_origins;
-    let faces = base.mesh.faces().to_vec();
+    let faces = base.mesh.faces().clone();
     let mut centres = vec![None; faces.len()];
     for (f, centre) in centres.iter_mut().enumerate().take(mesh.num_faces()) {
         if mesh.face_point(f).is_some() || mesh.face(f).len() != 4 {

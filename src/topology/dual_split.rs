@@ -7,6 +7,7 @@
 //! the biquadratic B-spline (binary dual refinement of quads).
 
 use crate::error::Error;
+use crate::mesh::FaceList;
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
 use crate::mesh::Tags;
@@ -29,10 +30,12 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
         origins.extend((0..face.len()).map(|k| Origin::Corner { face: f, corner: k }));
     }
     let corner = |f: usize, k: usize| start[f] + k % mesh.face(f).len();
-    let mut faces: Vec<Vec<usize>> = Vec::with_capacity(mesh.num_faces() + origins.len() + mesh.num_vertices());
-    let mut parents = Vec::with_capacity(faces.capacity());
+    let face_count = mesh.num_faces() + origins.len() + mesh.num_vertices();
+    // each old corner is a corner of its F-face, of two E-faces and of a V-face
+    let mut faces = FaceList::with_capacity(face_count, 4 * origins.len());
+    let mut parents = Vec::with_capacity(face_count);
     for (f, face) in mesh.faces().iter().enumerate() {
-        faces.push((0..face.len()).map(|k| corner(f, k)).collect());
+        faces.push_iter((0..face.len()).map(|k| corner(f, k)));
         parents.push(Origin::Face(f));
     }
     for (a, b) in mesh.edges() {
@@ -40,14 +43,14 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
         let (Some((f, ka)), Some((g, kb))) = (mesh.half_edge(a, b), mesh.half_edge(b, a)) else {
             continue;
         };
-        faces.push(vec![corner(f, ka + 1), corner(f, ka), corner(g, kb + 1), corner(g, kb)]);
+        faces.push(&[corner(f, ka + 1), corner(f, ka), corner(g, kb + 1), corner(g, kb)]);
         parents.push(Origin::Edge(a, b));
     }
     for v in 0..mesh.num_vertices() {
         let Some(fan) = mesh.fan_corners(v) else {
             continue;
         };
-        faces.push(fan.iter().map(|&(f, k)| corner(f, k)).collect());
+        faces.push_iter(fan.iter().map(|&(f, k)| corner(f, k)));
         parents.push(Origin::Vertex(v));
     }
     let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| Error::Input(e.to_string()))?;

@@ -16,6 +16,7 @@
 //! S_3^1 non-box spline (`certify::s31`).
 
 use crate::error::Error;
+use crate::mesh::FaceList;
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
 use crate::mesh::Tags;
@@ -55,13 +56,14 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
             origins.len() - 1
         })
         .collect();
-    let mut faces = Vec::new();
-    let mut parents = Vec::new();
-    let mut new_fcv = Vec::new();
+    let corners = mesh.faces().corners().len();
+    let mut faces = FaceList::with_capacity(corners, 4 * corners);
+    let mut parents = Vec::with_capacity(corners);
+    let mut new_fcv = Vec::with_capacity(corners);
     for (f, face) in mesh.faces().iter().enumerate() {
         let m = face.len();
         for k in 0..m {
-            faces.push(vec![
+            faces.push(&[
                 vertex_id[face[k]],
                 edge_base + numbering.side(f, k),
                 face_id[f],

@@ -23,6 +23,7 @@
 use crate::mesh::IdMap;
 
 use crate::error::Error;
+use crate::mesh::FaceList;
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
 use crate::mesh::Tags;
@@ -128,10 +129,10 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
         let y = if radial[&key(x, next)] { next } else { prev };
         Origin::Edge(x, y)
     };
-    let mut faces = Vec::new();
+    let mut faces = FaceList::new();
     let mut parents = Vec::new();
     for (f, face) in mesh.faces().iter().enumerate() {
-        faces.push((0..face.len()).map(|k| id(near(face, k), &mut origins)).collect::<Vec<_>>());
+        faces.push_iter((0..face.len()).map(|k| id(near(face, k), &mut origins)));
         parents.push(Origin::Face(f));
     }
     for (a, b) in mesh.edges() {
@@ -141,8 +142,8 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
         let (Some((f, ka)), Some((g, kg))) = (mesh.half_edge(a, b), mesh.half_edge(b, a)) else { continue };
         let (ff, gf) = (mesh.face(f), mesh.face(g));
         let (kb, kga) = ((ka + 1) % ff.len(), (kg + 1) % gf.len());
-        let quad = vec![near(ff, kb), near(ff, ka), near(gf, kga), near(gf, kg)];
-        faces.push(quad.into_iter().map(|o| id(o, &mut origins)).collect());
+        let quad = [near(ff, kb), near(ff, ka), near(gf, kga), near(gf, kg)];
+        faces.push_iter(quad.into_iter().map(|o| id(o, &mut origins)));
         parents.push(Origin::Edge(a, b));
     }
     let mut new_mesh = PolyMesh::new(origins.len(), faces).map_err(|e| Error::Input(e.to_string()))?;

@@ -7,7 +7,7 @@
 //! routing of tagged origins, and what a split does to tags).
 
 use crate::error::Error;
-use crate::mesh::{PolyMesh, Tags, VertexId, VertexTag};
+use crate::mesh::{FaceList, PolyMesh, Tags, VertexId, VertexTag};
 use crate::sdc::host::{Refined, TriangleSplit};
 use crate::sdc::slots::OriginKind::{Edge as E, Vertex as V};
 use crate::sdc::slots::Valence::{Any, Fixed};
@@ -34,8 +34,8 @@ pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, Error> {
             origins.push(Origin::Face(f));
         }
     }
-    let corners: usize = mesh.faces().iter().map(Vec::len).sum();
-    let mut faces = Vec::with_capacity(corners + mesh.num_faces());
+    let corners = mesh.faces().corners().len();
+    let mut faces = FaceList::with_capacity(corners + mesh.num_faces(), 4 * (corners + mesh.num_faces()));
     let mut parents = Vec::with_capacity(corners + mesh.num_faces());
     for (f, face) in mesh.faces().iter().enumerate() {
         let m = face.len();
@@ -44,16 +44,16 @@ pub fn refine(mesh: &PolyMesh, tri: TriangleSplit) -> Result<Refined, Error> {
         match face_point[f] {
             Some(c) => {
                 for (k, &v) in face.iter().enumerate() {
-                    faces.push(vec![v, e(k), c, e(k + m - 1)]);
+                    faces.push(&[v, e(k), c, e(k + m - 1)]);
                     parents.push(Origin::Face(f));
                 }
             }
             None => {
                 for (k, &v) in face.iter().enumerate().take(3) {
-                    faces.push(vec![v, e(k), e(k + 2)]);
+                    faces.push(&[v, e(k), e(k + 2)]);
                     parents.push(Origin::Face(f));
                 }
-                faces.push(vec![e(0), e(1), e(2)]);
+                faces.push(&[e(0), e(1), e(2)]);
                 parents.push(Origin::Face(f));
             }
         }

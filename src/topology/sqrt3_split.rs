@@ -18,7 +18,7 @@
 //! by the difference scheme (`certify::difference`).
 
 use crate::error::Error;
-use crate::mesh::FaceId;
+use crate::mesh::{FaceId, FaceList};
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
 use crate::mesh::Tags;
@@ -46,8 +46,8 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
         origins.push(Origin::Face(f));
     }
     // two triangles per interior edge, at most 3 per triangle's corners
-    let corners: usize = mesh.faces().iter().map(Vec::len).sum();
-    let mut faces = Vec::with_capacity(corners);
+    let corners = mesh.faces().corners().len();
+    let mut faces = FaceList::with_capacity(corners, 3 * corners);
     let mut parents = Vec::with_capacity(corners);
     // every edge once, in the order of `PolyMesh::edges` (the half-edge of
     // face f at corner k, unless its twin comes first), with the face that
@@ -64,9 +64,9 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
             // is left out (the refined patch ends there; no boundary rules)
             if let Some((g, _)) = twin {
                 let cg = face_vertex[g];
-                faces.push(vec![a, cg, cf]);
+                faces.push(&[a, cg, cf]);
                 parents.push(Origin::Edge(a, b));
-                faces.push(vec![b, cf, cg]);
+                faces.push(&[b, cf, cg]);
                 parents.push(Origin::Edge(a, b));
             }
         }

@@ -15,6 +15,7 @@
 //! with the ternary mask (ternary primal refinement of quads).
 
 use crate::error::Error;
+use crate::mesh::FaceList;
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
 use crate::mesh::Tags;
@@ -47,7 +48,7 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
     let mut origins: Vec<Origin> = Vec::with_capacity(nv + 2 * numbering.edges.len() + 4 * mesh.num_faces());
     origins.extend((0..nv).map(Origin::Vertex));
     origins.extend(numbering.edges.iter().flat_map(|&(a, b)| [Origin::Edge(a, b), Origin::Edge(b, a)]));
-    let mut faces = Vec::with_capacity(9 * mesh.num_faces());
+    let mut faces = FaceList::with_capacity(9 * mesh.num_faces(), 36 * mesh.num_faces());
     let mut parents = Vec::with_capacity(9 * mesh.num_faces());
     for (f, face) in mesh.faces().iter().enumerate() {
         let inner: Vec<usize> = (0..4)
@@ -74,7 +75,7 @@ pub fn refine(mesh: &PolyMesh) -> Result<Refined, Error> {
         ];
         for i in 0..3 {
             for j in 0..3 {
-                faces.push(vec![grid[i][j], grid[i + 1][j], grid[i + 1][j + 1], grid[i][j + 1]]);
+                faces.push(&[grid[i][j], grid[i + 1][j], grid[i + 1][j + 1], grid[i][j + 1]]);
                 parents.push(Origin::Face(f));
             }
         }

@@ -204,7 +204,7 @@ fn dual_split_of_the_cube() {
     let (m, p) = cube();
     let (v, e, f) = (8, 12, 6);
     let r = check_step(Topology::Dual, &m, &p, (2 * e, 4 * e, f + e + v), "doo-sabin");
-    let sizes: Vec<usize> = r.faces().iter().map(Vec::len).collect();
+    let sizes: Vec<usize> = r.faces().iter().map(<[usize]>::len).collect();
     assert_eq!(sizes.iter().filter(|&&s| s == 3).count(), v, "a triangle per cube vertex (valence 3)");
     assert_eq!(sizes.iter().filter(|&&s| s == 4).count(), f + e, "a quad per old face and per edge");
 }

@@ -188,9 +188,9 @@ fn loop_supports_give_n_plus_1_and_3n_plus_1() {
 fn doo_sabin_supports_give_n_and_4n() {
     for n in [3, 5, 6] {
         let central_face = |m: &PolyMesh| {
-            let faces: Vec<&Vec<usize>> = m.faces().iter().filter(|f| f.len() == n).collect();
+            let faces: Vec<&[usize]> = m.faces().iter().filter(|f| f.len() == n).collect();
             assert_eq!(faces.len(), 1, "one {n}-gon");
-            faces[0].clone()
+            faces[0].to_vec()
         };
         check(&Support::doo_sabin(), n, central_face, (n, 4 * n), (0, 1));
     }

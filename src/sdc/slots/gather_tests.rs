@@ -50,7 +50,7 @@ fn one(g: Gathered) -> Part {
 /// [0, e_j, f_j, e_{j+1}] (counter-clockwise). Only vertex 0 is interior.
 fn quad_star(n: usize) -> PolyMesh {
     let e = |j: usize| 1 + j % n;
-    let faces = (0..n).map(|j| vec![0, e(j), 1 + n + j, e(j + 1)]).collect();
+    let faces: Vec<Vec<usize>> = (0..n).map(|j| vec![0, e(j), 1 + n + j, e(j + 1)]).collect();
     PolyMesh::new(1 + 2 * n, faces).unwrap()
 }
 
