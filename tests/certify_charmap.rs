@@ -292,11 +292,7 @@ fn ring_net(name: &str, n: usize) -> (subdlab::charmap::net::Net<[f64; 2]>, Vec<
 }
 
 /// [`ring_net`] of a face sequence around the centre (mixed meshes).
-fn ring_net_of(
-    name: &str,
-    n: usize,
-    faces: Option<&str>,
-) -> (subdlab::charmap::net::Net<[f64; 2]>, Vec<usize>, usize) {
+fn ring_net_of(name: &str, n: usize, faces: Option<&str>) -> (subdlab::charmap::net::Net<[f64; 2]>, Vec<usize>, usize) {
     let scheme = schemes::resolve(name, &[]).unwrap();
     let config = match faces {
         Some(f) => Configuration::with_faces(scheme.as_ref(), n, f).unwrap(),
