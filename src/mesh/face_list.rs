@@ -160,7 +160,8 @@ mod tests {
             ((state >> 33) % m) as usize
         };
         for _ in 0..20 {
-            let faces: Vec<Vec<VertexId>> = (0..next(30)).map(|_| (0..3 + next(4)).map(|_| next(100)).collect()).collect();
+            let faces: Vec<Vec<VertexId>> =
+                (0..next(30)).map(|_| (0..3 + next(4)).map(|_| next(100)).collect()).collect();
             let list = FaceList::from(faces.clone());
             assert_eq!(list.len(), faces.len());
             assert_eq!(list.is_empty(), faces.is_empty());

@@ -9,8 +9,8 @@ use std::collections::{HashMap, HashSet};
 use std::hash::{BuildHasherDefault, Hasher};
 use std::sync::OnceLock;
 
-pub use super::face_list::VertexId;
 use super::face_list::FaceList;
+pub use super::face_list::VertexId;
 use super::lattice::Chart;
 use super::tags::{Tags, VertexTag};
 use crate::error::Error;
@@ -896,12 +896,16 @@ mod edge_tests {
                     assert_eq!(m.face_from(f, k), [&face[k..], &face[..k]].concat());
                 }
             }
-            let border = |v: usize| (0..=w).any(|i| v == at(i, 0) || v == at(i, h)) || (0..=h).any(|j| v == at(0, j) || v == at(w, j));
+            let border = |v: usize| {
+                (0..=w).any(|i| v == at(i, 0) || v == at(i, h)) || (0..=h).any(|j| v == at(0, j) || v == at(w, j))
+            };
             for v in 0..nv {
                 let corners: Vec<(usize, usize)> = faces
                     .iter()
                     .enumerate()
-                    .flat_map(|(f, face)| face.iter().enumerate().filter(move |&(_, &c)| c == v).map(move |(k, _)| (f, k)))
+                    .flat_map(|(f, face)| {
+                        face.iter().enumerate().filter(move |&(_, &c)| c == v).map(move |(k, _)| (f, k))
+                    })
                     .collect();
                 match m.fan_corners(v) {
                     None => assert!(border(v), "vertex {v}"),
@@ -927,7 +931,8 @@ mod edge_tests {
             let kept = m.keep_faces(&keep).unwrap();
             assert_eq!(kept.faces().to_vec(), keep.iter().map(|&f| faces[f].clone()).collect::<Vec<_>>());
             let (restricted, old) = m.restrict(&keep).unwrap();
-            let back: Vec<Vec<usize>> = restricted.faces().iter().map(|f| f.iter().map(|&v| old[v]).collect()).collect();
+            let back: Vec<Vec<usize>> =
+                restricted.faces().iter().map(|f| f.iter().map(|&v| old[v]).collect()).collect();
             assert_eq!(back, kept.faces().to_vec());
         }
     }

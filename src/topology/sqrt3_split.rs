@@ -18,10 +18,10 @@
 //! by the difference scheme (`certify::difference`).
 
 use crate::error::Error;
-use crate::mesh::{FaceId, FaceList};
 use crate::mesh::PolyMesh;
 use crate::mesh::SectorKind;
 use crate::mesh::Tags;
+use crate::mesh::{FaceId, FaceList};
 use crate::sdc::host::{refuse_tags, Refined, RefinementHost, RegularSpline};
 use crate::sdc::slots::Host;
 use crate::sdc::slots::OriginKind::{Face as F, Vertex as V};
