@@ -26,7 +26,7 @@
 use crate::common;
 use common::subdlab;
 use rayon::prelude::*;
-use subdlab::certify::charmap::RegularPart;
+use subdlab::certify::charmap::{own_window_signs, RegularPart, DEFAULT_MAX_LEVELS};
 use subdlab::certify::matrix::Check;
 use subdlab::certify::{certify_charmap, CharMapCertificate, Verdict};
 use subdlab::neighbourhood::Configuration;
@@ -399,4 +399,54 @@ fn orbits_of_a_half_turn_eon_have_two_faces_and_an_asymmetric_eon_none() {
     let (mut net, ring, period) = ring_net("catmull-clark", 5);
     net.mesh.lattice_dirs = Some(vec![0; net.mesh.num_faces()]);
     assert_eq!(representative_of(&net, &ring, period), itself(ring.len()), "lattice directions");
+}
+
+/// Lemma C5′ against the route it replaced: at every level the
+/// certificate tries, every ring face's own window proves the sign its
+/// representative's does (so the route that bounded every face decided
+/// the same at every level), each orbit has g members, and the counts
+/// and the document's per-face signs are the all-faces ones. The signs
+/// are a second computation (each face's own enclosures), not the
+/// certificate's.
+#[test]
+fn one_jacobian_bound_per_orbit_decides_as_every_face_does() {
+    for (name, n) in [("catmull-clark", 5), ("loop", 7), ("doo-sabin", 5), ("catmull-clark", 3), ("loop", 4)] {
+        let scheme = subdlab::schemes::build(name, &[]).unwrap();
+        let config = Configuration::regular(scheme.as_ref(), n).unwrap();
+        let analysis = analyse(scheme.as_ref(), &config, &Options::default()).unwrap();
+        let cert = certify_charmap(scheme.as_ref(), &analysis, DEFAULT_MAX_LEVELS).unwrap();
+        let who = format!("{name} n = {n}");
+        assert_eq!(cert.regularity, Verdict::Proved, "{who}");
+        let decisive = cert.levels.expect("decided");
+        let g = n / config.rotation_period(scheme.as_ref());
+        // the decisive level must be compared (a test that found no
+        // windows there would compare nothing)
+        let mut compared_decisive = false;
+        for levels in 2..=decisive {
+            let Some((own, rep)) = own_window_signs(scheme.as_ref(), &analysis, levels) else { continue };
+            for i in 0..own.len() {
+                assert_eq!(own[i], own[rep[i]], "{who} at {levels} levels: face {i} and its representative");
+            }
+            // every orbit has g faces
+            let reps: Vec<usize> = (0..rep.len()).filter(|&i| rep[i] == i).collect();
+            assert_eq!(reps.len() * g, own.len(), "{who}");
+            for &r in &reps {
+                assert_eq!(rep.iter().filter(|&&x| x == r).count(), g, "{who}: the orbit of face {r}");
+            }
+            if levels == decisive {
+                let count = |s: i8| own.iter().filter(|&&x| x == s).count();
+                assert_eq!(cert.ring_faces, own.len(), "{who}");
+                assert_eq!(
+                    (cert.positive_faces, cert.negative_faces, cert.undecided_faces),
+                    (count(1), count(-1), count(0)),
+                    "{who}"
+                );
+                let evidence = cert.evidence.as_ref().expect("evidence of a decided map");
+                let claimed: Vec<i8> = evidence.faces.iter().map(|f| f.sign).collect();
+                assert_eq!(claimed, own, "{who}: the document's signs are every face's own");
+                compared_decisive = true;
+            }
+        }
+        assert!(compared_decisive, "{who}: no windows at the decisive level {decisive}");
+    }
 }

@@ -1517,101 +1517,51 @@ pub(super) fn polygon_winding(polygon: &[[f64; 2]]) -> Result<i64, String> {
     Ok(winding)
 }
 
+/// Per ring face of the certified net at `levels` (the annulus the
+/// certificate takes: the first whose faces all have box-spline
+/// windows): the Jacobian sign from the face's own window, as every face
+/// was bounded before the orbit reduction, and the position of its
+/// orbit's representative. None when no annulus has such windows. For
+/// cross-checks of lemma C5′ (tests/certify_charmap.rs): the route that
+/// bounded every face, which the certificate no longer takes.
+pub fn own_window_signs(scheme: &dyn Scheme, analysis: &Analysis, levels: usize) -> Option<(Vec<i8>, Vec<usize>)> {
+    let mut cert = certify_charmap(scheme, analysis, DEFAULT_MAX_LEVELS).ok()?;
+    let level0 = certified_net(analysis, &mut cert).ok()?;
+    let d = &analysis.discovered;
+    let net = net::refine_net_exactly_as::<Interval, Point>(scheme, d, level0, levels).ok()?;
+    let vf = net.mesh.vertex_faces();
+    let faces = |keep: &dyn Fn(usize) -> bool| (0..net.mesh.num_faces()).filter(|&f| keep(f)).collect::<Vec<_>>();
+    let annuli = [
+        (faces(&|f| net.outer[f] && !net.inner[f]), faces(&|f| net.outer[f] && net.inner[f])),
+        (faces(&|f| net.inner[f] && !net.inner2[f]), faces(&|f| net.inner2[f])),
+    ];
+    for (ring, _) in annuli.iter().filter(|(_, inside)| !inside.is_empty()) {
+        let Ok(windows) = ring.iter().map(|&f| Window::around(&net, &vf, f, false)).collect::<Result<Vec<_>, _>>()
+        else {
+            continue;
+        };
+        let signs = windows
+            .iter()
+            .map(|w| {
+                let b = w.jacobian_bounds();
+                if b.lo > 0.0 {
+                    1
+                } else if b.hi < 0.0 {
+                    -1
+                } else {
+                    0
+                }
+            })
+            .collect();
+        let period = d.config.rotation_period(scheme);
+        return Some((signs, window_orbits::representative_of(&net, ring, period)));
+    }
+    None
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::neighbourhood::Configuration;
-    use crate::spectrum::{analyse, Options};
-
-    /// Per ring face of the certified net at `levels` (the annulus the
-    /// certificate takes: the first whose faces all have box-spline
-    /// windows): the Jacobian sign from the face's own window, as every face
-    /// was bounded before the orbit reduction, and the position of its
-    /// orbit's place. None when no annulus has such windows.
-    fn own_signs(scheme: &dyn Scheme, analysis: &Analysis, levels: usize) -> Option<(Vec<i8>, Vec<usize>)> {
-        let mut cert = certify_charmap(scheme, analysis, DEFAULT_MAX_LEVELS).unwrap();
-        let level0 = certified_net(analysis, &mut cert).unwrap();
-        let d = &analysis.discovered;
-        let net = net::refine_net_exactly_as::<Interval, Point>(scheme, d, level0, levels).unwrap();
-        let vf = net.mesh.vertex_faces();
-        let faces = |keep: &dyn Fn(usize) -> bool| (0..net.mesh.num_faces()).filter(|&f| keep(f)).collect::<Vec<_>>();
-        let annuli = [
-            (faces(&|f| net.outer[f] && !net.inner[f]), faces(&|f| net.outer[f] && net.inner[f])),
-            (faces(&|f| net.inner[f] && !net.inner2[f]), faces(&|f| net.inner2[f])),
-        ];
-        for (ring, _) in annuli.iter().filter(|(_, inside)| !inside.is_empty()) {
-            let Ok(windows) = ring.iter().map(|&f| Window::around(&net, &vf, f, false)).collect::<Result<Vec<_>, _>>()
-            else {
-                continue;
-            };
-            let signs = windows
-                .iter()
-                .map(|w| {
-                    let b = w.jacobian_bounds();
-                    if b.lo > 0.0 {
-                        1
-                    } else if b.hi < 0.0 {
-                        -1
-                    } else {
-                        0
-                    }
-                })
-                .collect();
-            let period = d.config.rotation_period(scheme);
-            return Some((signs, window_orbits::representative_of(&net, ring, period)));
-        }
-        None
-    }
-
-    /// Lemma C5′ against the route it replaced: at every level the
-    /// certificate tries, every ring face's own window proves the sign its
-    /// representative's does (so the route that bounded every face decided
-    /// the same at every level), each orbit has g members, and the counts
-    /// and the document's per-face signs are the all-faces ones. The signs
-    /// are a second computation (each face's own enclosures), not the
-    /// certificate's.
-    #[test]
-    fn one_jacobian_bound_per_orbit_decides_as_every_face_does() {
-        for (name, n) in [("catmull-clark", 5), ("loop", 7), ("doo-sabin", 5), ("catmull-clark", 3), ("loop", 4)] {
-            let scheme = crate::schemes::build(name, &[]).unwrap();
-            let config = Configuration::regular(scheme.as_ref(), n).unwrap();
-            let analysis = analyse(scheme.as_ref(), &config, &Options::default()).unwrap();
-            let cert = certify_charmap(scheme.as_ref(), &analysis, DEFAULT_MAX_LEVELS).unwrap();
-            let who = format!("{name} n = {n}");
-            assert_eq!(cert.regularity, Verdict::Proved, "{who}");
-            let decisive = cert.levels.expect("decided");
-            let g = n / config.rotation_period(scheme.as_ref());
-            // the decisive level must be compared (a test that found no
-            // windows there would compare nothing)
-            let mut compared_decisive = false;
-            for levels in 2..=decisive {
-                let Some((own, rep)) = own_signs(scheme.as_ref(), &analysis, levels) else { continue };
-                for i in 0..own.len() {
-                    assert_eq!(own[i], own[rep[i]], "{who} at {levels} levels: face {i} and its representative");
-                }
-                // every orbit has g faces
-                let reps: Vec<usize> = (0..rep.len()).filter(|&i| rep[i] == i).collect();
-                assert_eq!(reps.len() * g, own.len(), "{who}");
-                for &r in &reps {
-                    assert_eq!(rep.iter().filter(|&&x| x == r).count(), g, "{who}: the orbit of face {r}");
-                }
-                if levels == decisive {
-                    let count = |s: i8| own.iter().filter(|&&x| x == s).count();
-                    assert_eq!(cert.ring_faces, own.len(), "{who}");
-                    assert_eq!(
-                        (cert.positive_faces, cert.negative_faces, cert.undecided_faces),
-                        (count(1), count(-1), count(0)),
-                        "{who}"
-                    );
-                    let evidence = cert.evidence.as_ref().expect("evidence of a decided map");
-                    let claimed: Vec<i8> = evidence.faces.iter().map(|f| f.sign).collect();
-                    assert_eq!(claimed, own, "{who}: the document's signs are every face's own");
-                    compared_decisive = true;
-                }
-            }
-            assert!(compared_decisive, "{who}: no windows at the decisive level {decisive}");
-        }
-    }
 
     /// The regular n-gon at angle offset `phase`, traversed `turns` times
     /// (negative: clockwise): its winding number about the origin is
