@@ -356,11 +356,7 @@ fn geometric_half(
         // faces' do not; its scaled copies leave quarter-face bands that the
         // biquadratic bound's half-face enlargement covers)
         let vf = net.mesh.vertex_faces();
-        let faces = |keep: &dyn Fn(usize) -> bool| (0..net.mesh.num_faces()).filter(|&f| keep(f)).collect::<Vec<_>>();
-        let annuli = [
-            (faces(&|f| net.outer[f] && !net.inner[f]), faces(&|f| net.outer[f] && net.inner[f])),
-            (faces(&|f| net.inner[f] && !net.inner2[f]), faces(&|f| net.inner2[f])),
-        ];
+        let annuli = annuli(net);
         // the ring's faces in orbits of the rotation (C3, C5′)
         let period = d.config.rotation_period(scheme);
         let mut chosen = None;
@@ -422,18 +418,7 @@ fn geometric_half(
             group[i] = k;
         }
         let bounds: Vec<Interval> = reps.iter().map(|&i| windows[i].jacobian_bounds()).collect();
-        let signs: Vec<i8> = bounds
-            .iter()
-            .map(|b| {
-                if b.lo > 0.0 {
-                    1
-                } else if b.hi < 0.0 {
-                    -1
-                } else {
-                    0
-                }
-            })
-            .collect();
+        let signs: Vec<i8> = bounds.iter().map(Interval::decided_sign).collect();
         let sign_of = |i: usize| signs[group[orbit_rep[i]]];
         let positive = (0..ring.len()).filter(|&i| sign_of(i) > 0).count();
         let negative = (0..ring.len()).filter(|&i| sign_of(i) < 0).count();
@@ -558,6 +543,17 @@ fn geometric_half(
     // nothing decided: no evidence of an earlier, undecided level is kept
     cert.evidence = None;
     Err(last_reason)
+}
+
+/// The two annuli of lemma C4, each as (ring faces, faces inside them): the
+/// ring (`outer` ∧ ¬`inner`), and the ring scaled by λ1 (`inner` ∧
+/// ¬`inner2`), whose faces' one-rings stay inside the first ring.
+fn annuli<T>(net: &Net<T>) -> [(Vec<usize>, Vec<usize>); 2] {
+    let faces = |keep: &dyn Fn(usize) -> bool| (0..net.mesh.num_faces()).filter(|&f| keep(f)).collect::<Vec<_>>();
+    [
+        (faces(&|f| net.outer[f] && !net.inner[f]), faces(&|f| net.outer[f] && net.inner[f])),
+        (faces(&|f| net.inner[f] && !net.inner2[f]), faces(&|f| net.inner2[f])),
+    ]
 }
 
 /// Every ring face's window: laid out (`Window::around`) on each orbit's
@@ -1530,29 +1526,12 @@ pub fn own_window_signs(scheme: &dyn Scheme, analysis: &Analysis, levels: usize)
     let d = &analysis.discovered;
     let net = net::refine_net_exactly_as::<Interval, Point>(scheme, d, level0, levels).ok()?;
     let vf = net.mesh.vertex_faces();
-    let faces = |keep: &dyn Fn(usize) -> bool| (0..net.mesh.num_faces()).filter(|&f| keep(f)).collect::<Vec<_>>();
-    let annuli = [
-        (faces(&|f| net.outer[f] && !net.inner[f]), faces(&|f| net.outer[f] && net.inner[f])),
-        (faces(&|f| net.inner[f] && !net.inner2[f]), faces(&|f| net.inner2[f])),
-    ];
-    for (ring, _) in annuli.iter().filter(|(_, inside)| !inside.is_empty()) {
+    for (ring, _) in annuli(&net).iter().filter(|(_, inside)| !inside.is_empty()) {
         let Ok(windows) = ring.iter().map(|&f| Window::around(&net, &vf, f, false)).collect::<Result<Vec<_>, _>>()
         else {
             continue;
         };
-        let signs = windows
-            .iter()
-            .map(|w| {
-                let b = w.jacobian_bounds();
-                if b.lo > 0.0 {
-                    1
-                } else if b.hi < 0.0 {
-                    -1
-                } else {
-                    0
-                }
-            })
-            .collect();
+        let signs = windows.iter().map(|w| w.jacobian_bounds().decided_sign()).collect();
         let period = d.config.rotation_period(scheme);
         return Some((signs, window_orbits::representative_of(&net, ring, period)));
     }

@@ -471,6 +471,17 @@ impl Interval {
     pub fn sign_decided(&self) -> bool {
         self.lo > 0.0 || self.hi < 0.0
     }
+    /// The sign every enclosed number has: 1 or −1, 0 when 0 is not
+    /// excluded (undecided).
+    pub fn decided_sign(&self) -> i8 {
+        if self.lo > 0.0 {
+            1
+        } else if self.hi < 0.0 {
+            -1
+        } else {
+            0
+        }
+    }
     /// The exact value when the interval is a point.
     pub fn exact_value(&self) -> Option<Rational> {
         if self.is_point() {
